@@ -1,0 +1,9 @@
+//! Basis functions: Bernstein polynomials, the B-spline basis and knot vectors.
+
+pub mod bernstein;
+pub mod bspline_basis;
+pub mod knot_vector;
+
+pub use bernstein::{bernstein, bernstein_all, binomial};
+pub use bspline_basis::{basis_derivatives, basis_function, basis_functions};
+pub use knot_vector::{KnotVector, Side, advance_span, find_span};

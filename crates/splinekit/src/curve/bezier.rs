@@ -1,0 +1,168 @@
+//! Bézier curves c(t) = Σ_{i=0}^{n} B_{i,n}(t) P_i on [0, 1].
+
+use smallvec::SmallVec;
+
+use crate::Point;
+use crate::Coefficient;
+use crate::basis::{Side, bernstein_all};
+use crate::curve::{Curve, Interval};
+use crate::error::{Error, Result, check_points_finite};
+
+/// A Bézier curve of degree n = (number of control points − 1) on [0, 1].
+///
+/// Evaluated by de Casteljau's algorithm, which also yields the derivatives:
+/// c^{(k)}(t) = n!/(n−k)! Σ_i Δ^k P_i B_{i,n−k}(t), and Δ^k of the k + 1 intermediate
+/// points of level n − k is exactly that sum.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BezierCurve<const D: usize> {
+    control_points: Vec<Point<D>>,
+}
+
+impl<const D: usize> BezierCurve<D> {
+    /// A Bézier curve through its control points (at least one).
+    pub fn new(control_points: Vec<Point<D>>) -> Result<Self> {
+        if control_points.is_empty() {
+            return Err(Error::count("control_points", "at least 1 point", 0));
+        }
+        check_points_finite("control_points", &control_points)?;
+        Ok(BezierCurve { control_points })
+    }
+
+    /// The degree n.
+    pub fn degree(&self) -> usize {
+        self.control_points.len() - 1
+    }
+
+    /// The control points.
+    pub fn control_points(&self) -> &[Point<D>] {
+        &self.control_points
+    }
+
+    /// c(t) = Σ B_{i,n}(t) P_i evaluated in Bernstein form (for comparison with de Casteljau).
+    pub fn point_bernstein(&self, t: f64) -> Point<D> {
+        let n = self.degree();
+        let mut b: SmallVec<[f64; 16]> = SmallVec::from_elem(0.0, n + 1);
+        bernstein_all(n, t, &mut b);
+        self.control_points.iter().zip(&b).fold(Point::<D>::zeros(), |acc, (p, w)| acc + p * *w)
+    }
+
+    /// The intermediate points of de Casteljau's algorithm at t: level r holds the n − r + 1
+    /// points b_i^r = (1−t) b_i^{r−1} + t b_{i+1}^{r−1}; level 0 is the control polygon.
+    pub fn de_casteljau_levels(&self, t: f64) -> Vec<Vec<Point<D>>> {
+        let mut levels = vec![self.control_points.clone()];
+        while levels.last().unwrap().len() > 1 {
+            let prev = levels.last().unwrap();
+            let next = prev.windows(2).map(|w| w[0] * (1.0 - t) + w[1] * t).collect();
+            levels.push(next);
+        }
+        levels
+    }
+
+    /// Splits at t into the Bézier curves on [0, t] and [t, 1] (each reparametrised to [0, 1]).
+    pub fn split(&self, t: f64) -> (Self, Self) {
+        let levels = self.de_casteljau_levels(t);
+        let left = levels.iter().map(|l| l[0]).collect();
+        let right = levels.iter().rev().map(|l| *l.last().unwrap()).collect();
+        (BezierCurve { control_points: left }, BezierCurve { control_points: right })
+    }
+
+    /// The same curve as a Bézier curve of degree n + 1:
+    /// Q_i = i/(n+1) P_{i−1} + (1 − i/(n+1)) P_i.
+    pub fn elevate(&self) -> Self {
+        let n = self.degree();
+        let p = &self.control_points;
+        let mut q = Vec::with_capacity(n + 2);
+        q.push(p[0]);
+        for i in 1..=n {
+            let a = i as f64 / (n + 1) as f64;
+            q.push(p[i - 1] * a + p[i] * (1.0 - a));
+        }
+        q.push(p[n]);
+        BezierCurve { control_points: q }
+    }
+
+    /// The hodograph c'(t) as a Bézier curve of degree n − 1: n (P_{i+1} − P_i).
+    /// A degree-0 curve has the zero curve as hodograph.
+    pub fn hodograph(&self) -> Self {
+        let n = self.degree();
+        if n == 0 {
+            return BezierCurve { control_points: vec![Point::<D>::zeros()] };
+        }
+        let q = self.control_points.windows(2).map(|w| (w[1] - w[0]) * n as f64).collect();
+        BezierCurve { control_points: q }
+    }
+}
+
+/// The cubic Bézier basis matrix M_B of the lecture notes: c(t) = [1 t t² t³] M_B [P0 P1 P2 P3]ᵀ.
+pub const CUBIC_BEZIER_MATRIX: [[f64; 4]; 4] =
+    [[1.0, 0.0, 0.0, 0.0], [-3.0, 3.0, 0.0, 0.0], [3.0, -6.0, 3.0, 0.0], [-1.0, 3.0, -3.0, 1.0]];
+
+/// The cubic Hermite basis matrix: c(t) = [1 t t² t³] M_H [P0 P1 T0 T1]ᵀ.
+pub const CUBIC_HERMITE_MATRIX: [[f64; 4]; 4] =
+    [[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [-3.0, 3.0, -2.0, -1.0], [2.0, -2.0, 1.0, 1.0]];
+
+/// The uniform cubic B-spline segment matrix: c(t) = [1 t t² t³] M_S [P0 P1 P2 P3]ᵀ.
+pub const CUBIC_BSPLINE_MATRIX: [[f64; 4]; 4] = [
+    [1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0, 0.0],
+    [-3.0 / 6.0, 0.0, 3.0 / 6.0, 0.0],
+    [3.0 / 6.0, -6.0 / 6.0, 3.0 / 6.0, 0.0],
+    [-1.0 / 6.0, 3.0 / 6.0, -3.0 / 6.0, 1.0 / 6.0],
+];
+
+/// Evaluates the matrix form [1 t t² t³] M G for a 4×4 basis matrix M and geometry G.
+pub fn cubic_matrix_form<const D: usize>(m: &[[f64; 4]; 4], geometry: &[Point<D>; 4], t: f64) -> Point<D> {
+    let powers = [1.0, t, t * t, t * t * t];
+    let mut out = Point::<D>::zeros();
+    for (r, pw) in powers.iter().enumerate() {
+        for c in 0..4 {
+            out += geometry[c] * (pw * m[r][c]);
+        }
+    }
+    out
+}
+
+/// De Casteljau with derivatives: writes c^{(k)}(t) for k = 0 … `out.len() − 1` of the
+/// Bézier curve with coefficients `points` (any linear space), t ∈ [0, 1].
+///
+/// Level r of the triangle holds n − r + 1 points; the derivative of order j = n − r is
+/// n!/(n−j)! Δ^j of them. Cost O(n² + k³); no heap allocation below degree 16.
+pub fn bezier_derivatives<T: Coefficient>(points: &[T], t: f64, out: &mut [T]) {
+    let n = points.len() - 1;
+    let k = out.len() - 1;
+    let mut b: SmallVec<[T; 16]> = SmallVec::from_slice(points);
+    let mut diff: SmallVec<[T; 16]> = SmallVec::new();
+    for o in out.iter_mut().skip(n + 1) {
+        *o = T::zero();
+    }
+    for r in 0..=n {
+        let j = n - r;
+        if j <= k {
+            diff.clear();
+            diff.extend_from_slice(&b[..=j]);
+            for s in 0..j {
+                for i in 0..j - s {
+                    diff[i] = diff[i + 1] - diff[i];
+                }
+            }
+            let falling = (0..j).fold(1.0, |acc, i| acc * (n - i) as f64);
+            out[j] = diff[0] * falling;
+        }
+        if r < n {
+            for i in 0..n - r {
+                b[i] = b[i] * (1.0 - t) + b[i + 1] * t;
+            }
+        }
+    }
+}
+
+impl<const D: usize> Curve<D> for BezierCurve<D> {
+    fn domain(&self) -> Interval {
+        Interval::new(0.0, 1.0)
+    }
+    fn is_closed(&self) -> bool {
+        false
+    }
+    fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<D>]) {
+        bezier_derivatives(&self.control_points, t.clamp(0.0, 1.0), out);
+    }
+}

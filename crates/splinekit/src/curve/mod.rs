@@ -1,0 +1,19 @@
+//! Curves: the [`Curve`] trait and every curve kind, one file each.
+
+pub mod bezier;
+pub mod bspline;
+pub mod catmull_rom;
+pub mod hermite;
+pub mod model;
+pub mod nurbs;
+pub mod rational;
+pub mod rational_bezier;
+pub mod traits;
+
+pub use bezier::BezierCurve;
+pub use bspline::BSplineCurve;
+pub use catmull_rom::CatmullRomCurve;
+pub use hermite::HermiteCurve;
+pub use nurbs::NurbsCurve;
+pub use rational_bezier::RationalBezierCurve;
+pub use traits::{Curve, FrenetFrame, Interval, curvature_from};

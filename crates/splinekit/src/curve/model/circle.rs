@@ -1,0 +1,30 @@
+//! The circle (r cos t, r sin t, 0), t ∈ [0, 2π], closed.
+
+use super::trig::{Term, TrigCurve, TrigSeries, TAU, positive, trig_model_curve};
+use crate::curve::Interval;
+
+/// Circle of radius r in the xy-plane about the origin; c^{(k)} has length r.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Circle {
+    radius: f64,
+    curve: TrigCurve,
+}
+
+impl Circle {
+    /// The circle of the given radius (> 0).
+    pub fn new(radius: f64) -> crate::Result<Self> {
+        let r = positive("radius", radius)?;
+        let curve = TrigCurve {
+            coordinates: [TrigSeries::of(&[Term::cos(r, 1.0)]), TrigSeries::of(&[Term::sin(r, 1.0)]), TrigSeries::default()],
+            domain: Interval::new(0.0, TAU),
+            closed: true,
+        };
+        Ok(Circle { radius, curve })
+    }
+    /// The radius.
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+}
+
+trig_model_curve!(Circle);

@@ -1,0 +1,24 @@
+//! Model curves with analytic derivatives of every order. All are 3-D (planar ones lie in
+//! z = 0), except [`Line`], which lives in any dimension.
+
+pub mod butterfly;
+pub mod circle;
+pub mod ellipse;
+pub mod heart;
+pub mod helix;
+pub mod line;
+pub mod lissajous;
+pub mod rose;
+pub mod trefoil;
+pub mod trig;
+
+pub use butterfly::Butterfly;
+pub use circle::Circle;
+pub use ellipse::Ellipse;
+pub use heart::Heart;
+pub use helix::Helix;
+pub use line::Line;
+pub use lissajous::Lissajous;
+pub use rose::Rose;
+pub use trefoil::Trefoil;
+pub use trig::{Term, TrigCurve, TrigSeries};

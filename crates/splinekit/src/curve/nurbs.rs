@@ -1,0 +1,199 @@
+//! NURBS curves: C(t) = Σ N_{i,p}(t) w_i P_i / Σ N_{i,p}(t) w_i.
+
+use smallvec::{SmallVec, smallvec};
+
+use crate::Point;
+use crate::basis::Side;
+use crate::basis::bspline_basis::INLINE;
+use crate::curve::rational::rational_derivatives;
+use crate::curve::{BSplineCurve, Curve, Interval};
+use crate::error::{Error, Result, check_finite};
+
+/// A non-uniform rational B-spline curve: a [`BSplineCurve`] whose control points carry
+/// positive weights. Clamped, unclamped and periodic knot vectors work as for B-splines.
+///
+/// Internally the weighted points w_i P_i form a B-spline A(t) and the weights a scalar
+/// B-spline w(t) on the same basis; derivatives of any order follow from
+/// [`rational_derivatives`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct NurbsCurve<const D: usize> {
+    weighted: BSplineCurve<D>,
+    points: Vec<Point<D>>,
+    weights: Vec<f64>,
+    /// Weights in evaluation order (unrolled for periodic curves).
+    eval_weights: Vec<f64>,
+}
+
+impl<const D: usize> NurbsCurve<D> {
+    /// A NURBS curve from degree, knots, control points and weights (all > 0).
+    pub fn new(degree: usize, knots: Vec<f64>, control_points: Vec<Point<D>>, weights: Vec<f64>) -> Result<Self> {
+        Self::build(degree, knots, control_points, weights, false)
+    }
+
+    /// A periodic (closed) NURBS curve; knots as for [`BSplineCurve::new_periodic`].
+    pub fn new_periodic(
+        degree: usize,
+        knots: Vec<f64>,
+        control_points: Vec<Point<D>>,
+        weights: Vec<f64>,
+    ) -> Result<Self> {
+        Self::build(degree, knots, control_points, weights, true)
+    }
+
+    fn build(
+        degree: usize,
+        knots: Vec<f64>,
+        points: Vec<Point<D>>,
+        weights: Vec<f64>,
+        periodic: bool,
+    ) -> Result<Self> {
+        check_weights(&weights, points.len())?;
+        let weighted_pts: Vec<Point<D>> = points.iter().zip(&weights).map(|(p, w)| p * *w).collect();
+        let weighted = if periodic {
+            BSplineCurve::new_periodic(degree, knots, weighted_pts)?
+        } else {
+            BSplineCurve::new(degree, knots, weighted_pts)?
+        };
+        let n = points.len();
+        let eval_weights = if periodic {
+            (0..n + degree).map(|i| weights[i % n]).collect()
+        } else {
+            weights.clone()
+        };
+        Ok(NurbsCurve { weighted, points, weights, eval_weights })
+    }
+
+    /// Exact full circle of `radius` about `center` in the plane spanned by the orthonormal
+    /// vectors `x_axis`, `y_axis`: 9 control points, degree 2, weights 1, √2/2 alternating,
+    /// knots {0,0,0,¼,¼,½,½,¾,¾,1,1,1}. The parametrisation is not by arc length.
+    pub fn circle(center: Point<D>, x_axis: Point<D>, y_axis: Point<D>, radius: f64) -> Result<Self> {
+        Self::arc(center, x_axis, y_axis, radius, 0.0, 2.0 * std::f64::consts::PI)
+    }
+
+    /// Exact circular arc from angle `start` to `end` (radians, |end − start| ≤ 2π), using
+    /// one rational quadratic segment per quarter turn or less (NURBS Book A7.1); the middle
+    /// control point of a segment of sweep θ has weight cos(θ/2).
+    pub fn arc(
+        center: Point<D>,
+        x_axis: Point<D>,
+        y_axis: Point<D>,
+        radius: f64,
+        start: f64,
+        end: f64,
+    ) -> Result<Self> {
+        if !(radius > 0.0 && radius.is_finite()) {
+            return Err(Error::invalid("radius", format!("must be positive and finite, got {radius}")));
+        }
+        let sweep = end - start;
+        if !(sweep.is_finite() && sweep.abs() > 0.0 && sweep.abs() <= 2.0 * std::f64::consts::PI + 1e-12) {
+            return Err(Error::invalid("angle", format!("sweep must be in (0, 2π], got {sweep}")));
+        }
+        let segments = ((sweep.abs() / (std::f64::consts::FRAC_PI_2)) - 1e-12).ceil().max(1.0) as usize;
+        let dtheta = sweep / segments as f64;
+        let w1 = (dtheta / 2.0).cos();
+        let at = |a: f64| center + x_axis * (radius * a.cos()) + y_axis * (radius * a.sin());
+        let tangent = |a: f64| -x_axis * a.sin() + y_axis * a.cos();
+        let mut pts = vec![at(start)];
+        let mut ws = vec![1.0];
+        let mut knots = vec![0.0; 3];
+        for s in 0..segments {
+            let a0 = start + dtheta * s as f64;
+            let a1 = a0 + dtheta;
+            // Intersection of the end tangents: at(a0) + r tan(θ/2) T(a0).
+            let p1 = at(a0) + tangent(a0) * (radius * (dtheta / 2.0).tan());
+            pts.push(p1);
+            ws.push(w1);
+            pts.push(at(a1));
+            ws.push(1.0);
+            if s + 1 < segments {
+                let k = (s + 1) as f64 / segments as f64;
+                knots.push(k);
+                knots.push(k);
+            }
+        }
+        knots.extend([1.0; 3]);
+        Self::new(2, knots, pts, ws)
+    }
+
+    /// The degree p.
+    pub fn degree(&self) -> usize {
+        self.weighted.degree()
+    }
+    /// The knots as given.
+    pub fn knots(&self) -> &[f64] {
+        self.weighted.knots()
+    }
+    /// The control points (not weighted).
+    pub fn control_points(&self) -> &[Point<D>] {
+        &self.points
+    }
+    /// The weights.
+    pub fn weights(&self) -> &[f64] {
+        &self.weights
+    }
+    /// Whether the curve is periodic.
+    pub fn is_periodic(&self) -> bool {
+        self.weighted.is_periodic()
+    }
+    /// The B-spline of weighted points w_i P_i (the numerator A(t)).
+    pub fn weighted_curve(&self) -> &BSplineCurve<D> {
+        &self.weighted
+    }
+
+    /// The same curve with every control point mapped by `f` (weights kept). Affine maps
+    /// give the mapped curve exactly.
+    pub fn map_points(&self, f: impl Fn(&Point<D>) -> Point<D>) -> Self {
+        let pts = self.points.iter().map(f).collect();
+        Self::build(self.degree(), self.knots().to_vec(), pts, self.weights.clone(), self.is_periodic())
+            .expect("same knots and weights")
+    }
+}
+
+pub(crate) fn check_weights(weights: &[f64], n: usize) -> Result<()> {
+    if weights.len() != n {
+        return Err(Error::count("weights", format!("{n} values, one per control point"), weights.len()));
+    }
+    check_finite("weights", weights)?;
+    if let Some((i, w)) = weights.iter().enumerate().find(|(_, w)| **w <= 0.0) {
+        return Err(Error::invalid("weights", format!("weight {i} is {w}, but weights must be > 0")));
+    }
+    Ok(())
+}
+
+impl<const D: usize> Curve<D> for NurbsCurve<D> {
+    fn domain(&self) -> Interval {
+        self.weighted.domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.weighted.is_periodic()
+    }
+    fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
+        let d = self.domain();
+        let t = if self.is_periodic() { d.wrap(t) } else { d.clamp(t) };
+        let order = out.len() - 1;
+        let p = self.degree();
+        let mut ders: SmallVec<[f64; 4 * INLINE]> = SmallVec::new();
+        let span = self.weighted.basis_at(t, side, order.min(p), &mut ders);
+        let pts = self.weighted.evaluation_data().1;
+        let mut w: SmallVec<[f64; 8]> = smallvec![0.0; order + 1];
+        for k in 0..=order {
+            if k > p {
+                out[k] = Point::<D>::zeros();
+                continue;
+            }
+            let row = &ders[k * (p + 1)..(k + 1) * (p + 1)];
+            let mut a = Point::<D>::zeros();
+            let mut ww = 0.0;
+            for (r, b) in row.iter().enumerate() {
+                a += pts[span - p + r] * *b;
+                ww += self.eval_weights[span - p + r] * b;
+            }
+            out[k] = a;
+            w[k] = ww;
+        }
+        rational_derivatives(out, &w);
+    }
+    fn breakpoints(&self) -> Vec<f64> {
+        self.weighted.breakpoints()
+    }
+}

@@ -1,0 +1,204 @@
+//! The [`Curve`] trait: what every parametric curve c: [a, b] → ℝᴰ can do.
+
+use smallvec::{SmallVec, smallvec};
+
+use crate::Point;
+use crate::basis::Side;
+
+/// A closed parameter interval [start, end].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Interval {
+    /// Lower end.
+    pub start: f64,
+    /// Upper end.
+    pub end: f64,
+}
+
+impl Interval {
+    /// The interval [start, end].
+    pub const fn new(start: f64, end: f64) -> Self {
+        Interval { start, end }
+    }
+    /// end − start.
+    #[inline]
+    pub fn length(&self) -> f64 {
+        self.end - self.start
+    }
+    /// `t` clamped into the interval.
+    #[inline]
+    pub fn clamp(&self, t: f64) -> f64 {
+        t.clamp(self.start, self.end)
+    }
+    /// `t` wrapped periodically into [start, end] (the end itself is kept).
+    #[inline]
+    pub fn wrap(&self, t: f64) -> f64 {
+        if t >= self.start && t <= self.end {
+            return t;
+        }
+        let len = self.length();
+        let w = self.start + (t - self.start).rem_euclid(len);
+        if w >= self.end { self.start } else { w }
+    }
+    /// The parameter start + s·(end − start).
+    #[inline]
+    pub fn lerp(&self, s: f64) -> f64 {
+        self.start + s * (self.end - self.start)
+    }
+}
+
+/// The Frenet frame of a curve at a parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrenetFrame<const D: usize> {
+    /// Unit tangent T = c'/|c'|.
+    pub tangent: Point<D>,
+    /// Unit principal normal N = (c'' − (c''·T)T)/|…|, `None` where the curvature vanishes.
+    pub normal: Option<Point<D>>,
+    /// Binormal B = T × N (3-D curves with a normal only).
+    pub binormal: Option<Point<D>>,
+    /// Curvature κ.
+    pub curvature: f64,
+}
+
+/// A parametric curve c: [a, b] → ℝᴰ.
+///
+/// Implementors provide [`Curve::domain`], [`Curve::is_closed`] and
+/// [`Curve::eval_side`], which writes the position and the first `out.len() − 1`
+/// derivatives with respect to the curve's own parameter into a caller-provided buffer
+/// (no heap allocation per call for the curves of this crate at practical degrees).
+///
+/// Parameters outside the domain are clamped for open curves and wrapped periodically for
+/// closed ones.
+pub trait Curve<const D: usize> {
+    /// The parameter domain [a, b].
+    fn domain(&self) -> Interval;
+
+    /// Whether c(a) = c(b) with the curve continuing smoothly (periodic).
+    fn is_closed(&self) -> bool;
+
+    /// Writes c(t), c'(t), …, c^{(k)}(t) into `out[0..=k]`, k = `out.len() − 1`.
+    /// At a parameter where the curve is not smooth, `side` selects the one-sided limit.
+    fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]);
+
+    /// [`Curve::eval_side`] with the right-hand limit.
+    #[inline]
+    fn eval(&self, t: f64, out: &mut [Point<D>]) {
+        self.eval_side(t, Side::Right, out)
+    }
+
+    /// Evaluates at many parameters: `out[i*(order+1) + k]` = c^{(k)}(params[i]).
+    /// Spline curves override this to reuse span search and basis work.
+    fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
+        let w = order + 1;
+        for (i, &t) in params.iter().enumerate() {
+            self.eval(t, &mut out[i * w..(i + 1) * w]);
+        }
+    }
+
+    /// Parameters where the curve may lose smoothness (knots, segment joins), including
+    /// both ends of the domain, in increasing order. Integration and search use them.
+    fn breakpoints(&self) -> Vec<f64> {
+        let d = self.domain();
+        vec![d.start, d.end]
+    }
+
+    /// The point c(t).
+    #[inline]
+    fn point(&self, t: f64) -> Point<D> {
+        let mut out = [Point::<D>::zeros()];
+        self.eval(t, &mut out);
+        out[0]
+    }
+
+    /// The derivative c^{(order)}(t).
+    fn derivative(&self, t: f64, order: usize) -> Point<D> {
+        let mut out: SmallVec<[Point<D>; 4]> = smallvec![Point::<D>::zeros(); order + 1];
+        self.eval(t, &mut out);
+        out[order]
+    }
+
+    /// The unit tangent c'/|c'|; the zero vector where the curve is not regular.
+    fn tangent(&self, t: f64) -> Point<D> {
+        let d = self.derivative(t, 1);
+        let n = d.norm();
+        if n > 0.0 { d / n } else { d }
+    }
+
+    /// Curvature κ = √(|c'|²|c''|² − (c'·c'')²) / |c'|³ (in 3-D, |c'×c''|/|c'|³);
+    /// zero where c' vanishes.
+    fn curvature(&self, t: f64) -> f64 {
+        let mut out = [Point::<D>::zeros(); 3];
+        self.eval(t, &mut out);
+        curvature_from(&out[1], &out[2])
+    }
+
+    /// The Frenet frame (tangent, principal normal, binormal in 3-D, curvature);
+    /// `None` where c' vanishes.
+    fn frame(&self, t: f64) -> Option<FrenetFrame<D>> {
+        let mut out = [Point::<D>::zeros(); 3];
+        self.eval(t, &mut out);
+        let speed = out[1].norm();
+        if speed == 0.0 {
+            return None;
+        }
+        let tangent = out[1] / speed;
+        let perp = out[2] - tangent * tangent.dot(&out[2]);
+        let curvature = curvature_from(&out[1], &out[2]);
+        let normal = if perp.norm() > 1e-14 * out[2].norm().max(f64::MIN_POSITIVE) {
+            Some(perp.normalize())
+        } else {
+            None
+        };
+        let binormal = match normal {
+            Some(n) if D == 3 => {
+                let mut b = Point::<D>::zeros();
+                b[0] = tangent[1] * n[2] - tangent[2] * n[1];
+                b[1] = tangent[2] * n[0] - tangent[0] * n[2];
+                b[2] = tangent[0] * n[1] - tangent[1] * n[0];
+                Some(b)
+            }
+            _ => None,
+        };
+        Some(FrenetFrame { tangent, normal, binormal, curvature })
+    }
+
+    /// Arc length of the whole curve to the absolute tolerance `tolerance`
+    /// (adaptive Gauss–Legendre, see [`crate::ops::length`]).
+    fn length(&self, tolerance: f64) -> f64 {
+        let d = self.domain();
+        crate::ops::length::arc_length(self, d.start, d.end, tolerance)
+    }
+
+    /// The parameter and point of the curve closest to `query`
+    /// (see [`crate::ops::closest_point`]).
+    fn closest_point(&self, query: &Point<D>) -> (f64, Point<D>) {
+        crate::ops::closest_point::closest_point(self, query)
+    }
+}
+
+/// κ from first and second derivative (any dimension, Lagrange identity).
+pub fn curvature_from<const D: usize>(d1: &Point<D>, d2: &Point<D>) -> f64 {
+    let s2 = d1.norm_squared();
+    if s2 == 0.0 {
+        return 0.0;
+    }
+    let cross2 = (s2 * d2.norm_squared() - d1.dot(d2).powi(2)).max(0.0);
+    cross2.sqrt() / (s2 * s2.sqrt())
+}
+
+impl<const D: usize, C: Curve<D> + ?Sized> Curve<D> for Box<C> {
+    fn domain(&self) -> Interval {
+        (**self).domain()
+    }
+    fn is_closed(&self) -> bool {
+        (**self).is_closed()
+    }
+    fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
+        (**self).eval_side(t, side, out)
+    }
+    fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
+        (**self).eval_many(params, order, out)
+    }
+    fn breakpoints(&self) -> Vec<f64> {
+        (**self).breakpoints()
+    }
+}

@@ -1,0 +1,98 @@
+//! Affine frames: x ↦ A x + b, with A any invertible linear map (rotation, uniform or
+//! non-uniform scale, shear). Positions transform as points, derivatives as vectors
+//! (A v, no translation).
+
+use nalgebra::{SMatrix, Unit, Vector3};
+
+use crate::Point;
+use crate::error::{Error, Result};
+
+/// An affine map x ↦ linear · x + translation in ℝᴰ.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Affine<const D: usize> {
+    /// The linear part A.
+    pub linear: SMatrix<f64, D, D>,
+    /// The translation b.
+    pub translation: Point<D>,
+}
+
+impl<const D: usize> Default for Affine<D> {
+    fn default() -> Self {
+        Self::identity()
+    }
+}
+
+impl<const D: usize> Affine<D> {
+    /// The identity map.
+    pub fn identity() -> Self {
+        Affine { linear: SMatrix::identity(), translation: Point::<D>::zeros() }
+    }
+    /// x ↦ x + v.
+    pub fn translation(v: Point<D>) -> Self {
+        Affine { linear: SMatrix::identity(), translation: v }
+    }
+    /// x ↦ s x (about the origin).
+    pub fn uniform_scale(s: f64) -> Self {
+        Affine { linear: SMatrix::identity() * s, translation: Point::<D>::zeros() }
+    }
+    /// x ↦ diag(s) x (about the origin).
+    pub fn scale(s: Point<D>) -> Self {
+        Affine { linear: SMatrix::from_diagonal(&s), translation: Point::<D>::zeros() }
+    }
+    /// The map `self` applied after `first`: x ↦ self(first(x)).
+    pub fn after(&self, first: &Affine<D>) -> Self {
+        Affine {
+            linear: self.linear * first.linear,
+            translation: self.linear * first.translation + self.translation,
+        }
+    }
+    /// The same linear map acting about `center` instead of the origin:
+    /// x ↦ A (x − c) + c + b.
+    pub fn about(&self, center: &Point<D>) -> Self {
+        Affine { linear: self.linear, translation: center - self.linear * center + self.translation }
+    }
+    /// Maps a position: A x + b.
+    #[inline]
+    pub fn apply_point(&self, p: &Point<D>) -> Point<D> {
+        self.linear * p + self.translation
+    }
+    /// Maps a vector (a derivative): A v.
+    #[inline]
+    pub fn apply_vector(&self, v: &Point<D>) -> Point<D> {
+        self.linear * v
+    }
+    /// Maps `[c, c', c'', …]`: the first entry as a point, the rest as vectors.
+    pub fn apply_derivatives(&self, values: &mut [Point<D>]) {
+        for (k, v) in values.iter_mut().enumerate() {
+            *v = if k == 0 { self.apply_point(v) } else { self.apply_vector(v) };
+        }
+    }
+    /// The inverse map, if A is invertible.
+    pub fn inverse(&self) -> Result<Self> {
+        let inv = self
+            .linear
+            .try_inverse()
+            .ok_or_else(|| Error::invalid("transform", "the linear part is singular"))?;
+        Ok(Affine { linear: inv, translation: -(inv * self.translation) })
+    }
+}
+
+impl Affine<3> {
+    /// Rotation by `angle` radians about `axis` through the origin (right-hand rule).
+    pub fn rotation(axis: Point<3>, angle: f64) -> Result<Self> {
+        let n = axis.norm();
+        if !(n > 0.0 && n.is_finite() && angle.is_finite()) {
+            return Err(Error::invalid("rotate", format!("axis must be non-zero and finite, angle finite; got axis norm {n}, angle {angle}")));
+        }
+        let r = nalgebra::Rotation3::from_axis_angle(&Unit::new_normalize(Vector3::from(axis)), angle);
+        Ok(Affine { linear: *r.matrix(), translation: Point::<3>::zeros() })
+    }
+}
+
+impl Affine<2> {
+    /// Rotation by `angle` radians about the origin (counter-clockwise).
+    pub fn rotation_2d(angle: f64) -> Self {
+        let (s, c) = angle.sin_cos();
+        Affine { linear: SMatrix::<f64, 2, 2>::new(c, -s, s, c), translation: Point::<2>::zeros() }
+    }
+}
