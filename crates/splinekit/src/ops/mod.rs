@@ -3,3 +3,14 @@
 
 pub mod closest_point;
 pub mod length;
+pub mod curve_ops;
+pub mod decomposition;
+pub mod degree_elevation;
+pub mod homogeneous;
+pub mod knot_insertion;
+pub mod knot_removal;
+pub mod spline_data;
+
+pub use decomposition::BezierSegment;
+pub use homogeneous::Homogeneous;
+pub use spline_data::SplineData;
