@@ -1,1 +1,11 @@
-//! Least-squares fitting and interpolation.
+//! Least-squares fitting and interpolation of B-spline curves.
+
+pub mod banded_qr;
+pub mod interpolate;
+pub mod lsq;
+pub mod parametrize;
+
+pub use banded_qr::BandedLeastSquares;
+pub use interpolate::{Interpolation, InterpolationOptions, interpolate};
+pub use lsq::{Fit, FitOptions, fit, fit_curve, fit_with_knots};
+pub use parametrize::{KnotPlacement, Parametrization, fit_knots, parametrize, periodic_knots};

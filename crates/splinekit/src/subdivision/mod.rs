@@ -1,1 +1,9 @@
-//! Subdivision curves.
+//! Subdivision curves: Chaikin, Lane–Riesenfeld of any degree, and the 4-point scheme.
+
+pub mod chaikin;
+pub mod four_point;
+pub mod lane_riesenfeld;
+
+pub use chaikin::chaikin;
+pub use four_point::four_point;
+pub use lane_riesenfeld::{lane_riesenfeld, lane_riesenfeld_limit};

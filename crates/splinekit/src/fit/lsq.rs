@@ -1,0 +1,218 @@
+//! Least-squares B-spline approximation of sampled points.
+//!
+//! Minimises Σ_i (w_i |c(t_i) − Q_i|)² over the control points of a B-spline with given
+//! degree and knots (the problem scipy's `make_lsq_spline` solves), by banded QR; see
+//! [`super::banded_qr`].
+
+use smallvec::SmallVec;
+
+use crate::Point;
+use crate::basis::{Side, basis_functions, find_span};
+use crate::curve::{BSplineCurve, Curve};
+use crate::error::{Error, Result, check_finite, check_points_finite};
+use crate::fit::banded_qr::BandedLeastSquares;
+use crate::fit::parametrize::{KnotPlacement, Parametrization, fit_knots, parametrize, periodic_knots};
+
+/// A fitted curve with its data parameters and quality figures.
+#[derive(Debug, Clone)]
+pub struct Fit<const D: usize> {
+    /// The fitted B-spline.
+    pub curve: BSplineCurve<D>,
+    /// The parameter of each data point.
+    pub params: Vec<f64>,
+    /// √(Σ|c(t_i) − Q_i|² / m).
+    pub rms_error: f64,
+    /// max |c(t_i) − Q_i|.
+    pub max_error: f64,
+    /// max|R_kk|/min|R_kk| of the QR factor: a lower estimate of the condition number of
+    /// the (weighted) collocation matrix.
+    pub condition_estimate: f64,
+}
+
+/// Options of [`fit`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct FitOptions {
+    /// Degree p ≥ 1.
+    pub degree: usize,
+    /// Number of control points n (p + 1 ≤ n ≤ number of points).
+    pub control_points: usize,
+    /// Data parameters.
+    pub params: Parametrization,
+    /// Knot placement.
+    pub knots: KnotPlacement,
+    /// Fit a closed (periodic) curve.
+    pub closed: bool,
+    /// Make the (open) curve start and end exactly at the first and last data points.
+    pub interpolate_ends: bool,
+    /// Optional weights w_i ≥ 0 multiplying the residuals.
+    pub weights: Option<Vec<f64>>,
+}
+
+impl FitOptions {
+    /// Degree and control-point count, other options at their defaults (chord length,
+    /// averaged knots, open, free ends, unweighted).
+    pub fn new(degree: usize, control_points: usize) -> Self {
+        FitOptions {
+            degree,
+            control_points,
+            params: Parametrization::ChordLength,
+            knots: KnotPlacement::Averaged,
+            closed: false,
+            interpolate_ends: false,
+            weights: None,
+        }
+    }
+}
+
+/// Fits a B-spline to `points` as `options` say: parameters, knots, then
+/// [`fit_with_knots`].
+pub fn fit<const D: usize>(points: &[Point<D>], options: &FitOptions) -> Result<Fit<D>> {
+    check_points_finite("points", points)?;
+    let (p, n, m) = (options.degree, options.control_points, points.len());
+    if p == 0 {
+        return Err(Error::invalid("degree", "must be at least 1"));
+    }
+    if n < p + 1 {
+        return Err(Error::invalid("control_points", format!("degree {p} needs at least {} control points, got {n}", p + 1)));
+    }
+    if n > m {
+        return Err(Error::invalid("control_points", format!("{n} control points need at least {n} data points, got {m}")));
+    }
+    let params = parametrize(points, options.params, options.closed)?;
+    let knots = if options.closed {
+        periodic_knots(&params, p, n, options.knots)
+    } else {
+        fit_knots(&params, p, n, options.knots)
+    };
+    fit_with_knots(points, &params, p, knots, options.weights.as_deref(), options.closed, options.interpolate_ends)
+}
+
+/// Least-squares B-spline of `degree` on `knots` through `points` at `params`.
+///
+/// * `periodic`: the knots are a periodic vector (see [`BSplineCurve::new_periodic`]) and
+///   parameters are wrapped into its domain.
+/// * `fixed_ends` (open, clamped knots only): the first and last control points are the
+///   first and last data points; the rest are fitted.
+pub fn fit_with_knots<const D: usize>(
+    points: &[Point<D>],
+    params: &[f64],
+    degree: usize,
+    knots: Vec<f64>,
+    weights: Option<&[f64]>,
+    periodic: bool,
+    fixed_ends: bool,
+) -> Result<Fit<D>> {
+    check_points_finite("points", points)?;
+    check_finite("params", params)?;
+    let m = points.len();
+    if params.len() != m {
+        return Err(Error::count("params", format!("{m} values, one per point"), params.len()));
+    }
+    if let Some(w) = weights {
+        if w.len() != m {
+            return Err(Error::count("weights", format!("{m} values, one per point"), w.len()));
+        }
+        check_finite("weights", w)?;
+        if let Some((i, v)) = w.iter().enumerate().find(|(_, v)| **v < 0.0) {
+            return Err(Error::invalid("weights", format!("weight {i} is {v}, but weights must be ≥ 0")));
+        }
+    }
+    let p = degree;
+    if knots.len() < p + 2 {
+        return Err(Error::count("knots", format!("at least {} values for degree {p}", p + 2), knots.len()));
+    }
+    let n = knots.len() - p - 1;
+    let zeros = vec![Point::<D>::zeros(); n];
+    let template =
+        if periodic { BSplineCurve::new_periodic(p, knots, zeros)? } else { BSplineCurve::new(p, knots, zeros)? };
+    let dom = template.domain();
+    if !periodic {
+        if let Some((i, t)) = params.iter().enumerate().find(|(_, t)| **t < dom.start || **t > dom.end) {
+            return Err(Error::invalid("params", format!("parameter {i} ({t}) is outside the domain [{}, {}]", dom.start, dom.end)));
+        }
+    }
+    let k = template.knots();
+    if fixed_ends && (periodic || k[0] != k[p] || k[n] != k[n + p]) {
+        return Err(Error::invalid("interpolate_ends", "needs an open curve with clamped knots"));
+    }
+    let (eval_knots, eval_pts) = template.evaluation_data();
+    let n_eval = eval_pts.len();
+    let (first_unknown, unknowns) = if fixed_ends { (1, n - 2) } else { (0, n) };
+    let mut ls = BandedLeastSquares::<D>::new(unknowns, p + 1, if periodic { p } else { 0 });
+    // Rows in parameter order keep the QR fill bounded.
+    let mut order: Vec<usize> = (0..m).collect();
+    let wrap = |t: f64| if periodic { dom.wrap(t) } else { t };
+    if params.windows(2).any(|w| wrap(w[1]) < wrap(w[0])) {
+        order.sort_by(|&a, &b| wrap(params[a]).total_cmp(&wrap(params[b])));
+    }
+    let mut basis: SmallVec<[f64; 16]> = SmallVec::from_elem(0.0, p + 1);
+    let mut row: SmallVec<[f64; 16]> = SmallVec::new();
+    for &i in &order {
+        let t = wrap(params[i]);
+        let span = find_span(eval_knots, p, n_eval, t, Side::Right);
+        basis_functions(eval_knots, p, span, t, &mut basis);
+        let w = weights.map_or(1.0, |w| w[i]);
+        if w == 0.0 {
+            continue;
+        }
+        let mut rhs = points[i] * w;
+        let mut first = (span - p) % n;
+        row.clear();
+        for (r, b) in basis.iter().enumerate() {
+            let col = (span - p + r) % n;
+            if fixed_ends && col == 0 {
+                rhs -= points[0] * (b * w);
+                first = 1;
+            } else if fixed_ends && col == n - 1 {
+                rhs -= points[m - 1] * (b * w);
+            } else {
+                row.push(b * w);
+            }
+        }
+        if !row.is_empty() {
+            ls.add_row(first - first_unknown, &row, rhs);
+        }
+    }
+    let sol = ls.solve().map_err(|e| match e {
+        Error::Numerical { message, .. } => Error::numerical("fit", message.replace("unknown", "control point")),
+        other => other,
+    })?;
+    let mut ctrl = Vec::with_capacity(n);
+    if fixed_ends {
+        ctrl.push(points[0]);
+        ctrl.extend_from_slice(&sol.x);
+        ctrl.push(points[m - 1]);
+    } else {
+        ctrl = sol.x;
+    }
+    let knots = template.knots().to_vec();
+    let curve = if periodic { BSplineCurve::new_periodic(p, knots, ctrl)? } else { BSplineCurve::new(p, knots, ctrl)? };
+    let mut sum = 0.0;
+    let mut max: f64 = 0.0;
+    for (q, &t) in points.iter().zip(params) {
+        let e = (curve.point(t) - q).norm();
+        sum += e * e;
+        max = max.max(e);
+    }
+    Ok(Fit { curve, params: params.to_vec(), rms_error: (sum / m as f64).sqrt(), max_error: max, condition_estimate: sol.condition_estimate })
+}
+
+/// Samples a curve at `samples` uniform parameters (closed curves: without repeating the
+/// first point) and fits it with [`fit`]; the data parameters are the model's own,
+/// rescaled to [0, 1], so `params` in the options is ignored.
+pub fn fit_curve<const D: usize, C: Curve<D> + ?Sized>(model: &C, samples: usize, options: &FitOptions) -> Result<Fit<D>> {
+    if samples < 2 {
+        return Err(Error::invalid("samples", format!("need at least 2, got {samples}")));
+    }
+    let dom = model.domain();
+    let closed = options.closed;
+    let denom = if closed { samples } else { samples - 1 } as f64;
+    let params: Vec<f64> = (0..samples).map(|i| i as f64 / denom).collect();
+    let points: Vec<Point<D>> = params.iter().map(|&s| model.point(dom.lerp(s))).collect();
+    let (p, n) = (options.degree, options.control_points);
+    if n < p + 1 || n > samples {
+        return Err(Error::invalid("control_points", format!("need {} ≤ control points ≤ samples = {samples}, got {n}", p + 1)));
+    }
+    let knots = if closed { periodic_knots(&params, p, n, options.knots) } else { fit_knots(&params, p, n, options.knots) };
+    fit_with_knots(&points, &params, p, knots, options.weights.as_deref(), closed, options.interpolate_ends)
+}

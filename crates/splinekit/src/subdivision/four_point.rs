@@ -1,0 +1,48 @@
+//! The interpolatory 4-point scheme of Dyn, Levin and Gregory: old points stay, and each
+//! edge gets P_{2i+1} = (½ + w)(P_i + P_{i+1}) − w(P_{i−1} + P_{i+2}); w = 1/16 gives the
+//! classic C¹ scheme, reproducing cubics.
+
+use crate::Point;
+use crate::error::{Error, Result, check_points_finite};
+use crate::subdivision::lane_riesenfeld::check_output_size;
+
+/// `steps` rounds of the 4-point scheme with tension `w` (0 < w < 1/8 for a C¹ limit).
+/// Closed polygons are cyclic (n → 2n points); open ones (n → 2n − 1) use the reflected
+/// neighbours P_{−1} = 2P_0 − P_1 and P_n = 2P_{n−1} − P_{n−2} at the ends.
+pub fn four_point<const D: usize>(points: &[Point<D>], steps: usize, closed: bool, w: f64) -> Result<Vec<Point<D>>> {
+    check_points_finite("points", points)?;
+    if !(w.is_finite() && w > 0.0 && w < 0.25) {
+        return Err(Error::invalid("tension", format!("must be in (0, 1/4), got {w}")));
+    }
+    let min = if closed { 3 } else { 2 };
+    if points.len() < min {
+        return Err(Error::count("points", format!("at least {min} points"), points.len()));
+    }
+    check_output_size(points.len(), steps, 2, "steps")?;
+    let mut p = points.to_vec();
+    for _ in 0..steps {
+        let n = p.len();
+        let at = |i: isize| -> Point<D> {
+            if closed {
+                p[i.rem_euclid(n as isize) as usize]
+            } else if i < 0 {
+                p[0] * 2.0 - p[1]
+            } else if i >= n as isize {
+                p[n - 1] * 2.0 - p[n - 2]
+            } else {
+                p[i as usize]
+            }
+        };
+        let edges = if closed { n } else { n - 1 };
+        let mut q = Vec::with_capacity(2 * n);
+        for i in 0..edges as isize {
+            q.push(at(i));
+            q.push((at(i) + at(i + 1)) * (0.5 + w) - (at(i - 1) + at(i + 2)) * w);
+        }
+        if !closed {
+            q.push(p[n - 1]);
+        }
+        p = q;
+    }
+    Ok(p)
+}

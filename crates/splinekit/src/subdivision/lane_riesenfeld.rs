@@ -1,0 +1,80 @@
+//! Lane–Riesenfeld subdivision of any degree d: each step doubles every point and then
+//! averages neighbours d times. Its limit is the uniform B-spline of degree d on the
+//! initial control polygon (periodic for closed polygons, unclamped for open ones): one
+//! step is exactly midpoint knot insertion.
+
+use crate::Point;
+use crate::curve::BSplineCurve;
+use crate::error::{Error, Result, check_points_finite};
+
+/// Upper bound on the number of output points a call may produce.
+pub const MAX_POINTS: usize = 50_000_000;
+
+pub(crate) fn check_output_size(n: usize, steps: usize, factor: usize, field: &str) -> Result<()> {
+    let mut total = n;
+    for _ in 0..steps {
+        total = total.saturating_mul(factor);
+        if total > MAX_POINTS {
+            return Err(Error::invalid(
+                field,
+                format!("{steps} steps on {n} points would produce more than {MAX_POINTS} points"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// One or more Lane–Riesenfeld steps of degree `degree` ≥ 1.
+///
+/// Closed polygons (cyclic; the first point is not repeated at the end) of n points give
+/// 2^k n points. Open polygons of n points give n_{k+1} = 2 n_k − d points after each step,
+/// the control polygon of the same unclamped uniform B-spline on half-spaced knots.
+pub fn lane_riesenfeld<const D: usize>(points: &[Point<D>], degree: usize, steps: usize, closed: bool) -> Result<Vec<Point<D>>> {
+    check_points_finite("points", points)?;
+    if degree == 0 {
+        return Err(Error::invalid("degree", "must be at least 1"));
+    }
+    let min = if closed { 2 } else { degree + 1 };
+    if points.len() < min {
+        return Err(Error::count("points", format!("at least {min} points for degree {degree}"), points.len()));
+    }
+    check_output_size(points.len(), steps, 2, "steps")?;
+    let mut p = points.to_vec();
+    for _ in 0..steps {
+        let mut q = Vec::with_capacity(2 * p.len());
+        for v in &p {
+            q.push(*v);
+            q.push(*v);
+        }
+        for _ in 0..degree {
+            if closed {
+                let first = q[0];
+                let len = q.len();
+                for i in 0..len - 1 {
+                    q[i] = (q[i] + q[i + 1]) * 0.5;
+                }
+                q[len - 1] = (q[len - 1] + first) * 0.5;
+            } else {
+                for i in 0..q.len() - 1 {
+                    q[i] = (q[i] + q[i + 1]) * 0.5;
+                }
+                q.pop();
+            }
+        }
+        p = q;
+    }
+    Ok(p)
+}
+
+/// The limit curve of [`lane_riesenfeld`]: the uniform B-spline of degree d on the
+/// polygon, with knot spacing 1 (periodic for closed polygons, unclamped on [d, n] for
+/// open ones).
+pub fn lane_riesenfeld_limit<const D: usize>(points: &[Point<D>], degree: usize, closed: bool) -> Result<BSplineCurve<D>> {
+    let n = points.len();
+    let knots: Vec<f64> = (0..n + degree + 1).map(|i| i as f64).collect();
+    if closed {
+        BSplineCurve::new_periodic(degree, knots, points.to_vec())
+    } else {
+        BSplineCurve::new(degree, knots, points.to_vec())
+    }
+}
