@@ -1,3 +1,92 @@
+//! The `splinekit` command line: evaluate, fit, interpolate, refine and subdivide curves
+//! given as JSON shape documents (see docs/format.md).
+//!
+//! Exit status: 0 on success, 2 on bad input (with one line `error: …` on standard error
+//! naming the offending field), never a panic trace.
+
+mod commands;
+mod input;
+mod output;
+
+use clap::{Parser, Subcommand};
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "splinekit",
+    version,
+    about = "Curves and surfaces: Bézier, B-spline, NURBS, blending splines",
+    long_about = "splinekit evaluates, fits, refines and subdivides parametric curves described by JSON \
+                  shape documents (see docs/format.md). Input is a file path or - for standard input; \
+                  JSON goes to standard output unless -o is given. Bad input ends with exit status 2 \
+                  and one line on standard error naming the offending field."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Evaluate a shape: points and derivatives at parameters.
+    Eval(commands::eval::EvalArgs),
+    /// Least-squares B-spline approximation of points.
+    Fit(commands::fit::FitArgs),
+    /// B-spline through every point (global interpolation).
+    Interpolate(commands::fit::InterpolateArgs),
+    /// Knot insertion, degree elevation or knot removal; the curve stays the same.
+    Refine(commands::refine::RefineArgs),
+    /// Subdivision curves: Chaikin, Lane–Riesenfeld, 4-point.
+    Subdivide(commands::subdivide::SubdivideArgs),
+}
+
+fn one_line(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
 fn main() {
-    println!("Hello, world!");
+    std::panic::set_hook(Box::new(|info| {
+        let msg = info
+            .payload()
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| info.payload().downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        eprintln!("error: internal error, please report it: {}", one_line(&msg));
+    }));
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            use clap::error::ErrorKind;
+            if matches!(
+                e.kind(),
+                ErrorKind::DisplayHelp
+                    | ErrorKind::DisplayVersion
+                    | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+            ) {
+                let _ = e.print();
+                std::process::exit(if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand { 2 } else { 0 });
+            }
+            let text = e.render().to_string();
+            // clap's message runs until its blank line before "Usage:"; keep that part.
+            let message = text.split("\n\n").next().unwrap_or("invalid arguments");
+            let message = message.trim_start_matches("error: ");
+            eprintln!("error: {} (see --help)", one_line(message));
+            std::process::exit(2);
+        }
+    };
+    let result = std::panic::catch_unwind(|| match &cli.command {
+        Command::Eval(a) => commands::eval::run(a),
+        Command::Fit(a) => commands::fit::run_fit(a),
+        Command::Interpolate(a) => commands::fit::run_interpolate(a),
+        Command::Refine(a) => commands::refine::run(a),
+        Command::Subdivide(a) => commands::subdivide::run(a),
+    });
+    match result {
+        Ok(Ok(())) => {}
+        Ok(Err(e)) => {
+            eprintln!("error: {}", one_line(&format!("{e:#}")));
+            std::process::exit(2);
+        }
+        Err(_) => std::process::exit(70),
+    }
 }

@@ -1,14 +1,40 @@
-pub fn add(left: u64, right: u64) -> u64 {
-    left + right
+//! # splinekit-scene
+//!
+//! Shape documents (JSON, see `docs/format.md`) ↔ splinekit kernel objects: parsing with
+//! errors that name the offending field, building curves in the dimension their points
+//! ask for, and document-level operations such as refinement.
+
+#![warn(missing_docs)]
+
+pub mod build;
+pub mod curves;
+pub mod error;
+pub mod points;
+pub mod refine;
+
+pub use build::{AnyCurve, CurveVisitor};
+pub use curves::CurveDocument;
+pub use error::{DocumentError, Result};
+
+use serde_json::Value;
+
+/// Any shape document. Surfaces and blending splines join as they are implemented.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ShapeDocument {
+    /// A curve.
+    Curve(CurveDocument),
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
+impl ShapeDocument {
+    /// Parses a shape document from JSON text.
+    pub fn from_json(text: &str) -> Result<Self> {
+        let value: Value =
+            serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
+        Self::parse(&value)
+    }
 
-    #[test]
-    fn it_works() {
-        let result = add(2, 2);
-        assert_eq!(result, 4);
+    /// Parses a shape document.
+    pub fn parse(value: &Value) -> Result<Self> {
+        Ok(ShapeDocument::Curve(CurveDocument::parse(value)?))
     }
 }

@@ -41,10 +41,7 @@ impl<const D: usize> Affine<D> {
     }
     /// The map `self` applied after `first`: x ↦ self(first(x)).
     pub fn after(&self, first: &Affine<D>) -> Self {
-        Affine {
-            linear: self.linear * first.linear,
-            translation: self.linear * first.translation + self.translation,
-        }
+        Affine { linear: self.linear * first.linear, translation: self.linear * first.translation + self.translation }
     }
     /// The same linear map acting about `center` instead of the origin:
     /// x ↦ A (x − c) + c + b.
@@ -69,10 +66,8 @@ impl<const D: usize> Affine<D> {
     }
     /// The inverse map, if A is invertible.
     pub fn inverse(&self) -> Result<Self> {
-        let inv = self
-            .linear
-            .try_inverse()
-            .ok_or_else(|| Error::invalid("transform", "the linear part is singular"))?;
+        let inv =
+            self.linear.try_inverse().ok_or_else(|| Error::invalid("transform", "the linear part is singular"))?;
         Ok(Affine { linear: inv, translation: -(inv * self.translation) })
     }
 }
@@ -82,7 +77,10 @@ impl Affine<3> {
     pub fn rotation(axis: Point<3>, angle: f64) -> Result<Self> {
         let n = axis.norm();
         if !(n > 0.0 && n.is_finite() && angle.is_finite()) {
-            return Err(Error::invalid("rotate", format!("axis must be non-zero and finite, angle finite; got axis norm {n}, angle {angle}")));
+            return Err(Error::invalid(
+                "rotate",
+                format!("axis must be non-zero and finite, angle finite; got axis norm {n}, angle {angle}"),
+            ));
         }
         let r = nalgebra::Rotation3::from_axis_angle(&Unit::new_normalize(Vector3::from(axis)), angle);
         Ok(Affine { linear: *r.matrix(), translation: Point::<3>::zeros() })

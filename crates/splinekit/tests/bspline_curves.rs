@@ -5,14 +5,16 @@ mod common;
 use common::*;
 use proptest::prelude::*;
 use splinekit::Point;
-use splinekit::basis::{Side, basis_function, basis_functions, basis_derivatives, find_span};
+use splinekit::basis::{Side, basis_derivatives, basis_function, basis_functions, find_span};
 use splinekit::curve::{BSplineCurve, Curve, NurbsCurve};
 
 fn sample_curve(degree: usize, n: usize) -> BSplineCurve<3> {
-    let pts = (0..n).map(|i| {
-        let x = i as f64;
-        p3(x, (x * 1.3).sin() * 2.0, (x * 0.7).cos())
-    }).collect();
+    let pts = (0..n)
+        .map(|i| {
+            let x = i as f64;
+            p3(x, (x * 1.3).sin() * 2.0, (x * 0.7).cos())
+        })
+        .collect();
     // Non-uniform clamped knots with one double interior knot.
     let mut knots = vec![0.0; degree + 1];
     let inner = n - degree - 1;
@@ -133,11 +135,17 @@ fn bad_knot_vectors_are_rejected_with_the_numbers() {
     let pts = vec![p2(0.0, 0.0); 8];
     let e = BSplineCurve::new(3, vec![0.0; 11], pts.clone()).unwrap_err().to_string();
     assert_eq!(e, "knots: expected 12 values for 8 control points of degree 3, got 11");
-    let e = BSplineCurve::new(3, vec![0., 0., 0., 0., 2., 1., 3., 4., 5., 5., 5., 5.], pts.clone()).unwrap_err().to_string();
+    let e = BSplineCurve::new(3, vec![0., 0., 0., 0., 2., 1., 3., 4., 5., 5., 5., 5.], pts.clone())
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("non-decreasing") && e.contains("knot 5"), "{e}");
-    let e = BSplineCurve::new(3, vec![0., 0., 0., 0., 1., 1., 1., 1., 1., 5., 5., 5.], pts.clone()).unwrap_err().to_string();
+    let e = BSplineCurve::new(3, vec![0., 0., 0., 0., 1., 1., 1., 1., 1., 5., 5., 5.], pts.clone())
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("multiplicity 5"), "{e}");
-    let e = BSplineCurve::new(3, vec![0., 0., 0., 0., f64::NAN, 1., 2., 3., 4., 5., 5., 5.], pts.clone()).unwrap_err().to_string();
+    let e = BSplineCurve::new(3, vec![0., 0., 0., 0., f64::NAN, 1., 2., 3., 4., 5., 5., 5.], pts.clone())
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("knots") && e.contains("not finite"), "{e}");
     let e = BSplineCurve::<2>::new(100000, vec![0.0; 10], vec![p2(0.0, 0.0); 3]).unwrap_err().to_string();
     assert!(e.contains("degree 100000"), "{e}");
@@ -147,10 +155,12 @@ fn bad_knot_vectors_are_rejected_with_the_numbers() {
 fn periodic_curve_closes_with_full_continuity() {
     for degree in 1..=5 {
         let n = 7;
-        let pts: Vec<Point<2>> = (0..n).map(|i| {
-            let a = i as f64 * std::f64::consts::TAU / n as f64;
-            p2(a.cos() * (1.0 + 0.3 * i as f64), a.sin())
-        }).collect();
+        let pts: Vec<Point<2>> = (0..n)
+            .map(|i| {
+                let a = i as f64 * std::f64::consts::TAU / n as f64;
+                p2(a.cos() * (1.0 + 0.3 * i as f64), a.sin())
+            })
+            .collect();
         // Non-uniform but periodic spacing.
         let gaps = [1.0, 0.5, 2.0, 1.0, 0.7, 1.3, 0.9];
         let mut knots = vec![0.0];
@@ -293,10 +303,12 @@ fn unclamped_curves_can_be_clamped_without_change() {
 
 #[test]
 fn periodic_operations_stay_periodic_and_unchanged() {
-    let pts: Vec<Point<2>> = (0..6).map(|i| {
-        let a = i as f64 * std::f64::consts::TAU / 6.0;
-        p2(a.cos() * (1.0 + 0.2 * (i % 2) as f64), a.sin())
-    }).collect();
+    let pts: Vec<Point<2>> = (0..6)
+        .map(|i| {
+            let a = i as f64 * std::f64::consts::TAU / 6.0;
+            p2(a.cos() * (1.0 + 0.2 * (i % 2) as f64), a.sin())
+        })
+        .collect();
     let c = BSplineCurve::periodic_uniform(3, pts).unwrap();
     let i = c.insert_knot(0.3, 1).unwrap();
     assert!(i.is_periodic());

@@ -5,8 +5,8 @@ mod common;
 use common::*;
 use serde_json::Value;
 use splinekit::Point;
-use splinekit::curve::{BSplineCurve, Curve};
 use splinekit::curve::model::Circle;
+use splinekit::curve::{BSplineCurve, Curve};
 use splinekit::fit::{self, FitOptions, InterpolationOptions, KnotPlacement, Parametrization};
 
 fn reference() -> Value {
@@ -26,11 +26,16 @@ fn check_lsq<const D: usize>(case: &Value) {
     let k = case["degree"].as_u64().unwrap() as usize;
     let pts: Vec<Point<D>> = points(&case["points"]);
     let w = if case["weights"].is_null() { None } else { Some(floats(&case["weights"])) };
-    let f = fit::fit_with_knots(&pts, &floats(&case["params"]), k, floats(&case["knots"]), w.as_deref(), false, false).unwrap();
+    let f = fit::fit_with_knots(&pts, &floats(&case["params"]), k, floats(&case["knots"]), w.as_deref(), false, false)
+        .unwrap();
     let expected: Vec<Point<D>> = points(&case["control_points"]);
     let scale = expected.iter().map(|p| p.norm()).fold(1.0, f64::max);
     let err = f.curve.control_points().iter().zip(&expected).map(|(a, b)| (a - b).norm()).fold(0.0, f64::max);
-    assert!(err < 1e-10 * scale, "{name}: control points differ from scipy by {err} (condition estimate {:.3e})", f.condition_estimate);
+    assert!(
+        err < 1e-10 * scale,
+        "{name}: control points differ from scipy by {err} (condition estimate {:.3e})",
+        f.condition_estimate
+    );
 }
 
 #[test]
@@ -82,10 +87,12 @@ fn evaluation_agrees_with_scipy_bspline() {
 #[test]
 fn fitting_reproduces_polynomials_of_the_spline_degree_exactly() {
     // Any cubic polynomial curve lies in the spline space, so LSQ returns it exactly.
-    let pts: Vec<Point<2>> = (0..50).map(|i| {
-        let t = i as f64 / 49.0;
-        p2(1.0 + 2.0 * t - 3.0 * t * t + t * t * t, 0.5 - t * t * t)
-    }).collect();
+    let pts: Vec<Point<2>> = (0..50)
+        .map(|i| {
+            let t = i as f64 / 49.0;
+            p2(1.0 + 2.0 * t - 3.0 * t * t + t * t * t, 0.5 - t * t * t)
+        })
+        .collect();
     let mut opts = FitOptions::new(3, 9);
     opts.params = Parametrization::Uniform;
     opts.knots = KnotPlacement::Uniform;
@@ -113,10 +120,12 @@ fn fitting_a_circle_converges_and_closed_fits_are_periodic() {
 
 #[test]
 fn fixed_ends_and_weights() {
-    let pts: Vec<Point<2>> = (0..40).map(|i| {
-        let t = i as f64 / 39.0;
-        p2(t, (6.0 * t).sin() + 0.05 * ((i * 7919) % 13) as f64 / 13.0)
-    }).collect();
+    let pts: Vec<Point<2>> = (0..40)
+        .map(|i| {
+            let t = i as f64 / 39.0;
+            p2(t, (6.0 * t).sin() + 0.05 * ((i * 7919) % 13) as f64 / 13.0)
+        })
+        .collect();
     let mut opts = FitOptions::new(3, 8);
     opts.interpolate_ends = true;
     let f = fit::fit(&pts, &opts).unwrap();
@@ -146,10 +155,12 @@ fn underdetermined_fits_are_refused() {
 
 #[test]
 fn interpolation_passes_through_the_points() {
-    let pts: Vec<Point<3>> = (0..12).map(|i| {
-        let a = i as f64 * 0.6;
-        p3(a.cos(), a.sin(), 0.1 * i as f64 + (i % 3) as f64 * 0.05)
-    }).collect();
+    let pts: Vec<Point<3>> = (0..12)
+        .map(|i| {
+            let a = i as f64 * 0.6;
+            p3(a.cos(), a.sin(), 0.1 * i as f64 + (i % 3) as f64 * 0.05)
+        })
+        .collect();
     for p in 1..=5 {
         for params in [Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal] {
             let mut o = InterpolationOptions::new(p);

@@ -35,7 +35,12 @@ fn check_closed_seam<const D: usize>(c: &dyn Curve<D>, name: &str, orders: usize
     c.eval_side(d.start, Side::Right, &mut a);
     c.eval_side(d.end, Side::Left, &mut b);
     for k in 0..=orders {
-        assert!((a[k] - b[k]).norm() < 1e-9 * a[k].norm().max(1.0), "{name}: derivative {k} at the seam {} vs {}", a[k], b[k]);
+        assert!(
+            (a[k] - b[k]).norm() < 1e-9 * a[k].norm().max(1.0),
+            "{name}: derivative {k} at the seam {} vs {}",
+            a[k],
+            b[k]
+        );
     }
 }
 
@@ -159,7 +164,11 @@ fn model_curves_match_their_formulas() {
     let circle = Circle::new(2.0).unwrap();
     for i in 0..=60 {
         let t = TAU * i as f64 / 60.0;
-        let h = p3(16.0 * t.sin().powi(3), 13.0 * t.cos() - 5.0 * (2.0 * t).cos() - 2.0 * (3.0 * t).cos() - (4.0 * t).cos(), 0.0);
+        let h = p3(
+            16.0 * t.sin().powi(3),
+            13.0 * t.cos() - 5.0 * (2.0 * t).cos() - 2.0 * (3.0 * t).cos() - (4.0 * t).cos(),
+            0.0,
+        );
         assert!((heart.point(t) - h).norm() < 1e-13);
         let r = p3(1.5 * (4.0 * t).cos() * t.cos(), 1.5 * (4.0 * t).cos() * t.sin(), 1.5 * (4.0 * t).sin());
         assert!((rose.point(t) - r).norm() < 1e-14);

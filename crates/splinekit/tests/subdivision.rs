@@ -38,7 +38,10 @@ fn lane_riesenfeld_converges_to_the_uniform_bspline() {
                 let d = refined.domain();
                 let samples: Vec<Point<2>> = (0..=40).map(|i| refined.point(d.lerp(i as f64 / 40.0))).collect();
                 let off = max_distance_to_curve(&samples, &limit);
-                assert!(off < 1e-9, "degree {degree} closed {closed} step {steps}: refined curve leaves the limit by {off}");
+                assert!(
+                    off < 1e-9,
+                    "degree {degree} closed {closed} step {steps}: refined curve leaves the limit by {off}"
+                );
                 // And the polygon itself approaches the curve.
                 let dist = max_distance_to_curve(&q, &limit);
                 if degree >= 2 {

@@ -34,14 +34,7 @@ pub fn basis_functions(knots: &[f64], degree: usize, span: usize, t: f64, out: &
 
 /// Basis values and derivatives: `ders[k*(p+1) + r]` = d^k/dt^k N_{span−p+r,p}(t) for
 /// k = 0 … `order` (orders above p are zero). `ders.len()` must be ≥ (order+1)(p+1).
-pub fn basis_derivatives(
-    knots: &[f64],
-    degree: usize,
-    span: usize,
-    t: f64,
-    order: usize,
-    ders: &mut [f64],
-) {
+pub fn basis_derivatives(knots: &[f64], degree: usize, span: usize, t: f64, order: usize, ders: &mut [f64]) {
     let p = degree;
     let w = p + 1;
     let n = order.min(p);
@@ -124,11 +117,7 @@ pub fn basis_function(knots: &[f64], degree: usize, i: usize, t: f64) -> f64 {
         *v = if t >= knots[i + j] && t < knots[i + j + 1] { 1.0 } else { 0.0 };
     }
     for k in 1..=p {
-        let mut saved = if n[0] == 0.0 {
-            0.0
-        } else {
-            (t - knots[i]) * n[0] / (knots[i + k] - knots[i])
-        };
+        let mut saved = if n[0] == 0.0 { 0.0 } else { (t - knots[i]) * n[0] / (knots[i + k] - knots[i]) };
         for j in 0..(p - k + 1) {
             let ul = knots[i + j + 1];
             let ur = knots[i + j + k + 1];

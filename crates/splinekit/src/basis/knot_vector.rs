@@ -76,11 +76,7 @@ impl KnotVector {
             if m > degree + 1 {
                 return Err(Error::invalid(
                     "knots",
-                    format!(
-                        "knot {} has multiplicity {m}, more than degree + 1 = {}",
-                        k[i],
-                        degree + 1
-                    ),
+                    format!("knot {} has multiplicity {m}, more than degree + 1 = {}", k[i], degree + 1),
                 ));
             }
             i = j + 1;
@@ -88,10 +84,7 @@ impl KnotVector {
         if k[degree] >= k[n] {
             return Err(Error::invalid(
                 "knots",
-                format!(
-                    "the domain [t_{degree}, t_{n}] = [{}, {}] is empty",
-                    k[degree], k[n]
-                ),
+                format!("the domain [t_{degree}, t_{n}] = [{}, {}] is empty", k[degree], k[n]),
             ));
         }
         Ok(kv)
@@ -199,10 +192,7 @@ pub fn advance_span(knots: &[f64], degree: usize, n: usize, mut span: usize, t: 
 
 pub(crate) fn check_interval(start: f64, end: f64) -> Result<()> {
     if !(start.is_finite() && end.is_finite() && start < end) {
-        return Err(Error::invalid(
-            "domain",
-            format!("expected finite start < end, got [{start}, {end}]"),
-        ));
+        return Err(Error::invalid("domain", format!("expected finite start < end, got [{start}, {end}]")));
     }
     Ok(())
 }

@@ -2,8 +2,8 @@
 
 use smallvec::SmallVec;
 
-use crate::Point;
 use crate::Coefficient;
+use crate::Point;
 use crate::basis::{Side, bernstein_all};
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result, check_points_finite};

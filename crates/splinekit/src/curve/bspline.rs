@@ -136,9 +136,9 @@ impl<const D: usize> BSplineCurve<D> {
 
     /// Maps a parameter into the domain: clamped (open) or wrapped (periodic).
     #[inline]
-    fn normalise(&self, t: f64) -> f64 {
+    pub(crate) fn normalise(&self, t: f64, side: Side) -> f64 {
         let d = self.domain();
-        if self.periodic { d.wrap(t) } else { d.clamp(t) }
+        if self.periodic { d.wrap_periodic(t, side) } else { d.clamp(t) }
     }
 
     /// Span index and basis derivatives `ders[k*(p+1)+r]` for k = 0 … order at `t`
@@ -189,7 +189,7 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
 
     #[inline]
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-        let t = self.normalise(t);
+        let t = self.normalise(t, side);
         let order = out.len().saturating_sub(1);
         let mut ders: SmallVec<[f64; 4 * INLINE]> = SmallVec::new();
         let span = self.basis_at(t, side, order.min(self.degree), &mut ders);
@@ -205,7 +205,7 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
         let mut ders: SmallVec<[f64; 4 * INLINE]> = smallvec![0.0; (o + 1) * (p + 1)];
         let mut span = p;
         for (i, &t) in params.iter().enumerate() {
-            let t = self.normalise(t);
+            let t = self.normalise(t, Side::Right);
             span = advance_span(knots, p, n, span, t);
             if o == 0 {
                 basis_functions(knots, p, span, t, &mut ders);

@@ -48,7 +48,14 @@ impl<const D: usize> CatmullRomCurve<D> {
         for i in 1..ext.len() {
             let d = (ext[i] - ext[i - 1]).norm();
             if alpha > 0.0 && d == 0.0 {
-                return Err(Error::invalid("points", format!("points {} and {} coincide, which α = {alpha} does not allow", (i + n - 2) % n, (i + n - 1) % n)));
+                return Err(Error::invalid(
+                    "points",
+                    format!(
+                        "points {} and {} coincide, which α = {alpha} does not allow",
+                        (i + n - 2) % n,
+                        (i + n - 1) % n
+                    ),
+                ));
             }
             knots[i] = knots[i - 1] + if alpha == 0.0 { 1.0 } else { d.powf(alpha) };
         }

@@ -53,14 +53,24 @@ impl<const D: usize> HermiteCurve<D> {
             if params[i] <= params[i - 1] {
                 return Err(Error::invalid(
                     "params",
-                    format!("must be strictly increasing, but params[{i}] = {} ≤ params[{}] = {}", params[i], i - 1, params[i - 1]),
+                    format!(
+                        "must be strictly increasing, but params[{i}] = {} ≤ params[{}] = {}",
+                        params[i],
+                        i - 1,
+                        params[i - 1]
+                    ),
                 ));
             }
         }
         let segments = (0..points.len() - 1)
             .map(|i| {
                 let h = params[i + 1] - params[i];
-                [points[i], points[i] + tangents[i] * (h / 3.0), points[i + 1] - tangents[i + 1] * (h / 3.0), points[i + 1]]
+                [
+                    points[i],
+                    points[i] + tangents[i] * (h / 3.0),
+                    points[i + 1] - tangents[i + 1] * (h / 3.0),
+                    points[i + 1],
+                ]
             })
             .collect();
         Ok(HermiteCurve { params, points, tangents, segments, closed })
@@ -93,7 +103,7 @@ impl<const D: usize> Curve<D> for HermiteCurve<D> {
     }
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         let d = self.domain();
-        let t = if self.closed { d.wrap(t) } else { d.clamp(t) };
+        let t = if self.closed { d.wrap_periodic(t, side) } else { d.clamp(t) };
         let inner = &self.params[1..self.params.len() - 1];
         let i = match side {
             Side::Right => inner.partition_point(|&k| k <= t),

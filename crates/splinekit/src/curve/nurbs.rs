@@ -40,13 +40,7 @@ impl<const D: usize> NurbsCurve<D> {
         Self::build(degree, knots, control_points, weights, true)
     }
 
-    fn build(
-        degree: usize,
-        knots: Vec<f64>,
-        points: Vec<Point<D>>,
-        weights: Vec<f64>,
-        periodic: bool,
-    ) -> Result<Self> {
+    fn build(degree: usize, knots: Vec<f64>, points: Vec<Point<D>>, weights: Vec<f64>, periodic: bool) -> Result<Self> {
         check_weights(&weights, points.len())?;
         let weighted_pts: Vec<Point<D>> = points.iter().zip(&weights).map(|(p, w)| p * *w).collect();
         let weighted = if periodic {
@@ -55,11 +49,7 @@ impl<const D: usize> NurbsCurve<D> {
             BSplineCurve::new(degree, knots, weighted_pts)?
         };
         let n = points.len();
-        let eval_weights = if periodic {
-            (0..n + degree).map(|i| weights[i % n]).collect()
-        } else {
-            weights.clone()
-        };
+        let eval_weights = if periodic { (0..n + degree).map(|i| weights[i % n]).collect() } else { weights.clone() };
         Ok(NurbsCurve { weighted, points, weights, eval_weights })
     }
 
@@ -168,8 +158,7 @@ impl<const D: usize> Curve<D> for NurbsCurve<D> {
         self.weighted.is_periodic()
     }
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-        let d = self.domain();
-        let t = if self.is_periodic() { d.wrap(t) } else { d.clamp(t) };
+        let t = self.weighted.normalise(t, side);
         let order = out.len() - 1;
         let p = self.degree();
         let mut ders: SmallVec<[f64; 4 * INLINE]> = SmallVec::new();

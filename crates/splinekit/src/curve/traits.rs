@@ -39,6 +39,19 @@ impl Interval {
         let w = self.start + (t - self.start).rem_euclid(len);
         if w >= self.end { self.start } else { w }
     }
+    /// `t` wrapped into one period for a periodic curve, honouring the side: the right
+    /// limit at the end of the domain is the value at its start, and the left limit at the
+    /// start is the value at its end, so c(start) and c(end) agree to the last bit.
+    #[inline]
+    pub fn wrap_periodic(&self, t: f64, side: Side) -> f64 {
+        let w = if t >= self.start && t < self.end {
+            t
+        } else {
+            let r = self.start + (t - self.start).rem_euclid(self.length());
+            if r >= self.end { self.start } else { r }
+        };
+        if side == Side::Left && w == self.start { self.end } else { w }
+    }
     /// The parameter start + s·(end − start).
     #[inline]
     pub fn lerp(&self, s: f64) -> f64 {
@@ -143,11 +156,8 @@ pub trait Curve<const D: usize> {
         let tangent = out[1] / speed;
         let perp = out[2] - tangent * tangent.dot(&out[2]);
         let curvature = curvature_from(&out[1], &out[2]);
-        let normal = if perp.norm() > 1e-14 * out[2].norm().max(f64::MIN_POSITIVE) {
-            Some(perp.normalize())
-        } else {
-            None
-        };
+        let normal =
+            if perp.norm() > 1e-14 * out[2].norm().max(f64::MIN_POSITIVE) { Some(perp.normalize()) } else { None };
         let binormal = match normal {
             Some(n) if D == 3 => {
                 let mut b = Point::<D>::zeros();

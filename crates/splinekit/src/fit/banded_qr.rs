@@ -8,8 +8,8 @@
 //! accuracy depends on cond(A), not cond(A)²; [`BandedLeastSquares::solve`] rejects
 //! rank-deficient problems and reports a condition estimate.
 
-use crate::error::{Error, Result};
 use crate::Point;
+use crate::error::{Error, Result};
 
 /// Incremental banded least-squares problem A x ≈ B with D right-hand sides.
 #[derive(Debug, Clone)]
@@ -154,7 +154,7 @@ impl<const D: usize> BandedLeastSquares<D> {
         let max = (0..n).map(|k| diag(k).abs()).fold(0.0, f64::max);
         let min = (0..n).map(|k| diag(k).abs()).fold(f64::INFINITY, f64::min);
         for k in 0..n {
-            if !(diag(k).abs() > max * 1e-14) {
+            if diag(k).abs() <= max * 1e-14 || diag(k).is_nan() {
                 return Err(Error::numerical(
                     "fit",
                     format!(
@@ -200,4 +200,3 @@ fn givens(r: f64, x: f64) -> (f64, f64) {
     let h = r.hypot(x);
     (r / h, x / h)
 }
-

@@ -53,7 +53,10 @@ pub fn interpolate<const D: usize>(points: &[Point<D>], options: &InterpolationO
         return Err(Error::invalid("degree", "must be at least 1"));
     }
     if m < p + 1 {
-        return Err(Error::invalid("points", format!("degree {p} interpolation needs at least {} points, got {m}", p + 1)));
+        return Err(Error::invalid(
+            "points",
+            format!("degree {p} interpolation needs at least {} points, got {m}", p + 1),
+        ));
     }
     if options.closed && options.end_derivatives.is_some() {
         return Err(Error::invalid("end_derivatives", "a closed curve has no ends"));
@@ -102,7 +105,11 @@ pub fn interpolate<const D: usize>(points: &[Point<D>], options: &InterpolationO
 }
 
 /// Solves the square collocation system: row (t, k, v) asks c^{(k)}(t) = v.
-fn solve<const D: usize>(template: &BSplineCurve<D>, rows: &[(f64, usize, Point<D>)], periodic: bool) -> Result<BSplineCurve<D>> {
+fn solve<const D: usize>(
+    template: &BSplineCurve<D>,
+    rows: &[(f64, usize, Point<D>)],
+    periodic: bool,
+) -> Result<BSplineCurve<D>> {
     let p = template.degree();
     let n = template.control_points().len();
     let dom = template.domain();
@@ -115,8 +122,9 @@ fn solve<const D: usize>(template: &BSplineCurve<D>, rows: &[(f64, usize, Point<
         basis_derivatives(knots, p, span, t, k, &mut ders);
         ls.add_row((span - p) % n, &ders[k * (p + 1)..(k + 1) * (p + 1)], v);
     }
-    let sol = ls.solve().map_err(|_| Error::numerical("interpolate", "the collocation matrix is singular (repeated or badly spread points)"))?;
+    let sol = ls.solve().map_err(|_| {
+        Error::numerical("interpolate", "the collocation matrix is singular (repeated or badly spread points)")
+    })?;
     let knots = template.knots().to_vec();
     if periodic { BSplineCurve::new_periodic(p, knots, sol.x) } else { BSplineCurve::new(p, knots, sol.x) }
 }
-

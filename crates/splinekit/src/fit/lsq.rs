@@ -73,10 +73,16 @@ pub fn fit<const D: usize>(points: &[Point<D>], options: &FitOptions) -> Result<
         return Err(Error::invalid("degree", "must be at least 1"));
     }
     if n < p + 1 {
-        return Err(Error::invalid("control_points", format!("degree {p} needs at least {} control points, got {n}", p + 1)));
+        return Err(Error::invalid(
+            "control_points",
+            format!("degree {p} needs at least {} control points, got {n}", p + 1),
+        ));
     }
     if n > m {
-        return Err(Error::invalid("control_points", format!("{n} control points need at least {n} data points, got {m}")));
+        return Err(Error::invalid(
+            "control_points",
+            format!("{n} control points need at least {n} data points, got {m}"),
+        ));
     }
     let params = parametrize(points, options.params, options.closed)?;
     let knots = if options.closed {
@@ -126,9 +132,12 @@ pub fn fit_with_knots<const D: usize>(
     let template =
         if periodic { BSplineCurve::new_periodic(p, knots, zeros)? } else { BSplineCurve::new(p, knots, zeros)? };
     let dom = template.domain();
-    if !periodic {
-        if let Some((i, t)) = params.iter().enumerate().find(|(_, t)| **t < dom.start || **t > dom.end) {
-            return Err(Error::invalid("params", format!("parameter {i} ({t}) is outside the domain [{}, {}]", dom.start, dom.end)));
+    if !periodic && let Some((i, t)) = params.iter().enumerate().find(|(_, t)| **t < dom.start || **t > dom.end) {
+        {
+            return Err(Error::invalid(
+                "params",
+                format!("parameter {i} ({t}) is outside the domain [{}, {}]", dom.start, dom.end),
+            ));
         }
     }
     let k = template.knots();
@@ -194,13 +203,23 @@ pub fn fit_with_knots<const D: usize>(
         sum += e * e;
         max = max.max(e);
     }
-    Ok(Fit { curve, params: params.to_vec(), rms_error: (sum / m as f64).sqrt(), max_error: max, condition_estimate: sol.condition_estimate })
+    Ok(Fit {
+        curve,
+        params: params.to_vec(),
+        rms_error: (sum / m as f64).sqrt(),
+        max_error: max,
+        condition_estimate: sol.condition_estimate,
+    })
 }
 
 /// Samples a curve at `samples` uniform parameters (closed curves: without repeating the
 /// first point) and fits it with [`fit`]; the data parameters are the model's own,
 /// rescaled to [0, 1], so `params` in the options is ignored.
-pub fn fit_curve<const D: usize, C: Curve<D> + ?Sized>(model: &C, samples: usize, options: &FitOptions) -> Result<Fit<D>> {
+pub fn fit_curve<const D: usize, C: Curve<D> + ?Sized>(
+    model: &C,
+    samples: usize,
+    options: &FitOptions,
+) -> Result<Fit<D>> {
     if samples < 2 {
         return Err(Error::invalid("samples", format!("need at least 2, got {samples}")));
     }
@@ -211,8 +230,12 @@ pub fn fit_curve<const D: usize, C: Curve<D> + ?Sized>(model: &C, samples: usize
     let points: Vec<Point<D>> = params.iter().map(|&s| model.point(dom.lerp(s))).collect();
     let (p, n) = (options.degree, options.control_points);
     if n < p + 1 || n > samples {
-        return Err(Error::invalid("control_points", format!("need {} ≤ control points ≤ samples = {samples}, got {n}", p + 1)));
+        return Err(Error::invalid(
+            "control_points",
+            format!("need {} ≤ control points ≤ samples = {samples}, got {n}", p + 1),
+        ));
     }
-    let knots = if closed { periodic_knots(&params, p, n, options.knots) } else { fit_knots(&params, p, n, options.knots) };
+    let knots =
+        if closed { periodic_knots(&params, p, n, options.knots) } else { fit_knots(&params, p, n, options.knots) };
     fit_with_knots(&points, &params, p, knots, options.weights.as_deref(), closed, options.interpolate_ends)
 }

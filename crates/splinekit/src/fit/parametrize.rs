@@ -64,7 +64,10 @@ pub fn parametrize<const D: usize>(points: &[Point<D>], method: Parametrization,
         if t[i] <= t[i - 1] {
             return Err(Error::invalid(
                 "points",
-                format!("points {} and {i} coincide, so their parameters are equal; remove duplicates or use --params uniform", i - 1),
+                format!(
+                    "points {} and {i} coincide, so their parameters are equal; remove duplicates or use --params uniform",
+                    i - 1
+                ),
             ));
         }
     }

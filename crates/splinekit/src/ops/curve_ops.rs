@@ -28,7 +28,12 @@ fn images<T: crate::Coefficient>(data: &SplineData<T>, u: f64, period: f64) -> V
     out
 }
 
-fn insert_generic<T: CoefficientNorm>(data: &SplineData<T>, periodic: bool, u: f64, times: usize) -> Result<SplineData<T>> {
+fn insert_generic<T: CoefficientNorm>(
+    data: &SplineData<T>,
+    periodic: bool,
+    u: f64,
+    times: usize,
+) -> Result<SplineData<T>> {
     if !periodic {
         return insert_knot(data, u, times);
     }
@@ -152,7 +157,9 @@ impl<const D: usize> BSplineCurve<D> {
         let d = if self.is_periodic() { open_at(&self.data(), self.knots()[self.degree()])? } else { self.data() };
         decomposition::bezier_segments(&d)?
             .into_iter()
-            .map(|BezierSegment { interval, control_points }| Ok((interval.0, interval.1, BezierCurve::new(control_points)?)))
+            .map(|BezierSegment { interval, control_points }| {
+                Ok((interval.0, interval.1, BezierCurve::new(control_points)?))
+            })
             .collect()
     }
 }

@@ -63,7 +63,10 @@ pub fn bezier_segments<T: Coefficient>(data: &SplineData<T>) -> Result<Vec<Bezie
     Ok(bounds
         .windows(2)
         .enumerate()
-        .map(|(s, w)| BezierSegment { interval: (w[0], w[1]), control_points: d.coefficients[s * p..=s * p + p].to_vec() })
+        .map(|(s, w)| BezierSegment {
+            interval: (w[0], w[1]),
+            control_points: d.coefficients[s * p..=s * p + p].to_vec(),
+        })
         .collect())
 }
 

@@ -41,9 +41,7 @@ pub fn insert_knot<T: Coefficient>(data: &SplineData<T>, u: f64, times: usize) -
     uq.extend_from_slice(&knots[k + 1..]);
     let mut q = vec![T::zero(); pts.len() + r];
     q[..=k - p].copy_from_slice(&pts[..=k - p]);
-    for i in k - s..=np {
-        q[i + r] = pts[i];
-    }
+    q[k - s + r..=np + r].copy_from_slice(&pts[k - s..=np]);
     let mut rw: SmallVec<[T; 16]> = SmallVec::from_slice(&pts[k - p..=k - s]);
     let mut l = 0;
     for j in 1..=r {

@@ -52,7 +52,5 @@ pub fn arc_length<const D: usize, C: Curve<D> + ?Sized>(curve: &C, a: f64, b: f6
     cuts.insert(0, a);
     cuts.push(b);
     let pieces = (cuts.len() - 1) as f64;
-    cuts.windows(2)
-        .map(|w| adaptive(curve, w[0], w[1], gauss(curve, w[0], w[1]), tol / pieces, 50))
-        .sum()
+    cuts.windows(2).map(|w| adaptive(curve, w[0], w[1], gauss(curve, w[0], w[1]), tol / pieces, 50)).sum()
 }

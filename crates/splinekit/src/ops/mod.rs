@@ -2,13 +2,13 @@
 //! removal, degree elevation, splitting and Bézier decomposition.
 
 pub mod closest_point;
-pub mod length;
 pub mod curve_ops;
 pub mod decomposition;
 pub mod degree_elevation;
 pub mod homogeneous;
 pub mod knot_insertion;
 pub mod knot_removal;
+pub mod length;
 pub mod spline_data;
 
 pub use decomposition::BezierSegment;

@@ -40,17 +40,15 @@ impl<T: Coefficient> SplineData<T> {
         let offset = (extra * n) as isize;
         let count = (2 * extra + 1) * n + p;
         let knots = (0..count + p + 1).map(|j| tau(j as isize - offset)).collect();
-        let coefficients = (0..count).map(|j| self.coefficients[(j as isize - offset).rem_euclid(n as isize) as usize]).collect();
+        let coefficients =
+            (0..count).map(|j| self.coefficients[(j as isize - offset).rem_euclid(n as isize) as usize]).collect();
         (SplineData { degree: p, knots, coefficients }, extra * n)
     }
 
     /// Applies `op` to a periodic spline (see the module documentation) and returns the
     /// periodic result. `op` receives the unrolled open spline and the period T; it must
     /// treat every periodic image of a knot alike.
-    pub fn map_periodic(
-        &self,
-        op: impl FnOnce(SplineData<T>, f64) -> Result<SplineData<T>>,
-    ) -> Result<SplineData<T>> {
+    pub fn map_periodic(&self, op: impl FnOnce(SplineData<T>, f64) -> Result<SplineData<T>>) -> Result<SplineData<T>> {
         let n = self.coefficients.len();
         let p = self.degree;
         let (a, b) = (self.knots[p], self.knots[n + p]);

@@ -9,7 +9,12 @@ use crate::subdivision::lane_riesenfeld::check_output_size;
 /// `steps` rounds of corner cutting. Closed polygons (cyclic) of n points give 2n points
 /// per step; open ones of n points give 2(n − 1), or 2(n − 1) + 2 with `keep_ends`, which
 /// keeps the two end points so the limit curve starts and ends there.
-pub fn chaikin<const D: usize>(points: &[Point<D>], steps: usize, closed: bool, keep_ends: bool) -> Result<Vec<Point<D>>> {
+pub fn chaikin<const D: usize>(
+    points: &[Point<D>],
+    steps: usize,
+    closed: bool,
+    keep_ends: bool,
+) -> Result<Vec<Point<D>>> {
     check_points_finite("points", points)?;
     let min = if closed { 3 } else { 2 };
     if points.len() < min {

@@ -29,7 +29,12 @@ pub(crate) fn check_output_size(n: usize, steps: usize, factor: usize, field: &s
 /// Closed polygons (cyclic; the first point is not repeated at the end) of n points give
 /// 2^k n points. Open polygons of n points give n_{k+1} = 2 n_k − d points after each step,
 /// the control polygon of the same unclamped uniform B-spline on half-spaced knots.
-pub fn lane_riesenfeld<const D: usize>(points: &[Point<D>], degree: usize, steps: usize, closed: bool) -> Result<Vec<Point<D>>> {
+pub fn lane_riesenfeld<const D: usize>(
+    points: &[Point<D>],
+    degree: usize,
+    steps: usize,
+    closed: bool,
+) -> Result<Vec<Point<D>>> {
     check_points_finite("points", points)?;
     if degree == 0 {
         return Err(Error::invalid("degree", "must be at least 1"));
@@ -69,7 +74,11 @@ pub fn lane_riesenfeld<const D: usize>(points: &[Point<D>], degree: usize, steps
 /// The limit curve of [`lane_riesenfeld`]: the uniform B-spline of degree d on the
 /// polygon, with knot spacing 1 (periodic for closed polygons, unclamped on [d, n] for
 /// open ones).
-pub fn lane_riesenfeld_limit<const D: usize>(points: &[Point<D>], degree: usize, closed: bool) -> Result<BSplineCurve<D>> {
+pub fn lane_riesenfeld_limit<const D: usize>(
+    points: &[Point<D>],
+    degree: usize,
+    closed: bool,
+) -> Result<BSplineCurve<D>> {
     let n = points.len();
     let knots: Vec<f64> = (0..n + degree + 1).map(|i| i as f64).collect();
     if closed {

@@ -65,7 +65,7 @@ impl Curve<3> for Butterfly {
         true
     }
     fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<3>]) {
-        let t = self.domain().wrap(t);
+        let t = self.domain().wrap_periodic(t, Side::Right);
         let n = out.len();
         let mut r: SmallVec<[f64; 8]> = smallvec![0.0; n];
         self.radius_derivatives(t, &mut r);

@@ -1,6 +1,6 @@
 //! The circle (r cos t, r sin t, 0), t ∈ [0, 2π], closed.
 
-use super::trig::{Term, TrigCurve, TrigSeries, TAU, positive, trig_model_curve};
+use super::trig::{TAU, Term, TrigCurve, TrigSeries, positive, trig_model_curve};
 use crate::curve::Interval;
 
 /// Circle of radius r in the xy-plane about the origin; c^{(k)} has length r.
@@ -15,7 +15,11 @@ impl Circle {
     pub fn new(radius: f64) -> crate::Result<Self> {
         let r = positive("radius", radius)?;
         let curve = TrigCurve {
-            coordinates: [TrigSeries::of(&[Term::cos(r, 1.0)]), TrigSeries::of(&[Term::sin(r, 1.0)]), TrigSeries::default()],
+            coordinates: [
+                TrigSeries::of(&[Term::cos(r, 1.0)]),
+                TrigSeries::of(&[Term::sin(r, 1.0)]),
+                TrigSeries::default(),
+            ],
             domain: Interval::new(0.0, TAU),
             closed: true,
         };

@@ -1,6 +1,6 @@
 //! The ellipse (a cos t, b sin t, 0), t ∈ [0, 2π], closed.
 
-use super::trig::{Term, TrigCurve, TrigSeries, TAU, positive, trig_model_curve};
+use super::trig::{TAU, Term, TrigCurve, TrigSeries, positive, trig_model_curve};
 use crate::curve::Interval;
 
 /// Axis-aligned ellipse with semi-axes a (along x) and b (along y).
@@ -14,7 +14,11 @@ impl Ellipse {
     pub fn new(a: f64, b: f64) -> crate::Result<Self> {
         let (a, b) = (positive("a", a)?, positive("b", b)?);
         let curve = TrigCurve {
-            coordinates: [TrigSeries::of(&[Term::cos(a, 1.0)]), TrigSeries::of(&[Term::sin(b, 1.0)]), TrigSeries::default()],
+            coordinates: [
+                TrigSeries::of(&[Term::cos(a, 1.0)]),
+                TrigSeries::of(&[Term::sin(b, 1.0)]),
+                TrigSeries::default(),
+            ],
             domain: Interval::new(0.0, TAU),
             closed: true,
         };

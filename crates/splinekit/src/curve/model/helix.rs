@@ -1,6 +1,6 @@
 //! The circular helix (r cos t, r sin t, h t / 2π), t ∈ [0, 2π·turns], open.
 
-use super::trig::{Term, TrigCurve, TrigSeries, TAU, finite, positive, trig_model_curve};
+use super::trig::{TAU, Term, TrigCurve, TrigSeries, finite, positive, trig_model_curve};
 use crate::curve::Interval;
 
 /// Helix of radius r rising by `pitch` per turn.
@@ -15,8 +15,7 @@ impl Helix {
         let r = positive("radius", radius)?;
         let pitch = finite("pitch", pitch)?;
         let turns = positive("turns", turns)?;
-        let mut z = TrigSeries::default();
-        z.linear = pitch / TAU;
+        let z = TrigSeries { linear: pitch / TAU, ..Default::default() };
         let curve = TrigCurve {
             coordinates: [TrigSeries::of(&[Term::cos(r, 1.0)]), TrigSeries::of(&[Term::sin(r, 1.0)]), z],
             domain: Interval::new(0.0, TAU * turns),

@@ -1,6 +1,6 @@
 //! Lissajous curves (A sin(a t + δ), B sin(b t), C sin(c t)), t ∈ [0, 2π].
 
-use super::trig::{Term, TrigCurve, TrigSeries, TAU, finite, trig_model_curve};
+use super::trig::{TAU, Term, TrigCurve, TrigSeries, finite, trig_model_curve};
 use crate::curve::Interval;
 
 /// Lissajous figure with amplitudes (A, B, C) and frequencies (a, b, c); c = 0 or C = 0

@@ -1,6 +1,6 @@
 //! The rose curve r cos(nt)(cos t, sin t) with z = r sin(nt) (3-D) or z = 0 (planar).
 
-use super::trig::{Term, TrigCurve, TrigSeries, TAU, positive, trig_model_curve};
+use super::trig::{TAU, Term, TrigCurve, TrigSeries, positive, trig_model_curve};
 use crate::curve::Interval;
 
 /// Rose (rhodonea) curve, t ∈ [0, 2π]: (r cos(nt) cos t, r cos(nt) sin t, r sin(nt)).

@@ -89,7 +89,8 @@ impl TrigCurve {
     /// Writes the position and derivatives.
     #[inline]
     pub fn eval_into(&self, t: f64, out: &mut [Point<3>]) {
-        let t = if self.closed { self.domain.wrap(t) } else { self.domain.clamp(t) };
+        let t =
+            if self.closed { self.domain.wrap_periodic(t, crate::basis::Side::Right) } else { self.domain.clamp(t) };
         for (k, o) in out.iter_mut().enumerate() {
             for j in 0..3 {
                 o[j] = self.coordinates[j].derivative(t, k);
@@ -128,11 +129,7 @@ pub(crate) fn positive(field: &str, v: f64) -> crate::Result<f64> {
 
 /// Checks a parameter is finite.
 pub(crate) fn finite(field: &str, v: f64) -> crate::Result<f64> {
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(crate::Error::invalid(field, format!("must be finite, got {v}")))
-    }
+    if v.is_finite() { Ok(v) } else { Err(crate::Error::invalid(field, format!("must be finite, got {v}"))) }
 }
 
 /// Tau = 2π.

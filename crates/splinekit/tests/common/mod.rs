@@ -33,7 +33,9 @@ pub fn finite_difference<const D: usize, C: Curve<D> + ?Sized>(c: &C, t: f64, k:
 /// Max distance between two curves over `samples` parameters of the first's domain.
 pub fn max_distance<const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized>(a: &A, b: &B, samples: usize) -> f64 {
     let d = a.domain();
-    (0..=samples).map(|i| (a.point(d.lerp(i as f64 / samples as f64)) - b.point(d.lerp(i as f64 / samples as f64))).norm()).fold(0.0, f64::max)
+    (0..=samples)
+        .map(|i| (a.point(d.lerp(i as f64 / samples as f64)) - b.point(d.lerp(i as f64 / samples as f64))).norm())
+        .fold(0.0, f64::max)
 }
 
 pub fn p2(x: f64, y: f64) -> Point<2> {

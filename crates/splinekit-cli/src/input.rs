@@ -1,0 +1,114 @@
+//! Reading inputs: shape documents, point lists (CSV or JSON) and number lists.
+
+use anyhow::{Context, Result, anyhow, bail};
+use serde_json::Value;
+use splinekit_scene::ShapeDocument;
+
+/// Reads a file, or standard input for `-`.
+pub fn read_text(path: &str, what: &str) -> Result<String> {
+    if path == "-" {
+        let mut s = String::new();
+        std::io::Read::read_to_string(&mut std::io::stdin(), &mut s)
+            .with_context(|| format!("{what}: cannot read standard input"))?;
+        Ok(s)
+    } else {
+        std::fs::read_to_string(path).map_err(|e| anyhow!("{what}: cannot read '{path}': {e}"))
+    }
+}
+
+/// Reads and parses a shape document.
+pub fn read_shape(path: &str) -> Result<ShapeDocument> {
+    let text = read_text(path, "SHAPE")?;
+    ShapeDocument::from_json(&text).map_err(|e| anyhow!("{e}"))
+}
+
+/// Reads points: a JSON array of points (or `{"points": [...]}`), or CSV text with one
+/// point per line (separated by commas, semicolons or white space; `#` starts a comment;
+/// a first line with letters is taken as a header).
+pub fn read_points(path: &str) -> Result<Vec<Vec<f64>>> {
+    let text = read_text(path, "POINTS")?;
+    let trimmed = text.trim_start();
+    let pts = if trimmed.starts_with('[') || trimmed.starts_with('{') {
+        parse_json_points(trimmed)?
+    } else {
+        parse_csv_points(&text)?
+    };
+    if pts.is_empty() {
+        bail!("points: the input holds no points");
+    }
+    let d = pts[0].len();
+    for (i, p) in pts.iter().enumerate() {
+        if p.len() != d {
+            bail!("points[{i}]: expected {d} coordinates like the first point, got {}", p.len());
+        }
+        if let Some((j, v)) = p.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+            bail!("points[{i}][{j}]: coordinate is not finite ({v})");
+        }
+    }
+    Ok(pts)
+}
+
+fn parse_json_points(text: &str) -> Result<Vec<Vec<f64>>> {
+    let v: Value = serde_json::from_str(text).map_err(|e| anyhow!("points: invalid JSON: {e}"))?;
+    let arr = match &v {
+        Value::Array(a) => a,
+        Value::Object(m) => match m.get("points") {
+            Some(Value::Array(a)) if m.len() == 1 => a,
+            _ => bail!("points: expected an array of points or {{\"points\": [...]}}"),
+        },
+        _ => bail!("points: expected an array of points"),
+    };
+    arr.iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let Value::Array(coords) = p else { bail!("points[{i}]: expected an array of numbers") };
+            coords
+                .iter()
+                .enumerate()
+                .map(|(j, c)| c.as_f64().ok_or_else(|| anyhow!("points[{i}][{j}]: expected a number, got {c}")))
+                .collect()
+        })
+        .collect()
+}
+
+fn parse_csv_points(text: &str) -> Result<Vec<Vec<f64>>> {
+    let mut out = Vec::new();
+    for (lineno, raw) in text.lines().enumerate() {
+        let line = raw.split('#').next().unwrap_or("").trim();
+        if line.is_empty() {
+            continue;
+        }
+        let fields: Vec<&str> =
+            line.split(|c: char| c == ',' || c == ';' || c.is_whitespace()).filter(|s| !s.is_empty()).collect();
+        if out.is_empty() && fields.iter().any(|f| f.chars().any(|c| c.is_alphabetic()) && f.parse::<f64>().is_err()) {
+            // A header line.
+            continue;
+        }
+        let p: Result<Vec<f64>> = fields
+            .iter()
+            .map(|f| f.parse::<f64>().map_err(|_| anyhow!("points: line {}: '{f}' is not a number", lineno + 1)))
+            .collect();
+        out.push(p?);
+    }
+    Ok(out)
+}
+
+/// Parses a comma-separated list of finite numbers for option `name`.
+pub fn parse_numbers(name: &str, text: &str) -> Result<Vec<f64>> {
+    let values: Result<Vec<f64>> = text
+        .split(',')
+        .map(|s| {
+            let s = s.trim();
+            let v: f64 = s.parse().map_err(|_| anyhow!("{name}: '{s}' is not a number"))?;
+            if !v.is_finite() {
+                bail!("{name}: {s} is not a finite number");
+            }
+            Ok(v)
+        })
+        .collect();
+    let values = values?;
+    if values.is_empty() {
+        bail!("{name}: expected at least one number");
+    }
+    Ok(values)
+}

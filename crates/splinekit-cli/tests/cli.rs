@@ -1,0 +1,259 @@
+//! The command line as users and scripts see it (CONTRACT.md §2–3).
+
+use serde_json::{Value, json};
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+struct Output {
+    code: i32,
+    stdout: String,
+    stderr: String,
+}
+
+fn run(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_splinekit"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(stdin.as_bytes()).ok();
+    let out = child.wait_with_output().unwrap();
+    Output {
+        code: out.status.code().unwrap_or(-1),
+        stdout: String::from_utf8(out.stdout).unwrap(),
+        stderr: String::from_utf8(out.stderr).unwrap(),
+    }
+}
+
+fn ok_json(args: &[&str], stdin: &str) -> Value {
+    let o = run(args, stdin);
+    assert_eq!(o.code, 0, "{args:?} failed: {}", o.stderr);
+    serde_json::from_str(&o.stdout).unwrap()
+}
+
+fn floats(v: &Value) -> Vec<f64> {
+    v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect()
+}
+
+fn assert_bad(args: &[&str], stdin: &str, must_contain: &str) {
+    let o = run(args, stdin);
+    assert_eq!(o.code, 2, "{args:?} with {stdin:?}: exit {} (stderr {:?})", o.code, o.stderr);
+    assert!(o.stdout.is_empty(), "{args:?}: printed {:?}", o.stdout);
+    assert_eq!(o.stderr.lines().count(), 1, "{args:?}: stderr {:?}", o.stderr);
+    assert!(o.stderr.starts_with("error: "), "{:?}", o.stderr);
+    assert!(!o.stderr.contains("panicked"), "{:?}", o.stderr);
+    assert!(o.stderr.contains(must_contain), "{args:?} with {stdin:?}: {:?} lacks {must_contain:?}", o.stderr);
+}
+
+#[test]
+fn eval_prints_params_points_and_derivatives() {
+    let doc = r#"{"type":"bezier","control_points":[[0,0],[1,2],[2,0]]}"#;
+    let v = ok_json(&["eval", "-", "--at", "0,0.5,1", "--derivatives", "2"], doc);
+    assert_eq!(v["params"], json!([0.0, 0.5, 1.0]));
+    assert_eq!(v["points"], json!([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]]));
+    assert_eq!(v["derivatives"][1], json!([[2.0, 0.0], [0.0, -8.0]]));
+    let v = ok_json(&["eval", "-", "--samples", "5"], doc);
+    assert_eq!(floats(&v["params"]), vec![0.0, 0.25, 0.5, 0.75, 1.0]);
+    assert_eq!(v["derivatives"], json!([[], [], [], [], []]));
+}
+
+#[test]
+fn eval_bspline_matches_the_seed_example() {
+    // The seed's cubic B-spline with 8 control points and knots 0,0,0,0,1,2,3,4,5,5,5,5.
+    let doc = json!({"type":"bspline","degree":3,"knots":[0,0,0,0,1,2,3,4,5,5,5,5],
+        "control_points":[[0,0],[1,2],[2,-1],[3,1],[4,0],[5,2],[6,-1],[7,0]]});
+    let v = ok_json(&["eval", "-", "--at", "0,2.5,5", "--derivatives", "1"], &doc.to_string());
+    assert_eq!(v["points"][0], json!([0.0, 0.0]));
+    assert_eq!(v["points"][2], json!([7.0, 0.0]));
+    // At t = 2.5 (middle of the uniform span [2,3]): (P2 + 23 P3 + 23 P4 + P5)/48.
+    let p = floats(&v["points"][1]);
+    let x = (2.0 + 23.0 * 3.0 + 23.0 * 4.0 + 5.0) / 48.0;
+    let y = (-1.0 + 23.0 * 1.0 + 23.0 * 0.0 + 2.0) / 48.0;
+    assert!((p[0] - x).abs() < 1e-15 && (p[1] - y).abs() < 1e-15, "{p:?}");
+}
+
+#[test]
+fn model_curves_follow_the_contract_formulas() {
+    let v = ok_json(&["eval", "-", "--at", "1.0"], r#"{"type":"heart"}"#);
+    let p = floats(&v["points"][0]);
+    let t: f64 = 1.0;
+    assert!((p[0] - 16.0 * t.sin().powi(3)).abs() < 1e-13);
+    assert!((p[1] - (13.0 * t.cos() - 5.0 * (2.0 * t).cos() - 2.0 * (3.0 * t).cos() - (4.0 * t).cos())).abs() < 1e-13);
+    let v = ok_json(&["eval", "-", "--at", "0.3"], r#"{"type":"rose","radius":2,"n":3}"#);
+    let p = floats(&v["points"][0]);
+    assert!((p[2] - 2.0 * (0.9f64).sin()).abs() < 1e-15);
+    // Closed curves wrap parameters around.
+    let v = ok_json(&["eval", "-", "--at", "-1.0"], r#"{"type":"circle","radius":2}"#);
+    let p = floats(&v["points"][0]);
+    assert!((p[0] - 2.0 * (1.0f64).cos()).abs() < 1e-14 && (p[1] + 2.0 * (1.0f64).sin()).abs() < 1e-14);
+}
+
+#[test]
+fn fit_with_uniform_params_and_knots_then_eval_round_trip() {
+    let csv: String = (0..50)
+        .map(|i| {
+            let t = i as f64 / 49.0;
+            format!("{},{}\n", (std::f64::consts::TAU * t).cos(), (std::f64::consts::TAU * t).sin())
+        })
+        .collect();
+    let doc = ok_json(
+        &["fit", "-", "--degree", "3", "--control-points", "10", "--params", "uniform", "--knots", "uniform"],
+        &csv,
+    );
+    assert_eq!(doc["type"], "bspline");
+    let knots = floats(&doc["knots"]);
+    assert_eq!(knots.len(), 14);
+    for (i, k) in knots[3..11].iter().enumerate() {
+        assert!((k - i as f64 / 7.0).abs() < 1e-15);
+    }
+    let v = ok_json(&["eval", "-", "--samples", "50"], &doc.to_string());
+    for p in v["points"].as_array().unwrap() {
+        let p = floats(p);
+        assert!((p[0].hypot(p[1]) - 1.0).abs() < 2e-3);
+    }
+    // JSON input and closed fits.
+    let json_pts: Value = (0..40)
+        .map(|i| {
+            let a = i as f64 * std::f64::consts::TAU / 40.0;
+            json!([a.cos(), a.sin(), 0.5])
+        })
+        .collect::<Vec<_>>()
+        .into();
+    let doc = ok_json(&["fit", "-", "--degree", "3", "--control-points", "12", "--closed"], &json_pts.to_string());
+    assert_eq!(doc["periodic"], json!(true));
+    let v = ok_json(&["eval", "-", "--at", "0,1", "--derivatives", "2"], &doc.to_string());
+    assert_eq!(v["points"][0], v["points"][1]);
+}
+
+#[test]
+fn interpolate_refine_and_subdivide() {
+    let pts = "0 0\n1 2\n2 -1\n3 1\n4 0\n";
+    let doc = ok_json(&["interpolate", "-", "--degree", "3", "--params", "uniform"], pts);
+    let v = ok_json(&["eval", "-", "--at", "0,0.25,0.5,0.75,1"], &doc.to_string());
+    let expected = [[0.0, 0.0], [1.0, 2.0], [2.0, -1.0], [3.0, 1.0], [4.0, 0.0]];
+    for (p, e) in v["points"].as_array().unwrap().iter().zip(expected) {
+        let p = floats(p);
+        assert!((p[0] - e[0]).abs() < 1e-12 && (p[1] - e[1]).abs() < 1e-12);
+    }
+    let before = ok_json(&["eval", "-", "--samples", "33"], &doc.to_string());
+    for args in [vec!["refine", "-", "--insert", "0.1,0.6,0.6"], vec!["refine", "-", "--elevate", "2"]] {
+        let refined = ok_json(&args, &doc.to_string());
+        let after = ok_json(&["eval", "-", "--samples", "33"], &refined.to_string());
+        for (a, b) in before["points"].as_array().unwrap().iter().zip(after["points"].as_array().unwrap()) {
+            let (a, b) = (floats(a), floats(b));
+            assert!((a[0] - b[0]).abs() < 1e-12 && (a[1] - b[1]).abs() < 1e-12, "{args:?}");
+        }
+    }
+    let inserted = ok_json(&["refine", "-", "--insert", "0.3"], &doc.to_string());
+    let removed = ok_json(&["refine", "-", "--remove", "0.3"], &inserted.to_string());
+    assert_eq!(floats(&removed["knots"]), floats(&doc["knots"]));
+    let square = "[[0,0],[1,0],[1,1],[0,1]]";
+    let s = ok_json(
+        &["subdivide", "-", "--scheme", "lane_riesenfeld", "--degree", "3", "--steps", "3", "--closed"],
+        square,
+    );
+    assert_eq!(s.as_array().unwrap().len(), 32);
+    let s = ok_json(&["subdivide", "-", "--scheme", "chaikin", "--steps", "1"], square);
+    assert_eq!(s, json!([[0.25, 0.0], [0.75, 0.0], [1.0, 0.25], [1.0, 0.75], [0.75, 1.0], [0.25, 1.0]]));
+    let s = ok_json(&["subdivide", "-", "--scheme", "four_point", "--steps", "2", "--closed"], square);
+    assert_eq!(s.as_array().unwrap().len(), 16);
+}
+
+#[test]
+fn output_to_a_file() {
+    let dir = std::env::temp_dir().join(format!("splinekit-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("out.json");
+    let o =
+        run(&["eval", "-", "--at", "0.5", "-o", path.to_str().unwrap()], r#"{"type":"line","from":[0,0],"to":[2,4]}"#);
+    assert_eq!(o.code, 0);
+    assert!(o.stdout.is_empty());
+    let v: Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    assert_eq!(v["points"], json!([[1.0, 2.0]]));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn bad_input_gives_exit_2_and_one_line_naming_the_field() {
+    let eval = ["eval", "-", "--at", "0.5"];
+    let cases: &[(&str, &str)] = &[
+        (
+            r#"{"type":"bspline","degree":3,"knots":[0,0,0,0,1,2,3,4,5,5,5],"control_points":[[0,0],[1,0],[2,0],[3,0],[4,0],[5,0],[6,0],[7,0]]}"#,
+            "knots: expected 12 values for 8 control points of degree 3, got 11",
+        ),
+        (r#"{"type":"nope"}"#, "type: unknown curve type"),
+        ("{", "invalid JSON"),
+        ("", "invalid JSON"),
+        (r#"{"control_points":[[0,0]]}"#, "type: missing"),
+        (r#"{"type":"bezier","control_points":[[0,0],[1,"a"]]}"#, "control_points[1][1]"),
+        (r#"{"type":"bezier","control_points":[[0,0],[1,1,1]]}"#, "control_points[1]: expected 2 coordinates"),
+        (r#"{"type":"bezier","control_points":[]}"#, "control_points: expected at least 1 point"),
+        (r#"{"type":"bezier","control_points":[[0,0]],"colour":1}"#, "unknown field `colour`"),
+        (r#"{"type":"bspline","degree":100000,"knots":[0,1],"control_points":[[0,0]]}"#, "degree 100000"),
+        (r#"{"type":"bspline","degree":-1,"knots":[0,1],"control_points":[[0,0]]}"#, "degree"),
+        (r#"{"type":"bspline","degree":1,"knots":[0,1,0.5,2],"control_points":[[0,0],[1,1]]}"#, "non-decreasing"),
+        (r#"{"type":"bspline","degree":1,"knots":[0,1,1,2],"control_points":[[0,0],[1,1]]}"#, "domain"),
+        (
+            r#"{"type":"nurbs","degree":1,"knots":[0,0,1,1],"control_points":[[0,0],[1,1]],"weights":[1,-2]}"#,
+            "weights: weight 1 is -2",
+        ),
+        (
+            r#"{"type":"nurbs","degree":1,"knots":[0,0,1,1],"control_points":[[0,0],[1,1]],"weights":[1]}"#,
+            "weights: expected 2 values",
+        ),
+        (r#"{"type":"circle","radius":0}"#, "radius"),
+        (r#"{"type":"hermite","points":[[0,0],[1,1]],"tangents":[[1,0]]}"#, "tangents"),
+        (r#"{"type":"catmull_rom","points":[[0,0],[1,1]],"alpha":2}"#, "alpha"),
+        (r#"{"type":"bezier","control_points":[[0,0],[1,1e400]]}"#, "out of range"),
+        (r#"{"type":"bezier","control_points":[[0,0],[1,NaN]]}"#, "invalid JSON"),
+        (r#"{"type":"bezier","control_points":[[1,2,3,4,5],[1,2,3,4,5]]}"#, "dimension 5"),
+        ("[[0,0]]", "expected a JSON object"),
+    ];
+    for (doc, msg) in cases {
+        assert_bad(&eval, doc, msg);
+    }
+    let circle = r#"{"type":"circle"}"#;
+    assert_bad(&["eval", "-", "--samples", "1000000000"], circle, "--samples: 1000000000 is more than the limit");
+    assert_bad(&["eval", "-", "--at", "abc"], circle, "--at: 'abc' is not a number");
+    assert_bad(&["eval", "-", "--at", "nan"], circle, "--at");
+    assert_bad(&["eval", "-", "--at", "2"], r#"{"type":"line","from":[0],"to":[1]}"#, "outside the domain");
+    assert_bad(&["eval", "-", "--samples", "3", "--derivatives", "100000"], circle, "--derivatives");
+    assert_bad(&["eval", "-", "--samples", "-3"], circle, "--samples");
+    assert_bad(&["eval", "missing.json", "--at", "0"], circle, "cannot read 'missing.json'");
+    assert_bad(&["eval", "-"], circle, "--at");
+    assert_bad(&["frobnicate"], "", "frobnicate");
+    assert_bad(
+        &["fit", "-", "--degree", "3", "--control-points", "10"],
+        "0,0\n1,1\n2,0\n",
+        "--control-points: 10 control points need at least 10 data points, got 3",
+    );
+    assert_bad(&["fit", "-", "--degree", "100000", "--control-points", "10"], "0,0\n1,1\n", "--degree");
+    assert_bad(&["fit", "-", "--degree", "3", "--control-points", "4"], "0,0\n1,x\n", "line 2: 'x' is not a number");
+    assert_bad(
+        &["fit", "-", "--degree", "3", "--control-points", "4"],
+        "[[0,0],[1]]",
+        "points[1]: expected 2 coordinates",
+    );
+    assert_bad(&["fit", "-", "--degree", "3", "--control-points", "4"], "", "no points");
+    assert_bad(&["fit", "-", "--degree", "2", "--control-points", "3"], "0,0\n0,0\n0,0\n1,1\n", "coincide");
+    assert_bad(&["interpolate", "-", "--degree", "3"], "0,0\n1,1\n", "at least 4 points");
+    assert_bad(&["refine", "-", "--insert", "0.5"], circle, "refine works on");
+    assert_bad(
+        &["refine", "-", "--insert", "7"],
+        r#"{"type":"bezier","control_points":[[0,0],[1,1],[2,0]]}"#,
+        "outside the domain",
+    );
+    assert_bad(&["refine", "-"], r#"{"type":"bezier","control_points":[[0,0],[1,1]]}"#, "--insert");
+    assert_bad(
+        &["subdivide", "-", "--scheme", "lane_riesenfeld", "--steps", "60", "--closed"],
+        "[[0,0],[1,0],[1,1]]",
+        "--steps",
+    );
+    assert_bad(
+        &["subdivide", "-", "--scheme", "chaikin", "--degree", "3", "--steps", "1"],
+        "[[0,0],[1,0],[1,1]]",
+        "--degree",
+    );
+}

@@ -1,0 +1,92 @@
+//! Points in documents: arrays of numbers, all of one dimension.
+
+use splinekit::Point;
+
+use crate::error::{DocumentError, Result};
+
+/// Largest point dimension the command line dispatches to.
+pub const MAX_DIMENSION: usize = 4;
+
+/// The common dimension of a list of points (≥ 1 point, all the same length, finite).
+pub fn dimension_of(field: &str, points: &[Vec<f64>]) -> Result<usize> {
+    let first = points.first().ok_or_else(|| DocumentError::new(field, "expected at least 1 point, got 0"))?;
+    let d = first.len();
+    if d == 0 {
+        return Err(DocumentError::new(format!("{field}[0]"), "a point needs at least 1 coordinate, got 0"));
+    }
+    for (i, p) in points.iter().enumerate() {
+        if p.len() != d {
+            return Err(DocumentError::new(
+                format!("{field}[{i}]"),
+                format!("expected {d} coordinates like the first point, got {}", p.len()),
+            ));
+        }
+        for (j, v) in p.iter().enumerate() {
+            if !v.is_finite() {
+                return Err(DocumentError::new(
+                    format!("{field}[{i}][{j}]"),
+                    format!("coordinate is not finite ({v})"),
+                ));
+            }
+        }
+    }
+    Ok(d)
+}
+
+/// Converts to fixed-dimension points (dimension already checked).
+pub fn to_points<const D: usize>(points: &[Vec<f64>]) -> Vec<Point<D>> {
+    points.iter().map(|p| Point::<D>::from_column_slice(p)).collect()
+}
+
+/// A single point of dimension D, named `field` in errors.
+pub fn to_point<const D: usize>(field: &str, p: &[f64]) -> Result<Point<D>> {
+    if p.len() != D {
+        return Err(DocumentError::new(field, format!("expected {D} coordinates, got {}", p.len())));
+    }
+    if let Some((j, v)) = p.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+        return Err(DocumentError::new(format!("{field}[{j}]"), format!("coordinate is not finite ({v})")));
+    }
+    Ok(Point::<D>::from_column_slice(p))
+}
+
+/// Back to plain arrays.
+pub fn from_points<const D: usize>(points: &[Point<D>]) -> Vec<Vec<f64>> {
+    points.iter().map(|p| p.iter().copied().collect()).collect()
+}
+
+/// Checks that every number of a list is finite.
+pub fn check_finite_list(field: &str, values: &[f64]) -> Result<()> {
+    match values.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+        Some((i, v)) => Err(DocumentError::new(format!("{field}[{i}]"), format!("value is not finite ({v})"))),
+        None => Ok(()),
+    }
+}
+
+/// Runs `$body` with `const $d: usize` bound to the runtime dimension `$dim` (1 … 4).
+#[macro_export]
+macro_rules! with_dimension {
+    ($dim:expr, $field:expr, $d:ident => $body:expr) => {
+        match $dim {
+            1 => {
+                const $d: usize = 1;
+                $body
+            }
+            2 => {
+                const $d: usize = 2;
+                $body
+            }
+            3 => {
+                const $d: usize = 3;
+                $body
+            }
+            4 => {
+                const $d: usize = 4;
+                $body
+            }
+            other => Err(::core::convert::From::from($crate::error::DocumentError::new(
+                $field,
+                format!("points of dimension {other} are not supported (1 to {})", $crate::points::MAX_DIMENSION),
+            ))),
+        }
+    };
+}

@@ -1,0 +1,168 @@
+//! Refinement of spline documents: knot insertion, degree elevation, knot removal. The
+//! result is a document of the same curve.
+
+use splinekit::curve::{BSplineCurve, BezierCurve, NurbsCurve, RationalBezierCurve};
+
+use crate::build::{bspline, nurbs};
+use crate::curves::{BSplineDoc, BezierDoc, CurveDocument, NurbsDoc, RationalBezierDoc};
+use crate::error::{DocumentError, Result};
+use crate::points::{from_points, to_points};
+use crate::with_dimension;
+
+/// What to do to the curve.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Refinement {
+    /// Insert each knot once (repeat a value to insert it several times).
+    Insert(Vec<f64>),
+    /// Raise the degree by this much.
+    Elevate(usize),
+    /// Remove each knot once where the curve moves by at most `tolerance`.
+    Remove {
+        /// Knots to remove.
+        knots: Vec<f64>,
+        /// Largest allowed deviation of the curve.
+        tolerance: f64,
+    },
+}
+
+/// The refined document and, for removal, how many knots could be removed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Refined {
+    /// The document of the same curve.
+    pub document: CurveDocument,
+    /// Knots actually removed (removal only).
+    pub removed: usize,
+}
+
+fn bspline_doc<const D: usize>(c: &BSplineCurve<D>) -> CurveDocument {
+    CurveDocument::Bspline(BSplineDoc {
+        degree: c.degree(),
+        knots: c.knots().to_vec(),
+        control_points: from_points(c.control_points()),
+        periodic: c.is_periodic(),
+    })
+}
+
+fn nurbs_doc<const D: usize>(c: &NurbsCurve<D>) -> CurveDocument {
+    CurveDocument::Nurbs(NurbsDoc {
+        degree: c.degree(),
+        knots: c.knots().to_vec(),
+        control_points: from_points(c.control_points()),
+        weights: c.weights().to_vec(),
+        periodic: c.is_periodic(),
+    })
+}
+
+fn refine_bspline<const D: usize>(c: BSplineCurve<D>, r: &Refinement) -> Result<Refined> {
+    let mut removed = 0;
+    let out = match r {
+        Refinement::Insert(k) => c.refine(k)?,
+        Refinement::Elevate(t) => c.elevate_degree(*t)?,
+        Refinement::Remove { knots, tolerance } => {
+            let mut c = c;
+            for &u in knots {
+                let (next, n) = c.remove_knot(u, 1, *tolerance)?;
+                removed += n;
+                c = next;
+            }
+            c
+        }
+    };
+    Ok(Refined { document: bspline_doc(&out), removed })
+}
+
+fn refine_nurbs<const D: usize>(c: NurbsCurve<D>, r: &Refinement) -> Result<Refined> {
+    let mut removed = 0;
+    let out = match r {
+        Refinement::Insert(k) => c.refine(k)?,
+        Refinement::Elevate(t) => c.elevate_degree(*t)?,
+        Refinement::Remove { knots, tolerance } => {
+            let mut c = c;
+            for &u in knots {
+                let (next, n) = c.remove_knot(u, 1, *tolerance)?;
+                removed += n;
+                c = next;
+            }
+            c
+        }
+    };
+    Ok(Refined { document: nurbs_doc(&out), removed })
+}
+
+fn check_request(r: &Refinement) -> Result<()> {
+    match r {
+        Refinement::Insert(k) | Refinement::Remove { knots: k, .. } => {
+            if let Some((i, v)) = k.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+                return Err(DocumentError::new(format!("knot {i}"), format!("not finite ({v})")));
+            }
+            if k.len() > 1_000_000 {
+                return Err(DocumentError::new(
+                    "knots",
+                    format!("{} knots at once is more than the limit of 1000000", k.len()),
+                ));
+            }
+        }
+        Refinement::Elevate(t) => {
+            if *t > 64 {
+                return Err(DocumentError::new(
+                    "elevate",
+                    format!("raising the degree by {t} is more than the limit of 64"),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Refines a `bezier`, `rational_bezier`, `bspline` or `nurbs` document. Bézier curves
+/// stay Bézier under elevation and become clamped B-splines (NURBS) under insertion or
+/// removal.
+pub fn refine(doc: &CurveDocument, r: &Refinement) -> Result<Refined> {
+    check_request(r)?;
+    let dim = doc.dimension()?;
+    with_dimension!(dim, "control_points", D => refine_in::<D>(doc, r))
+}
+
+fn refine_in<const D: usize>(doc: &CurveDocument, r: &Refinement) -> Result<Refined> {
+    match doc {
+        CurveDocument::Bspline(d) => refine_bspline(bspline::<D>(d)?, r),
+        CurveDocument::Nurbs(d) => refine_nurbs(nurbs::<D>(d)?, r),
+        CurveDocument::Bezier(d) => {
+            let b = BezierCurve::new(to_points::<D>(&d.control_points))?;
+            if let Refinement::Elevate(t) = r {
+                let mut e = b;
+                for _ in 0..*t {
+                    e = e.elevate();
+                }
+                return Ok(Refined {
+                    document: CurveDocument::Bezier(BezierDoc { control_points: from_points(e.control_points()) }),
+                    removed: 0,
+                });
+            }
+            refine_bspline(BSplineCurve::clamped_uniform(b.degree(), b.control_points().to_vec())?, r)
+        }
+        CurveDocument::RationalBezier(d) => {
+            let b = RationalBezierCurve::new(to_points::<D>(&d.control_points), d.weights.clone())?;
+            let p = b.degree();
+            let mut knots = vec![0.0; p + 1];
+            knots.extend(vec![1.0; p + 1]);
+            let n = NurbsCurve::new(p, knots, b.control_points().to_vec(), b.weights().to_vec())?;
+            let out = refine_nurbs(n, r)?;
+            match (r, out.document) {
+                // A single elevated segment is still one rational Bézier curve.
+                (Refinement::Elevate(_), CurveDocument::Nurbs(nd)) => Ok(Refined {
+                    document: CurveDocument::RationalBezier(RationalBezierDoc {
+                        control_points: nd.control_points,
+                        weights: nd.weights,
+                    }),
+                    removed: 0,
+                }),
+                (_, document) => Ok(Refined { document, removed: out.removed }),
+            }
+        }
+        other => Err(DocumentError::new(
+            "type",
+            format!("refine works on bezier, rational_bezier, bspline and nurbs documents, not {}", other.type_name()),
+        )),
+    }
+}
