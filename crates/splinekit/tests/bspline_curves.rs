@@ -394,3 +394,35 @@ proptest! {
         prop_assert!(max_distance(&c, &e, 100) < 1e-12);
     }
 }
+
+#[test]
+fn bezier_span_fast_path_agrees_with_the_de_boor_kernel() {
+    // Degrees 1 … 9 cover the Bézier-span path (≤ 7) and the fallback (8, 9).
+    for degree in 1..=9 {
+        let c = sample_curve(degree, degree + 8);
+        let scale = c.control_points().iter().map(|p| p.norm()).fold(0.0, f64::max);
+        let params: Vec<f64> = (0..=400).map(|i| 4.0 * i as f64 / 400.0).collect();
+        let mut batch = vec![Point::<3>::zeros(); params.len() * (degree + 2)];
+        c.eval_many(&params, degree + 1, &mut batch);
+        for (i, &t) in params.iter().enumerate() {
+            for side in [Side::Left, Side::Right] {
+                let mut fast = vec![Point::<3>::zeros(); degree + 2];
+                let mut reference = vec![Point::<3>::zeros(); degree + 2];
+                c.eval_side(t, side, &mut fast);
+                c.eval_de_boor(t, side, &mut reference);
+                let mut h_scale = scale;
+                for k in 0..=degree + 1 {
+                    let err = (fast[k] - reference[k]).norm();
+                    assert!(
+                        err <= 1e-13 * h_scale.max(reference[k].norm()),
+                        "degree {degree}, order {k}, t = {t}: {err}"
+                    );
+                    if side == Side::Right {
+                        assert!((batch[i * (degree + 2) + k] - fast[k]).norm() <= 1e-13 * h_scale.max(fast[k].norm()));
+                    }
+                    h_scale *= 10.0;
+                }
+            }
+        }
+    }
+}

@@ -1,10 +1,9 @@
 //! B-spline curves of any degree: c(t) = Σ_i N_{i,p}(t) P_i on [t_p, t_n].
 
-use smallvec::{SmallVec, smallvec};
-
 use crate::Point;
-use crate::basis::bspline_basis::INLINE;
-use crate::basis::{KnotVector, Side, advance_span, basis_derivatives, basis_functions, find_span};
+use crate::basis::{KnotVector, Side, advance_span, find_span};
+use crate::curve::bezier_spans::BezierSpans;
+use crate::curve::span_kernel::{ReciprocalKnotDifferences, eval_on_span};
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result, check_points_finite};
 
@@ -29,6 +28,19 @@ pub struct BSplineCurve<const D: usize> {
     periodic: bool,
     /// For periodic curves: n + 2p + 1 knots and n + p wrapped control points.
     unrolled: Option<(Vec<f64>, Vec<Point<D>>)>,
+    /// (t_p, 1/h) when the domain's knots are uniformly spaced: O(1) span lookup.
+    uniform: Option<(f64, f64)>,
+    /// Reciprocal knot differences of the evaluation knots.
+    inv: ReciprocalKnotDifferences,
+    /// Bézier form of every span (degrees 1 … 7), the fast evaluation path.
+    spans: Option<BezierSpans<Point<D>>>,
+}
+
+/// (t_p, 1/h) if the knots t_p … t_n are equally spaced (to 1e-12 relative).
+fn uniform_spacing(knots: &[f64], p: usize, n: usize) -> Option<(f64, f64)> {
+    let h = (knots[n] - knots[p]) / (n - p) as f64;
+    let ok = (p..n).all(|i| ((knots[i + 1] - knots[i]) - h).abs() <= 1e-12 * h);
+    ok.then(|| (knots[p], 1.0 / h))
 }
 
 impl<const D: usize> BSplineCurve<D> {
@@ -36,7 +48,10 @@ impl<const D: usize> BSplineCurve<D> {
     pub fn new(degree: usize, knots: Vec<f64>, control_points: Vec<Point<D>>) -> Result<Self> {
         check_points_finite("control_points", &control_points)?;
         let knots = KnotVector::for_spline(knots, degree, control_points.len())?;
-        Ok(BSplineCurve { degree, knots, control_points, periodic: false, unrolled: None })
+        let uniform = uniform_spacing(knots.as_slice(), degree, control_points.len());
+        let inv = ReciprocalKnotDifferences::new(knots.as_slice(), degree);
+        let spans = BezierSpans::new(knots.as_slice(), &inv, &control_points, degree);
+        Ok(BSplineCurve { degree, knots, control_points, periodic: false, unrolled: None, uniform, inv, spans })
     }
 
     /// A periodic (closed) B-spline from degree, n + p + 1 knots and n control points;
@@ -72,7 +87,19 @@ impl<const D: usize> BSplineCurve<D> {
         for i in 0..p {
             pts.push(control_points[i % n]);
         }
-        Ok(BSplineCurve { degree, knots, control_points, periodic: true, unrolled: Some((ext, pts)) })
+        let uniform = uniform_spacing(&ext, p, n + p);
+        let inv = ReciprocalKnotDifferences::new(&ext, p);
+        let spans = BezierSpans::new(&ext, &inv, &pts, p);
+        Ok(BSplineCurve {
+            degree,
+            knots,
+            control_points,
+            periodic: true,
+            unrolled: Some((ext, pts)),
+            uniform,
+            inv,
+            spans,
+        })
     }
 
     /// Clamped B-spline with uniform interior knots on [0, 1].
@@ -134,6 +161,33 @@ impl<const D: usize> BSplineCurve<D> {
         }
     }
 
+    /// Evaluates on a known span: Bézier form when available, else the triangular kernel.
+    #[inline]
+    fn eval_on(&self, span: usize, t: f64, out: &mut [Point<D>]) {
+        match &self.spans {
+            Some(b) => b.eval(span, t, out),
+            None => {
+                let (knots, pts) = self.evaluation_data();
+                eval_on_span(knots, &self.inv, pts, self.degree, span, t, out)
+            }
+        }
+    }
+
+    /// Evaluates with the triangular Cox–de Boor kernel, bypassing the Bézier spans
+    /// (a reference for tests and benchmarks).
+    pub fn eval_de_boor(&self, t: f64, side: Side, out: &mut [Point<D>]) {
+        let t = self.normalise(t, side);
+        let span = self.span_of(t, side);
+        let (knots, pts) = self.evaluation_data();
+        eval_on_span(knots, &self.inv, pts, self.degree, span, t, out)
+    }
+
+    /// The tabulated reciprocal knot differences (shared with NURBS evaluation).
+    #[inline]
+    pub(crate) fn reciprocal_knot_differences(&self) -> &ReciprocalKnotDifferences {
+        &self.inv
+    }
+
     /// Maps a parameter into the domain: clamped (open) or wrapped (periodic).
     #[inline]
     pub(crate) fn normalise(&self, t: f64, side: Side) -> f64 {
@@ -141,39 +195,37 @@ impl<const D: usize> BSplineCurve<D> {
         if self.periodic { d.wrap_periodic(t, side) } else { d.clamp(t) }
     }
 
-    /// Span index and basis derivatives `ders[k*(p+1)+r]` for k = 0 … order at `t`
-    /// (already in the domain), on the evaluation data.
+    /// The span i ∈ [p, N − 1] of `t` (already in the domain) on the evaluation data:
+    /// t_i ≤ t < t_{i+1} (`Right`) or t_i < t ≤ t_{i+1} (`Left`). O(1) for uniform knots,
+    /// binary search otherwise.
     #[inline]
-    pub(crate) fn basis_at(&self, t: f64, side: Side, order: usize, ders: &mut SmallVec<[f64; 4 * INLINE]>) -> usize {
+    pub(crate) fn span_of(&self, t: f64, side: Side) -> usize {
         let (knots, pts) = self.evaluation_data();
-        let p = self.degree;
-        let span = find_span(knots, p, pts.len(), t, side);
-        ders.resize((order + 1) * (p + 1), 0.0);
-        if order == 0 {
-            basis_functions(knots, p, span, t, ders);
-        } else {
-            basis_derivatives(knots, p, span, t, order, ders);
+        let (p, n) = (self.degree, pts.len());
+        let Some((a, inv_h)) = self.uniform else {
+            return find_span(knots, p, n, t, side);
+        };
+        let guess = ((t - a) * inv_h).max(0.0) as usize;
+        let mut s = (p + guess).min(n - 1);
+        match side {
+            Side::Right => {
+                while s > p && knots[s] > t {
+                    s -= 1;
+                }
+                while s + 1 < n && knots[s + 1] <= t {
+                    s += 1;
+                }
+            }
+            Side::Left => {
+                while s > p && knots[s] >= t {
+                    s -= 1;
+                }
+                while s + 1 < n && knots[s + 1] < t {
+                    s += 1;
+                }
+            }
         }
-        span
-    }
-}
-
-/// out[k] = Σ_r ders[k][r] · pts[span − p + r].
-#[inline]
-fn combine<const D: usize>(pts: &[Point<D>], p: usize, span: usize, ders: &[f64], out: &mut [Point<D>]) {
-    let w = p + 1;
-    let base = &pts[span - p..=span];
-    for (k, o) in out.iter_mut().enumerate() {
-        if k > p {
-            *o = Point::<D>::zeros();
-            continue;
-        }
-        let row = &ders[k * w..(k + 1) * w];
-        let mut acc = Point::<D>::zeros();
-        for (b, q) in row.iter().zip(base) {
-            acc += q * *b;
-        }
-        *o = acc;
+        s
     }
 }
 
@@ -190,29 +242,25 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
     #[inline]
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         let t = self.normalise(t, side);
-        let order = out.len().saturating_sub(1);
-        let mut ders: SmallVec<[f64; 4 * INLINE]> = SmallVec::new();
-        let span = self.basis_at(t, side, order.min(self.degree), &mut ders);
-        combine(self.evaluation_data().1, self.degree, span, &ders, out);
+        let span = self.span_of(t, side);
+        self.eval_on(span, t, out);
     }
 
     fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
         let (knots, pts) = self.evaluation_data();
-        let p = self.degree;
-        let n = pts.len();
-        let w = order + 1;
-        let o = order.min(p);
-        let mut ders: SmallVec<[f64; 4 * INLINE]> = smallvec![0.0; (o + 1) * (p + 1)];
+        if let Some(spans) = &self.spans {
+            let dom = self.domain();
+            let periodic = self.periodic;
+            let map = |t: f64| if periodic { dom.wrap_periodic(t, Side::Right) } else { dom.clamp(t) };
+            spans.eval_many(knots, params, order, &mut out[..params.len() * (order + 1)], map);
+            return;
+        }
+        let (p, n, w) = (self.degree, pts.len(), order + 1);
         let mut span = p;
         for (i, &t) in params.iter().enumerate() {
             let t = self.normalise(t, Side::Right);
             span = advance_span(knots, p, n, span, t);
-            if o == 0 {
-                basis_functions(knots, p, span, t, &mut ders);
-            } else {
-                basis_derivatives(knots, p, span, t, o, &mut ders);
-            }
-            combine(pts, p, span, &ders, &mut out[i * w..(i + 1) * w]);
+            self.eval_on(span, t, &mut out[i * w..(i + 1) * w]);
         }
     }
 

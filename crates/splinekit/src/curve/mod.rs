@@ -1,6 +1,7 @@
 //! Curves: the [`Curve`] trait and every curve kind, one file each.
 
 pub mod bezier;
+pub mod bezier_spans;
 pub mod bspline;
 pub mod catmull_rom;
 pub mod hermite;
@@ -8,6 +9,7 @@ pub mod model;
 pub mod nurbs;
 pub mod rational;
 pub mod rational_bezier;
+pub mod span_kernel;
 pub mod traits;
 
 pub use bezier::BezierCurve;

@@ -4,10 +4,12 @@ use smallvec::{SmallVec, smallvec};
 
 use crate::Point;
 use crate::basis::Side;
-use crate::basis::bspline_basis::INLINE;
+use crate::curve::bezier_spans::BezierSpans;
 use crate::curve::rational::rational_derivatives;
+use crate::curve::span_kernel::eval_on_span;
 use crate::curve::{BSplineCurve, Curve, Interval};
 use crate::error::{Error, Result, check_finite};
+use crate::ops::homogeneous::Homogeneous;
 
 /// A non-uniform rational B-spline curve: a [`BSplineCurve`] whose control points carry
 /// positive weights. Clamped, unclamped and periodic knot vectors work as for B-splines.
@@ -20,8 +22,10 @@ pub struct NurbsCurve<const D: usize> {
     weighted: BSplineCurve<D>,
     points: Vec<Point<D>>,
     weights: Vec<f64>,
-    /// Weights in evaluation order (unrolled for periodic curves).
-    eval_weights: Vec<f64>,
+    /// (w_i P_i, w_i) in evaluation order (unrolled for periodic curves).
+    homogeneous: Vec<Homogeneous<D>>,
+    /// Bézier form of the homogeneous spline per span (degrees 1 … 7).
+    spans: Option<BezierSpans<Homogeneous<D>>>,
 }
 
 impl<const D: usize> NurbsCurve<D> {
@@ -49,8 +53,16 @@ impl<const D: usize> NurbsCurve<D> {
             BSplineCurve::new(degree, knots, weighted_pts)?
         };
         let n = points.len();
-        let eval_weights = if periodic { (0..n + degree).map(|i| weights[i % n]).collect() } else { weights.clone() };
-        Ok(NurbsCurve { weighted, points, weights, eval_weights })
+        let count = if periodic { n + degree } else { n };
+        let homogeneous: Vec<Homogeneous<D>> =
+            (0..count).map(|i| Homogeneous::lift(&points[i % n], weights[i % n])).collect();
+        let spans = BezierSpans::new(
+            weighted.evaluation_data().0,
+            weighted.reciprocal_knot_differences(),
+            &homogeneous,
+            degree,
+        );
+        Ok(NurbsCurve { weighted, points, weights, homogeneous, spans })
     }
 
     /// Exact full circle of `radius` about `center` in the plane spanned by the orthonormal
@@ -159,26 +171,25 @@ impl<const D: usize> Curve<D> for NurbsCurve<D> {
     }
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         let t = self.weighted.normalise(t, side);
-        let order = out.len() - 1;
-        let p = self.degree();
-        let mut ders: SmallVec<[f64; 4 * INLINE]> = SmallVec::new();
-        let span = self.weighted.basis_at(t, side, order.min(p), &mut ders);
-        let pts = self.weighted.evaluation_data().1;
-        let mut w: SmallVec<[f64; 8]> = smallvec![0.0; order + 1];
-        for k in 0..=order {
-            if k > p {
-                out[k] = Point::<D>::zeros();
-                continue;
-            }
-            let row = &ders[k * (p + 1)..(k + 1) * (p + 1)];
-            let mut a = Point::<D>::zeros();
-            let mut ww = 0.0;
-            for (r, b) in row.iter().enumerate() {
-                a += pts[span - p + r] * *b;
-                ww += self.eval_weights[span - p + r] * b;
-            }
-            out[k] = a;
-            w[k] = ww;
+        let span = self.weighted.span_of(t, side);
+        let knots = self.weighted.evaluation_data().0;
+        let mut h: SmallVec<[Homogeneous<D>; 8]> = smallvec![Homogeneous::lift(&Point::<D>::zeros(), 0.0); out.len()];
+        match &self.spans {
+            Some(b) => b.eval(span, t, &mut h),
+            None => eval_on_span(
+                knots,
+                self.weighted.reciprocal_knot_differences(),
+                &self.homogeneous,
+                self.degree(),
+                span,
+                t,
+                &mut h,
+            ),
+        }
+        let mut w: SmallVec<[f64; 8]> = smallvec![0.0; out.len()];
+        for (k, hk) in h.iter().enumerate() {
+            out[k] = hk.weighted;
+            w[k] = hk.weight;
         }
         rational_derivatives(out, &w);
     }

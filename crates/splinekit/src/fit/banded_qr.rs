@@ -194,9 +194,13 @@ impl<const D: usize> BandedLeastSquares<D> {
     }
 }
 
-/// c, s with c·r + s·x = √(r² + x²), −s·r + c·x = 0.
+/// c, s with c·r + s·x = √(r² + x²), −s·r + c·x = 0. The plain square root is exact
+/// enough and much faster than `hypot`; `hypot` takes over only where r² + x² would
+/// overflow or underflow.
 #[inline]
 fn givens(r: f64, x: f64) -> (f64, f64) {
-    let h = r.hypot(x);
-    (r / h, x / h)
+    let sq = r * r + x * x;
+    let h = if sq.is_finite() && sq > 1e-290 { sq.sqrt() } else { r.hypot(x) };
+    let inv = 1.0 / h;
+    (r * inv, x * inv)
 }

@@ -7,7 +7,7 @@
 use smallvec::SmallVec;
 
 use crate::Point;
-use crate::basis::{Side, basis_functions, find_span};
+use crate::basis::{advance_span, basis_functions};
 use crate::curve::{BSplineCurve, Curve};
 use crate::error::{Error, Result, check_finite, check_points_finite};
 use crate::fit::banded_qr::BandedLeastSquares;
@@ -156,9 +156,11 @@ pub fn fit_with_knots<const D: usize>(
     }
     let mut basis: SmallVec<[f64; 16]> = SmallVec::from_elem(0.0, p + 1);
     let mut row: SmallVec<[f64; 16]> = SmallVec::new();
+    let mut span = p;
     for &i in &order {
         let t = wrap(params[i]);
-        let span = find_span(eval_knots, p, n_eval, t, Side::Right);
+        // Rows come in parameter order: advance the span instead of searching.
+        span = advance_span(eval_knots, p, n_eval, span, t);
         basis_functions(eval_knots, p, span, t, &mut basis);
         let w = weights.map_or(1.0, |w| w[i]);
         if w == 0.0 {
@@ -196,10 +198,12 @@ pub fn fit_with_knots<const D: usize>(
     }
     let knots = template.knots().to_vec();
     let curve = if periodic { BSplineCurve::new_periodic(p, knots, ctrl)? } else { BSplineCurve::new(p, knots, ctrl)? };
+    let mut values = vec![Point::<D>::zeros(); m];
+    curve.eval_many(params, 0, &mut values);
     let mut sum = 0.0;
     let mut max: f64 = 0.0;
-    for (q, &t) in points.iter().zip(params) {
-        let e = (curve.point(t) - q).norm();
+    for (q, v) in points.iter().zip(&values) {
+        let e = (v - q).norm();
         sum += e * e;
         max = max.max(e);
     }
