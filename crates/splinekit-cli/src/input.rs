@@ -26,12 +26,16 @@ pub fn read_shape(path: &str) -> Result<ShapeDocument> {
 /// point per line (separated by commas, semicolons or white space; `#` starts a comment;
 /// a first line with letters is taken as a header).
 pub fn read_points(path: &str) -> Result<Vec<Vec<f64>>> {
-    let text = read_text(path, "POINTS")?;
+    parse_points(&read_text(path, "POINTS")?)
+}
+
+/// Parses points given as text (see [`read_points`]).
+pub fn parse_points(text: &str) -> Result<Vec<Vec<f64>>> {
     let trimmed = text.trim_start();
     let pts = if trimmed.starts_with('[') || trimmed.starts_with('{') {
         parse_json_points(trimmed)?
     } else {
-        parse_csv_points(&text)?
+        parse_csv_points(text)?
     };
     if pts.is_empty() {
         bail!("points: the input holds no points");

@@ -128,6 +128,18 @@ fn fit_with_uniform_params_and_knots_then_eval_round_trip() {
 }
 
 #[test]
+fn fit_a_model_curve_by_sampling_it() {
+    let doc = ok_json(&["fit", "-", "--degree", "3", "--control-points", "16", "--closed", "--samples", "300"], r#"{"type":"circle","radius":2}"#);
+    assert_eq!(doc["periodic"], json!(true));
+    let v = ok_json(&["eval", "-", "--samples", "101"], &doc.to_string());
+    for p in v["points"].as_array().unwrap() {
+        let p = floats(p);
+        assert!((p[0].hypot(p[1]) - 2.0).abs() < 1e-4, "{p:?}");
+    }
+    assert_bad(&["fit", "-", "--degree", "3", "--control-points", "16", "--samples", "1"], r#"{"type":"circle"}"#, "--samples");
+}
+
+#[test]
 fn interpolate_refine_and_subdivide() {
     let pts = "0 0\n1 2\n2 -1\n3 1\n4 0\n";
     let doc = ok_json(&["interpolate", "-", "--degree", "3", "--params", "uniform"], pts);
@@ -256,4 +268,20 @@ fn bad_input_gives_exit_2_and_one_line_naming_the_field() {
         "[[0,0],[1,0],[1,1]]",
         "--degree",
     );
+}
+
+#[test]
+fn every_example_in_docs_format_md_is_a_valid_document() {
+    let text = include_str!("../../../docs/format.md");
+    let mut count = 0;
+    for block in text.split("```json\n").skip(1) {
+        let doc = block.split("```").next().unwrap();
+        if doc.trim_start().starts_with("{\"params\"") {
+            continue;
+        }
+        let v = ok_json(&["eval", "-", "--samples", "5", "--derivatives", "1"], doc);
+        assert_eq!(v["points"].as_array().unwrap().len(), 5, "{doc}");
+        count += 1;
+    }
+    assert!(count >= 8, "only {count} examples found");
 }

@@ -9,7 +9,9 @@ use splinekit_scene::curves::{BSplineDoc, CurveDocument};
 use splinekit_scene::points::{from_points, to_points};
 use splinekit_scene::with_dimension;
 
-use crate::input::{parse_numbers, read_points};
+use crate::input::{parse_numbers, parse_points, read_points, read_text};
+use serde_json::Value;
+use splinekit_scene::{CurveVisitor, ShapeDocument};
 use crate::output::{check_finite, write_json};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -46,7 +48,13 @@ const MAX_DEGREE: usize = 64;
 #[derive(Args, Debug)]
 pub struct FitArgs {
     /// Points: CSV (one point per line) or a JSON array of points; - for standard input.
+    /// A shape document (a JSON object with a "type") is a model curve instead: it is
+    /// sampled at --samples parameters evenly over its domain and the samples are fitted
+    /// with parameters proportional to the model's own.
     pub points: String,
+    /// Number of samples taken from a model curve (shape document input only).
+    #[arg(long, default_value = "200")]
+    pub samples: usize,
     /// Degree of the B-spline (1 … 64).
     #[arg(long)]
     pub degree: usize,
@@ -120,7 +128,13 @@ fn document<const D: usize>(c: &BSplineCurve<D>) -> CurveDocument {
 
 pub fn run_fit(args: &FitArgs) -> Result<()> {
     check_degree(args.degree)?;
-    let pts = read_points(&args.points)?;
+    let text = read_text(&args.points, "POINTS")?;
+    if let Ok(Value::Object(map)) = serde_json::from_str::<Value>(&text)
+        && map.contains_key("type")
+    {
+        return run_fit_model(args, &Value::Object(map));
+    }
+    let pts = parse_points(&text)?;
     let dim = pts[0].len();
     let doc = with_dimension!(dim, "points", D => {
         let points = to_points::<D>(&pts);
@@ -136,6 +150,36 @@ pub fn run_fit(args: &FitArgs) -> Result<()> {
         Ok(document(&f.curve))
     })
     .map_err(|e: anyhow::Error| e)?;
+    let v = doc.to_value();
+    check_finite(&v, "control_points")?;
+    write_json(&v, args.output.as_deref())
+}
+
+/// Fits a model curve: samples it and fits the samples at the model's own parameters.
+fn run_fit_model(args: &FitArgs, doc: &Value) -> Result<()> {
+    if args.samples < 2 || args.samples > 10_000_000 {
+        bail!("--samples: must be between 2 and 10000000, got {}", args.samples);
+    }
+    let ShapeDocument::Curve(model) = ShapeDocument::parse(doc).map_err(|e| anyhow!("{e}"))?;
+    let curve = model.build().map_err(|e| anyhow!("{e}"))?;
+    let closed = args.closed;
+    struct FitModel<'a>(&'a FitArgs, bool);
+    impl CurveVisitor for FitModel<'_> {
+        type Output = Result<CurveDocument>;
+        fn visit<const D: usize>(self, c: &dyn splinekit::curve::Curve<D>) -> Result<CurveDocument> {
+            let (args, closed) = (self.0, self.1);
+            let mut o = FitOptions::new(args.degree, args.control_points);
+            o.knots = match args.knots { KnotsArg::Uniform => KnotPlacement::Uniform, KnotsArg::Averaged => KnotPlacement::Averaged };
+            o.closed = closed;
+            o.interpolate_ends = args.interpolate_ends;
+            let f = fit::fit_curve(c, args.samples, &o).map_err(|e| anyhow!("{}", rename_fields(&e.to_string())))?;
+            if args.report {
+                eprintln!("fit: rms error {:.6e}, max error {:.6e}, condition estimate {:.3e}", f.rms_error, f.max_error, f.condition_estimate);
+            }
+            Ok(document(&f.curve))
+        }
+    }
+    let doc = curve.visit(FitModel(args, closed))?;
     let v = doc.to_value();
     check_finite(&v, "control_points")?;
     write_json(&v, args.output.as_deref())
