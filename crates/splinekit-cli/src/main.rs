@@ -5,6 +5,7 @@
 //! naming the offending field), never a panic trace.
 
 mod commands;
+mod gallery;
 mod input;
 mod output;
 
@@ -37,6 +38,10 @@ enum Command {
     Refine(commands::refine::RefineArgs),
     /// Subdivision curves: Chaikin, Lane–Riesenfeld, 4-point.
     Subdivide(commands::subdivide::SubdivideArgs),
+    /// Polyline of a curve as SVG or OBJ.
+    Tessellate(commands::tessellate::TessellateArgs),
+    /// Render the showcase figures into a folder with index.html.
+    Gallery(gallery::GalleryArgs),
 }
 
 fn one_line(s: &str) -> String {
@@ -80,6 +85,8 @@ fn main() {
         Command::Interpolate(a) => commands::fit::run_interpolate(a),
         Command::Refine(a) => commands::refine::run(a),
         Command::Subdivide(a) => commands::subdivide::run(a),
+        Command::Tessellate(a) => commands::tessellate::run(a),
+        Command::Gallery(a) => gallery::run(a),
     });
     match result {
         Ok(Ok(())) => {}

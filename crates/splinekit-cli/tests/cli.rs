@@ -129,14 +129,21 @@ fn fit_with_uniform_params_and_knots_then_eval_round_trip() {
 
 #[test]
 fn fit_a_model_curve_by_sampling_it() {
-    let doc = ok_json(&["fit", "-", "--degree", "3", "--control-points", "16", "--closed", "--samples", "300"], r#"{"type":"circle","radius":2}"#);
+    let doc = ok_json(
+        &["fit", "-", "--degree", "3", "--control-points", "16", "--closed", "--samples", "300"],
+        r#"{"type":"circle","radius":2}"#,
+    );
     assert_eq!(doc["periodic"], json!(true));
     let v = ok_json(&["eval", "-", "--samples", "101"], &doc.to_string());
     for p in v["points"].as_array().unwrap() {
         let p = floats(p);
         assert!((p[0].hypot(p[1]) - 2.0).abs() < 1e-4, "{p:?}");
     }
-    assert_bad(&["fit", "-", "--degree", "3", "--control-points", "16", "--samples", "1"], r#"{"type":"circle"}"#, "--samples");
+    assert_bad(
+        &["fit", "-", "--degree", "3", "--control-points", "16", "--samples", "1"],
+        r#"{"type":"circle"}"#,
+        "--samples",
+    );
 }
 
 #[test]
@@ -284,4 +291,51 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         count += 1;
     }
     assert!(count >= 8, "only {count} examples found");
+}
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("splinekit-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn tessellate_writes_svg_and_obj_polylines() {
+    let dir = temp_dir("tessellate");
+    let svg = dir.join("heart.svg");
+    let o = run(&["tessellate", "-", "-o", svg.to_str().unwrap(), "--tolerance", "0.01"], r#"{"type":"heart"}"#);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.starts_with("<svg") && text.contains("<path d=\"M"));
+    let obj = dir.join("line.obj");
+    let o = run(
+        &["tessellate", "-", "-o", obj.to_str().unwrap(), "--density", "4"],
+        r#"{"type":"line","from":[0,0,0],"to":[4,0,0]}"#,
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let text = std::fs::read_to_string(&obj).unwrap();
+    assert_eq!(text.lines().filter(|l| l.starts_with("v ")).count(), 5);
+    assert!(text.contains("v 1 0 0") && text.contains("l 1 2 3 4 5"), "{text}");
+    assert_bad(&["tessellate", "-", "-o", "x.stl"], r#"{"type":"heart"}"#, "-o");
+    assert_bad(
+        &["tessellate", "-", "-o", dir.join("a.svg").to_str().unwrap(), "--tolerance", "-1"],
+        r#"{"type":"heart"}"#,
+        "tolerance",
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn gallery_writes_every_figure_and_an_index() {
+    let dir = temp_dir("gallery");
+    let o = run(&["gallery", "-o", dir.to_str().unwrap()], "");
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let index = std::fs::read_to_string(dir.join("index.html")).unwrap();
+    let figures: Vec<&str> = index.split("<img src=\"").skip(1).map(|s| s.split('"').next().unwrap()).collect();
+    assert!(figures.len() >= 15, "{figures:?}");
+    for f in figures {
+        let svg = std::fs::read_to_string(dir.join(f)).unwrap();
+        assert!(svg.contains("<path d=\"M"), "{f} draws nothing");
+    }
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -10,9 +10,9 @@ use splinekit_scene::points::{from_points, to_points};
 use splinekit_scene::with_dimension;
 
 use crate::input::{parse_numbers, parse_points, read_points, read_text};
+use crate::output::{check_finite, write_json};
 use serde_json::Value;
 use splinekit_scene::{CurveVisitor, ShapeDocument};
-use crate::output::{check_finite, write_json};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum ParamsArg {
@@ -169,12 +169,18 @@ fn run_fit_model(args: &FitArgs, doc: &Value) -> Result<()> {
         fn visit<const D: usize>(self, c: &dyn splinekit::curve::Curve<D>) -> Result<CurveDocument> {
             let (args, closed) = (self.0, self.1);
             let mut o = FitOptions::new(args.degree, args.control_points);
-            o.knots = match args.knots { KnotsArg::Uniform => KnotPlacement::Uniform, KnotsArg::Averaged => KnotPlacement::Averaged };
+            o.knots = match args.knots {
+                KnotsArg::Uniform => KnotPlacement::Uniform,
+                KnotsArg::Averaged => KnotPlacement::Averaged,
+            };
             o.closed = closed;
             o.interpolate_ends = args.interpolate_ends;
             let f = fit::fit_curve(c, args.samples, &o).map_err(|e| anyhow!("{}", rename_fields(&e.to_string())))?;
             if args.report {
-                eprintln!("fit: rms error {:.6e}, max error {:.6e}, condition estimate {:.3e}", f.rms_error, f.max_error, f.condition_estimate);
+                eprintln!(
+                    "fit: rms error {:.6e}, max error {:.6e}, condition estimate {:.3e}",
+                    f.rms_error, f.max_error, f.condition_estimate
+                );
             }
             Ok(document(&f.curve))
         }

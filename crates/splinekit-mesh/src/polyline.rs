@@ -1,0 +1,140 @@
+//! Polylines for curves: regular sampling, and adaptive flattening to a chord-height
+//! tolerance.
+
+use splinekit::curve::Curve;
+use splinekit::{Error, Point, Result};
+
+/// Most points a tessellation may produce.
+pub const MAX_POINTS: usize = 20_000_000;
+
+/// Points of a curve in parameter order. For a closed curve the last point is not repeated.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Polyline<const D: usize> {
+    /// Curve parameters of the points.
+    pub params: Vec<f64>,
+    /// The points c(params[i]).
+    pub points: Vec<Point<D>>,
+    /// Whether the last point connects back to the first.
+    pub closed: bool,
+}
+
+impl<const D: usize> Polyline<D> {
+    /// `segments` equal parameter steps over the domain (closed curves: without the
+    /// repeated end point).
+    pub fn regular<C: Curve<D> + ?Sized>(curve: &C, segments: usize) -> Result<Self> {
+        if segments == 0 || segments > MAX_POINTS {
+            return Err(Error::invalid(
+                "density",
+                format!("segments must be between 1 and {MAX_POINTS}, got {segments}"),
+            ));
+        }
+        let d = curve.domain();
+        let closed = curve.is_closed();
+        let count = if closed { segments } else { segments + 1 };
+        let params: Vec<f64> =
+            (0..count).map(|i| if i == segments { d.end } else { d.lerp(i as f64 / segments as f64) }).collect();
+        let mut points = vec![Point::<D>::zeros(); count];
+        curve.eval_many(&params, 0, &mut points);
+        Ok(Polyline { params, points, closed })
+    }
+
+    /// Adaptive flattening to a chord-height `tolerance`.
+    ///
+    /// 1. Sample the domain regularly (about 256 samples, at least 8 between consecutive
+    ///    breakpoints), so no feature larger than a sample step is missed.
+    /// 2. Merge consecutive samples into one chord while every skipped sample stays within
+    ///    `tolerance`/2 of it (breakpoints always stay vertices).
+    /// 3. Halve each chord while any curve point at ¼, ½ or ¾ of its parameter range lies
+    ///    farther than 0.8·`tolerance` from it (down to 2⁻²⁴ of the chord). The largest
+    ///    deviation of a smooth arc can fall between the probes; the 20 % margin covers
+    ///    that for arcs whose curvature varies moderately over a chord, so the polyline
+    ///    stays within `tolerance` of the curve in practice (a sampled check, not a proof).
+    pub fn adaptive<C: Curve<D> + ?Sized>(curve: &C, tolerance: f64) -> Result<Self> {
+        if !(tolerance > 0.0 && tolerance.is_finite()) {
+            return Err(Error::invalid("tolerance", format!("must be positive and finite, got {tolerance}")));
+        }
+        let bps = curve.breakpoints();
+        let total = curve.domain().length();
+        // 1. Regular samples; `fixed` marks breakpoints.
+        let mut ts = vec![bps[0]];
+        let mut fixed = vec![true];
+        for w in bps.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            let pieces = ((256.0 * (b - a) / total).ceil() as usize).max(8);
+            for i in 1..=pieces {
+                ts.push(if i == pieces { b } else { a + (b - a) * i as f64 / pieces as f64 });
+                fixed.push(i == pieces);
+            }
+        }
+        let mut ps = vec![Point::<D>::zeros(); ts.len()];
+        curve.eval_many(&ts, 0, &mut ps);
+        // 2. Greedy chords over the samples.
+        let mut keep = vec![0usize];
+        let mut i = 0;
+        while i + 1 < ts.len() {
+            let mut j = i + 1;
+            while j + 1 < ts.len()
+                && !fixed[j]
+                && (i + 1..=j).all(|k| distance_to_segment(&ps[k], &ps[i], &ps[j + 1]) <= 0.5 * tolerance)
+            {
+                j += 1;
+            }
+            keep.push(j);
+            i = j;
+        }
+        // 3. Adaptive refinement of every chord.
+        let mut params = vec![ts[0]];
+        let mut points = vec![ps[0]];
+        for w in keep.windows(2) {
+            let mut stack = vec![(ts[w[0]], ps[w[0]], ts[w[1]], ps[w[1]], 0u32)];
+            while let Some((s0, q0, s1, q1, depth)) = stack.pop() {
+                let sm = 0.5 * (s0 + s1);
+                let qm = curve.point(sm);
+                let too_far = depth < 24
+                    && [0.25, 0.5, 0.75].iter().any(|&f| {
+                        let q = if f == 0.5 { qm } else { curve.point(s0 + (s1 - s0) * f) };
+                        distance_to_segment(&q, &q0, &q1) > 0.8 * tolerance
+                    });
+                if too_far {
+                    stack.push((sm, qm, s1, q1, depth + 1));
+                    stack.push((s0, q0, sm, qm, depth + 1));
+                } else {
+                    params.push(s1);
+                    points.push(q1);
+                    if points.len() > MAX_POINTS {
+                        return Err(Error::invalid(
+                            "tolerance",
+                            format!("{tolerance} needs more than {MAX_POINTS} points"),
+                        ));
+                    }
+                }
+            }
+        }
+        let closed = curve.is_closed();
+        if closed {
+            params.pop();
+            points.pop();
+        }
+        Ok(Polyline { params, points, closed })
+    }
+
+    /// Total length of the polyline (closing segment included for closed ones).
+    pub fn length(&self) -> f64 {
+        let mut l: f64 = self.points.windows(2).map(|w| (w[1] - w[0]).norm()).sum();
+        if self.closed && self.points.len() > 1 {
+            l += (self.points[0] - self.points[self.points.len() - 1]).norm();
+        }
+        l
+    }
+}
+
+/// Distance from `p` to the segment [a, b].
+pub fn distance_to_segment<const D: usize>(p: &Point<D>, a: &Point<D>, b: &Point<D>) -> f64 {
+    let ab = b - a;
+    let len2 = ab.norm_squared();
+    if len2 == 0.0 {
+        return (p - a).norm();
+    }
+    let s = ((p - a).dot(&ab) / len2).clamp(0.0, 1.0);
+    (p - (a + ab * s)).norm()
+}
