@@ -31,6 +31,11 @@ pub mod taylor;
 
 pub use error::{Error, Result};
 
+/// The README's Rust examples, compiled and run as doctests.
+#[doc = include_str!("../../../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
+
 /// A point (or vector) in ℝᴰ.
 pub type Point<const D: usize> = nalgebra::SVector<f64, D>;
 
