@@ -34,7 +34,8 @@ pub struct Refined {
     pub removed: usize,
 }
 
-fn bspline_doc<const D: usize>(c: &BSplineCurve<D>) -> CurveDocument {
+/// The document of a B-spline curve.
+pub fn bspline_doc<const D: usize>(c: &BSplineCurve<D>) -> CurveDocument {
     CurveDocument::Bspline(BSplineDoc {
         degree: c.degree(),
         knots: c.knots().to_vec(),
@@ -43,7 +44,8 @@ fn bspline_doc<const D: usize>(c: &BSplineCurve<D>) -> CurveDocument {
     })
 }
 
-fn nurbs_doc<const D: usize>(c: &NurbsCurve<D>) -> CurveDocument {
+/// The document of a NURBS curve.
+pub fn nurbs_doc<const D: usize>(c: &NurbsCurve<D>) -> CurveDocument {
     CurveDocument::Nurbs(NurbsDoc {
         degree: c.degree(),
         knots: c.knots().to_vec(),
@@ -53,39 +55,55 @@ fn nurbs_doc<const D: usize>(c: &NurbsCurve<D>) -> CurveDocument {
     })
 }
 
-fn refine_bspline<const D: usize>(c: BSplineCurve<D>, r: &Refinement) -> Result<Refined> {
-    let mut removed = 0;
-    let out = match r {
-        Refinement::Insert(k) => c.refine(k)?,
-        Refinement::Elevate(t) => c.elevate_degree(*t)?,
+/// The knot operations B-spline and NURBS curves share.
+trait KnotOperations: Sized {
+    fn refine(&self, knots: &[f64]) -> splinekit::Result<Self>;
+    fn elevate_degree(&self, t: usize) -> splinekit::Result<Self>;
+    fn remove_knot(&self, u: f64, times: usize, tolerance: f64) -> splinekit::Result<(Self, usize)>;
+}
+
+macro_rules! knot_operations {
+    ($ty:ident) => {
+        impl<const D: usize> KnotOperations for $ty<D> {
+            fn refine(&self, knots: &[f64]) -> splinekit::Result<Self> {
+                $ty::refine(self, knots)
+            }
+            fn elevate_degree(&self, t: usize) -> splinekit::Result<Self> {
+                $ty::elevate_degree(self, t)
+            }
+            fn remove_knot(&self, u: f64, times: usize, tolerance: f64) -> splinekit::Result<(Self, usize)> {
+                $ty::remove_knot(self, u, times, tolerance)
+            }
+        }
+    };
+}
+knot_operations!(BSplineCurve);
+knot_operations!(NurbsCurve);
+
+/// Applies the refinement; returns the new curve and the number of knots removed.
+fn apply<C: KnotOperations>(c: C, r: &Refinement) -> Result<(C, usize)> {
+    Ok(match r {
+        Refinement::Insert(k) => (c.refine(k)?, 0),
+        Refinement::Elevate(t) => (c.elevate_degree(*t)?, 0),
         Refinement::Remove { knots, tolerance } => {
-            let mut c = c;
+            let (mut c, mut removed) = (c, 0);
             for &u in knots {
                 let (next, n) = c.remove_knot(u, 1, *tolerance)?;
                 removed += n;
                 c = next;
             }
-            c
+            (c, removed)
         }
-    };
+    })
+}
+
+fn refine_bspline<const D: usize>(c: BSplineCurve<D>, r: &Refinement) -> Result<Refined> {
+    let (out, removed) = apply(c, r)?;
     Ok(Refined { document: bspline_doc(&out), removed })
 }
 
 fn refine_nurbs<const D: usize>(c: NurbsCurve<D>, r: &Refinement) -> Result<Refined> {
-    let mut removed = 0;
-    let out = match r {
-        Refinement::Insert(k) => c.refine(k)?,
-        Refinement::Elevate(t) => c.elevate_degree(*t)?,
-        Refinement::Remove { knots, tolerance } => {
-            let mut c = c;
-            for &u in knots {
-                let (next, n) = c.remove_knot(u, 1, *tolerance)?;
-                removed += n;
-                c = next;
-            }
-            c
-        }
-    };
+    let (out, removed) = apply(c, r)?;
     Ok(Refined { document: nurbs_doc(&out), removed })
 }
 

@@ -3,10 +3,10 @@
 use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
 use splinekit::Point;
-use splinekit::curve::BSplineCurve;
 use splinekit::fit::{self, FitOptions, InterpolationOptions, KnotPlacement, Parametrization};
-use splinekit_scene::curves::{BSplineDoc, CurveDocument};
-use splinekit_scene::points::{from_points, to_points};
+use splinekit_scene::curves::CurveDocument;
+use splinekit_scene::points::to_points;
+use splinekit_scene::refine::bspline_doc;
 use splinekit_scene::with_dimension;
 
 use crate::input::{parse_numbers, parse_points, read_points, read_text};
@@ -117,15 +117,6 @@ fn check_degree(p: usize) -> Result<()> {
     Ok(())
 }
 
-fn document<const D: usize>(c: &BSplineCurve<D>) -> CurveDocument {
-    CurveDocument::Bspline(BSplineDoc {
-        degree: c.degree(),
-        knots: c.knots().to_vec(),
-        control_points: from_points(c.control_points()),
-        periodic: c.is_periodic(),
-    })
-}
-
 pub fn run_fit(args: &FitArgs) -> Result<()> {
     check_degree(args.degree)?;
     let text = read_text(&args.points, "POINTS")?;
@@ -147,7 +138,7 @@ pub fn run_fit(args: &FitArgs) -> Result<()> {
         if args.report {
             eprintln!("fit: rms error {:.6e}, max error {:.6e}, condition estimate {:.3e}", f.rms_error, f.max_error, f.condition_estimate);
         }
-        Ok(document(&f.curve))
+        Ok(bspline_doc(&f.curve))
     })
     .map_err(|e: anyhow::Error| e)?;
     let v = doc.to_value();
@@ -182,7 +173,7 @@ fn run_fit_model(args: &FitArgs, doc: &Value) -> Result<()> {
                     f.rms_error, f.max_error, f.condition_estimate
                 );
             }
-            Ok(document(&f.curve))
+            Ok(bspline_doc(&f.curve))
         }
     }
     let doc = curve.visit(FitModel(args, closed))?;
@@ -209,7 +200,7 @@ pub fn run_interpolate(args: &InterpolateArgs) -> Result<()> {
             o.end_derivatives = Some((Point::<D>::from_column_slice(&a), Point::<D>::from_column_slice(&b)));
         }
         let r = fit::interpolate(&points, &o).map_err(|e| anyhow!("{}", rename_fields(&e.to_string())))?;
-        Ok(document(&r.curve))
+        Ok(bspline_doc(&r.curve))
     })
     .map_err(|e: anyhow::Error| e)?;
     let v = doc.to_value();

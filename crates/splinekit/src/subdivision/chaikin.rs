@@ -3,8 +3,8 @@
 //! (Chaikin is Lane–Riesenfeld of degree 2).
 
 use crate::Point;
-use crate::error::{Error, Result, check_points_finite};
-use crate::subdivision::lane_riesenfeld::check_output_size;
+use crate::error::Result;
+use crate::subdivision::lane_riesenfeld::check_polygon;
 
 /// `steps` rounds of corner cutting. Closed polygons (cyclic) of n points give 2n points
 /// per step; open ones of n points give 2(n − 1), or 2(n − 1) + 2 with `keep_ends`, which
@@ -15,12 +15,7 @@ pub fn chaikin<const D: usize>(
     closed: bool,
     keep_ends: bool,
 ) -> Result<Vec<Point<D>>> {
-    check_points_finite("points", points)?;
-    let min = if closed { 3 } else { 2 };
-    if points.len() < min {
-        return Err(Error::count("points", format!("at least {min} points"), points.len()));
-    }
-    check_output_size(points.len(), steps, 2, "steps")?;
+    check_polygon(points, if closed { 3 } else { 2 }, "", steps, 2)?;
     let mut p = points.to_vec();
     for _ in 0..steps {
         let n = p.len();

@@ -4,7 +4,7 @@
 
 use crate::Point;
 use crate::error::{Error, Result, check_points_finite};
-use crate::subdivision::lane_riesenfeld::check_output_size;
+use crate::subdivision::lane_riesenfeld::check_polygon;
 
 /// `steps` rounds of the 4-point scheme with tension `w` (0 < w < 1/8 for a C¹ limit).
 /// Closed polygons are cyclic (n → 2n points); open ones (n → 2n − 1) use the reflected
@@ -14,11 +14,7 @@ pub fn four_point<const D: usize>(points: &[Point<D>], steps: usize, closed: boo
     if !(w.is_finite() && w > 0.0 && w < 0.25) {
         return Err(Error::invalid("tension", format!("must be in (0, 1/4), got {w}")));
     }
-    let min = if closed { 3 } else { 2 };
-    if points.len() < min {
-        return Err(Error::count("points", format!("at least {min} points"), points.len()));
-    }
-    check_output_size(points.len(), steps, 2, "steps")?;
+    check_polygon(points, if closed { 3 } else { 2 }, "", steps, 2)?;
     let mut p = points.to_vec();
     for _ in 0..steps {
         let n = p.len();

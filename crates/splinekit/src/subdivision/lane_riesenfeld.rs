@@ -10,7 +10,23 @@ use crate::error::{Error, Result, check_points_finite};
 /// Upper bound on the number of output points a call may produce.
 pub const MAX_POINTS: usize = 50_000_000;
 
-pub(crate) fn check_output_size(n: usize, steps: usize, factor: usize, field: &str) -> Result<()> {
+/// Validates a control polygon: finite points, at least `min` of them, and an output of
+/// `factor`^`steps` times the input that stays below [`MAX_POINTS`].
+pub(crate) fn check_polygon<const D: usize>(
+    points: &[Point<D>],
+    min: usize,
+    what: &str,
+    steps: usize,
+    factor: usize,
+) -> Result<()> {
+    check_points_finite("points", points)?;
+    if points.len() < min {
+        return Err(Error::count("points", format!("at least {min} points{what}"), points.len()));
+    }
+    check_output_size(points.len(), steps, factor, "steps")
+}
+
+fn check_output_size(n: usize, steps: usize, factor: usize, field: &str) -> Result<()> {
     let mut total = n;
     for _ in 0..steps {
         total = total.saturating_mul(factor);
@@ -35,15 +51,11 @@ pub fn lane_riesenfeld<const D: usize>(
     steps: usize,
     closed: bool,
 ) -> Result<Vec<Point<D>>> {
-    check_points_finite("points", points)?;
     if degree == 0 {
         return Err(Error::invalid("degree", "must be at least 1"));
     }
     let min = if closed { 2 } else { degree + 1 };
-    if points.len() < min {
-        return Err(Error::count("points", format!("at least {min} points for degree {degree}"), points.len()));
-    }
-    check_output_size(points.len(), steps, 2, "steps")?;
+    check_polygon(points, min, &format!(" for degree {degree}"), steps, 2)?;
     let mut p = points.to_vec();
     for _ in 0..steps {
         let mut q = Vec::with_capacity(2 * p.len());

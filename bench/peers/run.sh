@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Side-by-side evaluation speed: splinekit, curvo, truck-geometry and scipy, one run.
+# Usage: bash bench/peers/run.sh   (installs scipy with pip if it is missing)
+set -euo pipefail
+cd "$(dirname "$0")"
+cargo build --release --quiet
+python3 -c "import scipy" 2>/dev/null || python3 -m pip install --quiet scipy numpy
+{
+  ./target/release/splinekit-peers
+  python3 scipy_bench.py
+} > results.tsv
+python3 - <<'PY'
+rows = [l.rstrip("\n").split("\t") for l in open("results.tsv")]
+ours = {r[1]: float(r[2]) for r in rows if r[0] == "splinekit"}
+print(f"{'library':<20} {'workload':<26} {'ns/eval':>9} {'× splinekit':>12}  checksum")
+for lib, what, ns, check in rows:
+    print(f"{lib:<20} {what:<26} {float(ns):>9.2f} {float(ns) / ours[what]:>12.1f}  {check}")
+PY

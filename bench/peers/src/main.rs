@@ -1,0 +1,111 @@
+//! The same workloads in splinekit, curvo and truck-geometry: a clamped uniform cubic 3-D
+//! B-spline with 1000 control points, evaluated at 10⁶ parameters (random order and
+//! sorted), points and first derivatives. Best of 5 runs; prints ns per evaluation.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+const N: usize = 1000;
+const M: usize = 1_000_000;
+
+fn control(i: usize) -> [f64; 3] {
+    let x = i as f64;
+    [x, (x * 0.37).sin(), (x * 0.11).cos()]
+}
+
+fn knots() -> Vec<f64> {
+    let p = 3;
+    let mut k = vec![0.0; p + 1];
+    for i in 1..N - p {
+        k.push(i as f64 / (N - p) as f64);
+    }
+    k.extend([1.0; 4]);
+    k
+}
+
+fn params() -> (Vec<f64>, Vec<f64>) {
+    let mut s = 0x9E3779B97F4A7C15u64;
+    let random = (0..M)
+        .map(|_| {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        })
+        .collect();
+    let sorted = (0..M).map(|i| i as f64 / (M - 1) as f64).collect();
+    (random, sorted)
+}
+
+/// Best-of-5 time per element in ns; `f` returns a checksum so nothing is optimised away.
+fn time(f: &mut dyn FnMut() -> f64) -> (f64, f64) {
+    let mut best = f64::INFINITY;
+    let mut sum = 0.0;
+    for _ in 0..5 {
+        let t = Instant::now();
+        sum = black_box(f());
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    (best * 1e9 / M as f64, sum)
+}
+
+fn main() {
+    let (random, sorted) = params();
+    let k = knots();
+    let mut rows: Vec<(String, String, f64, f64)> = Vec::new();
+
+    // splinekit
+    {
+        use splinekit::Point;
+        use splinekit::curve::{BSplineCurve, Curve};
+        let c = BSplineCurve::new(3, k.clone(), (0..N).map(|i| Point::<3>::from(control(i))).collect()).unwrap();
+        let mut out = vec![Point::<3>::zeros(); 2 * M];
+        rows.push(("splinekit".into(), "point, random order".into(), 0.0, 0.0));
+        let r = time(&mut || random.iter().map(|&t| c.point(t)[1]).sum());
+        rows.last_mut().unwrap().2 = r.0;
+        rows.last_mut().unwrap().3 = r.1;
+        let r = time(&mut || {
+            c.eval_many(&sorted, 0, &mut out[..M]);
+            out[..M].iter().map(|p| p[1]).sum()
+        });
+        rows.push(("splinekit".into(), "point, sorted batch".into(), r.0, r.1));
+        let r = time(&mut || {
+            c.eval_many(&sorted, 1, &mut out);
+            out.iter().skip(1).step_by(2).map(|p| p[1]).sum()
+        });
+        rows.push(("splinekit".into(), "first derivative, sorted".into(), r.0, r.1));
+    }
+
+    // curvo (homogeneous control points (x, y, z, w))
+    {
+        use curvo::prelude::NurbsCurve3D;
+        use nalgebra::Point4;
+        let pts = (0..N).map(|i| {
+            let c = control(i);
+            Point4::new(c[0], c[1], c[2], 1.0)
+        }).collect();
+        let c = NurbsCurve3D::<f64>::try_new(3, pts, k.clone()).unwrap();
+        let r = time(&mut || random.iter().map(|&t| c.point_at(t).y).sum());
+        rows.push(("curvo 0.3".into(), "point, random order".into(), r.0, r.1));
+        let r = time(&mut || sorted.iter().map(|&t| c.point_at(t).y).sum());
+        rows.push(("curvo 0.3".into(), "point, sorted batch".into(), r.0, r.1));
+        let r = time(&mut || sorted.iter().map(|&t| c.rational_derivatives(t, 1)[1].y).sum());
+        rows.push(("curvo 0.3".into(), "first derivative, sorted".into(), r.0, r.1));
+    }
+
+    // truck-geometry
+    {
+        use truck_geometry::prelude::*;
+        let c = BSplineCurve::new(KnotVec::from(k.clone()), (0..N).map(|i| Point3::from(control(i))).collect());
+        let r = time(&mut || random.iter().map(|&t| c.subs(t).y).sum());
+        rows.push(("truck-geometry 0.5".into(), "point, random order".into(), r.0, r.1));
+        let r = time(&mut || sorted.iter().map(|&t| c.subs(t).y).sum());
+        rows.push(("truck-geometry 0.5".into(), "point, sorted batch".into(), r.0, r.1));
+        let r = time(&mut || sorted.iter().map(|&t| c.der(t).y).sum());
+        rows.push(("truck-geometry 0.5".into(), "first derivative, sorted".into(), r.0, r.1));
+    }
+
+    for (lib, what, ns, check) in &rows {
+        println!("{lib}\t{what}\t{ns:.2}\t{check:.9e}");
+    }
+}
