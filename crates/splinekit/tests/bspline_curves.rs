@@ -426,3 +426,15 @@ fn bezier_span_fast_path_agrees_with_the_de_boor_kernel() {
         }
     }
 }
+
+#[test]
+fn degree_zero_splines_take_new_knots() {
+    let c = BSplineCurve::new(0, vec![0.0, 1.0, 2.0, 3.0], vec![p2(0.0, 0.0), p2(5.0, 1.0), p2(7.0, 2.0)]).unwrap();
+    let r = c.insert_knot(1.5, 1).unwrap();
+    assert_eq!(r.knots(), &[0.0, 1.0, 1.5, 2.0, 3.0]);
+    check_same(&c, &r, "degree-0 insertion");
+    assert!(c.insert_knot(1.0, 1).is_err());
+    let (l, right) = c.split(1.5).unwrap();
+    assert_eq!(l.point(1.2), p2(5.0, 1.0));
+    assert_eq!(right.unwrap().point(1.7), p2(5.0, 1.0));
+}

@@ -24,10 +24,22 @@ pub fn insert_knot<T: Coefficient>(data: &SplineData<T>, u: f64, times: usize) -
     if times == 0 {
         return Ok(data.clone());
     }
+    if p == 0 {
+        // Piecewise constant: a new knot splits its span, whose coefficient is duplicated.
+        if s + times > 1 {
+            return Err(Error::invalid("insert", format!("knot {u} can appear only once in a degree-0 spline")));
+        }
+        let k = knots.partition_point(|&x| x <= u) - 1;
+        let mut out = data.clone();
+        out.knots.insert(k + 1, u);
+        out.coefficients.insert(k, pts[k]);
+        return Ok(out);
+    }
     if s + times > p {
+        let more = if times == 1 { "once more".to_string() } else { format!("{times} more times") };
         return Err(Error::invalid(
             "insert",
-            format!("knot {u} has multiplicity {s}; inserting it {times} more times would exceed the degree {p}"),
+            format!("knot {u} has multiplicity {s}; inserting it {more} would exceed the degree {p}"),
         ));
     }
     let r = times;
