@@ -27,6 +27,7 @@ pub mod fit;
 pub mod frame;
 pub mod ops;
 pub mod subdivision;
+pub mod surface;
 pub mod taylor;
 
 pub use error::{Error, Result};

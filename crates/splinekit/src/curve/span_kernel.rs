@@ -63,21 +63,37 @@ pub fn eval_on_span<T: Coefficient>(
     t: f64,
     out: &mut [T],
 ) {
+    eval_local(knots, inv, &coefficients[span - degree..=span], degree, span, t, out)
+}
+
+/// As [`eval_on_span`], given only the p + 1 coefficients c_{s−p} … c_s active on the span
+/// (tensor-product surfaces gather them per row).
+#[inline]
+pub fn eval_local<T: Coefficient>(
+    knots: &[f64],
+    inv: &ReciprocalKnotDifferences,
+    local: &[T],
+    degree: usize,
+    span: usize,
+    t: f64,
+    out: &mut [T],
+) {
+    let coefficients = local;
     match degree {
         0 => {
-            out[0] = coefficients[span];
+            out[0] = coefficients[0];
             for o in out.iter_mut().skip(1) {
                 *o = T::zero();
             }
         }
-        1 => eval_fixed::<2, T>(knots, inv, coefficients, span, t, out),
-        2 => eval_fixed::<3, T>(knots, inv, coefficients, span, t, out),
-        3 => eval_fixed::<4, T>(knots, inv, coefficients, span, t, out),
-        4 => eval_fixed::<5, T>(knots, inv, coefficients, span, t, out),
-        5 => eval_fixed::<6, T>(knots, inv, coefficients, span, t, out),
-        6 => eval_fixed::<7, T>(knots, inv, coefficients, span, t, out),
-        7 => eval_fixed::<8, T>(knots, inv, coefficients, span, t, out),
-        _ => eval_dynamic(knots, inv, coefficients, degree, span, t, out),
+        1 => eval_fixed::<2, T>(knots, inv, local, span, t, out),
+        2 => eval_fixed::<3, T>(knots, inv, local, span, t, out),
+        3 => eval_fixed::<4, T>(knots, inv, local, span, t, out),
+        4 => eval_fixed::<5, T>(knots, inv, local, span, t, out),
+        5 => eval_fixed::<6, T>(knots, inv, local, span, t, out),
+        6 => eval_fixed::<7, T>(knots, inv, local, span, t, out),
+        7 => eval_fixed::<8, T>(knots, inv, local, span, t, out),
+        _ => eval_dynamic(knots, inv, local, degree, span, t, out),
     }
 }
 
@@ -85,7 +101,7 @@ pub fn eval_on_span<T: Coefficient>(
 fn eval_fixed<const W: usize, T: Coefficient>(
     knots: &[f64],
     inv: &ReciprocalKnotDifferences,
-    coefficients: &[T],
+    local: &[T],
     span: usize,
     t: f64,
     out: &mut [T],
@@ -93,7 +109,7 @@ fn eval_fixed<const W: usize, T: Coefficient>(
     let p = W - 1;
     // Local knots t_{s−p+1} … t_{s+p}: kn[j] = t_{s−p+1+j}, j < 2p.
     let kn = &knots[span + 1 - p..span + p + 1];
-    let cs = &coefficients[span - p..span + 1];
+    let cs = &local[..W];
     let mut left = [0.0f64; W];
     let mut right = [0.0f64; W];
     // rows[j][r] = N_{s−j+r, j}(t).
@@ -143,7 +159,7 @@ fn eval_fixed<const W: usize, T: Coefficient>(
 fn eval_dynamic<T: Coefficient>(
     knots: &[f64],
     inv: &ReciprocalKnotDifferences,
-    coefficients: &[T],
+    local: &[T],
     p: usize,
     span: usize,
     t: f64,
@@ -151,7 +167,7 @@ fn eval_dynamic<T: Coefficient>(
 ) {
     let w = p + 1;
     let kn = &knots[span + 1 - p..span + p + 1];
-    let cs = &coefficients[span - p..span + 1];
+    let cs = &local[..w];
     let mut left = vec![0.0; w];
     let mut right = vec![0.0; w];
     let mut rows = vec![0.0; w * w];

@@ -1,0 +1,134 @@
+//! One parameter direction of a tensor-product spline: degree, knots, periodic unrolling
+//! and span search.
+
+use crate::basis::{KnotVector, find_span};
+use crate::curve::Interval;
+use crate::curve::span_kernel::ReciprocalKnotDifferences;
+use crate::error::{Error, Result};
+
+/// The knot data of one direction (u or v) of a spline surface.
+///
+/// Periodic directions follow [`crate::curve::BSplineCurve::new_periodic`]: n control
+/// points and n + p + 1 knots repeating their spacing every n knots; evaluation uses the
+/// unrolled n + p coefficients and n + 2p + 1 knots.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SplineAxis {
+    degree: usize,
+    knots: Vec<f64>,
+    count: usize,
+    periodic: bool,
+    eval_knots: Vec<f64>,
+    inv: ReciprocalKnotDifferences,
+    uniform: Option<(f64, f64)>,
+}
+
+impl SplineAxis {
+    /// Validates `knots` for `count` control points of `degree`; `field` names the knot
+    /// field in errors (`knots_u`, `knots_v`).
+    pub fn new(degree: usize, knots: Vec<f64>, count: usize, periodic: bool, field: &str) -> Result<Self> {
+        let rename = |e: Error| match e {
+            Error::Count { expected, got, .. } => Error::Count { field: field.to_string(), expected, got },
+            Error::Invalid { field: f, message } if f == "knots" => {
+                Error::Invalid { field: field.to_string(), message }
+            }
+            Error::NotFinite { index, value, .. } => Error::NotFinite { field: field.to_string(), index, value },
+            other => other,
+        };
+        let kv = KnotVector::for_spline(knots, degree, count).map_err(rename)?;
+        let knots = kv.into_vec();
+        let p = degree;
+        let eval_knots = if periodic {
+            let n = count;
+            let period = knots[n + p] - knots[p];
+            let scale = knots[n + p].abs().max(knots[0].abs()).max(period);
+            for j in 0..=p {
+                let d = knots[j + n] - knots[j];
+                if (d - period).abs() > 1e-12 * scale {
+                    return Err(Error::invalid(
+                        field,
+                        format!(
+                            "a periodic knot vector must repeat its spacing every {n} knots: t_{} − t_{j} = {d}, but the period is {period}",
+                            j + n
+                        ),
+                    ));
+                }
+            }
+            let mut ext = knots.clone();
+            for i in n + p + 1..n + 2 * p + 1 {
+                let v = ext[i - n] + period;
+                ext.push(v);
+            }
+            ext
+        } else {
+            knots.clone()
+        };
+        let n_eval = if periodic { count + p } else { count };
+        let inv = ReciprocalKnotDifferences::new(&eval_knots, p);
+        let h = (eval_knots[n_eval] - eval_knots[p]) / (n_eval - p) as f64;
+        let uniform = (p..n_eval)
+            .all(|i| ((eval_knots[i + 1] - eval_knots[i]) - h).abs() <= 1e-12 * h)
+            .then(|| (eval_knots[p], 1.0 / h));
+        Ok(SplineAxis { degree, knots, count, periodic, eval_knots, inv, uniform })
+    }
+
+    /// Degree p.
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+    /// The knots as given.
+    pub fn knots(&self) -> &[f64] {
+        &self.knots
+    }
+    /// Number of control points n in this direction.
+    pub fn count(&self) -> usize {
+        self.count
+    }
+    /// Number of coefficients used for evaluation (n + p when periodic).
+    pub fn eval_count(&self) -> usize {
+        if self.periodic { self.count + self.degree } else { self.count }
+    }
+    /// Whether the direction is periodic.
+    pub fn is_periodic(&self) -> bool {
+        self.periodic
+    }
+    /// Knots used for evaluation.
+    pub fn eval_knots(&self) -> &[f64] {
+        &self.eval_knots
+    }
+    /// Reciprocal knot differences of the evaluation knots.
+    pub fn reciprocals(&self) -> &ReciprocalKnotDifferences {
+        &self.inv
+    }
+    /// The parameter domain.
+    pub fn domain(&self) -> Interval {
+        Interval::new(self.eval_knots[self.degree], self.eval_knots[self.eval_count()])
+    }
+    /// Clamps (open) or wraps (periodic) a parameter into the domain.
+    #[inline]
+    pub fn normalise(&self, t: f64) -> f64 {
+        let d = self.domain();
+        if self.periodic { d.wrap_periodic(t, crate::basis::Side::Right) } else { d.clamp(t) }
+    }
+    /// The span s with t_s ≤ t < t_{s+1} (t in the domain).
+    #[inline]
+    pub fn span(&self, t: f64) -> usize {
+        let (p, n) = (self.degree, self.eval_count());
+        let k = &self.eval_knots;
+        let Some((a, inv_h)) = self.uniform else {
+            return find_span(k, p, n, t, crate::basis::Side::Right);
+        };
+        let mut s = (p + ((t - a) * inv_h).max(0.0) as usize).min(n - 1);
+        while s > p && k[s] > t {
+            s -= 1;
+        }
+        while s + 1 < n && k[s + 1] <= t {
+            s += 1;
+        }
+        s
+    }
+    /// Index of the given control point for evaluation coefficient `i`.
+    #[inline]
+    pub fn wrap_index(&self, i: usize) -> usize {
+        i % self.count
+    }
+}

@@ -1,0 +1,71 @@
+//! Bézier surfaces S(u, v) = Σ_i Σ_j B_{i,m}(u) B_{j,n}(v) P_ij on [0, 1]², evaluated by
+//! de Casteljau in v for every row, then in u.
+
+use smallvec::{SmallVec, smallvec};
+
+use crate::Point;
+use crate::curve::Interval;
+use crate::curve::bezier::bezier_derivatives;
+use crate::error::{Result, check_points_finite};
+use crate::surface::Surface;
+use crate::surface::tensor::net_shape;
+
+/// A tensor-product Bézier surface of degrees (rows − 1, columns − 1).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BezierSurface<const D: usize> {
+    net: Vec<Vec<Point<D>>>,
+}
+
+impl<const D: usize> BezierSurface<D> {
+    /// A surface from its control net (first index along u).
+    pub fn new(net: Vec<Vec<Point<D>>>) -> Result<Self> {
+        net_shape(&net, "control_points")?;
+        for (i, row) in net.iter().enumerate() {
+            check_points_finite(&format!("control_points[{i}]"), row)?;
+        }
+        Ok(BezierSurface { net })
+    }
+    /// The control net.
+    pub fn control_points(&self) -> &[Vec<Point<D>>] {
+        &self.net
+    }
+    /// Degrees (m, n).
+    pub fn degrees(&self) -> (usize, usize) {
+        (self.net.len() - 1, self.net[0].len() - 1)
+    }
+}
+
+impl<const D: usize> Surface<D> for BezierSurface<D> {
+    fn domain_u(&self) -> Interval {
+        Interval::new(0.0, 1.0)
+    }
+    fn domain_v(&self) -> Interval {
+        Interval::new(0.0, 1.0)
+    }
+    fn is_closed_u(&self) -> bool {
+        false
+    }
+    fn is_closed_v(&self) -> bool {
+        false
+    }
+    fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
+        let (u, v) = (u.clamp(0.0, 1.0), v.clamp(0.0, 1.0));
+        let rows = self.net.len();
+        let w = dv + 1;
+        let mut tmp: SmallVec<[Point<D>; 32]> = smallvec![Point::<D>::zeros(); rows * w];
+        for (r, row) in self.net.iter().enumerate() {
+            bezier_derivatives(row, v, &mut tmp[r * w..(r + 1) * w]);
+        }
+        let mut col: SmallVec<[Point<D>; 16]> = smallvec![Point::<D>::zeros(); rows];
+        let mut res: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); du + 1];
+        for j in 0..=dv {
+            for r in 0..rows {
+                col[r] = tmp[r * w + j];
+            }
+            bezier_derivatives(&col, u, &mut res);
+            for i in 0..=du {
+                out[i * w + j] = res[i];
+            }
+        }
+    }
+}

@@ -1,0 +1,110 @@
+//! B-spline surfaces S(u, v) = Σ_i Σ_j N_{i,p}(u) M_{j,q}(v) P_ij.
+
+use crate::Point;
+use crate::basis::SplineAxis;
+use crate::curve::{BSplineCurve, Interval};
+use crate::error::{Result, check_points_finite};
+use crate::surface::Surface;
+use crate::surface::tensor::{TensorSpline, net_shape};
+
+/// A tensor-product B-spline surface of degrees (p, q). The net's first index runs along
+/// u. Each direction may be clamped, unclamped or periodic (closed), with the knot rules
+/// of [`BSplineCurve`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct BSplineSurface<const D: usize> {
+    net: Vec<Vec<Point<D>>>,
+    spline: TensorSpline<Point<D>>,
+}
+
+impl<const D: usize> BSplineSurface<D> {
+    /// A surface from degrees, knot vectors (n_u + p + 1 and n_v + q + 1 values), the
+    /// control net (n_u rows of n_v points) and the periodic flags.
+    pub fn new(
+        degrees: (usize, usize),
+        knots_u: Vec<f64>,
+        knots_v: Vec<f64>,
+        net: Vec<Vec<Point<D>>>,
+        periodic: (bool, bool),
+    ) -> Result<Self> {
+        let (nu, nv) = net_shape(&net, "control_points")?;
+        for (i, row) in net.iter().enumerate() {
+            check_points_finite(&format!("control_points[{i}]"), row)?;
+        }
+        let u = SplineAxis::new(degrees.0, knots_u, nu, periodic.0, "knots_u")?;
+        let v = SplineAxis::new(degrees.1, knots_v, nv, periodic.1, "knots_v")?;
+        let spline = TensorSpline::new(u, v, &net);
+        Ok(BSplineSurface { net, spline })
+    }
+
+    /// Clamped uniform knots on [0, 1]² for the given net.
+    pub fn clamped_uniform(degrees: (usize, usize), net: Vec<Vec<Point<D>>>) -> Result<Self> {
+        let (nu, nv) = net_shape(&net, "control_points")?;
+        let ku = crate::basis::KnotVector::clamped_uniform(degrees.0, nu, 0.0, 1.0)?.into_vec();
+        let kv = crate::basis::KnotVector::clamped_uniform(degrees.1, nv, 0.0, 1.0)?.into_vec();
+        Self::new(degrees, ku, kv, net, (false, false))
+    }
+
+    /// Degrees (p, q).
+    pub fn degrees(&self) -> (usize, usize) {
+        (self.spline.u.degree(), self.spline.v.degree())
+    }
+    /// Knots in u and v as given.
+    pub fn knots(&self) -> (&[f64], &[f64]) {
+        (self.spline.u.knots(), self.spline.v.knots())
+    }
+    /// The control net.
+    pub fn control_points(&self) -> &[Vec<Point<D>>] {
+        &self.net
+    }
+    /// Periodic flags (u, v).
+    pub fn periodic(&self) -> (bool, bool) {
+        (self.spline.u.is_periodic(), self.spline.v.is_periodic())
+    }
+
+    /// The isocurve u = u₀ as a B-spline in v (exact: its control points are
+    /// Σ_i N_i(u₀) P_ij).
+    pub fn iso_curve_u(&self, u0: f64) -> Result<BSplineCurve<D>> {
+        let (pu, pv) = self.degrees();
+        let u = self.spline.u.normalise(u0);
+        let su = self.spline.u.span(u);
+        let mut nb = vec![0.0; pu + 1];
+        crate::basis::basis_functions(self.spline.u.eval_knots(), pu, su, u, &mut nb);
+        let nu = self.net.len();
+        let pts: Vec<Point<D>> = (0..self.net[0].len())
+            .map(|j| (0..=pu).fold(Point::<D>::zeros(), |acc, r| acc + self.net[(su - pu + r) % nu][j] * nb[r]))
+            .collect();
+        if self.spline.v.is_periodic() {
+            BSplineCurve::new_periodic(pv, self.spline.v.knots().to_vec(), pts)
+        } else {
+            BSplineCurve::new(pv, self.spline.v.knots().to_vec(), pts)
+        }
+    }
+
+    /// The same surface with every control point mapped by `f` (exact for affine maps).
+    pub fn map_points(&self, f: impl Fn(&Point<D>) -> Point<D>) -> Self {
+        let net = self.net.iter().map(|r| r.iter().map(&f).collect()).collect();
+        let (ku, kv) = self.knots();
+        Self::new(self.degrees(), ku.to_vec(), kv.to_vec(), net, self.periodic()).expect("same knots")
+    }
+}
+
+impl<const D: usize> Surface<D> for BSplineSurface<D> {
+    fn domain_u(&self) -> Interval {
+        self.spline.u.domain()
+    }
+    fn domain_v(&self) -> Interval {
+        self.spline.v.domain()
+    }
+    fn is_closed_u(&self) -> bool {
+        self.spline.u.is_periodic()
+    }
+    fn is_closed_v(&self) -> bool {
+        self.spline.v.is_periodic()
+    }
+    fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
+        self.spline.eval_partials(u, v, du, dv, out)
+    }
+    fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
+        self.spline.eval_grid(us, vs, du, dv, out)
+    }
+}

@@ -1,0 +1,18 @@
+//! Surfaces: the [`Surface`] trait, tensor-product Bézier, B-spline and NURBS surfaces,
+//! and model surfaces.
+
+pub mod bezier_surface;
+pub mod bspline_surface;
+pub mod closest_point;
+pub mod iso_curve;
+pub mod model;
+pub mod nurbs_surface;
+pub mod revolution;
+pub mod tensor;
+pub mod traits;
+
+pub use bezier_surface::BezierSurface;
+pub use bspline_surface::BSplineSurface;
+pub use iso_curve::{Direction, IsoCurve};
+pub use nurbs_surface::NurbsSurface;
+pub use traits::{Curvatures, FundamentalForms, Surface, unit_normal};

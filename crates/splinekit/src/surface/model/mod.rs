@@ -1,0 +1,9 @@
+//! Model surfaces with exact partial derivatives of every order.
+
+pub mod catalog;
+pub mod separable;
+
+pub use catalog::{
+    Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
+};
+pub use separable::{Factor, SeparableSurface, SeparableTerm};

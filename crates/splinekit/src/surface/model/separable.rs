@@ -1,0 +1,155 @@
+//! Surfaces whose coordinates are sums of separable terms a·f(u)·g(v):
+//! ∂^{i+j}/∂uⁱ∂vʲ (a f(u) g(v)) = a f⁽ⁱ⁾(u) g⁽ʲ⁾(v), exact to any order.
+
+use crate::Point;
+use crate::basis::binomial;
+use crate::curve::Interval;
+use crate::curve::model::{Term, TrigSeries};
+
+/// A function of one variable with derivatives of every order.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Factor {
+    /// A trigonometric series plus constant and linear part.
+    Series(TrigSeries),
+    /// The polynomial Σ c_k tᵏ.
+    Polynomial(Vec<f64>),
+    /// ln(1 − a t) (for t < 1/a).
+    LogOneMinus(f64),
+    /// The product of two factors (Leibniz rule).
+    Product(Box<Factor>, Box<Factor>),
+}
+
+impl Factor {
+    /// The constant c.
+    pub fn constant(c: f64) -> Self {
+        Factor::Polynomial(vec![c])
+    }
+    /// a cos(ω t).
+    pub fn cos(a: f64, w: f64) -> Self {
+        Factor::Series(TrigSeries::of(&[Term::cos(a, w)]))
+    }
+    /// a sin(ω t).
+    pub fn sin(a: f64, w: f64) -> Self {
+        Factor::Series(TrigSeries::of(&[Term::sin(a, w)]))
+    }
+    /// The product self · other.
+    pub fn times(self, other: Factor) -> Self {
+        Factor::Product(Box::new(self), Box::new(other))
+    }
+
+    /// The k-th derivative at t.
+    pub fn derivative(&self, t: f64, k: usize) -> f64 {
+        match self {
+            Factor::Series(s) => s.derivative(t, k),
+            Factor::Polynomial(c) => {
+                let mut v = 0.0;
+                for (n, &cn) in c.iter().enumerate().skip(k) {
+                    let falling: f64 = (0..k).map(|i| (n - i) as f64).product();
+                    v += cn * falling * t.powi((n - k) as i32);
+                }
+                v
+            }
+            Factor::LogOneMinus(a) => {
+                let x = 1.0 - a * t;
+                if k == 0 {
+                    x.ln()
+                } else {
+                    // d^k/dt^k ln(1 − a t) = −(k − 1)! aᵏ / (1 − a t)ᵏ.
+                    let fact: f64 = (1..k).map(|i| i as f64).product();
+                    -fact * (a / x).powi(k as i32)
+                }
+            }
+            Factor::Product(f, g) => {
+                (0..=k).map(|j| binomial(k, j) * f.derivative(t, j) * g.derivative(t, k - j)).sum()
+            }
+        }
+    }
+}
+
+/// One separable term a·f(u)·g(v).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeparableTerm {
+    /// The coefficient a.
+    pub coefficient: f64,
+    /// f(u).
+    pub u: Factor,
+    /// g(v).
+    pub v: Factor,
+}
+
+/// a·f(u)·g(v).
+pub fn term(coefficient: f64, u: Factor, v: Factor) -> SeparableTerm {
+    SeparableTerm { coefficient, u, v }
+}
+
+/// A 3-D surface with separable coordinates over a domain.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeparableSurface {
+    /// Terms of x, y and z.
+    pub coordinates: [Vec<SeparableTerm>; 3],
+    /// u-domain.
+    pub domain_u: Interval,
+    /// v-domain.
+    pub domain_v: Interval,
+    /// Closed (periodic) in u.
+    pub closed_u: bool,
+    /// Closed (periodic) in v.
+    pub closed_v: bool,
+}
+
+impl SeparableSurface {
+    /// Writes the partials (layout of [`crate::surface::Surface::eval_partials`]).
+    pub fn eval_into(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<3>]) {
+        let u = if self.closed_u {
+            self.domain_u.wrap_periodic(u, crate::basis::Side::Right)
+        } else {
+            self.domain_u.clamp(u)
+        };
+        let v = if self.closed_v {
+            self.domain_v.wrap_periodic(v, crate::basis::Side::Right)
+        } else {
+            self.domain_v.clamp(v)
+        };
+        for i in 0..=du {
+            for j in 0..=dv {
+                let o = &mut out[i * (dv + 1) + j];
+                for (c, terms) in self.coordinates.iter().enumerate() {
+                    o[c] = terms.iter().map(|t| t.coefficient * t.u.derivative(u, i) * t.v.derivative(v, j)).sum();
+                }
+            }
+        }
+    }
+}
+
+/// Implements `Surface<3>` for a model-surface struct with a `surface: SeparableSurface`.
+macro_rules! separable_model_surface {
+    ($ty:ty) => {
+        impl $crate::surface::Surface<3> for $ty {
+            fn domain_u(&self) -> $crate::curve::Interval {
+                self.surface.domain_u
+            }
+            fn domain_v(&self) -> $crate::curve::Interval {
+                self.surface.domain_v
+            }
+            fn is_closed_u(&self) -> bool {
+                self.surface.closed_u
+            }
+            fn is_closed_v(&self) -> bool {
+                self.surface.closed_v
+            }
+            fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [$crate::Point<3>]) {
+                self.surface.eval_into(u, v, du, dv, out)
+            }
+        }
+    };
+}
+pub(crate) use separable_model_surface;
+
+/// Checks a parameter is finite and positive.
+pub(crate) fn positive(field: &str, v: f64) -> crate::Result<f64> {
+    if v > 0.0 && v.is_finite() {
+        Ok(v)
+    } else {
+        Err(crate::Error::invalid(field, format!("must be positive and finite, got {v}")))
+    }
+}

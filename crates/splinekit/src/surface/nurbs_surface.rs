@@ -1,0 +1,132 @@
+//! NURBS surfaces S = Σ N_i M_j w_ij P_ij / Σ N_i M_j w_ij, with rational partials of any
+//! order (NURBS Book eq. 4.20):
+//! S^{(k,l)} = (A^{(k,l)} − Σ_{(i,j)≠(0,0)} C(k,i) C(l,j) w^{(i,j)} S^{(k−i,l−j)}) / w.
+
+use smallvec::{SmallVec, smallvec};
+
+use crate::Point;
+use crate::basis::{SplineAxis, binomial};
+use crate::curve::Interval;
+use crate::curve::nurbs::check_weights;
+use crate::error::{Result, check_points_finite};
+use crate::ops::homogeneous::Homogeneous;
+use crate::surface::Surface;
+use crate::surface::tensor::{TensorSpline, net_shape};
+
+/// A tensor-product NURBS surface with positive weights beside the control points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NurbsSurface<const D: usize> {
+    net: Vec<Vec<Point<D>>>,
+    weights: Vec<Vec<f64>>,
+    spline: TensorSpline<Homogeneous<D>>,
+}
+
+impl<const D: usize> NurbsSurface<D> {
+    /// A surface from degrees, knots, net, weights (same shape, all > 0) and periodic flags.
+    pub fn new(
+        degrees: (usize, usize),
+        knots_u: Vec<f64>,
+        knots_v: Vec<f64>,
+        net: Vec<Vec<Point<D>>>,
+        weights: Vec<Vec<f64>>,
+        periodic: (bool, bool),
+    ) -> Result<Self> {
+        let (nu, nv) = net_shape(&net, "control_points")?;
+        for (i, row) in net.iter().enumerate() {
+            check_points_finite(&format!("control_points[{i}]"), row)?;
+        }
+        if weights.len() != nu {
+            return Err(crate::Error::count("weights", format!("{nu} rows like the control points"), weights.len()));
+        }
+        for (i, row) in weights.iter().enumerate() {
+            check_weights(row, nv).map_err(|e| match e {
+                crate::Error::Count { expected, got, .. } => {
+                    crate::Error::Count { field: format!("weights[{i}]"), expected, got }
+                }
+                crate::Error::Invalid { message, .. } => {
+                    crate::Error::Invalid { field: format!("weights[{i}]"), message }
+                }
+                other => other,
+            })?;
+        }
+        let u = SplineAxis::new(degrees.0, knots_u, nu, periodic.0, "knots_u")?;
+        let v = SplineAxis::new(degrees.1, knots_v, nv, periodic.1, "knots_v")?;
+        let rows: Vec<Vec<Homogeneous<D>>> = net
+            .iter()
+            .zip(&weights)
+            .map(|(r, w)| r.iter().zip(w).map(|(p, w)| Homogeneous::lift(p, *w)).collect())
+            .collect();
+        let spline = TensorSpline::new(u, v, &rows);
+        Ok(NurbsSurface { net, weights, spline })
+    }
+
+    /// Degrees (p, q).
+    pub fn degrees(&self) -> (usize, usize) {
+        (self.spline.u.degree(), self.spline.v.degree())
+    }
+    /// Knots in u and v as given.
+    pub fn knots(&self) -> (&[f64], &[f64]) {
+        (self.spline.u.knots(), self.spline.v.knots())
+    }
+    /// The control net.
+    pub fn control_points(&self) -> &[Vec<Point<D>>] {
+        &self.net
+    }
+    /// The weights.
+    pub fn weights(&self) -> &[Vec<f64>] {
+        &self.weights
+    }
+    /// Periodic flags (u, v).
+    pub fn periodic(&self) -> (bool, bool) {
+        (self.spline.u.is_periodic(), self.spline.v.is_periodic())
+    }
+}
+
+/// Turns homogeneous partials h[i·(dv+1)+j] into the rational surface's partials.
+fn rational_partials<const D: usize>(h: &[Homogeneous<D>], du: usize, dv: usize, out: &mut [Point<D>]) {
+    let w = dv + 1;
+    let w0 = h[0].weight;
+    for k in 0..=du {
+        for l in 0..=dv {
+            let mut v = h[k * w + l].weighted;
+            for i in 0..=k {
+                for j in 0..=l {
+                    if i == 0 && j == 0 {
+                        continue;
+                    }
+                    v -= out[(k - i) * w + (l - j)] * (binomial(k, i) * binomial(l, j) * h[i * w + j].weight);
+                }
+            }
+            out[k * w + l] = v / w0;
+        }
+    }
+}
+
+impl<const D: usize> Surface<D> for NurbsSurface<D> {
+    fn domain_u(&self) -> Interval {
+        self.spline.u.domain()
+    }
+    fn domain_v(&self) -> Interval {
+        self.spline.v.domain()
+    }
+    fn is_closed_u(&self) -> bool {
+        self.spline.u.is_periodic()
+    }
+    fn is_closed_v(&self) -> bool {
+        self.spline.v.is_periodic()
+    }
+    fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
+        let n = (du + 1) * (dv + 1);
+        let mut h: SmallVec<[Homogeneous<D>; 9]> = smallvec![Homogeneous::lift(&Point::<D>::zeros(), 0.0); n];
+        self.spline.eval_partials(u, v, du, dv, &mut h);
+        rational_partials(&h, du, dv, out);
+    }
+    fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
+        let n = (du + 1) * (dv + 1);
+        let mut h = vec![Homogeneous::lift(&Point::<D>::zeros(), 0.0); us.len() * vs.len() * n];
+        self.spline.eval_grid(us, vs, du, dv, &mut h);
+        for (hc, oc) in h.chunks_exact(n).zip(out.chunks_exact_mut(n)) {
+            rational_partials(hc, du, dv, oc);
+        }
+    }
+}

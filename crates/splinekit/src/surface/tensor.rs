@@ -1,0 +1,133 @@
+//! Tensor-product splines S(u, v) = Σ_i Σ_j N_i(u) M_j(v) c_ij over any linear space of
+//! coefficients (points for B-spline surfaces, homogeneous points for NURBS surfaces).
+
+use smallvec::{SmallVec, smallvec};
+
+use crate::Coefficient;
+use crate::basis::{SplineAxis, basis_derivatives};
+use crate::curve::span_kernel::eval_local;
+use crate::error::{Error, Result};
+
+/// Degree, knots and coefficients of a tensor-product spline, ready to evaluate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TensorSpline<T> {
+    /// The u-direction (first index of the net).
+    pub u: SplineAxis,
+    /// The v-direction (second index of the net).
+    pub v: SplineAxis,
+    /// Evaluation net (unrolled in periodic directions), row-major: `[i · nv_eval + j]`.
+    net: Vec<T>,
+}
+
+/// Checks a net for raggedness; returns (rows, columns).
+pub fn net_shape<T>(rows: &[Vec<T>], field: &str) -> Result<(usize, usize)> {
+    let nu = rows.len();
+    if nu == 0 {
+        return Err(Error::count(field, "at least 1 row", 0));
+    }
+    let nv = rows[0].len();
+    if nv == 0 {
+        return Err(Error::count(format!("{field}[0]"), "at least 1 point", 0));
+    }
+    for (i, r) in rows.iter().enumerate() {
+        if r.len() != nv {
+            return Err(Error::count(format!("{field}[{i}]"), format!("{nv} points like the first row"), r.len()));
+        }
+    }
+    Ok((nu, nv))
+}
+
+impl<T: Coefficient> TensorSpline<T> {
+    /// Builds from axes and a net of `u.count()` rows of `v.count()` coefficients.
+    pub fn new(u: SplineAxis, v: SplineAxis, rows: &[Vec<T>]) -> Self {
+        let (nue, nve) = (u.eval_count(), v.eval_count());
+        let mut net = Vec::with_capacity(nue * nve);
+        for i in 0..nue {
+            let row = &rows[u.wrap_index(i)];
+            for j in 0..nve {
+                net.push(row[v.wrap_index(j)]);
+            }
+        }
+        TensorSpline { u, v, net }
+    }
+
+    /// Writes the partials ∂^{i+j}/∂uⁱ∂vʲ, i ≤ du, j ≤ dv into `out[i·(dv+1) + j]`.
+    pub fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [T]) {
+        let (u, v) = (self.u.normalise(u), self.v.normalise(v));
+        let (su, sv) = (self.u.span(u), self.v.span(v));
+        let (pu, pv) = (self.u.degree(), self.v.degree());
+        let nve = self.v.eval_count();
+        let w = dv + 1;
+        let mut rows: SmallVec<[T; 32]> = smallvec![T::zero(); (pu + 1) * w];
+        for r in 0..=pu {
+            let i = su - pu + r;
+            let local = &self.net[i * nve + sv - pv..=i * nve + sv];
+            eval_local(self.v.eval_knots(), self.v.reciprocals(), local, pv, sv, v, &mut rows[r * w..(r + 1) * w]);
+        }
+        let mut col: SmallVec<[T; 8]> = smallvec![T::zero(); pu + 1];
+        let mut res: SmallVec<[T; 8]> = smallvec![T::zero(); du + 1];
+        for j in 0..=dv {
+            for r in 0..=pu {
+                col[r] = rows[r * w + j];
+            }
+            eval_local(self.u.eval_knots(), self.u.reciprocals(), &col, pu, su, u, &mut res);
+            for i in 0..=du {
+                out[i * w + j] = res[i];
+            }
+        }
+    }
+
+    /// Grid evaluation (layout as [`crate::surface::Surface::eval_grid`]): the v-basis is
+    /// computed once per v; per u the isocurve coefficients C_i(u) = Σ_r N_r^{(i)}(u) row_r
+    /// are formed once, then every grid point is a (p_v + 1)-term sum.
+    pub fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [T]) {
+        let (pu, pv) = (self.u.degree(), self.v.degree());
+        let (wu, wv) = (pu + 1, pv + 1);
+        let nve = self.v.eval_count();
+        let block = (du + 1) * (dv + 1);
+        // v-basis per column parameter.
+        let mut v_spans = Vec::with_capacity(vs.len());
+        let mut v_basis = vec![0.0; vs.len() * (dv + 1) * wv];
+        let mut scratch = vec![0.0; (dv.max(du) + 1) * (pu.max(pv) + 1)];
+        for (b, &v) in vs.iter().enumerate() {
+            let v = self.v.normalise(v);
+            let sv = self.v.span(v);
+            v_spans.push(sv);
+            basis_derivatives(self.v.eval_knots(), pv, sv, v, dv, &mut scratch[..(dv + 1) * wv]);
+            v_basis[b * (dv + 1) * wv..(b + 1) * (dv + 1) * wv].copy_from_slice(&scratch[..(dv + 1) * wv]);
+        }
+        let mut iso = vec![T::zero(); (du + 1) * nve];
+        let mut nu_basis = vec![0.0; (du + 1) * wu];
+        for (a, &u) in us.iter().enumerate() {
+            let u = self.u.normalise(u);
+            let su = self.u.span(u);
+            basis_derivatives(self.u.eval_knots(), pu, su, u, du, &mut nu_basis);
+            for i in 0..=du {
+                let c = &mut iso[i * nve..(i + 1) * nve];
+                c.iter_mut().for_each(|x| *x = T::zero());
+                for r in 0..wu {
+                    let n = nu_basis[i * wu + r];
+                    let row = &self.net[(su - pu + r) * nve..(su - pu + r + 1) * nve];
+                    for (x, y) in c.iter_mut().zip(row) {
+                        *x += *y * n;
+                    }
+                }
+            }
+            for (b, &sv) in v_spans.iter().enumerate() {
+                let nb = &v_basis[b * (dv + 1) * wv..(b + 1) * (dv + 1) * wv];
+                let o = &mut out[(a * vs.len() + b) * block..(a * vs.len() + b + 1) * block];
+                for i in 0..=du {
+                    let c = &iso[i * nve + sv - pv..=i * nve + sv];
+                    for j in 0..=dv {
+                        let nj = &nb[j * wv..(j + 1) * wv];
+                        let mut acc = T::zero();
+                        for r in 0..wv {
+                            acc += c[r] * nj[r];
+                        }
+                        o[i * (dv + 1) + j] = acc;
+                    }
+                }
+            }
+        }
+    }
+}

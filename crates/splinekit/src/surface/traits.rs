@@ -1,0 +1,157 @@
+//! The [`Surface`] trait: what every parametric surface S: [a,b]×[c,d] → ℝᴰ can do.
+
+use smallvec::{SmallVec, smallvec};
+
+use crate::Point;
+use crate::curve::Interval;
+
+/// First and second fundamental forms at a point of a surface in ℝ³.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FundamentalForms {
+    /// E = S_u·S_u.
+    pub e: f64,
+    /// F = S_u·S_v.
+    pub f: f64,
+    /// G = S_v·S_v.
+    pub g: f64,
+    /// L = N·S_uu.
+    pub l: f64,
+    /// M = N·S_uv.
+    pub m: f64,
+    /// N = N·S_vv.
+    pub n: f64,
+}
+
+/// Curvatures at a point of a surface in ℝ³.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Curvatures {
+    /// Gaussian curvature K = (LN − M²)/(EG − F²).
+    pub gaussian: f64,
+    /// Mean curvature H = (EN − 2FM + GL) / (2(EG − F²)), with the sign of the normal
+    /// S_u × S_v.
+    pub mean: f64,
+    /// Principal curvatures κ₁ = H + √(H² − K) ≥ κ₂ = H − √(H² − K).
+    pub principal: (f64, f64),
+}
+
+/// A parametric surface S(u, v) over [u₀, u₁] × [v₀, v₁].
+///
+/// Implementors provide the domains, closedness and [`Surface::eval_partials`]; everything
+/// else is derived. Parameters outside the domain are clamped in open directions and
+/// wrapped in closed ones.
+pub trait Surface<const D: usize> {
+    /// The u-domain.
+    fn domain_u(&self) -> Interval;
+    /// The v-domain.
+    fn domain_v(&self) -> Interval;
+    /// Whether S(u₀, v) = S(u₁, v), continuing smoothly.
+    fn is_closed_u(&self) -> bool;
+    /// Whether S(u, v₀) = S(u, v₁), continuing smoothly.
+    fn is_closed_v(&self) -> bool;
+
+    /// Writes ∂^{i+j}S/∂uⁱ∂vʲ for i ≤ `du`, j ≤ `dv` into `out[i·(dv+1) + j]`
+    /// (`out.len()` ≥ (du+1)(dv+1)).
+    fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]);
+
+    /// Evaluates a grid: `out[((a·vs.len() + b)·(du+1) + i)·(dv+1) + j]` is the (i, j)
+    /// partial at (us[a], vs[b]). Tensor-product surfaces override this to compute each
+    /// basis once per row and column.
+    fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
+        let w = (du + 1) * (dv + 1);
+        for (a, &u) in us.iter().enumerate() {
+            for (b, &v) in vs.iter().enumerate() {
+                let k = a * vs.len() + b;
+                self.eval_partials(u, v, du, dv, &mut out[k * w..(k + 1) * w]);
+            }
+        }
+    }
+
+    /// The point S(u, v).
+    fn point(&self, u: f64, v: f64) -> Point<D> {
+        let mut out = [Point::<D>::zeros()];
+        self.eval_partials(u, v, 0, 0, &mut out);
+        out[0]
+    }
+
+    /// The partial derivative ∂^{i+j}S/∂uⁱ∂vʲ.
+    fn partial(&self, u: f64, v: f64, i: usize, j: usize) -> Point<D> {
+        let mut out: SmallVec<[Point<D>; 9]> = smallvec![Point::<D>::zeros(); (i + 1) * (j + 1)];
+        self.eval_partials(u, v, i, j, &mut out);
+        out[i * (j + 1) + j]
+    }
+
+    /// The unit normal (S_u × S_v)/|S_u × S_v| of a surface in ℝ³; `None` in other
+    /// dimensions or where the surface is not regular.
+    fn normal(&self, u: f64, v: f64) -> Option<Point<D>> {
+        let mut out = [Point::<D>::zeros(); 4];
+        self.eval_partials(u, v, 1, 1, &mut out);
+        unit_normal(&out[2], &out[1])
+    }
+
+    /// The fundamental forms (ℝ³, regular points only).
+    fn fundamental_forms(&self, u: f64, v: f64) -> Option<FundamentalForms> {
+        let mut o = [Point::<D>::zeros(); 9];
+        self.eval_partials(u, v, 2, 2, &mut o);
+        // o[i*3 + j]: (0,1) = S_v, (1,0) = S_u, (2,0) = S_uu, (1,1) = S_uv, (0,2) = S_vv.
+        let (su, sv, suu, suv, svv) = (o[3], o[1], o[6], o[4], o[2]);
+        let n = unit_normal(&su, &sv)?;
+        Some(FundamentalForms {
+            e: su.dot(&su),
+            f: su.dot(&sv),
+            g: sv.dot(&sv),
+            l: n.dot(&suu),
+            m: n.dot(&suv),
+            n: n.dot(&svv),
+        })
+    }
+
+    /// Gaussian, mean and principal curvatures (ℝ³, regular points only).
+    fn curvatures(&self, u: f64, v: f64) -> Option<Curvatures> {
+        let ff = self.fundamental_forms(u, v)?;
+        let det = ff.e * ff.g - ff.f * ff.f;
+        let gaussian = (ff.l * ff.n - ff.m * ff.m) / det;
+        let mean = (ff.e * ff.n - 2.0 * ff.f * ff.m + ff.g * ff.l) / (2.0 * det);
+        let root = (mean * mean - gaussian).max(0.0).sqrt();
+        Some(Curvatures { gaussian, mean, principal: (mean + root, mean - root) })
+    }
+
+    /// The parameters and point of the surface nearest to `query`
+    /// (see [`crate::surface::closest_point`]).
+    fn closest_point(&self, query: &Point<D>) -> (f64, f64, Point<D>) {
+        crate::surface::closest_point::closest_point(self, query)
+    }
+}
+
+/// (a × b)/|a × b| for D = 3; `None` otherwise or when a × b = 0.
+pub fn unit_normal<const D: usize>(a: &Point<D>, b: &Point<D>) -> Option<Point<D>> {
+    if D != 3 {
+        return None;
+    }
+    let mut n = Point::<D>::zeros();
+    n[0] = a[1] * b[2] - a[2] * b[1];
+    n[1] = a[2] * b[0] - a[0] * b[2];
+    n[2] = a[0] * b[1] - a[1] * b[0];
+    let len = n.norm();
+    (len > 0.0 && len.is_finite()).then(|| n / len)
+}
+
+impl<const D: usize, S: Surface<D> + ?Sized> Surface<D> for Box<S> {
+    fn domain_u(&self) -> Interval {
+        (**self).domain_u()
+    }
+    fn domain_v(&self) -> Interval {
+        (**self).domain_v()
+    }
+    fn is_closed_u(&self) -> bool {
+        (**self).is_closed_u()
+    }
+    fn is_closed_v(&self) -> bool {
+        (**self).is_closed_v()
+    }
+    fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
+        (**self).eval_partials(u, v, du, dv, out)
+    }
+    fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
+        (**self).eval_grid(us, vs, du, dv, out)
+    }
+}

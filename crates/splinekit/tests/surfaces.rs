@@ -1,0 +1,323 @@
+//! Surfaces: tensor products against an independent row-by-row de Boor, partials against
+//! finite differences, grids, closed forms, seams.
+
+mod common;
+use common::*;
+use proptest::prelude::*;
+use splinekit::Point;
+use splinekit::curve::Curve;
+use splinekit::surface::model::*;
+use splinekit::surface::*;
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+
+fn net(nu: usize, nv: usize) -> Vec<Vec<Point<3>>> {
+    (0..nu)
+        .map(|i| {
+            (0..nv)
+                .map(|j| p3(i as f64, j as f64, ((i * 7 + j * 3) % 5) as f64 * 0.3 - (i as f64 * 0.4).sin()))
+                .collect()
+        })
+        .collect()
+}
+
+fn sample_surface() -> BSplineSurface<3> {
+    let ku = vec![0.0, 0.0, 0.0, 0.0, 0.3, 0.5, 0.5, 1.0, 1.0, 1.0, 1.0];
+    let kv = vec![0.0, 0.0, 0.0, 1.0, 2.5, 3.0, 3.0, 3.0];
+    BSplineSurface::new((3, 2), ku, kv, net(7, 5), (false, false)).unwrap()
+}
+
+/// ∂^{i+j} by central differences of the (i−1, j) or (i, j−1) partial.
+fn fd<S: Surface<3> + ?Sized>(s: &S, u: f64, v: f64, i: usize, j: usize, h: f64) -> Point<3> {
+    if i > 0 {
+        let f = |x: f64| s.partial(x, v, i - 1, j);
+        (f(u - 2.0 * h) - f(u + 2.0 * h) + (f(u + h) - f(u - h)) * 8.0) / (12.0 * h)
+    } else {
+        let f = |y: f64| s.partial(u, y, i, j - 1);
+        (f(v - 2.0 * h) - f(v + 2.0 * h) + (f(v + h) - f(v - h)) * 8.0) / (12.0 * h)
+    }
+}
+
+fn check_partials<S: Surface<3> + ?Sized>(s: &S, name: &str) {
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    let h = 1e-5 * du.length().min(dv.length()).max(1e-3);
+    for a in 1..5 {
+        for b in 1..5 {
+            let (u, v) = (du.lerp(a as f64 / 5.0 + 0.017), dv.lerp(b as f64 / 5.0 + 0.013));
+            let mut out = [Point::<3>::zeros(); 9];
+            s.eval_partials(u, v, 2, 2, &mut out);
+            for i in 0..=2 {
+                for j in 0..=2 {
+                    if i + j == 0 {
+                        continue;
+                    }
+                    let f = fd(s, u, v, i, j, h);
+                    let scale = out[i * 3 + j].norm().max(1.0);
+                    assert!(
+                        (out[i * 3 + j] - f).norm() < 1e-5 * scale,
+                        "{name}: ∂({i},{j}) at ({u}, {v}): {} vs {}",
+                        out[i * 3 + j],
+                        f
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn bspline_surface_matches_row_by_row_de_boor() {
+    let s = sample_surface();
+    let (ku, kv) = s.knots();
+    for a in 0..=20 {
+        for b in 0..=20 {
+            let (u, v) = (a as f64 / 20.0, 3.0 * b as f64 / 20.0);
+            let rows: Vec<Point<3>> = s.control_points().iter().map(|r| de_boor(2, kv, r, v)).collect();
+            let expected = de_boor(3, ku, &rows, u);
+            assert!((s.point(u, v) - expected).norm() < 1e-13, "({u}, {v})");
+        }
+    }
+    check_partials(&s, "bspline surface");
+}
+
+#[test]
+fn grid_evaluation_equals_pointwise() {
+    let s = sample_surface();
+    let us: Vec<f64> = (0..17).map(|i| i as f64 / 16.0).collect();
+    let vs: Vec<f64> = (0..13).map(|j| 3.0 * ((j * 5) % 13) as f64 / 12.0).collect();
+    let mut grid = vec![Point::<3>::zeros(); us.len() * vs.len() * 6];
+    s.eval_grid(&us, &vs, 1, 2, &mut grid);
+    for (a, &u) in us.iter().enumerate() {
+        for (b, &v) in vs.iter().enumerate() {
+            let mut single = [Point::<3>::zeros(); 6];
+            s.eval_partials(u, v, 1, 2, &mut single);
+            for k in 0..6 {
+                let g = grid[(a * vs.len() + b) * 6 + k];
+                assert!((g - single[k]).norm() < 1e-12 * single[k].norm().max(1.0), "({u}, {v}) partial {k}");
+            }
+        }
+    }
+}
+
+#[test]
+fn periodic_directions_close_smoothly() {
+    let n = 6;
+    let ring: Vec<Vec<Point<3>>> = (0..n)
+        .map(|i| {
+            let a = TAU * i as f64 / n as f64;
+            (0..4)
+                .map(|j| {
+                    p3(
+                        (2.0 + 0.3 * j as f64) * a.cos(),
+                        (2.0 + 0.3 * j as f64) * a.sin(),
+                        j as f64 + 0.2 * (i % 2) as f64,
+                    )
+                })
+                .collect()
+        })
+        .collect();
+    let ku: Vec<f64> = (0..n + 4).map(|i| i as f64).collect();
+    let kv = vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0];
+    let s = BSplineSurface::new((3, 2), ku, kv, ring, (true, false)).unwrap();
+    assert!(s.is_closed_u() && !s.is_closed_v());
+    let d = s.domain_u();
+    for b in 0..=10 {
+        let v = 0.2 * b as f64;
+        let mut a = [Point::<3>::zeros(); 9];
+        let mut c = [Point::<3>::zeros(); 9];
+        s.eval_partials(d.start, v, 2, 2, &mut a);
+        s.eval_partials(d.end - 1e-13, v, 2, 2, &mut c);
+        for k in 0..9 {
+            assert!((a[k] - c[k]).norm() < 1e-9 * a[k].norm().max(1.0), "partial {k} at the seam, v = {v}");
+        }
+    }
+    check_partials(&s, "periodic bspline surface");
+}
+
+#[test]
+fn bezier_surface_is_the_clamped_bspline_surface() {
+    let n = net(4, 3);
+    let b = BezierSurface::new(n.clone()).unwrap();
+    let s = BSplineSurface::clamped_uniform((3, 2), n).unwrap();
+    for a in 0..=10 {
+        for c in 0..=10 {
+            let (u, v) = (a as f64 / 10.0, c as f64 / 10.0);
+            let mut x = [Point::<3>::zeros(); 9];
+            let mut y = [Point::<3>::zeros(); 9];
+            b.eval_partials(u, v, 2, 2, &mut x);
+            s.eval_partials(u, v, 2, 2, &mut y);
+            for k in 0..9 {
+                assert!((x[k] - y[k]).norm() < 1e-12 * y[k].norm().max(1.0));
+            }
+        }
+    }
+    check_partials(&b, "bezier surface");
+}
+
+#[test]
+fn nurbs_sphere_cylinder_torus_are_exact() {
+    let s = NurbsSurface::sphere(2.5).unwrap();
+    let t = NurbsSurface::torus(3.0, 1.0).unwrap();
+    let c = NurbsSurface::cylinder(1.5, 2.0).unwrap();
+    for a in 0..=40 {
+        for b in 0..=40 {
+            let (u, v) = (a as f64 / 40.0, b as f64 / 40.0);
+            assert!((s.point(u, v).norm() - 2.5).abs() < 1e-14 * 2.5 * 4.0);
+            let p = t.point(u, v);
+            let ring = p3(p[0], p[1], 0.0).normalize() * 3.0;
+            assert!(((p - ring).norm() - 1.0).abs() < 1e-14 * 8.0);
+            let q = c.point(u, v);
+            assert!((q[0].hypot(q[1]) - 1.5).abs() < 1e-14 * 4.0);
+        }
+    }
+    // Gaussian curvature of the sphere: 1/r² everywhere (away from the poles).
+    for (u, v) in [(0.1, 0.3), (0.6, 0.5), (0.9, 0.8)] {
+        let k = s.curvatures(u, v).unwrap();
+        assert!((k.gaussian - 1.0 / 6.25).abs() < 1e-9, "K = {}", k.gaussian);
+        assert!((k.mean.abs() - 0.4).abs() < 1e-9);
+    }
+    check_partials(&s, "nurbs sphere");
+}
+
+#[test]
+fn model_surfaces_have_correct_partials_curvature_and_seams() {
+    let surfaces: Vec<(&str, Box<dyn Surface<3>>)> = vec![
+        ("plane", Box::new(Plane::new(p3(1.0, 2.0, 3.0), p3(1.0, 0.0, 0.5), p3(0.0, 2.0, 0.0)).unwrap())),
+        ("cylinder", Box::new(Cylinder::new(1.0, 2.0).unwrap())),
+        ("cone", Box::new(Cone::new(1.0, 2.0).unwrap())),
+        ("sphere", Box::new(Sphere::new(2.0).unwrap())),
+        ("torus", Box::new(Torus::new(3.0, 1.0).unwrap())),
+        ("mobius", Box::new(MobiusStrip::new(1.0, 0.4).unwrap())),
+        ("klein", Box::new(KleinBottle::new(3.0).unwrap())),
+        ("enneper", Box::new(Enneper::new(1.5).unwrap())),
+        ("helicoid", Box::new(Helicoid::new(1.0, 1.0, 2.0).unwrap())),
+        ("seashell", Box::new(Seashell::new(1.0, 2.0, 0.1, 2.0).unwrap())),
+        ("apple", Box::new(Apple::new(1.0).unwrap())),
+        ("heart", Box::new(HeartSurface::new(1.0).unwrap())),
+    ];
+    for (name, s) in &surfaces {
+        check_partials(s.as_ref(), name);
+        let (du, dv) = (s.domain_u(), s.domain_v());
+        for k in 0..=8 {
+            let t = k as f64 / 8.0;
+            if s.is_closed_u() {
+                let (a, b) = (s.point(du.start, dv.lerp(t)), s.point(du.end, dv.lerp(t)));
+                assert!((a - b).norm() < 1e-12 * a.norm().max(1.0), "{name}: u-seam");
+                let (a, b) = (s.partial(du.start, dv.lerp(t), 1, 0), s.partial(du.end - 1e-14, dv.lerp(t), 1, 0));
+                assert!((a - b).norm() < 1e-9 * a.norm().max(1.0), "{name}: u-seam tangent");
+            }
+            if s.is_closed_v() {
+                let (a, b) = (s.point(du.lerp(t), dv.start), s.point(du.lerp(t), dv.end));
+                assert!((a - b).norm() < 1e-12 * a.norm().max(1.0), "{name}: v-seam");
+            }
+        }
+    }
+    // Closed forms: torus K = cos v / (r (R + r cos v)), sphere H = −1/r with outward normals… sign aside.
+    let torus = Torus::new(3.0, 1.0).unwrap();
+    for v in [0.0, 0.7, PI / 2.0, 2.0, PI] {
+        let k = torus.curvatures(0.4, v).unwrap();
+        assert!((k.gaussian - v.cos() / (3.0 + v.cos())).abs() < 1e-12, "torus K at v = {v}");
+    }
+    let sphere = Sphere::new(2.0).unwrap();
+    let c = sphere.curvatures(1.0, 0.3).unwrap();
+    assert!((c.gaussian - 0.25).abs() < 1e-13 && (c.mean.abs() - 0.5).abs() < 1e-13);
+    assert!((c.principal.0 - c.principal.1).abs() < 1e-7);
+    // Enneper is minimal: H = 0.
+    let e = Enneper::new(1.5).unwrap();
+    assert!(e.curvatures(0.3, -0.7).unwrap().mean.abs() < 1e-12);
+    // Normals are unit and orthogonal to both partials.
+    let n = torus.normal(0.3, 1.1).unwrap();
+    assert!((n.norm() - 1.0).abs() < 1e-15);
+    assert!(n.dot(&torus.partial(0.3, 1.1, 1, 0)).abs() < 1e-13 && n.dot(&torus.partial(0.3, 1.1, 0, 1)).abs() < 1e-13);
+    // At the poles of the sphere the normal is undefined.
+    assert!(sphere.normal(0.3, FRAC_PI_2).is_none() || sphere.normal(0.3, FRAC_PI_2).unwrap().norm() > 0.99);
+}
+
+#[test]
+fn isocurves_and_closest_points() {
+    let s = sample_surface();
+    let iso = s.iso_curve_u(0.37).unwrap();
+    let generic = IsoCurve::new(&s, Direction::U, 0.37);
+    for k in 0..=30 {
+        let v = 3.0 * k as f64 / 30.0;
+        assert!((iso.point(v) - s.point(0.37, v)).norm() < 1e-13);
+        assert!((generic.derivative(v, 1) - s.partial(0.37, v, 0, 1)).norm() < 1e-12);
+    }
+    let torus = Torus::new(3.0, 1.0).unwrap();
+    // A point off the tube: the nearest point is along the tube's radius, across the seam.
+    let q = p3(4.5 * (-0.2f64).cos(), 4.5 * (-0.2f64).sin(), 0.3);
+    let (u, v, p) = torus.closest_point(&q);
+    let centre = p3(3.0 * (-0.2f64).cos(), 3.0 * (-0.2f64).sin(), 0.0);
+    let expected = centre + (q - centre).normalize();
+    assert!((p - expected).norm() < 1e-10, "{p} vs {expected} at ({u}, {v})");
+    assert!((u - (TAU - 0.2)).abs() < 1e-9);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+    #[test]
+    fn affine_invariance_of_bspline_surfaces(
+        a in prop::array::uniform9(-2.0f64..2.0),
+        b in prop::array::uniform3(-5.0f64..5.0),
+        u in 0.0f64..1.0,
+        v in 0.0f64..3.0,
+    ) {
+        let s = sample_surface();
+        let m = nalgebra::Matrix3::from_row_slice(&a);
+        let t = Point::<3>::from(b);
+        let mapped = s.map_points(|p| m * p + t);
+        let lhs = mapped.point(u, v);
+        let rhs = m * s.point(u, v) + t;
+        prop_assert!((lhs - rhs).norm() < 1e-12 * (1.0 + rhs.norm()));
+    }
+}
+
+#[test]
+fn model_surfaces_match_their_formulas_written_directly() {
+    let klein = KleinBottle::new(3.0).unwrap();
+    let mobius = MobiusStrip::new(1.0, 0.4).unwrap();
+    let apple = Apple::new(1.0).unwrap();
+    let shell = Seashell::new(1.0, 2.0, 0.1, 2.0).unwrap();
+    let heart = HeartSurface::new(1.0).unwrap();
+    let cone = Cone::new(1.5, 2.0).unwrap();
+    let helicoid = Helicoid::new(1.0, 1.0, 2.0).unwrap();
+    let enneper = Enneper::new(1.5).unwrap();
+    for a in 0..=12 {
+        for b in 0..=12 {
+            let (s, t) = (a as f64 / 12.0, b as f64 / 12.0);
+            let (u, v) = (TAU * s, TAU * t);
+            let r = 3.0 + (u / 2.0).cos() * v.sin() - (u / 2.0).sin() * (2.0 * v).sin();
+            let k = p3(r * u.cos(), r * u.sin(), (u / 2.0).sin() * v.sin() + (u / 2.0).cos() * (2.0 * v).sin());
+            assert!((klein.point(u, v) - k).norm() < 1e-13);
+            let w = -0.4 + 0.8 * t;
+            let m =
+                p3((1.0 + w * (u / 2.0).cos()) * u.cos(), (1.0 + w * (u / 2.0).cos()) * u.sin(), w * (u / 2.0).sin());
+            assert!((mobius.point(u, w) - m).norm() < 1e-14);
+            let va = -PI + TAU * t;
+            let ap = p3(
+                u.cos() * (4.0 + 3.8 * va.cos()),
+                u.sin() * (4.0 + 3.8 * va.cos()),
+                (va.cos() + va.sin() - 1.0) * (1.0 + va.sin()) * (1.0 - PI * va / 10.0).ln() + 7.5 * va.sin(),
+            );
+            assert!((apple.point(u, va) - ap).norm() < 1e-12, "apple at ({u}, {va})");
+            let sv = 1.0 - v / TAU;
+            let ring = sv * (1.0 + u.cos()) + 0.1;
+            let sh = p3(ring * (2.0 * v).cos(), ring * (2.0 * v).sin(), 2.0 * v / TAU + sv * u.sin());
+            assert!((shell.point(u, v) - sh).norm() < 1e-13);
+            let hu = PI * s;
+            let hx = 16.0 * hu.sin().powi(3);
+            let hy = 13.0 * hu.cos() - 5.0 * (2.0 * hu).cos() - 2.0 * (3.0 * hu).cos() - (4.0 * hu).cos();
+            assert!((heart.point(hu, v) - p3(hx * v.cos(), hx * v.sin(), hy)).norm() < 1e-12);
+            assert!(
+                (cone.point(u, t) - p3(1.5 * (1.0 - t) * u.cos(), 1.5 * (1.0 - t) * u.sin(), 2.0 * t)).norm() < 1e-14
+            );
+            let hv = -1.0 + 2.0 * t;
+            assert!(
+                (helicoid.point(2.0 * u, hv) - p3(hv * (2.0 * u).cos(), hv * (2.0 * u).sin(), 2.0 * u / TAU)).norm()
+                    < 1e-14
+            );
+            let (x, y) = (-1.5 + 3.0 * s, -1.5 + 3.0 * t);
+            let en = p3(x - x * x * x / 3.0 + x * y * y, y - y * y * y / 3.0 + y * x * x, x * x - y * y);
+            assert!((enneper.point(x, y) - en).norm() < 1e-13);
+        }
+    }
+}
