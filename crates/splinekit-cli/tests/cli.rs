@@ -202,7 +202,7 @@ fn bad_input_gives_exit_2_and_one_line_naming_the_field() {
             r#"{"type":"bspline","degree":3,"knots":[0,0,0,0,1,2,3,4,5,5,5],"control_points":[[0,0],[1,0],[2,0],[3,0],[4,0],[5,0],[6,0],[7,0]]}"#,
             "knots: expected 12 values for 8 control points of degree 3, got 11",
         ),
-        (r#"{"type":"nope"}"#, "type: unknown curve type"),
+        (r#"{"type":"nope"}"#, "type: unknown shape type \"nope\""),
         ("{", "invalid JSON"),
         ("", "invalid JSON"),
         (r#"{"control_points":[[0,0]]}"#, "type: missing"),
@@ -286,11 +286,17 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         if doc.trim_start().starts_with("{\"params\"") {
             continue;
         }
-        let v = ok_json(&["eval", "-", "--samples", "5", "--derivatives", "1"], doc);
+        let surface = doc.contains("surface\"") || doc.contains("\"torus\"");
+        let args: &[&str] = if surface {
+            &["eval", "-", "--grid", "5,1", "--derivatives", "1"]
+        } else {
+            &["eval", "-", "--samples", "5", "--derivatives", "1"]
+        };
+        let v = ok_json(args, doc);
         assert_eq!(v["points"].as_array().unwrap().len(), 5, "{doc}");
         count += 1;
     }
-    assert!(count >= 8, "only {count} examples found");
+    assert!(count >= 12, "only {count} examples found");
 }
 
 fn temp_dir(name: &str) -> std::path::PathBuf {
@@ -338,4 +344,82 @@ fn gallery_writes_every_figure_and_an_index() {
         assert!(svg.contains("<path d=\"M"), "{f} draws nothing");
     }
     std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn eval_surfaces_prints_partials_and_unit_normals() {
+    let v = ok_json(&["eval", "-", "--at", "0.3:0.2,1:-0.5", "--derivatives", "2"], r#"{"type":"sphere","radius":2}"#);
+    let keys: Vec<&String> = v["partials"].as_object().unwrap().keys().collect();
+    assert_eq!(keys, ["u", "v", "uu", "uv", "vv"]);
+    for (i, (u, w)) in [(0.3f64, 0.2f64), (1.0, -0.5)].iter().enumerate() {
+        let p = floats(&v["points"][i]);
+        let expected = [2.0 * u.cos() * w.cos(), 2.0 * u.sin() * w.cos(), 2.0 * w.sin()];
+        for c in 0..3 {
+            assert!((p[c] - expected[c]).abs() < 1e-15);
+        }
+        let n = floats(&v["normals"][i]);
+        assert!((n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1.0).abs() < 1e-15);
+        // Outward normal of the sphere is the position direction.
+        assert!((n[0] - expected[0] / 2.0).abs() < 1e-15);
+        let suv = floats(&v["partials"]["uv"][i]);
+        assert!((suv[0] - 2.0 * u.sin() * w.sin()).abs() < 1e-15);
+    }
+    // Poles have a limit normal.
+    let v = ok_json(&["eval", "-", "--at", "0:1.5707963267948966"], r#"{"type":"sphere"}"#);
+    assert!((floats(&v["normals"][0])[2] - 1.0).abs() < 1e-12);
+    // Grids run u slowest and include both ends.
+    let v = ok_json(
+        &["eval", "-", "--grid", "3,2"],
+        r#"{"type":"plane","origin":[1,0,0],"u_axis":[2,0,0],"v_axis":[0,3,0]}"#,
+    );
+    assert_eq!(v["params"], json!([[0.0, 0.0], [0.0, 1.0], [0.5, 0.0], [0.5, 1.0], [1.0, 0.0], [1.0, 1.0]]));
+    assert_eq!(v["points"][3], json!([2.0, 3.0, 0.0]));
+    let net = json!({"type":"bspline_surface","degree_u":2,"degree_v":1,"knots_u":[0,0,0,1,1,1],"knots_v":[0,0,1,1],
+        "control_points":[[[0,0,0],[0,1,0]],[[1,0,1],[1,1,1]],[[2,0,0],[2,1,0]]]});
+    let v = ok_json(&["eval", "-", "--at", "0.5:0.5", "--derivatives", "1"], &net.to_string());
+    assert_eq!(v["points"][0], json!([1.0, 0.5, 0.5]));
+    assert_eq!(v["partials"]["u"][0], json!([2.0, 0.0, 0.0]));
+    let v2 = ok_json(
+        &["eval", "-", "--at", "0.5:0.5"],
+        r#"{"type":"bezier_surface","control_points":[[[0,0],[0,1]],[[1,0],[1,1]]]}"#,
+    );
+    assert_eq!(v2["points"][0], json!([0.5, 0.5]));
+    assert!(v2.get("normals").is_none(), "2-D surfaces have no normals");
+}
+
+#[test]
+fn bad_surface_input_names_the_field() {
+    let at = ["eval", "-", "--at", "0.5:0.5"];
+    assert_bad(
+        &at,
+        r#"{"type":"bspline_surface","degree_u":1,"degree_v":1,"knots_u":[0,0,1,1],"knots_v":[0,0,1],"control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]]}"#,
+        "knots_v: expected 4 values",
+    );
+    assert_bad(&at, r#"{"type":"bezier_surface","control_points":[[[0,0,0],[0,1,0]],[[1,0,0]]]}"#, "control_points[1]");
+    assert_bad(
+        &at,
+        r#"{"type":"bezier_surface","control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1]]]}"#,
+        "control_points[1]",
+    );
+    assert_bad(&at, r#"{"type":"bezier_surface","control_points":[]}"#, "control_points");
+    assert_bad(
+        &at,
+        r#"{"type":"nurbs_surface","degree_u":1,"degree_v":1,"knots_u":[0,0,1,1],"knots_v":[0,0,1,1],"control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"weights":[[1,1],[1,0]]}"#,
+        "weights[1]",
+    );
+    assert_bad(
+        &at,
+        r#"{"type":"nurbs_surface","degree_u":1,"degree_v":1,"knots_u":[0,0,1,1],"knots_v":[0,0,1,1],"control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"weights":[[1,1]]}"#,
+        "weights",
+    );
+    assert_bad(&at, r#"{"type":"torus","minor_radius":-1}"#, "minor_radius");
+    assert_bad(&at, r#"{"type":"sphere","colour":"red"}"#, "unknown field `colour`");
+    assert_bad(&["eval", "-", "--at", "0.5"], r#"{"type":"sphere"}"#, "U:V");
+    assert_bad(&["eval", "-", "--at", "0:9"], r#"{"type":"sphere"}"#, "outside the domain");
+    assert_bad(&["eval", "-", "--grid", "100000,100000"], r#"{"type":"sphere"}"#, "--grid");
+    assert_bad(&["eval", "-", "--grid", "0,3"], r#"{"type":"sphere"}"#, "--grid");
+    assert_bad(&["eval", "-", "--samples", "3"], r#"{"type":"sphere"}"#, "--samples");
+    assert_bad(&["eval", "-", "--grid", "3,3"], r#"{"type":"circle"}"#, "--grid");
+    assert_bad(&["eval", "-", "--at", "0.5:0.5"], r#"{"type":"circle"}"#, "--at");
+    assert_bad(&["refine", "-", "--elevate", "1"], r#"{"type":"sphere"}"#, "refine");
 }

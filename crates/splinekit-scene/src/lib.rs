@@ -11,18 +11,22 @@ pub mod curves;
 pub mod error;
 pub mod points;
 pub mod refine;
+pub mod surfaces;
 
 pub use build::{AnyCurve, CurveVisitor};
 pub use curves::CurveDocument;
 pub use error::{DocumentError, Result};
+pub use surfaces::{AnySurface, SurfaceDocument, SurfaceVisitor};
 
 use serde_json::Value;
 
-/// Any shape document. Surfaces and blending splines join as they are implemented.
+/// Any shape document. Blending splines join as they are implemented.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ShapeDocument {
     /// A curve.
     Curve(CurveDocument),
+    /// A surface.
+    Surface(SurfaceDocument),
 }
 
 impl ShapeDocument {
@@ -35,6 +39,20 @@ impl ShapeDocument {
 
     /// Parses a shape document.
     pub fn parse(value: &Value) -> Result<Self> {
-        Ok(ShapeDocument::Curve(CurveDocument::parse(value)?))
+        let (ty, rest) = curves::split_type(value)?;
+        if let Some(c) = CurveDocument::parse_typed(&ty, rest.clone())? {
+            return Ok(ShapeDocument::Curve(c));
+        }
+        if let Some(s) = SurfaceDocument::parse_typed(&ty, rest)? {
+            return Ok(ShapeDocument::Surface(s));
+        }
+        Err(DocumentError::new(
+            "type",
+            format!(
+                "unknown shape type \"{ty}\" (curves: {}; surfaces: {})",
+                curves::CURVE_TYPES.join(", "),
+                surfaces::SURFACE_TYPES.join(", ")
+            ),
+        ))
     }
 }

@@ -16,17 +16,24 @@ pub const MAX_SAMPLES: usize = 10_000_000;
 pub const MAX_DERIVATIVES: usize = 64;
 
 #[derive(Args, Debug)]
+#[command(group(clap::ArgGroup::new("where").required(true).args(["at", "samples", "grid"])))]
 pub struct EvalArgs {
     /// Shape document (JSON file, or - for standard input).
     pub shape: String,
-    /// Parameters to evaluate at, comma-separated (e.g. 0,0.25,0.5). Open curves refuse
-    /// parameters outside their domain; closed curves wrap them around.
-    #[arg(long, allow_hyphen_values = true, conflicts_with = "samples", required_unless_present = "samples")]
+    /// Parameters to evaluate at, comma-separated: T,T,... for curves (e.g. 0,0.25,0.5),
+    /// U:V,U:V,... for surfaces. Open directions refuse parameters outside the domain;
+    /// closed ones wrap them around.
+    #[arg(long, allow_hyphen_values = true)]
     pub at: Option<String>,
-    /// Number of parameters spread evenly over the whole domain, ends included.
+    /// Curves: number of parameters spread evenly over the whole domain, ends included.
     #[arg(long, allow_hyphen_values = true)]
     pub samples: Option<String>,
-    /// Also print derivatives of orders 1 … K with respect to the curve's parameter.
+    /// Surfaces: NU,NV parameters spread evenly over each direction, ends included;
+    /// the output lists (u, v) with u varying slowest.
+    #[arg(long)]
+    pub grid: Option<String>,
+    /// Also print derivatives of orders 1 … K with respect to the curve's parameter
+    /// (surfaces: all partials of total order 1 … K).
     #[arg(long, default_value = "0", allow_hyphen_values = true)]
     pub derivatives: String,
     /// Write the JSON here instead of standard output.
@@ -34,7 +41,7 @@ pub struct EvalArgs {
     pub output: Option<String>,
 }
 
-fn parse_count(name: &str, text: &str, max: usize) -> Result<usize> {
+pub(crate) fn parse_count(name: &str, text: &str, max: usize) -> Result<usize> {
     let v: i128 = text.trim().parse().map_err(|_| anyhow!("{name}: '{text}' is not a whole number"))?;
     if v < 0 {
         bail!("{name}: must not be negative, got {v}");
@@ -117,20 +124,79 @@ impl CurveVisitor for EvalCurve<'_> {
 
 pub fn run(args: &EvalArgs) -> Result<()> {
     let order = parse_count("--derivatives", &args.derivatives, MAX_DERIVATIVES)?;
-    let at = args.at.as_deref().map(|s| parse_numbers("--at", s)).transpose()?;
-    if at.as_ref().is_some_and(|a| a.len() > MAX_SAMPLES) {
-        bail!("--at: more than {MAX_SAMPLES} parameters");
-    }
-    let samples = match &args.samples {
-        Some(s) => parse_count("--samples", s, MAX_SAMPLES)?,
-        None => 0,
-    };
     let doc = read_shape(&args.shape)?;
     let value = match doc {
         ShapeDocument::Curve(c) => {
+            if args.grid.is_some() {
+                bail!("--grid: curves take --at T,... or --samples N");
+            }
+            let at = args.at.as_deref().map(parse_curve_params).transpose()?;
+            if at.as_ref().is_some_and(|a| a.len() > MAX_SAMPLES) {
+                bail!("--at: more than {MAX_SAMPLES} parameters");
+            }
+            let samples = match &args.samples {
+                Some(s) => parse_count("--samples", s, MAX_SAMPLES)?,
+                None => 0,
+            };
             let curve = c.build().map_err(|e| anyhow!("{e}"))?;
             curve.visit(EvalCurve { at: at.as_deref(), samples, order })?
         }
+        ShapeDocument::Surface(s) => {
+            if args.samples.is_some() {
+                bail!("--samples: surfaces take --at U:V,... or --grid NU,NV");
+            }
+            if order > MAX_SURFACE_DERIVATIVES {
+                bail!("--derivatives: {order} is more than the limit of {MAX_SURFACE_DERIVATIVES} for surfaces");
+            }
+            let at = args.at.as_deref().map(parse_surface_params).transpose()?;
+            let grid = args.grid.as_deref().map(parse_grid).transpose()?;
+            let surface = s.build().map_err(|e| anyhow!("{e}"))?;
+            surface.visit(super::eval_surface::EvalSurface { at: at.as_deref(), grid, order })?
+        }
     };
     write_json(&value, args.output.as_deref())
+}
+
+/// Highest total order of surface partials one call may ask for.
+pub const MAX_SURFACE_DERIVATIVES: usize = 16;
+
+fn parse_curve_params(text: &str) -> Result<Vec<f64>> {
+    if text.contains(':') {
+        bail!("--at: curves take single parameters T,T,..., not U:V pairs");
+    }
+    parse_numbers("--at", text)
+}
+
+fn parse_surface_params(text: &str) -> Result<Vec<(f64, f64)>> {
+    let pairs: Result<Vec<(f64, f64)>> = text
+        .split(',')
+        .map(|pair| {
+            let Some((u, v)) = pair.split_once(':') else {
+                bail!("--at: surfaces take U:V pairs, got '{}'", pair.trim());
+            };
+            let u = parse_numbers("--at", u)?;
+            let v = parse_numbers("--at", v)?;
+            Ok((u[0], v[0]))
+        })
+        .collect();
+    let pairs = pairs?;
+    if pairs.len() > MAX_SAMPLES {
+        bail!("--at: more than {MAX_SAMPLES} parameters");
+    }
+    Ok(pairs)
+}
+
+fn parse_grid(text: &str) -> Result<(usize, usize)> {
+    let Some((a, b)) = text.split_once(',') else {
+        bail!("--grid: expected NU,NV, got '{text}'");
+    };
+    let nu = parse_count("--grid", a, MAX_SAMPLES)?;
+    let nv = parse_count("--grid", b, MAX_SAMPLES)?;
+    if nu == 0 || nv == 0 {
+        bail!("--grid: both counts must be at least 1, got {nu},{nv}");
+    }
+    if nu.saturating_mul(nv) > MAX_SAMPLES {
+        bail!("--grid: {nu} × {nv} points is more than the limit of {MAX_SAMPLES}");
+    }
+    Ok((nu, nv))
 }

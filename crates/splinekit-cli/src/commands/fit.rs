@@ -151,7 +151,9 @@ fn run_fit_model(args: &FitArgs, doc: &Value) -> Result<()> {
     if args.samples < 2 || args.samples > 10_000_000 {
         bail!("--samples: must be between 2 and 10000000, got {}", args.samples);
     }
-    let ShapeDocument::Curve(model) = ShapeDocument::parse(doc).map_err(|e| anyhow!("{e}"))?;
+    let ShapeDocument::Curve(model) = ShapeDocument::parse(doc).map_err(|e| anyhow!("{e}"))? else {
+        bail!("POINTS: fit takes points or a model curve, not a surface document");
+    };
     let curve = model.build().map_err(|e| anyhow!("{e}"))?;
     let closed = args.closed;
     struct FitModel<'a>(&'a FitArgs, bool);

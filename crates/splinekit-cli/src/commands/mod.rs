@@ -1,6 +1,7 @@
 //! One module per subcommand.
 
 pub mod eval;
+pub mod eval_surface;
 pub mod fit;
 pub mod refine;
 pub mod subdivide;

@@ -43,7 +43,11 @@ pub fn run(args: &RefineArgs) -> Result<()> {
     } else {
         bail!("refine: give one of --insert, --elevate, --remove");
     };
-    let ShapeDocument::Curve(doc) = read_shape(&args.shape)?;
+    let ShapeDocument::Curve(doc) = read_shape(&args.shape)? else {
+        bail!(
+            "type: refine works on bezier, rational_bezier, bspline and nurbs curve documents; surface refinement is not on the command line yet"
+        );
+    };
     let out = refine(&doc, &r).map_err(|e| anyhow!("{e}"))?;
     if let Refinement::Remove { knots, .. } = &r {
         if out.removed < knots.len() {

@@ -75,7 +75,9 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
     if !matches!(ext.as_str(), "svg" | "obj") {
         bail!("-o: curves are written as .svg or .obj, not '{}'", args.output);
     }
-    let ShapeDocument::Curve(doc) = read_shape(&args.shape)?;
+    let ShapeDocument::Curve(doc) = read_shape(&args.shape)? else {
+        bail!("type: tessellate handles curves so far; triangle meshes of surfaces come with the mesh exports");
+    };
     let curve = doc.build().map_err(|e| anyhow!("{e}"))?;
     let text = curve.visit(Tessellate(args, &ext))?;
     write_text(&text, Some(&args.output))
