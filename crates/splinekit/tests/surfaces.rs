@@ -321,3 +321,36 @@ fn model_surfaces_match_their_formulas_written_directly() {
         }
     }
 }
+
+#[test]
+fn grid_points_and_normals_match_pointwise_evaluation() {
+    let s = sample_surface();
+    let t = NurbsSurface::torus(3.0, 1.0).unwrap();
+    let us: Vec<f64> = (0..9).map(|i| i as f64 / 8.0).collect();
+    let vs: Vec<f64> = (0..7).map(|j| j as f64 / 6.0).collect();
+    let vs3: Vec<f64> = vs.iter().map(|v| 3.0 * v).collect();
+    for (surface, vs) in [(&s as &dyn Surface<3>, &vs3), (&t as &dyn Surface<3>, &vs)] {
+        let mut pts = vec![Point::<3>::zeros(); us.len() * vs.len()];
+        let mut nrm = pts.clone();
+        surface.eval_grid_with_normals(&us, vs, &mut pts, &mut nrm);
+        for (a, &u) in us.iter().enumerate() {
+            for (b, &v) in vs.iter().enumerate() {
+                let k = a * vs.len() + b;
+                assert!((pts[k] - surface.point(u, v)).norm() < 1e-13);
+                match surface.normal(u, v) {
+                    Some(n) => assert!((nrm[k] - n).norm() < 1e-12, "normal at ({u}, {v})"),
+                    None => assert_eq!(nrm[k], Point::<3>::zeros()),
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn normals_of_tiny_and_huge_surfaces() {
+    for scale in [1e-170, 1e170] {
+        let p = Plane::new(p3(0.0, 0.0, 0.0), p3(scale, 0.0, 0.0), p3(0.0, scale, 0.0)).unwrap();
+        let n = p.normal(0.5, 0.5).expect("a normal exists at any scale");
+        assert!((n - p3(0.0, 0.0, 1.0)).norm() < 1e-15, "scale {scale}: {n}");
+    }
+}

@@ -4,8 +4,8 @@ use crate::Point;
 use crate::basis::SplineAxis;
 use crate::curve::{BSplineCurve, Interval};
 use crate::error::{Result, check_points_finite};
-use crate::surface::Surface;
 use crate::surface::tensor::{TensorSpline, net_shape};
+use crate::surface::{Surface, unit_normal};
 
 /// A tensor-product B-spline surface of degrees (p, q). The net's first index runs along
 /// u. Each direction may be clamped, unclamped or periodic (closed), with the knot rules
@@ -106,5 +106,11 @@ impl<const D: usize> Surface<D> for BSplineSurface<D> {
     }
     fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
         self.spline.eval_grid(us, vs, du, dv, out)
+    }
+    fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
+        self.spline.eval_grid_first(us, vs, |k, s, su, sv| {
+            points[k] = s;
+            normals[k] = unit_normal(&su, &sv).unwrap_or_else(Point::<D>::zeros);
+        });
     }
 }

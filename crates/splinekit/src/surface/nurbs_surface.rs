@@ -10,8 +10,8 @@ use crate::curve::Interval;
 use crate::curve::nurbs::check_weights;
 use crate::error::{Result, check_points_finite};
 use crate::ops::homogeneous::Homogeneous;
-use crate::surface::Surface;
 use crate::surface::tensor::{TensorSpline, net_shape};
+use crate::surface::{Surface, unit_normal};
 
 /// A tensor-product NURBS surface with positive weights beside the control points.
 #[derive(Debug, Clone, PartialEq)]
@@ -120,6 +120,17 @@ impl<const D: usize> Surface<D> for NurbsSurface<D> {
         let mut h: SmallVec<[Homogeneous<D>; 9]> = smallvec![Homogeneous::lift(&Point::<D>::zeros(), 0.0); n];
         self.spline.eval_partials(u, v, du, dv, &mut h);
         rational_partials(&h, du, dv, out);
+    }
+    fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
+        // S = A/w, S_u = (A_u − w_u S)/w, S_v = (A_v − w_v S)/w.
+        self.spline.eval_grid_first(us, vs, |k, h, hu, hv| {
+            let inv = 1.0 / h.weight;
+            let s = h.weighted * inv;
+            let su = (hu.weighted - s * hu.weight) * inv;
+            let sv = (hv.weighted - s * hv.weight) * inv;
+            points[k] = s;
+            normals[k] = unit_normal(&su, &sv).unwrap_or_else(Point::<D>::zeros);
+        });
     }
     fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
         let n = (du + 1) * (dv + 1);

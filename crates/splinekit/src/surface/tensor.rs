@@ -130,4 +130,92 @@ impl<T: Coefficient> TensorSpline<T> {
             }
         }
     }
+
+    /// Grid evaluation of S, ∂S/∂u and ∂S/∂v only: calls `f(k, s, s_u, s_v)` for grid
+    /// point k = a·vs.len() + b. Same scheme as [`TensorSpline::eval_grid`] with two
+    /// isocurve coefficient sets per row and three (p_v + 1)-term sums per point.
+    #[inline]
+    pub fn eval_grid_first(&self, us: &[f64], vs: &[f64], mut f: impl FnMut(usize, T, T, T)) {
+        let (pu, pv) = (self.u.degree(), self.v.degree());
+        let (wu, wv) = (pu + 1, pv + 1);
+        let nve = self.v.eval_count();
+        let mut v_spans = Vec::with_capacity(vs.len());
+        let mut v_basis = vec![0.0; vs.len() * 2 * wv];
+        let mut scratch = vec![0.0; 2 * (pu.max(pv) + 1)];
+        for (b, &v) in vs.iter().enumerate() {
+            let v = self.v.normalise(v);
+            let sv = self.v.span(v);
+            v_spans.push(sv - pv);
+            basis_derivatives(self.v.eval_knots(), pv, sv, v, 1, &mut scratch[..2 * wv]);
+            v_basis[b * 2 * wv..(b + 1) * 2 * wv].copy_from_slice(&scratch[..2 * wv]);
+        }
+        let mut iso0 = vec![T::zero(); nve];
+        let mut iso1 = vec![T::zero(); nve];
+        let mut nu_basis = vec![0.0; 2 * wu];
+        for (a, &u) in us.iter().enumerate() {
+            let u = self.u.normalise(u);
+            let su = self.u.span(u);
+            basis_derivatives(self.u.eval_knots(), pu, su, u, 1, &mut nu_basis);
+            iso0.iter_mut().for_each(|x| *x = T::zero());
+            iso1.iter_mut().for_each(|x| *x = T::zero());
+            for r in 0..wu {
+                let (n0, n1) = (nu_basis[r], nu_basis[wu + r]);
+                let row = &self.net[(su - pu + r) * nve..(su - pu + r + 1) * nve];
+                for ((x0, x1), y) in iso0.iter_mut().zip(iso1.iter_mut()).zip(row) {
+                    *x0 += *y * n0;
+                    *x1 += *y * n1;
+                }
+            }
+            let row = a * vs.len();
+            match wv {
+                2 => row_first::<2, T>(&iso0, &iso1, &v_spans, &v_basis, row, &mut f),
+                3 => row_first::<3, T>(&iso0, &iso1, &v_spans, &v_basis, row, &mut f),
+                4 => row_first::<4, T>(&iso0, &iso1, &v_spans, &v_basis, row, &mut f),
+                5 => row_first::<5, T>(&iso0, &iso1, &v_spans, &v_basis, row, &mut f),
+                6 => row_first::<6, T>(&iso0, &iso1, &v_spans, &v_basis, row, &mut f),
+                _ => {
+                    for (b, &base) in v_spans.iter().enumerate() {
+                        let nb = &v_basis[b * 2 * wv..(b + 1) * 2 * wv];
+                        let (c0, c1) = (&iso0[base..base + wv], &iso1[base..base + wv]);
+                        let (mut s, mut s_u, mut s_v) = (T::zero(), T::zero(), T::zero());
+                        for r in 0..wv {
+                            s += c0[r] * nb[r];
+                            s_v += c0[r] * nb[wv + r];
+                            s_u += c1[r] * nb[r];
+                        }
+                        f(row + b, s, s_u, s_v);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// One grid row of [`TensorSpline::eval_grid_first`] with the v-order W known at compile
+/// time, so the W-term sums unroll.
+#[inline(always)]
+fn row_first<const W: usize, T: Coefficient>(
+    iso0: &[T],
+    iso1: &[T],
+    v_spans: &[usize],
+    v_basis: &[f64],
+    row: usize,
+    f: &mut impl FnMut(usize, T, T, T),
+) {
+    for (b, &base) in v_spans.iter().enumerate() {
+        let nb: &[f64; 8] = &{
+            let mut a = [0.0; 8];
+            a[..2 * W].copy_from_slice(&v_basis[b * 2 * W..(b + 1) * 2 * W]);
+            a
+        };
+        let c0: &[T; W] = iso0[base..base + W].try_into().expect("W coefficients");
+        let c1: &[T; W] = iso1[base..base + W].try_into().expect("W coefficients");
+        let (mut s, mut s_u, mut s_v) = (T::zero(), T::zero(), T::zero());
+        for r in 0..W {
+            s += c0[r] * nb[r];
+            s_v += c0[r] * nb[W + r];
+            s_u += c1[r] * nb[r];
+        }
+        f(row + b, s, s_u, s_v);
+    }
 }

@@ -66,6 +66,18 @@ pub trait Surface<const D: usize> {
         }
     }
 
+    /// Points and unit normals on a grid (`points[a·vs.len() + b]` at (us[a], vs[b]));
+    /// normals are zero where the surface is not regular (and outside ℝ³). Tensor-product
+    /// surfaces compute only S, S_u and S_v here, which is what shading needs.
+    fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
+        let mut values = vec![Point::<D>::zeros(); us.len() * vs.len() * 4];
+        self.eval_grid(us, vs, 1, 1, &mut values);
+        for ((p, n), v) in points.iter_mut().zip(normals.iter_mut()).zip(values.chunks_exact(4)) {
+            *p = v[0];
+            *n = unit_normal(&v[2], &v[1]).unwrap_or_else(Point::<D>::zeros);
+        }
+    }
+
     /// The point S(u, v).
     fn point(&self, u: f64, v: f64) -> Point<D> {
         let mut out = [Point::<D>::zeros()];
@@ -131,8 +143,19 @@ pub fn unit_normal<const D: usize>(a: &Point<D>, b: &Point<D>) -> Option<Point<D
     n[0] = a[1] * b[2] - a[2] * b[1];
     n[1] = a[2] * b[0] - a[0] * b[2];
     n[2] = a[0] * b[1] - a[1] * b[0];
-    let len = n.norm();
-    (len > 0.0 && len.is_finite()).then(|| n / len)
+    // Test |n|² (not |n|) so the branch does not wait for the square root.
+    let len2 = n.norm_squared();
+    if len2 > f64::MIN_POSITIVE && len2.is_finite() {
+        return Some(n * (1.0 / len2.sqrt()));
+    }
+    // |n|² under- or overflowed: scale by the largest component first.
+    let big = n.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if big > 0.0 && big.is_finite() {
+        let m = n / big;
+        Some(m / m.norm())
+    } else {
+        None
+    }
 }
 
 impl<const D: usize, S: Surface<D> + ?Sized> Surface<D> for Box<S> {
@@ -153,5 +176,8 @@ impl<const D: usize, S: Surface<D> + ?Sized> Surface<D> for Box<S> {
     }
     fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
         (**self).eval_grid(us, vs, du, dv, out)
+    }
+    fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
+        (**self).eval_grid_with_normals(us, vs, points, normals)
     }
 }
