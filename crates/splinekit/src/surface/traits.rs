@@ -139,23 +139,27 @@ pub fn unit_normal<const D: usize>(a: &Point<D>, b: &Point<D>) -> Option<Point<D
     if D != 3 {
         return None;
     }
-    let mut n = Point::<D>::zeros();
-    n[0] = a[1] * b[2] - a[2] * b[1];
-    n[1] = a[2] * b[0] - a[0] * b[2];
-    n[2] = a[0] * b[1] - a[1] * b[0];
+    let cross = |a: &Point<D>, b: &Point<D>| {
+        let mut n = Point::<D>::zeros();
+        n[0] = a[1] * b[2] - a[2] * b[1];
+        n[1] = a[2] * b[0] - a[0] * b[2];
+        n[2] = a[0] * b[1] - a[1] * b[0];
+        n
+    };
+    let n = cross(a, b);
     // Test |n|² (not |n|) so the branch does not wait for the square root.
     let len2 = n.norm_squared();
     if len2 > f64::MIN_POSITIVE && len2.is_finite() {
         return Some(n * (1.0 / len2.sqrt()));
     }
-    // |n|² under- or overflowed: scale by the largest component first.
-    let big = n.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-    if big > 0.0 && big.is_finite() {
-        let m = n / big;
-        Some(m / m.norm())
-    } else {
-        None
-    }
+    // The product under- or overflowed: scale both partials to unit size first.
+    let scale = |v: &Point<D>| {
+        let m = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        (m > 0.0 && m.is_finite()).then(|| v / m)
+    };
+    let n = cross(&scale(a)?, &scale(b)?);
+    let len = n.norm();
+    (len > 0.0 && len.is_finite()).then(|| n / len)
 }
 
 impl<const D: usize, S: Surface<D> + ?Sized> Surface<D> for Box<S> {
