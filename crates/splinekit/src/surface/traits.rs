@@ -135,24 +135,33 @@ pub trait Surface<const D: usize> {
 }
 
 /// (a × b)/|a × b| for D = 3; `None` otherwise or when a × b = 0.
+#[inline(always)]
 pub fn unit_normal<const D: usize>(a: &Point<D>, b: &Point<D>) -> Option<Point<D>> {
     if D != 3 {
         return None;
     }
-    let cross = |a: &Point<D>, b: &Point<D>| {
-        let mut n = Point::<D>::zeros();
-        n[0] = a[1] * b[2] - a[2] * b[1];
-        n[1] = a[2] * b[0] - a[0] * b[2];
-        n[2] = a[0] * b[1] - a[1] * b[0];
-        n
-    };
     let n = cross(a, b);
     // Test |n|² (not |n|) so the branch does not wait for the square root.
     let len2 = n.norm_squared();
     if len2 > f64::MIN_POSITIVE && len2.is_finite() {
         return Some(n * (1.0 / len2.sqrt()));
     }
-    // The product under- or overflowed: scale both partials to unit size first.
+    unit_normal_rescaled(a, b)
+}
+
+#[inline(always)]
+fn cross<const D: usize>(a: &Point<D>, b: &Point<D>) -> Point<D> {
+    let mut n = Point::<D>::zeros();
+    n[0] = a[1] * b[2] - a[2] * b[1];
+    n[1] = a[2] * b[0] - a[0] * b[2];
+    n[2] = a[0] * b[1] - a[1] * b[0];
+    n
+}
+
+/// The rare case where a × b under- or overflows: scale both partials to unit size first.
+#[cold]
+#[inline(never)]
+fn unit_normal_rescaled<const D: usize>(a: &Point<D>, b: &Point<D>) -> Option<Point<D>> {
     let scale = |v: &Point<D>| {
         let m = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
         (m > 0.0 && m.is_finite()).then(|| v / m)
