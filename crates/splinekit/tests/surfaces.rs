@@ -354,3 +354,77 @@ fn normals_of_tiny_and_huge_surfaces() {
         assert!((n - p3(0.0, 0.0, 1.0)).norm() < 1e-15, "scale {scale}: {n}");
     }
 }
+
+fn max_surface_distance(a: &dyn Surface<3>, b: &dyn Surface<3>) -> f64 {
+    let (du, dv) = (a.domain_u(), a.domain_v());
+    let mut m: f64 = 0.0;
+    for i in 0..=25 {
+        for j in 0..=25 {
+            let (u, v) = (du.lerp(i as f64 / 25.0), dv.lerp(j as f64 / 25.0));
+            m = m.max((a.point(u, v) - b.point(u, v)).norm());
+        }
+    }
+    m
+}
+
+#[test]
+fn surface_refinement_elevation_and_bezier_patches_keep_the_shape() {
+    let s = sample_surface();
+    let r = s.refine(Direction::U, &[0.1, 0.5, 0.77]).unwrap().refine(Direction::V, &[1.5, 2.2]).unwrap();
+    assert_eq!(r.control_points().len(), 10);
+    assert_eq!(r.control_points()[0].len(), 7);
+    assert!(max_surface_distance(&s, &r) < 1e-12);
+    let e = s.elevate_degree(Direction::U, 1).unwrap().elevate_degree(Direction::V, 2).unwrap();
+    assert_eq!(e.degrees(), (4, 4));
+    assert!(max_surface_distance(&s, &e) < 1e-12);
+    let patches = s.bezier_patches().unwrap();
+    assert_eq!((patches.len(), patches[0].len()), (3, 3));
+    for row in &patches {
+        for ((u0, u1), (v0, v1), patch) in row {
+            for k in 0..=6 {
+                let (a, b) = (k as f64 / 6.0, (6 - k) as f64 / 6.0);
+                let p = patch.point(a, b);
+                let q = s.point(u0 + (u1 - u0) * a, v0 + (v1 - v0) * b);
+                assert!((p - q).norm() < 1e-12);
+            }
+        }
+    }
+    // NURBS: the torus refined and elevated stays on the torus.
+    let t = NurbsSurface::torus(3.0, 1.0).unwrap();
+    let t2 = t.refine(Direction::V, &[0.1, 0.6]).unwrap().elevate_degree(Direction::U, 1).unwrap();
+    assert!(max_surface_distance(&t, &t2) < 1e-12);
+    // Periodic directions stay periodic.
+    let n = 6;
+    let ring: Vec<Vec<Point<3>>> = (0..n)
+        .map(|i| {
+            (0..3)
+                .map(|j| {
+                    p3(
+                        (TAU * i as f64 / n as f64).cos() * (2.0 + j as f64),
+                        (TAU * i as f64 / n as f64).sin(),
+                        j as f64,
+                    )
+                })
+                .collect()
+        })
+        .collect();
+    let ps = BSplineSurface::new(
+        (3, 2),
+        (0..n + 4).map(|i| i as f64).collect(),
+        vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+        ring,
+        (true, false),
+    )
+    .unwrap();
+    let pr = ps.refine(Direction::U, &[3.5]).unwrap();
+    assert!(pr.is_closed_u());
+    assert!(max_surface_distance(&ps, &pr) < 1e-12);
+    // Bézier surfaces split and elevate.
+    let b = BezierSurface::new(net(4, 3)).unwrap();
+    let (l, rr) = b.split(Direction::V, 0.3).unwrap();
+    assert!((l.point(0.4, 1.0) - b.point(0.4, 0.3)).norm() < 1e-13);
+    assert!((rr.point(0.4, 0.0) - b.point(0.4, 0.3)).norm() < 1e-13);
+    let be = b.elevate(Direction::U).unwrap();
+    assert_eq!(be.degrees(), (4, 2));
+    assert!(max_surface_distance(&b, &be) < 1e-13);
+}

@@ -8,6 +8,7 @@ pub mod iso_curve;
 pub mod model;
 pub mod nurbs_surface;
 pub mod revolution;
+pub mod surface_ops;
 pub mod tensor;
 pub mod traits;
 

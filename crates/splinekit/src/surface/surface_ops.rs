@@ -1,0 +1,193 @@
+//! Knot insertion, refinement, degree elevation and Bézier patch decomposition of
+//! B-spline and NURBS surfaces. An operation in u acts on every column of the net as on a
+//! curve (all columns share the u-knots, so they end with the same new knots); an
+//! operation in v acts on every row. The surface is unchanged.
+
+use crate::Point;
+use crate::curve::{BSplineCurve, NurbsCurve};
+use crate::error::Result;
+use crate::surface::iso_curve::Direction;
+use crate::surface::{BSplineSurface, BezierSurface, NurbsSurface};
+
+fn transpose<T: Clone>(net: &[Vec<T>]) -> Vec<Vec<T>> {
+    (0..net[0].len()).map(|j| net.iter().map(|r| r[j].clone()).collect()).collect()
+}
+
+impl<const D: usize> BSplineSurface<D> {
+    /// Applies a curve operation to every column (u) or row (v) of the net.
+    fn map_lines(&self, direction: Direction, op: impl Fn(BSplineCurve<D>) -> Result<BSplineCurve<D>>) -> Result<Self> {
+        let (degrees, (ku, kv), periodic) = (self.degrees(), self.knots(), self.periodic());
+        let (lines, degree, knots, closed) = match direction {
+            Direction::U => (transpose(self.control_points()), degrees.0, ku, periodic.0),
+            Direction::V => (self.control_points().to_vec(), degrees.1, kv, periodic.1),
+        };
+        let mut out_lines = Vec::with_capacity(lines.len());
+        let mut new_knots = Vec::new();
+        let mut new_degree = degree;
+        let mut still_closed = closed;
+        for line in lines {
+            let c = if closed {
+                BSplineCurve::new_periodic(degree, knots.to_vec(), line)?
+            } else {
+                BSplineCurve::new(degree, knots.to_vec(), line)?
+            };
+            let r = op(c)?;
+            new_knots = r.knots().to_vec();
+            new_degree = r.degree();
+            still_closed = r.is_periodic();
+            out_lines.push(r.control_points().to_vec());
+        }
+        match direction {
+            Direction::U => BSplineSurface::new(
+                (new_degree, degrees.1),
+                new_knots,
+                kv.to_vec(),
+                transpose(&out_lines),
+                (still_closed, periodic.1),
+            ),
+            Direction::V => BSplineSurface::new(
+                (degrees.0, new_degree),
+                ku.to_vec(),
+                new_knots,
+                out_lines,
+                (periodic.0, still_closed),
+            ),
+        }
+    }
+
+    /// Inserts the knots (u-knots for `Direction::U`, v-knots for `Direction::V`).
+    pub fn refine(&self, direction: Direction, knots: &[f64]) -> Result<Self> {
+        self.map_lines(direction, |c| c.refine(knots))
+    }
+    /// Raises the degree in one direction by `t`.
+    pub fn elevate_degree(&self, direction: Direction, t: usize) -> Result<Self> {
+        self.map_lines(direction, |c| c.elevate_degree(t))
+    }
+    /// The same surface with clamped knots in both directions (periodic directions are
+    /// cut open at the start of their domain).
+    pub fn clamped(&self) -> Result<Self> {
+        self.map_lines(Direction::U, |c| c.clamped())?.map_lines(Direction::V, |c| c.clamped())
+    }
+
+    /// The Bézier patches: `patches[a][b]` covers the a-th u-span and b-th v-span, with its
+    /// parameter rectangle.
+    pub fn bezier_patches(&self) -> Result<Vec<Vec<((f64, f64), (f64, f64), BezierSurface<D>)>>> {
+        let clamped = self.clamped()?;
+        let (p, q) = clamped.degrees();
+        let (ku, kv) = clamped.knots();
+        let breaks = |k: &[f64], deg: usize| -> Vec<f64> {
+            let mut b: Vec<f64> = k[deg..k.len() - deg].to_vec();
+            b.dedup();
+            b
+        };
+        let (bu, bv) = (breaks(ku, p), breaks(kv, q));
+        let interior = |b: &[f64], times: &dyn Fn(f64) -> usize| -> Vec<f64> {
+            b[1..b.len() - 1].iter().flat_map(|&x| std::iter::repeat_n(x, times(x))).collect()
+        };
+        let mult = |k: &[f64], x: f64| k.iter().filter(|&&y| y == x).count();
+        let iu = interior(&bu, &|x| p - mult(ku, x).min(p));
+        let iv = interior(&bv, &|x| q - mult(kv, x).min(q));
+        let full = clamped.refine(Direction::U, &iu)?.refine(Direction::V, &iv)?;
+        let net = full.control_points();
+        let mut out = Vec::with_capacity(bu.len() - 1);
+        for a in 0..bu.len() - 1 {
+            let mut row = Vec::with_capacity(bv.len() - 1);
+            for b in 0..bv.len() - 1 {
+                let patch: Vec<Vec<Point<D>>> = (0..=p).map(|i| net[a * p + i][b * q..=b * q + q].to_vec()).collect();
+                row.push(((bu[a], bu[a + 1]), (bv[b], bv[b + 1]), BezierSurface::new(patch)?));
+            }
+            out.push(row);
+        }
+        Ok(out)
+    }
+}
+
+impl<const D: usize> NurbsSurface<D> {
+    fn map_lines(&self, direction: Direction, op: impl Fn(NurbsCurve<D>) -> Result<NurbsCurve<D>>) -> Result<Self> {
+        let (degrees, (ku, kv), periodic) = (self.degrees(), self.knots(), self.periodic());
+        let (lines, wlines, degree, knots, closed) = match direction {
+            Direction::U => (transpose(self.control_points()), transpose(self.weights()), degrees.0, ku, periodic.0),
+            Direction::V => (self.control_points().to_vec(), self.weights().to_vec(), degrees.1, kv, periodic.1),
+        };
+        let mut out_lines = Vec::with_capacity(lines.len());
+        let mut out_w = Vec::with_capacity(lines.len());
+        let mut new_knots = Vec::new();
+        let mut new_degree = degree;
+        let mut still_closed = closed;
+        for (line, w) in lines.into_iter().zip(wlines) {
+            let c = if closed {
+                NurbsCurve::new_periodic(degree, knots.to_vec(), line, w)?
+            } else {
+                NurbsCurve::new(degree, knots.to_vec(), line, w)?
+            };
+            let r = op(c)?;
+            new_knots = r.knots().to_vec();
+            new_degree = r.degree();
+            still_closed = r.is_periodic();
+            out_lines.push(r.control_points().to_vec());
+            out_w.push(r.weights().to_vec());
+        }
+        match direction {
+            Direction::U => NurbsSurface::new(
+                (new_degree, degrees.1),
+                new_knots,
+                kv.to_vec(),
+                transpose(&out_lines),
+                transpose(&out_w),
+                (still_closed, periodic.1),
+            ),
+            Direction::V => NurbsSurface::new(
+                (degrees.0, new_degree),
+                ku.to_vec(),
+                new_knots,
+                out_lines,
+                out_w,
+                (periodic.0, still_closed),
+            ),
+        }
+    }
+    /// Inserts the knots in one direction.
+    pub fn refine(&self, direction: Direction, knots: &[f64]) -> Result<Self> {
+        self.map_lines(direction, |c| c.refine(knots))
+    }
+    /// Raises the degree in one direction by `t`.
+    pub fn elevate_degree(&self, direction: Direction, t: usize) -> Result<Self> {
+        self.map_lines(direction, |c| c.elevate_degree(t))
+    }
+}
+
+impl<const D: usize> BezierSurface<D> {
+    /// Splits at u = t (`Direction::U`) or v = t into two Bézier surfaces, each
+    /// reparametrised to [0, 1]².
+    pub fn split(&self, direction: Direction, t: f64) -> Result<(Self, Self)> {
+        let lines = match direction {
+            Direction::U => transpose(self.control_points()),
+            Direction::V => self.control_points().to_vec(),
+        };
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        for line in lines {
+            let (l, r) = crate::curve::BezierCurve::new(line)?.split(t);
+            a.push(l.control_points().to_vec());
+            b.push(r.control_points().to_vec());
+        }
+        Ok(match direction {
+            Direction::U => (BezierSurface::new(transpose(&a))?, BezierSurface::new(transpose(&b))?),
+            Direction::V => (BezierSurface::new(a)?, BezierSurface::new(b)?),
+        })
+    }
+    /// Raises the degree in one direction by one.
+    pub fn elevate(&self, direction: Direction) -> Result<Self> {
+        let lines = match direction {
+            Direction::U => transpose(self.control_points()),
+            Direction::V => self.control_points().to_vec(),
+        };
+        let mut out = Vec::new();
+        for line in lines {
+            out.push(crate::curve::BezierCurve::new(line)?.elevate().control_points().to_vec());
+        }
+        BezierSurface::new(match direction {
+            Direction::U => transpose(&out),
+            Direction::V => out,
+        })
+    }
+}
