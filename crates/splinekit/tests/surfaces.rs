@@ -428,3 +428,72 @@ fn surface_refinement_elevation_and_bezier_patches_keep_the_shape() {
     assert_eq!(be.degrees(), (4, 2));
     assert!(max_surface_distance(&b, &be) < 1e-13);
 }
+
+#[test]
+fn surface_fitting_equals_the_dense_least_squares_solution() {
+    use splinekit::basis::basis_function;
+    use splinekit::fit::{KnotPlacement, Parametrization, SurfaceFitOptions, fit_surface, interpolate_surface};
+    let (mu, mv) = (14, 11);
+    let f = |u: f64, v: f64| p3(u, v, (3.0 * u).sin() * (2.0 * v).cos() + 0.1 * u * v);
+    let grid: Vec<Vec<Point<3>>> =
+        (0..mu).map(|a| (0..mv).map(|b| f(a as f64 / (mu - 1) as f64, b as f64 / (mv - 1) as f64)).collect()).collect();
+    let opts = SurfaceFitOptions {
+        degrees: (3, 2),
+        control_points: (7, 5),
+        params: Parametrization::Uniform,
+        knots: KnotPlacement::Uniform,
+    };
+    let s = fit_surface(&grid, &opts).unwrap();
+    // Dense least squares over all mu·mv equations with (A_u ⊗ A_v).
+    let (ku, kv) = s.knots();
+    let (nu, nv) = (7, 5);
+    let mut a = nalgebra::DMatrix::<f64>::zeros(mu * mv, nu * nv);
+    let mut rhs = nalgebra::DMatrix::<f64>::zeros(mu * mv, 3);
+    for i in 0..mu {
+        for j in 0..mv {
+            let (u, v) = (i as f64 / (mu - 1) as f64, j as f64 / (mv - 1) as f64);
+            for r in 0..nu {
+                for c in 0..nv {
+                    a[(i * mv + j, r * nv + c)] = basis_function(ku, 3, r, u) * basis_function(kv, 2, c, v);
+                }
+            }
+            for k in 0..3 {
+                rhs[(i * mv + j, k)] = grid[i][j][k];
+            }
+        }
+    }
+    let x = a.svd(true, true).solve(&rhs, 1e-14).unwrap();
+    for r in 0..nu {
+        for c in 0..nv {
+            for k in 0..3 {
+                let got = s.control_points()[r][c][k];
+                assert!((got - x[(r * nv + c, k)]).abs() < 1e-11, "P[{r}][{c}][{k}]: {got} vs {}", x[(r * nv + c, k)]);
+            }
+        }
+    }
+    // A bicubic-by-quadratic polynomial surface is reproduced exactly.
+    let poly = |u: f64, v: f64| p3(u * u * u - u, v * v + u * v, 1.0 + u * u * v * v);
+    let pg: Vec<Vec<Point<3>>> = (0..mu)
+        .map(|a| (0..mv).map(|b| poly(a as f64 / (mu - 1) as f64, b as f64 / (mv - 1) as f64)).collect())
+        .collect();
+    let ps = fit_surface(&pg, &opts).unwrap();
+    for (a, row) in pg.iter().enumerate() {
+        for (b, q) in row.iter().enumerate() {
+            assert!((ps.point(a as f64 / (mu - 1) as f64, b as f64 / (mv - 1) as f64) - q).norm() < 1e-12);
+        }
+    }
+    // Interpolation passes through every grid point.
+    let is = interpolate_surface(&grid, (3, 3), Parametrization::Uniform).unwrap();
+    for (a, row) in grid.iter().enumerate() {
+        for (b, q) in row.iter().enumerate() {
+            assert!((is.point(a as f64 / (mu - 1) as f64, b as f64 / (mv - 1) as f64) - q).norm() < 1e-12);
+        }
+    }
+    let bad = SurfaceFitOptions {
+        degrees: (3, 2),
+        control_points: (20, 5),
+        params: Parametrization::Uniform,
+        knots: KnotPlacement::Uniform,
+    };
+    assert!(fit_surface(&grid, &bad).unwrap_err().to_string().contains("control_points"));
+}
