@@ -497,3 +497,113 @@ fn surface_fitting_equals_the_dense_least_squares_solution() {
     };
     assert!(fit_surface(&grid, &bad).unwrap_err().to_string().contains("control_points"));
 }
+
+#[test]
+fn derived_surfaces_revolution_ruled_extrusion_coons() {
+    use splinekit::curve::model::{Circle, Line};
+    use splinekit::curve::{BSplineCurve, BezierCurve};
+    use splinekit::surface::derived::*;
+    // A circle of radius 1 about (3, 0, 0) in the xz-plane, revolved about z: the torus.
+    let tube = BSplineCurve::new_periodic(
+        3,
+        (0..12).map(|i| i as f64).collect(),
+        (0..8)
+            .map(|i| {
+                let a = TAU * i as f64 / 8.0;
+                p3(3.0 + a.cos(), 0.0, a.sin())
+            })
+            .collect(),
+    )
+    .unwrap();
+    let rev = RevolvedSurface::new(Box::new(tube), p3(0.0, 0.0, 0.0), p3(0.0, 0.0, 2.0), TAU).unwrap();
+    assert!(rev.is_closed_u() && rev.is_closed_v());
+    check_partials(&rev, "revolved b-spline");
+    let circle_profile =
+        splinekit::curve::NurbsCurve::circle(p3(3.0, 0.0, 0.0), p3(1.0, 0.0, 0.0), p3(0.0, 0.0, 1.0), 1.0).unwrap();
+    let exact = RevolvedSurface::new(Box::new(circle_profile), p3(0.0, 0.0, 0.0), p3(0.0, 0.0, 1.0), TAU).unwrap();
+    for a in 0..=8 {
+        for b in 0..=8 {
+            let p = exact.point(TAU * a as f64 / 8.0, b as f64 / 8.0);
+            let ring = p3(p[0], p[1], 0.0).normalize() * 3.0;
+            assert!(((p - ring).norm() - 1.0).abs() < 1e-14);
+        }
+    }
+    // A partial revolution about a tilted axis through a point keeps distances to the axis.
+    let seg = Line::new(p3(1.0, 0.0, 0.0), p3(2.0, 1.0, 1.0)).unwrap();
+    let part = RevolvedSurface::new(Box::new(seg), p3(0.5, 0.5, 0.0), p3(1.0, 1.0, 1.0), 1.0).unwrap();
+    assert!(!part.is_closed_u());
+    check_partials(&part, "partial revolution");
+    let k = p3(1.0, 1.0, 1.0).normalize();
+    let dist = |p: Point<3>| {
+        let x = p - p3(0.5, 0.5, 0.0);
+        (x - k * k.dot(&x)).norm()
+    };
+    for a in 0..=4 {
+        assert!((dist(part.point(a as f64 / 4.0, 0.3)) - dist(part.point(0.0, 0.3))).abs() < 1e-14);
+    }
+    assert!(
+        RevolvedSurface::new(Box::new(Circle::new(1.0).unwrap()), p3(0.0, 0.0, 0.0), p3(0.0, 0.0, 0.0), 1.0).is_err()
+    );
+    // Ruled surface between two lines is bilinear; extrusion is a translation.
+    let ruled = RuledSurface::new(
+        Box::new(Line::new(p2(0.0, 0.0), p2(2.0, 0.0)).unwrap()),
+        Box::new(Line::new(p2(0.0, 1.0), p2(2.0, 3.0)).unwrap()),
+    )
+    .unwrap();
+    assert!((ruled.point(0.5, 0.5) - p2(1.0, 1.0)).norm() < 1e-15);
+    let bez = BezierCurve::new(vec![p3(0.0, 0.0, 0.0), p3(1.0, 2.0, 0.0), p3(2.0, 0.0, 1.0)]).unwrap();
+    let ext = Extrusion::new(Box::new(bez.clone()), p3(0.0, 0.0, 2.0)).unwrap();
+    assert!((ext.point(0.3, 0.25) - (bez.point(0.3) + p3(0.0, 0.0, 0.5))).norm() < 1e-15);
+    check_partials(&ext, "extrusion");
+    // Coons patches interpolate their boundaries and reproduce bilinear surfaces.
+    let corner = |u: f64, v: f64| p3(u, v, u * v);
+    let line = |a: Point<3>, b: Point<3>| -> Box<dyn Curve<3>> { Box::new(Line::new(a, b).unwrap()) };
+    for blend in [CoonsBlend::Linear, CoonsBlend::Cubic] {
+        let coons = CoonsPatch::new(
+            line(corner(0.0, 0.0), corner(1.0, 0.0)),
+            line(corner(0.0, 1.0), corner(1.0, 1.0)),
+            line(corner(0.0, 0.0), corner(0.0, 1.0)),
+            line(corner(1.0, 0.0), corner(1.0, 1.0)),
+            blend,
+        )
+        .unwrap();
+        for a in 0..=6 {
+            for b in 0..=6 {
+                let (u, v) = (a as f64 / 6.0, b as f64 / 6.0);
+                let (p, q) = (coons.point(u, v), corner(u, v));
+                // Bilinear blending reproduces bilinear surfaces; cubic blending (positions
+                // only) reproduces the ruled x and y but not z = uv.
+                if blend == CoonsBlend::Linear {
+                    assert!((p - q).norm() < 1e-14, "{blend:?} at ({u}, {v})");
+                } else {
+                    assert!((p[0] - u).abs() < 1e-14 && (p[1] - v).abs() < 1e-14);
+                    let f1 = |t: f64| t * t * (3.0 - 2.0 * t);
+                    assert!((p[2] - (f1(v) * u + f1(u) * v - f1(u) * f1(v))).abs() < 1e-14);
+                }
+            }
+        }
+        let curved = CoonsPatch::new(
+            Box::new(BezierCurve::new(vec![p3(0.0, 0.0, 0.0), p3(0.5, -0.3, 0.4), p3(1.0, 0.0, 0.0)]).unwrap()),
+            Box::new(BezierCurve::new(vec![p3(0.0, 1.0, 0.0), p3(0.5, 1.2, 0.8), p3(1.0, 1.0, 0.2)]).unwrap()),
+            Box::new(BezierCurve::new(vec![p3(0.0, 0.0, 0.0), p3(-0.2, 0.5, 0.1), p3(0.0, 1.0, 0.0)]).unwrap()),
+            line(p3(1.0, 0.0, 0.0), p3(1.0, 1.0, 0.2)),
+            blend,
+        )
+        .unwrap();
+        check_partials(&curved, "coons");
+        for a in 0..=8 {
+            let t = a as f64 / 8.0;
+            let bottom = BezierCurve::new(vec![p3(0.0, 0.0, 0.0), p3(0.5, -0.3, 0.4), p3(1.0, 0.0, 0.0)]).unwrap();
+            assert!((curved.point(t, 0.0) - bottom.point(t)).norm() < 1e-15);
+            assert!((curved.point(1.0, t) - p3(1.0, t, 0.2 * t)).norm() < 1e-15);
+        }
+    }
+    let bad = CoonsPatch::new(
+        line(p3(0.0, 0.0, 0.0), p3(1.0, 0.0, 0.0)),
+        line(p3(0.0, 1.0, 0.0), p3(1.0, 1.0, 0.0)),
+        line(p3(0.0, 0.0, 0.0), p3(0.0, 1.0, 0.0)),
+        line(p3(1.0, 0.5, 0.0), p3(1.0, 1.0, 0.0)),
+        CoonsBlend::Linear,
+    );
+    assert!(bad.err().unwrap().to_string().contains("bottom end and right start"));
+}

@@ -4,6 +4,7 @@
 pub mod bezier_surface;
 pub mod bspline_surface;
 pub mod closest_point;
+pub mod derived;
 pub mod iso_curve;
 pub mod model;
 pub mod nurbs_surface;

@@ -1,0 +1,117 @@
+//! Coons patches: the surface on [0, 1]² spanned by four boundary curves
+//! S(u, 0) = c₀(u), S(u, 1) = c₁(u), S(0, v) = d₀(v), S(1, v) = d₁(v):
+//!
+//! S = F₀(v)c₀(u) + F₁(v)c₁(u) + F₀(u)d₀(v) + F₁(u)d₁(v) − Σ_{a,b} F_a(u)F_b(v)P_ab,
+//!
+//! with F₀ = 1 − t, F₁ = t (bilinearly blended) or F₀ = 1 − 3t² + 2t³, F₁ = 3t² − 2t³
+//! (bicubically blended, cross-boundary derivatives taken from the boundary curves only).
+
+use crate::Point;
+use crate::curve::{Curve, Interval};
+use crate::error::{Error, Result};
+use crate::surface::Surface;
+use crate::surface::derived::unit_derivatives;
+
+/// The blending functions of a Coons patch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CoonsBlend {
+    /// F₀ = 1 − t, F₁ = t.
+    Linear,
+    /// F₀ = 1 − 3t² + 2t³, F₁ = 3t² − 2t³.
+    Cubic,
+}
+
+impl CoonsBlend {
+    /// F_which^{(k)}(t).
+    fn value(self, which: usize, t: f64, k: usize) -> f64 {
+        let f1 = match (self, k) {
+            (CoonsBlend::Linear, 0) => t,
+            (CoonsBlend::Linear, 1) => 1.0,
+            (CoonsBlend::Linear, _) => 0.0,
+            (CoonsBlend::Cubic, 0) => t * t * (3.0 - 2.0 * t),
+            (CoonsBlend::Cubic, 1) => 6.0 * t * (1.0 - t),
+            (CoonsBlend::Cubic, 2) => 6.0 - 12.0 * t,
+            (CoonsBlend::Cubic, 3) => -12.0,
+            (CoonsBlend::Cubic, _) => 0.0,
+        };
+        if which == 1 {
+            f1
+        } else if k == 0 {
+            1.0 - f1
+        } else {
+            -f1
+        }
+    }
+}
+
+/// A Coons patch from four boundary curves (each reparametrised to [0, 1]).
+pub struct CoonsPatch<const D: usize> {
+    bottom: Box<dyn Curve<D>>,
+    top: Box<dyn Curve<D>>,
+    left: Box<dyn Curve<D>>,
+    right: Box<dyn Curve<D>>,
+    corners: [[Point<D>; 2]; 2],
+    blend: CoonsBlend,
+}
+
+impl<const D: usize> CoonsPatch<D> {
+    /// The patch with boundaries bottom (v = 0), top (v = 1), left (u = 0), right
+    /// (u = 1). Their ends must meet at the four corners.
+    pub fn new(
+        bottom: Box<dyn Curve<D>>,
+        top: Box<dyn Curve<D>>,
+        left: Box<dyn Curve<D>>,
+        right: Box<dyn Curve<D>>,
+        blend: CoonsBlend,
+    ) -> Result<Self> {
+        let end = |c: &dyn Curve<D>, s: f64| c.point(c.domain().lerp(s));
+        let pairs = [
+            ("bottom start and left start", end(bottom.as_ref(), 0.0), end(left.as_ref(), 0.0)),
+            ("bottom end and right start", end(bottom.as_ref(), 1.0), end(right.as_ref(), 0.0)),
+            ("top start and left end", end(top.as_ref(), 0.0), end(left.as_ref(), 1.0)),
+            ("top end and right end", end(top.as_ref(), 1.0), end(right.as_ref(), 1.0)),
+        ];
+        let scale = pairs.iter().map(|p| p.1.norm()).fold(1.0, f64::max);
+        for (name, a, b) in &pairs {
+            if (a - b).norm() > 1e-9 * scale {
+                return Err(Error::invalid("corners", format!("{name} must meet, but are {} apart", (a - b).norm())));
+            }
+        }
+        let corners = [[pairs[0].1, pairs[2].1], [pairs[1].1, pairs[3].1]];
+        Ok(CoonsPatch { bottom, top, left, right, corners, blend })
+    }
+}
+
+impl<const D: usize> Surface<D> for CoonsPatch<D> {
+    fn domain_u(&self) -> Interval {
+        Interval::new(0.0, 1.0)
+    }
+    fn domain_v(&self) -> Interval {
+        Interval::new(0.0, 1.0)
+    }
+    fn is_closed_u(&self) -> bool {
+        false
+    }
+    fn is_closed_v(&self) -> bool {
+        false
+    }
+    fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
+        let (u, v) = (u.clamp(0.0, 1.0), v.clamp(0.0, 1.0));
+        let c0 = unit_derivatives(self.bottom.as_ref(), u, du);
+        let c1 = unit_derivatives(self.top.as_ref(), u, du);
+        let d0 = unit_derivatives(self.left.as_ref(), v, dv);
+        let d1 = unit_derivatives(self.right.as_ref(), v, dv);
+        let f = |w: usize, t: f64, k: usize| self.blend.value(w, t, k);
+        for i in 0..=du {
+            for j in 0..=dv {
+                let mut s = c0[i] * f(0, v, j) + c1[i] * f(1, v, j) + d0[j] * f(0, u, i) + d1[j] * f(1, u, i);
+                for a in 0..2 {
+                    for b in 0..2 {
+                        s -= self.corners[a][b] * (f(a, u, i) * f(b, v, j));
+                    }
+                }
+                out[i * (dv + 1) + j] = s;
+            }
+        }
+    }
+}

@@ -1,0 +1,54 @@
+//! Ruled surfaces S(u, v) = (1 − v) c₁(u) + v c₂(u), each curve reparametrised to
+//! u ∈ [0, 1], v ∈ [0, 1].
+
+use crate::Point;
+use crate::curve::{Curve, Interval};
+use crate::error::{Error, Result};
+use crate::surface::Surface;
+use crate::surface::derived::unit_derivatives;
+
+/// The straight lines between corresponding points of two curves.
+pub struct RuledSurface<const D: usize> {
+    first: Box<dyn Curve<D>>,
+    second: Box<dyn Curve<D>>,
+}
+
+impl<const D: usize> RuledSurface<D> {
+    /// The ruled surface between two curves (both reparametrised to [0, 1]).
+    pub fn new(first: Box<dyn Curve<D>>, second: Box<dyn Curve<D>>) -> Result<Self> {
+        if first.is_closed() != second.is_closed() {
+            return Err(Error::invalid("second", "both curves must be open or both closed"));
+        }
+        Ok(RuledSurface { first, second })
+    }
+}
+
+impl<const D: usize> Surface<D> for RuledSurface<D> {
+    fn domain_u(&self) -> Interval {
+        Interval::new(0.0, 1.0)
+    }
+    fn domain_v(&self) -> Interval {
+        Interval::new(0.0, 1.0)
+    }
+    fn is_closed_u(&self) -> bool {
+        self.first.is_closed()
+    }
+    fn is_closed_v(&self) -> bool {
+        false
+    }
+    fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
+        let u = if self.is_closed_u() { self.domain_u().wrap(u) } else { u.clamp(0.0, 1.0) };
+        let v = v.clamp(0.0, 1.0);
+        let a = unit_derivatives(self.first.as_ref(), u, du);
+        let b = unit_derivatives(self.second.as_ref(), u, du);
+        for i in 0..=du {
+            for j in 0..=dv {
+                out[i * (dv + 1) + j] = match j {
+                    0 => a[i] * (1.0 - v) + b[i] * v,
+                    1 => b[i] - a[i],
+                    _ => Point::<D>::zeros(),
+                };
+            }
+        }
+    }
+}
