@@ -7,6 +7,7 @@ use proptest::prelude::*;
 use splinekit::Point;
 use splinekit::curve::Curve;
 use splinekit::surface::model::*;
+use splinekit::surface::surface_ops::BezierPatch;
 use splinekit::surface::*;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -380,7 +381,7 @@ fn surface_refinement_elevation_and_bezier_patches_keep_the_shape() {
     let patches = s.bezier_patches().unwrap();
     assert_eq!((patches.len(), patches[0].len()), (3, 3));
     for row in &patches {
-        for ((u0, u1), (v0, v1), patch) in row {
+        for BezierPatch { u_range: (u0, u1), v_range: (v0, v1), surface: patch } in row {
             for k in 0..=6 {
                 let (a, b) = (k as f64 / 6.0, (6 - k) as f64 / 6.0);
                 let p = patch.point(a, b);

@@ -9,6 +9,17 @@ use crate::error::Result;
 use crate::surface::iso_curve::Direction;
 use crate::surface::{BSplineSurface, BezierSurface, NurbsSurface};
 
+/// One Bézier patch of a B-spline surface and the parameter rectangle it covers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BezierPatch<const D: usize> {
+    /// [u₀, u₁] of the patch in the spline's parameters.
+    pub u_range: (f64, f64),
+    /// [v₀, v₁] of the patch.
+    pub v_range: (f64, f64),
+    /// The patch as a Bézier surface on [0, 1]².
+    pub surface: BezierSurface<D>,
+}
+
 fn transpose<T: Clone>(net: &[Vec<T>]) -> Vec<Vec<T>> {
     (0..net[0].len()).map(|j| net.iter().map(|r| r[j].clone()).collect()).collect()
 }
@@ -69,9 +80,8 @@ impl<const D: usize> BSplineSurface<D> {
         self.map_lines(Direction::U, |c| c.clamped())?.map_lines(Direction::V, |c| c.clamped())
     }
 
-    /// The Bézier patches: `patches[a][b]` covers the a-th u-span and b-th v-span, with its
-    /// parameter rectangle.
-    pub fn bezier_patches(&self) -> Result<Vec<Vec<((f64, f64), (f64, f64), BezierSurface<D>)>>> {
+    /// The Bézier patches: `patches[a][b]` covers the a-th u-span and b-th v-span.
+    pub fn bezier_patches(&self) -> Result<Vec<Vec<BezierPatch<D>>>> {
         let clamped = self.clamped()?;
         let (p, q) = clamped.degrees();
         let (ku, kv) = clamped.knots();
@@ -94,7 +104,11 @@ impl<const D: usize> BSplineSurface<D> {
             let mut row = Vec::with_capacity(bv.len() - 1);
             for b in 0..bv.len() - 1 {
                 let patch: Vec<Vec<Point<D>>> = (0..=p).map(|i| net[a * p + i][b * q..=b * q + q].to_vec()).collect();
-                row.push(((bu[a], bu[a + 1]), (bv[b], bv[b + 1]), BezierSurface::new(patch)?));
+                row.push(BezierPatch {
+                    u_range: (bu[a], bu[a + 1]),
+                    v_range: (bv[b], bv[b + 1]),
+                    surface: BezierSurface::new(patch)?,
+                });
             }
             out.push(row);
         }
