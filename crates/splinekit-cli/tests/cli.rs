@@ -286,7 +286,7 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         if doc.trim_start().starts_with("{\"params\"") {
             continue;
         }
-        let surface = doc.contains("surface\"") || doc.contains("\"torus\"");
+        let surface = ["surface\"", "\"torus\"", "\"revolution\"", "\"coons\""].iter().any(|k| doc.contains(k));
         let args: &[&str] = if surface {
             &["eval", "-", "--grid", "5,1", "--derivatives", "1"]
         } else {
@@ -296,7 +296,7 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         assert_eq!(v["points"].as_array().unwrap().len(), 5, "{doc}");
         count += 1;
     }
-    assert!(count >= 12, "only {count} examples found");
+    assert!(count >= 14, "only {count} examples found");
 }
 
 fn temp_dir(name: &str) -> std::path::PathBuf {
@@ -422,4 +422,48 @@ fn bad_surface_input_names_the_field() {
     assert_bad(&["eval", "-", "--grid", "3,3"], r#"{"type":"circle"}"#, "--grid");
     assert_bad(&["eval", "-", "--at", "0.5:0.5"], r#"{"type":"circle"}"#, "--at");
     assert_bad(&["refine", "-", "--elevate", "1"], r#"{"type":"sphere"}"#, "refine");
+}
+
+#[test]
+fn derived_surface_documents() {
+    let rev = r#"{"type":"revolution","curve":{"type":"line","from":[1,0,0],"to":[1,0,2]}}"#;
+    let v = ok_json(&["eval", "-", "--at", "1.0:0.5"], rev);
+    let p = floats(&v["points"][0]);
+    assert!((p[0] - 1f64.cos()).abs() < 1e-15 && (p[1] - 1f64.sin()).abs() < 1e-15 && (p[2] - 1.0).abs() < 1e-15);
+    let ext = r#"{"type":"extrusion","curve":{"type":"circle"},"direction":[0,0,3]}"#;
+    let v = ok_json(&["eval", "-", "--at", "0:0.5"], ext);
+    assert_eq!(v["points"][0], json!([1.0, 0.0, 1.5]));
+    let ruled = r#"{"type":"ruled","first":{"type":"line","from":[0,0],"to":[2,0]},"second":{"type":"line","from":[0,1],"to":[2,3]}}"#;
+    let v = ok_json(&["eval", "-", "--at", "0.5:0.5"], ruled);
+    assert_eq!(v["points"][0], json!([1.0, 1.0]));
+    assert_bad(
+        &["eval", "-", "--at", "0:0"],
+        r#"{"type":"revolution","curve":{"type":"bezier","control_points":[[0,0],[1,1]]}}"#,
+        "curve",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0:0"],
+        r#"{"type":"revolution","curve":{"type":"line","from":[1,0,0],"to":[1,0,2]},"axis":[0,0,0]}"#,
+        "axis",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0:0"],
+        r#"{"type":"extrusion","curve":{"type":"circle"},"direction":[0,1]}"#,
+        "direction",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0:0"],
+        r#"{"type":"ruled","first":{"type":"circle"},"second":{"type":"nope"}}"#,
+        "second.type: unknown curve type",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0:0"],
+        r#"{"type":"coons","bottom":{"type":"line","from":[0,0,0],"to":[1,0,0]},"top":{"type":"line","from":[0,1,0],"to":[1,1,0]},"left":{"type":"line","from":[0,0,0],"to":[0,1,0]},"right":{"type":"line","from":[1,0.5,0],"to":[1,1,0]}}"#,
+        "corners",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0:0"],
+        r#"{"type":"coons","bottom":{"type":"line","from":[0,0,0],"to":[1,0,0]},"top":{"type":"line","from":[0,1,0],"to":[1,1,0]},"left":{"type":"line","from":[0,0,0],"to":[0,1,0]},"right":{"type":"line","from":[1,0,0],"to":[1,1,0]},"blend":"quintic"}"#,
+        "blend",
+    );
 }

@@ -4,10 +4,13 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use splinekit::Point;
+use splinekit::surface::derived::{CoonsBlend, CoonsPatch, Extrusion, RevolvedSurface, RuledSurface};
 use splinekit::surface::model::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
 };
 use splinekit::surface::{BSplineSurface, BezierSurface, NurbsSurface, Surface};
+
+use crate::curves::CurveDocument;
 
 use crate::curves::fields;
 use crate::error::{DocumentError, Result};
@@ -228,6 +231,107 @@ pub struct SurfaceScaleDoc {
     pub scale: f64,
 }
 
+fn tau() -> f64 {
+    std::f64::consts::TAU
+}
+fn z_axis() -> Vec<f64> {
+    vec![0.0, 0.0, 1.0]
+}
+fn linear_blend() -> String {
+    "linear".to_string()
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawRevolution {
+    curve: Value,
+    #[serde(default = "origin")]
+    axis_point: Vec<f64>,
+    #[serde(default = "z_axis")]
+    axis: Vec<f64>,
+    #[serde(default = "tau")]
+    angle: f64,
+}
+
+/// `{"type":"revolution","curve":{…},"axis_point":[0,0,0],"axis":[0,0,1],"angle":2π}`:
+/// the curve turned about the axis; u is the angle, v the curve's parameter.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RevolutionDoc {
+    /// The profile (a 3-D curve document).
+    pub curve: Box<CurveDocument>,
+    /// A point on the axis.
+    pub axis_point: Vec<f64>,
+    /// The axis direction.
+    pub axis: Vec<f64>,
+    /// The angle in radians (2π: closed).
+    pub angle: f64,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawRuled {
+    first: Value,
+    second: Value,
+}
+
+/// `{"type":"ruled","first":{…},"second":{…}}`: (1 − v) first(u) + v second(u), both curves
+/// reparametrised to [0, 1].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RuledDoc {
+    /// The curve at v = 0.
+    pub first: Box<CurveDocument>,
+    /// The curve at v = 1.
+    pub second: Box<CurveDocument>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawExtrusion {
+    curve: Value,
+    direction: Vec<f64>,
+}
+
+/// `{"type":"extrusion","curve":{…},"direction":[0,0,1]}`: curve(u) + v·direction.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExtrusionDoc {
+    /// The curve.
+    pub curve: Box<CurveDocument>,
+    /// The extrusion vector.
+    pub direction: Vec<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawCoons {
+    bottom: Value,
+    top: Value,
+    left: Value,
+    right: Value,
+    #[serde(default = "linear_blend")]
+    blend: String,
+}
+
+/// `{"type":"coons","bottom":{…},"top":{…},"left":{…},"right":{…},"blend":"linear"}`:
+/// the Coons patch on [0, 1]² spanned by four boundary curves meeting at the corners;
+/// `blend` is `linear` (bilinear) or `cubic`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CoonsDoc {
+    /// S(u, 0).
+    pub bottom: Box<CurveDocument>,
+    /// S(u, 1).
+    pub top: Box<CurveDocument>,
+    /// S(0, v).
+    pub left: Box<CurveDocument>,
+    /// S(1, v).
+    pub right: Box<CurveDocument>,
+    /// `linear` or `cubic`.
+    pub blend: String,
+}
+
+fn nested(value: &Value, field: &str) -> Result<Box<CurveDocument>> {
+    CurveDocument::parse(value).map(Box::new).map_err(|e| e.within(field))
+}
+
 /// A surface shape document.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "type", rename_all = "snake_case")]
@@ -248,6 +352,10 @@ pub enum SurfaceDocument {
     Seashell(SeashellDoc),
     Apple(SurfaceScaleDoc),
     HeartSurface(SurfaceScaleDoc),
+    Revolution(RevolutionDoc),
+    Ruled(RuledDoc),
+    Extrusion(ExtrusionDoc),
+    Coons(CoonsDoc),
 }
 
 /// The surface `type` names, for messages.
@@ -332,6 +440,20 @@ fn net_dimension(field: &str, net: &[Vec<Vec<f64>>]) -> Result<usize> {
     Ok(d)
 }
 
+fn same_dimension(curves: &[(&str, &CurveDocument)]) -> Result<usize> {
+    let d0 = curves[0].1.dimension().map_err(|e| e.within(curves[0].0))?;
+    for (name, c) in &curves[1..] {
+        let d = c.dimension().map_err(|e| e.within(name))?;
+        if d != d0 {
+            return Err(DocumentError::new(
+                *name,
+                format!("expected a curve of dimension {d0} like {}, got {d}", curves[0].0),
+            ));
+        }
+    }
+    Ok(d0)
+}
+
 fn net_points<const D: usize>(net: &[Vec<Vec<f64>>]) -> Vec<Vec<Point<D>>> {
     net.iter().map(|r| to_points::<D>(r)).collect()
 }
@@ -356,6 +478,39 @@ impl SurfaceDocument {
             "seashell" => S::Seashell(fields(rest)?),
             "apple" => S::Apple(fields(rest)?),
             "heart_surface" => S::HeartSurface(fields(rest)?),
+            "revolution" => {
+                let r: RawRevolution = fields(rest)?;
+                S::Revolution(RevolutionDoc {
+                    curve: nested(&r.curve, "curve")?,
+                    axis_point: r.axis_point,
+                    axis: r.axis,
+                    angle: r.angle,
+                })
+            }
+            "ruled" => {
+                let r: RawRuled = fields(rest)?;
+                S::Ruled(RuledDoc { first: nested(&r.first, "first")?, second: nested(&r.second, "second")? })
+            }
+            "extrusion" => {
+                let r: RawExtrusion = fields(rest)?;
+                S::Extrusion(ExtrusionDoc { curve: nested(&r.curve, "curve")?, direction: r.direction })
+            }
+            "coons" => {
+                let r: RawCoons = fields(rest)?;
+                if r.blend != "linear" && r.blend != "cubic" {
+                    return Err(DocumentError::new(
+                        "blend",
+                        format!("expected \"linear\" or \"cubic\", got \"{}\"", r.blend),
+                    ));
+                }
+                S::Coons(CoonsDoc {
+                    bottom: nested(&r.bottom, "bottom")?,
+                    top: nested(&r.top, "top")?,
+                    left: nested(&r.left, "left")?,
+                    right: nested(&r.right, "right")?,
+                    blend: r.blend,
+                })
+            }
             _ => return Ok(None),
         }))
     }
@@ -371,6 +526,20 @@ impl SurfaceDocument {
             SurfaceDocument::BezierSurface(d) => net_dimension("control_points", &d.control_points),
             SurfaceDocument::BsplineSurface(d) => net_dimension("control_points", &d.control_points),
             SurfaceDocument::NurbsSurface(d) => net_dimension("control_points", &d.control_points),
+            SurfaceDocument::Ruled(d) => same_dimension(&[("first", &d.first), ("second", &d.second)]),
+            SurfaceDocument::Extrusion(d) => {
+                let dim = d.curve.dimension().map_err(|e| e.within("curve"))?;
+                if d.direction.len() != dim {
+                    return Err(DocumentError::new(
+                        "direction",
+                        format!("expected {dim} coordinates like the curve, got {}", d.direction.len()),
+                    ));
+                }
+                Ok(dim)
+            }
+            SurfaceDocument::Coons(d) => {
+                same_dimension(&[("bottom", &d.bottom), ("top", &d.top), ("left", &d.left), ("right", &d.right)])
+            }
             _ => Ok(3),
         }
     }
@@ -412,8 +581,34 @@ impl SurfaceDocument {
                     (d.periodic_u, d.periodic_v),
                 )?)
             }
+            S::Ruled(d) => Box::new(RuledSurface::new(
+                d.first.build_in::<D>().map_err(|e| e.within("first"))?,
+                d.second.build_in::<D>().map_err(|e| e.within("second"))?,
+            )?),
+            S::Extrusion(d) => Box::new(Extrusion::new(
+                d.curve.build_in::<D>().map_err(|e| e.within("curve"))?,
+                to_point::<D>("direction", &d.direction)?,
+            )?),
+            S::Coons(d) => Box::new(CoonsPatch::new(
+                d.bottom.build_in::<D>().map_err(|e| e.within("bottom"))?,
+                d.top.build_in::<D>().map_err(|e| e.within("top"))?,
+                d.left.build_in::<D>().map_err(|e| e.within("left"))?,
+                d.right.build_in::<D>().map_err(|e| e.within("right"))?,
+                if d.blend == "cubic" { CoonsBlend::Cubic } else { CoonsBlend::Linear },
+            )?),
             model => {
                 let s3: Box<dyn Surface<3>> = match model {
+                    S::Revolution(d) => {
+                        if d.curve.dimension().map_err(|e| e.within("curve"))? != 3 {
+                            return Err(DocumentError::new("curve", "the profile of a revolution must be a 3-D curve"));
+                        }
+                        Box::new(RevolvedSurface::new(
+                            d.curve.build_in::<3>().map_err(|e| e.within("curve"))?,
+                            to_point("axis_point", &d.axis_point)?,
+                            to_point("axis", &d.axis)?,
+                            d.angle,
+                        )?)
+                    }
                     S::Plane(d) => Box::new(Plane::new(
                         to_point("origin", &d.origin)?,
                         to_point("u_axis", &d.u_axis)?,

@@ -8,7 +8,8 @@ use smallvec::SmallVec;
 use crate::Point;
 use crate::curve::Interval;
 
-/// One term a cos(ω t + φ).
+/// One term a cos(ω t + φ) or a sin(ω t + φ). Sines are evaluated as sines (not as
+/// shifted cosines), so sin 0 is exactly 0.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Term {
     /// Amplitude a.
@@ -17,16 +18,18 @@ pub struct Term {
     pub frequency: f64,
     /// Phase φ.
     pub phase: f64,
+    /// Sine instead of cosine.
+    pub sine: bool,
 }
 
 impl Term {
     /// a cos(ω t).
     pub const fn cos(amplitude: f64, frequency: f64) -> Self {
-        Term { amplitude, frequency, phase: 0.0 }
+        Term { amplitude, frequency, phase: 0.0, sine: false }
     }
-    /// a sin(ω t) = a cos(ω t − π/2).
+    /// a sin(ω t).
     pub const fn sin(amplitude: f64, frequency: f64) -> Self {
-        Term { amplitude, frequency, phase: -std::f64::consts::FRAC_PI_2 }
+        Term { amplitude, frequency, phase: 0.0, sine: true }
     }
 }
 
@@ -61,11 +64,11 @@ impl TrigSeries {
         };
         for term in &self.terms {
             let (s, c) = (term.frequency * t + term.phase).sin_cos();
-            // cos(x + kπ/2) cycles through cos, −sin, −cos, sin.
-            let base = match k % 4 {
-                0 => c,
-                1 => -s,
-                2 => -c,
+            // d/dx cycles cos → −sin → −cos → sin and sin → cos → −sin → −cos.
+            let base = match (term.sine, k % 4) {
+                (false, 0) | (true, 1) => c,
+                (false, 1) | (true, 2) => -s,
+                (false, 2) | (true, 3) => -c,
                 _ => s,
             };
             v += term.amplitude * term.frequency.powi(k as i32) * base;
