@@ -286,7 +286,8 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         if doc.trim_start().starts_with("{\"params\"") {
             continue;
         }
-        let surface = ["surface\"", "\"torus\"", "\"revolution\"", "\"coons\""].iter().any(|k| doc.contains(k));
+        let surface =
+            ["surface\"", "\"torus\"", "\"revolution\"", "\"coons\"", "\"sweep\""].iter().any(|k| doc.contains(k));
         let args: &[&str] = if surface {
             &["eval", "-", "--grid", "5,1", "--derivatives", "1"]
         } else {
@@ -296,7 +297,7 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         assert_eq!(v["points"].as_array().unwrap().len(), 5, "{doc}");
         count += 1;
     }
-    assert!(count >= 14, "only {count} examples found");
+    assert!(count >= 15, "only {count} examples found");
 }
 
 fn temp_dir(name: &str) -> std::path::PathBuf {

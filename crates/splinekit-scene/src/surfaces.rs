@@ -4,7 +4,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use splinekit::Point;
-use splinekit::surface::derived::{CoonsBlend, CoonsPatch, Extrusion, RevolvedSurface, RuledSurface};
+use splinekit::surface::derived::{CoonsBlend, CoonsPatch, Extrusion, RevolvedSurface, RuledSurface, SweepSurface};
 use splinekit::surface::model::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
 };
@@ -328,6 +328,24 @@ pub struct CoonsDoc {
     pub blend: String,
 }
 
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawSweep {
+    profile: Value,
+    path: Value,
+}
+
+/// `{"type":"sweep","profile":{…},"path":{…}}`: the profile (x, y in the path's normal
+/// plane, z along the tangent) carried along the path by a rotation-minimising frame; u is
+/// the profile's parameter, v the path's. Both curves are 3-D.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SweepDoc {
+    /// The cross-section.
+    pub profile: Box<CurveDocument>,
+    /// The spine.
+    pub path: Box<CurveDocument>,
+}
+
 fn nested(value: &Value, field: &str) -> Result<Box<CurveDocument>> {
     CurveDocument::parse(value).map(Box::new).map_err(|e| e.within(field))
 }
@@ -356,6 +374,7 @@ pub enum SurfaceDocument {
     Ruled(RuledDoc),
     Extrusion(ExtrusionDoc),
     Coons(CoonsDoc),
+    Sweep(SweepDoc),
 }
 
 /// The surface `type` names, for messages.
@@ -511,6 +530,10 @@ impl SurfaceDocument {
                     blend: r.blend,
                 })
             }
+            "sweep" => {
+                let r: RawSweep = fields(rest)?;
+                S::Sweep(SweepDoc { profile: nested(&r.profile, "profile")?, path: nested(&r.path, "path")? })
+            }
             _ => return Ok(None),
         }))
     }
@@ -597,7 +620,14 @@ impl SurfaceDocument {
                 if d.blend == "cubic" { CoonsBlend::Cubic } else { CoonsBlend::Linear },
             )?),
             model => {
+                let three = |c: &CurveDocument, field: &str| -> Result<Box<dyn splinekit::curve::Curve<3>>> {
+                    if c.dimension().map_err(|e| e.within(field))? != 3 {
+                        return Err(DocumentError::new(field, "must be a 3-D curve"));
+                    }
+                    c.build_in::<3>().map_err(|e| e.within(field))
+                };
                 let s3: Box<dyn Surface<3>> = match model {
+                    S::Sweep(d) => Box::new(SweepSurface::new(three(&d.profile, "profile")?, three(&d.path, "path")?)?),
                     S::Revolution(d) => {
                         if d.curve.dimension().map_err(|e| e.within("curve"))? != 3 {
                             return Err(DocumentError::new("curve", "the profile of a revolution must be a 3-D curve"));

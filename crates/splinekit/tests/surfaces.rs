@@ -608,3 +608,81 @@ fn derived_surfaces_revolution_ruled_extrusion_coons() {
     );
     assert!(bad.err().unwrap().to_string().contains("bottom end and right start"));
 }
+
+#[test]
+fn rational_bezier_surfaces_and_v_isocurves() {
+    // A quarter cylinder: the rational quadratic arc in u, straight in v.
+    let w = std::f64::consts::FRAC_1_SQRT_2;
+    let net = vec![
+        vec![p3(1.0, 0.0, 0.0), p3(1.0, 0.0, 2.0)],
+        vec![p3(1.0, 1.0, 0.0), p3(1.0, 1.0, 2.0)],
+        vec![p3(0.0, 1.0, 0.0), p3(0.0, 1.0, 2.0)],
+    ];
+    let s = NurbsSurface::rational_bezier(net, vec![vec![1.0, 1.0], vec![w, w], vec![1.0, 1.0]]).unwrap();
+    for a in 0..=10 {
+        let p = s.point(a as f64 / 10.0, 0.37);
+        assert!((p[0].hypot(p[1]) - 1.0).abs() < 1e-15 && (p[2] - 0.74).abs() < 1e-15);
+    }
+    check_partials(&s, "rational bezier surface");
+    let b = sample_surface();
+    let iso = b.iso_curve_v(1.7).unwrap();
+    for k in 0..=20 {
+        let u = k as f64 / 20.0;
+        assert!((iso.point(u) - b.point(u, 1.7)).norm() < 1e-13);
+    }
+}
+
+#[test]
+fn sweeps_with_rotation_minimising_frames() {
+    use splinekit::curve::model::{Circle, Helix, Line};
+    use splinekit::surface::derived::SweepSurface;
+    let tube = || -> Box<dyn Curve<3>> { Box::new(Circle::new(0.3).unwrap()) };
+    // Along a line: a cylinder of radius 0.3 about the line.
+    let line = SweepSurface::new(tube(), Box::new(Line::new(p3(0.0, 0.0, 0.0), p3(1.0, 2.0, 2.0)).unwrap())).unwrap();
+    let axis = p3(1.0, 2.0, 2.0) / 3.0;
+    for a in 0..=8 {
+        for b in 0..=8 {
+            let p = line.point(TAU * a as f64 / 8.0, b as f64 / 8.0);
+            assert!(((p - axis * axis.dot(&p)).norm() - 0.3).abs() < 1e-14);
+        }
+    }
+    // Along a helix: every point is 0.3 from the path point, in its normal plane.
+    let helix = Helix::new(2.0, 3.0, 2.0).unwrap();
+    let s = SweepSurface::new(tube(), Box::new(helix.clone())).unwrap();
+    for b in 0..=40 {
+        let v = helix.domain().lerp(b as f64 / 40.0);
+        let (c, t) = (helix.point(v), helix.tangent(v));
+        for a in 0..8 {
+            let p = s.point(TAU * a as f64 / 8.0, v);
+            assert!(((p - c).norm() - 0.3).abs() < 1e-13);
+            assert!((p - c).dot(&t).abs() < 1e-13);
+        }
+        // Rotation-minimising: the numerical frame does not turn about the tangent.
+        let h = 1e-5;
+        let r = |x: f64| (s.point(0.0, x) - helix.point(x)) / 0.3;
+        let rv = (r(v + h) - r(v - h)) / (2.0 * h);
+        let sn = t.cross(&r(v));
+        if b > 0 && b < 40 {
+            assert!(rv.dot(&sn).abs() < 1e-7, "frame twists at v = {v}: {}", rv.dot(&sn));
+        }
+    }
+    check_partials(&s, "sweep along helix");
+    // Along a closed planar circle: the RMF has no holonomy; the sweep is the torus.
+    let ring = SweepSurface::new(tube(), Box::new(Circle::new(3.0).unwrap())).unwrap();
+    assert!(ring.is_closed_u() && ring.is_closed_v());
+    for a in 0..=8 {
+        for b in 0..=8 {
+            let p = ring.point(TAU * a as f64 / 8.0, TAU * b as f64 / 8.0);
+            let centre = p3(p[0], p[1], 0.0).normalize() * 3.0;
+            assert!(((p - centre).norm() - 0.3).abs() < 1e-12);
+        }
+        let (start, end) = (ring.point(TAU * a as f64 / 8.0, 0.0), ring.point(TAU * a as f64 / 8.0, TAU));
+        assert!((start - end).norm() < 1e-12);
+    }
+    // A closed non-planar path (trefoil): the twist is spread, and the surface closes.
+    let knot = SweepSurface::new(tube(), Box::new(splinekit::curve::model::Trefoil::new(1.0).unwrap())).unwrap();
+    for a in 0..8 {
+        let u = TAU * a as f64 / 8.0;
+        assert!((knot.point(u, 0.0) - knot.point(u, TAU - 1e-9)).norm() < 1e-7, "trefoil tube closes at u = {u}");
+    }
+}

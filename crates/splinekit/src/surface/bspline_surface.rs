@@ -80,6 +80,26 @@ impl<const D: usize> BSplineSurface<D> {
         }
     }
 
+    /// The isocurve v = v₀ as a B-spline in u (exact: control points Σ_j M_j(v₀) P_ij).
+    pub fn iso_curve_v(&self, v0: f64) -> Result<BSplineCurve<D>> {
+        let (pu, pv) = self.degrees();
+        let v = self.spline.v.normalise(v0);
+        let sv = self.spline.v.span(v);
+        let mut nb = vec![0.0; pv + 1];
+        crate::basis::basis_functions(self.spline.v.eval_knots(), pv, sv, v, &mut nb);
+        let nv = self.net[0].len();
+        let pts: Vec<Point<D>> = self
+            .net
+            .iter()
+            .map(|row| (0..=pv).fold(Point::<D>::zeros(), |acc, r| acc + row[(sv - pv + r) % nv] * nb[r]))
+            .collect();
+        if self.spline.u.is_periodic() {
+            BSplineCurve::new_periodic(pu, self.spline.u.knots().to_vec(), pts)
+        } else {
+            BSplineCurve::new(pu, self.spline.u.knots().to_vec(), pts)
+        }
+    }
+
     /// The same surface with every control point mapped by `f` (exact for affine maps).
     pub fn map_points(&self, f: impl Fn(&Point<D>) -> Point<D>) -> Self {
         let net = self.net.iter().map(|r| r.iter().map(&f).collect()).collect();

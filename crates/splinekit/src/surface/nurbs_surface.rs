@@ -60,6 +60,18 @@ impl<const D: usize> NurbsSurface<D> {
         Ok(NurbsSurface { net, weights, spline })
     }
 
+    /// The rational Bézier surface Σ B_{i,m}(u) B_{j,n}(v) w_ij P_ij / Σ B B w on [0, 1]²
+    /// (a NURBS surface with a single span in each direction).
+    pub fn rational_bezier(net: Vec<Vec<Point<D>>>, weights: Vec<Vec<f64>>) -> Result<Self> {
+        let (nu, nv) = net_shape(&net, "control_points")?;
+        let bezier_knots = |n: usize| {
+            let mut k = vec![0.0; n];
+            k.extend(vec![1.0; n]);
+            k
+        };
+        Self::new((nu - 1, nv - 1), bezier_knots(nu), bezier_knots(nv), net, weights, (false, false))
+    }
+
     /// Degrees (p, q).
     pub fn degrees(&self) -> (usize, usize) {
         (self.spline.u.degree(), self.spline.v.degree())

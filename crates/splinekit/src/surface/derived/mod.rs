@@ -5,11 +5,13 @@ pub mod coons;
 pub mod extrusion;
 pub mod revolved;
 pub mod ruled;
+pub mod sweep;
 
 pub use coons::{CoonsBlend, CoonsPatch};
 pub use extrusion::Extrusion;
 pub use revolved::RevolvedSurface;
 pub use ruled::RuledSurface;
+pub use sweep::SweepSurface;
 
 use crate::Point;
 use crate::curve::{Curve, Interval};
