@@ -140,17 +140,14 @@ impl Surface<3> for SweepSurface {
             }
             // Higher v-orders: central differences of ∂S/∂v, order j − 1 recursively.
             for j in 2..=dv {
+                // The (j − 1)-th derivative of S_v by a central difference of S_v.
                 let k = j - 1;
-                let g = |x: f64| -> Point<3> {
-                    // k-th derivative of S_v at x by a k-fold central difference of S_v.
-                    let mut acc = Point::<3>::zeros();
-                    for m in 0..=k {
-                        let coef = crate::basis::binomial(k, m) * if m % 2 == 0 { 1.0 } else { -1.0 };
-                        acc += self.first(&p[i], i == 0, x + (k as f64 / 2.0 - m as f64) * h).1 * coef;
-                    }
-                    acc / h.powi(k as i32)
-                };
-                out[i * (dv + 1) + j] = g(v);
+                let mut acc = Point::<3>::zeros();
+                for m in 0..=k {
+                    let coef = crate::basis::binomial(k, m) * if m % 2 == 0 { 1.0 } else { -1.0 };
+                    acc += self.first(&p[i], i == 0, v + (k as f64 / 2.0 - m as f64) * h).1 * coef;
+                }
+                out[i * (dv + 1) + j] = acc / h.powi(k as i32);
             }
         }
     }
