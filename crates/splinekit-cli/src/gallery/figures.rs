@@ -322,3 +322,151 @@ pub fn model_curves() -> Result<Vec<Figure>> {
     }
     Ok(out)
 }
+
+/// Draws `lines` isoparametric curves in each direction of a surface.
+fn wireframe(
+    fig: &mut SvgFigure,
+    s: &dyn splinekit::surface::Surface<3>,
+    lines: (usize, usize),
+    colour: &str,
+    width: f64,
+) {
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    let samples = 96;
+    let count = |n: usize, closed: bool| if closed { n } else { n + 1 };
+    for a in 0..count(lines.0, s.is_closed_u()) {
+        let u = du.lerp(a as f64 / lines.0 as f64);
+        let pts: Vec<Point<3>> = (0..=samples).map(|k| s.point(u, dv.lerp(k as f64 / samples as f64))).collect();
+        fig.path(&pts, false, colour, width);
+    }
+    for b in 0..count(lines.1, s.is_closed_v()) {
+        let v = dv.lerp(b as f64 / lines.1 as f64);
+        let pts: Vec<Point<3>> = (0..=samples).map(|k| s.point(du.lerp(k as f64 / samples as f64), v)).collect();
+        fig.path(&pts, false, colour, width);
+    }
+}
+
+/// Surface figures: tensor products, exact NURBS quadrics, derived and model surfaces.
+pub fn surfaces() -> Result<Vec<Figure>> {
+    use splinekit::curve::model::{Helix, Line, Trefoil};
+    use splinekit::surface::derived::{CoonsBlend, CoonsPatch, RevolvedSurface, SweepSurface};
+    use splinekit::surface::model::{Apple, KleinBottle, MobiusStrip, Seashell};
+    use splinekit::surface::{BezierSurface, NurbsSurface, Surface};
+    let p3 = |x: f64, y: f64, z: f64| Point::<3>::new(x, y, z);
+    let view = Projection::view(0.7, 0.45);
+    let mut out = Vec::new();
+
+    let net: Vec<Vec<Point<3>>> = (0..4)
+        .map(|i| {
+            (0..4)
+                .map(|j| p3(i as f64, j as f64, if (1..3).contains(&i) && (1..3).contains(&j) { 2.0 } else { 0.0 }))
+                .collect()
+        })
+        .collect();
+    let bez = BezierSurface::new(net.clone())?;
+    let mut fig = SvgFigure::new(W, H, view).title("Bicubic Bézier surface and its control net");
+    for row in &net {
+        fig.dashed(row, false, POLYGON, 1.0);
+    }
+    for j in 0..4 {
+        let col: Vec<Point<3>> = net.iter().map(|r| r[j]).collect();
+        fig.dashed(&col, false, POLYGON, 1.0);
+    }
+    wireframe(&mut fig, &bez, (12, 12), CURVE, 1.2);
+    fig.dots(&net.concat(), 3.5, POINTS);
+    out.push(Figure {
+        file: "bezier_surface.svg",
+        caption: "A bicubic Bézier surface (isoparametric lines) with its 4 × 4 control net (dashed): the four inner points are lifted.".into(),
+        svg: fig.render(),
+    });
+
+    let torus = NurbsSurface::torus(3.0, 1.0)?;
+    let mut fig = SvgFigure::new(W, H, view).title("Exact NURBS torus, degree (2, 2), 9 × 9 control points");
+    wireframe(&mut fig, &torus, (24, 12), CURVE, 1.0);
+    out.push(Figure {
+        file: "nurbs_torus.svg",
+        caption: "The rational biquadratic torus, made by revolving the NURBS circle of the tube about the z-axis: exact to rounding.".into(),
+        svg: fig.render(),
+    });
+
+    let vase = splinekit::curve::BSplineCurve::clamped_uniform(
+        3,
+        vec![p3(1.0, 0.0, 0.0), p3(2.0, 0.0, 1.0), p3(0.6, 0.0, 2.5), p3(0.8, 0.0, 3.5), p3(1.4, 0.0, 4.0)],
+    )?;
+    let rev =
+        RevolvedSurface::new(Box::new(vase.clone()), Point::<3>::zeros(), Point::<3>::z(), 1.5 * std::f64::consts::PI)?;
+    let mut fig = SvgFigure::new(W, H, Projection::view(0.9, 0.3))
+        .title("Surface of revolution: a B-spline profile turned by 270°");
+    wireframe(&mut fig, &rev, (18, 12), CURVE, 1.0);
+    fig.path(&Polyline::regular(&vase, 100)?.points, false, POINTS, 2.5);
+    out.push(Figure {
+        file: "revolution.svg",
+        caption: "A cubic B-spline profile (red) revolved 270° about the z-axis.".into(),
+        svg: fig.render(),
+    });
+
+    let sweep = SweepSurface::new(Box::new(Circle::new(0.35)?), Box::new(Trefoil::new(1.0)?))?;
+    let mut fig = SvgFigure::new(W, H, Projection::view(0.0, 1.3))
+        .title("Sweep: a circle along the trefoil, rotation-minimising frame");
+    wireframe(&mut fig, &sweep, (10, 96), CURVE, 0.8);
+    out.push(Figure {
+        file: "sweep.svg",
+        caption: "A circle of radius 0.35 swept along the trefoil knot with a rotation-minimising frame (double reflection); the frame's twist is spread so the tube closes.".into(),
+        svg: fig.render(),
+    });
+    let spring = SweepSurface::new(Box::new(Circle::new(0.25)?), Box::new(Helix::new(1.5, 1.2, 3.0)?))?;
+    let mut fig = SvgFigure::new(W, H, Projection::view(0.5, 0.25)).title("Sweep along a helix");
+    wireframe(&mut fig, &spring, (8, 120), CURVE, 0.8);
+    out.push(Figure {
+        file: "sweep_helix.svg",
+        caption: "A circle swept along a three-turn helix: a spring.".into(),
+        svg: fig.render(),
+    });
+
+    let b = |pts: &[[f64; 3]]| -> Result<Box<dyn splinekit::curve::Curve<3>>> {
+        Ok(Box::new(BezierCurve::new(pts.iter().map(|p| p3(p[0], p[1], p[2])).collect())?))
+    };
+    let coons = CoonsPatch::new(
+        b(&[[0.0, 0.0, 0.0], [1.0, -0.5, 1.0], [2.0, 0.0, 0.0]])?,
+        b(&[[0.0, 2.0, 0.5], [1.0, 2.5, -0.5], [2.0, 2.0, 1.0]])?,
+        b(&[[0.0, 0.0, 0.0], [-0.5, 1.0, 0.8], [0.0, 2.0, 0.5]])?,
+        Box::new(Line::new(p3(2.0, 0.0, 0.0), p3(2.0, 2.0, 1.0))?),
+        CoonsBlend::Cubic,
+    )?;
+    let mut fig = SvgFigure::new(W, H, view).title("Bicubically blended Coons patch");
+    wireframe(&mut fig, &coons, (12, 12), CURVE, 1.0);
+    out.push(Figure {
+        file: "coons.svg",
+        caption: "A Coons patch spanned by three Bézier boundary curves and one straight edge, blended with cubic Hermite functions.".into(),
+        svg: fig.render(),
+    });
+
+    let models: Vec<(&'static str, &str, Box<dyn Surface<3>>, Projection, (usize, usize))> = vec![
+        (
+            "klein_bottle.svg",
+            "Figure-8 Klein bottle",
+            Box::new(KleinBottle::new(3.0)?),
+            Projection::view(0.6, 0.6),
+            (32, 16),
+        ),
+        (
+            "seashell.svg",
+            "Seashell",
+            Box::new(Seashell::new(1.0, 2.0, 0.1, 2.0)?),
+            Projection::view(0.5, 0.5),
+            (16, 48),
+        ),
+        ("apple.svg", "GMlib's apple", Box::new(Apple::new(1.0)?), Projection::view(0.5, 0.2), (24, 24)),
+        ("mobius.svg", "Möbius strip", Box::new(MobiusStrip::new(1.0, 0.4)?), Projection::view(0.4, 0.7), (48, 6)),
+    ];
+    for (file, title, s, proj, lines) in models {
+        let mut fig = SvgFigure::new(W, H, proj).title(title);
+        wireframe(&mut fig, s.as_ref(), lines, CURVE, 0.8);
+        out.push(Figure {
+            file,
+            caption: format!("Model surface: {title}, with exact partial derivatives of every order."),
+            svg: fig.render(),
+        });
+    }
+    Ok(out)
+}
