@@ -441,7 +441,9 @@ pub fn surfaces() -> Result<Vec<Figure>> {
         svg: fig.render(),
     });
 
-    let models: Vec<(&'static str, &str, Box<dyn Surface<3>>, Projection, (usize, usize))> = vec![
+    /// File, title, surface, view, isoline counts.
+    type ModelFigure = (&'static str, &'static str, Box<dyn Surface<3>>, Projection, (usize, usize));
+    let models: Vec<ModelFigure> = vec![
         (
             "klein_bottle.svg",
             "Figure-8 Klein bottle",
