@@ -686,3 +686,49 @@ fn sweeps_with_rotation_minimising_frames() {
         assert!((knot.point(u, 0.0) - knot.point(u, TAU - 1e-9)).norm() < 1e-7, "trefoil tube closes at u = {u}");
     }
 }
+
+#[test]
+fn lofting_through_sections() {
+    use splinekit::curve::BSplineCurve;
+    use splinekit::fit::Parametrization;
+    // Sections of a surface that is cubic in v: lofting with uniform parameters gives it back.
+    let net: Vec<Vec<Point<3>>> =
+        (0..4).map(|i| (0..3).map(|j| p3(j as f64, i as f64, ((i * 3 + j) % 4) as f64 * 0.5)).collect()).collect();
+    let s = BSplineSurface::clamped_uniform((3, 2), net).unwrap();
+    // Sections v_k are u-isocurves of the transposed roles: take curves along the 2nd index.
+    let sections: Vec<BSplineCurve<3>> = (0..5).map(|k| s.iso_curve_u(k as f64 / 4.0).unwrap()).collect();
+    let loft = BSplineSurface::loft(&sections, 3, Parametrization::Uniform).unwrap();
+    for a in 0..=10 {
+        for b in 0..=10 {
+            let (u, v) = (a as f64 / 10.0, b as f64 / 10.0);
+            // loft(u = section parameter, v = across sections) = s(v, u).
+            assert!((loft.point(u, v) - s.point(v, u)).norm() < 1e-12, "({u}, {v})");
+        }
+    }
+    // Sections of different degrees and knots are made compatible and interpolated.
+    let line = BSplineCurve::new(1, vec![0.0, 0.0, 2.0, 2.0], vec![p3(0.0, 0.0, 0.0), p3(2.0, 0.0, 0.0)]).unwrap();
+    let quad = BSplineCurve::clamped_uniform(2, vec![p3(0.0, 1.0, 0.5), p3(1.0, 1.0, 1.5), p3(2.0, 1.0, 0.5)]).unwrap();
+    let cubic = BSplineCurve::new(
+        3,
+        vec![0.0, 0.0, 0.0, 0.0, 0.3, 0.6, 1.0, 1.0, 1.0, 1.0],
+        vec![
+            p3(0.0, 2.0, 0.0),
+            p3(0.5, 2.2, 0.3),
+            p3(1.0, 2.0, -0.4),
+            p3(1.5, 1.8, 0.2),
+            p3(1.8, 2.1, 0.0),
+            p3(2.0, 2.0, 0.0),
+        ],
+    )
+    .unwrap();
+    let loft = BSplineSurface::loft(&[line.clone(), quad.clone(), cubic.clone()], 2, Parametrization::Uniform).unwrap();
+    assert_eq!(loft.degrees(), (3, 2));
+    for a in 0..=20 {
+        let t = a as f64 / 20.0;
+        assert!((loft.point(t, 0.0) - line.point(2.0 * t)).norm() < 1e-13);
+        assert!((loft.point(t, 0.5) - quad.point(t)).norm() < 1e-13);
+        assert!((loft.point(t, 1.0) - cubic.point(t)).norm() < 1e-13);
+    }
+    assert!(BSplineSurface::loft(&[line.clone()], 1, Parametrization::Uniform).is_err());
+    assert!(BSplineSurface::loft(&[line, quad], 2, Parametrization::Uniform).is_err());
+}

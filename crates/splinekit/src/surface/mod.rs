@@ -6,6 +6,7 @@ pub mod bspline_surface;
 pub mod closest_point;
 pub mod derived;
 pub mod iso_curve;
+pub mod loft;
 pub mod model;
 pub mod nurbs_surface;
 pub mod revolution;
