@@ -56,6 +56,13 @@ fn bench(c: &mut Criterion) {
             normals[n * n / 2][0]
         })
     });
+    #[cfg(feature = "parallel")]
+    g.bench_function("bicubic B-spline: eval_grid_with_normals, all cores (rayon)", |b| {
+        b.iter(|| {
+            splinekit::surface::parallel::eval_grid_with_normals(&s, black_box(&us), &us, &mut points, &mut normals);
+            normals[n * n / 2][0]
+        })
+    });
     g.finish();
 }
 

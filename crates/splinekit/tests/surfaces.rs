@@ -729,6 +729,25 @@ fn lofting_through_sections() {
         assert!((loft.point(t, 0.5) - quad.point(t)).norm() < 1e-13);
         assert!((loft.point(t, 1.0) - cubic.point(t)).norm() < 1e-13);
     }
-    assert!(BSplineSurface::loft(&[line.clone()], 1, Parametrization::Uniform).is_err());
+    assert!(BSplineSurface::loft(std::slice::from_ref(&line), 1, Parametrization::Uniform).is_err());
     assert!(BSplineSurface::loft(&[line, quad], 2, Parametrization::Uniform).is_err());
+}
+
+#[cfg(feature = "parallel")]
+#[test]
+fn parallel_grids_equal_serial_grids() {
+    let s = sample_surface();
+    let us: Vec<f64> = (0..101).map(|i| i as f64 / 100.0).collect();
+    let vs: Vec<f64> = (0..57).map(|j| 3.0 * j as f64 / 56.0).collect();
+    let (mut p1, mut n1) = (vec![Point::<3>::zeros(); 101 * 57], vec![Point::<3>::zeros(); 101 * 57]);
+    let (mut p2, mut n2) = (p1.clone(), n1.clone());
+    s.eval_grid_with_normals(&us, &vs, &mut p1, &mut n1);
+    splinekit::surface::parallel::eval_grid_with_normals(&s, &us, &vs, &mut p2, &mut n2);
+    assert_eq!(p1, p2);
+    assert_eq!(n1, n2);
+    let mut g1 = vec![Point::<3>::zeros(); 101 * 57 * 9];
+    let mut g2 = g1.clone();
+    s.eval_grid(&us, &vs, 2, 2, &mut g1);
+    splinekit::surface::parallel::eval_grid(&s, &us, &vs, 2, 2, &mut g2);
+    assert_eq!(g1, g2);
 }

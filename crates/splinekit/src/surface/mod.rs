@@ -9,6 +9,8 @@ pub mod iso_curve;
 pub mod loft;
 pub mod model;
 pub mod nurbs_surface;
+#[cfg(feature = "parallel")]
+pub mod parallel;
 pub mod revolution;
 pub mod surface_ops;
 pub mod tensor;
