@@ -286,8 +286,9 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         if doc.trim_start().starts_with("{\"params\"") {
             continue;
         }
-        let surface =
-            ["surface\"", "\"torus\"", "\"revolution\"", "\"coons\"", "\"sweep\""].iter().any(|k| doc.contains(k));
+        let surface = ["surface\"", "\"torus\"", "\"revolution\"", "\"coons\"", "\"sweep\"", "\"trimmed\""]
+            .iter()
+            .any(|k| doc.contains(k));
         let args: &[&str] = if surface {
             &["eval", "-", "--grid", "5,1", "--derivatives", "1"]
         } else {
@@ -297,7 +298,7 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         assert_eq!(v["points"].as_array().unwrap().len(), 5, "{doc}");
         count += 1;
     }
-    assert!(count >= 15, "only {count} examples found");
+    assert!(count >= 16, "only {count} examples found");
 }
 
 fn temp_dir(name: &str) -> std::path::PathBuf {
@@ -466,5 +467,30 @@ fn derived_surface_documents() {
         &["eval", "-", "--at", "0:0"],
         r#"{"type":"coons","bottom":{"type":"line","from":[0,0,0],"to":[1,0,0]},"top":{"type":"line","from":[0,1,0],"to":[1,1,0]},"left":{"type":"line","from":[0,0,0],"to":[0,1,0]},"right":{"type":"line","from":[1,0,0],"to":[1,1,0]},"blend":"quintic"}"#,
         "blend",
+    );
+}
+
+#[test]
+fn trimmed_surface_documents_report_containment() {
+    let doc = r#"{"type":"trimmed","surface":{"type":"plane"},"holes":[{"type":"catmull_rom","points":[[0.4,0.4],[0.6,0.4],[0.6,0.6],[0.4,0.6]],"closed":true}]}"#;
+    let v = ok_json(&["eval", "-", "--at", "0.5:0.5,0.1:0.1"], doc);
+    assert_eq!(v["inside"], json!([false, true]));
+    assert_eq!(v["points"][1], json!([0.1, 0.1, 0.0]));
+    let v = ok_json(&["eval", "-", "--at", "0.5:0.5"], r#"{"type":"plane"}"#);
+    assert!(v.get("inside").is_none());
+    assert_bad(
+        &["eval", "-", "--at", "0:0"],
+        r#"{"type":"trimmed","surface":{"type":"plane"},"outer":{"type":"line","from":[0,0],"to":[1,1]}}"#,
+        "outer: a trimming loop must be closed",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0:0"],
+        r#"{"type":"trimmed","surface":{"type":"plane"},"outer":{"type":"circle"}}"#,
+        "outer: a trimming loop must be a 2-D curve",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0:0"],
+        r#"{"type":"trimmed","surface":{"type":"circle"}}"#,
+        "surface.type: expected a surface type",
     );
 }

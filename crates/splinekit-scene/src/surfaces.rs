@@ -8,7 +8,7 @@ use splinekit::surface::derived::{CoonsBlend, CoonsPatch, Extrusion, RevolvedSur
 use splinekit::surface::model::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
 };
-use splinekit::surface::{BSplineSurface, BezierSurface, NurbsSurface, Surface};
+use splinekit::surface::{BSplineSurface, BezierSurface, NurbsSurface, Surface, TrimmedSurface};
 
 use crate::curves::CurveDocument;
 
@@ -346,6 +346,39 @@ pub struct SweepDoc {
     pub path: Box<CurveDocument>,
 }
 
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawTrimmed {
+    surface: Value,
+    #[serde(default)]
+    outer: Option<Value>,
+    #[serde(default)]
+    holes: Vec<Value>,
+}
+
+/// `{"type":"trimmed","surface":{…},"outer":{…},"holes":[{…}]}`: the surface restricted to
+/// the inside of `outer` (default: the whole domain) and outside every hole; loops are
+/// closed 2-D curves in the surface's (u, v) domain.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TrimmedDoc {
+    /// The underlying surface.
+    pub surface: Box<SurfaceDocument>,
+    /// The outer trimming loop.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outer: Option<Box<CurveDocument>>,
+    /// Holes.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub holes: Vec<CurveDocument>,
+}
+
+fn nested_surface(value: &Value, field: &str) -> Result<Box<SurfaceDocument>> {
+    let (ty, rest) = crate::curves::split_type(value).map_err(|e| e.within(field))?;
+    SurfaceDocument::parse_typed(&ty, rest)
+        .map_err(|e| e.within(field))?
+        .map(Box::new)
+        .ok_or_else(|| DocumentError::new(format!("{field}.type"), format!("expected a surface type, got \"{ty}\"")))
+}
+
 fn nested(value: &Value, field: &str) -> Result<Box<CurveDocument>> {
     CurveDocument::parse(value).map(Box::new).map_err(|e| e.within(field))
 }
@@ -375,6 +408,7 @@ pub enum SurfaceDocument {
     Extrusion(ExtrusionDoc),
     Coons(CoonsDoc),
     Sweep(SweepDoc),
+    Trimmed(TrimmedDoc),
 }
 
 /// The surface `type` names, for messages.
@@ -530,6 +564,19 @@ impl SurfaceDocument {
                     blend: r.blend,
                 })
             }
+            "trimmed" => {
+                let r: RawTrimmed = fields(rest)?;
+                S::Trimmed(TrimmedDoc {
+                    surface: nested_surface(&r.surface, "surface")?,
+                    outer: r.outer.as_ref().map(|o| nested(o, "outer")).transpose()?,
+                    holes: r
+                        .holes
+                        .iter()
+                        .enumerate()
+                        .map(|(i, h)| nested(h, &format!("holes[{i}]")).map(|b| *b))
+                        .collect::<Result<_>>()?,
+                })
+            }
             "sweep" => {
                 let r: RawSweep = fields(rest)?;
                 S::Sweep(SweepDoc { profile: nested(&r.profile, "profile")?, path: nested(&r.path, "path")? })
@@ -550,6 +597,7 @@ impl SurfaceDocument {
             SurfaceDocument::BsplineSurface(d) => net_dimension("control_points", &d.control_points),
             SurfaceDocument::NurbsSurface(d) => net_dimension("control_points", &d.control_points),
             SurfaceDocument::Ruled(d) => same_dimension(&[("first", &d.first), ("second", &d.second)]),
+            SurfaceDocument::Trimmed(d) => d.surface.dimension().map_err(|e| e.within("surface")),
             SurfaceDocument::Extrusion(d) => {
                 let dim = d.curve.dimension().map_err(|e| e.within("curve"))?;
                 if d.direction.len() != dim {
@@ -602,6 +650,26 @@ impl SurfaceDocument {
                     net_points::<D>(&d.control_points),
                     d.weights.clone(),
                     (d.periodic_u, d.periodic_v),
+                )?)
+            }
+            S::Trimmed(d) => {
+                let loop2 = |c: &CurveDocument, field: &str| -> Result<Box<dyn splinekit::curve::Curve<2>>> {
+                    if c.dimension().map_err(|e| e.within(field))? != 2 {
+                        return Err(DocumentError::new(
+                            field,
+                            "a trimming loop must be a 2-D curve in the (u, v) domain",
+                        ));
+                    }
+                    c.build_in::<2>().map_err(|e| e.within(field))
+                };
+                let outer = d.outer.as_ref().map(|o| loop2(o, "outer")).transpose()?;
+                let holes: Vec<Box<dyn splinekit::curve::Curve<2>>> =
+                    d.holes.iter().enumerate().map(|(i, h)| loop2(h, &format!("holes[{i}]"))).collect::<Result<_>>()?;
+                let hole_refs: Vec<&dyn splinekit::curve::Curve<2>> = holes.iter().map(|h| h.as_ref()).collect();
+                Box::new(TrimmedSurface::new(
+                    d.surface.build_in::<D>().map_err(|e| e.within("surface"))?,
+                    outer.as_deref(),
+                    &hole_refs,
                 )?)
             }
             S::Ruled(d) => Box::new(RuledSurface::new(

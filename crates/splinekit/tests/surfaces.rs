@@ -6,6 +6,7 @@ use common::*;
 use proptest::prelude::*;
 use splinekit::Point;
 use splinekit::curve::Curve;
+use splinekit::surface::TrimmedSurface;
 use splinekit::surface::model::*;
 use splinekit::surface::surface_ops::BezierPatch;
 use splinekit::surface::*;
@@ -750,4 +751,33 @@ fn parallel_grids_equal_serial_grids() {
     s.eval_grid(&us, &vs, 2, 2, &mut g1);
     splinekit::surface::parallel::eval_grid(&s, &us, &vs, 2, 2, &mut g2);
     assert_eq!(g1, g2);
+}
+
+#[test]
+fn trimmed_surfaces_test_containment_by_winding() {
+    use splinekit::curve::{BSplineCurve, CatmullRomCurve, Curve};
+    let plane = Plane::new(p3(0.0, 0.0, 0.0), p3(2.0, 0.0, 0.0), p3(0.0, 2.0, 0.0)).unwrap();
+    // Outer loop: a periodic B-spline approximating the circle of radius 0.45 about (½, ½).
+    let ring: Vec<Point<2>> = (0..12)
+        .map(|i| {
+            let a = TAU * i as f64 / 12.0;
+            p2(0.5 + 0.47 * a.cos(), 0.5 + 0.47 * a.sin())
+        })
+        .collect();
+    let outer = BSplineCurve::periodic_uniform(3, ring).unwrap();
+    let hole =
+        CatmullRomCurve::new(vec![p2(0.45, 0.45), p2(0.55, 0.45), p2(0.55, 0.55), p2(0.45, 0.55)], 0.0, true).unwrap();
+    let t = TrimmedSurface::new(Box::new(plane), Some(&outer as &dyn Curve<2>), &[&hole as &dyn Curve<2>]).unwrap();
+    assert!(!t.contains(0.5, 0.5), "inside the hole");
+    assert!(t.contains(0.3, 0.5) && t.contains(0.5, 0.75));
+    assert!(!t.contains(0.02, 0.02), "outside the outer loop");
+    assert!(!t.contains(1.5, 0.5), "outside the domain");
+    assert_eq!(t.trim_contains(0.3, 0.5), Some(true));
+    assert!((t.point(0.25, 0.5) - p3(0.5, 1.0, 0.0)).norm() < 1e-15, "trimming keeps the shape");
+    let open = splinekit::curve::model::Line::new(p2(0.0, 0.0), p2(1.0, 1.0)).unwrap();
+    let e = TrimmedSurface::new(Box::new(Sphere::new(1.0).unwrap()), Some(&open as &dyn Curve<2>), &[])
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(e.starts_with("outer:") && e.contains("closed"), "{e}");
 }

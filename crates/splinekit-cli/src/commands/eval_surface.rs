@@ -132,8 +132,14 @@ impl SurfaceVisitor for EvalSurface<'_> {
         for (key, vals) in partials {
             map.insert(key, Value::Array(vals));
         }
-        let params: Vec<Value> = params.iter().map(|&(u, v)| json!([u, v])).collect();
+        let params_uv = params;
+        let params: Vec<Value> = params_uv.iter().map(|&(u, v)| json!([u, v])).collect();
+        let inside: Option<Vec<bool>> = (s.trim_contains(du.start, dv.start).is_some())
+            .then(|| params_uv.iter().map(|&(u, v)| s.trim_contains(u, v).unwrap_or(true)).collect());
         let mut out = json!({ "params": params, "points": points, "partials": Value::Object(map) });
+        if let Some(inside) = inside {
+            out["inside"] = json!(inside);
+        }
         if D == 3 {
             out["normals"] = Value::Array(normals);
         }

@@ -15,9 +15,11 @@ pub mod revolution;
 pub mod surface_ops;
 pub mod tensor;
 pub mod traits;
+pub mod trimmed;
 
 pub use bezier_surface::BezierSurface;
 pub use bspline_surface::BSplineSurface;
 pub use iso_curve::{Direction, IsoCurve};
 pub use nurbs_surface::NurbsSurface;
 pub use traits::{Curvatures, FundamentalForms, Surface, unit_normal};
+pub use trimmed::TrimmedSurface;

@@ -78,6 +78,12 @@ pub trait Surface<const D: usize> {
         }
     }
 
+    /// For trimmed surfaces, whether (u, v) lies in the trimmed region; `None` for
+    /// untrimmed surfaces (every parameter of the domain belongs to them).
+    fn trim_contains(&self, _u: f64, _v: f64) -> Option<bool> {
+        None
+    }
+
     /// The point S(u, v).
     fn point(&self, u: f64, v: f64) -> Point<D> {
         let mut out = [Point::<D>::zeros()];
@@ -192,5 +198,8 @@ impl<const D: usize, S: Surface<D> + ?Sized> Surface<D> for Box<S> {
     }
     fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
         (**self).eval_grid_with_normals(us, vs, points, normals)
+    }
+    fn trim_contains(&self, u: f64, v: f64) -> Option<bool> {
+        (**self).trim_contains(u, v)
     }
 }

@@ -1,0 +1,111 @@
+//! Trimmed surfaces: a surface restricted to the region of its parameter domain inside an
+//! outer trimming loop and outside any holes. Loops are closed 2-D curves in (u, v).
+//!
+//! Evaluation is the underlying surface's (trimming changes the region, not the shape);
+//! [`TrimmedSurface::contains`] tests a parameter pair with the non-zero winding rule
+//! against each loop, flattened to 64 segments per piece between breakpoints (and at
+//! least 512 per loop).
+
+use crate::Point;
+use crate::curve::{Curve, Interval};
+use crate::error::{Error, Result};
+use crate::surface::Surface;
+
+/// A surface with trimming loops in its parameter domain.
+pub struct TrimmedSurface<const D: usize> {
+    surface: Box<dyn Surface<D>>,
+    outer: Option<Vec<Point<2>>>,
+    holes: Vec<Vec<Point<2>>>,
+}
+
+fn flatten(curve: &dyn Curve<2>, field: &str) -> Result<Vec<Point<2>>> {
+    let d = curve.domain();
+    let (a, b) = (curve.point(d.start), curve.point(d.end));
+    let scale = a.norm().max(b.norm()).max(1.0);
+    if !curve.is_closed() && (a - b).norm() > 1e-9 * scale {
+        return Err(Error::invalid(
+            field,
+            format!("a trimming loop must be closed, but its ends are {} apart", (a - b).norm()),
+        ));
+    }
+    let bps = curve.breakpoints();
+    let per = (512 / (bps.len() - 1).max(1)).max(64);
+    let mut pts = Vec::new();
+    for w in bps.windows(2) {
+        for k in 0..per {
+            pts.push(curve.point(w[0] + (w[1] - w[0]) * k as f64 / per as f64));
+        }
+    }
+    Ok(pts)
+}
+
+/// Winding number of the closed polygon around p.
+fn winding(poly: &[Point<2>], p: &Point<2>) -> i32 {
+    let mut w = 0;
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        let cross = (b[0] - a[0]) * (p[1] - a[1]) - (p[0] - a[0]) * (b[1] - a[1]);
+        if a[1] <= p[1] {
+            if b[1] > p[1] && cross > 0.0 {
+                w += 1;
+            }
+        } else if b[1] <= p[1] && cross < 0.0 {
+            w -= 1;
+        }
+    }
+    w
+}
+
+impl<const D: usize> TrimmedSurface<D> {
+    /// Trims `surface` to the inside of `outer` (whole domain if `None`) minus the holes.
+    pub fn new(surface: Box<dyn Surface<D>>, outer: Option<&dyn Curve<2>>, holes: &[&dyn Curve<2>]) -> Result<Self> {
+        let outer = outer.map(|c| flatten(c, "outer")).transpose()?;
+        let holes =
+            holes.iter().enumerate().map(|(i, c)| flatten(*c, &format!("holes[{i}]"))).collect::<Result<_>>()?;
+        Ok(TrimmedSurface { surface, outer, holes })
+    }
+
+    /// Whether (u, v) lies in the trimmed region.
+    pub fn contains(&self, u: f64, v: f64) -> bool {
+        let p = Point::<2>::new(u, v);
+        let (du, dv) = (self.surface.domain_u(), self.surface.domain_v());
+        if u < du.start || u > du.end || v < dv.start || v > dv.end {
+            return false;
+        }
+        if let Some(o) = &self.outer {
+            if winding(o, &p) == 0 {
+                return false;
+            }
+        }
+        self.holes.iter().all(|h| winding(h, &p) == 0)
+    }
+
+    /// The flattened outer loop and holes (for tessellation).
+    pub fn loops(&self) -> (Option<&[Point<2>]>, Vec<&[Point<2>]>) {
+        (self.outer.as_deref(), self.holes.iter().map(|h| h.as_slice()).collect())
+    }
+}
+
+impl<const D: usize> Surface<D> for TrimmedSurface<D> {
+    fn domain_u(&self) -> Interval {
+        self.surface.domain_u()
+    }
+    fn domain_v(&self) -> Interval {
+        self.surface.domain_v()
+    }
+    fn is_closed_u(&self) -> bool {
+        self.surface.is_closed_u()
+    }
+    fn is_closed_v(&self) -> bool {
+        self.surface.is_closed_v()
+    }
+    fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
+        self.surface.eval_partials(u, v, du, dv, out)
+    }
+    fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
+        self.surface.eval_grid(us, vs, du, dv, out)
+    }
+    fn trim_contains(&self, u: f64, v: f64) -> Option<bool> {
+        Some(self.contains(u, v))
+    }
+}
