@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Side-by-side evaluation speed: splinekit, curvo, truck-geometry and scipy, one run.
-# Usage: bash bench/peers/run.sh   (installs scipy with pip if it is missing)
+# Side-by-side evaluation speed: splinekit, curvo, truck-geometry, scipy and Splipy, one run.
+# Usage: bash bench/peers/run.sh   (installs scipy and splipy with pip if missing)
 set -euo pipefail
 cd "$(dirname "$0")"
 cargo build --release --quiet
-python3 -c "import scipy" 2>/dev/null || python3 -m pip install --quiet scipy numpy
+python3 -c "import scipy, splipy" 2>/dev/null || python3 -m pip install --quiet scipy numpy splipy
 {
   ./target/release/splinekit-peers
   python3 scipy_bench.py

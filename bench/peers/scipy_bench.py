@@ -35,3 +35,32 @@ for what, f in [("point, random order", lambda: spl(random)[:, 1].sum()),
                 ("first derivative, sorted", lambda: dspl(sorted_)[:, 1].sum())]:
     ns, check = best(f)
     print(f"scipy {__import__('scipy').__version__}\t{what}\t{ns:.2f}\t{check:.9e}")
+
+# Splipy: the surface workload of src/main.rs (bicubic, 100 × 100 control points, points and
+# unit normals on a 300 × 300 grid).
+try:
+    import splipy
+    from splipy import BSplineBasis, Surface as SplipySurface
+except ImportError:
+    splipy = None
+if splipy is not None:
+    G = 300
+    knots = np.r_[[0.0] * 4, np.arange(1, 97) / 97.0, [1.0] * 4]
+    basis = BSplineBasis(4, knots)
+    i, j = np.meshgrid(np.arange(100.0), np.arange(100.0), indexing="ij")
+    net = np.stack([i, j, np.sin(i * 0.3) * np.cos(j * 0.2)], axis=-1)
+    # Splipy orders control points with the first parameter running fastest.
+    surf = SplipySurface(basis, basis, net.transpose(1, 0, 2).reshape(-1, 3))
+    g = np.linspace(0.0, 1.0, G)
+
+    def run():
+        p = surf(g, g)
+        n = surf.normal(g, g)
+        return p[..., 2].sum() + n[..., 2].sum()
+
+    t = float("inf")
+    for _ in range(5):
+        a = time.perf_counter()
+        v = run()
+        t = min(t, time.perf_counter() - a)
+    print(f"splipy {splipy.__version__}\tsurface grid: points + normals\t{t * 1e9 / G / G:.2f}\t{v:.9e}")

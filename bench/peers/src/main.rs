@@ -37,6 +37,70 @@ fn params() -> (Vec<f64>, Vec<f64>) {
     (random, sorted)
 }
 
+/// Surface workload: a bicubic B-spline surface with 100 × 100 control points, points and
+/// unit normals on a G × G grid (G = 300), best of 5, ns per grid point.
+const G: usize = 300;
+
+fn surface_net(i: usize, j: usize) -> [f64; 3] {
+    [i as f64, j as f64, ((i as f64) * 0.3).sin() * ((j as f64) * 0.2).cos()]
+}
+
+fn time_grid(f: &mut dyn FnMut() -> f64) -> (f64, f64) {
+    let mut best = f64::INFINITY;
+    let mut sum = 0.0;
+    for _ in 0..5 {
+        let t = Instant::now();
+        sum = black_box(f());
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    (best * 1e9 / (G * G) as f64, sum)
+}
+
+fn surfaces(rows: &mut Vec<(String, String, f64, f64)>) {
+    let k: Vec<f64> = {
+        let mut k = vec![0.0; 4];
+        for i in 1..97 {
+            k.push(i as f64 / 97.0);
+        }
+        k.extend([1.0; 4]);
+        k
+    };
+    let g: Vec<f64> = (0..G).map(|i| i as f64 / (G - 1) as f64).collect();
+    let what = "surface grid: points + normals".to_string();
+    {
+        use splinekit::Point;
+        use splinekit::surface::{BSplineSurface, Surface};
+        let net = (0..100).map(|i| (0..100).map(|j| Point::<3>::from(surface_net(i, j))).collect()).collect();
+        let s = BSplineSurface::new((3, 3), k.clone(), k.clone(), net, (false, false)).unwrap();
+        let mut p = vec![Point::<3>::zeros(); G * G];
+        let mut n = p.clone();
+        let r = time_grid(&mut || {
+            s.eval_grid_with_normals(&g, &g, &mut p, &mut n);
+            p.iter().map(|q| q[2]).sum::<f64>() + n.iter().map(|q| q[2]).sum::<f64>()
+        });
+        rows.push(("splinekit".into(), what.clone(), r.0, r.1));
+    }
+    {
+        use curvo::prelude::NurbsSurface3D;
+        use nalgebra::Point4;
+        let net = (0..100).map(|i| (0..100).map(|j| {
+            let c = surface_net(i, j);
+            Point4::new(c[0], c[1], c[2], 1.0)
+        }).collect()).collect();
+        let s = NurbsSurface3D::<f64>::new(3, 3, k.clone(), k.clone(), net);
+        let r = time_grid(&mut || {
+            let mut sum = 0.0;
+            for &u in &g {
+                for &v in &g {
+                    sum += s.point_at(u, v).z + s.normal_at(u, v).normalize().z;
+                }
+            }
+            sum
+        });
+        rows.push(("curvo 0.3".into(), what.clone(), r.0, r.1));
+    }
+}
+
 /// Best-of-5 time per element in ns; `f` returns a checksum so nothing is optimised away.
 fn time(f: &mut dyn FnMut() -> f64) -> (f64, f64) {
     let mut best = f64::INFINITY;
@@ -104,6 +168,8 @@ fn main() {
         let r = time(&mut || sorted.iter().map(|&t| c.der(t).y).sum());
         rows.push(("truck-geometry 0.5".into(), "first derivative, sorted".into(), r.0, r.1));
     }
+
+    surfaces(&mut rows);
 
     for (lib, what, ns, check) in &rows {
         println!("{lib}\t{what}\t{ns:.2}\t{check:.9e}");
