@@ -1,0 +1,94 @@
+"""Feeds the splinekit binary random, often malformed shape documents and options.
+
+Every run must end with exit status 0 and output, or exit status 2 with exactly one
+line on standard error and nothing on standard output: never a panic, a hang or an
+internal error (CONTRACT.md section 3). Standard library only.
+
+Usage: python3 .ci/fuzz_cli.py BINARY [SEED] [CASES]
+"""
+import json, os, random, subprocess, sys, tempfile
+B = sys.argv[1]
+random.seed(int(sys.argv[2]) if len(sys.argv) > 2 else 1)
+SVG = os.path.join(tempfile.mkdtemp(), "fuzz.svg")
+types = ["bezier","rational_bezier","bspline","nurbs","hermite","catmull_rom","line","circle","ellipse","helix","heart","rose","lissajous","trefoil","butterfly",
+         "bezier_surface","bspline_surface","nurbs_surface","plane","cylinder","cone","sphere","torus","mobius","klein_bottle","enneper","helicoid","seashell","apple","heart_surface","revolution","ruled","extrusion","coons","sweep","trimmed"]
+def num():
+    return random.choice([0, 1, -1, 0.5, 2, 3, 1e300, -1e300, 1e-300, 7, 100000, -0.0, 1e9, 0.25, 12, "x", None, [], True])
+def pt(d):
+    return [num() if random.random() < 0.15 else random.uniform(-3, 3) for _ in range(d)]
+def pts(n, d):
+    return [pt(d if random.random() > 0.05 else d + 1) for _ in range(n)]
+def knots(n):
+    k = sorted(random.uniform(0, 5) for _ in range(n))
+    if random.random() < 0.3: k = [0]*4 + sorted(k[4:]) 
+    if random.random() < 0.1: random.shuffle(k)
+    return k
+def curve(depth=0):
+    t = random.choice(types[:15]) if depth < 2 else "line"
+    d = random.choice([1,2,3,3,3,4,5])
+    n = random.choice([0,1,2,3,4,5,8])
+    p = random.choice([0,1,2,3,5,-1,100000])
+    doc = {"type": t}
+    if t in ("bezier","rational_bezier"): doc["control_points"] = pts(n, d)
+    if t == "rational_bezier": doc["weights"] = [random.choice([1, 0.5, 0, -1, 2]) for _ in range(n + random.choice([0,0,1]))]
+    if t in ("bspline","nurbs"):
+        doc.update(degree=p, knots=knots(n + max(p,0) + 1 + random.choice([0,0,0,-1,1])) if p < 1000 else [0,1], control_points=pts(n, d))
+        if random.random() < 0.3: doc["periodic"] = True
+    if t == "nurbs": doc["weights"] = [random.choice([1, 0.5, 0, 2]) for _ in range(n)]
+    if t in ("hermite",): doc.update(points=pts(n, d), tangents=pts(n + random.choice([0,0,1]), d))
+    if t == "catmull_rom": doc.update(points=pts(n, d), alpha=random.choice([0, 0.5, 1, 2, -1]), closed=random.random() < 0.5)
+    if t == "line": doc.update({"from": pt(d), "to": pt(d)})
+    if t in ("circle","rose","helix"): doc["radius"] = num()
+    if t == "rose": doc["n"] = num()
+    if random.random() < 0.05: doc["bogus"] = 1
+    return doc
+def surface(depth=0):
+    t = random.choice(types[15:])
+    doc = {"type": t}
+    d = random.choice([2,3,3,3])
+    nu, nv = random.choice([0,1,2,3,4]), random.choice([1,2,3,4])
+    if t in ("bezier_surface","bspline_surface","nurbs_surface"):
+        doc["control_points"] = [pts(nv + (1 if random.random() < 0.05 else 0), d) for _ in range(nu)]
+    if t in ("bspline_surface","nurbs_surface"):
+        pu, pv = random.choice([0,1,2,3]), random.choice([0,1,2,3])
+        doc.update(degree_u=pu, degree_v=pv, knots_u=knots(nu+pu+1), knots_v=knots(nv+pv+1))
+        if random.random() < 0.2: doc["periodic_u"] = True
+    if t == "nurbs_surface": doc["weights"] = [[random.choice([1, 2, 0]) for _ in range(nv)] for _ in range(nu)]
+    if t in ("sphere","cylinder","cone"): doc["radius"] = num()
+    if t == "torus": doc.update(major_radius=num(), minor_radius=num())
+    if t in ("revolution","extrusion"): doc["curve"] = curve(1)
+    if t == "extrusion": doc["direction"] = pt(random.choice([2,3]))
+    if t == "revolution": doc["angle"] = num(); doc["axis"] = pt(3)
+    if t == "ruled": doc.update(first=curve(1), second=curve(1))
+    if t == "coons": doc.update(bottom=curve(2), top=curve(2), left=curve(2), right=curve(2))
+    if t == "sweep": doc.update(profile=curve(1), path=curve(1))
+    if t == "trimmed": doc.update(surface={"type":"plane"} if random.random()<0.5 else surface(1) if depth < 1 else {"type":"sphere"}, outer=curve(1))
+    return doc
+bad = 0
+for i in range(int(sys.argv[3]) if len(sys.argv) > 3 else 400):
+    s = random.random() < 0.5
+    doc = surface() if s else curve()
+    text = json.dumps(doc)
+    if random.random() < 0.05: text = text[:random.randint(0, len(text))]
+    k = str(random.choice([0,1,2,3,64,65]))
+    args = random.choice([
+        ["eval", "-", "--at", random.choice(["0.5", "0:0.5", "0.1,0.9", "nan", "-1", "1e308", "0.5:1e-320"]), "--derivatives", k],
+        ["eval", "-", "--samples", random.choice(["1","5","0","100"])],
+        ["eval", "-", "--grid", random.choice(["3,3","1,1","0,2"]), "--derivatives", random.choice(["0","2"])],
+        ["refine", "-", "--insert", random.choice(["0.5","1,2,3","0.5,0.5,0.5,0.5"])],
+        ["refine", "-", "--elevate", random.choice(["1","3","70"])],
+        ["refine", "-", "--remove", "0.5"],
+        ["tessellate", "-", "-o", SVG],
+        ["fit", "-", "--degree", "3", "--control-points", "4", "--samples", "50"],
+    ])
+    try:
+        r = subprocess.run([B] + args, input=text, capture_output=True, text=True, timeout=20)
+    except subprocess.TimeoutExpired:
+        print("TIMEOUT", args, text[:300]); bad += 1; continue
+    err = r.stderr.strip()
+    ok = (r.returncode == 0 and (r.stdout or args[0] == "tessellate")) or (r.returncode == 2 and len(err.splitlines()) == 1 and not r.stdout)
+    if not ok or "panicked" in err or "internal error" in err:
+        bad += 1
+        print("BAD", r.returncode, args, text[:400], "->", err[:300], r.stdout[:100])
+print(f"fuzz: {bad} bad outcomes")
+sys.exit(1 if bad else 0)
