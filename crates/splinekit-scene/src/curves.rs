@@ -5,26 +5,8 @@ use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
+use crate::defaults::*;
 use crate::error::{DocumentError, Result};
-
-fn is_false(b: &bool) -> bool {
-    !*b
-}
-fn one() -> f64 {
-    1.0
-}
-fn two() -> f64 {
-    2.0
-}
-fn three() -> f64 {
-    3.0
-}
-fn four() -> f64 {
-    4.0
-}
-fn half_pi() -> f64 {
-    std::f64::consts::FRAC_PI_2
-}
 
 /// `{"type":"bezier","control_points":[[x,y],...]}`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -8,6 +8,7 @@
 
 pub mod build;
 pub mod curves;
+mod defaults;
 pub mod error;
 pub mod points;
 pub mod refine;

@@ -13,37 +13,10 @@ use splinekit::surface::{BSplineSurface, BezierSurface, NurbsSurface, Surface, T
 use crate::curves::CurveDocument;
 
 use crate::curves::fields;
+use crate::defaults::*;
 use crate::error::{DocumentError, Result};
 use crate::points::{check_finite_list, dimension_of, to_point, to_points};
 use crate::with_dimension;
-
-fn is_false(b: &bool) -> bool {
-    !*b
-}
-fn one() -> f64 {
-    1.0
-}
-fn two() -> f64 {
-    2.0
-}
-fn three() -> f64 {
-    3.0
-}
-fn half() -> f64 {
-    0.5
-}
-fn tenth() -> f64 {
-    0.1
-}
-fn origin() -> Vec<f64> {
-    vec![0.0, 0.0, 0.0]
-}
-fn x_axis() -> Vec<f64> {
-    vec![1.0, 0.0, 0.0]
-}
-fn y_axis() -> Vec<f64> {
-    vec![0.0, 1.0, 0.0]
-}
 
 /// `{"type":"bezier_surface","control_points":[[...row...],...]}`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -231,12 +204,6 @@ pub struct SurfaceScaleDoc {
     pub scale: f64,
 }
 
-fn tau() -> f64 {
-    std::f64::consts::TAU
-}
-fn z_axis() -> Vec<f64> {
-    vec![0.0, 0.0, 1.0]
-}
 fn linear_blend() -> String {
     "linear".to_string()
 }

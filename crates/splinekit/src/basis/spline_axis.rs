@@ -1,12 +1,13 @@
 //! One parameter direction of a tensor-product spline: degree, knots, periodic unrolling
 //! and span search.
 
-use crate::basis::{KnotVector, find_span};
+use crate::basis::{KnotVector, Side, find_span};
 use crate::curve::Interval;
 use crate::curve::span_kernel::ReciprocalKnotDifferences;
 use crate::error::{Error, Result};
 
-/// The knot data of one direction (u or v) of a spline surface.
+/// The knot data of one parameter direction of a spline: of a B-spline curve, or of the
+/// u or v direction of a spline surface.
 ///
 /// Periodic directions follow [`crate::curve::BSplineCurve::new_periodic`]: n control
 /// points and n + p + 1 knots repeating their spacing every n knots; evaluation uses the
@@ -106,25 +107,55 @@ impl SplineAxis {
     /// Clamps (open) or wraps (periodic) a parameter into the domain.
     #[inline]
     pub fn normalise(&self, t: f64) -> f64 {
+        self.normalise_side(t, Side::Right)
+    }
+    /// As [`SplineAxis::normalise`]; on a periodic axis the left limit at the start is
+    /// taken at the end of the domain and the right limit at the end at its start.
+    #[inline]
+    pub fn normalise_side(&self, t: f64, side: Side) -> f64 {
         let d = self.domain();
-        if self.periodic { d.wrap_periodic(t, crate::basis::Side::Right) } else { d.clamp(t) }
+        if self.periodic { d.wrap_periodic(t, side) } else { d.clamp(t) }
     }
     /// The span s with t_s ≤ t < t_{s+1} (t in the domain).
     #[inline]
     pub fn span(&self, t: f64) -> usize {
+        self.span_side(t, Side::Right)
+    }
+    /// The span s ∈ [p, N − 1] of `t` (in the domain): t_s ≤ t < t_{s+1} (`Right`) or
+    /// t_s < t ≤ t_{s+1} (`Left`). O(1) for uniform knots, binary search otherwise.
+    #[inline]
+    pub fn span_side(&self, t: f64, side: Side) -> usize {
         let (p, n) = (self.degree, self.eval_count());
         let k = &self.eval_knots;
         let Some((a, inv_h)) = self.uniform else {
-            return find_span(k, p, n, t, crate::basis::Side::Right);
+            return find_span(k, p, n, t, side);
         };
         let mut s = (p + ((t - a) * inv_h).max(0.0) as usize).min(n - 1);
-        while s > p && k[s] > t {
-            s -= 1;
-        }
-        while s + 1 < n && k[s + 1] <= t {
-            s += 1;
+        match side {
+            Side::Right => {
+                while s > p && k[s] > t {
+                    s -= 1;
+                }
+                while s + 1 < n && k[s + 1] <= t {
+                    s += 1;
+                }
+            }
+            Side::Left => {
+                while s > p && k[s] >= t {
+                    s -= 1;
+                }
+                while s + 1 < n && k[s + 1] < t {
+                    s += 1;
+                }
+            }
         }
         s
+    }
+    /// Distinct knots of the domain, both ends included.
+    pub fn breakpoints(&self) -> Vec<f64> {
+        let mut out: Vec<f64> = self.eval_knots[self.degree..=self.eval_count()].to_vec();
+        out.dedup();
+        out
     }
     /// Index of the given control point for evaluation coefficient `i`.
     #[inline]

@@ -2,9 +2,9 @@
 
 use crate::Point;
 use crate::basis::SplineAxis;
-use crate::curve::{BSplineCurve, Interval};
+use crate::curve::BSplineCurve;
 use crate::error::{Result, check_points_finite};
-use crate::surface::tensor::{TensorSpline, net_shape};
+use crate::surface::tensor::{TensorSpline, net_shape, tensor_surface_domains};
 use crate::surface::{Surface, unit_normal};
 
 /// A tensor-product B-spline surface of degrees (p, q). The net's first index runs along
@@ -109,18 +109,7 @@ impl<const D: usize> BSplineSurface<D> {
 }
 
 impl<const D: usize> Surface<D> for BSplineSurface<D> {
-    fn domain_u(&self) -> Interval {
-        self.spline.u.domain()
-    }
-    fn domain_v(&self) -> Interval {
-        self.spline.v.domain()
-    }
-    fn is_closed_u(&self) -> bool {
-        self.spline.u.is_periodic()
-    }
-    fn is_closed_v(&self) -> bool {
-        self.spline.v.is_periodic()
-    }
+    tensor_surface_domains!();
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         self.spline.eval_partials(u, v, du, dv, out)
     }

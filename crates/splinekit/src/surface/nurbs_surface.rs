@@ -6,11 +6,10 @@ use smallvec::{SmallVec, smallvec};
 
 use crate::Point;
 use crate::basis::{SplineAxis, binomial};
-use crate::curve::Interval;
 use crate::curve::nurbs::check_weights;
 use crate::error::{Result, check_points_finite};
 use crate::ops::homogeneous::Homogeneous;
-use crate::surface::tensor::{TensorSpline, net_shape};
+use crate::surface::tensor::{TensorSpline, net_shape, tensor_surface_domains};
 use crate::surface::{Surface, unit_normal};
 
 /// A tensor-product NURBS surface with positive weights beside the control points.
@@ -115,18 +114,7 @@ fn rational_partials<const D: usize>(h: &[Homogeneous<D>], du: usize, dv: usize,
 }
 
 impl<const D: usize> Surface<D> for NurbsSurface<D> {
-    fn domain_u(&self) -> Interval {
-        self.spline.u.domain()
-    }
-    fn domain_v(&self) -> Interval {
-        self.spline.v.domain()
-    }
-    fn is_closed_u(&self) -> bool {
-        self.spline.u.is_periodic()
-    }
-    fn is_closed_v(&self) -> bool {
-        self.spline.v.is_periodic()
-    }
+    tensor_surface_domains!();
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let n = (du + 1) * (dv + 1);
         let mut h: SmallVec<[Homogeneous<D>; 9]> = smallvec![Homogeneous::lift(&Point::<D>::zeros(), 0.0); n];

@@ -19,6 +19,26 @@ pub struct TensorSpline<T> {
     net: Vec<T>,
 }
 
+/// The `Surface` methods every tensor-product surface with a `spline: TensorSpline<_>`
+/// field shares: domains and closedness come from the two axes.
+macro_rules! tensor_surface_domains {
+    () => {
+        fn domain_u(&self) -> $crate::curve::Interval {
+            self.spline.u.domain()
+        }
+        fn domain_v(&self) -> $crate::curve::Interval {
+            self.spline.v.domain()
+        }
+        fn is_closed_u(&self) -> bool {
+            self.spline.u.is_periodic()
+        }
+        fn is_closed_v(&self) -> bool {
+            self.spline.v.is_periodic()
+        }
+    };
+}
+pub(crate) use tensor_surface_domains;
+
 /// Checks a net for raggedness; returns (rows, columns).
 pub fn net_shape<T>(rows: &[Vec<T>], field: &str) -> Result<(usize, usize)> {
     let nu = rows.len();
