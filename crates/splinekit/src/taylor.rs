@@ -23,3 +23,19 @@ pub fn mul(a: &[f64], b: &[f64], c: &mut [f64]) {
         c[k] = (0..=k).map(|j| a[j] * b[k - j]).sum();
     }
 }
+
+/// p = xᵃ on jets (x₀ > 0): p₀ = x₀ᵃ, p_k = (1/(k x₀)) Σ_{j=1}^{k} ((a + 1) j − k) x_j p_{k−j}.
+pub fn powf(x: &[f64], a: f64, p: &mut [f64]) {
+    let n = x.len().min(p.len());
+    if n == 0 {
+        return;
+    }
+    p[0] = x[0].powf(a);
+    for k in 1..n {
+        let mut acc = 0.0;
+        for j in 1..=k {
+            acc += ((a + 1.0) * j as f64 - k as f64) * x[j] * p[k - j];
+        }
+        p[k] = acc / (k as f64 * x[0]);
+    }
+}
