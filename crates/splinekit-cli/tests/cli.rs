@@ -298,7 +298,7 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         assert_eq!(v["points"].as_array().unwrap().len(), 5, "{doc}");
         count += 1;
     }
-    assert!(count >= 16, "only {count} examples found");
+    assert!(count >= 18, "only {count} examples found");
 }
 
 fn temp_dir(name: &str) -> std::path::PathBuf {
@@ -492,5 +492,49 @@ fn trimmed_surface_documents_report_containment() {
         &["eval", "-", "--at", "0:0"],
         r#"{"type":"trimmed","surface":{"type":"circle"}}"#,
         "surface.type: expected a surface type",
+    );
+}
+
+#[test]
+fn bfunction_and_blend_documents() {
+    let v = ok_json(
+        &["eval", "-", "--at", "0.25", "--derivatives", "2"],
+        r#"{"type":"bfunction","bfunction":{"type":"erbs"}}"#,
+    );
+    assert!((floats(&v["points"][0])[0] - 0.1229672832773291).abs() <= 2e-16);
+    assert!((floats(&v["derivatives"][0][1])[0] - 4.2218347856499).abs() < 1e-12);
+    let v = ok_json(
+        &["eval", "-", "--at", "0.5"],
+        r#"{"type":"bfunction","bfunction":{"type":"polynomial","smoothness":2}}"#,
+    );
+    assert_eq!(v["points"][0], json!([0.5]));
+    let blend = r#"{"type":"blend","first":{"type":"line","from":[0,0],"to":[1,0]},"second":{"type":"line","from":[0.5,0],"to":[1.5,1]},"overlap":0.5}"#;
+    let v = ok_json(&["eval", "-", "--at", "0,0.75,1.5"], blend);
+    // At t = 0.75: c1 = (0.75, 0), c2(0.25) = (0.75, 0.25), B(0.5) = 0.5.
+    assert_eq!(v["points"], json!([[0.0, 0.0], [0.75, 0.125], [1.5, 1.0]]));
+    assert_bad(
+        &["eval", "-", "--at", "0.5"],
+        r#"{"type":"bfunction","bfunction":{"type":"erbs","lambda":2}}"#,
+        "bfunction: lambda",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0.5"],
+        r#"{"type":"bfunction","bfunction":{"type":"spline"}}"#,
+        "bfunction.type",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0.5"],
+        r#"{"type":"bfunction","bfunction":{"type":"polynomial","smoothness":0}}"#,
+        "smoothness",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0.5"],
+        r#"{"type":"blend","first":{"type":"circle"},"second":{"type":"circle"},"overlap":1.5}"#,
+        "overlap",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0.5"],
+        r#"{"type":"blend","first":{"type":"circle"},"second":{"type":"line","from":[0,0],"to":[1,1]},"overlap":0.5}"#,
+        "second: expected a curve of dimension 3",
     );
 }

@@ -1,5 +1,6 @@
 //! Building kernel curves from documents, in the dimension the points ask for.
 
+use splinekit::blend::{BFunctionCurve, TwoCurveBlend};
 use splinekit::curve::model::{Butterfly, Circle, Ellipse, Heart, Helix, Line, Lissajous, Rose, Trefoil};
 use splinekit::curve::{
     BSplineCurve, BezierCurve, CatmullRomCurve, Curve, HermiteCurve, NurbsCurve, RationalBezierCurve,
@@ -79,6 +80,18 @@ impl CurveDocument {
             C::Hermite(d) => dimension_of("points", &d.points)?,
             C::CatmullRom(d) => dimension_of("points", &d.points)?,
             C::Line(d) => dimension_of("from", std::slice::from_ref(&d.from))?,
+            C::Bfunction(_) => 1,
+            C::Blend(d) => {
+                let a = d.first.dimension().map_err(|e| e.within("first"))?;
+                let b = d.second.dimension().map_err(|e| e.within("second"))?;
+                if a != b {
+                    return Err(DocumentError::new(
+                        "second",
+                        format!("expected a curve of dimension {a} like first, got {b}"),
+                    ));
+                }
+                a
+            }
             _ => 3,
         })
     }
@@ -128,6 +141,21 @@ impl CurveDocument {
             }
             C::CatmullRom(d) => Box::new(CatmullRomCurve::new(to_points::<D>(&d.points), d.alpha, d.closed)?),
             C::Line(d) => Box::new(Line::new(to_point::<D>("from", &d.from)?, to_point::<D>("to", &d.to)?)?),
+            C::Blend(d) => Box::new(TwoCurveBlend::new(
+                d.first.build_in::<D>().map_err(|e| e.within("first"))?,
+                d.second.build_in::<D>().map_err(|e| e.within("second"))?,
+                d.overlap,
+                d.bfunction.build().map_err(|e| e.within("bfunction"))?,
+            )?),
+            C::Bfunction(d) => {
+                let c: Box<dyn Curve<1>> =
+                    Box::new(BFunctionCurve(d.bfunction.build().map_err(|e| e.within("bfunction"))?));
+                let any: Box<dyn std::any::Any> = Box::new(c);
+                return any
+                    .downcast::<Box<dyn Curve<D>>>()
+                    .map(|b| *b)
+                    .map_err(|_| DocumentError::new("type", "a bfunction is a 1-D curve"));
+            }
             other => {
                 model_dim(other.type_name())?;
                 let any: Box<dyn Curve<3>> = match other {
@@ -166,6 +194,8 @@ impl CurveDocument {
             C::Lissajous(_) => "lissajous",
             C::Trefoil(_) => "trefoil",
             C::Butterfly(_) => "butterfly",
+            C::Bfunction(_) => "bfunction",
+            C::Blend(_) => "blend",
         }
     }
 }

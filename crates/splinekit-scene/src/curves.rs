@@ -176,6 +176,43 @@ fn lissajous_frequencies() -> [f64; 3] {
     [3.0, 2.0, 0.0]
 }
 
+/// `{"type":"bfunction","bfunction":{…}}`: the B-function as a 1-D curve on [0, 1].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BFunctionShapeDoc {
+    /// The B-function.
+    pub bfunction: crate::bfunctions::BFunctionDoc,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawBFunctionShape {
+    bfunction: Value,
+}
+
+/// `{"type":"blend","first":{…},"second":{…},"overlap":x,"bfunction":{…}}`: the two-curve
+/// blend on [0, 1 + x] (B-function default: polynomial smoothness 1, i.e. 3t² − 2t³).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BlendDoc {
+    /// The curve before the overlap.
+    pub first: Box<CurveDocument>,
+    /// The curve after it.
+    pub second: Box<CurveDocument>,
+    /// x ∈ (0, 1).
+    pub overlap: f64,
+    /// The B-function.
+    pub bfunction: crate::bfunctions::BFunctionDoc,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawBlend {
+    first: Value,
+    second: Value,
+    overlap: f64,
+    #[serde(default)]
+    bfunction: Option<Value>,
+}
+
 /// A curve shape document.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "type", rename_all = "snake_case")]
@@ -196,6 +233,8 @@ pub enum CurveDocument {
     Lissajous(LissajousDoc),
     Trefoil(ScaleDoc),
     Butterfly(ScaleDoc),
+    Bfunction(BFunctionShapeDoc),
+    Blend(BlendDoc),
 }
 
 /// The curve `type` names, for messages.
@@ -286,6 +325,29 @@ impl CurveDocument {
             "lissajous" => C::Lissajous(fields(rest)?),
             "trefoil" => C::Trefoil(fields(rest)?),
             "butterfly" => C::Butterfly(fields(rest)?),
+            "bfunction" => {
+                let r: RawBFunctionShape = fields(rest)?;
+                C::Bfunction(BFunctionShapeDoc {
+                    bfunction: crate::bfunctions::BFunctionDoc::parse(&r.bfunction)
+                        .map_err(|e| e.within("bfunction"))?,
+                })
+            }
+            "blend" => {
+                let r: RawBlend = fields(rest)?;
+                let nested = |v: &Value, f: &str| CurveDocument::parse(v).map(Box::new).map_err(|e| e.within(f));
+                let bfunction = match &r.bfunction {
+                    Some(b) => crate::bfunctions::BFunctionDoc::parse(b).map_err(|e| e.within("bfunction"))?,
+                    None => {
+                        crate::bfunctions::BFunctionDoc::Polynomial(crate::bfunctions::PolynomialDoc { smoothness: 1 })
+                    }
+                };
+                C::Blend(BlendDoc {
+                    first: nested(&r.first, "first")?,
+                    second: nested(&r.second, "second")?,
+                    overlap: r.overlap,
+                    bfunction,
+                })
+            }
             _ => return Ok(None),
         }))
     }

@@ -6,6 +6,7 @@
 
 #![warn(missing_docs)]
 
+pub mod bfunctions;
 pub mod build;
 pub mod curves;
 mod defaults;

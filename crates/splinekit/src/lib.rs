@@ -21,6 +21,7 @@
 #![warn(missing_docs)]
 
 pub mod basis;
+pub mod blend;
 pub mod curve;
 pub mod error;
 pub mod fit;

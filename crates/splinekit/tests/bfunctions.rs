@@ -133,3 +133,62 @@ fn erbs_derivatives_of_high_order_are_finite() {
     let fd = (eval(&b, 0.3 + h, 20)[20] - eval(&b, 0.3 - h, 20)[20]) / (2.0 * h);
     assert!((o[21] - fd).abs() < 1e-5 * o[21].abs(), "{} vs {fd}", o[21]);
 }
+
+#[test]
+fn two_curve_blends_follow_the_definition_and_join_smoothly() {
+    use splinekit::Point;
+    use splinekit::basis::Side;
+    use splinekit::blend::{PlainBlend, TwoCurveBlend};
+    use splinekit::curve::model::Circle;
+    use splinekit::curve::{BezierCurve, Curve};
+    let c1 = || -> Box<dyn Curve<3>> { Box::new(Circle::new(1.0).unwrap()) };
+    let c2 = || -> Box<dyn Curve<3>> {
+        Box::new(
+            BezierCurve::new(vec![
+                Point::<3>::new(0.0, 0.0, 0.0),
+                Point::<3>::new(1.0, 2.0, 0.5),
+                Point::<3>::new(2.0, 0.0, 1.0),
+            ])
+            .unwrap(),
+        )
+    };
+    let x = 0.3;
+    for (b, smooth) in
+        [(BFunction::polynomial(1).unwrap(), 1), (BFunction::Trigonometric, 2), (BFunction::erbs_default(), 4)]
+    {
+        let blend = TwoCurveBlend::new(c1(), c2(), x, b.clone()).unwrap();
+        let (a, s) = (c1(), c2());
+        let a_at = |t: f64| a.point(TAU * t);
+        for i in 0..=26 {
+            let t = 1.3 * i as f64 / 26.0;
+            let expected = if t < x {
+                a_at(t)
+            } else if t < 1.0 {
+                a_at(t) + (s.point(t - x) - a_at(t)) * b.value((t - x) / (1.0 - x))
+            } else {
+                s.point(t - x)
+            };
+            assert!((blend.point(t) - expected).norm() < 1e-14, "t = {t}");
+        }
+        // Derivatives inside each piece against finite differences.
+        for &t in &[0.15, 0.5, 0.8, 1.2] {
+            let mut d = [Point::<3>::zeros(); 3];
+            blend.eval(t, &mut d);
+            let h = 1e-5;
+            let fd1 = (blend.point(t + h) - blend.point(t - h)) / (2.0 * h);
+            assert!((d[1] - fd1).norm() < 1e-6 * d[1].norm().max(1.0), "blend' at {t}");
+        }
+        // Continuity at the joins: the derivatives of orders 1 … smooth agree where the
+        // blend starts (c₁ alone on the left) — the ends of c₂ are blended in with B = 0.
+        let mut l = vec![Point::<3>::zeros(); smooth + 1];
+        let mut r = vec![Point::<3>::zeros(); smooth + 1];
+        blend.eval_side(x, Side::Left, &mut l);
+        blend.eval_side(x, Side::Right, &mut r);
+        for k in 0..=smooth {
+            assert!((l[k] - r[k]).norm() < 1e-9 * l[k].norm().max(1.0), "order {k} at x");
+        }
+    }
+    assert!(TwoCurveBlend::new(c1(), c2(), 1.0, BFunction::Linear).is_err());
+    let plain = PlainBlend::new(c1(), c2(), BFunction::Linear);
+    assert!((plain.point(0.5) - (c1().point(std::f64::consts::PI) + c2().point(0.5)) * 0.5).norm() < 1e-15);
+}

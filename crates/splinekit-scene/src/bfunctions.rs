@@ -1,0 +1,116 @@
+//! B-function documents: `{"type":"erbs","alpha":1,"beta":1,"gamma":1,"lambda":0.5}`,
+//! `{"type":"polynomial","smoothness":1}`, `{"type":"beta","a":3,"b":3}`,
+//! `{"type":"trigonometric"}`, `{"type":"half_cosine"}`, `{"type":"rational"}`,
+//! `{"type":"linear"}`.
+
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+use splinekit::basis::BFunction;
+
+use crate::curves::{fields, split_type};
+use crate::defaults::*;
+use crate::error::{DocumentError, Result};
+
+fn smoothness_one() -> usize {
+    1
+}
+fn three_usize() -> usize {
+    3
+}
+
+/// ERBS parameters.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ErbsDoc {
+    /// α (default 1).
+    #[serde(default = "one")]
+    pub alpha: f64,
+    /// β (default 1).
+    #[serde(default = "one")]
+    pub beta: f64,
+    /// γ (default 1).
+    #[serde(default = "one")]
+    pub gamma: f64,
+    /// λ (default ½).
+    #[serde(default = "half")]
+    pub lambda: f64,
+}
+
+/// Polynomial smoothness.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PolynomialDoc {
+    /// k ≥ 1 (default 1: 3t² − 2t³).
+    #[serde(default = "smoothness_one")]
+    pub smoothness: usize,
+}
+
+/// Beta-function B-spline exponents.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BetaDoc {
+    /// a (default 3).
+    #[serde(default = "three_usize")]
+    pub a: usize,
+    /// b (default 3).
+    #[serde(default = "three_usize")]
+    pub b: usize,
+}
+
+/// No parameters.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NoParams {}
+
+/// A B-function document.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "type", rename_all = "snake_case")]
+#[allow(missing_docs)]
+pub enum BFunctionDoc {
+    Linear(NoParams),
+    Polynomial(PolynomialDoc),
+    Beta(BetaDoc),
+    Trigonometric(NoParams),
+    HalfCosine(NoParams),
+    Rational(NoParams),
+    Erbs(ErbsDoc),
+}
+
+impl BFunctionDoc {
+    /// Parses a B-function object.
+    pub fn parse(value: &Value) -> Result<Self> {
+        let (ty, rest) = split_type(value)?;
+        use BFunctionDoc as B;
+        Ok(match ty.as_str() {
+            "linear" => B::Linear(fields(rest)?),
+            "polynomial" => B::Polynomial(fields(rest)?),
+            "beta" => B::Beta(fields(rest)?),
+            "trigonometric" => B::Trigonometric(fields(rest)?),
+            "half_cosine" => B::HalfCosine(fields(rest)?),
+            "rational" => B::Rational(fields(rest)?),
+            "erbs" => B::Erbs(fields(rest)?),
+            _ => {
+                return Err(DocumentError::new(
+                    "type",
+                    format!(
+                        "unknown B-function \"{ty}\" (expected linear, polynomial, beta, trigonometric, half_cosine, rational or erbs)"
+                    ),
+                ));
+            }
+        })
+    }
+
+    /// Builds the B-function.
+    pub fn build(&self) -> Result<BFunction> {
+        use BFunctionDoc as B;
+        Ok(match self {
+            B::Linear(_) => BFunction::Linear,
+            B::Polynomial(d) => BFunction::polynomial(d.smoothness)?,
+            B::Beta(d) => BFunction::beta(d.a, d.b)?,
+            B::Trigonometric(_) => BFunction::Trigonometric,
+            B::HalfCosine(_) => BFunction::HalfCosine,
+            B::Rational(_) => BFunction::Rational,
+            B::Erbs(d) => BFunction::erbs(d.alpha, d.beta, d.gamma, d.lambda)?,
+        })
+    }
+}

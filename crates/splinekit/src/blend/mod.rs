@@ -1,0 +1,7 @@
+//! Blending: two curves blended by a B-function, and B-functions seen as curves.
+
+pub mod bfunction_curve;
+pub mod two_curve;
+
+pub use bfunction_curve::BFunctionCurve;
+pub use two_curve::{PlainBlend, TwoCurveBlend};
