@@ -8,6 +8,7 @@ use splinekit::curve::{BSplineCurve, BezierCurve, CatmullRomCurve, Curve, Hermit
 use splinekit::fit::{FitOptions, KnotPlacement, fit_curve};
 use splinekit::subdivision::{chaikin, four_point, lane_riesenfeld};
 use splinekit_mesh::{Polyline, Projection, SvgFigure};
+use std::f64::consts::TAU;
 
 /// One finished figure.
 pub struct Figure {
@@ -471,4 +472,59 @@ pub fn surfaces() -> Result<Vec<Figure>> {
         });
     }
     Ok(out)
+}
+
+/// The B-functions side by side, and two curves blended at 80, 50 and 20 % overlap.
+pub fn blending() -> Result<Vec<Figure>> {
+    use splinekit::basis::BFunction;
+    use splinekit::blend::TwoCurveBlend;
+    let mut fig = SvgFigure::new(W, H, Projection::TOP).title("B-functions on [0, 1]");
+    let kinds = [
+        ("linear", BFunction::Linear),
+        ("polynomial k = 1 (3t² − 2t³)", BFunction::polynomial(1)?),
+        ("polynomial k = 3", BFunction::polynomial(3)?),
+        ("trigonometric", BFunction::Trigonometric),
+        ("rational", BFunction::Rational),
+        ("ERBS", BFunction::erbs_default()),
+    ];
+    for (k, (name, b)) in kinds.iter().enumerate() {
+        plot(&mut fig, |t| b.value(t), 0.0, 1.0, PALETTE[k % PALETTE.len()]);
+        fig.label(&p2(0.0, 0.95 - 0.09 * k as f64), name, PALETTE[k % PALETTE.len()]);
+    }
+    let bfunctions = Figure {
+        file: "bfunctions.svg",
+        caption:
+            "B-functions B: [0, 1] → [0, 1]. The smoother their ends, the smoother the blend: 3t² − 2t³ gives C¹, \
+                  the trigonometric one C², ERBS C^∞ (all derivatives vanish at 0 and 1)."
+                .into(),
+        svg: fig.render(),
+    };
+    // c₁(t) = (4t, ½ sin 2πt) and, for overlap x, c₂(s) = (4(s + x), 1.5 + ½ cos 2πs): over
+    // the overlap c₁(t) and c₂(t − x) share their abscissa, so the blend visibly crosses.
+    let wave = |f: &dyn Fn(f64) -> Point<2>| -> Result<Box<dyn Curve<2>>> {
+        Ok(Box::new(CatmullRomCurve::new((0..=32).map(|k| f(k as f64 / 32.0)).collect(), 0.5, false)?))
+    };
+    let mut fig = SvgFigure::new(W, H, Projection::TOP).title("Two curves blended at 80, 50 and 20 %");
+    for (k, x) in [0.8, 0.5, 0.2].iter().enumerate() {
+        let dy = -3.0 * k as f64;
+        let first = || wave(&|t: f64| p2(4.0 * t, 0.5 * (TAU * t).sin()));
+        let second = || wave(&|s: f64| p2(4.0 * (s + x), 1.5 + 0.5 * (TAU * s).cos()));
+        let blend = TwoCurveBlend::new(first()?, second()?, *x, BFunction::polynomial(1)?)?;
+        for c in [first()?, second()?] {
+            let pts: Vec<Point<2>> =
+                Polyline::regular(c.as_ref(), 96)?.points.iter().map(|p| p + p2(0.0, dy)).collect();
+            fig.dashed(&pts, false, MODEL, 1.0);
+        }
+        let pts: Vec<Point<2>> = Polyline::adaptive(&blend, 1e-3)?.points.iter().map(|p| p + p2(0.0, dy)).collect();
+        fig.path(&pts, false, PALETTE[k], 2.5);
+        fig.label(&p2(-0.8, 0.6 + dy), &format!("x = {x}"), PALETTE[k]);
+    }
+    let blends = Figure {
+        file: "blends.svg",
+        caption: "The seeds' two-curve blend on [0, 1 + x]: the lower wave c₁ until x, then c₁ + B((t−x)/(1−x))(c₂(t−x) − c₁) \
+                  with B = 3t² − 2t³ across the overlap, then the upper wave c₂ (both dashed grey), for overlaps x = 0.8, 0.5, 0.2."
+            .into(),
+        svg: fig.render(),
+    };
+    Ok(vec![bfunctions, blends])
 }
