@@ -14,21 +14,9 @@ use smallvec::{SmallVec, smallvec};
 
 use crate::Point;
 use crate::basis::{BFunction, Side, binomial};
+use crate::curve::unit_parameter::unit_derivatives;
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result};
-
-/// c(a + s (b − a)) and its derivatives with respect to s (the k-th scaled by (b − a)ᵏ).
-fn unit<const D: usize>(c: &dyn Curve<D>, s: f64, side: Side, order: usize) -> SmallVec<[Point<D>; 8]> {
-    let d = c.domain();
-    let mut out: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); order + 1];
-    c.eval_side(d.lerp(s.clamp(0.0, 1.0)), side, &mut out);
-    let mut f = 1.0;
-    for o in out.iter_mut().skip(1) {
-        f *= d.length();
-        *o *= f;
-    }
-    out
-}
 
 /// The seeds' blend of two curves with overlap x.
 pub struct TwoCurveBlend<const D: usize> {
@@ -69,12 +57,12 @@ impl<const D: usize> Curve<D> for TwoCurveBlend<D> {
         let k = out.len() - 1;
         let before = |b: f64| t < b || (t == b && side == Side::Left);
         if before(x) {
-            out.copy_from_slice(&unit(self.first.as_ref(), t, side, k));
+            out.copy_from_slice(&unit_derivatives(self.first.as_ref(), t, side, k));
         } else if !before(1.0) {
-            out.copy_from_slice(&unit(self.second.as_ref(), t - x, side, k));
+            out.copy_from_slice(&unit_derivatives(self.second.as_ref(), t - x, side, k));
         } else {
-            let a = unit(self.first.as_ref(), t, side, k);
-            let b = unit(self.second.as_ref(), t - x, side, k);
+            let a = unit_derivatives(self.first.as_ref(), t, side, k);
+            let b = unit_derivatives(self.second.as_ref(), t - x, side, k);
             let mut bf: SmallVec<[f64; 8]> = smallvec![0.0; k + 1];
             self.bfunction.eval((t - x) / (1.0 - x), &mut bf);
             let inv = 1.0 / (1.0 - x);
@@ -115,8 +103,8 @@ impl<const D: usize> Curve<D> for PlainBlend<D> {
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         let t = t.clamp(0.0, 1.0);
         let k = out.len() - 1;
-        let a = unit(self.first.as_ref(), t, side, k);
-        let b = unit(self.second.as_ref(), t, side, k);
+        let a = unit_derivatives(self.first.as_ref(), t, side, k);
+        let b = unit_derivatives(self.second.as_ref(), t, side, k);
         let mut bf: SmallVec<[f64; 8]> = smallvec![0.0; k + 1];
         self.bfunction.eval(t, &mut bf);
         for m in 0..=k {

@@ -11,6 +11,7 @@ pub mod rational;
 pub mod rational_bezier;
 pub mod span_kernel;
 pub mod traits;
+pub mod unit_parameter;
 
 pub use bezier::BezierCurve;
 pub use bspline::BSplineCurve;

@@ -14,19 +14,12 @@ pub use ruled::RuledSurface;
 pub use sweep::SweepSurface;
 
 use crate::Point;
-use crate::curve::{Curve, Interval};
-use smallvec::{SmallVec, smallvec};
+use crate::basis::Side;
+use crate::curve::Curve;
+use smallvec::SmallVec;
 
-/// c(a + t (b − a)) and its derivatives with respect to t ∈ [0, 1] (the k-th scaled by
-/// (b − a)ᵏ): a curve reparametrised to the unit interval.
+/// A curve reparametrised to [0, 1], right-hand limits (see
+/// [`crate::curve::unit_parameter::unit_derivatives`]).
 pub(crate) fn unit_derivatives<const D: usize>(c: &dyn Curve<D>, t: f64, order: usize) -> SmallVec<[Point<D>; 8]> {
-    let d: Interval = c.domain();
-    let mut out: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); order + 1];
-    c.eval(d.lerp(t.clamp(0.0, 1.0)), &mut out);
-    let mut s = 1.0;
-    for o in out.iter_mut().skip(1) {
-        s *= d.length();
-        *o *= s;
-    }
-    out
+    crate::curve::unit_parameter::unit_derivatives(c, t, Side::Right, order)
 }
