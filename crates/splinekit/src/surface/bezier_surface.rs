@@ -6,9 +6,9 @@ use smallvec::{SmallVec, smallvec};
 use crate::Point;
 use crate::curve::Interval;
 use crate::curve::bezier::bezier_derivatives;
-use crate::error::{Result, check_points_finite};
+use crate::error::Result;
 use crate::surface::Surface;
-use crate::surface::tensor::net_shape;
+use crate::surface::tensor::checked_net;
 
 /// A tensor-product Bézier surface of degrees (rows − 1, columns − 1).
 #[derive(Debug, Clone, PartialEq)]
@@ -19,10 +19,7 @@ pub struct BezierSurface<const D: usize> {
 impl<const D: usize> BezierSurface<D> {
     /// A surface from its control net (first index along u).
     pub fn new(net: Vec<Vec<Point<D>>>) -> Result<Self> {
-        net_shape(&net, "control_points")?;
-        for (i, row) in net.iter().enumerate() {
-            check_points_finite(&format!("control_points[{i}]"), row)?;
-        }
+        checked_net(&net)?;
         Ok(BezierSurface { net })
     }
     /// The control net.

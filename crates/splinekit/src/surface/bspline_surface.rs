@@ -1,10 +1,9 @@
 //! B-spline surfaces S(u, v) = Σ_i Σ_j N_{i,p}(u) M_{j,q}(v) P_ij.
 
 use crate::Point;
-use crate::basis::SplineAxis;
 use crate::curve::BSplineCurve;
-use crate::error::{Result, check_points_finite};
-use crate::surface::tensor::{TensorSpline, net_shape, tensor_surface_domains};
+use crate::error::Result;
+use crate::surface::tensor::{TensorSpline, net_axes, net_shape, tensor_surface_domains};
 use crate::surface::{Surface, unit_normal};
 
 /// A tensor-product B-spline surface of degrees (p, q). The net's first index runs along
@@ -26,12 +25,7 @@ impl<const D: usize> BSplineSurface<D> {
         net: Vec<Vec<Point<D>>>,
         periodic: (bool, bool),
     ) -> Result<Self> {
-        let (nu, nv) = net_shape(&net, "control_points")?;
-        for (i, row) in net.iter().enumerate() {
-            check_points_finite(&format!("control_points[{i}]"), row)?;
-        }
-        let u = SplineAxis::new(degrees.0, knots_u, nu, periodic.0, "knots_u")?;
-        let v = SplineAxis::new(degrees.1, knots_v, nv, periodic.1, "knots_v")?;
+        let (u, v) = net_axes(degrees, knots_u, knots_v, &net, periodic)?;
         let spline = TensorSpline::new(u, v, &net);
         Ok(BSplineSurface { net, spline })
     }

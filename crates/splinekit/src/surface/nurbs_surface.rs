@@ -5,11 +5,11 @@
 use smallvec::{SmallVec, smallvec};
 
 use crate::Point;
-use crate::basis::{SplineAxis, binomial};
+use crate::basis::binomial;
 use crate::curve::nurbs::check_weights;
-use crate::error::{Result, check_points_finite};
+use crate::error::Result;
 use crate::ops::homogeneous::Homogeneous;
-use crate::surface::tensor::{TensorSpline, net_shape, tensor_surface_domains};
+use crate::surface::tensor::{TensorSpline, net_axes, net_shape, tensor_surface_domains};
 use crate::surface::{Surface, unit_normal};
 
 /// A tensor-product NURBS surface with positive weights beside the control points.
@@ -30,10 +30,8 @@ impl<const D: usize> NurbsSurface<D> {
         weights: Vec<Vec<f64>>,
         periodic: (bool, bool),
     ) -> Result<Self> {
-        let (nu, nv) = net_shape(&net, "control_points")?;
-        for (i, row) in net.iter().enumerate() {
-            check_points_finite(&format!("control_points[{i}]"), row)?;
-        }
+        let (u, v) = net_axes(degrees, knots_u, knots_v, &net, periodic)?;
+        let (nu, nv) = (net.len(), net[0].len());
         if weights.len() != nu {
             return Err(crate::Error::count("weights", format!("{nu} rows like the control points"), weights.len()));
         }
@@ -48,8 +46,6 @@ impl<const D: usize> NurbsSurface<D> {
                 other => other,
             })?;
         }
-        let u = SplineAxis::new(degrees.0, knots_u, nu, periodic.0, "knots_u")?;
-        let v = SplineAxis::new(degrees.1, knots_v, nv, periodic.1, "knots_v")?;
         let rows: Vec<Vec<Homogeneous<D>>> = net
             .iter()
             .zip(&weights)

@@ -39,6 +39,30 @@ macro_rules! tensor_surface_domains {
 }
 pub(crate) use tensor_surface_domains;
 
+/// Validates a control net (rectangular, finite) and builds the two axes of a
+/// tensor-product spline of `degrees` on `knots_u`, `knots_v`.
+pub fn net_axes<const D: usize>(
+    degrees: (usize, usize),
+    knots_u: Vec<f64>,
+    knots_v: Vec<f64>,
+    net: &[Vec<crate::Point<D>>],
+    periodic: (bool, bool),
+) -> Result<(SplineAxis, SplineAxis)> {
+    let (nu, nv) = checked_net(net)?;
+    let u = SplineAxis::new(degrees.0, knots_u, nu, periodic.0, "knots_u")?;
+    let v = SplineAxis::new(degrees.1, knots_v, nv, periodic.1, "knots_v")?;
+    Ok((u, v))
+}
+
+/// [`net_shape`] plus finiteness of every control point.
+pub fn checked_net<const D: usize>(net: &[Vec<crate::Point<D>>]) -> Result<(usize, usize)> {
+    let shape = net_shape(net, "control_points")?;
+    for (i, row) in net.iter().enumerate() {
+        crate::error::check_points_finite(&format!("control_points[{i}]"), row)?;
+    }
+    Ok(shape)
+}
+
 /// Checks a net for raggedness; returns (rows, columns).
 pub fn net_shape<T>(rows: &[Vec<T>], field: &str) -> Result<(usize, usize)> {
     let nu = rows.len();
