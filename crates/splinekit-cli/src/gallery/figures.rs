@@ -167,7 +167,7 @@ fn plot(fig: &mut SvgFigure, f: impl Fn(f64) -> f64, a: f64, b: f64, colour: &st
 
 /// Bernstein polynomials of degree 3.
 pub fn bernstein_basis() -> Result<Figure> {
-    let mut fig = SvgFigure::new(W, H, Projection::TOP).title("Bernstein polynomials B_{i,3}(t)");
+    let mut fig = SvgFigure::new(W, H, Projection::TOP).title("Cubic Bernstein polynomials on [0, 1]");
     for i in 0..=3 {
         plot(&mut fig, |t| bernstein(i, 3, t), 0.0, 1.0, PALETTE[i]);
     }
