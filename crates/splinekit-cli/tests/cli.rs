@@ -298,7 +298,7 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         assert_eq!(v["points"].as_array().unwrap().len(), 5, "{doc}");
         count += 1;
     }
-    assert!(count >= 18, "only {count} examples found");
+    assert!(count >= 19, "only {count} examples found");
 }
 
 fn temp_dir(name: &str) -> std::path::PathBuf {
@@ -536,5 +536,51 @@ fn bfunction_and_blend_documents() {
         &["eval", "-", "--at", "0.5"],
         r#"{"type":"blend","first":{"type":"circle"},"second":{"type":"line","from":[0,0],"to":[1,1]},"overlap":0.5}"#,
         "second: expected a curve of dimension 3",
+    );
+}
+
+#[test]
+fn blending_spline_documents() {
+    let doc = r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":10,"local":{"type":"bezier","degree":3},"bfunction":{"type":"erbs"}}"#;
+    // ERBS + cubic Bézier locals: position and first 3 derivatives of the model at every knot.
+    let knots: Vec<String> = (0..10).map(|k| format!("{}", std::f64::consts::TAU * k as f64 / 10.0)).collect();
+    let v = ok_json(&["eval", "-", "--at", &knots.join(","), "--derivatives", "3"], doc);
+    let m = ok_json(&["eval", "-", "--at", &knots.join(","), "--derivatives", "3"], r#"{"type":"heart"}"#);
+    for i in 0..10 {
+        let (a, b) = (floats(&v["points"][i]), floats(&m["points"][i]));
+        assert!((0..3).all(|c| (a[c] - b[c]).abs() < 1e-12), "knot {i}");
+        for k in 0..3 {
+            let (a, b) = (floats(&v["derivatives"][i][k]), floats(&m["derivatives"][i][k]));
+            assert!((0..3).all(|c| (a[c] - b[c]).abs() < 1e-9 * (1.0 + b[c].abs())), "knot {i} derivative {}", k + 1);
+        }
+    }
+    // A transform moves its local's knot exactly.
+    let moved = r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":10,"transforms":{"0":{"translate":[0,2,0]}}}"#;
+    let v = ok_json(&["eval", "-", "--at", "0"], moved);
+    assert!((floats(&v["points"][0])[1] - 7.0).abs() < 1e-12);
+    assert_bad(
+        &["eval", "-", "--at", "0"],
+        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":10,"transforms":{"12":{"scale":2}}}"#,
+        "local curve 12 does not exist",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0"],
+        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":1}"#,
+        "local_curves",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0"],
+        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":5,"local":{"type":"arc"}}"#,
+        "local",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0"],
+        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":5,"transforms":[{"rotate":{"angle":1}}]}"#,
+        "transforms[0].rotate.axis",
+    );
+    assert_bad(
+        &["eval", "-", "--at", "0"],
+        r#"{"type":"blending_spline","model":{"type":"nope"},"local_curves":5}"#,
+        "model.type",
     );
 }

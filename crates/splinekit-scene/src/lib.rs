@@ -14,6 +14,7 @@ pub mod error;
 pub mod points;
 pub mod refine;
 pub mod surfaces;
+pub mod transforms;
 
 pub use build::{AnyCurve, CurveVisitor};
 pub use curves::CurveDocument;
