@@ -10,7 +10,7 @@ import json, os, random, subprocess, sys, tempfile
 B = sys.argv[1]
 random.seed(int(sys.argv[2]) if len(sys.argv) > 2 else 1)
 SVG = os.path.join(tempfile.mkdtemp(), "fuzz.svg")
-types = ["bezier","rational_bezier","bspline","nurbs","hermite","catmull_rom","line","circle","ellipse","helix","heart","rose","lissajous","trefoil","butterfly","bfunction","blend",
+types = ["bezier","rational_bezier","bspline","nurbs","hermite","catmull_rom","line","circle","ellipse","helix","heart","rose","lissajous","trefoil","butterfly","bfunction","blend","blending_spline",
          "bezier_surface","bspline_surface","nurbs_surface","plane","cylinder","cone","sphere","torus","mobius","klein_bottle","enneper","helicoid","seashell","apple","heart_surface","revolution","ruled","extrusion","coons","sweep","trimmed"]
 def num():
     return random.choice([0, 1, -1, 0.5, 2, 3, 1e300, -1e300, 1e-300, 7, 100000, -0.0, 1e9, 0.25, 12, "x", None, [], True])
@@ -24,7 +24,7 @@ def knots(n):
     if random.random() < 0.1: random.shuffle(k)
     return k
 def curve(depth=0):
-    t = random.choice(types[:17]) if depth < 2 else "line"
+    t = random.choice(types[:18]) if depth < 2 else "line"
     d = random.choice([1,2,3,3,3,4,5])
     n = random.choice([0,1,2,3,4,5,8])
     p = random.choice([0,1,2,3,5,-1,100000])
@@ -50,6 +50,13 @@ def curve(depth=0):
                 if random.random() < 0.4: bf[key] = num()
         doc["bfunction"] = bf
     if t == "blend": doc.update(first=curve(depth + 1), second=curve(depth + 1), overlap=num())
+    if t == "blending_spline":
+        doc.update(model=curve(depth + 1), local_curves=random.choice([0, 1, 2, 3, 10, 100001, -1]))
+        if random.random() < 0.5: doc["local"] = random.choice([{"type": "bezier", "degree": random.choice([0, 1, 3, 21])}, {"type": "sub_curve"}, {"type": "arc"}])
+        if random.random() < 0.5: doc["closed"] = random.random() < 0.5
+        if random.random() < 0.5:
+            tr = {"translate": pt(random.choice([2, 3])), "scale": num(), "rotate": {"axis": pt(3), "angle": num()}}
+            doc["transforms"] = random.choice([[tr], {"0": tr}, {"x": tr}, {"7": tr}, 5])
     if random.random() < 0.05: doc["bogus"] = 1
     return doc
 def surface(depth=0):

@@ -32,6 +32,7 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
     figures.extend(figures::model_curves()?);
     figures.extend(figures::surfaces()?);
     figures.extend(figures::blending()?);
+    figures.extend(figures::heart_blending_spline()?);
     std::fs::create_dir_all(&args.output).with_context(|| format!("-o: cannot create '{}'", args.output.display()))?;
     let mut html = String::from(
         "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>splinekit gallery</title>\n\

@@ -172,6 +172,16 @@ impl<const D: usize> BlendingSplineCurve<D> {
     pub fn transform(&self, k: usize) -> &Affine<D> {
         &self.locals[k].transform
     }
+    /// Local curve k in world coordinates (its frame applied) at the global parameter t,
+    /// with derivatives: `out[j]` = ℓ_k^{(j)}(t). Meaningful on [`Self::local_support`].
+    pub fn eval_local(&self, k: usize, t: f64, out: &mut [Point<D>]) {
+        self.locals[k].eval(t, Side::Right, out)
+    }
+    /// The parameter interval [c_k − Δ, c_k + Δ] where local k takes part.
+    pub fn local_support(&self, k: usize) -> (f64, f64) {
+        let dt = self.centres.get(1).map_or(self.domain.length(), |c1| c1 - self.centres[0]);
+        (self.centres[k] - dt, self.centres[k] + dt)
+    }
     /// Sets the frame of local k (about its origin); returns the parameter ranges whose
     /// points changed ([`BlendingSplineCurve::affected_range`]).
     pub fn set_transform(&mut self, k: usize, transform: Affine<D>) -> Vec<(f64, f64)> {
