@@ -45,17 +45,6 @@ fn surface_net(i: usize, j: usize) -> [f64; 3] {
     [i as f64, j as f64, ((i as f64) * 0.3).sin() * ((j as f64) * 0.2).cos()]
 }
 
-fn time_grid(f: &mut dyn FnMut() -> f64) -> (f64, f64) {
-    let mut best = f64::INFINITY;
-    let mut sum = 0.0;
-    for _ in 0..5 {
-        let t = Instant::now();
-        sum = black_box(f());
-        best = best.min(t.elapsed().as_secs_f64());
-    }
-    (best * 1e9 / (G * G) as f64, sum)
-}
-
 fn surfaces(rows: &mut Vec<(String, String, f64, f64)>) {
     let k: Vec<f64> = {
         let mut k = vec![0.0; 4];
@@ -74,7 +63,7 @@ fn surfaces(rows: &mut Vec<(String, String, f64, f64)>) {
         let s = BSplineSurface::new((3, 3), k.clone(), k.clone(), net, (false, false)).unwrap();
         let mut p = vec![Point::<3>::zeros(); G * G];
         let mut n = p.clone();
-        let r = time_grid(&mut || {
+        let r = time_per(G * G, &mut || {
             s.eval_grid_with_normals(&g, &g, &mut p, &mut n);
             p.iter().map(|q| q[2]).sum::<f64>() + n.iter().map(|q| q[2]).sum::<f64>()
         });
@@ -83,12 +72,18 @@ fn surfaces(rows: &mut Vec<(String, String, f64, f64)>) {
     {
         use curvo::prelude::NurbsSurface3D;
         use nalgebra::Point4;
-        let net = (0..100).map(|i| (0..100).map(|j| {
-            let c = surface_net(i, j);
-            Point4::new(c[0], c[1], c[2], 1.0)
-        }).collect()).collect();
+        let net = (0..100)
+            .map(|i| {
+                (0..100)
+                    .map(|j| {
+                        let c = surface_net(i, j);
+                        Point4::new(c[0], c[1], c[2], 1.0)
+                    })
+                    .collect()
+            })
+            .collect();
         let s = NurbsSurface3D::<f64>::new(3, 3, k.clone(), k.clone(), net);
-        let r = time_grid(&mut || {
+        let r = time_per(G * G, &mut || {
             let mut sum = 0.0;
             for &u in &g {
                 for &v in &g {
@@ -103,6 +98,11 @@ fn surfaces(rows: &mut Vec<(String, String, f64, f64)>) {
 
 /// Best-of-5 time per element in ns; `f` returns a checksum so nothing is optimised away.
 fn time(f: &mut dyn FnMut() -> f64) -> (f64, f64) {
+    time_per(M, f)
+}
+
+/// Best of 5 runs of `f`, in ns per element for `count` elements, with f's checksum.
+fn time_per(count: usize, f: &mut dyn FnMut() -> f64) -> (f64, f64) {
     let mut best = f64::INFINITY;
     let mut sum = 0.0;
     for _ in 0..5 {
@@ -110,7 +110,7 @@ fn time(f: &mut dyn FnMut() -> f64) -> (f64, f64) {
         sum = black_box(f());
         best = best.min(t.elapsed().as_secs_f64());
     }
-    (best * 1e9 / M as f64, sum)
+    (best * 1e9 / count as f64, sum)
 }
 
 fn main() {
@@ -144,10 +144,12 @@ fn main() {
     {
         use curvo::prelude::NurbsCurve3D;
         use nalgebra::Point4;
-        let pts = (0..N).map(|i| {
-            let c = control(i);
-            Point4::new(c[0], c[1], c[2], 1.0)
-        }).collect();
+        let pts = (0..N)
+            .map(|i| {
+                let c = control(i);
+                Point4::new(c[0], c[1], c[2], 1.0)
+            })
+            .collect();
         let c = NurbsCurve3D::<f64>::try_new(3, pts, k.clone()).unwrap();
         let r = time(&mut || random.iter().map(|&t| c.point_at(t).y).sum());
         rows.push(("curvo 0.3".into(), "point, random order".into(), r.0, r.1));
