@@ -152,3 +152,177 @@ fn bezier_locals_converge_to_the_circle() {
     assert!(rates.iter().all(|&r| r > 2.5), "convergence rates {rates:?}");
     assert!(BlendingSplineCurve::from_model(circle, 2, LocalKind::Bezier(2), BFunction::Linear, true).is_err());
 }
+
+#[test]
+fn osculating_arc_locals_match_position_tangent_and_curvature_and_give_the_circle_back() {
+    let circle: Arc<dyn Curve<3>> = Arc::new(Circle::new(2.0).unwrap());
+    let c =
+        BlendingSplineCurve::from_model(circle.clone(), 5, LocalKind::Arc, BFunction::erbs_default(), true).unwrap();
+    for i in 0..=200 {
+        let t = i as f64 * std::f64::consts::TAU / 200.0;
+        assert!((c.point(t) - circle.point(t)).norm() < 1e-13, "t = {t}");
+    }
+    let h: Arc<dyn Curve<3>> = Arc::new(splinekit::curve::model::Ellipse::new(3.0, 1.0).unwrap());
+    let c = BlendingSplineCurve::from_model(h.clone(), 12, LocalKind::Arc, BFunction::erbs_default(), true).unwrap();
+    for k in 0..12 {
+        let t = c.centre(k);
+        let (mut got, mut want) = ([Point::<3>::zeros(); 3], [Point::<3>::zeros(); 3]);
+        c.eval(t, &mut got);
+        h.eval(t, &mut want);
+        assert!((got[0] - want[0]).norm() < 1e-12 && (got[1] - want[1]).norm() < 1e-11);
+        let (kg, kw) = (c.curvature(t), h.curvature(t));
+        assert!((kg - kw).abs() < 1e-10 * kw.max(1.0), "knot {k}: curvature {kg} vs {kw}");
+    }
+    // The heart has no tangent at its cusp (t = 0): arcs are refused there, with a reason.
+    let e = BlendingSplineCurve::from_model(heart(), 12, LocalKind::Arc, BFunction::erbs_default(), true);
+    assert!(e.err().unwrap().to_string().contains("no tangent"));
+}
+
+#[test]
+fn chord_length_knots_space_the_locals_evenly_along_the_model() {
+    use splinekit::blend::KnotSpacing;
+    use splinekit::ops::length::arc_length;
+    let h = heart();
+    let c = BlendingSplineCurve::from_model_spaced(
+        h.clone(),
+        10,
+        LocalKind::Bezier(3),
+        BFunction::erbs_default(),
+        true,
+        KnotSpacing::ChordLength,
+    )
+    .unwrap();
+    let knots = c.knots().values();
+    let lengths: Vec<f64> = knots.windows(2).map(|w| arc_length(h.as_ref(), w[0], w[1], 1e-10)).collect();
+    let mean = lengths.iter().sum::<f64>() / lengths.len() as f64;
+    for l in &lengths {
+        assert!((l - mean).abs() < 1e-4 * mean, "{lengths:?}");
+    }
+    // Still Hermite at the (non-uniform) knots.
+    for k in 0..10 {
+        let t = c.centre(k);
+        let (mut got, mut want) = ([Point::<3>::zeros(); 4], [Point::<3>::zeros(); 4]);
+        c.eval(t, &mut got);
+        h.eval(t, &mut want);
+        for j in 0..4 {
+            assert!((got[j] - want[j]).norm() < 1e-9 * want[j].norm().max(1.0), "knot {k} order {j}");
+        }
+    }
+}
+
+#[test]
+fn explicit_locals_are_mapped_onto_their_supports() {
+    use splinekit::curve::BezierCurve;
+    // Three straight locals; the curve passes through each local's point at its knot.
+    let line = |a: [f64; 2], b: [f64; 2]| -> Arc<dyn Curve<2>> {
+        Arc::new(BezierCurve::new(vec![Point::<2>::from(a), Point::<2>::from(b)]).unwrap())
+    };
+    let locals = vec![line([-1.0, 0.0], [1.0, 0.0]), line([0.0, 0.0], [2.0, 2.0]), line([1.0, 1.0], [3.0, 1.0])];
+    let c = BlendingSplineCurve::from_locals(vec![0.0, 1.0, 3.0], locals, BFunction::erbs_default(), false).unwrap();
+    // Local k's [0,1] spans [c_{k−1}, c_{k+1}]; its midpoint ... at the knot it is at u = (c_k − c_{k−1})/(c_{k+1} − c_{k−1}).
+    assert!((c.point(0.0) - Point::<2>::new(0.0, 0.0)).norm() < 1e-15);
+    assert!((c.point(1.0) - Point::<2>::new(2.0 / 3.0, 2.0 / 3.0)).norm() < 1e-15);
+    assert!((c.point(3.0) - Point::<2>::new(2.0, 1.0)).norm() < 1e-15);
+    // The derivative at a knot is the local's, scaled by the map: local 1 spans 3 units.
+    let mut d = [Point::<2>::zeros(); 2];
+    c.eval(1.0, &mut d);
+    assert!((d[1] - Point::<2>::new(2.0 / 3.0, 2.0 / 3.0)).norm() < 1e-14);
+    check_derivatives_by_finite_differences(&c, &[0.3, 1.7, 2.5]);
+    let bad = BlendingSplineCurve::<2>::from_locals(vec![0.0, 1.0], vec![], BFunction::erbs_default(), false);
+    assert!(bad.err().unwrap().to_string().contains("local_curves"));
+}
+
+fn check_derivatives_by_finite_differences<C: Curve<D>, const D: usize>(c: &C, ts: &[f64]) {
+    for &t in ts {
+        let h = 1e-6;
+        let (mut a, mut b, mut m) = ([Point::<D>::zeros(); 3], [Point::<D>::zeros(); 3], [Point::<D>::zeros(); 3]);
+        c.eval(t - h, &mut a);
+        c.eval(t + h, &mut b);
+        c.eval(t, &mut m);
+        for j in 0..2 {
+            let fd = (b[j] - a[j]) / (2.0 * h);
+            assert!((fd - m[j + 1]).norm() < 1e-6 * m[j + 1].norm().max(1.0), "t = {t}, order {}", j + 1);
+        }
+    }
+}
+
+#[test]
+fn inserting_a_local_keeps_the_curve_outside_its_interval_and_still_interpolates() {
+    let h = heart();
+    let mut c =
+        BlendingSplineCurve::from_model(h.clone(), 8, LocalKind::Bezier(2), BFunction::erbs_default(), true).unwrap();
+    let before = c.clone();
+    let (lo, hi) = (c.centre(2), c.centre(3));
+    let t_new = 0.5 * (lo + hi) + 0.1;
+    let k = c.insert_local(t_new).unwrap();
+    assert_eq!((k, c.local_count()), (3, 9));
+    for i in 0..=400 {
+        let t = i as f64 * std::f64::consts::TAU / 400.0;
+        if t <= lo || t >= hi {
+            assert_eq!(c.point(t), before.point(t), "t = {t} outside the split interval moved");
+        }
+    }
+    for k in 0..c.local_count() {
+        let t = c.centre(k);
+        let (mut got, mut want) = ([Point::<3>::zeros(); 3], [Point::<3>::zeros(); 3]);
+        c.eval(t, &mut got);
+        h.eval(t, &mut want);
+        for j in 0..3 {
+            assert!((got[j] - want[j]).norm() < 1e-9 * want[j].norm().max(1.0), "knot {k} order {j}");
+        }
+    }
+    assert!(c.insert_local(t_new).is_err(), "a knot cannot be inserted twice");
+    assert!(c.insert_local(100.0).is_err());
+}
+
+#[test]
+fn splitting_a_knot_gives_a_c0_joint_that_survives_rotating_one_copy() {
+    let mut c =
+        BlendingSplineCurve::from_model(heart(), 8, LocalKind::Bezier(3), BFunction::erbs_default(), true).unwrap();
+    let before = c.clone();
+    c.split_knot(3).unwrap();
+    assert_eq!(c.local_count(), 9);
+    for i in 0..=100 {
+        let t = i as f64 * std::f64::consts::TAU / 100.0;
+        assert!((c.point(t) - before.point(t)).norm() < 1e-12);
+    }
+    let t = c.centre(3);
+    c.set_transform(4, Affine::rotation(Point::<3>::new(0.0, 0.0, 1.0), 0.7).unwrap());
+    let (mut l, mut r) = ([Point::<3>::zeros(); 2], [Point::<3>::zeros(); 2]);
+    c.eval_side(t, Side::Left, &mut l);
+    c.eval_side(t, Side::Right, &mut r);
+    assert!((l[0] - r[0]).norm() < 1e-12, "C⁰ at the double knot");
+    assert!((l[1] - r[1]).norm() > 1.0, "a corner after rotating one copy");
+    assert!((r[1] - Affine::rotation(Point::<3>::new(0.0, 0.0, 1.0), 0.7).unwrap().apply_vector(&l[1])).norm() < 1e-9);
+}
+
+#[test]
+fn rebuilding_changes_count_degree_and_bfunction_and_refresh_only_touches_the_affected_range() {
+    use splinekit::curve::CurveSamples;
+    let c = BlendingSplineCurve::from_model(heart(), 6, LocalKind::Bezier(2), BFunction::erbs_default(), true).unwrap();
+    let finer = c.rebuilt(24, LocalKind::Bezier(4)).unwrap();
+    assert_eq!(finer.local_count(), 24);
+    let err = |c: &BlendingSplineCurve<3>| {
+        (0..500).map(|i| (c.point(i as f64 * 0.0125) - heart().point(i as f64 * 0.0125)).norm()).fold(0.0, f64::max)
+    };
+    assert!(err(&finer) < err(&c) / 100.0);
+    let mut poly = c.clone();
+    poly.set_bfunction(BFunction::polynomial(2).unwrap());
+    assert!(err(&poly) != err(&c));
+
+    let mut c = finer;
+    let mut samples = CurveSamples::uniform(&c, 2001, 2).unwrap();
+    let ranges = c.set_transform(5, Affine::uniform_scale(1.5));
+    let touched = samples.refresh(&c, &ranges);
+    assert!(touched > 100 && touched < 200, "{touched} samples re-evaluated");
+    let fresh = CurveSamples::uniform(&c, 2001, 2).unwrap();
+    for i in 0..2001 {
+        assert_eq!(samples.at(i), fresh.at(i), "sample {i}");
+    }
+    // Local 0 of the closed curve touches both ends of the domain.
+    let ranges = c.set_transform(0, Affine::translation(Point::<3>::new(0.0, 1.0, 0.0)));
+    assert_eq!(ranges.len(), 2);
+    samples.refresh(&c, &ranges);
+    let fresh = CurveSamples::uniform(&c, 2001, 2).unwrap();
+    assert!((0..2001).all(|i| samples.at(i) == fresh.at(i)));
+}

@@ -1,27 +1,29 @@
 //! Blending-spline (GERBS/ERBS) curves: c(t) = Σ_k B∘w_k(t) ℓ_k(t), built from local
 //! curves ℓ_k blended by a B-function.
 //!
-//! Local curve k is centred at the knot c_k and supported on [c_{k−1}, c_{k+1}]. On
-//! [c_k, c_{k+1}) exactly two are active: c = ℓ_k + B(w)(ℓ_{k+1} − ℓ_k) with
-//! w = (t − c_k)/Δ, Δ = c_{k+1} − c_k, and by Leibniz
+//! Local curve k is centred at the knot c_k and supported on [c_{k−1}, c_{k+1}]
+//! ([`BlendKnots`]). On [c_k, c_{k+1}) exactly two are active: c = ℓ_k + B(w)(ℓ_{k+1} − ℓ_k)
+//! with w = (t − c_k)/Δ, Δ = c_{k+1} − c_k, and by Leibniz
 //! c^{(m)} = ℓ_k^{(m)} + Σ_j C(m, j) B^{(j)}(w) Δ^{−j} (ℓ_{k+1} − ℓ_k)^{(m−j)}, any order.
 //! Locals are evaluated at the global parameter and return derivatives with respect to it.
 //!
 //! Every local carries an affine frame about its origin o_k (its interpolation point):
 //! world(p) = o_k + T_k(p − o_k), positions as points, derivatives as vectors. Moving local k
-//! changes the curve only on (c_{k−1}, c_{k+1}) ([`BlendingSplineCurve::affected_range`]).
+//! changes the curve only on (c_{k−1}, c_{k+1}) ([`BlendingSplineCurve::affected_ranges`]).
 //!
-//! Knots are uniform over the model's domain [s, e]: open curves have n locals centred at
-//! s + k (e − s)/(n − 1); closed ones n locals at s + k (e − s)/n, indices wrapping (local 0
-//! is evaluated one period back on the last interval — no object is aliased twice).
+//! Built from a model, the knots are uniform over the model's domain (or at equal chord
+//! length along it); closed curves have n locals on n intervals, local 0 being evaluated one
+//! period back on the last interval (no object aliased twice).
 
 use std::sync::Arc;
 
 use smallvec::{SmallVec, smallvec};
 
+use super::hermite::IntervalBezier;
+use super::knots::BlendKnots;
+use super::osculating_arc::OsculatingArc;
 use crate::Point;
 use crate::basis::{BFunction, Side, binomial};
-use crate::curve::bezier::bezier_derivatives;
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result};
 use crate::frame::Affine;
@@ -32,70 +34,35 @@ pub enum LocalKind {
     /// The model itself around the knot.
     SubCurve,
     /// The Bézier curve of degree d matching the model's position and first d derivatives
-    /// at the knot (on the support [c_k − Δ, c_k + Δ]).
+    /// at the knot (on the support [c_{k−1}, c_{k+1}]).
     Bezier(usize),
+    /// The osculating circle arc at the knot (position, tangent and curvature).
+    Arc,
 }
 
-/// A Bézier curve on the parameter interval [start, start + length], evaluated with
-/// derivatives with respect to that parameter.
-struct IntervalBezier<const D: usize> {
-    points: Vec<Point<D>>,
-    start: f64,
-    length: f64,
-}
-
-impl<const D: usize> Curve<D> for IntervalBezier<D> {
-    fn domain(&self) -> Interval {
-        Interval::new(self.start, self.start + self.length)
-    }
-    fn is_closed(&self) -> bool {
-        false
-    }
-    fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<D>]) {
-        bezier_derivatives(&self.points, (t - self.start) / self.length, out);
-        let mut s = 1.0;
-        for o in out.iter_mut().skip(1) {
-            s /= self.length;
-            *o *= s;
-        }
-    }
-}
-
-/// The Bézier of degree d on [a, a + h] whose value and first d derivatives at the
-/// parameter a + u₀h equal `target` (the Hermite/Bernstein system solved directly).
-fn hermite_bezier<const D: usize>(target: &[Point<D>], a: f64, h: f64, u0: f64) -> Result<IntervalBezier<D>> {
-    let d = target.len() - 1;
-    // Row j: the j-th derivative (w.r.t. t) of each Bernstein polynomial at u₀.
-    let mut m = nalgebra::DMatrix::<f64>::zeros(d + 1, d + 1);
-    for i in 0..=d {
-        let mut unit = vec![0.0; d + 1];
-        unit[i] = 1.0;
-        let mut ders = vec![0.0; d + 1];
-        bezier_derivatives(&unit, u0, &mut ders);
-        for j in 0..=d {
-            m[(j, i)] = ders[j] / h.powi(j as i32);
-        }
-    }
-    let lu = m.lu();
-    let mut points = vec![Point::<D>::zeros(); d + 1];
-    for c in 0..D {
-        let rhs = nalgebra::DVector::from_iterator(d + 1, target.iter().map(|p| p[c]));
-        let x = lu.solve(&rhs).ok_or_else(|| Error::numerical("blending spline", "singular Hermite system"))?;
-        for i in 0..=d {
-            points[i][c] = x[i];
-        }
-    }
-    Ok(IntervalBezier { points, start: a, length: h })
+/// Where the knots of a blending spline built from a model go.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum KnotSpacing {
+    /// Evenly spaced in the model's parameter.
+    #[default]
+    Uniform,
+    /// At equal chord length along the model (its arc length, measured on a fine polyline).
+    ChordLength,
 }
 
 /// One local curve with its frame.
-pub struct Local<const D: usize> {
-    curve: Box<dyn Curve<D>>,
+#[derive(Clone)]
+struct Local<const D: usize> {
+    curve: Arc<dyn Curve<D>>,
     origin: Point<D>,
     transform: Affine<D>,
 }
 
 impl<const D: usize> Local<D> {
+    fn new(curve: Arc<dyn Curve<D>>, at: f64) -> Self {
+        let origin = curve.point(at);
+        Local { curve, origin, transform: Affine::identity() }
+    }
     /// World values at t: o + T(ℓ − o) for the position, T's linear part for derivatives.
     fn eval(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         self.curve.eval_side(t, side, out);
@@ -106,18 +73,26 @@ impl<const D: usize> Local<D> {
     }
 }
 
+/// The model a spline was built from, kept so it can be rebuilt with other settings.
+#[derive(Clone)]
+struct ModelSource<const D: usize> {
+    model: Arc<dyn Curve<D>>,
+    kind: LocalKind,
+    spacing: KnotSpacing,
+}
+
 /// A blending-spline curve.
+#[derive(Clone)]
 pub struct BlendingSplineCurve<const D: usize> {
     locals: Vec<Local<D>>,
-    centres: Vec<f64>,
-    domain: Interval,
-    closed: bool,
+    knots: BlendKnots,
     bfunction: BFunction,
+    source: Option<ModelSource<D>>,
 }
 
 impl<const D: usize> BlendingSplineCurve<D> {
-    /// `count` local curves of `kind` made from `model` over its domain, blended by
-    /// `bfunction`; closed when `closed` (a closed model is expected then).
+    /// `count` local curves of `kind` made from `model` over its domain at uniform knots,
+    /// blended by `bfunction`; closed when `closed` (a closed model is expected then).
     pub fn from_model(
         model: Arc<dyn Curve<D>>,
         count: usize,
@@ -125,44 +100,133 @@ impl<const D: usize> BlendingSplineCurve<D> {
         bfunction: BFunction,
         closed: bool,
     ) -> Result<Self> {
-        if count < 2 || (closed && count < 3) || count > 100_000 {
+        Self::from_model_spaced(model, count, kind, bfunction, closed, KnotSpacing::Uniform)
+    }
+
+    /// As [`Self::from_model`], with the knots placed by `spacing`.
+    pub fn from_model_spaced(
+        model: Arc<dyn Curve<D>>,
+        count: usize,
+        kind: LocalKind,
+        bfunction: BFunction,
+        closed: bool,
+        spacing: KnotSpacing,
+    ) -> Result<Self> {
+        let dom = model.domain();
+        let uniform = BlendKnots::uniform(dom, count, closed, "local_curves")?;
+        let knots = match spacing {
+            KnotSpacing::Uniform => uniform,
+            KnotSpacing::ChordLength => BlendKnots::new(chord_length_knots(model.as_ref(), uniform.values()), closed)?,
+        };
+        let mut locals = Vec::with_capacity(count);
+        for k in 0..knots.count() {
+            locals.push(Local::new(local_from_model(&model, kind, &knots, k)?, knots.centre(k)));
+        }
+        Ok(BlendingSplineCurve { locals, knots, bfunction, source: Some(ModelSource { model, kind, spacing }) })
+    }
+
+    /// Explicit knots and local curves of any kind. Local k's own domain is mapped
+    /// affinely onto its support [c_{k−1}, c_{k+1}] (past the ends of an open spline the
+    /// end spacing is mirrored). Open: n knots for n locals; closed: n + 1 knots, the last
+    /// being the first plus the period.
+    pub fn from_locals(
+        knots: Vec<f64>,
+        locals: Vec<Arc<dyn Curve<D>>>,
+        bfunction: BFunction,
+        closed: bool,
+    ) -> Result<Self> {
+        let knots = BlendKnots::new(knots, closed)?;
+        if locals.len() != knots.count() {
             return Err(Error::invalid(
                 "local_curves",
-                format!("need {} to 100000 local curves, got {count}", if closed { 3 } else { 2 }),
+                format!(
+                    "expected {} local curves for {} knots, got {}",
+                    knots.count(),
+                    knots.values().len(),
+                    locals.len()
+                ),
             ));
         }
-        let dom = model.domain();
-        let dt = dom.length() / if closed { count } else { count - 1 } as f64;
-        let centres: Vec<f64> = (0..count).map(|k| dom.start + k as f64 * dt).collect();
-        let mut locals = Vec::with_capacity(count);
-        for &c in &centres {
-            let origin = model.point(c);
-            let curve: Box<dyn Curve<D>> = match kind {
-                LocalKind::SubCurve => Box::new(SharedCurve(model.clone())),
-                LocalKind::Bezier(d) => {
-                    if d == 0 || d > 20 {
-                        return Err(Error::invalid(
-                            "local",
-                            format!("Bézier degree must be between 1 and 20, got {d}"),
-                        ));
-                    }
-                    let mut target = vec![Point::<D>::zeros(); d + 1];
-                    model.eval(c, &mut target);
-                    Box::new(hermite_bezier(&target, c - dt, 2.0 * dt, 0.5)?)
-                }
-            };
-            locals.push(Local { curve, origin, transform: Affine::identity() });
-        }
-        Ok(BlendingSplineCurve { locals, centres, domain: dom, closed, bfunction })
+        let locals = locals
+            .into_iter()
+            .enumerate()
+            .map(|(k, curve)| {
+                let (a, b) = knots.support(k);
+                let mapped: Arc<dyn Curve<D>> = Arc::new(MappedCurve::onto(curve, a, b));
+                Local::new(mapped, knots.centre(k))
+            })
+            .collect();
+        Ok(BlendingSplineCurve { locals, knots, bfunction, source: None })
+    }
+
+    /// The same spline rebuilt from its model with `count` locals of `kind` (frames are
+    /// reset). An error for splines made from explicit locals.
+    pub fn rebuilt(&self, count: usize, kind: LocalKind) -> Result<Self> {
+        let src = self.source.as_ref().ok_or_else(|| {
+            Error::invalid("local_curves", "this blending spline was built from explicit locals, not a model")
+        })?;
+        Self::from_model_spaced(
+            src.model.clone(),
+            count,
+            kind,
+            self.bfunction.clone(),
+            self.knots.is_closed(),
+            src.spacing,
+        )
+    }
+
+    /// Replaces the B-function (the locals and frames stay).
+    pub fn set_bfunction(&mut self, bfunction: BFunction) {
+        self.bfunction = bfunction;
+    }
+    /// The B-function.
+    pub fn bfunction(&self) -> &BFunction {
+        &self.bfunction
+    }
+
+    /// Inserts a local curve at the new knot `t` and returns its index. Built from a model,
+    /// the new local is made from the model like the others; otherwise it is the cubic
+    /// Bézier Hermite-fitted to the current curve at t. The neighbours keep their curves
+    /// (they are functions of the global parameter), so the shape changes only on the two
+    /// intervals next to t, and the curve still passes through every local's knot point.
+    pub fn insert_local(&mut self, t: f64) -> Result<usize> {
+        let mut knots = self.knots.clone();
+        let k = knots.insert(t)?;
+        let curve = match &self.source {
+            Some(src) => local_from_model(&src.model, src.kind, &knots, k)?,
+            None => {
+                let mut target = [Point::<D>::zeros(); 4];
+                self.eval(t, &mut target);
+                let (a, b) = knots.support(k);
+                Arc::new(IntervalBezier::hermite(&target, a, b - a, (t - a) / (b - a))?)
+            }
+        };
+        self.knots = knots;
+        self.locals.insert(k, Local::new(curve, t));
+        Ok(k)
+    }
+
+    /// Splits interior knot k: the knot is doubled and local k copied, so the two copies
+    /// can be moved independently (a C⁰ joint at c_k that stays continuous under rotations
+    /// and scalings about the local origin). The copy has index k + 1.
+    pub fn split_knot(&mut self, k: usize) -> Result<()> {
+        self.knots.split(k)?;
+        let copy = self.locals[k].clone();
+        self.locals.insert(k + 1, copy);
+        Ok(())
     }
 
     /// Number of local curves.
     pub fn local_count(&self) -> usize {
         self.locals.len()
     }
+    /// The knot vector.
+    pub fn knots(&self) -> &BlendKnots {
+        &self.knots
+    }
     /// The knot (centre) of local k.
     pub fn centre(&self, k: usize) -> f64 {
-        self.centres[k]
+        self.knots.centre(k)
     }
     /// The interpolation point (frame origin) of local k.
     pub fn origin(&self, k: usize) -> Point<D> {
@@ -177,34 +241,73 @@ impl<const D: usize> BlendingSplineCurve<D> {
     pub fn eval_local(&self, k: usize, t: f64, out: &mut [Point<D>]) {
         self.locals[k].eval(t, Side::Right, out)
     }
-    /// The parameter interval [c_k − Δ, c_k + Δ] where local k takes part.
+    /// The parameter interval [c_{k−1}, c_{k+1}] where local k takes part.
     pub fn local_support(&self, k: usize) -> (f64, f64) {
-        let dt = self.centres.get(1).map_or(self.domain.length(), |c1| c1 - self.centres[0]);
-        (self.centres[k] - dt, self.centres[k] + dt)
+        self.knots.support(k)
     }
     /// Sets the frame of local k (about its origin); returns the parameter ranges whose
-    /// points changed ([`BlendingSplineCurve::affected_range`]).
+    /// points changed ([`Self::affected_ranges`]).
     pub fn set_transform(&mut self, k: usize, transform: Affine<D>) -> Vec<(f64, f64)> {
         self.locals[k].transform = transform;
-        self.affected_range(k)
+        self.affected_ranges(k)
     }
     /// The parameter ranges where local k is active: (c_{k−1}, c_{k+1}), clipped to the
     /// domain (and split at the seam of a closed curve).
-    pub fn affected_range(&self, k: usize) -> Vec<(f64, f64)> {
-        let dt = self.centres.get(1).map_or(self.domain.length(), |c1| c1 - self.centres[0]);
-        let (a, b) = (self.centres[k] - dt, self.centres[k] + dt);
-        if !self.closed {
-            return vec![(a.max(self.domain.start), b.min(self.domain.end))];
-        }
-        let (s, e, p) = (self.domain.start, self.domain.end, self.domain.length());
-        if a < s {
-            vec![(s, b), (a + p, e)]
-        } else if b > e {
-            vec![(a, e), (s, b - p)]
-        } else {
-            vec![(a, b)]
-        }
+    pub fn affected_ranges(&self, k: usize) -> Vec<(f64, f64)> {
+        self.knots.affected_ranges(k)
     }
+}
+
+/// Local k made from the model according to `kind`.
+fn local_from_model<const D: usize>(
+    model: &Arc<dyn Curve<D>>,
+    kind: LocalKind,
+    knots: &BlendKnots,
+    k: usize,
+) -> Result<Arc<dyn Curve<D>>> {
+    let c = knots.centre(k);
+    Ok(match kind {
+        LocalKind::SubCurve => Arc::new(SharedCurve(model.clone())),
+        LocalKind::Arc => Arc::new(OsculatingArc::of(model.as_ref(), c)?),
+        LocalKind::Bezier(d) => {
+            if d == 0 || d > 20 {
+                return Err(Error::invalid("local", format!("Bézier degree must be between 1 and 20, got {d}")));
+            }
+            let mut target = vec![Point::<D>::zeros(); d + 1];
+            model.eval(c, &mut target);
+            let (a, b) = knots.support(k);
+            Arc::new(IntervalBezier::hermite(&target, a, b - a, (c - a) / (b - a))?)
+        }
+    })
+}
+
+/// Knots at equal chord length along the model: the uniform knots' count and ends, the
+/// interior ones moved so the polyline length (256 chords per interval) between
+/// neighbours is equal.
+fn chord_length_knots<const D: usize>(model: &dyn Curve<D>, uniform: &[f64]) -> Vec<f64> {
+    let intervals = uniform.len() - 1;
+    let m = 256 * intervals;
+    let (s, e) = (uniform[0], uniform[intervals]);
+    let params: Vec<f64> = (0..=m).map(|i| s + (e - s) * i as f64 / m as f64).collect();
+    let mut cumulative = vec![0.0; m + 1];
+    let mut prev = model.point(s);
+    for i in 1..=m {
+        let p = model.point(params[i]);
+        cumulative[i] = cumulative[i - 1] + (p - prev).norm();
+        prev = p;
+    }
+    let total = cumulative[m];
+    if !(total > 0.0) {
+        return uniform.to_vec();
+    }
+    let mut knots = uniform.to_vec();
+    for (k, knot) in knots.iter_mut().enumerate().take(intervals).skip(1) {
+        let target = total * k as f64 / intervals as f64;
+        let i = cumulative.partition_point(|&c| c < target).clamp(1, m);
+        let f = (target - cumulative[i - 1]) / (cumulative[i] - cumulative[i - 1]);
+        *knot = params[i - 1] + f * (params[i] - params[i - 1]);
+    }
+    knots
 }
 
 /// A local that is the (shared) model curve itself.
@@ -222,50 +325,75 @@ impl<const D: usize> Curve<D> for SharedCurve<D> {
     }
 }
 
-impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
+/// A curve whose domain [a₀, a₁] is mapped affinely onto [b₀, b₁]:
+/// m(t) = c(a₀ + (t − b₀)s), s = (a₁ − a₀)/(b₁ − b₀), m^{(j)} = s^j c^{(j)}.
+struct MappedCurve<const D: usize> {
+    curve: Arc<dyn Curve<D>>,
+    from: f64,
+    to: f64,
+    scale: f64,
+}
+
+impl<const D: usize> MappedCurve<D> {
+    fn onto(curve: Arc<dyn Curve<D>>, b0: f64, b1: f64) -> Self {
+        let dom = curve.domain();
+        MappedCurve { scale: dom.length() / (b1 - b0), from: dom.start, to: b0, curve }
+    }
+}
+
+impl<const D: usize> Curve<D> for MappedCurve<D> {
     fn domain(&self) -> Interval {
-        self.domain
+        let d = self.curve.domain();
+        Interval::new(self.to, self.to + d.length() / self.scale)
     }
     fn is_closed(&self) -> bool {
-        self.closed
+        false
+    }
+    fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
+        self.curve.eval_side(self.from + (t - self.to) * self.scale, side, out);
+        let mut s = 1.0;
+        for o in out.iter_mut().skip(1) {
+            s *= self.scale;
+            *o *= s;
+        }
+    }
+}
+
+impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
+    fn domain(&self) -> Interval {
+        self.knots.domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.knots.is_closed()
     }
     fn breakpoints(&self) -> Vec<f64> {
-        let mut b = self.centres.clone();
-        if self.closed {
-            b.push(self.domain.end);
-        }
+        let mut b = self.knots.values().to_vec();
+        b.dedup();
         b
     }
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-        let n = self.locals.len();
-        let t = if self.closed { self.domain.wrap_periodic(t, side) } else { self.domain.clamp(t) };
-        let intervals = if self.closed { n } else { n - 1 };
-        let dt = self.domain.length() / intervals as f64;
-        let x = (t - self.domain.start) / dt;
-        let mut k = (x.floor().max(0.0) as usize).min(intervals - 1);
-        // At a knot, the left limit uses the interval that ends there.
-        if side == Side::Left && k > 0 && x == k as f64 {
-            k -= 1;
-        }
+        let span = self.knots.locate(t, side);
         let m = out.len() - 1;
-        let next = (k + 1) % n;
-        // Local 0 on the last interval of a closed curve lives one period back.
-        let t_next = if self.closed && next == 0 { t - self.domain.length() } else { t };
         let mut a: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); m + 1];
         let mut b: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); m + 1];
-        self.locals[k].eval(t, side, &mut a);
-        self.locals[next].eval(t_next, side, &mut b);
+        self.locals[span.first].eval(span.t, side, &mut a);
+        self.locals[span.second].eval(span.t + span.second_shift, side, &mut b);
         let mut bf: SmallVec<[f64; 8]> = smallvec![0.0; m + 1];
-        self.bfunction.eval((t - self.centres[k]) / dt, &mut bf);
-        let inv = 1.0 / dt;
-        for r in 0..=m {
-            let mut v = a[r];
-            let mut scale = 1.0;
-            for j in 0..=r {
-                v += (b[r - j] - a[r - j]) * (binomial(r, j) * bf[j] * scale);
-                scale *= inv;
-            }
-            out[r] = v;
+        self.bfunction.eval(span.w, &mut bf);
+        blend_leibniz(&a, &b, &bf, 1.0 / span.width, out);
+    }
+}
+
+/// out^{(r)} = a^{(r)} + Σ_{j≤r} C(r, j) B^{(j)} h^j (b − a)^{(r−j)}: the Leibniz rule for
+/// a + B((t − c)/Δ)(b − a) with h = 1/Δ.
+pub(crate) fn blend_leibniz<const D: usize>(a: &[Point<D>], b: &[Point<D>], bf: &[f64], h: f64, out: &mut [Point<D>]) {
+    for r in 0..out.len() {
+        let mut v = a[r];
+        let mut scale = 1.0;
+        for j in 0..=r {
+            v += (b[r - j] - a[r - j]) * (binomial(r, j) * bf[j] * scale);
+            scale *= h;
         }
+        out[r] = v;
     }
 }

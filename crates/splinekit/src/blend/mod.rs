@@ -1,9 +1,16 @@
-//! Blending: two curves blended by a B-function, and B-functions seen as curves.
+//! Blending: two curves blended by a B-function, blending-spline curves and surfaces, and
+//! B-functions seen as curves.
 
 pub mod bfunction_curve;
 pub mod blending_spline;
+pub mod hermite;
+pub mod knots;
+pub mod osculating_arc;
 pub mod two_curve;
 
 pub use bfunction_curve::BFunctionCurve;
-pub use blending_spline::{BlendingSplineCurve, LocalKind};
+pub use blending_spline::{BlendingSplineCurve, KnotSpacing, LocalKind};
+pub use hermite::IntervalBezier;
+pub use knots::{BlendKnots, BlendSpan};
+pub use osculating_arc::OsculatingArc;
 pub use two_curve::{PlainBlend, TwoCurveBlend};

@@ -81,7 +81,7 @@ pub struct FrenetFrame<const D: usize> {
 ///
 /// Parameters outside the domain are clamped for open curves and wrapped periodically for
 /// closed ones.
-pub trait Curve<const D: usize> {
+pub trait Curve<const D: usize>: Send + Sync {
     /// The parameter domain [a, b].
     fn domain(&self) -> Interval;
 

@@ -39,7 +39,7 @@ pub struct Curvatures {
 /// Implementors provide the domains, closedness and [`Surface::eval_partials`]; everything
 /// else is derived. Parameters outside the domain are clamped in open directions and
 /// wrapped in closed ones.
-pub trait Surface<const D: usize> {
+pub trait Surface<const D: usize>: Send + Sync {
     /// The u-domain.
     fn domain_u(&self) -> Interval;
     /// The v-domain.
