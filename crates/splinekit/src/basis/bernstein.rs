@@ -36,3 +36,52 @@ pub fn bernstein(i: usize, degree: usize, t: f64) -> f64 {
     }
     binomial(degree, i) * t.powi(i as i32) * (1.0 - t).powi((degree - i) as i32)
 }
+
+/// The Bernstein polynomials of degree n and their derivatives up to `order` at t:
+/// `out[r·(n+1) + i]` = d^r/dt^r B_{i,n}(t), from
+/// D^r B_{i,n} = n!/(n−r)! Σ_k (−1)^{r−k} C(r,k) B_{i−k,n−r} (zero for r > n).
+/// `out.len()` must be (order + 1)(n + 1).
+pub fn bernstein_derivatives(degree: usize, t: f64, order: usize, out: &mut [f64]) {
+    let n = degree;
+    let w = n + 1;
+    out[..(order + 1) * w].iter_mut().for_each(|x| *x = 0.0);
+    for r in 0..=order.min(n) {
+        let row = &mut out[r * w..(r + 1) * w];
+        bernstein_all(n - r, t, &mut row[..n - r + 1]);
+        // Apply the difference b_i ← b_{i−1} − b_i r times, the row growing by one each time.
+        for len in (n - r + 1)..=n {
+            row[len] = row[len - 1];
+            for i in (1..len).rev() {
+                row[i] = row[i - 1] - row[i];
+            }
+            row[0] = -row[0];
+        }
+        let factor: f64 = ((n - r + 1)..=n).map(|x| x as f64).product();
+        row.iter_mut().for_each(|x| *x *= factor);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bernstein_derivatives_match_the_power_form() {
+        // B_{1,3} = 3t(1−t)², B' = 3(1−t)² − 6t(1−t), B'' = −12(1−t) + 6t, B''' = 18.
+        let t = 0.3;
+        let mut out = vec![0.0; 5 * 4];
+        bernstein_derivatives(3, t, 4, &mut out);
+        let want = [
+            3.0 * t * (1.0 - t) * (1.0 - t),
+            3.0 * (1.0 - t).powi(2) - 6.0 * t * (1.0 - t),
+            -12.0 * (1.0 - t) + 6.0 * t,
+            18.0,
+            0.0,
+        ];
+        for r in 0..5 {
+            assert!((out[r * 4 + 1] - want[r]).abs() < 1e-14, "order {r}: {} vs {}", out[r * 4 + 1], want[r]);
+            let sum: f64 = out[r * 4..r * 4 + 4].iter().sum();
+            assert!((sum - if r == 0 { 1.0 } else { 0.0 }).abs() < 1e-13, "partition of unity, order {r}");
+        }
+    }
+}

@@ -6,7 +6,7 @@ pub mod bspline_basis;
 pub mod knot_vector;
 pub mod spline_axis;
 
-pub use bernstein::{bernstein, bernstein_all, binomial};
+pub use bernstein::{bernstein, bernstein_all, bernstein_derivatives, binomial};
 pub use bfunction::BFunction;
 pub use bspline_basis::{basis_derivatives, basis_function, basis_functions};
 pub use knot_vector::{KnotVector, Side, advance_span, find_span};

@@ -297,7 +297,7 @@ fn chord_length_knots<const D: usize>(model: &dyn Curve<D>, uniform: &[f64]) -> 
         prev = p;
     }
     let total = cumulative[m];
-    if !(total > 0.0) {
+    if total.is_nan() || total <= 0.0 {
         return uniform.to_vec();
     }
     let mut knots = uniform.to_vec();

@@ -3,6 +3,7 @@
 
 pub mod bfunction_curve;
 pub mod blending_spline;
+pub mod blending_surface;
 pub mod hermite;
 pub mod knots;
 pub mod osculating_arc;
@@ -10,6 +11,7 @@ pub mod two_curve;
 
 pub use bfunction_curve::BFunctionCurve;
 pub use blending_spline::{BlendingSplineCurve, KnotSpacing, LocalKind};
+pub use blending_surface::{BlendingSplineSurface, ParamRect, PatchKind};
 pub use hermite::IntervalBezier;
 pub use knots::{BlendKnots, BlendSpan};
 pub use osculating_arc::OsculatingArc;

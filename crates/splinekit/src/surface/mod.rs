@@ -12,6 +12,7 @@ pub mod nurbs_surface;
 #[cfg(feature = "parallel")]
 pub mod parallel;
 pub mod revolution;
+pub mod samples;
 pub mod surface_ops;
 pub mod tensor;
 pub mod traits;
@@ -21,5 +22,6 @@ pub use bezier_surface::BezierSurface;
 pub use bspline_surface::BSplineSurface;
 pub use iso_curve::{Direction, IsoCurve};
 pub use nurbs_surface::NurbsSurface;
+pub use samples::SurfaceGridSamples;
 pub use traits::{Curvatures, FundamentalForms, Surface, unit_normal};
 pub use trimmed::TrimmedSurface;

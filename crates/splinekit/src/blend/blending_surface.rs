@@ -1,0 +1,476 @@
+//! Blending-spline (GERBS/ERBS) surfaces: S(u, v) = Σ_{k,l} B∘w_k(u) B∘w_l(v) s_{kl}(u, v)
+//! over a tensor grid of local surfaces.
+//!
+//! In the cell [u_k, u_{k+1}) × [v_l, v_{l+1}) the four patches s_ab (a ∈ {k, k+1},
+//! b ∈ {l, l+1}) are active, with β₀ = 1 − B(w_u), β₁ = B(w_u), γ₀ = 1 − B(w_v), γ₁ = B(w_v):
+//! S = Σ β_a γ_b s_ab, and every partial follows by Leibniz in each direction,
+//! ∂^{i,j}S = Σ_{a,b} Σ_{p≤i} Σ_{q≤j} C(i,p) C(j,q) β_a^{(p)} γ_b^{(q)} ∂^{i−p, j−q} s_ab,
+//! computed as a blend in u of each v-row followed by a blend in v.
+//!
+//! Local patches are evaluated at the global (u, v): sub-surfaces of the model, or Bézier
+//! patches of degrees (d_u, d_v) on the support [u_{k−1}, u_{k+1}] × [v_{l−1}, v_{l+1}] whose
+//! net C = H_u⁻¹ G H_v⁻ᵀ matches the model's mixed partials G_ij = ∂^{i+j}g(u_k, v_l),
+//! i ≤ d_u, j ≤ d_v (so with ERBS the surface reproduces all of them at every knot pair).
+//! Closed directions have n locals on n intervals (indices wrap; no patch is aliased).
+//!
+//! Every patch has an affine frame about its origin g(u_k, v_l); a Bézier patch's frame is
+//! applied to its net (Bézier patches are affine invariant), a sub-surface's to its values.
+//! Moving patch (k, l) changes S only on (u_{k−1}, u_{k+1}) × (v_{l−1}, v_{l+1})
+//! ([`BlendingSplineSurface::affected_rects`]).
+
+use std::sync::Arc;
+
+use smallvec::{SmallVec, smallvec};
+
+use super::hermite::inverse_hermite_matrix;
+use super::knots::{BlendKnots, BlendSpan};
+use crate::Point;
+use crate::basis::{BFunction, Side, bernstein_derivatives, binomial};
+use crate::curve::Interval;
+use crate::error::{Error, Result};
+use crate::frame::Affine;
+pub use crate::surface::samples::ParamRect;
+use crate::surface::{Surface, unit_normal};
+
+/// How local patches are made from a model surface.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PatchKind {
+    /// The model itself around the knot pair.
+    SubSurface,
+    /// The Bézier patch of degrees (d_u, d_v) matching the model's mixed partials up to
+    /// those orders at the knot pair.
+    Bezier(usize, usize),
+}
+
+/// A Bézier patch on [su, su + lu] × [sv, sv + lv] in the global parameters.
+#[derive(Clone)]
+struct HermitePatch<const D: usize> {
+    degrees: (usize, usize),
+    /// The net as fitted (row-major, u first), in the model's coordinates.
+    net: Vec<Point<D>>,
+    /// The net with the frame applied.
+    world: Vec<Point<D>>,
+    start: (f64, f64),
+    length: (f64, f64),
+}
+
+#[derive(Clone)]
+enum PatchShape<const D: usize> {
+    Shared(Arc<dyn Surface<D>>),
+    Bezier(HermitePatch<D>),
+}
+
+#[derive(Clone)]
+struct LocalPatch<const D: usize> {
+    shape: PatchShape<D>,
+    origin: Point<D>,
+    transform: Affine<D>,
+}
+
+impl<const D: usize> LocalPatch<D> {
+    /// Partials ∂^{i,j} for i ≤ du, j ≤ dv at (u, v), frame applied.
+    fn eval(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
+        match &self.shape {
+            PatchShape::Bezier(p) => {
+                let (nu, nv) = (p.degrees.0 + 1, p.degrees.1 + 1);
+                let mut bu: SmallVec<[f64; 32]> = smallvec![0.0; (du + 1) * nu];
+                let mut bv: SmallVec<[f64; 32]> = smallvec![0.0; (dv + 1) * nv];
+                scaled_bernstein(p.degrees.0, p.start.0, p.length.0, u, du, &mut bu);
+                scaled_bernstein(p.degrees.1, p.start.1, p.length.1, v, dv, &mut bv);
+                let mut row: SmallVec<[Point<D>; 32]> = smallvec![Point::<D>::zeros(); (dv + 1) * nu];
+                for a in 0..nu {
+                    for j in 0..=dv {
+                        row[j * nu + a] =
+                            (0..nv).fold(Point::<D>::zeros(), |acc, b| acc + p.world[a * nv + b] * bv[j * nv + b]);
+                    }
+                }
+                for i in 0..=du {
+                    for j in 0..=dv {
+                        out[i * (dv + 1) + j] =
+                            (0..nu).fold(Point::<D>::zeros(), |acc, a| acc + row[j * nu + a] * bu[i * nu + a]);
+                    }
+                }
+            }
+            PatchShape::Shared(s) => {
+                s.eval_partials(u, v, du, dv, out);
+                out[0] = self.origin + self.transform.apply_point(&(out[0] - self.origin));
+                for o in out.iter_mut().take((du + 1) * (dv + 1)).skip(1) {
+                    *o = self.transform.apply_vector(o);
+                }
+            }
+        }
+    }
+    fn set_transform(&mut self, t: Affine<D>) {
+        self.transform = t;
+        if let PatchShape::Bezier(p) = &mut self.shape {
+            let o = self.origin;
+            for (w, c) in p.world.iter_mut().zip(&p.net) {
+                *w = o + t.apply_point(&(c - o));
+            }
+        }
+    }
+}
+
+/// Bernstein derivatives of degree d on [s, s + l] at x, with respect to x.
+fn scaled_bernstein(d: usize, s: f64, l: f64, x: f64, order: usize, out: &mut [f64]) {
+    bernstein_derivatives(d, (x - s) / l, order, out);
+    let mut f = 1.0;
+    for r in 1..=order {
+        f /= l;
+        out[r * (d + 1)..(r + 1) * (d + 1)].iter_mut().for_each(|x| *x *= f);
+    }
+}
+
+/// A blending-spline surface.
+#[derive(Clone)]
+pub struct BlendingSplineSurface<const D: usize> {
+    /// Patch (k, l) at index k·n_v + l.
+    patches: Vec<LocalPatch<D>>,
+    knots_u: BlendKnots,
+    knots_v: BlendKnots,
+    bfunction: BFunction,
+    model: Arc<dyn Surface<D>>,
+    kind: PatchKind,
+}
+
+impl<const D: usize> BlendingSplineSurface<D> {
+    /// `counts` = (n_u, n_v) local patches of `kind` made from `model` at uniform knots
+    /// over its domain, blended by `bfunction`, closed in u and v as asked.
+    pub fn from_model(
+        model: Arc<dyn Surface<D>>,
+        counts: (usize, usize),
+        kind: PatchKind,
+        bfunction: BFunction,
+        closed: (bool, bool),
+    ) -> Result<Self> {
+        let knots_u = BlendKnots::uniform(model.domain_u(), counts.0, closed.0, "local_surfaces[0]")?;
+        let knots_v = BlendKnots::uniform(model.domain_v(), counts.1, closed.1, "local_surfaces[1]")?;
+        if counts.0 * counts.1 > 1_000_000 {
+            return Err(Error::invalid("local_surfaces", format!("at most 10⁶ patches, got {}", counts.0 * counts.1)));
+        }
+        if let PatchKind::Bezier(du, dv) = kind
+            && !((1..=12).contains(&du) && (1..=12).contains(&dv))
+        {
+            return Err(Error::invalid("local", format!("Bézier degrees must be between 1 and 12, got [{du}, {dv}]")));
+        }
+        let mut patches = Vec::with_capacity(counts.0 * counts.1);
+        for k in 0..counts.0 {
+            for l in 0..counts.1 {
+                patches.push(make_patch(&model, kind, &knots_u, &knots_v, k, l)?);
+            }
+        }
+        Ok(BlendingSplineSurface { patches, knots_u, knots_v, bfunction, model, kind })
+    }
+
+    /// The same surface rebuilt from its model with other counts or patch kind (frames
+    /// are reset).
+    pub fn rebuilt(&self, counts: (usize, usize), kind: PatchKind) -> Result<Self> {
+        Self::from_model(
+            self.model.clone(),
+            counts,
+            kind,
+            self.bfunction.clone(),
+            (self.knots_u.is_closed(), self.knots_v.is_closed()),
+        )
+    }
+    /// Replaces the B-function.
+    pub fn set_bfunction(&mut self, bfunction: BFunction) {
+        self.bfunction = bfunction;
+    }
+    /// (n_u, n_v).
+    pub fn local_count(&self) -> (usize, usize) {
+        (self.knots_u.count(), self.knots_v.count())
+    }
+    /// The knots in u and in v.
+    pub fn knots(&self) -> (&BlendKnots, &BlendKnots) {
+        (&self.knots_u, &self.knots_v)
+    }
+    /// The patch kind.
+    pub fn kind(&self) -> PatchKind {
+        self.kind
+    }
+    fn index(&self, k: usize, l: usize) -> usize {
+        k * self.knots_v.count() + l
+    }
+    /// The origin g(u_k, v_l) of patch (k, l).
+    pub fn origin(&self, k: usize, l: usize) -> Point<D> {
+        self.patches[self.index(k, l)].origin
+    }
+    /// The frame of patch (k, l).
+    pub fn transform(&self, k: usize, l: usize) -> &Affine<D> {
+        &self.patches[self.index(k, l)].transform
+    }
+    /// The support [u_{k−1}, u_{k+1}] × [v_{l−1}, v_{l+1}] of patch (k, l).
+    pub fn local_support(&self, k: usize, l: usize) -> ParamRect {
+        (self.knots_u.support(k), self.knots_v.support(l))
+    }
+    /// Partials of patch (k, l) in world coordinates at the global (u, v), laid out like
+    /// [`Surface::eval_partials`].
+    pub fn eval_local(&self, (k, l): (usize, usize), (u, v): (f64, f64), du: usize, dv: usize, out: &mut [Point<D>]) {
+        self.patches[self.index(k, l)].eval(u, v, du, dv, out)
+    }
+    /// The control net of a Bézier patch in world coordinates (row-major, u first), with
+    /// its degrees; `None` for sub-surface patches.
+    pub fn bezier_net(&self, k: usize, l: usize) -> Option<(&[Point<D>], (usize, usize))> {
+        match &self.patches[self.index(k, l)].shape {
+            PatchShape::Bezier(p) => Some((&p.world, p.degrees)),
+            PatchShape::Shared(_) => None,
+        }
+    }
+    /// Sets the frame of patch (k, l) about its origin; returns the parameter rectangles
+    /// whose points changed.
+    pub fn set_transform(&mut self, k: usize, l: usize, transform: Affine<D>) -> Vec<ParamRect> {
+        let i = self.index(k, l);
+        self.patches[i].set_transform(transform);
+        self.affected_rects(k, l)
+    }
+    /// Where patch (k, l) takes part: its support clipped to the domain, split at seams.
+    pub fn affected_rects(&self, k: usize, l: usize) -> Vec<ParamRect> {
+        let mut rects = Vec::new();
+        for ru in self.knots_u.affected_ranges(k) {
+            for rv in self.knots_v.affected_ranges(l) {
+                rects.push((ru, rv));
+            }
+        }
+        rects
+    }
+
+    /// Both spans, and the four patch indices [(a,b)] = [(0,0), (0,1), (1,0), (1,1)] with
+    /// the parameters they are evaluated at.
+    fn cell(&self, su: &BlendSpan, sv: &BlendSpan) -> [(usize, f64, f64); 4] {
+        let nv = self.knots_v.count();
+        let (u0, u1) = (su.t, su.t + su.second_shift);
+        let (v0, v1) = (sv.t, sv.t + sv.second_shift);
+        [
+            (su.first * nv + sv.first, u0, v0),
+            (su.first * nv + sv.second, u0, v1),
+            (su.second * nv + sv.first, u1, v0),
+            (su.second * nv + sv.second, u1, v1),
+        ]
+    }
+}
+
+fn make_patch<const D: usize>(
+    model: &Arc<dyn Surface<D>>,
+    kind: PatchKind,
+    knots_u: &BlendKnots,
+    knots_v: &BlendKnots,
+    k: usize,
+    l: usize,
+) -> Result<LocalPatch<D>> {
+    let (uc, vc) = (knots_u.centre(k), knots_v.centre(l));
+    let origin = model.point(uc, vc);
+    let shape = match kind {
+        PatchKind::SubSurface => PatchShape::Shared(model.clone()),
+        PatchKind::Bezier(du, dv) => {
+            let mut g = vec![Point::<D>::zeros(); (du + 1) * (dv + 1)];
+            model.eval_partials(uc, vc, du, dv, &mut g);
+            if let Some(i) = g.iter().position(|p| !p.iter().all(|x| x.is_finite())) {
+                return Err(Error::numerical(
+                    "blending-spline surface",
+                    format!("the model's partial ({}, {}) at ({uc}, {vc}) is not finite", i / (dv + 1), i % (dv + 1)),
+                ));
+            }
+            let (au, bu) = knots_u.support(k);
+            let (av, bv) = knots_v.support(l);
+            let hu = inverse_hermite_matrix(du, (uc - au) / (bu - au), bu - au)?;
+            let hv = inverse_hermite_matrix(dv, (vc - av) / (bv - av), bv - av)?;
+            // C = H_u⁻¹ G H_v⁻ᵀ.
+            let mut net = vec![Point::<D>::zeros(); (du + 1) * (dv + 1)];
+            for a in 0..=du {
+                for b in 0..=dv {
+                    let mut acc = Point::<D>::zeros();
+                    for i in 0..=du {
+                        for j in 0..=dv {
+                            acc += g[i * (dv + 1) + j] * (hu[(a, i)] * hv[(b, j)]);
+                        }
+                    }
+                    net[a * (dv + 1) + b] = acc;
+                }
+            }
+            PatchShape::Bezier(HermitePatch {
+                degrees: (du, dv),
+                world: net.clone(),
+                net,
+                start: (au, av),
+                length: (bu - au, bv - av),
+            })
+        }
+    };
+    Ok(LocalPatch { shape, origin, transform: Affine::identity() })
+}
+
+impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
+    fn domain_u(&self) -> Interval {
+        self.knots_u.domain()
+    }
+    fn domain_v(&self) -> Interval {
+        self.knots_v.domain()
+    }
+    fn is_closed_u(&self) -> bool {
+        self.knots_u.is_closed()
+    }
+    fn is_closed_v(&self) -> bool {
+        self.knots_v.is_closed()
+    }
+
+    fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
+        let su = self.knots_u.locate(u, Side::Right);
+        let sv = self.knots_v.locate(v, Side::Right);
+        let w = (du + 1) * (dv + 1);
+        let mut s: SmallVec<[Point<D>; 36]> = smallvec![Point::<D>::zeros(); 4 * w];
+        for (c, (p, pu, pv)) in self.cell(&su, &sv).into_iter().enumerate() {
+            self.patches[p].eval(pu, pv, du, dv, &mut s[c * w..(c + 1) * w]);
+        }
+        let mut bu: SmallVec<[f64; 8]> = smallvec![0.0; du + 1];
+        let mut bv: SmallVec<[f64; 8]> = smallvec![0.0; dv + 1];
+        self.bfunction.eval(su.w, &mut bu);
+        self.bfunction.eval(sv.w, &mut bv);
+        // Blend in u for the two v-rows: t_b = s_0b + Σ_p C(i,p) B^{(p)} h_u^p (s_1b − s_0b)_{i−p, j}.
+        let mut t: SmallVec<[Point<D>; 18]> = smallvec![Point::<D>::zeros(); 2 * w];
+        let hu = 1.0 / su.width;
+        for b in 0..2 {
+            let (s0, s1) = (&s[b * w..(b + 1) * w], &s[(2 + b) * w..(3 + b) * w]);
+            for i in 0..=du {
+                for j in 0..=dv {
+                    let mut acc = s0[i * (dv + 1) + j];
+                    let mut scale = 1.0;
+                    for p in 0..=i {
+                        let idx = (i - p) * (dv + 1) + j;
+                        acc += (s1[idx] - s0[idx]) * (binomial(i, p) * bu[p] * scale);
+                        scale *= hu;
+                    }
+                    t[b * w + i * (dv + 1) + j] = acc;
+                }
+            }
+        }
+        // Blend in v.
+        let hv = 1.0 / sv.width;
+        for i in 0..=du {
+            for j in 0..=dv {
+                let mut acc = t[i * (dv + 1) + j];
+                let mut scale = 1.0;
+                for q in 0..=j {
+                    let idx = i * (dv + 1) + j - q;
+                    acc += (t[w + idx] - t[idx]) * (binomial(j, q) * bv[q] * scale);
+                    scale *= hv;
+                }
+                out[i * (dv + 1) + j] = acc;
+            }
+        }
+    }
+
+    /// Bézier patches: the Bernstein bases are computed once per grid row and column, and
+    /// each patch's net is contracted with the v-basis once per grid column, so a point
+    /// costs four (d_u + 1)-term sums for S, S_u and S_v and the blend.
+    fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
+        let PatchKind::Bezier(du, dv) = self.kind else {
+            return default_grid_with_normals(self, us, vs, points, normals);
+        };
+        let (nu, nv) = (du + 1, dv + 1);
+        let n_patch_u = self.knots_u.count();
+        // Per u sample: span, B-function value and derivative, bases of the two patch columns.
+        struct USample {
+            span: BlendSpan,
+            beta: [f64; 2],
+        }
+        let mut u_samples = Vec::with_capacity(us.len());
+        let mut u_bases = vec![0.0; us.len() * 2 * 2 * nu];
+        for (a, &u) in us.iter().enumerate() {
+            let span = self.knots_u.locate(u, Side::Right);
+            let mut beta = [0.0; 2];
+            self.bfunction.eval(span.w, &mut beta);
+            for (c, (col, at)) in
+                [(span.first, span.t), (span.second, span.t + span.second_shift)].into_iter().enumerate()
+            {
+                let (s, l) = (self.knots_u.support(col).0, self.knots_u.support(col).1 - self.knots_u.support(col).0);
+                let base = (a * 2 + c) * 2 * nu;
+                scaled_bernstein(du, s, l, at, 1, &mut u_bases[base..base + 2 * nu]);
+            }
+            u_samples.push(USample { span, beta: [beta[0], beta[1] / span.width] });
+        }
+        // Per v sample: r_a = Σ_b C_ab N_b(v) and r'_a for every patch column and both active rows.
+        let mut bv = vec![0.0; 2 * nv];
+        let mut r = vec![Point::<D>::zeros(); n_patch_u * 2 * 2 * nu];
+        for (bi, &v) in vs.iter().enumerate() {
+            let sv = self.knots_v.locate(v, Side::Right);
+            let mut gamma = [0.0; 2];
+            self.bfunction.eval(sv.w, &mut gamma);
+            gamma[1] /= sv.width;
+            for (row, (l, at)) in [(sv.first, sv.t), (sv.second, sv.t + sv.second_shift)].into_iter().enumerate() {
+                let (s, e) = self.knots_v.support(l);
+                scaled_bernstein(dv, s, e - s, at, 1, &mut bv);
+                for k in 0..n_patch_u {
+                    let PatchShape::Bezier(p) = &self.patches[k * self.knots_v.count() + l].shape else {
+                        unreachable!("all patches are Bézier")
+                    };
+                    let base = ((k * 2 + row) * 2) * nu;
+                    for a in 0..nu {
+                        let net = &p.world[a * nv..(a + 1) * nv];
+                        let (mut val, mut der) = (Point::<D>::zeros(), Point::<D>::zeros());
+                        for b in 0..nv {
+                            val += net[b] * bv[b];
+                            der += net[b] * bv[nv + b];
+                        }
+                        r[base + a] = val;
+                        r[base + nu + a] = der;
+                    }
+                }
+            }
+            for (a, us_a) in u_samples.iter().enumerate() {
+                // Patch values S, S_u, S_v for the four active patches, then the blend.
+                let mut s = [[Point::<D>::zeros(); 3]; 4];
+                for (c, (col, row)) in
+                    [(us_a.span.first, 0), (us_a.span.first, 1), (us_a.span.second, 0), (us_a.span.second, 1)]
+                        .into_iter()
+                        .enumerate()
+                {
+                    let cb = (a * 2 + c / 2) * 2 * nu;
+                    let (nb, nd) = (&u_bases[cb..cb + nu], &u_bases[cb + nu..cb + 2 * nu]);
+                    let base = ((col * 2 + row) * 2) * nu;
+                    let (rv, rd) = (&r[base..base + nu], &r[base + nu..base + 2 * nu]);
+                    let (mut p, mut pu, mut pv) = (Point::<D>::zeros(), Point::<D>::zeros(), Point::<D>::zeros());
+                    for i in 0..nu {
+                        p += rv[i] * nb[i];
+                        pu += rv[i] * nd[i];
+                        pv += rd[i] * nb[i];
+                    }
+                    s[c] = [p, pu, pv];
+                }
+                let (b0, b1) = (us_a.beta[0], us_a.beta[1]);
+                let (g0, g1) = (gamma[0], gamma[1]);
+                // Blend in u per row, then in v.
+                let row = |r: usize| -> [Point<D>; 3] {
+                    let (x, y) = (&s[r], &s[2 + r]);
+                    let diff = y[0] - x[0];
+                    [x[0] + diff * b0, x[1] + (y[1] - x[1]) * b0 + diff * b1, x[2] + (y[2] - x[2]) * b0]
+                };
+                let (t0, t1) = (row(0), row(1));
+                let diff = t1[0] - t0[0];
+                let idx = a * vs.len() + bi;
+                points[idx] = t0[0] + diff * g0;
+                let su = t0[1] + (t1[1] - t0[1]) * g0;
+                let sv = t0[2] + (t1[2] - t0[2]) * g0 + diff * g1;
+                normals[idx] = unit_normal(&su, &sv).unwrap_or_else(Point::<D>::zeros);
+            }
+        }
+    }
+}
+
+/// The trait's generic grid path, for sub-surface patches.
+fn default_grid_with_normals<const D: usize, S: Surface<D> + ?Sized>(
+    s: &S,
+    us: &[f64],
+    vs: &[f64],
+    points: &mut [Point<D>],
+    normals: &mut [Point<D>],
+) {
+    let mut values = [Point::<D>::zeros(); 4];
+    for (a, &u) in us.iter().enumerate() {
+        for (b, &v) in vs.iter().enumerate() {
+            s.eval_partials(u, v, 1, 1, &mut values);
+            points[a * vs.len() + b] = values[0];
+            normals[a * vs.len() + b] = unit_normal(&values[2], &values[1]).unwrap_or_else(Point::<D>::zeros);
+        }
+    }
+}
