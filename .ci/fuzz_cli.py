@@ -11,7 +11,7 @@ B = sys.argv[1]
 random.seed(int(sys.argv[2]) if len(sys.argv) > 2 else 1)
 SVG = os.path.join(tempfile.mkdtemp(), "fuzz.svg")
 types = ["bezier","rational_bezier","bspline","nurbs","hermite","catmull_rom","line","circle","ellipse","helix","heart","rose","lissajous","trefoil","butterfly","bfunction","blend","blending_spline",
-         "bezier_surface","bspline_surface","nurbs_surface","plane","cylinder","cone","sphere","torus","mobius","klein_bottle","enneper","helicoid","seashell","apple","heart_surface","revolution","ruled","extrusion","coons","sweep","trimmed"]
+         "bezier_surface","bspline_surface","nurbs_surface","plane","cylinder","cone","sphere","torus","mobius","klein_bottle","enneper","helicoid","seashell","apple","heart_surface","revolution","ruled","extrusion","coons","sweep","trimmed","blending_spline_surface"]
 def num():
     return random.choice([0, 1, -1, 0.5, 2, 3, 1e300, -1e300, 1e-300, 7, 100000, -0.0, 1e9, 0.25, 12, "x", None, [], True])
 def pt(d):
@@ -23,6 +23,12 @@ def knots(n):
     if random.random() < 0.3: k = [0]*4 + sorted(k[4:]) 
     if random.random() < 0.1: random.shuffle(k)
     return k
+def animation(local):
+    m = random.choice([{"oscillate": {"direction": pt(random.choice([2, 3])), "amplitude": num()}},
+                       {"rotate": {"axis": pt(3), "speed": num(), "pivot": pt(3)}},
+                       {"swing": {"axis": pt(random.choice([2, 3])), "amplitude": num(), "frequency": num()}},
+                       {"pulse": {"amplitude": num()}}, {"spin": {}}, 3])
+    return random.choice([[{"local": local, "motions": [m]}], [{"local": local}], {"0": m}])
 def curve(depth=0):
     t = random.choice(types[:18]) if depth < 2 else "line"
     d = random.choice([1,2,3,3,3,4,5])
@@ -57,6 +63,11 @@ def curve(depth=0):
         if random.random() < 0.5:
             tr = {"translate": pt(random.choice([2, 3])), "scale": num(), "rotate": {"axis": pt(3), "angle": num()}}
             doc["transforms"] = random.choice([[tr], {"0": tr}, {"x": tr}, {"7": tr}, 5])
+        if random.random() < 0.3: doc["animation"] = animation(random.choice([0, 1, 9, [0, 1], -1]))
+        if random.random() < 0.15:
+            doc.pop("model", None); doc.pop("local", None)
+            doc["knots"] = knots(random.choice([0, 2, 3, 4]))
+            doc["local_curves"] = [curve(2) for _ in range(random.choice([0, 2, 3, 4]))]
     if random.random() < 0.05: doc["bogus"] = 1
     return doc
 def surface(depth=0):
@@ -79,6 +90,13 @@ def surface(depth=0):
     if t == "ruled": doc.update(first=curve(1), second=curve(1))
     if t == "coons": doc.update(bottom=curve(2), top=curve(2), left=curve(2), right=curve(2))
     if t == "sweep": doc.update(profile=curve(1), path=curve(1))
+    if t == "blending_spline_surface":
+        doc.update(model=surface(1) if depth < 1 and random.random() < 0.3 else {"type": random.choice(["torus", "plane", "cylinder", "sphere", "enneper"])},
+                   local_surfaces=random.choice([[4, 4], [2, 3], [0, 5], [3], [100000, 100000], [5, 1]]))
+        if random.random() < 0.5: doc["local"] = random.choice([{"type": "bezier", "degree": random.choice([[3, 3], [0, 2], [13, 1], [2]])}, {"type": "sub_surface"}])
+        if random.random() < 0.3: doc["closed_u"] = random.random() < 0.5
+        if random.random() < 0.3: doc["transforms"] = random.choice([{"1,1": {"scale": num()}}, [[{}], [{"translate": pt(3)}]], {"a": {}}, 4])
+        if random.random() < 0.3: doc["animation"] = animation(random.choice([[0, 1], [9, 0], 1]))
     if t == "trimmed": doc.update(surface={"type":"plane"} if random.random()<0.5 else surface(1) if depth < 1 else {"type":"sphere"}, outer=curve(1))
     return doc
 bad = 0
@@ -91,6 +109,8 @@ for i in range(int(sys.argv[3]) if len(sys.argv) > 3 else 400):
     args = random.choice([
         ["eval", "-", "--at", random.choice(["0.5", "0:0.5", "0.1,0.9", "nan", "-1", "1e308", "0.5:1e-320"]), "--derivatives", k],
         ["eval", "-", "--samples", random.choice(["1","5","0","100"])],
+        ["eval", "-", "--grid", "4,4", "--time", random.choice(["0.25", "-3", "nan", "x", "1e308"])],
+        ["eval", "-", "--samples", "7", "--time", random.choice(["0.25", "1e300", "inf"])],
         ["eval", "-", "--grid", random.choice(["3,3","1,1","0,2"]), "--derivatives", random.choice(["0","2"])],
         ["refine", "-", "--insert", random.choice(["0.5","1,2,3","0.5,0.5,0.5,0.5"])],
         ["refine", "-", "--elevate", random.choice(["1","3","70"])],

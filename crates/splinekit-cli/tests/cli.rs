@@ -570,7 +570,7 @@ fn blending_spline_documents() {
     );
     assert_bad(
         &["eval", "-", "--at", "0"],
-        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":5,"local":{"type":"arc"}}"#,
+        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":5,"local":{"type":"spline"}}"#,
         "local",
     );
     assert_bad(
@@ -583,4 +583,27 @@ fn blending_spline_documents() {
         r#"{"type":"blending_spline","model":{"type":"nope"},"local_curves":5}"#,
         "model.type",
     );
+}
+
+#[test]
+fn eval_time_poses_the_example_animations() {
+    let heart =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/shapes/beating_heart.json"))
+            .unwrap();
+    let rest = ok_json(&["eval", "-", "--at", "3.141592653589793"], &heart);
+    let beat = ok_json(&["eval", "-", "--at", "3.141592653589793", "--time", "0.25"], &heart);
+    let y = |v: &Value| v["points"][0][1].as_f64().unwrap();
+    assert!((y(&rest) + 17.0).abs() < 1e-12 && (y(&beat) + 18.5).abs() < 1e-12, "{rest} {beat}");
+    let period = ok_json(&["eval", "-", "--at", "3.141592653589793", "--time", "1.25"], &heart);
+    assert!((y(&period) - y(&beat)).abs() < 1e-12);
+    assert_bad(&["eval", "-", "--at", "1", "--time", "soon"], &heart, "--time");
+    assert_bad(&["eval", "-", "--at", "1", "--time", "inf"], &heart, "--time");
+
+    let torus =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/shapes/animated_torus.json"))
+            .unwrap();
+    let v = ok_json(&["eval", "-", "--at", "0:0", "--time", "0.25", "--derivatives", "1"], &torus);
+    assert!((v["points"][0][0].as_f64().unwrap() - 4.6).abs() < 1e-12, "{v}");
+    let n = floats(&v["normals"][0]);
+    assert!((n.iter().map(|x| x * x).sum::<f64>() - 1.0).abs() < 1e-12);
 }

@@ -50,6 +50,12 @@ impl<const D: usize> Polyline<D> {
     ///    that for arcs whose curvature varies moderately over a chord, so the polyline
     ///    stays within `tolerance` of the curve in practice (a sampled check, not a proof).
     pub fn adaptive<C: Curve<D> + ?Sized>(curve: &C, tolerance: f64) -> Result<Self> {
+        Self::adaptive_with_limit(curve, tolerance, MAX_POINTS)
+    }
+
+    /// [`Self::adaptive`], refusing (with an error on `tolerance`) to make more than
+    /// `max_points` points.
+    pub fn adaptive_with_limit<C: Curve<D> + ?Sized>(curve: &C, tolerance: f64, max_points: usize) -> Result<Self> {
         if !(tolerance > 0.0 && tolerance.is_finite()) {
             return Err(Error::invalid("tolerance", format!("must be positive and finite, got {tolerance}")));
         }
@@ -101,10 +107,10 @@ impl<const D: usize> Polyline<D> {
                 } else {
                     params.push(s1);
                     points.push(q1);
-                    if points.len() > MAX_POINTS {
+                    if points.len() > max_points {
                         return Err(Error::invalid(
                             "tolerance",
-                            format!("{tolerance} needs more than {MAX_POINTS} points"),
+                            format!("{tolerance} needs more than {max_points} points"),
                         ));
                     }
                 }

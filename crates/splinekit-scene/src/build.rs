@@ -1,6 +1,6 @@
 //! Building kernel curves from documents, in the dimension the points ask for.
 
-use splinekit::blend::{BFunctionCurve, BlendingSplineCurve, LocalKind, TwoCurveBlend};
+use splinekit::blend::{BFunctionCurve, TwoCurveBlend};
 use splinekit::curve::model::{Butterfly, Circle, Ellipse, Heart, Helix, Line, Lissajous, Rose, Trefoil};
 use splinekit::curve::{
     BSplineCurve, BezierCurve, CatmullRomCurve, Curve, HermiteCurve, NurbsCurve, RationalBezierCurve,
@@ -81,7 +81,7 @@ impl CurveDocument {
             C::CatmullRom(d) => dimension_of("points", &d.points)?,
             C::Line(d) => dimension_of("from", std::slice::from_ref(&d.from))?,
             C::Bfunction(_) => 1,
-            C::BlendingSpline(d) => d.model.dimension().map_err(|e| e.within("model"))?,
+            C::BlendingSpline(d) => d.dimension()?,
             C::Blend(d) => {
                 let a = d.first.dimension().map_err(|e| e.within("first"))?;
                 let b = d.second.dimension().map_err(|e| e.within("second"))?;
@@ -142,27 +142,7 @@ impl CurveDocument {
             }
             C::CatmullRom(d) => Box::new(CatmullRomCurve::new(to_points::<D>(&d.points), d.alpha, d.closed)?),
             C::Line(d) => Box::new(Line::new(to_point::<D>("from", &d.from)?, to_point::<D>("to", &d.to)?)?),
-            C::BlendingSpline(d) => {
-                let model: std::sync::Arc<dyn Curve<D>> =
-                    std::sync::Arc::from(d.model.build_in::<D>().map_err(|e| e.within("model"))?);
-                let closed = d.closed.unwrap_or_else(|| model.is_closed());
-                let kind = match d.local {
-                    crate::curves::LocalDoc::Bezier { degree } => LocalKind::Bezier(degree),
-                    crate::curves::LocalDoc::SubCurve => LocalKind::SubCurve,
-                };
-                let b = d.bfunction.build().map_err(|e| e.within("bfunction"))?;
-                let mut c = BlendingSplineCurve::from_model(model, d.local_curves, kind, b, closed)?;
-                for (i, t) in &d.transforms {
-                    if *i >= c.local_count() {
-                        return Err(DocumentError::new(
-                            "transforms",
-                            format!("local curve {i} does not exist (there are {})", c.local_count()),
-                        ));
-                    }
-                    c.set_transform(*i, t.build::<D>(&format!("transforms[{i}]"))?);
-                }
-                Box::new(c)
-            }
+            C::BlendingSpline(d) => Box::new(d.build_in::<D>()?),
             C::Blend(d) => Box::new(TwoCurveBlend::new(
                 d.first.build_in::<D>().map_err(|e| e.within("first"))?,
                 d.second.build_in::<D>().map_err(|e| e.within("second"))?,

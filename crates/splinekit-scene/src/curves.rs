@@ -5,6 +5,7 @@ use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
+pub use crate::blending::{BlendingSplineDoc, LocalDoc};
 use crate::defaults::*;
 use crate::error::{DocumentError, Result};
 
@@ -213,59 +214,6 @@ struct RawBlend {
     bfunction: Option<Value>,
 }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawBlendingSpline {
-    model: Value,
-    local_curves: usize,
-    #[serde(default)]
-    local: Option<Value>,
-    #[serde(default)]
-    bfunction: Option<Value>,
-    #[serde(default)]
-    closed: Option<bool>,
-    #[serde(default)]
-    transforms: Option<Value>,
-}
-
-/// The kind of local curves of a blending spline.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-pub enum LocalDoc {
-    /// Bézier locals of `degree` Hermite-fitted to the model's derivatives at the knots.
-    Bezier {
-        /// Degree d (default 3).
-        #[serde(default = "three_usize")]
-        degree: usize,
-    },
-    /// The model itself around each knot.
-    SubCurve,
-}
-
-fn three_usize() -> usize {
-    3
-}
-
-/// `{"type":"blending_spline","model":{…},"local_curves":n,"local":{…},"bfunction":{…},
-/// "closed":bool,"transforms":[…] or {"k":…}}`.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct BlendingSplineDoc {
-    /// The model curve.
-    pub model: Box<CurveDocument>,
-    /// Number of local curves.
-    pub local_curves: usize,
-    /// Kind of locals (default Bézier of degree 3).
-    pub local: LocalDoc,
-    /// The B-function (default ERBS).
-    pub bfunction: crate::bfunctions::BFunctionDoc,
-    /// Closed (default: the model's).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub closed: Option<bool>,
-    /// Per-local transforms, by index.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub transforms: Vec<(usize, crate::transforms::TransformDoc)>,
-}
-
 /// A curve shape document.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "type", rename_all = "snake_case")]
@@ -386,59 +334,7 @@ impl CurveDocument {
                         .map_err(|e| e.within("bfunction"))?,
                 })
             }
-            "blending_spline" => {
-                let r: RawBlendingSpline = fields(rest)?;
-                let model = CurveDocument::parse(&r.model).map(Box::new).map_err(|e| e.within("model"))?;
-                let local = match &r.local {
-                    Some(v) => fields::<LocalDoc>(v.clone()).map_err(|e| e.within("local"))?,
-                    None => LocalDoc::Bezier { degree: 3 },
-                };
-                let bfunction = match &r.bfunction {
-                    Some(b) => crate::bfunctions::BFunctionDoc::parse(b).map_err(|e| e.within("bfunction"))?,
-                    None => crate::bfunctions::BFunctionDoc::Erbs(crate::bfunctions::ErbsDoc {
-                        alpha: 1.0,
-                        beta: 1.0,
-                        gamma: 1.0,
-                        lambda: 0.5,
-                    }),
-                };
-                let transforms = match &r.transforms {
-                    None => Vec::new(),
-                    Some(Value::Array(list)) => list
-                        .iter()
-                        .enumerate()
-                        .map(|(i, t)| {
-                            Ok((
-                                i,
-                                fields(t.clone()).map_err(|e: DocumentError| e.within(&format!("transforms[{i}]")))?,
-                            ))
-                        })
-                        .collect::<Result<_>>()?,
-                    Some(Value::Object(map)) => map
-                        .iter()
-                        .map(|(k, t)| {
-                            let i: usize = k.parse().map_err(|_| {
-                                DocumentError::new(format!("transforms.{k}"), "keys must be local-curve indices")
-                            })?;
-                            Ok((i, fields(t.clone()).map_err(|e: DocumentError| e.within(&format!("transforms.{k}")))?))
-                        })
-                        .collect::<Result<_>>()?,
-                    Some(other) => {
-                        return Err(DocumentError::new(
-                            "transforms",
-                            format!("expected a list or an object, got {}", kind(other)),
-                        ));
-                    }
-                };
-                C::BlendingSpline(BlendingSplineDoc {
-                    model,
-                    local_curves: r.local_curves,
-                    local,
-                    bfunction,
-                    closed: r.closed,
-                    transforms,
-                })
-            }
+            "blending_spline" => C::BlendingSpline(BlendingSplineDoc::parse(rest)?),
             "blend" => {
                 let r: RawBlend = fields(rest)?;
                 let nested = |v: &Value, f: &str| CurveDocument::parse(v).map(Box::new).map_err(|e| e.within(f));

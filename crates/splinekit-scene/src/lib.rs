@@ -7,6 +7,7 @@
 #![warn(missing_docs)]
 
 pub mod bfunctions;
+pub mod blending;
 pub mod build;
 pub mod curves;
 mod defaults;
@@ -23,7 +24,7 @@ pub use surfaces::{AnySurface, SurfaceDocument, SurfaceVisitor};
 
 use serde_json::Value;
 
-/// Any shape document. Blending splines join as they are implemented.
+/// Any shape document.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ShapeDocument {
     /// A curve.
@@ -38,6 +39,14 @@ impl ShapeDocument {
         let value: Value =
             serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
         Self::parse(&value)
+    }
+
+    /// Poses every animated blending spline in the document at `time` (seconds).
+    pub fn set_time(&mut self, time: f64) {
+        match self {
+            ShapeDocument::Curve(c) => c.set_time(time),
+            ShapeDocument::Surface(s) => s.set_time(time),
+        }
     }
 
     /// Parses a shape document.

@@ -338,7 +338,7 @@ pub struct TrimmedDoc {
     pub holes: Vec<CurveDocument>,
 }
 
-fn nested_surface(value: &Value, field: &str) -> Result<Box<SurfaceDocument>> {
+pub(crate) fn nested_surface(value: &Value, field: &str) -> Result<Box<SurfaceDocument>> {
     let (ty, rest) = crate::curves::split_type(value).map_err(|e| e.within(field))?;
     SurfaceDocument::parse_typed(&ty, rest)
         .map_err(|e| e.within(field))?
@@ -376,6 +376,7 @@ pub enum SurfaceDocument {
     Coons(CoonsDoc),
     Sweep(SweepDoc),
     Trimmed(TrimmedDoc),
+    BlendingSplineSurface(crate::blending::BlendingSplineSurfaceDoc),
 }
 
 /// The surface `type` names, for messages.
@@ -395,6 +396,13 @@ pub const SURFACE_TYPES: &[&str] = &[
     "seashell",
     "apple",
     "heart_surface",
+    "revolution",
+    "ruled",
+    "extrusion",
+    "coons",
+    "sweep",
+    "trimmed",
+    "blending_spline_surface",
 ];
 
 /// A surface of a dimension known only at run time.
@@ -531,6 +539,9 @@ impl SurfaceDocument {
                     blend: r.blend,
                 })
             }
+            "blending_spline_surface" => {
+                S::BlendingSplineSurface(crate::blending::BlendingSplineSurfaceDoc::parse(rest)?)
+            }
             "trimmed" => {
                 let r: RawTrimmed = fields(rest)?;
                 S::Trimmed(TrimmedDoc {
@@ -565,6 +576,7 @@ impl SurfaceDocument {
             SurfaceDocument::NurbsSurface(d) => net_dimension("control_points", &d.control_points),
             SurfaceDocument::Ruled(d) => same_dimension(&[("first", &d.first), ("second", &d.second)]),
             SurfaceDocument::Trimmed(d) => d.surface.dimension().map_err(|e| e.within("surface")),
+            SurfaceDocument::BlendingSplineSurface(d) => d.model.dimension().map_err(|e| e.within("model")),
             SurfaceDocument::Extrusion(d) => {
                 let dim = d.curve.dimension().map_err(|e| e.within("curve"))?;
                 if d.direction.len() != dim {
@@ -639,6 +651,7 @@ impl SurfaceDocument {
                     &hole_refs,
                 )?)
             }
+            S::BlendingSplineSurface(d) => Box::new(d.build_in::<D>()?),
             S::Ruled(d) => Box::new(RuledSurface::new(
                 d.first.build_in::<D>().map_err(|e| e.within("first"))?,
                 d.second.build_in::<D>().map_err(|e| e.within("second"))?,

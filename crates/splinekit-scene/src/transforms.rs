@@ -2,7 +2,6 @@
 //! applied in the local piece's frame about its origin: scale, then rotate, then translate.
 
 use serde::{Deserialize, Serialize};
-use splinekit::Point;
 use splinekit::frame::Affine;
 
 use crate::error::{DocumentError, Result};
@@ -50,38 +49,11 @@ impl TransformDoc {
             if !r.angle.is_finite() {
                 return Err(DocumentError::new(format!("{field}.rotate.angle"), "must be finite"));
             }
-            let rot = match D {
-                2 => {
-                    let (s, c) = r.angle.sin_cos();
-                    let mut m = nalgebra::SMatrix::<f64, D, D>::identity();
-                    m[(0, 0)] = c;
-                    m[(0, 1)] = -s;
-                    m[(1, 0)] = s;
-                    m[(1, 1)] = c;
-                    Affine { linear: m, translation: Point::<D>::zeros() }
-                }
-                3 => {
-                    let axis = r.axis.as_ref().ok_or_else(|| {
-                        DocumentError::new(format!("{field}.rotate.axis"), "missing (3-D rotations need an axis)")
-                    })?;
-                    let axis = crate::points::to_point::<3>(&format!("{field}.rotate.axis"), axis)?;
-                    let r3 = Affine::rotation(axis, r.angle)
-                        .map_err(|e| DocumentError::new(format!("{field}.rotate"), e.to_string()))?;
-                    let mut m = nalgebra::SMatrix::<f64, D, D>::identity();
-                    for i in 0..3 {
-                        for j in 0..3 {
-                            m[(i, j)] = r3.linear[(i, j)];
-                        }
-                    }
-                    Affine { linear: m, translation: Point::<D>::zeros() }
-                }
-                _ => {
-                    return Err(DocumentError::new(
-                        format!("{field}.rotate"),
-                        format!("rotations are defined for 2-D and 3-D, not {D}-D"),
-                    ));
-                }
-            };
+            if D == 3 && r.axis.is_none() {
+                return Err(DocumentError::new(format!("{field}.rotate.axis"), "missing (3-D rotations need an axis)"));
+            }
+            let rot = Affine::<D>::rotation_in(r.axis.as_deref(), r.angle)
+                .map_err(|e| DocumentError::new(format!("{field}.rotate"), e.to_string()))?;
             a = rot.after(&a);
         }
         if let Some(t) = &self.translate {

@@ -72,6 +72,50 @@ impl<const D: usize> Affine<D> {
     }
 }
 
+impl<const D: usize> Affine<D> {
+    /// A rotation by `angle` radians in dimension D: in 2-D about the origin (no axis, or
+    /// the z axis), in 3-D about `axis` through the origin. Other dimensions are an error.
+    pub fn rotation_in(axis: Option<&[f64]>, angle: f64) -> Result<Self> {
+        if !angle.is_finite() {
+            return Err(Error::invalid("rotate.angle", format!("must be finite, got {angle}")));
+        }
+        let mut m = SMatrix::<f64, D, D>::identity();
+        match D {
+            2 => {
+                let flip = match axis {
+                    None => 1.0,
+                    Some([x, y, z]) if *x == 0.0 && *y == 0.0 && *z != 0.0 => z.signum(),
+                    Some(a) => {
+                        return Err(Error::invalid(
+                            "rotate.axis",
+                            format!("2-D rotations turn about z, got axis {a:?}"),
+                        ));
+                    }
+                };
+                let (s, c) = (flip * angle).sin_cos();
+                m[(0, 0)] = c;
+                m[(0, 1)] = -s;
+                m[(1, 0)] = s;
+                m[(1, 1)] = c;
+            }
+            3 => {
+                let a = axis.ok_or_else(|| Error::invalid("rotate.axis", "missing (3-D rotations need an axis)"))?;
+                if a.len() != 3 {
+                    return Err(Error::invalid("rotate.axis", format!("expected 3 coordinates, got {}", a.len())));
+                }
+                let r = Affine::<3>::rotation(Point::<3>::new(a[0], a[1], a[2]), angle)?;
+                for i in 0..3 {
+                    for j in 0..3 {
+                        m[(i, j)] = r.linear[(i, j)];
+                    }
+                }
+            }
+            _ => return Err(Error::invalid("rotate", format!("rotations are defined in 2-D and 3-D, not {D}-D"))),
+        }
+        Ok(Affine { linear: m, translation: Point::<D>::zeros() })
+    }
+}
+
 impl Affine<3> {
     /// Rotation by `angle` radians about `axis` through the origin (right-hand rule).
     pub fn rotation(axis: Point<3>, angle: f64) -> Result<Self> {

@@ -36,9 +36,22 @@ pub struct EvalArgs {
     /// (surfaces: all partials of total order 1 … K).
     #[arg(long, default_value = "0", allow_hyphen_values = true)]
     pub derivatives: String,
+    /// Pose the document's animation (blending-spline `animation` tracks) at this time in
+    /// seconds; without it the shape is evaluated in its rest pose.
+    #[arg(long, allow_hyphen_values = true)]
+    pub time: Option<String>,
     /// Write the JSON here instead of standard output.
     #[arg(short, long)]
     pub output: Option<String>,
+}
+
+/// Parses `--time` (a finite number of seconds).
+pub(crate) fn parse_time(text: &str) -> Result<f64> {
+    let t: f64 = text.trim().parse().map_err(|_| anyhow!("--time: '{text}' is not a number"))?;
+    if !t.is_finite() {
+        bail!("--time: must be finite, got {t}");
+    }
+    Ok(t)
 }
 
 pub(crate) fn parse_count(name: &str, text: &str, max: usize) -> Result<usize> {
@@ -124,7 +137,10 @@ impl CurveVisitor for EvalCurve<'_> {
 
 pub fn run(args: &EvalArgs) -> Result<()> {
     let order = parse_count("--derivatives", &args.derivatives, MAX_DERIVATIVES)?;
-    let doc = read_shape(&args.shape)?;
+    let mut doc = read_shape(&args.shape)?;
+    if let Some(t) = &args.time {
+        doc.set_time(parse_time(t)?);
+    }
     let value = match doc {
         ShapeDocument::Curve(c) => {
             if args.grid.is_some() {

@@ -27,6 +27,9 @@ pub struct TessellateArgs {
     pub tolerance: Option<f64>,
 }
 
+/// Most points one curve file may hold.
+const MAX_CURVE_POINTS: usize = 1_000_000;
+
 struct Tessellate<'a>(&'a TessellateArgs, &'a str);
 
 impl CurveVisitor for Tessellate<'_> {
@@ -34,12 +37,15 @@ impl CurveVisitor for Tessellate<'_> {
     fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Result<String> {
         let (args, ext) = (self.0, self.1);
         let poly = match (args.density, args.tolerance) {
+            (Some(n), _) if n > MAX_CURVE_POINTS => {
+                bail!("--density: at most {MAX_CURVE_POINTS} segments per file, got {n}")
+            }
             (Some(n), _) => Polyline::regular(c, n),
-            (None, Some(t)) => Polyline::adaptive(c, t),
+            (None, Some(t)) => Polyline::adaptive_with_limit(c, t, MAX_CURVE_POINTS),
             (None, None) => {
                 let rough = Polyline::regular(c, 64)?;
                 let size = rough.points.iter().map(|p| (p - rough.points[0]).norm()).fold(0.0, f64::max).max(1e-12);
-                Polyline::adaptive(c, size * 1e-3)
+                Polyline::adaptive_with_limit(c, size * 1e-3, MAX_CURVE_POINTS)
             }
         }
         .map_err(|e| anyhow!("--{e}"))?;

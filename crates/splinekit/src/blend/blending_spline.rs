@@ -19,6 +19,7 @@ use std::sync::Arc;
 
 use smallvec::{SmallVec, smallvec};
 
+use super::animation::Track;
 use super::hermite::IntervalBezier;
 use super::knots::BlendKnots;
 use super::osculating_arc::OsculatingArc;
@@ -251,6 +252,35 @@ impl<const D: usize> BlendingSplineCurve<D> {
         self.locals[k].transform = transform;
         self.affected_ranges(k)
     }
+    /// Poses the animated locals at `time`: local k's frame becomes track(time) ∘ rest[k]
+    /// for each track (locals without a track keep their frames). Returns the parameter
+    /// ranges that changed.
+    pub fn animate(&mut self, rest: &[Affine<D>], tracks: &[Track<usize>], time: f64) -> Result<Vec<(f64, f64)>> {
+        let n = self.local_count();
+        if rest.len() != n {
+            return Err(Error::invalid("rest", format!("expected {n} rest frames, got {}", rest.len())));
+        }
+        let mut frames = Vec::with_capacity(tracks.len());
+        for (i, track) in tracks.iter().enumerate() {
+            if track.local >= n {
+                return Err(Error::invalid(
+                    format!("animation[{i}].local"),
+                    format!("local curve {} does not exist (there are {n})", track.local),
+                ));
+            }
+            frames.push(track.at(time, &self.locals[track.local].origin)?.after(&rest[track.local]));
+        }
+        let mut ranges = Vec::new();
+        for (track, frame) in tracks.iter().zip(frames) {
+            ranges.extend(self.set_transform(track.local, frame));
+        }
+        Ok(ranges)
+    }
+    /// The frames of all locals (e.g. the rest pose for [`Self::animate`]).
+    pub fn transforms(&self) -> Vec<Affine<D>> {
+        self.locals.iter().map(|l| l.transform).collect()
+    }
+
     /// The parameter ranges where local k is active: (c_{k−1}, c_{k+1}), clipped to the
     /// domain (and split at the seam of a closed curve).
     pub fn affected_ranges(&self, k: usize) -> Vec<(f64, f64)> {

@@ -22,6 +22,7 @@ use std::sync::Arc;
 
 use smallvec::{SmallVec, smallvec};
 
+use super::animation::Track;
 use super::hermite::inverse_hermite_matrix;
 use super::knots::{BlendKnots, BlendSpan};
 use crate::Point;
@@ -223,6 +224,40 @@ impl<const D: usize> BlendingSplineSurface<D> {
         let i = self.index(k, l);
         self.patches[i].set_transform(transform);
         self.affected_rects(k, l)
+    }
+    /// Poses the animated patches at `time`: patch (k, l)'s frame becomes
+    /// track(time) ∘ rest[k·n_v + l]. Returns the rectangles that changed.
+    pub fn animate(
+        &mut self,
+        rest: &[Affine<D>],
+        tracks: &[Track<(usize, usize)>],
+        time: f64,
+    ) -> Result<Vec<ParamRect>> {
+        let (nu, nv) = self.local_count();
+        if rest.len() != nu * nv {
+            return Err(Error::invalid("rest", format!("expected {} rest frames, got {}", nu * nv, rest.len())));
+        }
+        let mut frames = Vec::with_capacity(tracks.len());
+        for (i, track) in tracks.iter().enumerate() {
+            let (k, l) = track.local;
+            if k >= nu || l >= nv {
+                return Err(Error::invalid(
+                    format!("animation[{i}].local"),
+                    format!("patch [{k}, {l}] does not exist (there are {nu}×{nv})"),
+                ));
+            }
+            let idx = self.index(k, l);
+            frames.push(track.at(time, &self.patches[idx].origin)?.after(&rest[idx]));
+        }
+        let mut rects = Vec::new();
+        for (track, frame) in tracks.iter().zip(frames) {
+            rects.extend(self.set_transform(track.local.0, track.local.1, frame));
+        }
+        Ok(rects)
+    }
+    /// The frames of all patches, row-major (k·n_v + l).
+    pub fn transforms(&self) -> Vec<Affine<D>> {
+        self.patches.iter().map(|p| p.transform).collect()
     }
     /// Where patch (k, l) takes part: its support clipped to the domain, split at seams.
     pub fn affected_rects(&self, k: usize, l: usize) -> Vec<ParamRect> {

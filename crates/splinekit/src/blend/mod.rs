@@ -1,14 +1,17 @@
 //! Blending: two curves blended by a B-function, blending-spline curves and surfaces, and
 //! B-functions seen as curves.
 
+pub mod animation;
 pub mod bfunction_curve;
 pub mod blending_spline;
 pub mod blending_surface;
 pub mod hermite;
 pub mod knots;
 pub mod osculating_arc;
+pub mod presets;
 pub mod two_curve;
 
+pub use animation::{Motion, Track};
 pub use bfunction_curve::BFunctionCurve;
 pub use blending_spline::{BlendingSplineCurve, KnotSpacing, LocalKind};
 pub use blending_surface::{BlendingSplineSurface, ParamRect, PatchKind};
