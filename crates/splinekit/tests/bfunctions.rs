@@ -192,3 +192,62 @@ fn two_curve_blends_follow_the_definition_and_join_smoothly() {
     let plain = PlainBlend::new(c1(), c2(), BFunction::Linear);
     assert!((plain.point(0.5) - (c1().point(std::f64::consts::PI) + c2().point(0.5)) * 0.5).norm() < 1e-15);
 }
+
+#[test]
+fn erbs_fast_table_covers_most_of_the_interval_and_agrees_with_quadrature() {
+    // Dense comparison of the fast path (B + 3 derivatives) with the exact path (asking for
+    // 5 derivatives takes the exact path everywhere).
+    for b in [BFunction::erbs_default(), BFunction::erbs(2.0, 1.5, 1.0, 0.4).unwrap()] {
+        // Error measure: B absolute; B^{(k)} relative, with a floor of 1e-2 of its size
+        // over [0, 1] (near its zeros only absolute accuracy means anything).
+        let mut size = [0.0f64; 4];
+        for i in 1..1000 {
+            let mut e = [0.0; 6];
+            b.eval(i as f64 / 1000.0, &mut e);
+            for k in 0..4 {
+                size[k] = size[k].max(e[k].abs());
+            }
+        }
+        let mut worst = [0.0f64; 4];
+        for i in 1..20000 {
+            let t = i as f64 / 20000.0 + 1e-7;
+            let mut fast = [0.0; 4];
+            let mut exact = [0.0; 6];
+            b.eval(t, &mut fast);
+            b.eval(t, &mut exact);
+            for k in 0..4 {
+                let scale = if k == 0 { 1.0 } else { exact[k].abs().max(1e-2 * size[k]) };
+                worst[k] = worst[k].max((fast[k] - exact[k]).abs() / scale);
+            }
+        }
+        assert!(worst[0] <= 2.3e-16, "B: {worst:?}");
+        assert!(worst[1..].iter().all(|&w| w < 1e-13), "derivatives: {worst:?}");
+    }
+}
+
+#[test]
+fn erbs_agrees_with_40_digit_quadrature_on_a_dense_grid() {
+    // tests/data/erbs_reference.json, written by erbs_reference.py (mpmath).
+    let data: serde_json::Value =
+        serde_json::from_str(include_str!("data/erbs_reference.json")).expect("reference data parses");
+    let b = BFunction::erbs_default();
+    let mut worst = [0.0f64; 4];
+    for row in data["rows"].as_array().unwrap() {
+        let t = row[0].as_f64().unwrap();
+        let want: Vec<f64> = (1..5).map(|k| row[k].as_str().unwrap().parse().unwrap()).collect();
+        let mut got = [0.0; 4];
+        b.eval(t, &mut got);
+        worst[0] = worst[0].max((got[0] - want[0]).abs());
+        for k in 1..4 {
+            // Relative, with a floor where the derivative passes through zero.
+            let scale = want[k].abs().max([0.0, 1e-3, 1e-2, 1e-1][k]);
+            worst[k] = worst[k].max((got[k] - want[k]).abs() / scale);
+        }
+    }
+    eprintln!(
+        "ERBS vs 40-digit quadrature: |ΔB| {:.2e}, relative ΔB' {:.2e}, ΔB'' {:.2e}, ΔB''' {:.2e}",
+        worst[0], worst[1], worst[2], worst[3]
+    );
+    assert!(worst[0] <= 2.3e-16, "{worst:?}");
+    assert!(worst[1..].iter().all(|&w| w <= 1e-13), "{worst:?}");
+}

@@ -24,7 +24,7 @@ use super::hermite::IntervalBezier;
 use super::knots::BlendKnots;
 use super::osculating_arc::OsculatingArc;
 use crate::Point;
-use crate::basis::{BFunction, Side, binomial};
+use crate::basis::{BFunction, Side};
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result};
 use crate::frame::Affine;
@@ -419,10 +419,12 @@ impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
 pub(crate) fn blend_leibniz<const D: usize>(a: &[Point<D>], b: &[Point<D>], bf: &[f64], h: f64, out: &mut [Point<D>]) {
     for r in 0..out.len() {
         let mut v = a[r];
-        let mut scale = 1.0;
+        let (mut scale, mut choose) = (1.0, 1.0);
         for j in 0..=r {
-            v += (b[r - j] - a[r - j]) * (binomial(r, j) * bf[j] * scale);
+            v += (b[r - j] - a[r - j]) * (choose * bf[j] * scale);
             scale *= h;
+            // C(r, j+1) = C(r, j)(r − j)/(j + 1), exact for the small orders used here.
+            choose = choose * (r - j) as f64 / (j + 1) as f64;
         }
         out[r] = v;
     }

@@ -6,8 +6,11 @@
 
 use nalgebra::DMatrix;
 
+use smallvec::{SmallVec, smallvec};
+
 use crate::Point;
 use crate::basis::Side;
+use crate::basis::bernstein_derivatives;
 use crate::curve::bezier::bezier_derivatives;
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result};
@@ -61,12 +64,21 @@ impl<const D: usize> Curve<D> for IntervalBezier<D> {
     fn is_closed(&self) -> bool {
         false
     }
+    /// Σ_i B_{i,d}^{(k)}(u) P_i / h^k with the Bernstein derivatives computed once.
     fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<D>]) {
-        bezier_derivatives(&self.points, (t - self.start) / self.length, out);
+        let n = self.points.len();
+        let order = out.len() - 1;
+        let mut basis: SmallVec<[f64; 64]> = smallvec![0.0; (order + 1) * n];
+        bernstein_derivatives(n - 1, (t - self.start) / self.length, order, &mut basis);
         let mut s = 1.0;
-        for o in out.iter_mut().skip(1) {
+        for (k, o) in out.iter_mut().enumerate() {
+            let row = &basis[k * n..(k + 1) * n];
+            let mut acc = Point::<D>::zeros();
+            for (p, b) in self.points.iter().zip(row) {
+                acc += p * *b;
+            }
+            *o = acc * s;
             s /= self.length;
-            *o *= s;
         }
     }
 }
