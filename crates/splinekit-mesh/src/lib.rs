@@ -1,13 +1,19 @@
 //! # splinekit-mesh
 //!
 //! Turning splinekit shapes into things other programs read: polylines for curves
-//! (regular or adaptive to a chord-height tolerance) and SVG drawings. Triangle meshes for
-//! surfaces and the OBJ/STL/PLY/glTF exports join here as surfaces arrive.
+//! (regular or adaptive to a chord-height tolerance), triangle meshes for surfaces
+//! (regular grids and adaptive quad-trees with welded seams), and the exports OBJ, STL,
+//! PLY, glTF 2.0 and SVG.
 
 #![warn(missing_docs)]
 
+pub mod export;
 pub mod polyline;
+pub mod surface_mesh;
 pub mod svg;
+pub mod triangle_mesh;
 
 pub use polyline::Polyline;
+pub use surface_mesh::{AdaptiveTolerance, MeshOptions};
 pub use svg::{Projection, SvgFigure};
+pub use triangle_mesh::TriangleMesh;

@@ -1,8 +1,8 @@
 //! Tessellation of curves meets its tolerance; SVG output is well-formed.
 
+use splinekit::Point;
 use splinekit::curve::model::{Butterfly, Circle};
 use splinekit::curve::{BSplineCurve, Curve};
-use splinekit::Point;
 use splinekit_mesh::polyline::distance_to_segment;
 use splinekit_mesh::{Polyline, Projection, SvgFigure};
 

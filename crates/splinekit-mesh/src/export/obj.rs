@@ -1,0 +1,110 @@
+//! Wavefront OBJ: `v x y z`, `vt u v`, `vn x y z`, faces `f a/b/c` (1-based), polylines `l`.
+
+use std::fmt::Write;
+
+use crate::triangle_mesh::TriangleMesh;
+
+/// The mesh as OBJ text (one object named `name`).
+pub fn write_obj(mesh: &TriangleMesh, name: &str) -> String {
+    let mut s = String::with_capacity(mesh.positions.len() * 64);
+    let _ = writeln!(s, "# splinekit\no {name}");
+    for p in &mesh.positions {
+        let _ = writeln!(s, "v {} {} {}", p[0], p[1], p[2]);
+    }
+    for t in &mesh.uvs {
+        let _ = writeln!(s, "vt {} {}", t[0], t[1]);
+    }
+    for n in &mesh.normals {
+        let _ = writeln!(s, "vn {} {} {}", n[0], n[1], n[2]);
+    }
+    let (has_uv, has_n) = (!mesh.uvs.is_empty(), !mesh.normals.is_empty());
+    for t in &mesh.triangles {
+        s.push('f');
+        for &i in t {
+            let i = i + 1;
+            let _ = match (has_uv, has_n) {
+                (true, true) => write!(s, " {i}/{i}/{i}"),
+                (false, true) => write!(s, " {i}//{i}"),
+                (true, false) => write!(s, " {i}/{i}"),
+                (false, false) => write!(s, " {i}"),
+            };
+        }
+        s.push('\n');
+    }
+    s
+}
+
+/// A polyline as OBJ text: its vertices and one `l` element (closed polylines repeat the
+/// first index at the end).
+pub fn write_obj_polyline(points: &[[f64; 3]], closed: bool, name: &str) -> String {
+    let mut s = format!("# splinekit\no {name}\n");
+    for p in points {
+        let _ = writeln!(s, "v {} {} {}", p[0], p[1], p[2]);
+    }
+    s.push('l');
+    for i in 1..=points.len() {
+        let _ = write!(s, " {i}");
+    }
+    if closed && !points.is_empty() {
+        s.push_str(" 1");
+    }
+    s.push('\n');
+    s
+}
+
+/// Reads the vertices, normals, texture coordinates and triangles of an OBJ file written by
+/// [`write_obj`] (faces with one index triple per corner, positions and attributes sharing
+/// indices). Errors name the line.
+pub fn read_obj(text: &str) -> Result<TriangleMesh, String> {
+    let mut mesh = TriangleMesh::default();
+    let nums = |rest: &str, n: usize, line: usize| -> Result<Vec<f64>, String> {
+        let v: Result<Vec<f64>, _> = rest.split_whitespace().map(str::parse).collect();
+        let v = v.map_err(|e| format!("line {line}: {e}"))?;
+        if v.len() != n {
+            return Err(format!("line {line}: expected {n} numbers, got {}", v.len()));
+        }
+        Ok(v)
+    };
+    for (k, line) in text.lines().enumerate() {
+        let line_no = k + 1;
+        let (tag, rest) = line.split_once(' ').unwrap_or((line, ""));
+        match tag {
+            "v" => {
+                let v = nums(rest, 3, line_no)?;
+                mesh.positions.push([v[0], v[1], v[2]]);
+            }
+            "vn" => {
+                let v = nums(rest, 3, line_no)?;
+                mesh.normals.push([v[0], v[1], v[2]]);
+            }
+            "vt" => {
+                let v = nums(rest, 2, line_no)?;
+                mesh.uvs.push([v[0], v[1]]);
+            }
+            "f" => {
+                let idx: Result<Vec<u32>, String> = rest
+                    .split_whitespace()
+                    .map(|c| {
+                        let first = c.split('/').next().unwrap_or("");
+                        let i: u32 = first.parse().map_err(|e| format!("line {line_no}: {e}"))?;
+                        if i == 0 {
+                            return Err(format!("line {line_no}: indices start at 1"));
+                        }
+                        Ok(i - 1)
+                    })
+                    .collect();
+                let idx = idx?;
+                if idx.len() != 3 {
+                    return Err(format!("line {line_no}: expected a triangle, got {} corners", idx.len()));
+                }
+                mesh.triangles.push([idx[0], idx[1], idx[2]]);
+            }
+            _ => {}
+        }
+    }
+    let n = mesh.positions.len() as u32;
+    if let Some(t) = mesh.triangles.iter().find(|t| t.iter().any(|&i| i >= n)) {
+        return Err(format!("face {t:?} refers past the {n} vertices"));
+    }
+    Ok(mesh)
+}

@@ -1,0 +1,100 @@
+//! PLY (ASCII 1.0): vertices with `x y z`, `nx ny nz` and `s t` when present, RGBA colours
+//! as `red green blue alpha` bytes when present, and triangular faces.
+
+use std::fmt::Write;
+
+use crate::triangle_mesh::TriangleMesh;
+
+/// The mesh as ASCII PLY.
+pub fn write_ply(mesh: &TriangleMesh) -> String {
+    let (has_n, has_uv, has_c) = (!mesh.normals.is_empty(), !mesh.uvs.is_empty(), !mesh.colors.is_empty());
+    let mut s = String::from("ply\nformat ascii 1.0\ncomment splinekit\n");
+    let _ = writeln!(s, "element vertex {}", mesh.positions.len());
+    s.push_str("property double x\nproperty double y\nproperty double z\n");
+    if has_n {
+        s.push_str("property double nx\nproperty double ny\nproperty double nz\n");
+    }
+    if has_uv {
+        s.push_str("property double s\nproperty double t\n");
+    }
+    if has_c {
+        s.push_str("property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n");
+    }
+    let _ = writeln!(s, "element face {}", mesh.triangles.len());
+    s.push_str("property list uchar uint vertex_indices\nend_header\n");
+    for i in 0..mesh.positions.len() {
+        let p = mesh.positions[i];
+        let _ = write!(s, "{} {} {}", p[0], p[1], p[2]);
+        if has_n {
+            let n = mesh.normals[i];
+            let _ = write!(s, " {} {} {}", n[0], n[1], n[2]);
+        }
+        if has_uv {
+            let _ = write!(s, " {} {}", mesh.uvs[i][0], mesh.uvs[i][1]);
+        }
+        if has_c {
+            let c = mesh.colors[i].map(|x| (x.clamp(0.0, 1.0) * 255.0).round() as u8);
+            let _ = write!(s, " {} {} {} {}", c[0], c[1], c[2], c[3]);
+        }
+        s.push('\n');
+    }
+    for t in &mesh.triangles {
+        let _ = writeln!(s, "3 {} {} {}", t[0], t[1], t[2]);
+    }
+    s
+}
+
+/// Reads an ASCII PLY written by [`write_ply`] (positions, normals, s t, triangles).
+pub fn read_ply(text: &str) -> Result<TriangleMesh, String> {
+    let mut lines = text.lines();
+    if lines.next() != Some("ply") {
+        return Err("not a PLY file".into());
+    }
+    let (mut nv, mut nf, mut props) = (0usize, 0usize, Vec::new());
+    let mut in_vertex = false;
+    for line in lines.by_ref() {
+        let w: Vec<&str> = line.split_whitespace().collect();
+        match w.as_slice() {
+            ["format", f, _] if *f != "ascii" => return Err(format!("only ASCII PLY is read, got {f}")),
+            ["element", "vertex", n] => {
+                nv = n.parse().map_err(|e| format!("vertex count: {e}"))?;
+                in_vertex = true;
+            }
+            ["element", "face", n] => {
+                nf = n.parse().map_err(|e| format!("face count: {e}"))?;
+                in_vertex = false;
+            }
+            ["property", _, name] if in_vertex => props.push(name.to_string()),
+            ["end_header"] => break,
+            _ => {}
+        }
+    }
+    let pos = |name: &str| props.iter().position(|p| p == name);
+    let mut mesh = TriangleMesh::default();
+    for k in 0..nv {
+        let line = lines.next().ok_or_else(|| format!("vertex {k} is missing"))?;
+        let v: Result<Vec<f64>, _> = line.split_whitespace().map(str::parse).collect();
+        let v = v.map_err(|e| format!("vertex {k}: {e}"))?;
+        if v.len() != props.len() {
+            return Err(format!("vertex {k}: expected {} values, got {}", props.len(), v.len()));
+        }
+        let get = |n: &str| pos(n).map(|i| v[i]);
+        mesh.positions.push([get("x").unwrap_or(0.0), get("y").unwrap_or(0.0), get("z").unwrap_or(0.0)]);
+        if let (Some(x), Some(y), Some(z)) = (get("nx"), get("ny"), get("nz")) {
+            mesh.normals.push([x, y, z]);
+        }
+        if let (Some(s), Some(t)) = (get("s"), get("t")) {
+            mesh.uvs.push([s, t]);
+        }
+    }
+    for k in 0..nf {
+        let line = lines.next().ok_or_else(|| format!("face {k} is missing"))?;
+        let v: Result<Vec<u32>, _> = line.split_whitespace().map(str::parse).collect();
+        let v = v.map_err(|e| format!("face {k}: {e}"))?;
+        if v.len() != 4 || v[0] != 3 || v[1..].iter().any(|&i| i as usize >= nv) {
+            return Err(format!("face {k}: expected a triangle of valid indices, got {v:?}"));
+        }
+        mesh.triangles.push([v[1], v[2], v[3]]);
+    }
+    Ok(mesh)
+}

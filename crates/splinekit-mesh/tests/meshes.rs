@@ -1,0 +1,218 @@
+//! Triangle meshes of surfaces (welded seams, poles, adaptive quad-trees without cracks) and
+//! every export read back.
+
+use std::collections::HashMap;
+use std::f64::consts::PI;
+
+use splinekit::Point;
+use splinekit::surface::Surface;
+use splinekit::surface::model::{Plane, Sphere, Torus};
+use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene, obj, ply, stl};
+use splinekit_mesh::surface_mesh::{adaptive, regular};
+use splinekit_mesh::{AdaptiveTolerance, MeshOptions, TriangleMesh};
+
+fn torus() -> Torus {
+    Torus::new(3.0, 1.0).unwrap()
+}
+
+/// Boundary edges after merging vertices with bitwise-equal positions: what a crack shows as.
+fn cracks(mesh: &TriangleMesh) -> usize {
+    let mut id = HashMap::new();
+    let canon: Vec<u32> =
+        mesh.positions.iter().enumerate().map(|(i, p)| *id.entry(p.map(f64::to_bits)).or_insert(i as u32)).collect();
+    let welded = TriangleMesh {
+        positions: mesh.positions.clone(),
+        triangles: mesh.triangles.iter().map(|t| t.map(|i| canon[i as usize])).collect(),
+        ..Default::default()
+    };
+    welded.boundary_edges().len()
+}
+
+#[test]
+fn regular_torus_is_closed_welded_and_converges_in_area() {
+    let t = torus();
+    let exact = 4.0 * PI * PI * 3.0;
+    let mut last = f64::INFINITY;
+    for n in [8, 16, 32, 64] {
+        let m = regular(&t, 2 * n, n, MeshOptions { uv: false }).unwrap();
+        assert_eq!(m.vertex_count(), 2 * n * n, "seams are welded: one vertex per grid point");
+        assert!(m.boundary_edges().is_empty(), "a closed surface has no boundary");
+        let err = (m.area() - exact).abs();
+        assert!(err < last / 3.5, "area error {err} after {last}");
+        last = err;
+        for (p, nrm) in m.positions.iter().zip(&m.normals) {
+            let len = (nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]).sqrt();
+            assert!((len - 1.0).abs() < 1e-12);
+            // The torus normal points away from the tube's centre circle.
+            let r = (p[0] * p[0] + p[1] * p[1]).sqrt();
+            let c = [3.0 * p[0] / r, 3.0 * p[1] / r, 0.0];
+            let d = (p[0] - c[0]) * nrm[0] + (p[1] - c[1]) * nrm[1] + p[2] * nrm[2];
+            assert!(d > 0.99, "outward normal");
+        }
+    }
+    // With (u, v) the seam vertices are duplicated, bitwise equal: no cracks.
+    let m = regular(&t, 24, 12, MeshOptions { uv: true }).unwrap();
+    assert_eq!(m.vertex_count(), 25 * 13);
+    assert!(!m.boundary_edges().is_empty());
+    assert_eq!(cracks(&m), 0);
+}
+
+#[test]
+fn sphere_poles_lose_their_degenerate_triangles_and_get_normals() {
+    let s = Sphere::new(2.0).unwrap();
+    let m = regular(&s, 16, 8, MeshOptions { uv: false }).unwrap();
+    for t in 0..m.triangles.len() {
+        assert!(m.double_area(t) > 0.0);
+    }
+    for (p, n) in m.positions.iter().zip(&m.normals) {
+        let dot = (p[0] * n[0] + p[1] * n[1] + p[2] * n[2]) / 2.0;
+        assert!(dot > 0.999, "normal at {p:?} is {n:?}");
+    }
+}
+
+#[test]
+fn adaptive_meshes_refine_where_curved_and_stitch_levels_without_cracks() {
+    let t = torus();
+    let tol = |h: f64| AdaptiveTolerance { chord_height: h, normal_angle: 0.5, max_depth: 8 };
+    let coarse = adaptive(&t, (4, 4), tol(0.05), MeshOptions { uv: false }).unwrap();
+    let fine = adaptive(&t, (4, 4), tol(0.001), MeshOptions { uv: false }).unwrap();
+    assert!(fine.triangles.len() > 4 * coarse.triangles.len());
+    for m in [&coarse, &fine] {
+        assert!(m.boundary_edges().is_empty(), "closed and crack-free");
+    }
+    let exact = 4.0 * PI * PI * 3.0;
+    assert!((fine.area() - exact).abs() < 0.01 * exact);
+    // Every vertex lies on the torus.
+    for p in &fine.positions {
+        let r = (p[0] * p[0] + p[1] * p[1]).sqrt();
+        assert!(((r - 3.0).powi(2) + p[2] * p[2] - 1.0).abs() < 1e-12);
+    }
+    // A plane needs no refinement; a mixed-level mesh of a bumpy surface has no cracks.
+    let plane =
+        Plane::new(Point::<3>::zeros(), Point::<3>::new(1.0, 0.0, 0.0), Point::<3>::new(0.0, 1.0, 0.0)).unwrap();
+    let flat = adaptive(&plane, (3, 2), tol(1e-3), MeshOptions::default()).unwrap();
+    assert_eq!(flat.triangles.len(), 12);
+    let bumpy = splinekit::surface::BezierSurface::new(vec![
+        vec![Point::<3>::new(0.0, 0.0, 0.0), Point::<3>::new(0.0, 1.0, 0.0), Point::<3>::new(0.0, 2.0, 0.0)],
+        vec![Point::<3>::new(1.0, 0.0, 0.0), Point::<3>::new(1.0, 1.0, 3.0), Point::<3>::new(1.0, 2.0, 0.0)],
+        vec![Point::<3>::new(2.0, 0.0, 0.0), Point::<3>::new(2.0, 1.0, 0.0), Point::<3>::new(2.0, 2.0, 0.0)],
+    ])
+    .unwrap();
+    let m = adaptive(&bumpy, (2, 2), tol(0.002), MeshOptions { uv: false }).unwrap();
+    // The only boundary is the square's outline, made of the outline's own vertices.
+    for [a, b] in m.boundary_edges() {
+        let (p, q) = (m.positions[a as usize], m.positions[b as usize]);
+        let on_outline = |p: [f64; 3]| p[0] == 0.0 || p[0] == 2.0 || p[1] == 0.0 || p[1] == 2.0;
+        assert!(on_outline(p) && on_outline(q), "interior crack between {p:?} and {q:?}");
+    }
+    let _ = bumpy.point(0.5, 0.5);
+}
+
+fn sample_mesh() -> TriangleMesh {
+    regular(&torus(), 12, 6, MeshOptions { uv: true }).unwrap()
+}
+
+#[test]
+fn obj_ply_and_stl_read_back() {
+    let m = sample_mesh();
+    let back = obj::read_obj(&obj::write_obj(&m, "torus")).unwrap();
+    assert_eq!(
+        (back.positions.clone(), back.normals.clone(), back.uvs.clone()),
+        (m.positions.clone(), m.normals.clone(), m.uvs.clone())
+    );
+    assert_eq!(back.triangles, m.triangles);
+    let back = ply::read_ply(&ply::write_ply(&m)).unwrap();
+    assert_eq!(
+        (back.positions, back.normals, back.uvs, back.triangles),
+        (m.positions.clone(), m.normals.clone(), m.uvs.clone(), m.triangles.clone())
+    );
+    for bytes in [stl::write_stl_binary(&m), stl::write_stl_ascii(&m, "torus").into_bytes()] {
+        let tris = stl::read_stl(&bytes).unwrap();
+        assert_eq!(tris.len(), m.triangles.len());
+        for (t, (n, c)) in tris.iter().enumerate() {
+            for k in 0..3 {
+                let p = m.positions[m.triangles[t][k] as usize];
+                assert!((0..3).all(|j| (c[k][j] - p[j] as f32).abs() <= 1e-6 * (p[j].abs() as f32).max(1.0)));
+            }
+            let fnorm = m.face_normal(t);
+            assert!((0..3).all(|j| (n[j] - fnorm[j] as f32).abs() < 1e-6));
+        }
+    }
+    assert!(obj::read_obj("v 1 2\n").unwrap_err().contains("line 1"));
+    assert!(stl::read_stl(b"short").is_err());
+}
+
+fn base64_decode(s: &str) -> Vec<u8> {
+    let val = |c: u8| -> u32 {
+        match c {
+            b'A'..=b'Z' => (c - b'A') as u32,
+            b'a'..=b'z' => (c - b'a' + 26) as u32,
+            b'0'..=b'9' => (c - b'0' + 52) as u32,
+            b'+' => 62,
+            _ => 63,
+        }
+    };
+    let bytes: Vec<u8> = s.bytes().filter(|&c| c != b'=').collect();
+    let mut out = Vec::new();
+    for chunk in bytes.chunks(4) {
+        let n = chunk.iter().enumerate().fold(0u32, |acc, (k, &c)| acc | val(c) << (18 - 6 * k));
+        for k in 0..chunk.len() - 1 {
+            out.push((n >> (16 - 8 * k)) as u8);
+        }
+    }
+    out
+}
+
+#[test]
+fn gltf_and_glb_read_back_with_the_gltf_crate() {
+    let m = sample_mesh();
+    let mut moved = m.positions.clone();
+    for p in &mut moved {
+        p[2] += 0.5;
+    }
+    let scene = GltfScene {
+        objects: vec![
+            GltfObject {
+                name: "torus".into(),
+                geometry: GltfGeometry::Mesh(m.clone()),
+                color: [0.2, 0.4, 0.8, 1.0],
+                frames: vec![(0.0, m.positions.clone(), m.normals.clone()), (0.5, moved, m.normals.clone())],
+            },
+            GltfObject {
+                name: "curve".into(),
+                geometry: GltfGeometry::LineStrip(vec![[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 0.0, 1.0]]),
+                color: [1.0, 0.0, 0.0, 1.0],
+                frames: vec![],
+            },
+        ],
+    };
+    let glb = scene.to_glb();
+    let text = scene.to_gltf();
+    let from_glb = gltf::Gltf::from_slice(&glb).unwrap();
+    let glb_blob = from_glb.blob.clone().unwrap();
+    let from_text = gltf::Gltf::from_slice(text.as_bytes()).unwrap();
+    let uri = from_text.buffers().next().unwrap();
+    let gltf::buffer::Source::Uri(uri) = uri.source() else { panic!("embedded buffer") };
+    let text_blob = base64_decode(uri.split_once(',').unwrap().1);
+    for (doc, blob) in [(&from_glb, &glb_blob), (&from_text, &text_blob)] {
+        assert_eq!(doc.nodes().count(), 2);
+        let mesh = doc.meshes().next().unwrap();
+        let prim = mesh.primitives().next().unwrap();
+        assert_eq!(prim.mode(), gltf::mesh::Mode::Triangles);
+        let reader = prim.reader(|_| Some(&blob[..]));
+        let positions: Vec<[f32; 3]> = reader.read_positions().unwrap().collect();
+        assert_eq!(positions.len(), m.positions.len());
+        for (a, b) in positions.iter().zip(&m.positions) {
+            assert!((0..3).all(|k| a[k] == b[k] as f32));
+        }
+        let normals: Vec<[f32; 3]> = reader.read_normals().unwrap().collect();
+        assert_eq!(normals.len(), m.normals.len());
+        let idx: Vec<u32> = reader.read_indices().unwrap().into_u32().collect();
+        assert_eq!(idx.len(), 3 * m.triangles.len());
+        assert_eq!(prim.morph_targets().count(), 2);
+        let anim = doc.animations().next().unwrap();
+        assert_eq!(anim.channels().next().unwrap().target().property(), gltf::animation::Property::MorphTargetWeights);
+        let line = doc.meshes().nth(1).unwrap().primitives().next().unwrap();
+        assert_eq!(line.mode(), gltf::mesh::Mode::LineStrip);
+    }
+}
