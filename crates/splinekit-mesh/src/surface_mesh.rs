@@ -126,7 +126,8 @@ pub fn adaptive<const D: usize, S: Surface<D> + ?Sized>(
             format!("must be positive and finite, got {}", tolerance.chord_height),
         ));
     }
-    if !(tolerance.normal_angle > 0.0)
+    if tolerance.normal_angle.is_nan()
+        || tolerance.normal_angle <= 0.0
         || tolerance.max_depth > 16
         || base.0 == 0
         || base.1 == 0
