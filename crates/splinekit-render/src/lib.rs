@@ -1,0 +1,19 @@
+//! # splinekit-render
+//!
+//! Offscreen rendering with wgpu: shaded triangle meshes (two directional lights, smooth
+//! normals, per-vertex colours for colour maps), curves as lines of a given screen width,
+//! points as discs, 4× MSAA, a camera fitted to the scene's bounds or given. Images are
+//! written as PNG, animations as GIF. Headless it runs on wgpu's GL backend (Mesa's
+//! llvmpipe on a machine without a GPU); on real GPUs on Vulkan or GL.
+
+#![warn(missing_docs)]
+
+pub mod camera;
+pub mod image;
+pub mod renderer;
+pub mod scene;
+
+pub use camera::Camera;
+pub use image::{Image, write_gif};
+pub use renderer::{RenderError, Renderer};
+pub use scene::{LineItem, MeshItem, PointItem, RenderScene};

@@ -1,0 +1,389 @@
+//! The wgpu renderer: one device, three pipelines (meshes, lines, points), offscreen
+//! targets with 4× MSAA and a depth buffer, read back into an [`Image`].
+
+use wgpu::util::DeviceExt;
+
+use crate::camera::Camera;
+use crate::image::Image;
+use crate::scene::{RenderScene, srgb_to_linear};
+
+/// Why rendering failed.
+#[derive(Debug, thiserror::Error)]
+pub enum RenderError {
+    /// No adapter at all.
+    #[error(
+        "no graphics adapter found: install a GPU driver, or Mesa for software rendering (Debian/Ubuntu: apt-get install libegl1 libgl1-mesa-dri)"
+    )]
+    NoAdapter,
+    /// The device could not be created.
+    #[error("the graphics device could not be created: {0}")]
+    Device(String),
+    /// A bad request (image size, …).
+    #[error("{0}")]
+    Invalid(String),
+    /// Reading the image back failed.
+    #[error("reading the rendered image back failed: {0}")]
+    Readback(String),
+}
+
+/// Largest image side.
+pub const MAX_SIDE: u32 = 8192;
+const SAMPLES: u32 = 4;
+const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+
+/// An offscreen renderer (create once, render many frames).
+pub struct Renderer {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    mesh_pipeline: wgpu::RenderPipeline,
+    line_pipeline: wgpu::RenderPipeline,
+    point_pipeline: wgpu::RenderPipeline,
+    bind_layout: wgpu::BindGroupLayout,
+    adapter_name: String,
+}
+
+fn linear(c: [f32; 4]) -> [f32; 4] {
+    [srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2]), c[3]]
+}
+
+fn bytes<T: Copy>(data: &[T]) -> &[u8] {
+    // SAFETY: T is plain f32/u32 data (no padding, no pointers); the slice is read only.
+    unsafe { std::slice::from_raw_parts(data.as_ptr() as *const u8, std::mem::size_of_val(data)) }
+}
+
+impl Renderer {
+    /// Finds an adapter (Vulkan or GL; headless GL works on Mesa's llvmpipe) and builds the
+    /// pipelines.
+    pub fn new() -> Result<Self, RenderError> {
+        pollster::block_on(Self::new_async())
+    }
+
+    async fn new_async() -> Result<Self, RenderError> {
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+        desc.backends = wgpu::Backends::VULKAN | wgpu::Backends::GL;
+        desc.flags = wgpu::InstanceFlags::empty();
+        let instance = wgpu::Instance::new(desc);
+        let adapter = instance
+            .request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::HighPerformance,
+                compatible_surface: None,
+                force_fallback_adapter: false,
+                apply_limit_buckets: false,
+            })
+            .await
+            .map_err(|_| RenderError::NoAdapter)?;
+        let adapter_name = format!("{} ({:?})", adapter.get_info().name, adapter.get_info().backend);
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor::default())
+            .await
+            .map_err(|e| RenderError::Device(e.to_string()))?;
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("splinekit shaders"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("shaders.wgsl").into()),
+        });
+        let bind_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: None,
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX | wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: None,
+            bind_group_layouts: &[Some(&bind_layout)],
+            immediate_size: 0,
+        });
+        let pipeline = |vs: &str, fs: &str, buffers: &[Option<wgpu::VertexBufferLayout>], depth_write: bool| {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(vs),
+                layout: Some(&layout),
+                vertex: wgpu::VertexState {
+                    module: &shader,
+                    entry_point: Some(vs),
+                    buffers,
+                    compilation_options: Default::default(),
+                },
+                fragment: Some(wgpu::FragmentState {
+                    module: &shader,
+                    entry_point: Some(fs),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format: COLOR_FORMAT,
+                        blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                    compilation_options: Default::default(),
+                }),
+                primitive: wgpu::PrimitiveState { cull_mode: None, ..Default::default() },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(depth_write),
+                    depth_compare: Some(wgpu::CompareFunction::LessEqual),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: wgpu::MultisampleState { count: SAMPLES, ..Default::default() },
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        let mesh_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4];
+        let line_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4, 3 => Float32];
+        let point_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32, 2 => Float32x4];
+        let mesh_pipeline = pipeline(
+            "vs_mesh",
+            "fs_mesh",
+            &[Some(wgpu::VertexBufferLayout {
+                array_stride: 40,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &mesh_attrs,
+            })],
+            true,
+        );
+        let line_pipeline = pipeline(
+            "vs_line",
+            "fs_flat",
+            &[Some(wgpu::VertexBufferLayout {
+                array_stride: 48,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: &line_attrs,
+            })],
+            true,
+        );
+        let point_pipeline = pipeline(
+            "vs_point",
+            "fs_point",
+            &[Some(wgpu::VertexBufferLayout {
+                array_stride: 32,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: &point_attrs,
+            })],
+            false,
+        );
+        Ok(Renderer { device, queue, mesh_pipeline, line_pipeline, point_pipeline, bind_layout, adapter_name })
+    }
+
+    /// The adapter in use, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (Gl)".
+    pub fn adapter_name(&self) -> &str {
+        &self.adapter_name
+    }
+
+    /// Renders the scene into a `width` × `height` image.
+    pub fn render(&self, scene: &RenderScene, width: u32, height: u32) -> Result<Image, RenderError> {
+        if !(1..=MAX_SIDE).contains(&width) || !(1..=MAX_SIDE).contains(&height) {
+            return Err(RenderError::Invalid(format!(
+                "--size: each side must be between 1 and {MAX_SIDE} pixels, got {width}x{height}"
+            )));
+        }
+        let aspect = width as f32 / height as f32;
+        let bounds = scene.bounds().unwrap_or(([-1.0; 3], [1.0; 3]));
+        let camera = scene.camera.unwrap_or_else(|| Camera::fit(bounds, 0.9, 0.5, aspect));
+        let (lo, hi) = bounds;
+        let centre = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0, (lo[2] + hi[2]) / 2.0];
+        let eye = camera.eye();
+        let to_centre =
+            ((eye[0] - centre[0]).powi(2) + (eye[1] - centre[1]).powi(2) + (eye[2] - centre[2]).powi(2)).sqrt();
+        let radius = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2) + (hi[2] - lo[2]).powi(2)).sqrt() / 2.0;
+        let target = match camera {
+            Camera::Perspective { target, .. } | Camera::Orthographic { target, .. } => target,
+        };
+        let to_target =
+            ((eye[0] - target[0]).powi(2) + (eye[1] - target[1]).powi(2) + (eye[2] - target[2]).powi(2)).sqrt();
+        let view_proj = camera.view_projection(aspect, radius + (to_centre - to_target).abs());
+        let mut globals = [0.0f32; 36];
+        for c in 0..4 {
+            globals[4 * c..4 * c + 4].copy_from_slice(&view_proj[c]);
+        }
+        globals[16..19].copy_from_slice(&eye);
+        globals[20..24].copy_from_slice(&[width as f32, height as f32, 2e-4, 0.0]);
+        for (k, (dir, intensity)) in scene.lights.iter().enumerate() {
+            globals[24 + 4 * k..27 + 4 * k].copy_from_slice(dir);
+            globals[27 + 4 * k] = *intensity;
+        }
+        globals[32] = scene.ambient;
+
+        let device = &self.device;
+        let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: None,
+            contents: bytes(&globals),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+        let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &self.bind_layout,
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() }],
+        });
+        // Geometry.
+        let mut mesh_buffers = Vec::new();
+        for m in &scene.meshes {
+            if m.triangles.is_empty() {
+                continue;
+            }
+            let mut v = Vec::with_capacity(m.positions.len() * 10);
+            for i in 0..m.positions.len() {
+                v.extend_from_slice(&m.positions[i]);
+                v.extend_from_slice(m.normals.get(i).unwrap_or(&[0.0; 3]));
+                v.extend_from_slice(&linear(*m.colors.get(i).unwrap_or(&m.color)));
+            }
+            let vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: None,
+                contents: bytes(&v),
+                usage: wgpu::BufferUsages::VERTEX,
+            });
+            let flat: Vec<u32> = m.triangles.iter().flatten().copied().collect();
+            let ib = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: None,
+                contents: bytes(&flat),
+                usage: wgpu::BufferUsages::INDEX,
+            });
+            mesh_buffers.push((vb, ib, flat.len() as u32));
+        }
+        let mut segments: Vec<f32> = Vec::new();
+        for l in &scene.lines {
+            let c = linear(l.color);
+            let n = l.points.len();
+            let count = if l.closed && n > 2 { n } else { n.saturating_sub(1) };
+            for i in 0..count {
+                let (a, b) = (l.points[i], l.points[(i + 1) % n]);
+                segments.extend_from_slice(&a);
+                segments.extend_from_slice(&b);
+                segments.extend_from_slice(&c);
+                segments.extend_from_slice(&[l.width, 0.0]);
+            }
+        }
+        let mut points: Vec<f32> = Vec::new();
+        for p in &scene.points {
+            points.extend_from_slice(&p.position);
+            points.push(p.size);
+            points.extend_from_slice(&linear(p.color));
+        }
+        let instance_buffer = |data: &[f32]| {
+            (!data.is_empty()).then(|| {
+                device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: None,
+                    contents: bytes(data),
+                    usage: wgpu::BufferUsages::VERTEX,
+                })
+            })
+        };
+        let (line_buffer, point_buffer) = (instance_buffer(&segments), instance_buffer(&points));
+
+        // Targets.
+        let size = wgpu::Extent3d { width, height, depth_or_array_layers: 1 };
+        let texture = |samples: u32, format: wgpu::TextureFormat, usage: wgpu::TextureUsages| {
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: None,
+                size,
+                mip_level_count: 1,
+                sample_count: samples,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage,
+                view_formats: &[],
+            })
+        };
+        let msaa = texture(SAMPLES, COLOR_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT);
+        let depth = texture(SAMPLES, DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT);
+        let resolved = texture(1, COLOR_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC);
+        let padded_row = (4 * width).div_ceil(256) * 256;
+        let readback = device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size: padded_row as u64 * height as u64,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let bg = linear(scene.background);
+        let mut encoder = device.create_command_encoder(&Default::default());
+        {
+            let (mv, dv, rv) = (
+                msaa.create_view(&Default::default()),
+                depth.create_view(&Default::default()),
+                resolved.create_view(&Default::default()),
+            );
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: None,
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: &mv,
+                    depth_slice: None,
+                    resolve_target: Some(&rv),
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(wgpu::Color {
+                            r: bg[0] as f64,
+                            g: bg[1] as f64,
+                            b: bg[2] as f64,
+                            a: bg[3] as f64,
+                        }),
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &dv,
+                    depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_bind_group(0, &bind, &[]);
+            pass.set_pipeline(&self.mesh_pipeline);
+            for (vb, ib, count) in &mesh_buffers {
+                pass.set_vertex_buffer(0, vb.slice(..));
+                pass.set_index_buffer(ib.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..*count, 0, 0..1);
+            }
+            if let Some(b) = &line_buffer {
+                pass.set_pipeline(&self.line_pipeline);
+                pass.set_vertex_buffer(0, b.slice(..));
+                pass.draw(0..6, 0..(segments.len() / 12) as u32);
+            }
+            if let Some(b) = &point_buffer {
+                pass.set_pipeline(&self.point_pipeline);
+                pass.set_vertex_buffer(0, b.slice(..));
+                pass.draw(0..6, 0..(points.len() / 8) as u32);
+            }
+        }
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture: &resolved,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &readback,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(padded_row),
+                    rows_per_image: Some(height),
+                },
+            },
+            size,
+        );
+        self.queue.submit([encoder.finish()]);
+        let slice = readback.slice(..);
+        let (tx, rx) = std::sync::mpsc::channel();
+        slice.map_async(wgpu::MapMode::Read, move |r| {
+            let _ = tx.send(r);
+        });
+        device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| RenderError::Readback(e.to_string()))?;
+        rx.recv()
+            .map_err(|e| RenderError::Readback(e.to_string()))?
+            .map_err(|e| RenderError::Readback(e.to_string()))?;
+        let data = slice.get_mapped_range().map_err(|e| RenderError::Readback(format!("{e:?}")))?;
+        let mut rgba = Vec::with_capacity((4 * width * height) as usize);
+        for row in 0..height as usize {
+            let start = row * padded_row as usize;
+            rgba.extend_from_slice(&data[start..start + 4 * width as usize]);
+        }
+        drop(data);
+        readback.unmap();
+        Ok(Image { width, height, rgba })
+    }
+}
