@@ -9,7 +9,8 @@ Usage: python3 .ci/fuzz_cli.py BINARY [SEED] [CASES]
 import json, os, random, subprocess, sys, tempfile
 B = sys.argv[1]
 random.seed(int(sys.argv[2]) if len(sys.argv) > 2 else 1)
-SVG = os.path.join(tempfile.mkdtemp(), "fuzz.svg")
+TMP = tempfile.mkdtemp()
+SVG, OBJ, STL, GLB, PNG = (os.path.join(TMP, "fuzz." + e) for e in ("svg", "obj", "stl", "glb", "png"))
 types = ["bezier","rational_bezier","bspline","nurbs","hermite","catmull_rom","line","circle","ellipse","helix","heart","rose","lissajous","trefoil","butterfly","bfunction","blend","blending_spline",
          "bezier_surface","bspline_surface","nurbs_surface","plane","cylinder","cone","sphere","torus","mobius","klein_bottle","enneper","helicoid","seashell","apple","heart_surface","revolution","ruled","extrusion","coons","sweep","trimmed","blending_spline_surface"]
 def num():
@@ -116,6 +117,8 @@ for i in range(int(sys.argv[3]) if len(sys.argv) > 3 else 400):
         ["refine", "-", "--elevate", random.choice(["1","3","70"])],
         ["refine", "-", "--remove", "0.5"],
         ["tessellate", "-", "-o", SVG],
+        ["tessellate", "-", "-o", random.choice([OBJ, STL, GLB]), "--density", random.choice(["4", "0", "100000"])],
+        ["render", "-", "-o", PNG, "--size", random.choice(["48x32", "0x10", "9000x9000", "abc"])],
         ["fit", "-", "--degree", "3", "--control-points", "4", "--samples", "50"],
     ])
     try:
@@ -123,7 +126,7 @@ for i in range(int(sys.argv[3]) if len(sys.argv) > 3 else 400):
     except subprocess.TimeoutExpired:
         print("TIMEOUT", args, text[:300]); bad += 1; continue
     err = r.stderr.strip()
-    ok = (r.returncode == 0 and (r.stdout or args[0] == "tessellate")) or (r.returncode == 2 and len(err.splitlines()) == 1 and not r.stdout)
+    ok = (r.returncode == 0 and (r.stdout or args[0] in ("tessellate", "render"))) or (r.returncode == 2 and len(err.splitlines()) == 1 and not r.stdout)
     if not ok or "panicked" in err or "internal error" in err:
         bad += 1
         print("BAD", r.returncode, args, text[:400], "->", err[:300], r.stdout[:100])

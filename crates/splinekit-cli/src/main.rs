@@ -1,5 +1,5 @@
-//! The `splinekit` command line: evaluate, fit, interpolate, refine and subdivide curves
-//! given as JSON shape documents (see docs/format.md).
+//! The `splinekit` command line: evaluate, fit, interpolate, refine, subdivide, tessellate,
+//! render and animate shapes and scenes given as JSON documents (see docs/format.md).
 //!
 //! Exit status: 0 on success, 2 on bad input (with one line `error: …` on standard error
 //! naming the offending field), never a panic trace.
@@ -38,8 +38,12 @@ enum Command {
     Refine(commands::refine::RefineArgs),
     /// Subdivision curves: Chaikin, Lane–Riesenfeld, 4-point.
     Subdivide(commands::subdivide::SubdivideArgs),
-    /// Polyline of a curve as SVG or OBJ.
+    /// Polylines of curves and triangle meshes of surfaces: SVG, OBJ, STL, PLY, glTF.
     Tessellate(commands::tessellate::TessellateArgs),
+    /// Render a scene or shape to PNG (offscreen, wgpu).
+    Render(commands::render::RenderArgs),
+    /// Render a scene's animation to an animated GIF.
+    Animate(commands::render::AnimateArgs),
     /// Render the showcase figures into a folder with index.html.
     Gallery(gallery::GalleryArgs),
 }
@@ -86,6 +90,8 @@ fn main() {
         Command::Refine(a) => commands::refine::run(a),
         Command::Subdivide(a) => commands::subdivide::run(a),
         Command::Tessellate(a) => commands::tessellate::run(a),
+        Command::Render(a) => commands::render::run_render(a),
+        Command::Animate(a) => commands::render::run_animate(a),
         Command::Gallery(a) => gallery::run(a),
     });
     match result {

@@ -340,11 +340,83 @@ fn gallery_writes_every_figure_and_an_index() {
     assert_eq!(o.code, 0, "{}", o.stderr);
     let index = std::fs::read_to_string(dir.join("index.html")).unwrap();
     let figures: Vec<&str> = index.split("<img src=\"").skip(1).map(|s| s.split('"').next().unwrap()).collect();
-    assert!(figures.len() >= 15, "{figures:?}");
-    for f in figures {
-        let svg = std::fs::read_to_string(dir.join(f)).unwrap();
-        assert!(svg.contains("<path d=\"M"), "{f} draws nothing");
+    assert!(figures.len() >= 40, "{figures:?}");
+    let (mut png, mut gif) = (0, 0);
+    for f in &figures {
+        let bytes = std::fs::read(dir.join(f)).unwrap();
+        if f.ends_with(".svg") {
+            assert!(String::from_utf8(bytes).unwrap().contains("<path d=\"M"), "{f} draws nothing");
+        } else if f.ends_with(".png") {
+            let img = splinekit_render::Image::from_png(&bytes).unwrap();
+            let cov = img.coverage();
+            assert!(cov > 0.005 && cov < 0.95, "{f}: {cov} of the picture is drawn");
+            png += 1;
+        } else {
+            assert!(bytes.starts_with(b"GIF89a") && bytes.len() > 10_000, "{f}");
+            gif += 1;
+        }
     }
+    assert!(png >= 18 && gif >= 4, "{png} PNG, {gif} GIF");
+    let links: Vec<&str> = index.split("<a href=\"").skip(1).map(|s| s.split('"').next().unwrap()).collect();
+    assert_eq!(links.len(), png + gif);
+    for l in links {
+        assert!(std::fs::read(dir.join(l)).unwrap().starts_with(b"glTF"), "{l}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn tessellate_writes_surface_meshes_and_render_and_animate_write_pictures() {
+    let dir = temp_dir("meshes");
+    let torus = r#"{"type":"torus"}"#;
+    for ext in ["obj", "stl", "stla", "ply", "gltf", "glb"] {
+        let out = dir.join(format!("torus.{ext}"));
+        let o = run(&["tessellate", "-", "-o", out.to_str().unwrap(), "--density", "8"], torus);
+        assert_eq!(o.code, 0, "{ext}: {}", o.stderr);
+        let bytes = std::fs::read(&out).unwrap();
+        let head = String::from_utf8_lossy(&bytes[..bytes.len().min(80)]).to_string();
+        match ext {
+            "obj" => assert_eq!(String::from_utf8(bytes).unwrap().lines().filter(|l| l.starts_with("f ")).count(), 128),
+            "stl" => assert_eq!(bytes.len(), 84 + 50 * 128),
+            "stla" => assert!(head.starts_with("solid torus")),
+            "ply" => assert!(head.contains("element vertex 81")),
+            "gltf" => assert!(head.starts_with("{\"asset\"")),
+            _ => assert!(bytes.starts_with(b"glTF")),
+        }
+    }
+    let adaptive = dir.join("adaptive.obj");
+    let o = run(&["tessellate", "-", "-o", adaptive.to_str().unwrap(), "--tolerance", "0.01"], torus);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert_bad(&["tessellate", "-", "-o", dir.join("t.svg").to_str().unwrap()], torus, "-o");
+    assert_bad(&["tessellate", "-", "-o", dir.join("t.obj").to_str().unwrap(), "--density", "0"], torus, "--density");
+
+    let png = dir.join("torus.png");
+    let o = run(&["render", "-", "-o", png.to_str().unwrap(), "--size", "160x120"], torus);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let img = splinekit_render::Image::from_png(&std::fs::read(&png).unwrap()).unwrap();
+    assert_eq!((img.width, img.height), (160, 120));
+    assert!(img.coverage() > 0.2);
+    assert_bad(&["render", "-", "-o", png.to_str().unwrap(), "--size", "0x5"], torus, "--size");
+    assert_bad(&["render", "-", "-o", dir.join("x.jpg").to_str().unwrap()], torus, "-o");
+    assert_bad(&["render", "-", "-o", png.to_str().unwrap()], r#"{"type":"scene","objects":[]}"#, "objects");
+    assert_bad(
+        &["render", "-", "-o", png.to_str().unwrap()],
+        r#"{"type":"scene","objects":[{"shape":{"type":"torus"},"colour":[1,0,0]}]}"#,
+        "colour",
+    );
+
+    let heart =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/shapes/beating_heart.json"))
+            .unwrap();
+    let gif = dir.join("heart.gif");
+    let o =
+        run(&["animate", "-", "-o", gif.to_str().unwrap(), "--frames", "4", "--fps", "8", "--size", "96x96"], &heart);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let bytes = std::fs::read(&gif).unwrap();
+    assert!(bytes.starts_with(b"GIF89a"));
+    // Four image descriptors (0x2C after a graphic control extension block).
+    assert_eq!(bytes.windows(2).filter(|w| w == &[0x00, 0x2C]).count(), 4);
+    assert_bad(&["animate", "-", "-o", gif.to_str().unwrap(), "--fps", "0"], &heart, "--fps");
     std::fs::remove_dir_all(&dir).ok();
 }
 

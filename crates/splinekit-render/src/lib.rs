@@ -9,11 +9,15 @@
 #![warn(missing_docs)]
 
 pub mod camera;
+pub mod compose;
+pub mod gltf_export;
 pub mod image;
 pub mod renderer;
 pub mod scene;
 
 pub use camera::Camera;
+pub use compose::compose;
+pub use gltf_export::scene_to_gltf;
 pub use image::{Image, write_gif};
 pub use renderer::{RenderError, Renderer};
 pub use scene::{LineItem, MeshItem, PointItem, RenderScene};

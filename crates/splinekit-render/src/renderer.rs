@@ -39,6 +39,8 @@ pub struct Renderer {
     mesh_pipeline: wgpu::RenderPipeline,
     line_pipeline: wgpu::RenderPipeline,
     point_pipeline: wgpu::RenderPipeline,
+    flat_line_pipeline: wgpu::RenderPipeline,
+    flat_point_pipeline: wgpu::RenderPipeline,
     bind_layout: wgpu::BindGroupLayout,
     adapter_name: String,
 }
@@ -100,39 +102,44 @@ impl Renderer {
             bind_group_layouts: &[Some(&bind_layout)],
             immediate_size: 0,
         });
-        let pipeline = |vs: &str, fs: &str, buffers: &[Option<wgpu::VertexBufferLayout>], depth_write: bool| {
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some(vs),
-                layout: Some(&layout),
-                vertex: wgpu::VertexState {
-                    module: &shader,
-                    entry_point: Some(vs),
-                    buffers,
-                    compilation_options: Default::default(),
-                },
-                fragment: Some(wgpu::FragmentState {
-                    module: &shader,
-                    entry_point: Some(fs),
-                    targets: &[Some(wgpu::ColorTargetState {
-                        format: COLOR_FORMAT,
-                        blend: Some(wgpu::BlendState::ALPHA_BLENDING),
-                        write_mask: wgpu::ColorWrites::ALL,
-                    })],
-                    compilation_options: Default::default(),
-                }),
-                primitive: wgpu::PrimitiveState { cull_mode: None, ..Default::default() },
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH_FORMAT,
-                    depth_write_enabled: Some(depth_write),
-                    depth_compare: Some(wgpu::CompareFunction::LessEqual),
-                    stencil: Default::default(),
-                    bias: Default::default(),
-                }),
-                multisample: wgpu::MultisampleState { count: SAMPLES, ..Default::default() },
-                multiview_mask: None,
-                cache: None,
-            })
-        };
+        let pipeline =
+            |vs: &str, fs: &str, buffers: &[Option<wgpu::VertexBufferLayout>], depth_write: bool, test: bool| {
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some(vs),
+                    layout: Some(&layout),
+                    vertex: wgpu::VertexState {
+                        module: &shader,
+                        entry_point: Some(vs),
+                        buffers,
+                        compilation_options: Default::default(),
+                    },
+                    fragment: Some(wgpu::FragmentState {
+                        module: &shader,
+                        entry_point: Some(fs),
+                        targets: &[Some(wgpu::ColorTargetState {
+                            format: COLOR_FORMAT,
+                            blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+                            write_mask: wgpu::ColorWrites::ALL,
+                        })],
+                        compilation_options: Default::default(),
+                    }),
+                    primitive: wgpu::PrimitiveState { cull_mode: None, ..Default::default() },
+                    depth_stencil: Some(wgpu::DepthStencilState {
+                        format: DEPTH_FORMAT,
+                        depth_write_enabled: Some(depth_write),
+                        depth_compare: Some(if test {
+                            wgpu::CompareFunction::LessEqual
+                        } else {
+                            wgpu::CompareFunction::Always
+                        }),
+                        stencil: Default::default(),
+                        bias: Default::default(),
+                    }),
+                    multisample: wgpu::MultisampleState { count: SAMPLES, ..Default::default() },
+                    multiview_mask: None,
+                    cache: None,
+                })
+            };
         let mesh_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4];
         let line_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4, 3 => Float32];
         let point_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32, 2 => Float32x4];
@@ -145,28 +152,33 @@ impl Renderer {
                 attributes: &mesh_attrs,
             })],
             true,
-        );
-        let line_pipeline = pipeline(
-            "vs_line",
-            "fs_flat",
-            &[Some(wgpu::VertexBufferLayout {
-                array_stride: 48,
-                step_mode: wgpu::VertexStepMode::Instance,
-                attributes: &line_attrs,
-            })],
             true,
         );
-        let point_pipeline = pipeline(
-            "vs_point",
-            "fs_point",
-            &[Some(wgpu::VertexBufferLayout {
-                array_stride: 32,
-                step_mode: wgpu::VertexStepMode::Instance,
-                attributes: &point_attrs,
-            })],
-            false,
-        );
-        Ok(Renderer { device, queue, mesh_pipeline, line_pipeline, point_pipeline, bind_layout, adapter_name })
+        let line_layout = [Some(wgpu::VertexBufferLayout {
+            array_stride: 48,
+            step_mode: wgpu::VertexStepMode::Instance,
+            attributes: &line_attrs,
+        })];
+        let point_layout = [Some(wgpu::VertexBufferLayout {
+            array_stride: 32,
+            step_mode: wgpu::VertexStepMode::Instance,
+            attributes: &point_attrs,
+        })];
+        let line_pipeline = pipeline("vs_line", "fs_flat", &line_layout, true, true);
+        let point_pipeline = pipeline("vs_point", "fs_point", &point_layout, false, true);
+        let flat_line_pipeline = pipeline("vs_line", "fs_flat", &line_layout, false, false);
+        let flat_point_pipeline = pipeline("vs_point", "fs_point", &point_layout, false, false);
+        Ok(Renderer {
+            device,
+            queue,
+            mesh_pipeline,
+            line_pipeline,
+            point_pipeline,
+            flat_line_pipeline,
+            flat_point_pipeline,
+            bind_layout,
+            adapter_name,
+        })
     }
 
     /// The adapter in use, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (Gl)".
@@ -339,12 +351,12 @@ impl Renderer {
                 pass.draw_indexed(0..*count, 0, 0..1);
             }
             if let Some(b) = &line_buffer {
-                pass.set_pipeline(&self.line_pipeline);
+                pass.set_pipeline(if scene.painter_order { &self.flat_line_pipeline } else { &self.line_pipeline });
                 pass.set_vertex_buffer(0, b.slice(..));
                 pass.draw(0..6, 0..(segments.len() / 12) as u32);
             }
             if let Some(b) = &point_buffer {
-                pass.set_pipeline(&self.point_pipeline);
+                pass.set_pipeline(if scene.painter_order { &self.flat_point_pipeline } else { &self.point_pipeline });
                 pass.set_vertex_buffer(0, b.slice(..));
                 pass.draw(0..6, 0..(points.len() / 8) as u32);
             }

@@ -59,6 +59,9 @@ pub struct RenderScene {
     pub lights: [([f32; 3], f32); 2],
     /// Ambient light.
     pub ambient: f32,
+    /// Draw lines and points in order without depth testing (plane figures, where
+    /// overlapping curves would otherwise fight over equal depths).
+    pub painter_order: bool,
 }
 
 impl Default for RenderScene {
@@ -71,6 +74,7 @@ impl Default for RenderScene {
             camera: None,
             lights: [([-0.4, -0.6, -1.0], 0.75), ([0.8, 0.3, 0.2], 0.35)],
             ambient: 0.22,
+            painter_order: false,
         }
     }
 }

@@ -14,12 +14,14 @@ mod defaults;
 pub mod error;
 pub mod points;
 pub mod refine;
+pub mod scenes;
 pub mod surfaces;
 pub mod transforms;
 
 pub use build::{AnyCurve, CurveVisitor};
 pub use curves::CurveDocument;
 pub use error::{DocumentError, Result};
+pub use scenes::{SceneDocument, SceneObject, SceneOrShape, StyleDoc};
 pub use surfaces::{AnySurface, SurfaceDocument, SurfaceVisitor};
 
 use serde_json::Value;

@@ -4,5 +4,6 @@ pub mod eval;
 pub mod eval_surface;
 pub mod fit;
 pub mod refine;
+pub mod render;
 pub mod subdivide;
 pub mod tessellate;

@@ -1,41 +1,50 @@
-//! `splinekit tessellate`: polylines for curves, written as SVG or OBJ.
+//! `splinekit tessellate`: curves as polylines (.svg, .obj, .gltf, .glb) and surfaces as
+//! triangle meshes (.obj, .stl, .ply, .gltf, .glb), regular (`--density`) or adaptive
+//! (`--tolerance`).
 
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use splinekit::curve::Curve;
-use splinekit_mesh::{Polyline, Projection, SvgFigure};
-use splinekit_scene::{CurveVisitor, ShapeDocument};
-use std::fmt::Write;
+use splinekit::surface::Surface;
+use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene, obj, ply, stl};
+use splinekit_mesh::surface_mesh::{adaptive, regular, to3};
+use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, Projection, SvgFigure, TriangleMesh};
+use splinekit_scene::{CurveVisitor, ShapeDocument, SurfaceVisitor};
 
 use crate::input::read_shape;
-use crate::output::write_text;
 
 #[derive(Args, Debug)]
 pub struct TessellateArgs {
     /// Shape document (JSON file, or - for standard input).
     pub shape: String,
-    /// Output file; the extension picks the format: .svg (drawing) or .obj (polyline as
-    /// `l` elements). Mesh formats (.stl, .ply, .gltf, .glb) come with surfaces.
+    /// Output file; the extension picks the format. Curves: .svg (drawing), .obj (`l`
+    /// polyline), .gltf/.glb (line strip). Surfaces: .obj (with normals and uv), .stl
+    /// (binary; .stla for ASCII), .ply (ASCII, normals and uv), .gltf/.glb.
     #[arg(short, long)]
     pub output: String,
-    /// Regular sampling with this many segments.
+    /// Regular sampling: segments for curves, cells per direction for surfaces.
     #[arg(long, conflicts_with = "tolerance")]
     pub density: Option<usize>,
-    /// Adaptive sampling: largest distance between curve and polyline (default: 1/1000 of
-    /// the curve's size).
+    /// Adaptive sampling: largest distance between shape and polyline or mesh (default:
+    /// curves 1/1000 of their size; surfaces a regular 64×64 grid).
     #[arg(long, allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
+    /// Pose the document's animation at this time (seconds).
+    #[arg(long, allow_hyphen_values = true)]
+    pub time: Option<String>,
 }
 
 /// Most points one curve file may hold.
 const MAX_CURVE_POINTS: usize = 1_000_000;
+/// Most cells per direction of a regular surface mesh.
+const MAX_DENSITY: usize = 4096;
 
-struct Tessellate<'a>(&'a TessellateArgs, &'a str);
+struct CurvePoly<'a>(&'a TessellateArgs);
 
-impl CurveVisitor for Tessellate<'_> {
-    type Output = Result<String>;
-    fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Result<String> {
-        let (args, ext) = (self.0, self.1);
+impl CurveVisitor for CurvePoly<'_> {
+    type Output = Result<(Vec<[f64; 3]>, bool, usize)>;
+    fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Self::Output {
+        let args = self.0;
         let poly = match (args.density, args.tolerance) {
             (Some(n), _) if n > MAX_CURVE_POINTS => {
                 bail!("--density: at most {MAX_CURVE_POINTS} segments per file, got {n}")
@@ -49,42 +58,98 @@ impl CurveVisitor for Tessellate<'_> {
             }
         }
         .map_err(|e| anyhow!("--{e}"))?;
-        Ok(match ext {
-            "svg" => {
-                let proj = if D >= 3 { Projection::view(0.6, 0.45) } else { Projection::TOP };
-                let mut fig = SvgFigure::new(800.0, 600.0, proj);
-                fig.path(&poly.points, poly.closed, "#1f5fbf", 2.0);
-                fig.render()
+        Ok((poly.points.iter().map(to3).collect(), poly.closed, D))
+    }
+}
+
+struct SurfaceTriangles<'a>(&'a TessellateArgs, bool);
+
+impl SurfaceVisitor for SurfaceTriangles<'_> {
+    type Output = Result<TriangleMesh>;
+    fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Self::Output {
+        let (args, uv) = (self.0, self.1);
+        let options = MeshOptions { uv };
+        let mesh = match (args.density, args.tolerance) {
+            (Some(n), _) if n == 0 || n > MAX_DENSITY => {
+                bail!("--density: between 1 and {MAX_DENSITY} cells per direction, got {n}")
             }
-            _ => {
-                let mut s = String::from("# splinekit polyline\n");
-                for p in &poly.points {
-                    let c = |i: usize| if i < D { p[i] } else { 0.0 };
-                    let _ = writeln!(s, "v {} {} {}", c(0), c(1), c(2));
-                }
-                let mut l = String::from("l");
-                for i in 1..=poly.points.len() {
-                    let _ = write!(l, " {i}");
-                }
-                if poly.closed {
-                    l.push_str(" 1");
-                }
-                let _ = writeln!(s, "{l}");
-                s
+            (Some(n), _) => regular(s, n, n, options),
+            (None, Some(t)) => {
+                adaptive(s, (8, 8), AdaptiveTolerance { chord_height: t, normal_angle: 0.2, max_depth: 10 }, options)
             }
-        })
+            (None, None) => regular(s, 64, 64, options),
+        }
+        .map_err(|e| anyhow!("--{e}"))?;
+        Ok(mesh)
     }
 }
 
 pub fn run(args: &TessellateArgs) -> Result<()> {
     let ext = args.output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
-    if !matches!(ext.as_str(), "svg" | "obj") {
-        bail!("-o: curves are written as .svg or .obj, not '{}'", args.output);
+    let mut doc = read_shape(&args.shape)?;
+    if let Some(t) = &args.time {
+        doc.set_time(super::eval::parse_time(t)?);
     }
-    let ShapeDocument::Curve(doc) = read_shape(&args.shape)? else {
-        bail!("type: tessellate handles curves so far; triangle meshes of surfaces come with the mesh exports");
+    let name = std::path::Path::new(&args.output).file_stem().and_then(|s| s.to_str()).unwrap_or("shape").to_string();
+    let bytes: Vec<u8> = match &doc {
+        ShapeDocument::Curve(c) => {
+            if !matches!(ext.as_str(), "svg" | "obj" | "gltf" | "glb") {
+                bail!("-o: curves are written as .svg, .obj, .gltf or .glb, not '{}'", args.output);
+            }
+            let curve = c.build().map_err(|e| anyhow!("{e}"))?;
+            let (points, closed, dim) = curve.visit(CurvePoly(args))?;
+            match ext.as_str() {
+                "svg" => {
+                    let proj = if dim >= 3 { Projection::view(0.6, 0.45) } else { Projection::TOP };
+                    let mut fig = SvgFigure::new(800.0, 600.0, proj);
+                    let pts: Vec<splinekit::Point<3>> =
+                        points.iter().map(|p| splinekit::Point::<3>::from(*p)).collect();
+                    fig.path(&pts, closed, "#1f5fbf", 2.0);
+                    fig.render().into_bytes()
+                }
+                "obj" => obj::write_obj_polyline(&points, closed, &name).into_bytes(),
+                _ => {
+                    let mut strip = points.clone();
+                    if closed && !points.is_empty() {
+                        strip.push(points[0]);
+                    }
+                    let scene = GltfScene {
+                        objects: vec![GltfObject {
+                            name: name.clone(),
+                            geometry: GltfGeometry::LineStrip(strip),
+                            color: [0.12, 0.37, 0.75, 1.0],
+                            frames: vec![],
+                        }],
+                    };
+                    if ext == "glb" { scene.to_glb() } else { scene.to_gltf().into_bytes() }
+                }
+            }
+        }
+        ShapeDocument::Surface(s) => {
+            if !matches!(ext.as_str(), "obj" | "stl" | "stla" | "ply" | "gltf" | "glb") {
+                bail!("-o: surfaces are written as .obj, .stl, .stla, .ply, .gltf or .glb, not '{}'", args.output);
+            }
+            let surface = s.build().map_err(|e| anyhow!("{e}"))?;
+            let uv = matches!(ext.as_str(), "obj" | "ply" | "gltf" | "glb");
+            let mesh = surface.visit(SurfaceTriangles(args, uv))?;
+            match ext.as_str() {
+                "obj" => obj::write_obj(&mesh, &name).into_bytes(),
+                "stl" => stl::write_stl_binary(&mesh),
+                "stla" => stl::write_stl_ascii(&mesh, &name).into_bytes(),
+                "ply" => ply::write_ply(&mesh).into_bytes(),
+                _ => {
+                    let scene = GltfScene {
+                        objects: vec![GltfObject {
+                            name: name.clone(),
+                            geometry: GltfGeometry::Mesh(mesh),
+                            color: [0.12, 0.37, 0.75, 1.0],
+                            frames: vec![],
+                        }],
+                    };
+                    if ext == "glb" { scene.to_glb() } else { scene.to_gltf().into_bytes() }
+                }
+            }
+        }
     };
-    let curve = doc.build().map_err(|e| anyhow!("{e}"))?;
-    let text = curve.visit(Tessellate(args, &ext))?;
-    write_text(&text, Some(&args.output))
+    std::fs::write(&args.output, bytes).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
 }

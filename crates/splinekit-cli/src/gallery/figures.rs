@@ -3,7 +3,7 @@
 use anyhow::Result;
 use splinekit::Point;
 use splinekit::basis::{basis_function, bernstein};
-use splinekit::curve::model::{Butterfly, Circle, Heart, Helix, Lissajous, Rose, Trefoil};
+use splinekit::curve::model::{Butterfly, Circle, Heart, Helix, Lissajous, Trefoil};
 use splinekit::curve::{BSplineCurve, BezierCurve, CatmullRomCurve, Curve, HermiteCurve, NurbsCurve};
 use splinekit::fit::{FitOptions, KnotPlacement, fit_curve};
 use splinekit::subdivision::{chaikin, four_point, lane_riesenfeld};
@@ -122,18 +122,6 @@ pub fn lane_riesenfeld_closed() -> Result<Figure> {
             "Lane–Riesenfeld subdivision (double, then 3 averaging passes) of a closed polygon: 1, 2 and 5 steps. \
                   The limit is the periodic uniform cubic B-spline on the initial points (red)."
                 .into(),
-        svg: fig.render(),
-    })
-}
-
-/// The 3-D rose model curve, projected.
-pub fn rose() -> Result<Figure> {
-    let r = Rose::new(1.0, 4.0, false)?;
-    let mut fig = SvgFigure::new(W, H, Projection::view(0.6, 0.5)).title("Rose curve in 3-D, n = 4");
-    draw(&mut fig, &r, CURVE, 2.0)?;
-    Ok(Figure {
-        file: "rose.svg",
-        caption: "The 3-D rose (r cos 4t cos t, r cos 4t sin t, r sin 4t), t ∈ [0, 2π], seen from azimuth 34°, elevation 29°.".into(),
         svg: fig.render(),
     })
 }
@@ -324,156 +312,6 @@ pub fn model_curves() -> Result<Vec<Figure>> {
     Ok(out)
 }
 
-/// Draws `lines` isoparametric curves in each direction of a surface.
-fn wireframe(
-    fig: &mut SvgFigure,
-    s: &dyn splinekit::surface::Surface<3>,
-    lines: (usize, usize),
-    colour: &str,
-    width: f64,
-) {
-    let (du, dv) = (s.domain_u(), s.domain_v());
-    let samples = 96;
-    let count = |n: usize, closed: bool| if closed { n } else { n + 1 };
-    for a in 0..count(lines.0, s.is_closed_u()) {
-        let u = du.lerp(a as f64 / lines.0 as f64);
-        let pts: Vec<Point<3>> = (0..=samples).map(|k| s.point(u, dv.lerp(k as f64 / samples as f64))).collect();
-        fig.path(&pts, false, colour, width);
-    }
-    for b in 0..count(lines.1, s.is_closed_v()) {
-        let v = dv.lerp(b as f64 / lines.1 as f64);
-        let pts: Vec<Point<3>> = (0..=samples).map(|k| s.point(du.lerp(k as f64 / samples as f64), v)).collect();
-        fig.path(&pts, false, colour, width);
-    }
-}
-
-/// Surface figures: tensor products, exact NURBS quadrics, derived and model surfaces.
-pub fn surfaces() -> Result<Vec<Figure>> {
-    use splinekit::curve::model::{Helix, Line, Trefoil};
-    use splinekit::surface::derived::{CoonsBlend, CoonsPatch, RevolvedSurface, SweepSurface};
-    use splinekit::surface::model::{Apple, KleinBottle, MobiusStrip, Seashell};
-    use splinekit::surface::{BezierSurface, NurbsSurface, Surface};
-    let p3 = |x: f64, y: f64, z: f64| Point::<3>::new(x, y, z);
-    let view = Projection::view(0.7, 0.45);
-    let mut out = Vec::new();
-
-    let net: Vec<Vec<Point<3>>> = (0..4)
-        .map(|i| {
-            (0..4)
-                .map(|j| p3(i as f64, j as f64, if (1..3).contains(&i) && (1..3).contains(&j) { 2.0 } else { 0.0 }))
-                .collect()
-        })
-        .collect();
-    let bez = BezierSurface::new(net.clone())?;
-    let mut fig = SvgFigure::new(W, H, view).title("Bicubic Bézier surface and its control net");
-    for row in &net {
-        fig.dashed(row, false, POLYGON, 1.0);
-    }
-    for j in 0..4 {
-        let col: Vec<Point<3>> = net.iter().map(|r| r[j]).collect();
-        fig.dashed(&col, false, POLYGON, 1.0);
-    }
-    wireframe(&mut fig, &bez, (12, 12), CURVE, 1.2);
-    fig.dots(&net.concat(), 3.5, POINTS);
-    out.push(Figure {
-        file: "bezier_surface.svg",
-        caption: "A bicubic Bézier surface (isoparametric lines) with its 4 × 4 control net (dashed): the four inner points are lifted.".into(),
-        svg: fig.render(),
-    });
-
-    let torus = NurbsSurface::torus(3.0, 1.0)?;
-    let mut fig = SvgFigure::new(W, H, view).title("Exact NURBS torus, degree (2, 2), 9 × 9 control points");
-    wireframe(&mut fig, &torus, (24, 12), CURVE, 1.0);
-    out.push(Figure {
-        file: "nurbs_torus.svg",
-        caption: "The rational biquadratic torus, made by revolving the NURBS circle of the tube about the z-axis: exact to rounding.".into(),
-        svg: fig.render(),
-    });
-
-    let vase = splinekit::curve::BSplineCurve::clamped_uniform(
-        3,
-        vec![p3(1.0, 0.0, 0.0), p3(2.0, 0.0, 1.0), p3(0.6, 0.0, 2.5), p3(0.8, 0.0, 3.5), p3(1.4, 0.0, 4.0)],
-    )?;
-    let rev =
-        RevolvedSurface::new(Box::new(vase.clone()), Point::<3>::zeros(), Point::<3>::z(), 1.5 * std::f64::consts::PI)?;
-    let mut fig = SvgFigure::new(W, H, Projection::view(0.9, 0.3))
-        .title("Surface of revolution: a B-spline profile turned by 270°");
-    wireframe(&mut fig, &rev, (18, 12), CURVE, 1.0);
-    fig.path(&Polyline::regular(&vase, 100)?.points, false, POINTS, 2.5);
-    out.push(Figure {
-        file: "revolution.svg",
-        caption: "A cubic B-spline profile (red) revolved 270° about the z-axis.".into(),
-        svg: fig.render(),
-    });
-
-    let sweep = SweepSurface::new(Box::new(Circle::new(0.35)?), Box::new(Trefoil::new(1.0)?))?;
-    let mut fig = SvgFigure::new(W, H, Projection::view(0.0, 1.3))
-        .title("Sweep: a circle along the trefoil, rotation-minimising frame");
-    wireframe(&mut fig, &sweep, (10, 96), CURVE, 0.8);
-    out.push(Figure {
-        file: "sweep.svg",
-        caption: "A circle of radius 0.35 swept along the trefoil knot with a rotation-minimising frame (double reflection); the frame's twist is spread so the tube closes.".into(),
-        svg: fig.render(),
-    });
-    let spring = SweepSurface::new(Box::new(Circle::new(0.25)?), Box::new(Helix::new(1.5, 1.2, 3.0)?))?;
-    let mut fig = SvgFigure::new(W, H, Projection::view(0.5, 0.25)).title("Sweep along a helix");
-    wireframe(&mut fig, &spring, (8, 120), CURVE, 0.8);
-    out.push(Figure {
-        file: "sweep_helix.svg",
-        caption: "A circle swept along a three-turn helix: a spring.".into(),
-        svg: fig.render(),
-    });
-
-    let b = |pts: &[[f64; 3]]| -> Result<Box<dyn splinekit::curve::Curve<3>>> {
-        Ok(Box::new(BezierCurve::new(pts.iter().map(|p| p3(p[0], p[1], p[2])).collect())?))
-    };
-    let coons = CoonsPatch::new(
-        b(&[[0.0, 0.0, 0.0], [1.0, -0.5, 1.0], [2.0, 0.0, 0.0]])?,
-        b(&[[0.0, 2.0, 0.5], [1.0, 2.5, -0.5], [2.0, 2.0, 1.0]])?,
-        b(&[[0.0, 0.0, 0.0], [-0.5, 1.0, 0.8], [0.0, 2.0, 0.5]])?,
-        Box::new(Line::new(p3(2.0, 0.0, 0.0), p3(2.0, 2.0, 1.0))?),
-        CoonsBlend::Cubic,
-    )?;
-    let mut fig = SvgFigure::new(W, H, view).title("Bicubically blended Coons patch");
-    wireframe(&mut fig, &coons, (12, 12), CURVE, 1.0);
-    out.push(Figure {
-        file: "coons.svg",
-        caption: "A Coons patch spanned by three Bézier boundary curves and one straight edge, blended with cubic Hermite functions.".into(),
-        svg: fig.render(),
-    });
-
-    /// File, title, surface, view, isoline counts.
-    type ModelFigure = (&'static str, &'static str, Box<dyn Surface<3>>, Projection, (usize, usize));
-    let models: Vec<ModelFigure> = vec![
-        (
-            "klein_bottle.svg",
-            "Figure-8 Klein bottle",
-            Box::new(KleinBottle::new(3.0)?),
-            Projection::view(0.6, 0.6),
-            (32, 16),
-        ),
-        (
-            "seashell.svg",
-            "Seashell",
-            Box::new(Seashell::new(1.0, 2.0, 0.1, 2.0)?),
-            Projection::view(0.5, 0.5),
-            (16, 48),
-        ),
-        ("apple.svg", "GMlib's apple", Box::new(Apple::new(1.0)?), Projection::view(0.5, 0.2), (24, 24)),
-        ("mobius.svg", "Möbius strip", Box::new(MobiusStrip::new(1.0, 0.4)?), Projection::view(0.4, 0.7), (48, 6)),
-    ];
-    for (file, title, s, proj, lines) in models {
-        let mut fig = SvgFigure::new(W, H, proj).title(title);
-        wireframe(&mut fig, s.as_ref(), lines, CURVE, 0.8);
-        out.push(Figure {
-            file,
-            caption: format!("Model surface: {title}, with exact partial derivatives of every order."),
-            svg: fig.render(),
-        });
-    }
-    Ok(out)
-}
-
 /// The B-functions side by side, and two curves blended at 80, 50 and 20 % overlap.
 pub fn blending() -> Result<Vec<Figure>> {
     use splinekit::basis::BFunction;
@@ -527,57 +365,4 @@ pub fn blending() -> Result<Vec<Figure>> {
         svg: fig.render(),
     };
     Ok(vec![bfunctions, blends])
-}
-
-/// The seeds' heart: a closed ERBS blending spline of 10 cubic Bézier locals, as made from
-/// the model and with some local curves moved, rotated and scaled.
-pub fn heart_blending_spline() -> Result<Vec<Figure>> {
-    use splinekit::basis::BFunction;
-    use splinekit::blend::{BlendingSplineCurve, LocalKind};
-    use splinekit::frame::Affine;
-    let model: std::sync::Arc<dyn Curve<3>> = std::sync::Arc::new(Heart::new(1.0)?);
-    let p3 = |x: f64, y: f64, z: f64| Point::<3>::new(x, y, z);
-    let mut out = Vec::new();
-    for (file, title, moved) in [
-        ("heart_blending_spline.svg", "Heart as an ERBS blending spline of 10 cubic Bézier locals", false),
-        ("heart_transformed.svg", "The heart blending spline after transforming local curves", true),
-    ] {
-        let mut c =
-            BlendingSplineCurve::from_model(model.clone(), 10, LocalKind::Bezier(3), BFunction::erbs_default(), true)?;
-        if moved {
-            c.set_transform(0, Affine::translation(p3(0.0, 3.0, 0.0)));
-            c.set_transform(3, Affine::rotation(p3(0.0, 0.0, 1.0), 0.6)?.after(&Affine::uniform_scale(1.5)));
-            c.set_transform(7, Affine::translation(p3(-3.0, 0.0, 0.0)).after(&Affine::uniform_scale(0.5)));
-        }
-        let mut fig = SvgFigure::new(W, H, Projection::TOP).title(title);
-        draw(&mut fig, model.as_ref(), MODEL, 6.0)?;
-        for k in 0..c.local_count() {
-            let (a, b) = c.local_support(k);
-            let pts: Vec<Point<3>> = (0..=40)
-                .map(|i| {
-                    let mut o = [Point::<3>::zeros()];
-                    c.eval_local(k, a + (b - a) * i as f64 / 40.0, &mut o);
-                    o[0]
-                })
-                .collect();
-            fig.path(&pts, false, PALETTE[1 + k % (PALETTE.len() - 1)], 1.0);
-        }
-        draw(&mut fig, &c, CURVE, 2.5)?;
-        let origins: Vec<Point<3>> = (0..c.local_count()).map(|k| c.origin(k)).collect();
-        fig.dots(&origins, 3.5, "#000");
-        out.push(Figure {
-            file,
-            caption: if moved {
-                "Local curve 0 moved up, 3 rotated and enlarged, 7 shrunk and moved left: the curve changes only between the \
-                 neighbouring knots of each moved local (model in grey)."
-                    .into()
-            } else {
-                "A closed ERBS blending spline (blue) of the heart (grey): 10 cubic Bézier local curves (thin) Hermite-fitted to the \
-                 heart's value and first 3 derivatives at the knots (black), which the spline reproduces exactly."
-                    .into()
-            },
-            svg: fig.render(),
-        });
-    }
-    Ok(out)
 }

@@ -1,11 +1,17 @@
-//! `splinekit gallery`: renders the showcase figures into a folder with an index page.
+//! `splinekit gallery`: renders the showcase — shaded scenes (PNG), animations (GIF) with
+//! glTF exports, and plots (SVG) — into a folder with an index page.
 
 mod figures;
+mod scenes;
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, anyhow};
 use clap::Args;
+use splinekit_render::{Renderer, scene_to_gltf, write_gif};
+use splinekit_scene::scenes::SceneDocument;
 use std::path::PathBuf;
 use std::time::Instant;
+
+use crate::commands::render::{animation_camera, progress, render_frame};
 
 #[derive(Args, Debug)]
 pub struct GalleryArgs {
@@ -14,13 +20,27 @@ pub struct GalleryArgs {
     pub output: PathBuf,
 }
 
+struct Entry {
+    /// The picture shown (PNG, GIF or SVG).
+    file: String,
+    /// A glTF export, if any.
+    gltf: Option<String>,
+    caption: String,
+}
+
 pub fn run(args: &GalleryArgs) -> Result<()> {
     let start = Instant::now();
-    let mut figures = vec![
+    std::fs::create_dir_all(&args.output).with_context(|| format!("-o: cannot create '{}'", args.output.display()))?;
+    let write = |name: &str, bytes: &[u8]| -> Result<()> {
+        let path = args.output.join(name);
+        std::fs::write(&path, bytes).with_context(|| format!("-o: cannot write '{}'", path.display()))
+    };
+
+    // Plots (SVG).
+    let mut plots = vec![
         figures::bspline_from_control_points()?,
         figures::least_squares_circle()?,
         figures::lane_riesenfeld_closed()?,
-        figures::rose()?,
         figures::de_casteljau()?,
         figures::bernstein_basis()?,
         figures::bspline_basis()?,
@@ -29,35 +49,87 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
         figures::subdivision_schemes()?,
         figures::refinement()?,
     ];
-    figures.extend(figures::model_curves()?);
-    figures.extend(figures::surfaces()?);
-    figures.extend(figures::blending()?);
-    figures.extend(figures::heart_blending_spline()?);
-    std::fs::create_dir_all(&args.output).with_context(|| format!("-o: cannot create '{}'", args.output.display()))?;
+    plots.extend(figures::model_curves()?);
+    plots.extend(figures::blending()?);
+    let mut plot_entries = Vec::new();
+    for f in &plots {
+        write(f.file, f.svg.as_bytes())?;
+        plot_entries.push(Entry { file: f.file.to_string(), gltf: None, caption: f.caption.to_string() });
+    }
+
+    // Rendered scenes (PNG, GIF, glb).
+    let renderer =
+        Renderer::new().map_err(|e| anyhow!("gallery: the plots are in {}, but {e}", args.output.display()))?;
+    let docs: Vec<(&str, SceneDocument, &str)> = scenes::SCENES
+        .iter()
+        .map(|(name, json, caption)| {
+            let v: serde_json::Value = serde_json::from_str(json).map_err(|e| anyhow!("scene {name}: {e}"))?;
+            Ok((*name, SceneDocument::parse(&v).map_err(|e| anyhow!("scene {name}: {e}"))?, *caption))
+        })
+        .collect::<Result<_>>()?;
+    let work: u64 = docs
+        .iter()
+        .map(|(_, d, _)| if d.is_animated() { 1 + (d.animation.duration * d.animation.fps).round() as u64 } else { 1 })
+        .sum();
+    let bar = progress(work, "gallery");
+    let mut rendered = Vec::new();
+    for (name, doc, caption) in &docs {
+        let size = (doc.size[0], doc.size[1]);
+        let glb = format!("{name}.glb");
+        if doc.is_animated() {
+            let fps = doc.animation.fps;
+            let frames = (doc.animation.duration * fps).round().max(1.0) as usize;
+            let camera = animation_camera(doc, size)?;
+            let mut images = Vec::with_capacity(frames);
+            for k in 0..frames {
+                images.push(render_frame(&renderer, doc, Some(k as f64 / fps), size, camera)?);
+                bar.inc(1);
+            }
+            let mut gif = Vec::new();
+            write_gif(&mut gif, &images, fps as f32).map_err(|e| anyhow!("{name}.gif: {e}"))?;
+            write(&format!("{name}.gif"), &gif)?;
+            write(&glb, &scene_to_gltf(doc, frames, fps).map_err(|e| anyhow!("{name}: {e}"))?.to_glb())?;
+            rendered.push(Entry { file: format!("{name}.gif"), gltf: Some(glb), caption: caption.to_string() });
+        } else {
+            let img = render_frame(&renderer, doc, None, size, None)?;
+            write(&format!("{name}.png"), &img.to_png())?;
+            write(&glb, &scene_to_gltf(doc, 1, 1.0).map_err(|e| anyhow!("{name}: {e}"))?.to_glb())?;
+            rendered.push(Entry { file: format!("{name}.png"), gltf: Some(glb), caption: caption.to_string() });
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+
     let mut html = String::from(
         "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>splinekit gallery</title>\n\
          <style>body{font-family:sans-serif;max-width:1400px;margin:auto;padding:1em}\
          .grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(420px,1fr));gap:1.5em}\
          figure{margin:0}img{width:100%;border:1px solid #ddd}figcaption{font-size:0.9em;color:#333}</style></head>\n\
-         <body><h1>splinekit gallery</h1><p>Every figure is computed and drawn by splinekit.</p><div class=\"grid\">\n",
+         <body><h1>splinekit gallery</h1><p>Every figure is computed and drawn by splinekit: shaded scenes \
+         rendered offscreen with wgpu (the scene documents are in <code>examples/scenes/</code>), animations \
+         as GIF, each with a glTF export, and plots as SVG.</p>\n",
     );
-    for f in &figures {
-        let path = args.output.join(f.file);
-        std::fs::write(&path, &f.svg).with_context(|| format!("-o: cannot write '{}'", path.display()))?;
-        html.push_str(&format!(
-            "<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n",
-            f.file, f.file, f.caption
-        ));
+    for (title, entries) in [("Scenes and animations", &rendered), ("Plots", &plot_entries)] {
+        html.push_str(&format!("<h2>{title}</h2><div class=\"grid\">\n"));
+        for e in entries {
+            let link = e.gltf.as_ref().map(|g| format!(" <a href=\"{g}\">glTF</a>")).unwrap_or_default();
+            html.push_str(&format!(
+                "<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}{link}</figcaption></figure>\n",
+                e.file, e.file, e.caption
+            ));
+        }
+        html.push_str("</div>\n");
     }
-    html.push_str("</div></body></html>\n");
-    let index = args.output.join("index.html");
-    std::fs::write(&index, html).with_context(|| format!("-o: cannot write '{}'", index.display()))?;
+    html.push_str("</body></html>\n");
+    write("index.html", html.as_bytes())?;
     eprintln!(
-        "gallery: {} figures in {} ({:.2} s); open {}",
-        figures.len(),
+        "gallery: {} rendered scenes and {} plots in {} ({:.1} s, {}); open {}",
+        rendered.len(),
+        plot_entries.len(),
         args.output.display(),
         start.elapsed().as_secs_f64(),
-        index.display()
+        renderer.adapter_name(),
+        args.output.join("index.html").display()
     );
     Ok(())
 }

@@ -1,0 +1,157 @@
+//! `splinekit render` (a PNG of a scene or shape) and `splinekit animate` (a GIF of a
+//! scene's animation).
+
+use anyhow::{Result, anyhow, bail};
+use clap::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+use splinekit_render::{Camera, Image, Renderer, compose, write_gif};
+use splinekit_scene::SceneOrShape;
+use splinekit_scene::scenes::SceneDocument;
+
+use crate::input::read_text;
+
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// Scene or shape document (JSON file, or - for standard input).
+    pub scene: String,
+    /// Output PNG file.
+    #[arg(short, long)]
+    pub output: String,
+    /// Image size WxH in pixels (default: the scene's, else 800x600).
+    #[arg(long)]
+    pub size: Option<String>,
+    /// Pose the scene's animation at this time (seconds).
+    #[arg(long, allow_hyphen_values = true)]
+    pub time: Option<String>,
+}
+
+#[derive(Args, Debug)]
+pub struct AnimateArgs {
+    /// Scene or shape document with an animation (JSON file, or - for standard input).
+    pub scene: String,
+    /// Output GIF file.
+    #[arg(short, long)]
+    pub output: String,
+    /// Number of frames (default: the scene's duration × fps).
+    #[arg(long)]
+    pub frames: Option<String>,
+    /// Frames per second (default: the scene's, else 20).
+    #[arg(long)]
+    pub fps: Option<String>,
+    /// Image size WxH in pixels (default: the scene's, else 800x600).
+    #[arg(long)]
+    pub size: Option<String>,
+}
+
+pub fn parse_size(text: &str) -> Result<(u32, u32)> {
+    let (w, h) =
+        text.split_once(['x', 'X', ',']).ok_or_else(|| anyhow!("--size: expected WxH like 800x600, got '{text}'"))?;
+    let side = |s: &str| -> Result<u32> {
+        let v: u32 = s.trim().parse().map_err(|_| anyhow!("--size: '{s}' is not a whole number"))?;
+        if !(1..=splinekit_render::renderer::MAX_SIDE).contains(&v) {
+            bail!("--size: each side must be between 1 and {} pixels, got {v}", splinekit_render::renderer::MAX_SIDE);
+        }
+        Ok(v)
+    };
+    Ok((side(w)?, side(h)?))
+}
+
+pub fn read_scene(path: &str) -> Result<SceneDocument> {
+    let text = read_text(path, "scene")?;
+    Ok(SceneOrShape::from_json(&text).map_err(|e| anyhow!("{e}"))?.into_scene())
+}
+
+/// Renders one frame of a scene (with `camera`, or the scene's own).
+pub fn render_frame(
+    renderer: &Renderer,
+    scene: &SceneDocument,
+    time: Option<f64>,
+    size: (u32, u32),
+    camera: Option<Camera>,
+) -> Result<Image> {
+    let mut rs = compose(scene, time, size.0 as f32 / size.1 as f32).map_err(|e| anyhow!("{e}"))?;
+    if camera.is_some() {
+        rs.camera = camera;
+    }
+    renderer.render(&rs, size.0, size.1).map_err(|e| anyhow!("{e}"))
+}
+
+/// One camera for every frame of an animation: the scene's at time 0, moved back by 12 %
+/// to leave room for the motion (a camera refitted per frame would zoom back and forth).
+pub fn animation_camera(scene: &SceneDocument, size: (u32, u32)) -> Result<Option<Camera>> {
+    let rs = compose(scene, Some(0.0), size.0 as f32 / size.1 as f32).map_err(|e| anyhow!("{e}"))?;
+    Ok(rs.camera.map(|c| match c {
+        Camera::Perspective { eye, target, up, fov_y } => {
+            let e = [0, 1, 2].map(|k| target[k] + 1.12 * (eye[k] - target[k]));
+            Camera::Perspective { eye: e, target, up, fov_y }
+        }
+        Camera::Orthographic { eye, target, up, half_height } => {
+            Camera::Orthographic { eye, target, up, half_height: half_height * 1.12 }
+        }
+    }))
+}
+
+pub fn run_render(args: &RenderArgs) -> Result<()> {
+    if !args.output.to_ascii_lowercase().ends_with(".png") {
+        bail!("-o: render writes .png files, not '{}'", args.output);
+    }
+    let scene = read_scene(&args.scene)?;
+    let size = match &args.size {
+        Some(s) => parse_size(s)?,
+        None => (scene.size[0], scene.size[1]),
+    };
+    let time = args.time.as_deref().map(super::eval::parse_time).transpose()?;
+    let renderer = Renderer::new().map_err(|e| anyhow!("{e}"))?;
+    let img = render_frame(&renderer, &scene, time, size, None)?;
+    img.save_png(std::path::Path::new(&args.output)).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
+}
+
+pub fn run_animate(args: &AnimateArgs) -> Result<()> {
+    if !args.output.to_ascii_lowercase().ends_with(".gif") {
+        bail!("-o: animate writes .gif files, not '{}'", args.output);
+    }
+    let scene = read_scene(&args.scene)?;
+    let size = match &args.size {
+        Some(s) => parse_size(s)?,
+        None => (scene.size[0], scene.size[1]),
+    };
+    let fps = match &args.fps {
+        Some(f) => {
+            let v: f64 = f.trim().parse().map_err(|_| anyhow!("--fps: '{f}' is not a number"))?;
+            if !(v > 0.0 && v <= 100.0) {
+                bail!("--fps: must be in (0, 100], got {v}");
+            }
+            v
+        }
+        None => scene.animation.fps,
+    };
+    let frames = match &args.frames {
+        Some(n) => super::eval::parse_count("--frames", n, 2000)?,
+        None => (scene.animation.duration * fps).round().max(1.0) as usize,
+    };
+    if frames == 0 {
+        bail!("--frames: need at least one frame");
+    }
+    if frames as u64 * size.0 as u64 * size.1 as u64 > 2_000_000_000 {
+        bail!("--frames: {frames} frames of {}x{} are more than 2·10⁹ pixels", size.0, size.1);
+    }
+    let renderer = Renderer::new().map_err(|e| anyhow!("{e}"))?;
+    let bar = progress(frames as u64, "rendering");
+    let camera = animation_camera(&scene, size)?;
+    let mut images = Vec::with_capacity(frames);
+    for k in 0..frames {
+        images.push(render_frame(&renderer, &scene, Some(k as f64 / fps), size, camera)?);
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    let file = std::fs::File::create(&args.output).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))?;
+    write_gif(std::io::BufWriter::new(file), &images, fps as f32).map_err(|e| anyhow!("-o: {e}"))
+}
+
+/// A progress bar on standard error that shows itself only after a second.
+pub fn progress(len: u64, what: &str) -> ProgressBar {
+    let bar = ProgressBar::with_draw_target(Some(len), indicatif::ProgressDrawTarget::stderr());
+    bar.set_style(ProgressStyle::with_template("{msg} {bar:30} {pos}/{len} {elapsed}").expect("valid template"));
+    bar.set_message(what.to_string());
+    bar
+}

@@ -1,0 +1,361 @@
+//! From scene documents to what the renderer draws: curves become polylines, surfaces
+//! triangle meshes (with colour maps and parameter lines), control nets and blending-spline
+//! local pieces become lines and points, all posed at a time of the scene's animation.
+
+use splinekit::Point;
+use splinekit::curve::Curve;
+use splinekit::surface::Surface;
+use splinekit_mesh::surface_mesh::{regular, to3};
+use splinekit_mesh::{MeshOptions, Polyline};
+use splinekit_scene::curves::CurveDocument;
+use splinekit_scene::scenes::{CameraDoc, ColorMapDoc, SceneDocument, SceneObject};
+use splinekit_scene::{CurveVisitor, DocumentError, ShapeDocument, SurfaceDocument, SurfaceVisitor};
+
+use crate::camera::Camera;
+use crate::scene::{LineItem, MeshItem, PointItem, RenderScene};
+
+/// Colours given to objects without one (sRGB).
+pub const PALETTE: [[f32; 4]; 6] = [
+    [0.18, 0.40, 0.78, 1.0],
+    [0.86, 0.33, 0.12, 1.0],
+    [0.20, 0.62, 0.30, 1.0],
+    [0.58, 0.30, 0.70, 1.0],
+    [0.85, 0.65, 0.10, 1.0],
+    [0.10, 0.60, 0.65, 1.0],
+];
+const NET: [f32; 4] = [0.35, 0.35, 0.35, 1.0];
+
+/// Colour of local piece k of n: a ramp from blue to orange (as GMlib shows them).
+pub fn local_color(k: usize, n: usize) -> [f32; 4] {
+    let s = if n > 1 { k as f32 / (n - 1) as f32 } else { 0.0 };
+    [0.15 + 0.8 * s, 0.35 + 0.3 * (1.0 - (2.0 * s - 1.0).abs()), 0.85 - 0.75 * s, 1.0]
+}
+
+fn f32x3(p: [f64; 3]) -> [f32; 3] {
+    p.map(|x| x as f32)
+}
+
+/// The scene posed at `time` (seconds; `None`: the rest pose) for an image of this aspect.
+pub fn compose(scene: &SceneDocument, time: Option<f64>, aspect: f32) -> Result<RenderScene, DocumentError> {
+    let mut out = RenderScene {
+        background: [scene.background[0], scene.background[1], scene.background[2], 1.0],
+        ..Default::default()
+    };
+    let mut flat = true;
+    for (i, obj) in scene.objects.iter().enumerate() {
+        let mut shape = obj.shape.clone();
+        if let Some(t) = time {
+            shape.set_time(t);
+        }
+        let color = obj
+            .style
+            .color
+            .as_ref()
+            .map_or(PALETTE[i % PALETTE.len()], |c| [c[0], c[1], c[2], *c.get(3).unwrap_or(&1.0)]);
+        let within = |e: DocumentError| e.within(&format!("objects[{i}].shape"));
+        match &shape {
+            ShapeDocument::Curve(c) => {
+                let curve = c.build().map_err(within)?;
+                flat &= curve.dimension() <= 2 && !matches!(c, CurveDocument::Bfunction(_)) || curve.dimension() == 1;
+                // Local pieces and control polygons first, so the curve is drawn over them.
+                if obj.style.local_pieces
+                    && let CurveDocument::BlendingSpline(d) = c
+                {
+                    local_curves(d, obj, &mut out).map_err(within)?;
+                }
+                if obj.style.control_net {
+                    control_polygon(c, &mut out);
+                }
+                if !obj.style.hidden {
+                    out.lines.push(curve.visit(CurveLine { obj, color })?);
+                }
+            }
+            ShapeDocument::Surface(s) => {
+                flat = false;
+                let surface = s.build().map_err(within)?;
+                if !obj.style.hidden {
+                    surface.visit(SurfaceMesh { obj, color, out: &mut out })?;
+                }
+                if obj.style.control_net {
+                    control_net(s, &mut out);
+                }
+                if obj.style.local_pieces
+                    && let SurfaceDocument::BlendingSplineSurface(d) = s
+                {
+                    local_patches(d, &mut out).map_err(within)?;
+                }
+            }
+        }
+        for p in &obj.points {
+            out.points.push(PointItem { position: f32x3(*p), color, size: 8.0 });
+        }
+    }
+    let bounds = out.bounds().unwrap_or(([-1.0; 3], [1.0; 3]));
+    if scene.axes {
+        let size = (0..3).map(|k| bounds.1[k] - bounds.0[k]).fold(0.0f32, f32::max).max(1e-3) * 0.35;
+        for (k, c) in [[0.85, 0.1, 0.1, 1.0], [0.1, 0.65, 0.1, 1.0], [0.1, 0.2, 0.85, 1.0]].into_iter().enumerate() {
+            let mut end = [0.0; 3];
+            end[k] = size;
+            out.lines.push(LineItem { points: vec![[0.0; 3], end], closed: false, color: c, width: 2.0 });
+        }
+    }
+    let bounds = out.bounds().unwrap_or(bounds);
+    // Everything in one plane z = const: a plane figure, seen from the top.
+    let extent = (0..3).map(|k| bounds.1[k] - bounds.0[k]).fold(0.0f32, f32::max);
+    flat |= out.meshes.is_empty() && bounds.1[2] - bounds.0[2] <= 1e-6 * extent;
+    out.painter_order = flat;
+    out.camera = Some(match &scene.camera {
+        Some(CameraDoc::LookAt { eye, target, up, fov }) => Camera::Perspective {
+            eye: eye.map(|x| x as f32),
+            target: target.map(|x| x as f32),
+            up: up.map(|x| x as f32),
+            fov_y: *fov as f32,
+        },
+        Some(CameraDoc::Orbit { top: true, .. }) => {
+            out.painter_order = out.meshes.is_empty();
+            Camera::top(bounds, aspect)
+        }
+        Some(CameraDoc::Orbit { azimuth, elevation, .. }) => {
+            Camera::fit(bounds, azimuth.to_radians() as f32, elevation.to_radians() as f32, aspect)
+        }
+        None if flat => Camera::top(bounds, aspect),
+        None => Camera::fit(bounds, 50f32.to_radians(), 28f32.to_radians(), aspect),
+    });
+    for (k, l) in scene.lights.iter().enumerate() {
+        out.lights[k] = (l.direction.map(|x| x as f32), l.intensity as f32);
+    }
+    Ok(out)
+}
+
+struct CurveLine<'a> {
+    obj: &'a SceneObject,
+    color: [f32; 4],
+}
+
+impl CurveVisitor for CurveLine<'_> {
+    type Output = Result<LineItem, DocumentError>;
+    fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Self::Output {
+        let poly = match self.obj.style.density {
+            Some(n) => Polyline::regular(c, n)?,
+            None => {
+                let rough = Polyline::regular(c, 64)?;
+                let size = rough.points.iter().map(|p| (p - rough.points[0]).norm()).fold(0.0, f64::max).max(1e-9);
+                Polyline::adaptive_with_limit(c, size * 4e-4, 200_000)?
+            }
+        };
+        let points = if D == 1 {
+            // A 1-D curve (a B-function) is drawn as its graph (t, c(t)).
+            poly.params.iter().zip(&poly.points).map(|(t, p)| [*t as f32, p[0] as f32, 0.0]).collect()
+        } else {
+            poly.points.iter().map(|p| f32x3(to3(p))).collect()
+        };
+        Ok(LineItem { points, closed: poly.closed, color: self.color, width: self.obj.style.line_width })
+    }
+}
+
+fn polygon(points: &[Vec<f64>], closed: bool, out: &mut RenderScene) {
+    let pts: Vec<[f32; 3]> = points
+        .iter()
+        .map(|p| [p[0] as f32, *p.get(1).unwrap_or(&0.0) as f32, *p.get(2).unwrap_or(&0.0) as f32])
+        .collect();
+    out.lines.push(LineItem { points: pts.clone(), closed, color: NET, width: 1.5 });
+    out.points.extend(pts.iter().map(|&p| PointItem { position: p, color: [0.1, 0.1, 0.1, 1.0], size: 7.0 }));
+}
+
+fn control_polygon(c: &CurveDocument, out: &mut RenderScene) {
+    match c {
+        CurveDocument::Bezier(d) => polygon(&d.control_points, false, out),
+        CurveDocument::RationalBezier(d) => polygon(&d.control_points, false, out),
+        CurveDocument::Bspline(d) => polygon(&d.control_points, d.periodic, out),
+        CurveDocument::Nurbs(d) => polygon(&d.control_points, d.periodic, out),
+        CurveDocument::Hermite(d) => polygon(&d.points, false, out),
+        CurveDocument::CatmullRom(d) => polygon(&d.points, d.closed, out),
+        _ => {}
+    }
+}
+
+fn control_net(s: &SurfaceDocument, out: &mut RenderScene) {
+    let net = match s {
+        SurfaceDocument::BezierSurface(d) => &d.control_points,
+        SurfaceDocument::BsplineSurface(d) => &d.control_points,
+        SurfaceDocument::NurbsSurface(d) => &d.control_points,
+        _ => return,
+    };
+    for row in net {
+        polygon(row, false, out);
+    }
+    let cols = net.first().map_or(0, Vec::len);
+    for j in 0..cols {
+        let col: Vec<Vec<f64>> = net.iter().filter_map(|r| r.get(j).cloned()).collect();
+        let pts: Vec<[f32; 3]> = col
+            .iter()
+            .map(|p| [p[0] as f32, *p.get(1).unwrap_or(&0.0) as f32, *p.get(2).unwrap_or(&0.0) as f32])
+            .collect();
+        out.lines.push(LineItem { points: pts, closed: false, color: NET, width: 1.5 });
+    }
+}
+
+fn local_curves(
+    d: &splinekit_scene::blending::BlendingSplineDoc,
+    obj: &SceneObject,
+    out: &mut RenderScene,
+) -> Result<(), DocumentError> {
+    macro_rules! draw {
+        ($dim:literal) => {{
+            let c = d.build_in::<$dim>()?;
+            let n = c.local_count();
+            for k in 0..n {
+                let (a, b) = c.local_support(k);
+                let mut v = [Point::<$dim>::zeros(); 1];
+                let pts: Vec<[f32; 3]> = (0..=96)
+                    .map(|i| {
+                        c.eval_local(k, a + (b - a) * i as f64 / 96.0, &mut v);
+                        f32x3(to3(&v[0]))
+                    })
+                    .collect();
+                out.lines.push(LineItem {
+                    points: pts,
+                    closed: false,
+                    color: local_color(k, n),
+                    width: obj.style.line_width * 0.6,
+                });
+                out.points.push(PointItem { position: f32x3(to3(&c.origin(k))), color: local_color(k, n), size: 7.0 });
+            }
+        }};
+    }
+    match d.dimension()? {
+        2 => draw!(2),
+        3 => draw!(3),
+        other => {
+            return Err(DocumentError::new("local_pieces", format!("drawn for 2-D and 3-D curves, not {other}-D")));
+        }
+    }
+    Ok(())
+}
+
+fn local_patches(
+    d: &splinekit_scene::blending::BlendingSplineSurfaceDoc,
+    out: &mut RenderScene,
+) -> Result<(), DocumentError> {
+    let s = d.build_in::<3>()?;
+    let (nu, nv) = s.local_count();
+    let mut v = [Point::<3>::zeros(); 1];
+    for k in 0..nu {
+        for l in 0..nv {
+            let ((u0, u1), (v0, v1)) = s.local_support(k, l);
+            let color = local_color(k * nv + l, nu * nv);
+            // The patch's outline and middle lines over its support.
+            for (fixed_u, t) in [(true, 0.0), (true, 0.5), (true, 1.0), (false, 0.0), (false, 0.5), (false, 1.0)] {
+                let pts: Vec<[f32; 3]> = (0..=32)
+                    .map(|i| {
+                        let s_ = i as f64 / 32.0;
+                        let (u, vv) = if fixed_u {
+                            (u0 + (u1 - u0) * t, v0 + (v1 - v0) * s_)
+                        } else {
+                            (u0 + (u1 - u0) * s_, v0 + (v1 - v0) * t)
+                        };
+                        s.eval_local((k, l), (u, vv), 0, 0, &mut v);
+                        f32x3(to3(&v[0]))
+                    })
+                    .collect();
+                out.lines.push(LineItem { points: pts, closed: false, color, width: 1.0 });
+            }
+        }
+    }
+    Ok(())
+}
+
+struct SurfaceMesh<'a> {
+    obj: &'a SceneObject,
+    color: [f32; 4],
+    out: &'a mut RenderScene,
+}
+
+impl SurfaceVisitor for SurfaceMesh<'_> {
+    type Output = Result<(), DocumentError>;
+    fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Self::Output {
+        let n = self.obj.style.density.unwrap_or(64);
+        let mesh = regular(s, n, n, MeshOptions { uv: true })?;
+        let (du, dv) = (s.domain_u(), s.domain_v());
+        let colors = match self.obj.style.color_map {
+            None => Vec::new(),
+            Some(map) => {
+                let values: Vec<f64> = mesh
+                    .uvs
+                    .iter()
+                    .map(|t| {
+                        let (u, v) = (du.lerp(t[0]), dv.lerp(t[1]));
+                        match map {
+                            ColorMapDoc::U => t[0],
+                            ColorMapDoc::V => t[1],
+                            ColorMapDoc::Gaussian => s.curvatures(u, v).map_or(0.0, |c| c.gaussian),
+                            ColorMapDoc::Mean => s.curvatures(u, v).map_or(0.0, |c| c.mean),
+                        }
+                    })
+                    .collect();
+                match map {
+                    ColorMapDoc::U | ColorMapDoc::V => values.iter().map(|&x| sequential(x as f32)).collect(),
+                    _ => {
+                        // Symmetric range at the 95th percentile of |value|: blue < 0 < red.
+                        let mut mags: Vec<f64> = values.iter().map(|x| x.abs()).filter(|x| x.is_finite()).collect();
+                        mags.sort_by(f64::total_cmp);
+                        let scale = mags.get(mags.len() * 95 / 100).copied().unwrap_or(1.0).max(1e-12);
+                        values.iter().map(|&x| diverging((x / scale) as f32)).collect()
+                    }
+                }
+            }
+        };
+        self.out.meshes.push(MeshItem {
+            positions: mesh.positions.iter().map(|p| f32x3(*p)).collect(),
+            normals: mesh.normals.iter().map(|p| f32x3(*p)).collect(),
+            colors,
+            color: self.color,
+            triangles: mesh.triangles.clone(),
+        });
+        if self.obj.style.wireframe {
+            let lines = 16.min(n);
+            let mut v = [Point::<D>::zeros(); 1];
+            for (fixed_u, count) in [(true, lines), (false, lines)] {
+                for i in 0..=count {
+                    let f = i as f64 / count as f64;
+                    let pts: Vec<[f32; 3]> = (0..=128)
+                        .map(|j| {
+                            let g = j as f64 / 128.0;
+                            let (u, w) = if fixed_u { (du.lerp(f), dv.lerp(g)) } else { (du.lerp(g), dv.lerp(f)) };
+                            s.eval_partials(u, w, 0, 0, &mut v);
+                            f32x3(to3(&v[0]))
+                        })
+                        .collect();
+                    self.out.lines.push(LineItem {
+                        points: pts,
+                        closed: false,
+                        color: [0.12, 0.12, 0.15, 1.0],
+                        width: 1.0,
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Blue (−1) – white (0) – red (+1).
+fn diverging(x: f32) -> [f32; 4] {
+    let x = x.clamp(-1.0, 1.0);
+    if x < 0.0 {
+        [1.0 + 0.8 * x, 1.0 + 0.55 * x, 1.0 + 0.1 * x, 1.0]
+    } else {
+        [1.0 - 0.1 * x, 1.0 - 0.75 * x, 1.0 - 0.8 * x, 1.0]
+    }
+}
+
+/// Dark blue (0) – teal – yellow (1), roughly viridis.
+fn sequential(x: f32) -> [f32; 4] {
+    let x = x.clamp(0.0, 1.0);
+    let stops = [[0.27, 0.0, 0.33], [0.23, 0.32, 0.55], [0.13, 0.57, 0.55], [0.37, 0.79, 0.38], [0.99, 0.91, 0.14]];
+    let f = x * 4.0;
+    let i = (f as usize).min(3);
+    let t = f - i as f32;
+    let (a, b) = (stops[i], stops[i + 1]);
+    [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t, 1.0]
+}

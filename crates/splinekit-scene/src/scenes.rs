@@ -1,0 +1,387 @@
+//! Scene documents: shapes with styles, a camera, lights and an animation clock.
+//!
+//! ```json
+//! {"type": "scene",
+//!  "objects": [{"shape": {…}, "color": [0.2, 0.4, 0.8], "wireframe": true}],
+//!  "camera": {"azimuth": 40, "elevation": 30},
+//!  "size": [800, 600],
+//!  "animation": {"duration": 1, "fps": 20}}
+//! ```
+
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+
+use crate::ShapeDocument;
+use crate::curves::{fields, kind, split_type};
+use crate::error::{DocumentError, Result};
+
+fn default_line_width() -> f32 {
+    2.5
+}
+
+/// How an object is drawn.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StyleDoc {
+    /// sRGB colour [r, g, b] or [r, g, b, a] in [0, 1] (default: from a palette by index).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub color: Option<Vec<f32>>,
+    /// Width of curves in pixels (default 2.5).
+    #[serde(default = "default_line_width")]
+    pub line_width: f32,
+    /// Surfaces: draw parameter lines over the shading.
+    #[serde(default)]
+    pub wireframe: bool,
+    /// Control polygons and nets (B-spline, NURBS, Bézier) with their points.
+    #[serde(default)]
+    pub control_net: bool,
+    /// Blending splines: draw the local curves or patches in their own colours.
+    #[serde(default)]
+    pub local_pieces: bool,
+    /// Surfaces: colour by `gaussian` or `mean` curvature, or by the `u` or `v` parameter.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub color_map: Option<ColorMapDoc>,
+    /// Grid cells per direction for surfaces, segments for curves (default: adaptive
+    /// curves, 64 surface cells).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub density: Option<usize>,
+    /// Hide the shape itself (e.g. to show only its control net or local pieces).
+    #[serde(default)]
+    pub hidden: bool,
+}
+
+impl Default for StyleDoc {
+    fn default() -> Self {
+        StyleDoc {
+            color: None,
+            line_width: default_line_width(),
+            wireframe: false,
+            control_net: false,
+            local_pieces: false,
+            color_map: None,
+            density: None,
+            hidden: false,
+        }
+    }
+}
+
+/// Colour maps for surfaces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+#[allow(missing_docs)]
+pub enum ColorMapDoc {
+    Gaussian,
+    Mean,
+    U,
+    V,
+}
+
+/// One object of a scene: a shape and its style.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneObject {
+    /// The shape.
+    pub shape: ShapeDocument,
+    /// How it is drawn.
+    pub style: StyleDoc,
+    /// Extra points to mark (e.g. data points), drawn as discs in the object's colour.
+    pub points: Vec<[f64; 3]>,
+}
+
+/// The camera of a scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(untagged, deny_unknown_fields)]
+pub enum CameraDoc {
+    /// Look at the scene from `eye` towards `target`.
+    LookAt {
+        /// Eye position.
+        eye: [f64; 3],
+        /// Point looked at.
+        target: [f64; 3],
+        /// Up direction (default z).
+        #[serde(default = "z_up")]
+        up: [f64; 3],
+        /// Vertical field of view in degrees (default 30).
+        #[serde(default = "thirty")]
+        fov: f64,
+    },
+    /// Fitted to the scene, from a direction in degrees (`top: true`: orthographic from +z).
+    Orbit {
+        /// Degrees about z from +x (default 50).
+        #[serde(default = "fifty")]
+        azimuth: f64,
+        /// Degrees above the xy-plane (default 28).
+        #[serde(default = "twenty_eight")]
+        elevation: f64,
+        /// Orthographic view from above (plane figures).
+        #[serde(default)]
+        top: bool,
+    },
+}
+
+fn z_up() -> [f64; 3] {
+    [0.0, 0.0, 1.0]
+}
+fn thirty() -> f64 {
+    30.0
+}
+fn fifty() -> f64 {
+    50.0
+}
+fn twenty_eight() -> f64 {
+    28.0
+}
+
+/// A light shining towards `direction`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LightDoc {
+    /// Direction the light travels.
+    pub direction: [f64; 3],
+    /// Intensity (default 0.7).
+    #[serde(default = "seven_tenths")]
+    pub intensity: f64,
+}
+
+fn seven_tenths() -> f64 {
+    0.7
+}
+
+/// The animation clock of a scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AnimationDoc {
+    /// Length in seconds (default 1).
+    #[serde(default = "one_f64")]
+    pub duration: f64,
+    /// Frames per second (default 20).
+    #[serde(default = "twenty")]
+    pub fps: f64,
+}
+
+fn one_f64() -> f64 {
+    1.0
+}
+fn twenty() -> f64 {
+    20.0
+}
+
+/// A scene document.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneDocument {
+    /// The objects.
+    pub objects: Vec<SceneObject>,
+    /// The camera (default: fitted, from azimuth 50°, elevation 28°; plane scenes from the top).
+    pub camera: Option<CameraDoc>,
+    /// Up to two lights (default: two fixed lights).
+    pub lights: Vec<LightDoc>,
+    /// Background sRGB colour (default white).
+    pub background: [f32; 3],
+    /// Image size in pixels (default 800×600).
+    pub size: [u32; 2],
+    /// Draw x, y, z axes.
+    pub axes: bool,
+    /// The animation clock (default 1 s at 20 fps).
+    pub animation: AnimationDoc,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawScene {
+    objects: Vec<Value>,
+    #[serde(default)]
+    camera: Option<CameraDoc>,
+    #[serde(default)]
+    lights: Vec<LightDoc>,
+    #[serde(default)]
+    background: Option<[f32; 3]>,
+    #[serde(default)]
+    size: Option<[u32; 2]>,
+    #[serde(default)]
+    axes: bool,
+    #[serde(default)]
+    animation: Option<AnimationDoc>,
+}
+
+#[derive(Deserialize)]
+struct RawObject {
+    shape: Value,
+    #[serde(default)]
+    points: Vec<Vec<f64>>,
+    #[serde(flatten)]
+    style: Value,
+}
+
+/// Largest image side of a scene.
+pub const MAX_SIZE: u32 = 8192;
+
+impl SceneDocument {
+    /// Parses `{"type":"scene",…}`.
+    pub fn parse(value: &Value) -> Result<Self> {
+        let (ty, rest) = split_type(value)?;
+        if ty != "scene" {
+            return Err(DocumentError::new("type", format!("expected \"scene\", got \"{ty}\"")));
+        }
+        let raw: RawScene = fields(rest)?;
+        if raw.objects.is_empty() {
+            return Err(DocumentError::new("objects", "a scene needs at least one object"));
+        }
+        let objects = raw
+            .objects
+            .iter()
+            .enumerate()
+            .map(|(i, o)| Self::object(o).map_err(|e| e.within(&format!("objects[{i}]"))))
+            .collect::<Result<_>>()?;
+        if raw.lights.len() > 2 {
+            return Err(DocumentError::new("lights", format!("at most 2 lights, got {}", raw.lights.len())));
+        }
+        for (i, l) in raw.lights.iter().enumerate() {
+            let ok = l.direction.iter().all(|x| x.is_finite())
+                && l.direction.iter().any(|&x| x != 0.0)
+                && l.intensity.is_finite()
+                && l.intensity >= 0.0;
+            if !ok {
+                return Err(DocumentError::new(
+                    format!("lights[{i}]"),
+                    "direction must be finite and non-zero, intensity finite and ≥ 0",
+                ));
+            }
+        }
+        let size = raw.size.unwrap_or([800, 600]);
+        if !(1..=MAX_SIZE).contains(&size[0]) || !(1..=MAX_SIZE).contains(&size[1]) {
+            return Err(DocumentError::new(
+                "size",
+                format!("each side must be between 1 and {MAX_SIZE} pixels, got {}×{}", size[0], size[1]),
+            ));
+        }
+        let background = raw.background.unwrap_or([1.0, 1.0, 1.0]);
+        if background.iter().any(|c| !(0.0..=1.0).contains(c)) {
+            return Err(DocumentError::new("background", format!("colours are in [0, 1], got {background:?}")));
+        }
+        let animation = raw.animation.unwrap_or(AnimationDoc { duration: 1.0, fps: 20.0 });
+        if !(animation.duration > 0.0 && animation.duration <= 600.0 && animation.fps > 0.0 && animation.fps <= 100.0) {
+            return Err(DocumentError::new(
+                "animation",
+                format!(
+                    "duration must be in (0, 600] seconds and fps in (0, 100], got {} and {}",
+                    animation.duration, animation.fps
+                ),
+            ));
+        }
+        if let Some(CameraDoc::LookAt { eye, target, up, fov }) = &raw.camera {
+            let finite = eye.iter().chain(target).chain(up).all(|x| x.is_finite());
+            if !finite || eye == target || !(*fov > 1.0 && *fov < 170.0) {
+                return Err(DocumentError::new(
+                    "camera",
+                    "eye, target and up must be finite, eye ≠ target, fov in (1, 170) degrees",
+                ));
+            }
+        }
+        Ok(SceneDocument {
+            objects,
+            camera: raw.camera,
+            lights: raw.lights,
+            background,
+            size,
+            axes: raw.axes,
+            animation,
+        })
+    }
+
+    fn object(value: &Value) -> Result<SceneObject> {
+        if !value.is_object() {
+            return Err(DocumentError::new("", format!("expected an object with a \"shape\", got {}", kind(value))));
+        }
+        let raw: RawObject = fields(value.clone())?;
+        let shape = ShapeDocument::parse(&raw.shape).map_err(|e| e.within("shape"))?;
+        let style: StyleDoc = fields(raw.style)?;
+        if let Some(c) = &style.color
+            && (!(3..=4).contains(&c.len()) || c.iter().any(|x| !(0.0..=1.0).contains(x)))
+        {
+            return Err(DocumentError::new("color", format!("expected 3 or 4 numbers in [0, 1], got {c:?}")));
+        }
+        if !(style.line_width > 0.0 && style.line_width <= 64.0) {
+            return Err(DocumentError::new(
+                "line_width",
+                format!("must be in (0, 64] pixels, got {}", style.line_width),
+            ));
+        }
+        if let Some(d) = style.density
+            && !(1..=2048).contains(&d)
+        {
+            return Err(DocumentError::new("density", format!("must be between 1 and 2048, got {d}")));
+        }
+        let points = raw
+            .points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                if !(2..=3).contains(&p.len()) || p.iter().any(|x| !x.is_finite()) {
+                    return Err(DocumentError::new(format!("points[{i}]"), "expected 2 or 3 finite coordinates"));
+                }
+                Ok([p[0], p[1], p.get(2).copied().unwrap_or(0.0)])
+            })
+            .collect::<Result<_>>()?;
+        Ok(SceneObject { shape, style, points })
+    }
+
+    /// A scene of one shape with the default style.
+    pub fn of_shape(shape: ShapeDocument) -> Self {
+        SceneDocument {
+            objects: vec![SceneObject { shape, style: StyleDoc::default(), points: Vec::new() }],
+            camera: None,
+            lights: Vec::new(),
+            background: [1.0, 1.0, 1.0],
+            size: [800, 600],
+            axes: false,
+            animation: AnimationDoc { duration: 1.0, fps: 20.0 },
+        }
+    }
+
+    /// Whether any object carries an animation.
+    pub fn is_animated(&self) -> bool {
+        self.objects.iter().any(|o| {
+            let v = match &o.shape {
+                ShapeDocument::Curve(c) => c.to_value(),
+                ShapeDocument::Surface(s) => s.to_value(),
+            };
+            contains_key(&v, "animation")
+        })
+    }
+}
+
+fn contains_key(v: &Value, key: &str) -> bool {
+    match v {
+        Value::Object(m) => m.iter().any(|(k, x)| (k == key && !x.is_null()) || contains_key(x, key)),
+        Value::Array(a) => a.iter().any(|x| contains_key(x, key)),
+        _ => false,
+    }
+}
+
+/// A scene or a bare shape.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SceneOrShape {
+    /// A scene document.
+    Scene(SceneDocument),
+    /// A shape document.
+    Shape(ShapeDocument),
+}
+
+impl SceneOrShape {
+    /// Parses JSON text that is either a scene or a shape.
+    pub fn from_json(text: &str) -> Result<Self> {
+        let value: Value =
+            serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
+        if value.get("type").and_then(Value::as_str) == Some("scene") {
+            Ok(SceneOrShape::Scene(SceneDocument::parse(&value)?))
+        } else {
+            Ok(SceneOrShape::Shape(ShapeDocument::parse(&value)?))
+        }
+    }
+    /// The scene (a shape becomes a one-object scene).
+    pub fn into_scene(self) -> SceneDocument {
+        match self {
+            SceneOrShape::Scene(s) => s,
+            SceneOrShape::Shape(s) => SceneDocument::of_shape(s),
+        }
+    }
+}
