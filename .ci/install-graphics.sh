@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Headless rendering needs Mesa's EGL and its software rasteriser (llvmpipe), which wgpu's
-# GL backend uses when there is no GPU. Installs them from Debian's packages if missing.
+# GL backend uses when there is no GPU; the viewer's smoke test needs an X server (Xvfb).
+# Installs them from Debian's packages if missing.
 set -euo pipefail
-packages=(libegl1 libegl-mesa0 libgl1-mesa-dri)
+packages=(libegl1 libegl-mesa0 libgl1-mesa-dri xvfb xauth)
 if dpkg -s "${packages[@]}" >/dev/null 2>&1; then
-    echo "graphics: Mesa present"
+    echo "graphics: Mesa and Xvfb present"
     exit 0
 fi
 SUDO=""

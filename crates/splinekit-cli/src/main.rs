@@ -44,6 +44,8 @@ enum Command {
     Render(commands::render::RenderArgs),
     /// Render a scene's animation to an animated GIF.
     Animate(commands::render::AnimateArgs),
+    /// Show a scene in an interactive window (drag to orbit, scroll to zoom, space to pause).
+    View(commands::view::ViewArgs),
     /// Render the showcase figures into a folder with index.html.
     Gallery(gallery::GalleryArgs),
 }
@@ -92,6 +94,7 @@ fn main() {
         Command::Tessellate(a) => commands::tessellate::run(a),
         Command::Render(a) => commands::render::run_render(a),
         Command::Animate(a) => commands::render::run_animate(a),
+        Command::View(a) => commands::view::run(a),
         Command::Gallery(a) => gallery::run(a),
     });
     match result {

@@ -679,3 +679,11 @@ fn eval_time_poses_the_example_animations() {
     let n = floats(&v["normals"][0]);
     assert!((n.iter().map(|x| x * x).sum::<f64>() - 1.0).abs() < 1e-12);
 }
+
+#[test]
+fn view_refuses_bad_arguments_and_explains_a_missing_display() {
+    let torus = r#"{"type":"torus"}"#;
+    assert_bad(&["view", "-", "--frames", "0"], torus, "--frames");
+    assert_bad(&["view", "-", "--screenshot", "x.jpg"], torus, "--screenshot");
+    assert_bad(&["view", "-"], r#"{"type":"scene","objects":[]}"#, "objects");
+}

@@ -12,6 +12,7 @@ pub mod polyline;
 pub mod surface_mesh;
 pub mod svg;
 pub mod triangle_mesh;
+pub mod trimmed_mesh;
 
 pub use polyline::Polyline;
 pub use surface_mesh::{AdaptiveTolerance, MeshOptions};

@@ -2,7 +2,8 @@
 //! chord-height and normal-angle tolerance. Seams of closed surfaces are welded (the last
 //! row of vertices is the first) unless (u, v) coordinates are asked for, in which case the
 //! seam vertices are duplicated with bitwise-equal positions, so there are no cracks either
-//! way. Trimmed surfaces keep the cells whose four corners are inside the trim.
+//! way. Trimmed surfaces are triangulated in the parameter plane with their trimming loops
+//! as constraints ([`crate::trimmed_mesh`]).
 
 use std::collections::HashMap;
 
@@ -48,6 +49,9 @@ pub fn regular<const D: usize, S: Surface<D> + ?Sized>(
             "density",
             format!("need 1 to {MAX_VERTICES} vertices with at least one cell each way, got {nu}×{nv} cells"),
         ));
+    }
+    if let Some(loops) = surface.trim_loops() {
+        return crate::trimmed_mesh::trimmed(surface, &loops, nu.max(nv), options);
     }
     let (du, dv) = (surface.domain_u(), surface.domain_v());
     let us: Vec<f64> = (0..=nu).map(|i| if i == nu { du.end } else { du.lerp(i as f64 / nu as f64) }).collect();

@@ -7,3 +7,4 @@ pub mod refine;
 pub mod render;
 pub mod subdivide;
 pub mod tessellate;
+pub mod view;

@@ -23,5 +23,5 @@ pub use bspline_surface::BSplineSurface;
 pub use iso_curve::{Direction, IsoCurve};
 pub use nurbs_surface::NurbsSurface;
 pub use samples::SurfaceGridSamples;
-pub use traits::{Curvatures, FundamentalForms, Surface, unit_normal};
+pub use traits::{Curvatures, FundamentalForms, Surface, TrimLoops, unit_normal};
 pub use trimmed::TrimmedSurface;

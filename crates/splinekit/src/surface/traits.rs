@@ -34,6 +34,15 @@ pub struct Curvatures {
     pub principal: (f64, f64),
 }
 
+/// Trimming loops in the parameter plane, as closed polygons (the last point joins the first).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrimLoops<'a> {
+    /// The outer loop (`None`: the boundary of the domain).
+    pub outer: Option<&'a [Point<2>]>,
+    /// Holes.
+    pub holes: Vec<&'a [Point<2>]>,
+}
+
 /// A parametric surface S(u, v) over [u₀, u₁] × [v₀, v₁].
 ///
 /// Implementors provide the domains, closedness and [`Surface::eval_partials`]; everything
@@ -81,6 +90,12 @@ pub trait Surface<const D: usize>: Send + Sync {
     /// For trimmed surfaces, whether (u, v) lies in the trimmed region; `None` for
     /// untrimmed surfaces (every parameter of the domain belongs to them).
     fn trim_contains(&self, _u: f64, _v: f64) -> Option<bool> {
+        None
+    }
+
+    /// For trimmed surfaces, the trimming loops as closed polygons in (u, v) (the outer
+    /// loop, `None` for the whole domain, and the holes); `None` for untrimmed surfaces.
+    fn trim_loops(&self) -> Option<TrimLoops<'_>> {
         None
     }
 

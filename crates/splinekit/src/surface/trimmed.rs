@@ -108,4 +108,8 @@ impl<const D: usize> Surface<D> for TrimmedSurface<D> {
     fn trim_contains(&self, u: f64, v: f64) -> Option<bool> {
         Some(self.contains(u, v))
     }
+    fn trim_loops(&self) -> Option<crate::surface::traits::TrimLoops<'_>> {
+        let (outer, holes) = self.loops();
+        Some(crate::surface::traits::TrimLoops { outer, holes })
+    }
 }
