@@ -462,7 +462,8 @@ impl BlendingSplineDoc {
                     format!("local curve {i} does not exist (there are {n})"),
                 ));
             }
-            c.set_transform(*i, t.build::<D>(&format!("transforms[{i}]"))?);
+            let origin = c.origin(*i);
+            c.set_transform(*i, t.build::<D>(&format!("transforms[{i}]"), &origin)?);
         }
         let tracks = tracks::<usize, D>(&self.animation)?;
         if let Some((i, t)) = tracks.iter().enumerate().find(|(_, t)| t.local >= n) {
@@ -590,7 +591,8 @@ impl BlendingSplineSurfaceDoc {
                     format!("patch [{k}, {l}] does not exist (there are {nu}×{nv})"),
                 ));
             }
-            s.set_transform(*k, *l, t.build::<D>(&format!("transforms[{k}][{l}]"))?);
+            let origin = s.origin(*k, *l);
+            s.set_transform(*k, *l, t.build::<D>(&format!("transforms[{k}][{l}]"), &origin)?);
         }
         let tracks = tracks::<(usize, usize), D>(&self.animation)?;
         if let Some((i, t)) = tracks.iter().enumerate().find(|(_, t)| t.local.0 >= nu || t.local.1 >= nv) {

@@ -15,6 +15,9 @@ pub struct RotateDoc {
     pub axis: Option<Vec<f64>>,
     /// Angle in radians.
     pub angle: f64,
+    /// A world point on the rotation axis (default: the local piece's origin).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pivot: Option<Vec<f64>>,
 }
 
 /// One transform.
@@ -33,8 +36,9 @@ pub struct TransformDoc {
 }
 
 impl TransformDoc {
-    /// The affine map translate ∘ rotate ∘ scale in dimension D.
-    pub fn build<const D: usize>(&self, field: &str) -> Result<Affine<D>> {
+    /// The affine map translate ∘ rotate ∘ scale in dimension D, in coordinates centred on
+    /// the local piece's `origin` (a rotation `pivot` is a world point).
+    pub fn build<const D: usize>(&self, field: &str, origin: &splinekit::Point<D>) -> Result<Affine<D>> {
         let mut a = Affine::<D>::identity();
         if let Some(s) = self.scale {
             if !(s.is_finite() && s != 0.0) {
@@ -52,8 +56,12 @@ impl TransformDoc {
             if D == 3 && r.axis.is_none() {
                 return Err(DocumentError::new(format!("{field}.rotate.axis"), "missing (3-D rotations need an axis)"));
             }
-            let rot = Affine::<D>::rotation_in(r.axis.as_deref(), r.angle)
+            let mut rot = Affine::<D>::rotation_in(r.axis.as_deref(), r.angle)
                 .map_err(|e| DocumentError::new(format!("{field}.rotate"), e.to_string()))?;
+            if let Some(p) = &r.pivot {
+                let q = crate::points::to_point::<D>(&format!("{field}.rotate.pivot"), p)?;
+                rot = rot.about(&(q - origin));
+            }
             a = rot.after(&a);
         }
         if let Some(t) = &self.translate {

@@ -122,3 +122,23 @@ fn surface_transforms_by_rows_or_by_pair_and_explicit_locals() {
         assert!(msg.starts_with(field), "{doc}: {msg}");
     }
 }
+
+#[test]
+fn a_rotation_pivot_is_a_world_point_on_the_axis() {
+    // Rotating local 0 of a circle (origin (1, 0, 0)) by π about the z axis through the
+    // world origin sends its interpolation point to (−1, 0, 0): the curve passes there at t = 0.
+    let doc = |pivot: &str| {
+        ShapeDocument::from_json(&format!(
+            r#"{{"type":"blending_spline","model":{{"type":"circle"}},"local_curves":8,
+                "transforms":{{"0":{{"rotate":{{"axis":[0,0,1],"angle":3.141592653589793{pivot}}}}}}}}}"#
+        ))
+        .unwrap()
+    };
+    let ShapeDocument::Curve(c) = doc(r#","pivot":[0,0,0]"#) else { panic!() };
+    let p = c.build_in::<3>().unwrap().point(0.0);
+    assert!((p - Point::<3>::new(-1.0, 0.0, 0.0)).norm() < 1e-12, "{p}");
+    // Without a pivot the local turns about its own origin, which stays put.
+    let ShapeDocument::Curve(c) = doc("") else { panic!() };
+    let p = c.build_in::<3>().unwrap().point(0.0);
+    assert!((p - Point::<3>::new(1.0, 0.0, 0.0)).norm() < 1e-12, "{p}");
+}
