@@ -56,6 +56,14 @@ pub fn parse_size(text: &str) -> Result<(u32, u32)> {
     Ok((side(w)?, side(h)?))
 }
 
+/// `--size` if given, else the scene's size.
+fn image_size(arg: Option<&str>, scene: &SceneDocument) -> Result<(u32, u32)> {
+    match arg {
+        Some(s) => parse_size(s),
+        None => Ok((scene.size[0], scene.size[1])),
+    }
+}
+
 pub fn read_scene(path: &str) -> Result<SceneDocument> {
     let text = read_text(path, "scene")?;
     Ok(SceneOrShape::from_json(&text).map_err(|e| anyhow!("{e}"))?.into_scene())
@@ -96,10 +104,7 @@ pub fn run_render(args: &RenderArgs) -> Result<()> {
         bail!("-o: render writes .png files, not '{}'", args.output);
     }
     let scene = read_scene(&args.scene)?;
-    let size = match &args.size {
-        Some(s) => parse_size(s)?,
-        None => (scene.size[0], scene.size[1]),
-    };
+    let size = image_size(args.size.as_deref(), &scene)?;
     let time = args.time.as_deref().map(super::eval::parse_time).transpose()?;
     let renderer = Renderer::new().map_err(|e| anyhow!("{e}"))?;
     let img = render_frame(&renderer, &scene, time, size, None)?;
@@ -111,10 +116,7 @@ pub fn run_animate(args: &AnimateArgs) -> Result<()> {
         bail!("-o: animate writes .gif files, not '{}'", args.output);
     }
     let scene = read_scene(&args.scene)?;
-    let size = match &args.size {
-        Some(s) => parse_size(s)?,
-        None => (scene.size[0], scene.size[1]),
-    };
+    let size = image_size(args.size.as_deref(), &scene)?;
     let fps = match &args.fps {
         Some(f) => {
             let v: f64 = f.trim().parse().map_err(|_| anyhow!("--fps: '{f}' is not a number"))?;

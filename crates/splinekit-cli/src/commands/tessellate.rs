@@ -84,6 +84,14 @@ impl SurfaceVisitor for SurfaceTriangles<'_> {
     }
 }
 
+/// One object as a .gltf or .glb file.
+fn gltf_file(name: &str, geometry: GltfGeometry, ext: &str) -> Vec<u8> {
+    let scene = GltfScene {
+        objects: vec![GltfObject { name: name.to_string(), geometry, color: [0.12, 0.37, 0.75, 1.0], frames: vec![] }],
+    };
+    if ext == "glb" { scene.to_glb() } else { scene.to_gltf().into_bytes() }
+}
+
 pub fn run(args: &TessellateArgs) -> Result<()> {
     let ext = args.output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
     let mut doc = read_shape(&args.shape)?;
@@ -113,15 +121,7 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
                     if closed && !points.is_empty() {
                         strip.push(points[0]);
                     }
-                    let scene = GltfScene {
-                        objects: vec![GltfObject {
-                            name: name.clone(),
-                            geometry: GltfGeometry::LineStrip(strip),
-                            color: [0.12, 0.37, 0.75, 1.0],
-                            frames: vec![],
-                        }],
-                    };
-                    if ext == "glb" { scene.to_glb() } else { scene.to_gltf().into_bytes() }
+                    gltf_file(&name, GltfGeometry::LineStrip(strip), &ext)
                 }
             }
         }
@@ -137,17 +137,7 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
                 "stl" => stl::write_stl_binary(&mesh),
                 "stla" => stl::write_stl_ascii(&mesh, &name).into_bytes(),
                 "ply" => ply::write_ply(&mesh).into_bytes(),
-                _ => {
-                    let scene = GltfScene {
-                        objects: vec![GltfObject {
-                            name: name.clone(),
-                            geometry: GltfGeometry::Mesh(mesh),
-                            color: [0.12, 0.37, 0.75, 1.0],
-                            frames: vec![],
-                        }],
-                    };
-                    if ext == "glb" { scene.to_glb() } else { scene.to_gltf().into_bytes() }
-                }
+                _ => gltf_file(&name, GltfGeometry::Mesh(mesh), &ext),
             }
         }
     };
