@@ -51,25 +51,56 @@ pub enum KnotSpacing {
     ChordLength,
 }
 
+/// A local curve: a Bézier piece (kept with its frame applied to the control points, which
+/// is exact by affine invariance and saves the map per evaluation) or any curve.
+#[derive(Clone)]
+enum LocalCurve<const D: usize> {
+    Bezier { fitted: IntervalBezier<D>, world: IntervalBezier<D> },
+    General(Arc<dyn Curve<D>>),
+}
+
+impl<const D: usize> LocalCurve<D> {
+    fn bezier(b: IntervalBezier<D>) -> Self {
+        LocalCurve::Bezier { world: b.clone(), fitted: b }
+    }
+}
+
 /// One local curve with its frame.
 #[derive(Clone)]
 struct Local<const D: usize> {
-    curve: Arc<dyn Curve<D>>,
+    curve: LocalCurve<D>,
     origin: Point<D>,
     transform: Affine<D>,
 }
 
 impl<const D: usize> Local<D> {
-    fn new(curve: Arc<dyn Curve<D>>, at: f64) -> Self {
-        let origin = curve.point(at);
+    fn new(curve: LocalCurve<D>, at: f64) -> Self {
+        let origin = match &curve {
+            LocalCurve::Bezier { fitted, .. } => fitted.point(at),
+            LocalCurve::General(c) => c.point(at),
+        };
         Local { curve, origin, transform: Affine::identity() }
+    }
+    fn set_transform(&mut self, transform: Affine<D>) {
+        self.transform = transform;
+        if let LocalCurve::Bezier { fitted, world } = &mut self.curve {
+            let o = self.origin;
+            for (w, p) in world.points.iter_mut().zip(&fitted.points) {
+                *w = o + transform.apply_point(&(p - o));
+            }
+        }
     }
     /// World values at t: o + T(ℓ − o) for the position, T's linear part for derivatives.
     fn eval(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-        self.curve.eval_side(t, side, out);
-        out[0] = self.origin + self.transform.apply_point(&(out[0] - self.origin));
-        for o in out.iter_mut().skip(1) {
-            *o = self.transform.apply_vector(o);
+        match &self.curve {
+            LocalCurve::Bezier { world, .. } => world.eval_side(t, side, out),
+            LocalCurve::General(c) => {
+                c.eval_side(t, side, out);
+                out[0] = self.origin + self.transform.apply_point(&(out[0] - self.origin));
+                for o in out.iter_mut().skip(1) {
+                    *o = self.transform.apply_vector(o);
+                }
+            }
         }
     }
 }
@@ -154,7 +185,7 @@ impl<const D: usize> BlendingSplineCurve<D> {
             .map(|(k, curve)| {
                 let (a, b) = knots.support(k);
                 let mapped: Arc<dyn Curve<D>> = Arc::new(MappedCurve::onto(curve, a, b));
-                Local::new(mapped, knots.centre(k))
+                Local::new(LocalCurve::General(mapped), knots.centre(k))
             })
             .collect();
         Ok(BlendingSplineCurve { locals, knots, bfunction, source: None })
@@ -199,7 +230,7 @@ impl<const D: usize> BlendingSplineCurve<D> {
                 let mut target = [Point::<D>::zeros(); 4];
                 self.eval(t, &mut target);
                 let (a, b) = knots.support(k);
-                Arc::new(IntervalBezier::hermite(&target, a, b - a, (t - a) / (b - a))?)
+                LocalCurve::bezier(IntervalBezier::hermite(&target, a, b - a, (t - a) / (b - a))?)
             }
         };
         self.knots = knots;
@@ -249,7 +280,7 @@ impl<const D: usize> BlendingSplineCurve<D> {
     /// Sets the frame of local k (about its origin); returns the parameter ranges whose
     /// points changed ([`Self::affected_ranges`]).
     pub fn set_transform(&mut self, k: usize, transform: Affine<D>) -> Vec<(f64, f64)> {
-        self.locals[k].transform = transform;
+        self.locals[k].set_transform(transform);
         self.affected_ranges(k)
     }
     /// Poses the animated locals at `time`: local k's frame becomes track(time) ∘ rest[k]
@@ -294,11 +325,11 @@ fn local_from_model<const D: usize>(
     kind: LocalKind,
     knots: &BlendKnots,
     k: usize,
-) -> Result<Arc<dyn Curve<D>>> {
+) -> Result<LocalCurve<D>> {
     let c = knots.centre(k);
     Ok(match kind {
-        LocalKind::SubCurve => Arc::new(SharedCurve(model.clone())),
-        LocalKind::Arc => Arc::new(OsculatingArc::of(model.as_ref(), c)?),
+        LocalKind::SubCurve => LocalCurve::General(Arc::new(SharedCurve(model.clone()))),
+        LocalKind::Arc => LocalCurve::General(Arc::new(OsculatingArc::of(model.as_ref(), c)?)),
         LocalKind::Bezier(d) => {
             if d == 0 || d > 20 {
                 return Err(Error::invalid("local", format!("Bézier degree must be between 1 and 20, got {d}")));
@@ -306,7 +337,7 @@ fn local_from_model<const D: usize>(
             let mut target = vec![Point::<D>::zeros(); d + 1];
             model.eval(c, &mut target);
             let (a, b) = knots.support(k);
-            Arc::new(IntervalBezier::hermite(&target, a, b - a, (c - a) / (b - a))?)
+            LocalCurve::bezier(IntervalBezier::hermite(&target, a, b - a, (c - a) / (b - a))?)
         }
     })
 }
