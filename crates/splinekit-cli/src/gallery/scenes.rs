@@ -83,6 +83,16 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         "A bicubic Bézier surface with its control net.",
     ),
     (
+        "nurbs_torus",
+        include_str!("../../../../examples/scenes/nurbs_torus.json"),
+        "The exact NURBS torus (biquadratic, 9×9 control points with weights) and its control net.",
+    ),
+    (
+        "trimmed_surface",
+        include_str!("../../../../examples/scenes/trimmed_surface.json"),
+        "The Bézier surface trimmed by a closed Catmull–Rom outer loop and a NURBS circle hole, meshed by constrained Delaunay triangulation in the parameter plane.",
+    ),
+    (
         "surface_of_revolution",
         include_str!("../../../../examples/scenes/surface_of_revolution.json"),
         "A surface of revolution of a cubic Bézier profile, with parameter lines.",
