@@ -384,6 +384,20 @@ fn tessellate_writes_surface_meshes_and_render_and_animate_write_pictures() {
             _ => assert!(bytes.starts_with(b"glTF")),
         }
     }
+    // A scene with an animation: one node per object, the frames as morph targets.
+    let scene =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/scenes/beating_heart.json"))
+            .unwrap();
+    let glb = dir.join("heart.glb");
+    let o = run(&["tessellate", "-", "-o", glb.to_str().unwrap()], &scene);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let bytes = std::fs::read(&glb).unwrap();
+    let json_len = u32::from_le_bytes([bytes[12], bytes[13], bytes[14], bytes[15]]) as usize;
+    let doc: serde_json::Value = serde_json::from_slice(&bytes[20..20 + json_len]).unwrap();
+    assert_eq!(doc["nodes"].as_array().unwrap().len(), 2);
+    assert_eq!(doc["animations"].as_array().unwrap().len(), 2, "both curves keep their vertex count");
+    assert_eq!(doc["meshes"][1]["primitives"][0]["targets"].as_array().unwrap().len(), 20);
+    assert_bad(&["tessellate", "-", "-o", dir.join("h.stl").to_str().unwrap()], &scene, "-o");
     let adaptive = dir.join("adaptive.obj");
     let o = run(&["tessellate", "-", "-o", adaptive.to_str().unwrap(), "--tolerance", "0.01"], torus);
     assert_eq!(o.code, 0, "{}", o.stderr);

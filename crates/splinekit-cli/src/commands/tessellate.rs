@@ -9,13 +9,11 @@ use splinekit::surface::Surface;
 use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene, obj, ply, stl};
 use splinekit_mesh::surface_mesh::{adaptive, regular, to3};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, Projection, SvgFigure, TriangleMesh};
-use splinekit_scene::{CurveVisitor, ShapeDocument, SurfaceVisitor};
-
-use crate::input::read_shape;
+use splinekit_scene::{CurveVisitor, SceneOrShape, ShapeDocument, SurfaceVisitor};
 
 #[derive(Args, Debug)]
 pub struct TessellateArgs {
-    /// Shape document (JSON file, or - for standard input).
+    /// Shape document, or a scene document for .gltf/.glb (JSON file, or - for standard input).
     pub shape: String,
     /// Output file; the extension picks the format. Curves: .svg (drawing), .obj (`l`
     /// polyline), .gltf/.glb (line strip). Surfaces: .obj (with normals and uv), .stl
@@ -84,6 +82,22 @@ impl SurfaceVisitor for SurfaceTriangles<'_> {
     }
 }
 
+/// A scene as glTF: one node per drawn mesh or line; an animated scene's frames (its
+/// clock's duration × fps) as morph targets with a weights animation.
+fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, ext: &str) -> Result<()> {
+    if !matches!(ext, "gltf" | "glb") {
+        bail!("-o: scenes are written as .gltf or .glb, not '{}'", args.output);
+    }
+    let (frames, fps) = if scene.is_animated() {
+        ((scene.animation.duration * scene.animation.fps).round().max(1.0) as usize, scene.animation.fps)
+    } else {
+        (1, 1.0)
+    };
+    let gltf = splinekit_render::scene_to_gltf(scene, frames, fps).map_err(|e| anyhow!("{e}"))?;
+    let bytes = if ext == "glb" { gltf.to_glb() } else { gltf.to_gltf().into_bytes() };
+    std::fs::write(&args.output, bytes).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
+}
+
 /// One object as a .gltf or .glb file.
 fn gltf_file(name: &str, geometry: GltfGeometry, ext: &str) -> Vec<u8> {
     let scene = GltfScene {
@@ -94,7 +108,11 @@ fn gltf_file(name: &str, geometry: GltfGeometry, ext: &str) -> Vec<u8> {
 
 pub fn run(args: &TessellateArgs) -> Result<()> {
     let ext = args.output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
-    let mut doc = read_shape(&args.shape)?;
+    let text = crate::input::read_text(&args.shape, "shape")?;
+    let mut doc = match SceneOrShape::from_json(&text).map_err(|e| anyhow!("{e}"))? {
+        SceneOrShape::Scene(scene) => return write_scene(&scene, args, &ext),
+        SceneOrShape::Shape(doc) => doc,
+    };
     if let Some(t) = &args.time {
         doc.set_time(super::eval::parse_time(t)?);
     }

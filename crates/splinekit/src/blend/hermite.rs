@@ -6,11 +6,10 @@
 
 use nalgebra::DMatrix;
 
-use smallvec::{SmallVec, smallvec};
+use smallvec::SmallVec;
 
 use crate::Point;
 use crate::basis::Side;
-use crate::basis::bernstein_derivatives;
 use crate::curve::bezier::bezier_derivatives;
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result};
@@ -64,21 +63,55 @@ impl<const D: usize> Curve<D> for IntervalBezier<D> {
     fn is_closed(&self) -> bool {
         false
     }
-    /// Σ_i B_{i,d}^{(k)}(u) P_i / h^k with the Bernstein derivatives computed once.
+    /// de Casteljau down to level d − m, then for k = m, m − 1, …, 0: the k-th derivative is
+    /// d!/(d − k)! Δᵏ of the k + 1 points at level d − k, divided by hᵏ, followed by one more
+    /// de Casteljau step.
     fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<D>]) {
-        let n = self.points.len();
-        let order = out.len() - 1;
-        let mut basis: SmallVec<[f64; 64]> = smallvec![0.0; (order + 1) * n];
-        bernstein_derivatives(n - 1, (t - self.start) / self.length, order, &mut basis);
-        let mut s = 1.0;
-        for (k, o) in out.iter_mut().enumerate() {
-            let row = &basis[k * n..(k + 1) * n];
-            let mut acc = Point::<D>::zeros();
-            for (p, b) in self.points.iter().zip(row) {
-                acc += p * *b;
+        let d = self.points.len() - 1;
+        let u = (t - self.start) / self.length;
+        if d < 8 {
+            let mut b = [Point::<D>::zeros(); 8];
+            b[..=d].copy_from_slice(&self.points);
+            return derivatives_by_de_casteljau(&mut b, d, u, self.length, out);
+        }
+        let mut b: SmallVec<[Point<D>; 16]> = SmallVec::from_slice(&self.points);
+        derivatives_by_de_casteljau(&mut b, d, u, self.length, out)
+    }
+}
+
+/// The de Casteljau derivative scheme on the control points `b[..=d]` (overwritten).
+#[inline]
+fn derivatives_by_de_casteljau<const D: usize>(
+    b: &mut [Point<D>],
+    d: usize,
+    u: f64,
+    length: f64,
+    out: &mut [Point<D>],
+) {
+    let m = (out.len() - 1).min(d);
+    for level in 0..d - m {
+        for i in 0..d - level {
+            b[i] = b[i] * (1.0 - u) + b[i + 1] * u;
+        }
+    }
+    for o in out.iter_mut().skip(m + 1) {
+        *o = Point::<D>::zeros();
+    }
+    for k in (0..=m).rev() {
+        // b[0..=k] are the points at level d − k; Δᵏb₀ = Σ_j (−1)^{k−j} C(k, j) b_j.
+        let mut delta = Point::<D>::zeros();
+        let mut choose = 1.0;
+        for j in (0..=k).rev() {
+            let sign = if (k - j) % 2 == 0 { 1.0 } else { -1.0 };
+            delta += b[j] * (sign * choose);
+            choose = choose * j as f64 / (k - j + 1) as f64;
+        }
+        let falling: f64 = ((d - k + 1)..=d).map(|x| x as f64).product();
+        out[k] = delta * (falling / length.powi(k as i32));
+        if k > 0 {
+            for i in 0..k {
+                b[i] = b[i] * (1.0 - u) + b[i + 1] * u;
             }
-            *o = acc * s;
-            s /= self.length;
         }
     }
 }
