@@ -12,7 +12,7 @@ pub const MAX_POINTS: usize = 20_000_000;
 pub struct Polyline<const D: usize> {
     /// Curve parameters of the points.
     pub params: Vec<f64>,
-    /// The points c(params[i]).
+    /// The points c(`params[i]`).
     pub points: Vec<Point<D>>,
     /// Whether the last point connects back to the first.
     pub closed: bool,

@@ -283,7 +283,7 @@ impl<const D: usize> BlendingSplineCurve<D> {
         self.locals[k].set_transform(transform);
         self.affected_ranges(k)
     }
-    /// Poses the animated locals at `time`: local k's frame becomes track(time) ∘ rest[k]
+    /// Poses the animated locals at `time`: local k's frame becomes track(time) ∘ `rest[k]`
     /// for each track (locals without a track keep their frames). Returns the parameter
     /// ranges that changed.
     pub fn animate(&mut self, rest: &[Affine<D>], tracks: &[Track<usize>], time: f64) -> Result<Vec<(f64, f64)>> {

@@ -56,7 +56,7 @@ fn surface(
     BlendingSplineSurface::from_model(model, n, PatchKind::Bezier(3, 3), BFunction::erbs_default(), closed)
 }
 
-/// The unit plane [0,1]² (z = 0) with 5×5 bicubic patches: the centre patch rises and falls
+/// The unit plane \[0, 1\]² (z = 0) with 5×5 bicubic patches: the centre patch rises and falls
 /// along z, two others swing about axes in the plane, one pulses.
 pub fn animated_plane() -> Result<AnimatedSurface> {
     let plane = Plane::new(Point::<3>::zeros(), Point::<3>::new(1.0, 0.0, 0.0), Point::<3>::new(0.0, 1.0, 0.0))?;

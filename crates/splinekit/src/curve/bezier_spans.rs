@@ -100,7 +100,7 @@ impl<T: Coefficient> BezierSpans<T> {
 }
 
 impl<T: Coefficient> BezierSpans<T> {
-    /// Sorted-batch evaluation: `out[i·(order+1) + k]` = c^{(k)}(map(params[i])).
+    /// Sorted-batch evaluation: `out[i·(order+1) + k]` = c^{(k)}(map(`params[i]`)).
     /// `knots` are the spline's knots (for span advance); `map` brings a parameter into the
     /// domain. Monomorphised on the degree; a span's points are loaded once per run of
     /// parameters inside it. Unsorted input is correct, only slower.

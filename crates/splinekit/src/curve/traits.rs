@@ -98,7 +98,7 @@ pub trait Curve<const D: usize>: Send + Sync {
         self.eval_side(t, Side::Right, out)
     }
 
-    /// Evaluates at many parameters: `out[i*(order+1) + k]` = c^{(k)}(params[i]).
+    /// Evaluates at many parameters: `out[i*(order+1) + k]` = c^{(k)}(`params[i]`).
     /// Spline curves override this to reuse span search and basis work.
     fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
         let w = order + 1;

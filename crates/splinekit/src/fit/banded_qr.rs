@@ -57,7 +57,7 @@ impl<const D: usize> BandedLeastSquares<D> {
         }
     }
 
-    /// Adds the row Σ_j values[j] x_{(first + j) mod n} ≈ rhs.
+    /// Adds the row Σ_j `values[j]` x_{(first + j) mod n} ≈ rhs.
     pub fn add_row(&mut self, first: usize, values: &[f64], rhs: Point<D>) {
         let (w, b, nb) = (self.width, self.border, self.band_cols);
         let mut xb = [0.0f64; 64];

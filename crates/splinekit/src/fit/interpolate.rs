@@ -34,7 +34,7 @@ impl<const D: usize> InterpolationOptions<D> {
 pub struct Interpolation<const D: usize> {
     /// The interpolating B-spline.
     pub curve: BSplineCurve<D>,
-    /// c(params[i]) = points[i].
+    /// c(`params[i]`) = `points[i]`.
     pub params: Vec<f64>,
 }
 

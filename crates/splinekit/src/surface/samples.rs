@@ -9,7 +9,7 @@ use crate::surface::Surface;
 /// A rectangle of parameters [u₀, u₁] × [v₀, v₁].
 pub type ParamRect = ((f64, f64), (f64, f64));
 
-/// Points and normals at `us × vs` (`points[a·vs.len() + b]` at (us[a], vs[b])).
+/// Points and normals at `us × vs` (`points[a·vs.len() + b]` at (`us[a]`, `vs[b]`)).
 #[derive(Debug, Clone)]
 pub struct SurfaceGridSamples<const D: usize> {
     us: Vec<f64>,

@@ -1,4 +1,4 @@
-//! The [`Surface`] trait: what every parametric surface S: [a,b]×[c,d] → ℝᴰ can do.
+//! The [`Surface`] trait: what every parametric surface S: \[a, b\]×\[c, d\] → ℝᴰ can do.
 
 use smallvec::{SmallVec, smallvec};
 
@@ -63,7 +63,7 @@ pub trait Surface<const D: usize>: Send + Sync {
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]);
 
     /// Evaluates a grid: `out[((a·vs.len() + b)·(du+1) + i)·(dv+1) + j]` is the (i, j)
-    /// partial at (us[a], vs[b]). Tensor-product surfaces override this to compute each
+    /// partial at (`us[a]`, `vs[b]`). Tensor-product surfaces override this to compute each
     /// basis once per row and column.
     fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
         let w = (du + 1) * (dv + 1);
@@ -75,7 +75,7 @@ pub trait Surface<const D: usize>: Send + Sync {
         }
     }
 
-    /// Points and unit normals on a grid (`points[a·vs.len() + b]` at (us[a], vs[b]));
+    /// Points and unit normals on a grid (`points[a·vs.len() + b]` at (`us[a]`, `vs[b]`));
     /// normals are zero where the surface is not regular (and outside ℝ³). Tensor-product
     /// surfaces compute only S, S_u and S_v here, which is what shading needs.
     fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
