@@ -118,6 +118,7 @@ for i in range(int(sys.argv[3]) if len(sys.argv) > 3 else 400):
         ["refine", "-", "--remove", "0.5"],
         ["tessellate", "-", "-o", SVG],
         ["tessellate", "-", "-o", random.choice([OBJ, STL, GLB]), "--density", random.choice(["4", "0", "100000"])],
+        ["subdivide-surface", "-", "--scheme", random.choice(["catmull-clark", "doo-sabin"]), "--steps", random.choice(["1", "2", "11"]), "-o", OBJ],
         ["render", "-", "-o", PNG, "--size", random.choice(["48x32", "0x10", "9000x9000", "abc"])],
         ["fit", "-", "--degree", "3", "--control-points", "4", "--samples", "50"],
     ])

@@ -38,6 +38,8 @@ enum Command {
     Refine(commands::refine::RefineArgs),
     /// Subdivision curves: Chaikin, Lane–Riesenfeld, 4-point.
     Subdivide(commands::subdivide::SubdivideArgs),
+    /// Subdivision surfaces: Catmull–Clark or Doo–Sabin on a polygon mesh (OBJ).
+    SubdivideSurface(commands::subdivide_surface::SubdivideSurfaceArgs),
     /// Polylines of curves and triangle meshes of surfaces: SVG, OBJ, STL, PLY, glTF.
     Tessellate(commands::tessellate::TessellateArgs),
     /// Render a scene or shape to PNG (offscreen, wgpu).
@@ -91,6 +93,7 @@ fn main() {
         Command::Interpolate(a) => commands::fit::run_interpolate(a),
         Command::Refine(a) => commands::refine::run(a),
         Command::Subdivide(a) => commands::subdivide::run(a),
+        Command::SubdivideSurface(a) => commands::subdivide_surface::run(a),
         Command::Tessellate(a) => commands::tessellate::run(a),
         Command::Render(a) => commands::render::run_render(a),
         Command::Animate(a) => commands::render::run_animate(a),

@@ -701,3 +701,37 @@ fn view_refuses_bad_arguments_and_explains_a_missing_display() {
     assert_bad(&["view", "-", "--screenshot", "x.jpg"], torus, "--screenshot");
     assert_bad(&["view", "-"], r#"{"type":"scene","objects":[]}"#, "objects");
 }
+
+#[test]
+fn subdivide_surface_writes_meshes_and_refuses_bad_ones() {
+    let dir = temp_dir("subdivision");
+    let cube = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/meshes/cube.obj")).unwrap();
+    let obj = dir.join("cc.obj");
+    let o = run(
+        &["subdivide-surface", "-", "--scheme", "catmull-clark", "--steps", "2", "-o", obj.to_str().unwrap()],
+        &cube,
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let text = std::fs::read_to_string(&obj).unwrap();
+    assert_eq!(text.lines().filter(|l| l.starts_with("f ")).count(), 96);
+    assert_eq!(text.lines().filter(|l| l.starts_with("v ")).count(), 98);
+    let stl = dir.join("ds.stl");
+    let o =
+        run(&["subdivide-surface", "-", "--scheme", "doo-sabin", "--steps", "1", "-o", stl.to_str().unwrap()], &cube);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    // 6 quads + 12 quads + 8 triangles, fanned: 2·18 + 8 triangles.
+    assert_eq!(std::fs::read(&stl).unwrap().len(), 84 + 50 * 44);
+    let flipped = cube.replace("f 5 6 8 7", "f 7 8 6 5");
+    assert_bad(
+        &["subdivide-surface", "-", "--scheme", "catmull-clark", "-o", obj.to_str().unwrap()],
+        &flipped,
+        "oriented",
+    );
+    assert_bad(
+        &["subdivide-surface", "-", "--scheme", "catmull-clark", "-o", obj.to_str().unwrap()],
+        "v 0 0 0\nf 1 2 3\n",
+        "line 2",
+    );
+    assert_bad(&["subdivide-surface", "-", "--scheme", "loop", "-o", obj.to_str().unwrap()], &cube, "scheme");
+    std::fs::remove_dir_all(&dir).ok();
+}

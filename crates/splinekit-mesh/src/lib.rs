@@ -9,6 +9,7 @@
 
 pub mod export;
 pub mod polyline;
+pub mod subdivision_surface;
 pub mod surface_mesh;
 pub mod svg;
 pub mod triangle_mesh;

@@ -6,5 +6,6 @@ pub mod fit;
 pub mod refine;
 pub mod render;
 pub mod subdivide;
+pub mod subdivide_surface;
 pub mod tessellate;
 pub mod view;

@@ -3,6 +3,7 @@
 
 mod figures;
 mod scenes;
+mod subdivision;
 
 use anyhow::{Context, Result, anyhow};
 use clap::Args;
@@ -97,6 +98,11 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
             rendered.push(Entry { file: format!("{name}.png"), gltf: Some(glb), caption: caption.to_string() });
         }
         bar.inc(1);
+    }
+    for (stem, caption, img, glb) in subdivision::figures(&renderer)? {
+        write(&format!("{stem}.png"), &img.to_png())?;
+        write(&format!("{stem}.glb"), &glb)?;
+        rendered.push(Entry { file: format!("{stem}.png"), gltf: Some(format!("{stem}.glb")), caption });
     }
     bar.finish_and_clear();
 

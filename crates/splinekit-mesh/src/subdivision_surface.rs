@@ -1,0 +1,351 @@
+//! Subdivision surfaces on polygon meshes: Catmull–Clark (limit: the uniform bicubic
+//! B-spline surface on regular quad regions) and Doo–Sabin (limit: the uniform biquadratic
+//! one). Both work on any polygons, closed or with boundaries.
+//!
+//! Catmull–Clark, one step:
+//! - face point f = the centroid of the face;
+//! - edge point e = (v₀ + v₁ + f₀ + f₁)/4 for an interior edge, (v₀ + v₁)/2 on the boundary;
+//! - vertex point v′ = (Q + 2R + (n − 3)v)/n for an interior vertex of valence n (Q the mean
+//!   of its face points, R the mean of its edge midpoints), (m₀ + 6v + m₁)/8 for a boundary
+//!   vertex with boundary neighbours m₀, m₁;
+//! - every n-gon becomes n quads (v′, e, f, e).
+//!
+//! Doo–Sabin, one step: corner i of an n-gon with vertices v_j gets the point
+//! p_i = Σ_j α_ij v_j with α_ii = (n + 5)/(4n), α_ij = (3 + 2 cos(2π(i − j)/n))/(4n)
+//! (for quads 9/16, 3/16, 3/16, 1/16: the tensor product of Chaikin's ¾, ¼); new faces: one
+//! per face (its corner points), one per interior edge (4 points), one per interior vertex
+//! (the corner points around it).
+//! Boundary edges and vertices make no faces, so the surface pulls away from open borders.
+
+use std::collections::HashMap;
+
+use splinekit::{Error, Result};
+
+/// A mesh of polygons (each face's vertices counter-clockwise around its outer side).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct PolygonMesh {
+    /// Vertex positions.
+    pub vertices: Vec<[f64; 3]>,
+    /// Faces as vertex indices (at least 3 each).
+    pub faces: Vec<Vec<u32>>,
+}
+
+type Edge = (u32, u32);
+
+fn edge(a: u32, b: u32) -> Edge {
+    (a.min(b), a.max(b))
+}
+fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+fn scale(a: [f64; 3], s: f64) -> [f64; 3] {
+    [a[0] * s, a[1] * s, a[2] * s]
+}
+
+impl PolygonMesh {
+    /// Checks indices, face sizes and that every edge has at most two faces, used in
+    /// opposite directions (a consistently oriented manifold).
+    pub fn validate(&self) -> Result<()> {
+        let n = self.vertices.len() as u32;
+        if let Some(i) = self.vertices.iter().position(|p| !p.iter().all(|x| x.is_finite())) {
+            return Err(Error::invalid(format!("vertices[{i}]"), "coordinates must be finite"));
+        }
+        let mut directed: HashMap<Edge, usize> = HashMap::new();
+        for (f, face) in self.faces.iter().enumerate() {
+            if face.len() < 3 {
+                return Err(Error::invalid(
+                    format!("faces[{f}]"),
+                    format!("a face needs 3 or more vertices, got {}", face.len()),
+                ));
+            }
+            if let Some(&i) = face.iter().find(|&&i| i >= n) {
+                return Err(Error::invalid(
+                    format!("faces[{f}]"),
+                    format!("vertex {i} does not exist (there are {n})"),
+                ));
+            }
+            for k in 0..face.len() {
+                let (a, b) = (face[k], face[(k + 1) % face.len()]);
+                if a == b {
+                    return Err(Error::invalid(format!("faces[{f}]"), format!("vertex {a} repeats along an edge")));
+                }
+                if let Some(g) = directed.insert((a, b), f) {
+                    return Err(Error::invalid(
+                        format!("faces[{f}]"),
+                        format!(
+                            "the edge {a}→{b} is also in faces[{g}]: faces must be oriented consistently, two per edge at most"
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn face_points(&self) -> Vec<[f64; 3]> {
+        self.faces
+            .iter()
+            .map(|f| {
+                scale(f.iter().fold([0.0; 3], |acc, &i| add(acc, self.vertices[i as usize])), 1.0 / f.len() as f64)
+            })
+            .collect()
+    }
+
+    /// Faces of each edge (one for a boundary edge, two inside).
+    fn edge_faces(&self) -> HashMap<Edge, Vec<usize>> {
+        let mut m: HashMap<Edge, Vec<usize>> = HashMap::new();
+        for (f, face) in self.faces.iter().enumerate() {
+            for k in 0..face.len() {
+                m.entry(edge(face[k], face[(k + 1) % face.len()])).or_default().push(f);
+            }
+        }
+        m
+    }
+
+    /// Edges with one face.
+    pub fn boundary_edge_count(&self) -> usize {
+        self.edge_faces().values().filter(|f| f.len() == 1).count()
+    }
+
+    /// One Catmull–Clark step.
+    pub fn catmull_clark(&self) -> Result<PolygonMesh> {
+        self.validate()?;
+        let fp = self.face_points();
+        let ef = self.edge_faces();
+        let nv = self.vertices.len();
+        // Edge points, indexed after the vertices and face points.
+        let mut edges: Vec<Edge> = ef.keys().copied().collect();
+        edges.sort_unstable();
+        let edge_index: HashMap<Edge, u32> =
+            edges.iter().enumerate().map(|(k, e)| (*e, (nv + fp.len() + k) as u32)).collect();
+        let mut out = PolygonMesh { vertices: Vec::with_capacity(nv + fp.len() + edges.len()), faces: Vec::new() };
+        // Per vertex: adjacent faces, edges, boundary neighbours.
+        let mut faces_of = vec![Vec::new(); nv];
+        for (f, face) in self.faces.iter().enumerate() {
+            for &i in face {
+                faces_of[i as usize].push(f);
+            }
+        }
+        let mut edges_of = vec![Vec::new(); nv];
+        let mut boundary_of = vec![Vec::new(); nv];
+        for (&(a, b), fs) in &ef {
+            edges_of[a as usize].push(b);
+            edges_of[b as usize].push(a);
+            if fs.len() == 1 {
+                boundary_of[a as usize].push(b);
+                boundary_of[b as usize].push(a);
+            }
+        }
+        for v in 0..nv {
+            let p = self.vertices[v];
+            let moved = if !boundary_of[v].is_empty() {
+                if boundary_of[v].len() == 2 {
+                    let (m0, m1) =
+                        (self.vertices[boundary_of[v][0] as usize], self.vertices[boundary_of[v][1] as usize]);
+                    scale(add(add(m0, m1), scale(p, 6.0)), 1.0 / 8.0)
+                } else {
+                    p // a corner where several borders meet stays put
+                }
+            } else if faces_of[v].is_empty() {
+                p
+            } else {
+                let n = edges_of[v].len() as f64;
+                let q =
+                    scale(faces_of[v].iter().fold([0.0; 3], |acc, &f| add(acc, fp[f])), 1.0 / faces_of[v].len() as f64);
+                let r = scale(
+                    edges_of[v]
+                        .iter()
+                        .fold([0.0; 3], |acc, &w| add(acc, scale(add(p, self.vertices[w as usize]), 0.5))),
+                    1.0 / n,
+                );
+                scale(add(add(q, scale(r, 2.0)), scale(p, n - 3.0)), 1.0 / n)
+            };
+            out.vertices.push(moved);
+        }
+        out.vertices.extend_from_slice(&fp);
+        for e in &edges {
+            let (a, b) = (self.vertices[e.0 as usize], self.vertices[e.1 as usize]);
+            let fs = &ef[e];
+            out.vertices.push(if fs.len() == 2 {
+                scale(add(add(a, b), add(fp[fs[0]], fp[fs[1]])), 0.25)
+            } else {
+                scale(add(a, b), 0.5)
+            });
+        }
+        for (f, face) in self.faces.iter().enumerate() {
+            let n = face.len();
+            let centre = (nv + f) as u32;
+            for k in 0..n {
+                let (prev, v, next) = (face[(k + n - 1) % n], face[k], face[(k + 1) % n]);
+                out.faces.push(vec![v, edge_index[&edge(v, next)], centre, edge_index[&edge(prev, v)]]);
+            }
+        }
+        Ok(out)
+    }
+
+    /// One Doo–Sabin step.
+    pub fn doo_sabin(&self) -> Result<PolygonMesh> {
+        self.validate()?;
+        let ef = self.edge_faces();
+        let mut out = PolygonMesh::default();
+        // corner[(f, k)] = index of the new point for corner k of face f.
+        let mut corner: HashMap<(usize, u32), u32> = HashMap::new();
+        for (f, face) in self.faces.iter().enumerate() {
+            let n = face.len();
+            let mut ids = Vec::with_capacity(n);
+            for i in 0..n {
+                let mut p = [0.0; 3];
+                for j in 0..n {
+                    let w = if i == j {
+                        (n as f64 + 5.0) / (4.0 * n as f64)
+                    } else {
+                        (3.0 + 2.0 * (std::f64::consts::TAU * (i as f64 - j as f64) / n as f64).cos())
+                            / (4.0 * n as f64)
+                    };
+                    p = add(p, scale(self.vertices[face[j] as usize], w));
+                }
+                let id = out.vertices.len() as u32;
+                out.vertices.push(p);
+                corner.insert((f, face[i]), id);
+                ids.push(id);
+            }
+            out.faces.push(ids);
+        }
+        // Edge faces: for an interior edge a→b in face f (and b→a in face g).
+        let mut directed: HashMap<Edge, usize> = HashMap::new();
+        for (f, face) in self.faces.iter().enumerate() {
+            for k in 0..face.len() {
+                directed.insert((face[k], face[(k + 1) % face.len()]), f);
+            }
+        }
+        let mut done = std::collections::HashSet::new();
+        for (&(a, b), &f) in &directed {
+            if let Some(&g) = directed.get(&(b, a))
+                && done.insert(edge(a, b))
+            {
+                out.faces.push(vec![corner[&(f, b)], corner[&(f, a)], corner[&(g, a)], corner[&(g, b)]]);
+            }
+        }
+        // Vertex faces: around each interior vertex, in the order of its faces.
+        let interior =
+            |v: u32| -> bool { ef.iter().filter(|(e, _)| e.0 == v || e.1 == v).all(|(_, fs)| fs.len() == 2) };
+        let mut outgoing: HashMap<u32, Vec<(u32, usize)>> = HashMap::new();
+        for (&(a, b), &f) in &directed {
+            outgoing.entry(a).or_default().push((b, f));
+        }
+        for (&v, list) in &outgoing {
+            if list.len() < 3 || !interior(v) {
+                continue;
+            }
+            // Walk the faces around v: from face f (edge v→b) the next face owns edge b'→v ... use
+            // the face whose edge v→w follows f's edge u→v.
+            let mut ring = Vec::with_capacity(list.len());
+            let (mut w, mut f) = list[0];
+            for _ in 0..list.len() {
+                ring.push(corner[&(f, v)]);
+                // The face on the other side of edge v→w is the one containing w→v; its
+                // outgoing edge from v is the next around v.
+                let g = directed[&(w, v)];
+                let face = &self.faces[g];
+                let k = face.iter().position(|&x| x == v).expect("v is in g");
+                w = face[(k + 1) % face.len()];
+                f = g;
+                if f == list[0].1 {
+                    break;
+                }
+            }
+            ring.reverse();
+            out.faces.push(ring);
+        }
+        Ok(out)
+    }
+
+    /// `steps` steps of a scheme.
+    pub fn subdivide(&self, scheme: SurfaceScheme, steps: usize) -> Result<PolygonMesh> {
+        let mut m = self.clone();
+        for _ in 0..steps {
+            if m.faces.iter().map(|f| f.len()).sum::<usize>() * 4 > 20_000_000 {
+                return Err(Error::invalid("steps", format!("{steps} steps make more than 5·10⁶ faces")));
+            }
+            m = match scheme {
+                SurfaceScheme::CatmullClark => m.catmull_clark()?,
+                SurfaceScheme::DooSabin => m.doo_sabin()?,
+            };
+        }
+        Ok(m)
+    }
+
+    /// A triangle mesh of the polygons (fans), with area-weighted vertex normals.
+    pub fn triangulate(&self) -> crate::TriangleMesh {
+        let mut m = crate::TriangleMesh { positions: self.vertices.clone(), ..Default::default() };
+        for f in &self.faces {
+            for k in 1..f.len() - 1 {
+                m.triangles.push([f[0], f[k], f[k + 1]]);
+            }
+        }
+        m.repair_normals();
+        m
+    }
+}
+
+/// A subdivision-surface scheme.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SurfaceScheme {
+    /// Catmull–Clark (quads; bicubic B-spline limit on regular regions).
+    CatmullClark,
+    /// Doo–Sabin (biquadratic B-spline limit on regular regions).
+    DooSabin,
+}
+
+/// Reads the vertices and polygon faces of an OBJ file (`v` and `f`, 1-based or negative
+/// indices, `v/vt/vn` corners).
+pub fn read_obj_polygons(text: &str) -> std::result::Result<PolygonMesh, String> {
+    let mut m = PolygonMesh::default();
+    for (k, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => {
+                let v: std::result::Result<Vec<f64>, _> = words.take(3).map(str::parse).collect();
+                let v = v.map_err(|e| format!("line {}: {e}", k + 1))?;
+                if v.len() != 3 {
+                    return Err(format!("line {}: a vertex needs 3 coordinates", k + 1));
+                }
+                m.vertices.push([v[0], v[1], v[2]]);
+            }
+            Some("f") => {
+                let n = m.vertices.len() as i64;
+                let face: std::result::Result<Vec<u32>, String> = words
+                    .map(|c| {
+                        let i: i64 =
+                            c.split('/').next().unwrap_or("").parse().map_err(|e| format!("line {}: {e}", k + 1))?;
+                        let idx = if i < 0 { n + i } else { i - 1 };
+                        if idx < 0 || idx >= n {
+                            return Err(format!("line {}: vertex {i} does not exist (there are {n})", k + 1));
+                        }
+                        Ok(idx as u32)
+                    })
+                    .collect();
+                m.faces.push(face?);
+            }
+            _ => {}
+        }
+    }
+    Ok(m)
+}
+
+/// The mesh as OBJ text (polygon faces).
+pub fn write_obj_polygons(mesh: &PolygonMesh, name: &str) -> String {
+    use std::fmt::Write;
+    let mut s = format!("# splinekit subdivision surface\no {name}\n");
+    for v in &mesh.vertices {
+        let _ = writeln!(s, "v {} {} {}", v[0], v[1], v[2]);
+    }
+    for f in &mesh.faces {
+        s.push('f');
+        for &i in f {
+            let _ = write!(s, " {}", i + 1);
+        }
+        s.push('\n');
+    }
+    s
+}

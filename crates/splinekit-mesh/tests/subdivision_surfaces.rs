@@ -1,0 +1,113 @@
+//! Subdivision surfaces: counts, closedness and orientation over several steps, the regular
+//! rules against the tensor-product B-spline subdivision masks, boundaries, bad meshes.
+
+use splinekit_mesh::subdivision_surface::{PolygonMesh, SurfaceScheme, read_obj_polygons, write_obj_polygons};
+
+fn cube() -> PolygonMesh {
+    let vertices = (0..8)
+        .map(|k| [(k & 1) as f64 * 2.0 - 1.0, ((k >> 1) & 1) as f64 * 2.0 - 1.0, ((k >> 2) & 1) as f64 * 2.0 - 1.0])
+        .collect();
+    // Outward counter-clockwise faces.
+    let faces = vec![
+        vec![0, 2, 3, 1],
+        vec![4, 5, 7, 6],
+        vec![0, 1, 5, 4],
+        vec![2, 6, 7, 3],
+        vec![0, 4, 6, 2],
+        vec![1, 3, 7, 5],
+    ];
+    PolygonMesh { vertices, faces }
+}
+
+fn grid(n: usize, z: impl Fn(usize, usize) -> f64) -> PolygonMesh {
+    let vertices = (0..n * n).map(|k| [(k / n) as f64, (k % n) as f64, z(k / n, k % n)]).collect();
+    let mut faces = Vec::new();
+    for i in 0..n - 1 {
+        for j in 0..n - 1 {
+            let v = |a: usize, b: usize| (a * n + b) as u32;
+            faces.push(vec![v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)]);
+        }
+    }
+    PolygonMesh { vertices, faces }
+}
+
+#[test]
+fn catmull_clark_on_the_cube_counts_stays_closed_and_rounds_off() {
+    let c = cube();
+    let one = c.catmull_clark().unwrap();
+    assert_eq!((one.vertices.len(), one.faces.len()), (8 + 6 + 12, 24));
+    let m = c.subdivide(SurfaceScheme::CatmullClark, 4).unwrap();
+    assert_eq!(m.faces.len(), 6 * 4usize.pow(4));
+    assert_eq!(m.boundary_edge_count(), 0);
+    m.validate().unwrap();
+    let radii: Vec<f64> = m.vertices.iter().map(|p| (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt()).collect();
+    let (lo, hi) = radii.iter().fold((f64::MAX, 0.0f64), |(a, b), &r| (a.min(r), b.max(r)));
+    assert!(lo > 0.75 && hi < 1.1 && hi - lo < 0.25, "radii {lo}..{hi}");
+    // The triangulated mesh is closed and its normals point outwards.
+    let t = m.triangulate();
+    assert!(t.boundary_edges().is_empty());
+    for (p, n) in t.positions.iter().zip(&t.normals) {
+        assert!(p[0] * n[0] + p[1] * n[1] + p[2] * n[2] > 0.0);
+    }
+}
+
+#[test]
+fn catmull_clark_on_a_regular_grid_applies_the_bicubic_b_spline_masks() {
+    let z = |i: usize, j: usize| ((i * 7 + j * 3) % 5) as f64 * 0.3 + (i * j) as f64 * 0.01;
+    let n = 7;
+    let m = grid(n, z).catmull_clark().unwrap();
+    // Interior vertex points: [1 6 1]/8 ⊗ [1 6 1]/8; edge points [1 6 1]/8 ⊗ [1 1]/2 (interior edges).
+    let w = [1.0 / 8.0, 6.0 / 8.0, 1.0 / 8.0];
+    for i in 1..n - 1 {
+        for j in 1..n - 1 {
+            let mut want = 0.0;
+            for a in 0..3 {
+                for b in 0..3 {
+                    want += w[a] * w[b] * z(i + a - 1, j + b - 1);
+                }
+            }
+            let got = m.vertices[i * n + j][2];
+            assert!((got - want).abs() < 1e-14, "vertex ({i}, {j}): {got} vs {want}");
+            // The interior edge (i, j)–(i + 1, j) has the point at x = i + ½, y = j.
+            if i + 1 < n - 1 {
+                let want_e: f64 = (0..3).map(|b| w[b] * 0.5 * (z(i, j + b - 1) + z(i + 1, j + b - 1))).sum();
+                let e = m.vertices.iter().find(|p| p[0] == i as f64 + 0.5 && p[1] == j as f64).unwrap();
+                assert!((e[2] - want_e).abs() < 1e-14, "edge ({i}, {j})");
+            }
+        }
+    }
+    // Boundary vertices follow the cubic curve rule along the border: (1 6 1)/8.
+    let b = m.vertices[3];
+    assert!((b[2] - (z(0, 2) + 6.0 * z(0, 3) + z(0, 4)) / 8.0).abs() < 1e-14);
+}
+
+#[test]
+fn doo_sabin_counts_orientation_and_the_biquadratic_masks() {
+    let c = cube();
+    let one = c.doo_sabin().unwrap();
+    assert_eq!((one.vertices.len(), one.faces.len()), (24, 6 + 12 + 8));
+    let m = c.subdivide(SurfaceScheme::DooSabin, 4).unwrap();
+    m.validate().unwrap();
+    assert_eq!(m.boundary_edge_count(), 0);
+    // Corners of a regular quad: 9/16, 3/16, 3/16, 1/16 (Chaikin ⊗ Chaikin).
+    let z = |i: usize, j: usize| (i * i + 3 * j) as f64 * 0.1;
+    let g = grid(4, z).doo_sabin().unwrap();
+    let p = g.vertices[0]; // face (0,0), corner (0,0)
+    let want = (9.0 * z(0, 0) + 3.0 * z(1, 0) + 3.0 * z(0, 1) + z(1, 1)) / 16.0;
+    assert!((p[2] - want).abs() < 1e-14 && (p[0] - 0.25).abs() < 1e-15 && (p[1] - 0.25).abs() < 1e-15);
+    // Open grids: faces, interior-edge faces and interior-vertex faces only.
+    assert_eq!(g.faces.len(), 9 + 12 + 4);
+}
+
+#[test]
+fn bad_meshes_are_refused_and_obj_round_trips() {
+    let mut c = cube();
+    c.faces[1].reverse();
+    let e = c.catmull_clark().unwrap_err().to_string();
+    assert!(e.contains("faces[") && e.contains("oriented"), "{e}");
+    let bad = PolygonMesh { vertices: vec![[0.0; 3]; 3], faces: vec![vec![0, 1]] };
+    assert!(bad.doo_sabin().unwrap_err().to_string().contains("faces[0]"));
+    let text = write_obj_polygons(&cube(), "cube");
+    assert_eq!(read_obj_polygons(&text).unwrap(), cube());
+    assert!(read_obj_polygons("v 0 0 0\nf 1 2 3\n").unwrap_err().contains("line 2"));
+}
