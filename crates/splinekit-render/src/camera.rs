@@ -128,6 +128,22 @@ impl Camera {
         Camera::Orthographic { eye: [c[0], c[1], c[2] + depth], target: c, up: [0.0, 1.0, 0.0], half_height }
     }
 
+    /// The same camera `factor` times as far from its target (perspective) or showing
+    /// `factor` times as much (orthographic).
+    pub fn zoomed(&self, factor: f32) -> Camera {
+        match *self {
+            Camera::Perspective { eye, target, up, fov_y } => Camera::Perspective {
+                eye: [0, 1, 2].map(|k| target[k] + factor * (eye[k] - target[k])),
+                target,
+                up,
+                fov_y,
+            },
+            Camera::Orthographic { eye, target, up, half_height } => {
+                Camera::Orthographic { eye, target, up, half_height: half_height * factor }
+            }
+        }
+    }
+
     /// The eye position.
     pub fn eye(&self) -> [f32; 3] {
         match *self {

@@ -158,6 +158,17 @@ pub struct AnimationDoc {
     pub fps: f64,
 }
 
+impl AnimationDoc {
+    /// Frames in one run of the clock at `fps` frames per second (at least one).
+    pub fn frames_at(&self, fps: f64) -> usize {
+        (self.duration * fps).round().max(1.0) as usize
+    }
+    /// Frames in one run of the clock at its own rate.
+    pub fn frames(&self) -> usize {
+        self.frames_at(self.fps)
+    }
+}
+
 fn one_f64() -> f64 {
     1.0
 }

@@ -88,15 +88,7 @@ pub fn render_frame(
 /// to leave room for the motion (a camera refitted per frame would zoom back and forth).
 pub fn animation_camera(scene: &SceneDocument, size: (u32, u32)) -> Result<Option<Camera>> {
     let rs = compose(scene, Some(0.0), size.0 as f32 / size.1 as f32).map_err(|e| anyhow!("{e}"))?;
-    Ok(rs.camera.map(|c| match c {
-        Camera::Perspective { eye, target, up, fov_y } => {
-            let e = [0, 1, 2].map(|k| target[k] + 1.12 * (eye[k] - target[k]));
-            Camera::Perspective { eye: e, target, up, fov_y }
-        }
-        Camera::Orthographic { eye, target, up, half_height } => {
-            Camera::Orthographic { eye, target, up, half_height: half_height * 1.12 }
-        }
-    }))
+    Ok(rs.camera.map(|c| c.zoomed(1.12)))
 }
 
 pub fn run_render(args: &RenderArgs) -> Result<()> {
@@ -129,7 +121,7 @@ pub fn run_animate(args: &AnimateArgs) -> Result<()> {
     };
     let frames = match &args.frames {
         Some(n) => super::eval::parse_count("--frames", n, 2000)?,
-        None => (scene.animation.duration * fps).round().max(1.0) as usize,
+        None => scene.animation.frames_at(fps),
     };
     if frames == 0 {
         bail!("--frames: need at least one frame");
@@ -150,7 +142,7 @@ pub fn run_animate(args: &AnimateArgs) -> Result<()> {
     write_gif(std::io::BufWriter::new(file), &images, fps as f32).map_err(|e| anyhow!("-o: {e}"))
 }
 
-/// A progress bar on standard error that shows itself only after a second.
+/// A progress bar on standard error (drawn only when standard error is a terminal).
 pub fn progress(len: u64, what: &str) -> ProgressBar {
     let bar = ProgressBar::with_draw_target(Some(len), indicatif::ProgressDrawTarget::stderr());
     bar.set_style(ProgressStyle::with_template("{msg} {bar:30} {pos}/{len} {elapsed}").expect("valid template"));

@@ -3,7 +3,7 @@
 
 use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
-use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene, ply, stl};
+use splinekit_mesh::export::{GltfGeometry, GltfScene, ply, stl};
 use splinekit_mesh::subdivision_surface::{SurfaceScheme, read_obj_polygons, write_obj_polygons};
 
 use crate::input::read_text;
@@ -52,17 +52,8 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
             match other {
                 "stl" => stl::write_stl_binary(&t),
                 "ply" => ply::write_ply(&t).into_bytes(),
-                _ => {
-                    let scene = GltfScene {
-                        objects: vec![GltfObject {
-                            name,
-                            geometry: GltfGeometry::Mesh(t),
-                            color: [0.12, 0.37, 0.75, 1.0],
-                            frames: vec![],
-                        }],
-                    };
-                    if other == "glb" { scene.to_glb() } else { scene.to_gltf().into_bytes() }
-                }
+                _ => GltfScene::single(&name, GltfGeometry::Mesh(t), super::tessellate::EXPORT_COLOR)
+                    .to_file_bytes(other),
             }
         }
     };

@@ -6,7 +6,7 @@ use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
-use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene, obj, ply, stl};
+use splinekit_mesh::export::{GltfGeometry, GltfScene, obj, ply, stl};
 use splinekit_mesh::surface_mesh::{adaptive, regular, to3};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, Projection, SvgFigure, TriangleMesh};
 use splinekit_scene::{CurveVisitor, SceneOrShape, ShapeDocument, SurfaceVisitor};
@@ -88,22 +88,18 @@ fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, ex
     if !matches!(ext, "gltf" | "glb") {
         bail!("-o: scenes are written as .gltf or .glb, not '{}'", args.output);
     }
-    let (frames, fps) = if scene.is_animated() {
-        ((scene.animation.duration * scene.animation.fps).round().max(1.0) as usize, scene.animation.fps)
-    } else {
-        (1, 1.0)
-    };
+    let (frames, fps) = if scene.is_animated() { (scene.animation.frames(), scene.animation.fps) } else { (1, 1.0) };
     let gltf = splinekit_render::scene_to_gltf(scene, frames, fps).map_err(|e| anyhow!("{e}"))?;
-    let bytes = if ext == "glb" { gltf.to_glb() } else { gltf.to_gltf().into_bytes() };
+    let bytes = gltf.to_file_bytes(ext);
     std::fs::write(&args.output, bytes).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
 }
 
+/// The default colour of exported objects (linear RGBA).
+pub const EXPORT_COLOR: [f32; 4] = [0.12, 0.37, 0.75, 1.0];
+
 /// One object as a .gltf or .glb file.
 fn gltf_file(name: &str, geometry: GltfGeometry, ext: &str) -> Vec<u8> {
-    let scene = GltfScene {
-        objects: vec![GltfObject { name: name.to_string(), geometry, color: [0.12, 0.37, 0.75, 1.0], frames: vec![] }],
-    };
-    if ext == "glb" { scene.to_glb() } else { scene.to_gltf().into_bytes() }
+    GltfScene::single(name, geometry, EXPORT_COLOR).to_file_bytes(ext)
 }
 
 pub fn run(args: &TessellateArgs) -> Result<()> {

@@ -35,6 +35,8 @@ pub struct ViewArgs {
 
 struct View {
     scene: SceneDocument,
+    /// Whether the scene has an animation (looked up once).
+    animated: bool,
     renderer: Renderer,
     window: Option<Rc<Window>>,
     surface: Option<softbuffer::Surface<Rc<Window>, Rc<Window>>>,
@@ -63,17 +65,17 @@ impl View {
             self.clock += now.duration_since(self.last_tick).as_secs_f64();
         }
         self.last_tick = now;
-        let time = self.scene.is_animated().then_some(self.clock % self.scene.animation.duration.max(1e-3));
+        let time = self.animated.then_some(self.clock % self.scene.animation.duration.max(1e-3));
         let mut rs = compose(&self.scene, time, w as f32 / h as f32).map_err(|e| anyhow!("{e}"))?;
         let flat = rs.painter_order;
         if !flat || self.azimuth != 0.0 || self.elevation != 0.0 {
             if let Some(b) = rs.bounds() {
                 let fitted = Camera::fit(b, 0.87 + self.azimuth, 0.49 + self.elevation, w as f32 / h as f32);
-                rs.camera = Some(zoomed(fitted, self.zoom));
+                rs.camera = Some(fitted.zoomed(self.zoom));
                 rs.painter_order = false;
             }
         } else if let Some(c) = rs.camera {
-            rs.camera = Some(zoomed(c, self.zoom));
+            rs.camera = Some(c.zoomed(self.zoom));
         }
         let img = self.renderer.render(&rs, w.min(4096), h.min(4096)).map_err(|e| anyhow!("{e}"))?;
         surface
@@ -86,17 +88,6 @@ impl View {
         buffer.present().map_err(|e| anyhow!("window: {e}"))?;
         self.last_image = Some(img);
         Ok(())
-    }
-}
-
-fn zoomed(c: Camera, zoom: f32) -> Camera {
-    match c {
-        Camera::Perspective { eye, target, up, fov_y } => {
-            Camera::Perspective { eye: [0, 1, 2].map(|k| target[k] + zoom * (eye[k] - target[k])), target, up, fov_y }
-        }
-        Camera::Orthographic { eye, target, up, half_height } => {
-            Camera::Orthographic { eye, target, up, half_height: half_height * zoom }
-        }
     }
 }
 
@@ -148,7 +139,7 @@ impl ApplicationHandler for View {
                         return;
                     }
                 }
-                if self.playing && self.scene.is_animated() || self.frames_left.is_some() {
+                if self.playing && self.animated || self.frames_left.is_some() {
                     redraw(self);
                 }
             }
@@ -210,6 +201,7 @@ pub fn run(args: &ViewArgs) -> Result<()> {
     event_loop.set_control_flow(ControlFlow::Wait);
     let renderer = Renderer::new().map_err(|e| anyhow!("{e}"))?;
     let mut view = View {
+        animated: scene.is_animated(),
         scene,
         renderer,
         window: None,

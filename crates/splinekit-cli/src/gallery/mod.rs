@@ -68,10 +68,8 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
             Ok((*name, SceneDocument::parse(&v).map_err(|e| anyhow!("scene {name}: {e}"))?, *caption))
         })
         .collect::<Result<_>>()?;
-    let work: u64 = docs
-        .iter()
-        .map(|(_, d, _)| if d.is_animated() { 1 + (d.animation.duration * d.animation.fps).round() as u64 } else { 1 })
-        .sum();
+    let work: u64 =
+        docs.iter().map(|(_, d, _)| if d.is_animated() { 1 + d.animation.frames() as u64 } else { 1 }).sum();
     let bar = progress(work, "gallery");
     let mut rendered = Vec::new();
     for (name, doc, caption) in &docs {
@@ -79,7 +77,7 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
         let glb = format!("{name}.glb");
         if doc.is_animated() {
             let fps = doc.animation.fps;
-            let frames = (doc.animation.duration * fps).round().max(1.0) as usize;
+            let frames = doc.animation.frames();
             let camera = animation_camera(doc, size)?;
             let mut images = Vec::with_capacity(frames);
             for k in 0..frames {

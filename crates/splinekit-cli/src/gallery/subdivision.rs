@@ -2,7 +2,7 @@
 //! shaded after four steps inside its control cage.
 
 use anyhow::{Result, anyhow};
-use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene};
+use splinekit_mesh::export::{GltfGeometry, GltfScene};
 use splinekit_mesh::subdivision_surface::{SurfaceScheme, read_obj_polygons};
 use splinekit_render::{Camera, Image, LineItem, MeshItem, PointItem, RenderScene, Renderer};
 
@@ -50,15 +50,7 @@ pub fn figures(renderer: &Renderer) -> Result<Vec<Figure>> {
         let bounds = scene.bounds().expect("a cube has bounds");
         scene.camera = Some(Camera::fit(bounds, 0.7, 0.45, 4.0 / 3.0));
         let img = renderer.render(&scene, 640, 480).map_err(|e| anyhow!("{e}"))?;
-        let glb = GltfScene {
-            objects: vec![GltfObject {
-                name: stem.to_string(),
-                geometry: GltfGeometry::Mesh(mesh),
-                color,
-                frames: vec![],
-            }],
-        }
-        .to_glb();
+        let glb = GltfScene::single(stem, GltfGeometry::Mesh(mesh), color).to_glb();
         out.push((stem.to_string(), caption.to_string(), img, glb));
     }
     Ok(out)

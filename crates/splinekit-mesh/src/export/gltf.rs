@@ -96,6 +96,16 @@ fn flat3(v: &[[f64; 3]]) -> Vec<f32> {
 }
 
 impl GltfScene {
+    /// A scene of one still object.
+    pub fn single(name: &str, geometry: GltfGeometry, color: [f32; 4]) -> Self {
+        GltfScene { objects: vec![GltfObject { name: name.to_string(), geometry, color, frames: vec![] }] }
+    }
+
+    /// `.glb` bytes for `ext` = "glb", else `.gltf` text bytes.
+    pub fn to_file_bytes(&self, ext: &str) -> Vec<u8> {
+        if ext.eq_ignore_ascii_case("glb") { self.to_glb() } else { self.to_gltf().into_bytes() }
+    }
+
     /// The glTF JSON document and its binary buffer.
     fn build(&self) -> (Value, Vec<u8>) {
         let mut b = Builder::default();
