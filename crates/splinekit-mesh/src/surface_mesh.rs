@@ -98,7 +98,6 @@ pub fn regular<const D: usize, S: Surface<D> + ?Sized>(
 fn finish(mesh: &mut TriangleMesh) {
     mesh.drop_degenerate();
     mesh.repair_normals();
-    // Drop vertices no triangle uses (trimmed cells, collapsed poles stay: they are used).
 }
 
 /// Tolerances of the adaptive mesh.
@@ -113,11 +112,12 @@ pub struct AdaptiveTolerance {
     pub max_depth: u32,
 }
 
-/// An adaptive mesh: an initial grid of `base` cells (per direction, at least 4 and one per
-/// breakpoint interval of tensor surfaces is not assumed), each split in four while it is
-/// farther than the chord height from flat or its normals turn more than the angle. Cells
-/// are triangulated as a fan from their centre whenever a finer neighbour put vertices on
-/// their edges, so neighbouring levels stitch without cracks.
+/// An adaptive mesh: an initial grid of `base` = (n_u, n_v) cells, each split in four while
+/// it is farther than the chord height from flat or its normals turn more than the angle
+/// (down to `max_depth` levels). Cells are triangulated as a fan from their centre whenever a
+/// finer neighbour put vertices on their edges, so neighbouring levels stitch without cracks.
+/// Trimmed surfaces keep the leaves whose corners are all inside the trim; [`regular`]
+/// follows the trimming curves exactly.
 pub fn adaptive<const D: usize, S: Surface<D> + ?Sized>(
     surface: &S,
     base: (usize, usize),

@@ -56,7 +56,7 @@ pub fn compose(scene: &SceneDocument, time: Option<f64>, aspect: f32) -> Result<
         match &shape {
             ShapeDocument::Curve(c) => {
                 let curve = c.build().map_err(within)?;
-                flat &= curve.dimension() <= 2 && !matches!(c, CurveDocument::Bfunction(_)) || curve.dimension() == 1;
+                flat &= curve.dimension() <= 2;
                 // Local pieces and control polygons first, so the curve is drawn over them.
                 if obj.style.local_pieces
                     && let CurveDocument::BlendingSpline(d) = c

@@ -435,14 +435,6 @@ impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         let span = self.knots.locate(t, side);
         let n = out.len();
-        if n <= 4 {
-            // The common orders on the stack.
-            let (mut a, mut b, mut bf) = ([Point::<D>::zeros(); 4], [Point::<D>::zeros(); 4], [0.0; 4]);
-            self.locals[span.first].eval(span.t, side, &mut a[..n]);
-            self.locals[span.second].eval(span.t + span.second_shift, side, &mut b[..n]);
-            self.bfunction.eval(span.w, &mut bf[..n]);
-            return blend_leibniz(&a[..n], &b[..n], &bf[..n], 1.0 / span.width, out);
-        }
         let mut a: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); n];
         let mut b: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); n];
         self.locals[span.first].eval(span.t, side, &mut a);

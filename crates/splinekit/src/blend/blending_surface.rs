@@ -418,7 +418,8 @@ impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
             for (c, (col, at)) in
                 [(span.first, span.t), (span.second, span.t + span.second_shift)].into_iter().enumerate()
             {
-                let (s, l) = (self.knots_u.support(col).0, self.knots_u.support(col).1 - self.knots_u.support(col).0);
+                let (s, e) = self.knots_u.support(col);
+                let l = e - s;
                 let base = (a * 2 + c) * 2 * nu;
                 scaled_bernstein(du, s, l, at, 1, &mut u_bases[base..base + 2 * nu]);
             }
