@@ -7,9 +7,9 @@ use splinekit::curve::Curve;
 use splinekit::surface::Surface;
 use splinekit_mesh::surface_mesh::{regular, to3};
 use splinekit_mesh::{MeshOptions, Polyline};
-use splinekit_scene::curves::CurveDocument;
-use splinekit_scene::scenes::{CameraDoc, ColorMapDoc, SceneDocument, SceneObject};
-use splinekit_scene::{CurveVisitor, DocumentError, ShapeDocument, SurfaceDocument, SurfaceVisitor};
+use splinekit_scene::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
+use splinekit_scene::scenes::{CameraDoc, ColorMapDoc, SceneDocument, SceneObject, StyleDoc};
+use splinekit_scene::{Curves, Decoration, DimensionVisitor, DocumentError, DocumentKind, ShapeDocument, Surfaces};
 
 use crate::camera::Camera;
 use crate::scene::{LineItem, MeshItem, PointItem, RenderScene};
@@ -43,88 +43,124 @@ pub fn compose(scene: &SceneDocument, time: Option<f64>, aspect: f32) -> Result<
     };
     let mut flat = true;
     for (i, obj) in scene.objects.iter().enumerate() {
-        let mut shape = obj.shape.clone();
-        if let Some(t) = time {
-            shape.set_time(t);
-        }
         let color = obj
             .style
             .color
             .as_ref()
             .map_or(PALETTE[i % PALETTE.len()], |c| [c[0], c[1], c[2], *c.get(3).unwrap_or(&1.0)]);
-        let within = |e: DocumentError| e.within(&format!("objects[{i}].shape"));
-        match &shape {
-            ShapeDocument::Curve(c) => {
-                let curve = c.build().map_err(within)?;
-                flat &= curve.dimension() <= 2;
-                // Local pieces and control polygons first, so the curve is drawn over them.
-                if obj.style.local_pieces
-                    && let CurveDocument::BlendingSpline(d) = c
-                {
-                    local_curves(d, obj, &mut out).map_err(within)?;
-                }
-                if obj.style.control_net {
-                    control_polygon(c, &mut out);
-                }
-                if !obj.style.hidden {
-                    out.lines.push(curve.visit(CurveLine { obj, color })?);
-                }
-            }
-            ShapeDocument::Surface(s) => {
-                flat = false;
-                let surface = s.build().map_err(within)?;
-                if !obj.style.hidden {
-                    surface.visit(SurfaceMesh { obj, color, out: &mut out })?;
-                }
-                if obj.style.control_net {
-                    control_net(s, &mut out);
-                }
-                if obj.style.local_pieces
-                    && let SurfaceDocument::BlendingSplineSurface(d) = s
-                {
-                    local_patches(d, &mut out).map_err(within)?;
-                }
-            }
-        }
+        flat &= object(obj, &format!("objects[{i}].shape"), time, color, &mut out)?;
         for p in &obj.points {
             out.points.push(PointItem { position: f32x3(*p), color, size: 8.0 });
         }
     }
     let bounds = out.bounds().unwrap_or(([-1.0; 3], [1.0; 3]));
     if scene.axes {
-        let size = (0..3).map(|k| bounds.1[k] - bounds.0[k]).fold(0.0f32, f32::max).max(1e-3) * 0.35;
-        for (k, c) in [[0.85, 0.1, 0.1, 1.0], [0.1, 0.65, 0.1, 1.0], [0.1, 0.2, 0.85, 1.0]].into_iter().enumerate() {
-            let mut end = [0.0; 3];
-            end[k] = size;
-            out.lines.push(LineItem { points: vec![[0.0; 3], end], closed: false, color: c, width: 2.0 });
-        }
+        axes(bounds, &mut out);
     }
     let bounds = out.bounds().unwrap_or(bounds);
     // Everything in one plane z = const: a plane figure, seen from the top.
     let extent = (0..3).map(|k| bounds.1[k] - bounds.0[k]).fold(0.0f32, f32::max);
     flat |= out.meshes.is_empty() && bounds.1[2] - bounds.0[2] <= 1e-6 * extent;
-    out.painter_order = flat;
-    out.camera = Some(match &scene.camera {
+    // A top view of a scene with meshes keeps depth testing.
+    let top_view = matches!(scene.camera, Some(CameraDoc::Orbit { top: true, .. }));
+    out.painter_order = if top_view { out.meshes.is_empty() } else { flat };
+    out.camera = Some(camera(scene, bounds, flat, aspect));
+    for (k, l) in scene.lights.iter().enumerate() {
+        out.lights[k] = (l.direction.map(|x| x as f32), l.intensity as f32);
+    }
+    Ok(out)
+}
+
+/// Adds one object's shape, posed at `time`, with its decoration (local pieces and
+/// control polygons under a curve, control nets and local patches over a surface);
+/// returns whether it is a plane figure (a curve of at most two dimensions). Errors in
+/// the document are reported within the object's `field`.
+fn object(
+    obj: &SceneObject,
+    field: &str,
+    time: Option<f64>,
+    color: [f32; 4],
+    out: &mut RenderScene,
+) -> Result<bool, DocumentError> {
+    let mut shape = obj.shape.clone();
+    if let Some(t) = time {
+        shape.set_time(t);
+    }
+    let within = |e: DocumentError| e.within(field);
+    match &shape {
+        ShapeDocument::Curve(c) => {
+            let curve = c.build().map_err(within)?;
+            decorate(c.decoration(), &obj.style, out).map_err(within)?;
+            if !obj.style.hidden {
+                out.lines.push(curve.visit(CurveLine { obj, color })?);
+            }
+            Ok(curve.dimension() <= 2)
+        }
+        ShapeDocument::Surface(s) => {
+            let surface = s.build().map_err(within)?;
+            if !obj.style.hidden {
+                surface.visit(SurfaceMesh { obj, color, out: &mut *out })?;
+            }
+            decorate(s.decoration(), &obj.style, out).map_err(within)?;
+            Ok(false)
+        }
+    }
+}
+
+/// Draws what the style asks for of a shape's decoration.
+fn decorate(decoration: Decoration<'_>, style: &StyleDoc, out: &mut RenderScene) -> Result<(), DocumentError> {
+    match decoration {
+        Decoration::None => {}
+        Decoration::ControlPolygon { points, closed } => {
+            if style.control_net {
+                polygon(points, closed, out);
+            }
+        }
+        Decoration::ControlNet(net) => {
+            if style.control_net {
+                control_net(net, out);
+            }
+        }
+        Decoration::LocalCurves(d) => {
+            if style.local_pieces {
+                local_curves(d, style, out)?;
+            }
+        }
+        Decoration::LocalPatches(d) => {
+            if style.local_pieces {
+                local_patches(d, out)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The x (red), y (green) and z (blue) axes, 35 % of the scene's largest extent long.
+fn axes(bounds: ([f32; 3], [f32; 3]), out: &mut RenderScene) {
+    let size = (0..3).map(|k| bounds.1[k] - bounds.0[k]).fold(0.0f32, f32::max).max(1e-3) * 0.35;
+    for (k, c) in [[0.85, 0.1, 0.1, 1.0], [0.1, 0.65, 0.1, 1.0], [0.1, 0.2, 0.85, 1.0]].into_iter().enumerate() {
+        let mut end = [0.0; 3];
+        end[k] = size;
+        out.lines.push(LineItem { points: vec![[0.0; 3], end], closed: false, color: c, width: 2.0 });
+    }
+}
+
+/// The scene's camera, or one fitted to the bounds (from the top for plane figures).
+fn camera(scene: &SceneDocument, bounds: ([f32; 3], [f32; 3]), flat: bool, aspect: f32) -> Camera {
+    match &scene.camera {
         Some(CameraDoc::LookAt { eye, target, up, fov }) => Camera::Perspective {
             eye: eye.map(|x| x as f32),
             target: target.map(|x| x as f32),
             up: up.map(|x| x as f32),
             fov_y: *fov as f32,
         },
-        Some(CameraDoc::Orbit { top: true, .. }) => {
-            out.painter_order = out.meshes.is_empty();
-            Camera::top(bounds, aspect)
-        }
+        Some(CameraDoc::Orbit { top: true, .. }) => Camera::top(bounds, aspect),
         Some(CameraDoc::Orbit { azimuth, elevation, .. }) => {
             Camera::fit(bounds, azimuth.to_radians() as f32, elevation.to_radians() as f32, aspect)
         }
         None if flat => Camera::top(bounds, aspect),
         None => Camera::fit(bounds, 50f32.to_radians(), 28f32.to_radians(), aspect),
-    });
-    for (k, l) in scene.lights.iter().enumerate() {
-        out.lights[k] = (l.direction.map(|x| x as f32), l.intensity as f32);
     }
-    Ok(out)
 }
 
 struct CurveLine<'a> {
@@ -132,7 +168,7 @@ struct CurveLine<'a> {
     color: [f32; 4],
 }
 
-impl CurveVisitor for CurveLine<'_> {
+impl DimensionVisitor<Curves> for CurveLine<'_> {
     type Output = Result<LineItem, DocumentError>;
     fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Self::Output {
         let poly = match self.obj.style.density {
@@ -162,25 +198,8 @@ fn polygon(points: &[Vec<f64>], closed: bool, out: &mut RenderScene) {
     out.points.extend(pts.iter().map(|&p| PointItem { position: p, color: [0.1, 0.1, 0.1, 1.0], size: 7.0 }));
 }
 
-fn control_polygon(c: &CurveDocument, out: &mut RenderScene) {
-    match c {
-        CurveDocument::Bezier(d) => polygon(&d.control_points, false, out),
-        CurveDocument::RationalBezier(d) => polygon(&d.control_points, false, out),
-        CurveDocument::Bspline(d) => polygon(&d.control_points, d.periodic, out),
-        CurveDocument::Nurbs(d) => polygon(&d.control_points, d.periodic, out),
-        CurveDocument::Hermite(d) => polygon(&d.points, false, out),
-        CurveDocument::CatmullRom(d) => polygon(&d.points, d.closed, out),
-        _ => {}
-    }
-}
-
-fn control_net(s: &SurfaceDocument, out: &mut RenderScene) {
-    let net = match s {
-        SurfaceDocument::BezierSurface(d) => &d.control_points,
-        SurfaceDocument::BsplineSurface(d) => &d.control_points,
-        SurfaceDocument::NurbsSurface(d) => &d.control_points,
-        _ => return,
-    };
+/// A control net: its rows and its columns as polygons, with the points.
+fn control_net(net: &[Vec<Vec<f64>>], out: &mut RenderScene) {
     for row in net {
         polygon(row, false, out);
     }
@@ -195,14 +214,11 @@ fn control_net(s: &SurfaceDocument, out: &mut RenderScene) {
     }
 }
 
-fn local_curves(
-    d: &splinekit_scene::blending::BlendingSplineDoc,
-    obj: &SceneObject,
-    out: &mut RenderScene,
-) -> Result<(), DocumentError> {
+/// The local curves of a blending spline in their own colours, with their origins.
+fn local_curves(d: &BlendingSplineDoc, style: &StyleDoc, out: &mut RenderScene) -> Result<(), DocumentError> {
     macro_rules! draw {
         ($dim:literal) => {{
-            let c = d.build_in::<$dim>()?;
+            let c = d.curve::<$dim>()?;
             let n = c.local_count();
             for k in 0..n {
                 let (a, b) = c.local_support(k);
@@ -217,7 +233,7 @@ fn local_curves(
                     points: pts,
                     closed: false,
                     color: local_color(k, n),
-                    width: obj.style.line_width * 0.6,
+                    width: style.line_width * 0.6,
                 });
                 out.points.push(PointItem { position: f32x3(to3(&c.origin(k))), color: local_color(k, n), size: 7.0 });
             }
@@ -233,11 +249,10 @@ fn local_curves(
     Ok(())
 }
 
-fn local_patches(
-    d: &splinekit_scene::blending::BlendingSplineSurfaceDoc,
-    out: &mut RenderScene,
-) -> Result<(), DocumentError> {
-    let s = d.build_in::<3>()?;
+/// The local patches of a blending-spline surface: outline and middle lines of each over
+/// its support, in its own colour.
+fn local_patches(d: &BlendingSplineSurfaceDoc, out: &mut RenderScene) -> Result<(), DocumentError> {
+    let s = d.surface::<3>()?;
     let (nu, nv) = s.local_count();
     let mut v = [Point::<3>::zeros(); 1];
     for k in 0..nu {
@@ -271,7 +286,7 @@ struct SurfaceMesh<'a> {
     out: &'a mut RenderScene,
 }
 
-impl SurfaceVisitor for SurfaceMesh<'_> {
+impl DimensionVisitor<Surfaces> for SurfaceMesh<'_> {
     type Output = Result<(), DocumentError>;
     fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Self::Output {
         let n = self.obj.style.density.unwrap_or(64);

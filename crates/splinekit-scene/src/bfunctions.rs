@@ -3,58 +3,61 @@
 //! `{"type":"trigonometric"}`, `{"type":"half_cosine"}`, `{"type":"rational"}`,
 //! `{"type":"linear"}`.
 
-use serde::{Deserialize, Serialize};
+use serde::{Deserialize, Deserializer, Serialize};
 use serde_json::Value;
 use splinekit::basis::BFunction;
 
-use crate::curves::{fields, split_type};
-use crate::defaults::*;
 use crate::error::{DocumentError, Result};
-
-fn smoothness_one() -> usize {
-    1
-}
-fn three_usize() -> usize {
-    3
-}
+use crate::json::{fields, nested, split_type};
 
 /// ERBS parameters.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(default, deny_unknown_fields)]
 pub struct ErbsDoc {
     /// α (default 1).
-    #[serde(default = "one")]
     pub alpha: f64,
     /// β (default 1).
-    #[serde(default = "one")]
     pub beta: f64,
     /// γ (default 1).
-    #[serde(default = "one")]
     pub gamma: f64,
     /// λ (default ½).
-    #[serde(default = "half")]
     pub lambda: f64,
+}
+
+impl Default for ErbsDoc {
+    fn default() -> Self {
+        ErbsDoc { alpha: 1.0, beta: 1.0, gamma: 1.0, lambda: 0.5 }
+    }
 }
 
 /// Polynomial smoothness.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(default, deny_unknown_fields)]
 pub struct PolynomialDoc {
     /// k ≥ 1 (default 1: 3t² − 2t³).
-    #[serde(default = "smoothness_one")]
     pub smoothness: usize,
+}
+
+impl Default for PolynomialDoc {
+    fn default() -> Self {
+        PolynomialDoc { smoothness: 1 }
+    }
 }
 
 /// Beta-function B-spline exponents.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(default, deny_unknown_fields)]
 pub struct BetaDoc {
     /// a (default 3).
-    #[serde(default = "three_usize")]
     pub a: usize,
     /// b (default 3).
-    #[serde(default = "three_usize")]
     pub b: usize,
+}
+
+impl Default for BetaDoc {
+    fn default() -> Self {
+        BetaDoc { a: 3, b: 3 }
+    }
 }
 
 /// No parameters.
@@ -112,5 +115,11 @@ impl BFunctionDoc {
             B::Rational(_) => BFunction::Rational,
             B::Erbs(d) => BFunction::erbs(d.alpha, d.beta, d.gamma, d.lambda)?,
         })
+    }
+}
+
+impl<'de> Deserialize<'de> for BFunctionDoc {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        nested(deserializer, Self::parse)
     }
 }

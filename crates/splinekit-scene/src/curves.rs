@@ -1,362 +1,260 @@
-//! Curve shape documents: one struct per `type`, parsed with exact field paths in errors
-//! and unknown fields refused.
+//! Curve shape documents: the registry of curve kinds, and the model curves' documents.
+//!
+//! Adding a curve kind is a document struct with its [`DocumentKind`] and one line in the
+//! list below (see CONTRIBUTING.md); the compiler asks for everything else.
 
-use serde::de::DeserializeOwned;
+mod composite;
+mod splines;
+
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
+use splinekit::curve::Curve;
+use splinekit::curve::model::{Butterfly, Circle, Ellipse, Heart, Helix, Lissajous, Rose, Trefoil};
 
 pub use crate::blending::{BlendingSplineDoc, LocalDoc};
-use crate::defaults::*;
+pub use composite::{BFunctionShapeDoc, BlendDoc};
+pub use splines::{BSplineDoc, BezierDoc, CatmullRomDoc, HermiteDoc, LineDoc, NurbsDoc, RationalBezierDoc};
+
+use crate::defaults::is_false;
+use crate::dimension::{Curves, same_type};
 use crate::error::{DocumentError, Result};
+use crate::json::split_type;
+use crate::registry::{Decoration, DocumentKind, KindName, document_kinds};
 
-/// `{"type":"bezier","control_points":[[x,y],...]}`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct BezierDoc {
-    /// Control points P_0 … P_n.
-    pub control_points: Vec<Vec<f64>>,
-}
-
-/// `{"type":"rational_bezier","control_points":[...],"weights":[...]}`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RationalBezierDoc {
-    /// Control points.
-    pub control_points: Vec<Vec<f64>>,
-    /// One positive weight per control point.
-    pub weights: Vec<f64>,
-}
-
-/// `{"type":"bspline","degree":p,"knots":[...],"control_points":[...],"periodic":false}`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct BSplineDoc {
-    /// Degree p.
-    pub degree: usize,
-    /// n + p + 1 knots.
-    pub knots: Vec<f64>,
-    /// n control points.
-    pub control_points: Vec<Vec<f64>>,
-    /// Closed, with cyclic control points (see `splinekit::curve::BSplineCurve::new_periodic`).
-    #[serde(default, skip_serializing_if = "is_false")]
-    pub periodic: bool,
-}
-
-/// `{"type":"nurbs", ...bspline fields..., "weights":[...]}`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct NurbsDoc {
-    /// Degree p.
-    pub degree: usize,
-    /// n + p + 1 knots.
-    pub knots: Vec<f64>,
-    /// n control points.
-    pub control_points: Vec<Vec<f64>>,
-    /// n positive weights.
-    pub weights: Vec<f64>,
-    /// Closed, with cyclic control points.
-    #[serde(default, skip_serializing_if = "is_false")]
-    pub periodic: bool,
-}
-
-/// `{"type":"hermite","points":[...],"tangents":[...],"params":[...]}`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct HermiteDoc {
-    /// Interpolated points.
-    pub points: Vec<Vec<f64>>,
-    /// First derivatives at the points.
-    pub tangents: Vec<Vec<f64>>,
-    /// Strictly increasing parameters (default 0, 1, 2, …).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub params: Option<Vec<f64>>,
-}
-
-/// `{"type":"catmull_rom","points":[...],"alpha":0,"closed":false}`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct CatmullRomDoc {
-    /// Interpolated points.
-    pub points: Vec<Vec<f64>>,
-    /// 0 uniform (default), 0.5 centripetal, 1 chordal.
-    #[serde(default)]
-    pub alpha: f64,
-    /// Closed loop through the points.
-    #[serde(default, skip_serializing_if = "is_false")]
-    pub closed: bool,
-}
-
-/// `{"type":"line","from":[...],"to":[...]}`, t ∈ [0, 1].
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LineDoc {
-    /// c(0).
-    pub from: Vec<f64>,
-    /// c(1).
-    pub to: Vec<f64>,
-}
-
-/// `{"type":"circle","radius":1}`: (r cos t, r sin t, 0), t ∈ [0, 2π].
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct CircleDoc {
-    /// Radius r (default 1).
-    #[serde(default = "one")]
-    pub radius: f64,
-}
-
-/// `{"type":"ellipse","a":2,"b":1}`: (a cos t, b sin t, 0), t ∈ [0, 2π].
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct EllipseDoc {
-    /// Semi-axis along x (default 2).
-    #[serde(default = "two")]
-    pub a: f64,
-    /// Semi-axis along y (default 1).
-    #[serde(default = "one")]
-    pub b: f64,
-}
-
-/// `{"type":"helix","radius":1,"pitch":1,"turns":3}`: (r cos t, r sin t, pitch·t/2π).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct HelixDoc {
-    /// Radius (default 1).
-    #[serde(default = "one")]
-    pub radius: f64,
-    /// Rise per turn (default 1).
-    #[serde(default = "one")]
-    pub pitch: f64,
-    /// Number of turns; t ∈ [0, 2π·turns] (default 3).
-    #[serde(default = "three")]
-    pub turns: f64,
-}
-
-/// Curves with only a `scale` (default 1): heart, trefoil, butterfly.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ScaleDoc {
-    /// Uniform scale (default 1).
-    #[serde(default = "one")]
-    pub scale: f64,
-}
-
-/// `{"type":"rose","radius":1,"n":4,"planar":false}`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RoseDoc {
-    /// Radius r (default 1).
-    #[serde(default = "one")]
-    pub radius: f64,
-    /// Petal parameter n (default 4).
-    #[serde(default = "four")]
-    pub n: f64,
-    /// Drop z = r sin(nt) (default false: the 3-D rose).
-    #[serde(default, skip_serializing_if = "is_false")]
-    pub planar: bool,
-}
-
-/// `{"type":"lissajous","amplitudes":[1,1,0],"frequencies":[3,2,0],"delta":π/2}`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LissajousDoc {
-    /// (A, B, C) (default [1, 1, 0]).
-    #[serde(default = "lissajous_amplitudes")]
-    pub amplitudes: [f64; 3],
-    /// (a, b, c) (default [3, 2, 0]).
-    #[serde(default = "lissajous_frequencies")]
-    pub frequencies: [f64; 3],
-    /// Phase of x (default π/2).
-    #[serde(default = "half_pi")]
-    pub delta: f64,
-}
-fn lissajous_amplitudes() -> [f64; 3] {
-    [1.0, 1.0, 0.0]
-}
-fn lissajous_frequencies() -> [f64; 3] {
-    [3.0, 2.0, 0.0]
-}
-
-/// `{"type":"bfunction","bfunction":{…}}`: the B-function as a 1-D curve on [0, 1].
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct BFunctionShapeDoc {
-    /// The B-function.
-    pub bfunction: crate::bfunctions::BFunctionDoc,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawBFunctionShape {
-    bfunction: Value,
-}
-
-/// `{"type":"blend","first":{…},"second":{…},"overlap":x,"bfunction":{…}}`: the two-curve
-/// blend on [0, 1 + x] (B-function default: polynomial smoothness 1, i.e. 3t² − 2t³).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct BlendDoc {
-    /// The curve before the overlap.
-    pub first: Box<CurveDocument>,
-    /// The curve after it.
-    pub second: Box<CurveDocument>,
-    /// x ∈ (0, 1).
-    pub overlap: f64,
-    /// The B-function.
-    pub bfunction: crate::bfunctions::BFunctionDoc,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawBlend {
-    first: Value,
-    second: Value,
-    overlap: f64,
-    #[serde(default)]
-    bfunction: Option<Value>,
-}
-
-/// A curve shape document.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(tag = "type", rename_all = "snake_case")]
-#[allow(missing_docs)]
-pub enum CurveDocument {
-    Bezier(BezierDoc),
-    RationalBezier(RationalBezierDoc),
-    Bspline(BSplineDoc),
-    Nurbs(NurbsDoc),
-    Hermite(HermiteDoc),
-    CatmullRom(CatmullRomDoc),
-    Line(LineDoc),
-    Circle(CircleDoc),
-    Ellipse(EllipseDoc),
-    Helix(HelixDoc),
-    Heart(ScaleDoc),
-    Rose(RoseDoc),
-    Lissajous(LissajousDoc),
-    Trefoil(ScaleDoc),
-    Butterfly(ScaleDoc),
-    Bfunction(BFunctionShapeDoc),
-    Blend(BlendDoc),
-    BlendingSpline(BlendingSplineDoc),
+document_kinds! {
+    /// A curve shape document: `{"type": "…", …fields…}`.
+    pub enum CurveDocument of Curves {
+        /// Bézier curve.
+        Bezier(BezierDoc) = "bezier",
+        /// Rational Bézier curve.
+        RationalBezier(RationalBezierDoc) = "rational_bezier",
+        /// B-spline curve.
+        Bspline(BSplineDoc) = "bspline",
+        /// NURBS curve.
+        Nurbs(NurbsDoc) = "nurbs",
+        /// Cubic Hermite spline.
+        Hermite(HermiteDoc) = "hermite",
+        /// Catmull–Rom spline.
+        CatmullRom(CatmullRomDoc) = "catmull_rom",
+        /// Line segment.
+        Line(LineDoc) = "line",
+        /// Circle.
+        Circle(CircleDoc) = "circle",
+        /// Ellipse.
+        Ellipse(EllipseDoc) = "ellipse",
+        /// Circular helix.
+        Helix(HelixDoc) = "helix",
+        /// Heart curve.
+        Heart(HeartDoc) = "heart",
+        /// Rose curve.
+        Rose(RoseDoc) = "rose",
+        /// Lissajous figure.
+        Lissajous(LissajousDoc) = "lissajous",
+        /// Trefoil knot.
+        Trefoil(TrefoilDoc) = "trefoil",
+        /// Butterfly curve.
+        Butterfly(ButterflyDoc) = "butterfly",
+        /// A B-function as a 1-D curve.
+        Bfunction(BFunctionShapeDoc) = "bfunction",
+        /// Blend of two curves.
+        Blend(BlendDoc) = "blend",
+        /// Blending-spline curve.
+        BlendingSpline(BlendingSplineDoc) = "blending_spline",
+    }
 }
 
 /// The curve `type` names, for messages.
-pub const CURVE_TYPES: &[&str] = &[
-    "bezier",
-    "rational_bezier",
-    "bspline",
-    "nurbs",
-    "hermite",
-    "catmull_rom",
-    "line",
-    "circle",
-    "ellipse",
-    "helix",
-    "heart",
-    "rose",
-    "lissajous",
-    "trefoil",
-    "butterfly",
-];
-
-/// Deserialises `value` (an object without its `type`) into `T`, locating errors.
-pub(crate) fn fields<T: DeserializeOwned>(value: Value) -> Result<T> {
-    serde_path_to_error::deserialize::<_, T>(value).map_err(|e| {
-        let path = e.path().to_string();
-        let path = if path == "." { String::new() } else { path };
-        DocumentError::new(path, e.into_inner().to_string())
-    })
-}
-
-/// Splits a document object into its `type` and the remaining fields.
-pub(crate) fn split_type(value: &Value) -> Result<(String, Value)> {
-    let Value::Object(map) = value else {
-        return Err(DocumentError::new(
-            "",
-            format!("expected a JSON object with a \"type\" field, got {}", kind(value)),
-        ));
-    };
-    let mut map = map.clone();
-    let ty = match map.remove("type") {
-        Some(Value::String(s)) => s,
-        Some(other) => return Err(DocumentError::new("type", format!("expected a string, got {}", kind(&other)))),
-        None => return Err(DocumentError::new("type", "missing (every shape document needs a \"type\")")),
-    };
-    Ok((ty, Value::Object(map)))
-}
-
-/// JSON kind of a value, for messages.
-pub(crate) fn kind(v: &Value) -> &'static str {
-    match v {
-        Value::Null => "null",
-        Value::Bool(_) => "a boolean",
-        Value::Number(_) => "a number",
-        Value::String(_) => "a string",
-        Value::Array(_) => "an array",
-        Value::Object(_) => "an object",
-    }
-}
+pub const CURVE_TYPES: &[&str] = CurveDocument::TYPES;
 
 impl CurveDocument {
     /// Parses a curve document.
     pub fn parse(value: &Value) -> Result<Self> {
         let (ty, rest) = split_type(value)?;
-        Self::parse_typed(&ty, rest)?.ok_or_else(|| {
-            DocumentError::new(
+        Self::parse_fields(&ty, rest).unwrap_or_else(|| {
+            Err(DocumentError::new(
                 "type",
                 format!("unknown curve type \"{ty}\" (expected one of {})", CURVE_TYPES.join(", ")),
-            )
+            ))
         })
     }
+}
 
-    /// Parses the fields of a document of type `ty`; `Ok(None)` if `ty` is not a curve.
-    pub(crate) fn parse_typed(ty: &str, rest: Value) -> Result<Option<Self>> {
-        use CurveDocument as C;
-        Ok(Some(match ty {
-            "bezier" => C::Bezier(fields(rest)?),
-            "rational_bezier" => C::RationalBezier(fields(rest)?),
-            "bspline" => C::Bspline(fields(rest)?),
-            "nurbs" => C::Nurbs(fields(rest)?),
-            "hermite" => C::Hermite(fields(rest)?),
-            "catmull_rom" => C::CatmullRom(fields(rest)?),
-            "line" => C::Line(fields(rest)?),
-            "circle" => C::Circle(fields(rest)?),
-            "ellipse" => C::Ellipse(fields(rest)?),
-            "helix" => C::Helix(fields(rest)?),
-            "heart" => C::Heart(fields(rest)?),
-            "rose" => C::Rose(fields(rest)?),
-            "lissajous" => C::Lissajous(fields(rest)?),
-            "trefoil" => C::Trefoil(fields(rest)?),
-            "butterfly" => C::Butterfly(fields(rest)?),
-            "bfunction" => {
-                let r: RawBFunctionShape = fields(rest)?;
-                C::Bfunction(BFunctionShapeDoc {
-                    bfunction: crate::bfunctions::BFunctionDoc::parse(&r.bfunction)
-                        .map_err(|e| e.within("bfunction"))?,
-                })
-            }
-            "blending_spline" => C::BlendingSpline(BlendingSplineDoc::parse(rest)?),
-            "blend" => {
-                let r: RawBlend = fields(rest)?;
-                let nested = |v: &Value, f: &str| CurveDocument::parse(v).map(Box::new).map_err(|e| e.within(f));
-                let bfunction = match &r.bfunction {
-                    Some(b) => crate::bfunctions::BFunctionDoc::parse(b).map_err(|e| e.within("bfunction"))?,
-                    None => {
-                        crate::bfunctions::BFunctionDoc::Polynomial(crate::bfunctions::PolynomialDoc { smoothness: 1 })
-                    }
-                };
-                C::Blend(BlendDoc {
-                    first: nested(&r.first, "first")?,
-                    second: nested(&r.second, "second")?,
-                    overlap: r.overlap,
-                    bfunction,
-                })
-            }
-            _ => return Ok(None),
-        }))
+/// A model curve in dimension D, which must be 3.
+fn model_curve_in<const D: usize>(
+    name: &str,
+    build: impl FnOnce() -> Result<Box<dyn Curve<3>>>,
+) -> Result<Box<dyn Curve<D>>> {
+    let not_3d = || DocumentError::new("type", format!("{name} is a 3-D model curve"));
+    if D != 3 {
+        return Err(not_3d());
     }
+    same_type(build()?).ok_or_else(not_3d)
+}
 
-    /// The document as JSON.
-    pub fn to_value(&self) -> Value {
-        serde_json::to_value(self).expect("documents serialise")
+/// Implements [`DocumentKind`] for a model curve's document `$doc`: 3-D, built as
+/// `$build` from the document `$d`; its example is its default document, and it has
+/// nothing to decorate or pose.
+macro_rules! model_curve {
+    ($doc:ty, |$d:ident| $build:expr) => {
+        impl DocumentKind for $doc {
+            type Family = Curves;
+            fn dimension(&self) -> Result<usize> {
+                Ok(3)
+            }
+            fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+                let $d = self;
+                model_curve_in::<D>(Self::TYPE, || Ok(Box::new($build?)))
+            }
+            fn example() -> Self {
+                Self::default()
+            }
+            fn decoration(&self) -> Decoration<'_> {
+                Decoration::None
+            }
+            fn set_time(&mut self, _time: f64) {}
+        }
+    };
+}
+
+/// `{"type":"circle","radius":1}`: (r cos t, r sin t, 0), t ∈ [0, 2π].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct CircleDoc {
+    /// Radius r (default 1).
+    pub radius: f64,
+}
+
+impl Default for CircleDoc {
+    fn default() -> Self {
+        CircleDoc { radius: 1.0 }
     }
 }
+
+model_curve!(CircleDoc, |d| Circle::new(d.radius));
+
+/// `{"type":"ellipse","a":2,"b":1}`: (a cos t, b sin t, 0), t ∈ [0, 2π].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct EllipseDoc {
+    /// Semi-axis along x (default 2).
+    pub a: f64,
+    /// Semi-axis along y (default 1).
+    pub b: f64,
+}
+
+impl Default for EllipseDoc {
+    fn default() -> Self {
+        EllipseDoc { a: 2.0, b: 1.0 }
+    }
+}
+
+model_curve!(EllipseDoc, |d| Ellipse::new(d.a, d.b));
+
+/// `{"type":"helix","radius":1,"pitch":1,"turns":3}`: (r cos t, r sin t, pitch·t/2π).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct HelixDoc {
+    /// Radius (default 1).
+    pub radius: f64,
+    /// Rise per turn (default 1).
+    pub pitch: f64,
+    /// Number of turns; t ∈ [0, 2π·turns] (default 3).
+    pub turns: f64,
+}
+
+impl Default for HelixDoc {
+    fn default() -> Self {
+        HelixDoc { radius: 1.0, pitch: 1.0, turns: 3.0 }
+    }
+}
+
+model_curve!(HelixDoc, |d| Helix::new(d.radius, d.pitch, d.turns));
+
+/// `{"type":"heart","scale":1}`: s·(16 sin³t, 13 cos t − 5 cos 2t − 2 cos 3t − cos 4t, 0).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct HeartDoc {
+    /// Uniform scale (default 1).
+    pub scale: f64,
+}
+
+impl Default for HeartDoc {
+    fn default() -> Self {
+        HeartDoc { scale: 1.0 }
+    }
+}
+
+model_curve!(HeartDoc, |d| Heart::new(d.scale));
+
+/// `{"type":"rose","radius":1,"n":4,"planar":false}`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct RoseDoc {
+    /// Radius r (default 1).
+    pub radius: f64,
+    /// Petal parameter n (default 4).
+    pub n: f64,
+    /// Drop z = r sin(nt) (default false: the 3-D rose).
+    #[serde(skip_serializing_if = "is_false")]
+    pub planar: bool,
+}
+
+impl Default for RoseDoc {
+    fn default() -> Self {
+        RoseDoc { radius: 1.0, n: 4.0, planar: false }
+    }
+}
+
+model_curve!(RoseDoc, |d| Rose::new(d.radius, d.n, d.planar));
+
+/// `{"type":"lissajous","amplitudes":[1,1,0],"frequencies":[3,2,0],"delta":π/2}`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct LissajousDoc {
+    /// (A, B, C) (default [1, 1, 0]).
+    pub amplitudes: [f64; 3],
+    /// (a, b, c) (default [3, 2, 0]).
+    pub frequencies: [f64; 3],
+    /// Phase of x (default π/2).
+    pub delta: f64,
+}
+
+impl Default for LissajousDoc {
+    fn default() -> Self {
+        LissajousDoc { amplitudes: [1.0, 1.0, 0.0], frequencies: [3.0, 2.0, 0.0], delta: std::f64::consts::FRAC_PI_2 }
+    }
+}
+
+model_curve!(LissajousDoc, |d| Lissajous::new(d.amplitudes, d.frequencies, d.delta));
+
+/// `{"type":"trefoil","scale":1}`: s·(sin t + 2 sin 2t, cos t − 2 cos 2t, −sin 3t).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct TrefoilDoc {
+    /// Uniform scale (default 1).
+    pub scale: f64,
+}
+
+impl Default for TrefoilDoc {
+    fn default() -> Self {
+        TrefoilDoc { scale: 1.0 }
+    }
+}
+
+model_curve!(TrefoilDoc, |d| Trefoil::new(d.scale));
+
+/// `{"type":"butterfly","scale":1}`: Fay's butterfly, t ∈ [0, 24π].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ButterflyDoc {
+    /// Uniform scale (default 1).
+    pub scale: f64,
+}
+
+impl Default for ButterflyDoc {
+    fn default() -> Self {
+        ButterflyDoc { scale: 1.0 }
+    }
+}
+
+model_curve!(ButterflyDoc, |d| Butterfly::new(d.scale));

@@ -18,10 +18,15 @@ impl DocumentError {
         DocumentError { path: path.into(), message: message.into() }
     }
 
-    /// The same error seen from a parent document field `prefix`.
+    /// The same error seen from a parent document field `prefix` (`first` and
+    /// `knots` make `first.knots`; `holes` and `[2].type` make `holes[2].type`).
     pub fn within(mut self, prefix: &str) -> Self {
         if !prefix.is_empty() {
-            self.path = if self.path.is_empty() { prefix.to_string() } else { format!("{prefix}.{}", self.path) };
+            self.path = match self.path.as_str() {
+                "" => prefix.to_string(),
+                index if index.starts_with('[') => format!("{prefix}{index}"),
+                field => format!("{prefix}.{field}"),
+            };
         }
         self
     }

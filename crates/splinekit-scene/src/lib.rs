@@ -8,21 +8,24 @@
 
 pub mod bfunctions;
 pub mod blending;
-pub mod build;
 pub mod curves;
 mod defaults;
+pub mod dimension;
 pub mod error;
+pub mod json;
 pub mod points;
 pub mod refine;
+pub mod registry;
 pub mod scenes;
 pub mod surfaces;
 pub mod transforms;
 
-pub use build::{AnyCurve, CurveVisitor};
 pub use curves::CurveDocument;
+pub use dimension::{AnyCurve, AnyDimension, AnySurface, Curves, DimensionVisitor, Surfaces};
 pub use error::{DocumentError, Result};
+pub use registry::{Decoration, DocumentKind};
 pub use scenes::{SceneDocument, SceneObject, SceneOrShape, StyleDoc};
-pub use surfaces::{AnySurface, SurfaceDocument, SurfaceVisitor};
+pub use surfaces::SurfaceDocument;
 
 use serde_json::Value;
 
@@ -53,19 +56,19 @@ impl ShapeDocument {
 
     /// Parses a shape document.
     pub fn parse(value: &Value) -> Result<Self> {
-        let (ty, rest) = curves::split_type(value)?;
-        if let Some(c) = CurveDocument::parse_typed(&ty, rest.clone())? {
-            return Ok(ShapeDocument::Curve(c));
+        let (ty, rest) = json::split_type(value)?;
+        if let Some(c) = CurveDocument::parse_fields(&ty, rest.clone()) {
+            return c.map(ShapeDocument::Curve);
         }
-        if let Some(s) = SurfaceDocument::parse_typed(&ty, rest)? {
-            return Ok(ShapeDocument::Surface(s));
+        if let Some(s) = SurfaceDocument::parse_fields(&ty, rest) {
+            return s.map(ShapeDocument::Surface);
         }
         Err(DocumentError::new(
             "type",
             format!(
                 "unknown shape type \"{ty}\" (curves: {}; surfaces: {})",
-                curves::CURVE_TYPES.join(", "),
-                surfaces::SURFACE_TYPES.join(", ")
+                CurveDocument::TYPES.join(", "),
+                SurfaceDocument::TYPES.join(", ")
             ),
         ))
     }

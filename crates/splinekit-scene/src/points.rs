@@ -4,9 +4,6 @@ use splinekit::Point;
 
 use crate::error::{DocumentError, Result};
 
-/// Largest point dimension the command line dispatches to.
-pub const MAX_DIMENSION: usize = 4;
-
 /// The common dimension of a list of points (≥ 1 point, all the same length, finite).
 pub fn dimension_of(field: &str, points: &[Vec<f64>]) -> Result<usize> {
     let first = points.first().ok_or_else(|| DocumentError::new(field, "expected at least 1 point, got 0"))?;
@@ -60,33 +57,4 @@ pub fn check_finite_list(field: &str, values: &[f64]) -> Result<()> {
         Some((i, v)) => Err(DocumentError::new(format!("{field}[{i}]"), format!("value is not finite ({v})"))),
         None => Ok(()),
     }
-}
-
-/// Runs `$body` with `const $d: usize` bound to the runtime dimension `$dim` (1 … 4).
-#[macro_export]
-macro_rules! with_dimension {
-    ($dim:expr, $field:expr, $d:ident => $body:expr) => {
-        match $dim {
-            1 => {
-                const $d: usize = 1;
-                $body
-            }
-            2 => {
-                const $d: usize = 2;
-                $body
-            }
-            3 => {
-                const $d: usize = 3;
-                $body
-            }
-            4 => {
-                const $d: usize = 4;
-                $body
-            }
-            other => Err(::core::convert::From::from($crate::error::DocumentError::new(
-                $field,
-                format!("points of dimension {other} are not supported (1 to {})", $crate::points::MAX_DIMENSION),
-            ))),
-        }
-    };
 }

@@ -3,7 +3,6 @@
 
 use splinekit::curve::{BSplineCurve, BezierCurve, NurbsCurve, RationalBezierCurve};
 
-use crate::build::{bspline, nurbs};
 use crate::curves::{BSplineDoc, BezierDoc, CurveDocument, NurbsDoc, RationalBezierDoc};
 use crate::error::{DocumentError, Result};
 use crate::points::{from_points, to_points};
@@ -143,8 +142,8 @@ pub fn refine(doc: &CurveDocument, r: &Refinement) -> Result<Refined> {
 
 fn refine_in<const D: usize>(doc: &CurveDocument, r: &Refinement) -> Result<Refined> {
     match doc {
-        CurveDocument::Bspline(d) => refine_bspline(bspline::<D>(d)?, r),
-        CurveDocument::Nurbs(d) => refine_nurbs(nurbs::<D>(d)?, r),
+        CurveDocument::Bspline(d) => refine_bspline(d.curve::<D>()?, r),
+        CurveDocument::Nurbs(d) => refine_nurbs(d.curve::<D>()?, r),
         CurveDocument::Bezier(d) => {
             let b = BezierCurve::new(to_points::<D>(&d.control_points))?;
             if let Refinement::Elevate(t) = r {

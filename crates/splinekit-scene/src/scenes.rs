@@ -12,8 +12,8 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use crate::ShapeDocument;
-use crate::curves::{fields, kind, split_type};
 use crate::error::{DocumentError, Result};
+use crate::json::{fields, kind, split_type};
 
 fn default_line_width() -> f32 {
     2.5

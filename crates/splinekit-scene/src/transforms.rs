@@ -70,3 +70,118 @@ impl TransformDoc {
         Ok(a)
     }
 }
+
+/// Rest transforms of a blending-spline curve's locals, by local index.
+pub type LocalTransforms = Vec<(usize, TransformDoc)>;
+
+/// Rest transforms of a blending-spline surface's patches, by patch index (k, l).
+pub type PatchTransforms = Vec<((usize, usize), TransformDoc)>;
+
+/// Per-local transforms of a blending-spline curve (`with` module for serde): read from a
+/// list (one per local, in order) or an object keyed by local index; written as the object.
+pub mod by_index {
+    use serde::ser::SerializeMap;
+    use serde::{Deserializer, Serializer};
+    use serde_json::Value;
+
+    use super::{LocalTransforms, TransformDoc};
+    use crate::error::{DocumentError, Result};
+    use crate::json::{fields, kind, nested};
+
+    /// Reads `transforms`.
+    pub fn deserialize<'de, D: Deserializer<'de>>(deserializer: D) -> std::result::Result<LocalTransforms, D::Error> {
+        nested(deserializer, parse)
+    }
+
+    fn parse(value: &Value) -> Result<LocalTransforms> {
+        match value {
+            Value::Null => Ok(Vec::new()),
+            Value::Array(list) => list
+                .iter()
+                .enumerate()
+                .map(|(i, t)| Ok((i, fields(t.clone()).map_err(|e| e.within(&format!("[{i}]")))?)))
+                .collect(),
+            Value::Object(map) => map
+                .iter()
+                .map(|(k, t)| {
+                    let i: usize = k.parse().map_err(|_| DocumentError::new(k, "keys must be local-curve indices"))?;
+                    Ok((i, fields(t.clone()).map_err(|e| e.within(k))?))
+                })
+                .collect(),
+            other => Err(DocumentError::new("", format!("expected a list or an object, got {}", kind(other)))),
+        }
+    }
+
+    /// Writes `transforms` as an object keyed by index.
+    pub fn serialize<S: Serializer>(
+        transforms: &[(usize, TransformDoc)],
+        serializer: S,
+    ) -> std::result::Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(transforms.len()))?;
+        for (i, t) in transforms {
+            map.serialize_entry(&i.to_string(), t)?;
+        }
+        map.end()
+    }
+}
+
+/// Per-patch transforms of a blending-spline surface (`with` module for serde): read from
+/// rows (n_u lists of n_v transforms) or an object keyed by `"k,l"`; written as the object.
+pub mod by_pair {
+    use serde::ser::SerializeMap;
+    use serde::{Deserializer, Serializer};
+    use serde_json::Value;
+
+    use super::{PatchTransforms, TransformDoc};
+    use crate::error::{DocumentError, Result};
+    use crate::json::{fields, kind, nested};
+
+    /// Reads `transforms`.
+    pub fn deserialize<'de, D: Deserializer<'de>>(deserializer: D) -> std::result::Result<PatchTransforms, D::Error> {
+        nested(deserializer, parse)
+    }
+
+    fn parse(value: &Value) -> Result<PatchTransforms> {
+        match value {
+            Value::Null => Ok(Vec::new()),
+            Value::Array(rows) => {
+                let mut out = Vec::new();
+                for (k, row) in rows.iter().enumerate() {
+                    let Value::Array(row) = row else {
+                        return Err(DocumentError::new(
+                            format!("[{k}]"),
+                            format!("expected a list of transforms (one row of patches), got {}", kind(row)),
+                        ));
+                    };
+                    for (l, t) in row.iter().enumerate() {
+                        out.push(((k, l), fields(t.clone()).map_err(|e| e.within(&format!("[{k}][{l}]")))?));
+                    }
+                }
+                Ok(out)
+            }
+            Value::Object(map) => map
+                .iter()
+                .map(|(key, t)| {
+                    let pair = key
+                        .split_once(',')
+                        .and_then(|(a, b)| Some((a.trim().parse().ok()?, b.trim().parse().ok()?)))
+                        .ok_or_else(|| DocumentError::new(key, "keys must be patch indices \"k,l\""))?;
+                    Ok((pair, fields(t.clone()).map_err(|e| e.within(key))?))
+                })
+                .collect(),
+            other => Err(DocumentError::new("", format!("expected a list of rows or an object, got {}", kind(other)))),
+        }
+    }
+
+    /// Writes `transforms` as an object keyed by `"k,l"`.
+    pub fn serialize<S: Serializer>(
+        transforms: &[((usize, usize), TransformDoc)],
+        serializer: S,
+    ) -> std::result::Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(transforms.len()))?;
+        for ((k, l), t) in transforms {
+            map.serialize_entry(&format!("{k},{l}"), t)?;
+        }
+        map.end()
+    }
+}

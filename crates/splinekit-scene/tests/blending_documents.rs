@@ -21,7 +21,7 @@ fn the_beating_heart_document_is_the_preset_at_every_time() {
         let mut doc = example("beating_heart");
         doc.set_time(time);
         let ShapeDocument::Curve(CurveDocument::BlendingSpline(d)) = doc else { panic!("a blending spline") };
-        let built = d.build_in::<3>().unwrap();
+        let built = d.curve::<3>().unwrap();
         for i in 0..=50 {
             let t = std::f64::consts::TAU * i as f64 / 50.0;
             assert!((built.point(t) - preset.point(t)).norm() < 1e-12, "time {time}, t = {t}");
@@ -51,7 +51,7 @@ fn the_animated_surface_documents_are_the_presets() {
             let mut doc = example(name);
             doc.set_time(time);
             let ShapeDocument::Surface(SurfaceDocument::BlendingSplineSurface(d)) = doc else { panic!("{name}") };
-            let built = d.build_in::<3>().unwrap();
+            let built = d.surface::<3>().unwrap();
             let (du, dv) = (s.domain_u(), s.domain_v());
             for i in 0..=12 {
                 for j in 0..=12 {

@@ -5,7 +5,7 @@ use clap::Args;
 use serde_json::{Value, json};
 use splinekit::Point;
 use splinekit::curve::Curve;
-use splinekit_scene::{CurveVisitor, ShapeDocument};
+use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument};
 
 use crate::input::{parse_numbers, read_shape};
 use crate::output::{number, write_json};
@@ -71,7 +71,7 @@ struct EvalCurve<'a> {
     order: usize,
 }
 
-impl CurveVisitor for EvalCurve<'_> {
+impl DimensionVisitor<Curves> for EvalCurve<'_> {
     type Output = Result<Value>;
     fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Result<Value> {
         let dom = curve.domain();

@@ -4,7 +4,7 @@ use anyhow::{Result, bail};
 use serde_json::{Map, Value, json};
 use splinekit::Point;
 use splinekit::surface::{Surface, unit_normal};
-use splinekit_scene::SurfaceVisitor;
+use splinekit_scene::{DimensionVisitor, Surfaces};
 
 use super::eval::MAX_SAMPLES;
 use crate::output::number;
@@ -57,7 +57,7 @@ fn normal_or_limit<const D: usize>(
     None
 }
 
-impl SurfaceVisitor for EvalSurface<'_> {
+impl DimensionVisitor<Surfaces> for EvalSurface<'_> {
     type Output = Result<Value>;
     fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Result<Value> {
         let (du, dv) = (s.domain_u(), s.domain_v());

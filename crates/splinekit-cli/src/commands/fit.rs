@@ -12,7 +12,7 @@ use splinekit_scene::with_dimension;
 use crate::input::{parse_numbers, parse_points, read_points, read_text};
 use crate::output::{check_finite, write_json};
 use serde_json::Value;
-use splinekit_scene::{CurveVisitor, ShapeDocument};
+use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum ParamsArg {
@@ -157,7 +157,7 @@ fn run_fit_model(args: &FitArgs, doc: &Value) -> Result<()> {
     let curve = model.build().map_err(|e| anyhow!("{e}"))?;
     let closed = args.closed;
     struct FitModel<'a>(&'a FitArgs, bool);
-    impl CurveVisitor for FitModel<'_> {
+    impl DimensionVisitor<Curves> for FitModel<'_> {
         type Output = Result<CurveDocument>;
         fn visit<const D: usize>(self, c: &dyn splinekit::curve::Curve<D>) -> Result<CurveDocument> {
             let (args, closed) = (self.0, self.1);

@@ -9,7 +9,7 @@ use splinekit::surface::Surface;
 use splinekit_mesh::export::{GltfGeometry, GltfScene, obj, ply, stl};
 use splinekit_mesh::surface_mesh::{adaptive, regular, to3};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, Projection, SvgFigure, TriangleMesh};
-use splinekit_scene::{CurveVisitor, SceneOrShape, ShapeDocument, SurfaceVisitor};
+use splinekit_scene::{Curves, DimensionVisitor, SceneOrShape, ShapeDocument, Surfaces};
 
 #[derive(Args, Debug)]
 pub struct TessellateArgs {
@@ -39,7 +39,7 @@ const MAX_DENSITY: usize = 4096;
 
 struct CurvePoly<'a>(&'a TessellateArgs);
 
-impl CurveVisitor for CurvePoly<'_> {
+impl DimensionVisitor<Curves> for CurvePoly<'_> {
     type Output = Result<(Vec<[f64; 3]>, bool, usize)>;
     fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Self::Output {
         let args = self.0;
@@ -62,7 +62,7 @@ impl CurveVisitor for CurvePoly<'_> {
 
 struct SurfaceTriangles<'a>(&'a TessellateArgs, bool);
 
-impl SurfaceVisitor for SurfaceTriangles<'_> {
+impl DimensionVisitor<Surfaces> for SurfaceTriangles<'_> {
     type Output = Result<TriangleMesh>;
     fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Self::Output {
         let (args, uv) = (self.0, self.1);

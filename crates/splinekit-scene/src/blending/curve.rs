@@ -1,0 +1,318 @@
+//! `blending_spline` documents: blending-spline curves from a model curve or from explicit
+//! local curves, with rest transforms and an animation.
+
+use std::sync::Arc;
+
+use serde::{Deserialize, Deserializer, Serialize};
+use serde_json::Value;
+use splinekit::blend::{BlendingSplineCurve, KnotSpacing, LocalKind};
+use splinekit::curve::Curve;
+
+use super::DEFAULT_BFUNCTION;
+use super::animation::{TrackDoc, tracks};
+use crate::bfunctions::BFunctionDoc;
+use crate::curves::{CurveDocument, HeartDoc};
+use crate::dimension::Curves;
+use crate::error::{DocumentError, Result};
+use crate::json::{kind, nested};
+use crate::registry::{Decoration, DocumentKind};
+use crate::transforms::LocalTransforms;
+
+/// Where a model-based blending spline puts its knots.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum KnotSpacingDoc {
+    /// Evenly in the model's parameter.
+    #[default]
+    Uniform,
+    /// At equal chord length along the model.
+    ChordLength,
+}
+
+/// The kind of local curves of a blending spline built from a model.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum LocalDoc {
+    /// Bézier locals of `degree` Hermite-fitted to the model's derivatives at the knots.
+    Bezier {
+        /// Degree d (default 3).
+        #[serde(default = "three")]
+        degree: usize,
+    },
+    /// The model itself around each knot.
+    SubCurve,
+    /// The model's osculating circle arc at each knot.
+    Arc,
+}
+
+fn three() -> usize {
+    3
+}
+
+/// The `local_curves` of a blending spline: a count (with a `model`) or a list of curve
+/// documents (with explicit `knots`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum LocalCurves {
+    /// Number of local curves made from the model.
+    Count(usize),
+    /// The local curves themselves.
+    List(Vec<CurveDocument>),
+}
+
+impl<'de> Deserialize<'de> for LocalCurves {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        nested(deserializer, |value| match value {
+            Value::Array(list) => list
+                .iter()
+                .enumerate()
+                .map(|(i, c)| CurveDocument::parse(c).map_err(|e| e.within(&format!("[{i}]"))))
+                .collect::<Result<_>>()
+                .map(LocalCurves::List),
+            other => {
+                other.as_u64().map(|n| LocalCurves::Count(usize::try_from(n).unwrap_or(usize::MAX))).ok_or_else(|| {
+                    DocumentError::new(
+                        "",
+                        format!("expected a count of local curves or a list of curves, got {}", kind(other)),
+                    )
+                })
+            }
+        })
+    }
+}
+
+/// `{"type":"blending_spline", "model":{…},"local_curves":n,"local":{…}` or
+/// `"knots":[…],"local_curves":[{…},…]`, `"bfunction":{…},"closed":bool,"transforms":…,
+/// "animation":[…]}`. The fields that depend on each other are checked by
+/// [`BlendingSplineDoc::source`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BlendingSplineDoc {
+    /// The model curve (with a count of local curves).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub model: Option<Box<CurveDocument>>,
+    /// A count (with a model) or the local curves (with knots).
+    pub local_curves: LocalCurves,
+    /// Explicit knots (with a list of local curves): open, one per local; closed, one more.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub knots: Option<Vec<f64>>,
+    /// Knot placement along a model (default uniform).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub knot_spacing: Option<KnotSpacingDoc>,
+    /// Kind of locals made from a model (default Bézier of degree 3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub local: Option<LocalDoc>,
+    /// The B-function (default ERBS).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bfunction: Option<BFunctionDoc>,
+    /// Closed (default: the model's; explicit locals: open).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub closed: Option<bool>,
+    /// Per-local rest transforms, by index.
+    #[serde(default, with = "crate::transforms::by_index", skip_serializing_if = "Vec::is_empty")]
+    pub transforms: LocalTransforms,
+    /// Animation tracks.
+    #[serde(default, deserialize_with = "crate::json::list", skip_serializing_if = "Vec::is_empty")]
+    pub animation: Vec<TrackDoc<usize>>,
+    /// The time at which the animation is posed (`None`: the rest pose).
+    #[serde(skip)]
+    pub time: Option<f64>,
+}
+
+/// Where the locals of a blending spline come from (a checked view of the document).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum BlendingSource<'a> {
+    /// `local_curves` locals of kind `local` made from `model` at knots spaced by `knot_spacing`.
+    Model {
+        /// The model curve.
+        model: &'a CurveDocument,
+        /// Number of local curves.
+        local_curves: usize,
+        /// Kind of locals.
+        local: &'a LocalDoc,
+        /// Knot placement.
+        knot_spacing: KnotSpacingDoc,
+    },
+    /// Explicit knots and local curves, each mapped onto its support.
+    Explicit {
+        /// Open: one knot per local; closed: one more (the first plus the period).
+        knots: &'a [f64],
+        /// The local curves.
+        local_curves: &'a [CurveDocument],
+    },
+}
+
+const BEZIER_LOCALS: LocalDoc = LocalDoc::Bezier { degree: 3 };
+
+impl BlendingSplineDoc {
+    /// The source of the locals: a model with a count, or knots with a list of curves.
+    pub fn source(&self) -> Result<BlendingSource<'_>> {
+        match (&self.model, &self.knots, &self.local_curves) {
+            (Some(_), Some(_), _) => {
+                Err(DocumentError::new("knots", "give either a model or explicit knots, not both"))
+            }
+            (None, None, _) => {
+                Err(DocumentError::new("model", "missing (give a model curve, or knots and a list of local curves)"))
+            }
+            (Some(model), None, LocalCurves::Count(n)) => Ok(BlendingSource::Model {
+                model,
+                local_curves: *n,
+                local: self.local.as_ref().unwrap_or(&BEZIER_LOCALS),
+                knot_spacing: self.knot_spacing.unwrap_or_default(),
+            }),
+            (Some(_), None, LocalCurves::List(_)) => Err(local_curves_kind(true, "an array")),
+            (None, Some(_), LocalCurves::Count(_)) => Err(local_curves_kind(false, "a number")),
+            (None, Some(knots), LocalCurves::List(list)) => {
+                if self.local.is_some() || self.knot_spacing.is_some() {
+                    return Err(DocumentError::new(
+                        if self.local.is_some() { "local" } else { "knot_spacing" },
+                        "only for blending splines built from a model",
+                    ));
+                }
+                Ok(BlendingSource::Explicit { knots, local_curves: list })
+            }
+        }
+    }
+
+    /// The kernel curve in dimension D (the document's), posed at [`Self::time`].
+    pub fn curve<const D: usize>(&self) -> Result<BlendingSplineCurve<D>> {
+        let b = self.bfunction.as_ref().unwrap_or(&DEFAULT_BFUNCTION).build().map_err(|e| e.within("bfunction"))?;
+        let mut c = match self.source()? {
+            BlendingSource::Model { model, local_curves, local, knot_spacing } => {
+                let model: Arc<dyn Curve<D>> = Arc::from(model.build_in::<D>().map_err(|e| e.within("model"))?);
+                let closed = self.closed.unwrap_or_else(|| model.is_closed());
+                let kind = match local {
+                    LocalDoc::Bezier { degree } => LocalKind::Bezier(*degree),
+                    LocalDoc::SubCurve => LocalKind::SubCurve,
+                    LocalDoc::Arc => LocalKind::Arc,
+                };
+                let spacing = match knot_spacing {
+                    KnotSpacingDoc::Uniform => KnotSpacing::Uniform,
+                    KnotSpacingDoc::ChordLength => KnotSpacing::ChordLength,
+                };
+                BlendingSplineCurve::from_model_spaced(model, local_curves, kind, b, closed, spacing)?
+            }
+            BlendingSource::Explicit { knots, local_curves } => {
+                let locals = local_curves
+                    .iter()
+                    .enumerate()
+                    .map(|(i, c)| c.build_in::<D>().map(Arc::from).map_err(|e| e.within(&format!("local_curves[{i}]"))))
+                    .collect::<Result<Vec<Arc<dyn Curve<D>>>>>()?;
+                BlendingSplineCurve::from_locals(knots.to_vec(), locals, b, self.closed.unwrap_or(false))?
+            }
+        };
+        self.pose(&mut c)?;
+        Ok(c)
+    }
+
+    /// Applies the rest transforms and, at [`Self::time`], the animation.
+    fn pose<const D: usize>(&self, c: &mut BlendingSplineCurve<D>) -> Result<()> {
+        let n = c.local_count();
+        for (i, t) in &self.transforms {
+            if *i >= n {
+                return Err(DocumentError::new(
+                    "transforms",
+                    format!("local curve {i} does not exist (there are {n})"),
+                ));
+            }
+            let origin = c.origin(*i);
+            c.set_transform(*i, t.build::<D>(&format!("transforms[{i}]"), &origin)?);
+        }
+        let tracks = tracks::<usize, D>(&self.animation)?;
+        if let Some((i, t)) = tracks.iter().enumerate().find(|(_, t)| t.local >= n) {
+            return Err(DocumentError::new(
+                format!("animation[{i}].local"),
+                format!("local curve {} does not exist (there are {n})", t.local),
+            ));
+        }
+        if let Some(time) = self.time {
+            let rest = c.transforms();
+            c.animate(&rest, &tracks, time)?;
+        }
+        Ok(())
+    }
+}
+
+/// The error for `local_curves` of the wrong JSON kind for the source.
+fn local_curves_kind(with_model: bool, got: &str) -> DocumentError {
+    let expected = if with_model {
+        "with a model, expected a count of local curves"
+    } else {
+        "with explicit knots, expected a list of curves"
+    };
+    DocumentError::new("local_curves", format!("{expected}, got {got}"))
+}
+
+impl DocumentKind for BlendingSplineDoc {
+    type Family = Curves;
+
+    /// Checks `local_curves` against `model`/`knots` on the JSON first (the message names
+    /// its JSON kind), then the fields, then [`BlendingSplineDoc::source`].
+    fn from_fields(fields: Value) -> Result<Self> {
+        let given = |key: &str| fields.get(key).is_some_and(|v| !v.is_null());
+        if let Some(local_curves) = fields.get("local_curves") {
+            match (given("model"), given("knots")) {
+                (true, false) if local_curves.as_u64().is_none() => {
+                    return Err(local_curves_kind(true, kind(local_curves)));
+                }
+                (false, true) if !local_curves.is_array() => return Err(local_curves_kind(false, kind(local_curves))),
+                _ => {}
+            }
+        }
+        let doc: Self = crate::json::fields(fields)?;
+        doc.source()?;
+        Ok(doc)
+    }
+    fn dimension(&self) -> Result<usize> {
+        match self.source()? {
+            BlendingSource::Model { model, .. } => model.dimension().map_err(|e| e.within("model")),
+            BlendingSource::Explicit { local_curves, .. } => {
+                let first = local_curves
+                    .first()
+                    .ok_or_else(|| DocumentError::new("local_curves", "the list is empty"))?
+                    .dimension()
+                    .map_err(|e| e.within("local_curves[0]"))?;
+                for (i, c) in local_curves.iter().enumerate().skip(1) {
+                    let d = c.dimension().map_err(|e| e.within(&format!("local_curves[{i}]")))?;
+                    if d != first {
+                        return Err(DocumentError::new(
+                            format!("local_curves[{i}]"),
+                            format!("expected a curve of dimension {first} like local_curves[0], got {d}"),
+                        ));
+                    }
+                }
+                Ok(first)
+            }
+        }
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+        Ok(Box::new(self.curve::<D>()?))
+    }
+    /// Ten cubic Bézier locals on the heart curve.
+    fn example() -> Self {
+        BlendingSplineDoc {
+            model: Some(Box::new(CurveDocument::Heart(HeartDoc::default()))),
+            local_curves: LocalCurves::Count(10),
+            knots: None,
+            knot_spacing: None,
+            local: None,
+            bfunction: None,
+            closed: None,
+            transforms: Vec::new(),
+            animation: Vec::new(),
+            time: None,
+        }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::LocalCurves(self)
+    }
+    fn set_time(&mut self, time: f64) {
+        self.time = Some(time);
+        if let Some(model) = &mut self.model {
+            model.set_time(time);
+        }
+        if let LocalCurves::List(list) = &mut self.local_curves {
+            list.iter_mut().for_each(|c| c.set_time(time));
+        }
+    }
+}

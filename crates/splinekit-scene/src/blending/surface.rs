@@ -1,0 +1,148 @@
+//! `blending_spline_surface` documents: tensor-product blending splines of local patches
+//! made from a model surface, with rest transforms and an animation.
+
+use std::sync::Arc;
+
+use serde::{Deserialize, Serialize};
+use splinekit::blend::{BlendingSplineSurface, PatchKind};
+use splinekit::frame::Affine;
+use splinekit::surface::Surface;
+
+use super::DEFAULT_BFUNCTION;
+use super::animation::{TrackDoc, tracks};
+use crate::bfunctions::BFunctionDoc;
+use crate::dimension::Surfaces;
+use crate::error::{DocumentError, Result};
+use crate::registry::{Decoration, DocumentKind};
+use crate::surfaces::{SurfaceDocument, TorusDoc};
+use crate::transforms::PatchTransforms;
+
+/// The kind of local patches.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum LocalPatchDoc {
+    /// Bézier patches of degrees [d_u, d_v] Hermite-fitted to the model's mixed partials.
+    Bezier {
+        /// [d_u, d_v] (default [3, 3]).
+        #[serde(default = "bicubic")]
+        degree: [usize; 2],
+    },
+    /// The model itself around each knot pair.
+    SubSurface,
+}
+
+fn bicubic() -> [usize; 2] {
+    [3, 3]
+}
+
+const BICUBIC_PATCHES: LocalPatchDoc = LocalPatchDoc::Bezier { degree: [3, 3] };
+
+/// `{"type":"blending_spline_surface","model":{…},"local_surfaces":[n_u,n_v],"local":{…},
+/// "bfunction":{…},"closed_u":…,"closed_v":…,"transforms":…,"animation":[…]}`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BlendingSplineSurfaceDoc {
+    /// The model surface.
+    pub model: Box<SurfaceDocument>,
+    /// [n_u, n_v].
+    pub local_surfaces: [usize; 2],
+    /// Kind of patches (default bicubic Bézier).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub local: Option<LocalPatchDoc>,
+    /// The B-function (default ERBS).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bfunction: Option<BFunctionDoc>,
+    /// Closed in u (default: the model's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub closed_u: Option<bool>,
+    /// Closed in v (default: the model's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub closed_v: Option<bool>,
+    /// Per-patch rest transforms.
+    #[serde(default, with = "crate::transforms::by_pair", skip_serializing_if = "Vec::is_empty")]
+    pub transforms: PatchTransforms,
+    /// Animation tracks (`local` is [k, l]).
+    #[serde(default, deserialize_with = "crate::json::list", skip_serializing_if = "Vec::is_empty")]
+    pub animation: Vec<TrackDoc<(usize, usize)>>,
+    /// The time at which the animation is posed (`None`: the rest pose).
+    #[serde(skip)]
+    pub time: Option<f64>,
+}
+
+impl BlendingSplineSurfaceDoc {
+    /// The kernel surface in dimension D (the document's), posed at [`Self::time`].
+    pub fn surface<const D: usize>(&self) -> Result<BlendingSplineSurface<D>> {
+        let model: Arc<dyn Surface<D>> = Arc::from(self.model.build_in::<D>().map_err(|e| e.within("model"))?);
+        let closed = (
+            self.closed_u.unwrap_or_else(|| model.is_closed_u()),
+            self.closed_v.unwrap_or_else(|| model.is_closed_v()),
+        );
+        let kind = match self.local.as_ref().unwrap_or(&BICUBIC_PATCHES) {
+            LocalPatchDoc::Bezier { degree } => PatchKind::Bezier(degree[0], degree[1]),
+            LocalPatchDoc::SubSurface => PatchKind::SubSurface,
+        };
+        let b = self.bfunction.as_ref().unwrap_or(&DEFAULT_BFUNCTION).build().map_err(|e| e.within("bfunction"))?;
+        let counts = (self.local_surfaces[0], self.local_surfaces[1]);
+        let mut s = BlendingSplineSurface::from_model(model, counts, kind, b, closed)?;
+        self.pose(&mut s)?;
+        Ok(s)
+    }
+
+    /// Applies the rest transforms and, at [`Self::time`], the animation.
+    fn pose<const D: usize>(&self, s: &mut BlendingSplineSurface<D>) -> Result<()> {
+        let (nu, nv) = s.local_count();
+        for ((k, l), t) in &self.transforms {
+            if *k >= nu || *l >= nv {
+                return Err(DocumentError::new(
+                    "transforms",
+                    format!("patch [{k}, {l}] does not exist (there are {nu}×{nv})"),
+                ));
+            }
+            let origin = s.origin(*k, *l);
+            s.set_transform(*k, *l, t.build::<D>(&format!("transforms[{k}][{l}]"), &origin)?);
+        }
+        let tracks = tracks::<(usize, usize), D>(&self.animation)?;
+        if let Some((i, t)) = tracks.iter().enumerate().find(|(_, t)| t.local.0 >= nu || t.local.1 >= nv) {
+            return Err(DocumentError::new(
+                format!("animation[{i}].local"),
+                format!("patch [{}, {}] does not exist (there are {nu}×{nv})", t.local.0, t.local.1),
+            ));
+        }
+        if let Some(time) = self.time {
+            let rest: Vec<Affine<D>> = s.transforms();
+            s.animate(&rest, &tracks, time)?;
+        }
+        Ok(())
+    }
+}
+
+impl DocumentKind for BlendingSplineSurfaceDoc {
+    type Family = Surfaces;
+    fn dimension(&self) -> Result<usize> {
+        self.model.dimension().map_err(|e| e.within("model"))
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
+        Ok(Box::new(self.surface::<D>()?))
+    }
+    /// 6 × 4 bicubic patches on the torus.
+    fn example() -> Self {
+        BlendingSplineSurfaceDoc {
+            model: Box::new(SurfaceDocument::Torus(TorusDoc::default())),
+            local_surfaces: [6, 4],
+            local: None,
+            bfunction: None,
+            closed_u: None,
+            closed_v: None,
+            transforms: Vec::new(),
+            animation: Vec::new(),
+            time: None,
+        }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::LocalPatches(self)
+    }
+    fn set_time(&mut self, time: f64) {
+        self.time = Some(time);
+        self.model.set_time(time);
+    }
+}

@@ -1,0 +1,312 @@
+//! Documents of curves given by points: Bézier, rational Bézier, B-spline, NURBS,
+//! Hermite, Catmull–Rom and the line segment, in any dimension 1 … 4.
+
+use serde::{Deserialize, Serialize};
+use splinekit::curve::model::Line;
+use splinekit::curve::{
+    BSplineCurve, BezierCurve, CatmullRomCurve, Curve, HermiteCurve, NurbsCurve, RationalBezierCurve,
+};
+
+use crate::defaults::is_false;
+use crate::dimension::Curves;
+use crate::error::{DocumentError, Result};
+use crate::points::{check_finite_list, dimension_of, to_point, to_points};
+use crate::registry::{Decoration, DocumentKind};
+
+/// `{"type":"bezier","control_points":[[x,y],...]}`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BezierDoc {
+    /// Control points P_0 … P_n.
+    pub control_points: Vec<Vec<f64>>,
+}
+
+impl DocumentKind for BezierDoc {
+    type Family = Curves;
+    fn dimension(&self) -> Result<usize> {
+        dimension_of("control_points", &self.control_points)
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+        Ok(Box::new(BezierCurve::new(to_points::<D>(&self.control_points))?))
+    }
+    fn example() -> Self {
+        BezierDoc { control_points: vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![3.0, 2.0], vec![4.0, 0.0]] }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::ControlPolygon { points: &self.control_points, closed: false }
+    }
+    fn set_time(&mut self, _time: f64) {}
+}
+
+/// `{"type":"rational_bezier","control_points":[...],"weights":[...]}`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RationalBezierDoc {
+    /// Control points.
+    pub control_points: Vec<Vec<f64>>,
+    /// One positive weight per control point.
+    pub weights: Vec<f64>,
+}
+
+impl DocumentKind for RationalBezierDoc {
+    type Family = Curves;
+    fn dimension(&self) -> Result<usize> {
+        dimension_of("control_points", &self.control_points)
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+        check_finite_list("weights", &self.weights)?;
+        Ok(Box::new(RationalBezierCurve::new(to_points::<D>(&self.control_points), self.weights.clone())?))
+    }
+    /// A quarter of the unit circle.
+    fn example() -> Self {
+        RationalBezierDoc {
+            control_points: vec![vec![1.0, 0.0], vec![1.0, 1.0], vec![0.0, 1.0]],
+            weights: vec![1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0],
+        }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::ControlPolygon { points: &self.control_points, closed: false }
+    }
+    fn set_time(&mut self, _time: f64) {}
+}
+
+/// `{"type":"bspline","degree":p,"knots":[...],"control_points":[...],"periodic":false}`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BSplineDoc {
+    /// Degree p.
+    pub degree: usize,
+    /// n + p + 1 knots.
+    pub knots: Vec<f64>,
+    /// n control points.
+    pub control_points: Vec<Vec<f64>>,
+    /// Closed, with cyclic control points (see `splinekit::curve::BSplineCurve::new_periodic`).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub periodic: bool,
+}
+
+impl BSplineDoc {
+    /// The kernel curve in dimension D (the document's).
+    pub fn curve<const D: usize>(&self) -> Result<BSplineCurve<D>> {
+        check_finite_list("knots", &self.knots)?;
+        let points = to_points::<D>(&self.control_points);
+        Ok(if self.periodic {
+            BSplineCurve::new_periodic(self.degree, self.knots.clone(), points)?
+        } else {
+            BSplineCurve::new(self.degree, self.knots.clone(), points)?
+        })
+    }
+}
+
+impl DocumentKind for BSplineDoc {
+    type Family = Curves;
+    fn dimension(&self) -> Result<usize> {
+        dimension_of("control_points", &self.control_points)
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+        Ok(Box::new(self.curve::<D>()?))
+    }
+    /// A clamped cubic through eight points.
+    fn example() -> Self {
+        BSplineDoc {
+            degree: 3,
+            knots: vec![0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 5.0, 5.0, 5.0],
+            control_points: [
+                [0.0, 0.0],
+                [1.0, 2.0],
+                [2.0, -1.0],
+                [3.0, 1.0],
+                [4.0, 0.0],
+                [5.0, 2.0],
+                [6.0, -1.0],
+                [7.0, 0.0],
+            ]
+            .iter()
+            .map(|p| p.to_vec())
+            .collect(),
+            periodic: false,
+        }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::ControlPolygon { points: &self.control_points, closed: self.periodic }
+    }
+    fn set_time(&mut self, _time: f64) {}
+}
+
+/// `{"type":"nurbs", ...bspline fields..., "weights":[...]}`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NurbsDoc {
+    /// Degree p.
+    pub degree: usize,
+    /// n + p + 1 knots.
+    pub knots: Vec<f64>,
+    /// n control points.
+    pub control_points: Vec<Vec<f64>>,
+    /// n positive weights.
+    pub weights: Vec<f64>,
+    /// Closed, with cyclic control points.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub periodic: bool,
+}
+
+impl NurbsDoc {
+    /// The kernel curve in dimension D (the document's).
+    pub fn curve<const D: usize>(&self) -> Result<NurbsCurve<D>> {
+        check_finite_list("knots", &self.knots)?;
+        check_finite_list("weights", &self.weights)?;
+        let points = to_points::<D>(&self.control_points);
+        let (knots, weights) = (self.knots.clone(), self.weights.clone());
+        Ok(if self.periodic {
+            NurbsCurve::new_periodic(self.degree, knots, points, weights)?
+        } else {
+            NurbsCurve::new(self.degree, knots, points, weights)?
+        })
+    }
+}
+
+impl DocumentKind for NurbsDoc {
+    type Family = Curves;
+    fn dimension(&self) -> Result<usize> {
+        dimension_of("control_points", &self.control_points)
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+        Ok(Box::new(self.curve::<D>()?))
+    }
+    /// The exact unit circle: nine points of a square, quadratic, weights 1 and 1/√2.
+    fn example() -> Self {
+        let w = std::f64::consts::FRAC_1_SQRT_2;
+        NurbsDoc {
+            degree: 2,
+            knots: vec![0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0],
+            control_points: [
+                [1.0, 0.0],
+                [1.0, 1.0],
+                [0.0, 1.0],
+                [-1.0, 1.0],
+                [-1.0, 0.0],
+                [-1.0, -1.0],
+                [0.0, -1.0],
+                [1.0, -1.0],
+                [1.0, 0.0],
+            ]
+            .iter()
+            .map(|p| p.to_vec())
+            .collect(),
+            weights: vec![1.0, w, 1.0, w, 1.0, w, 1.0, w, 1.0],
+            periodic: false,
+        }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::ControlPolygon { points: &self.control_points, closed: self.periodic }
+    }
+    fn set_time(&mut self, _time: f64) {}
+}
+
+/// `{"type":"hermite","points":[...],"tangents":[...],"params":[...]}`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HermiteDoc {
+    /// Interpolated points.
+    pub points: Vec<Vec<f64>>,
+    /// First derivatives at the points.
+    pub tangents: Vec<Vec<f64>>,
+    /// Strictly increasing parameters (default 0, 1, 2, …).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub params: Option<Vec<f64>>,
+}
+
+impl DocumentKind for HermiteDoc {
+    type Family = Curves;
+    fn dimension(&self) -> Result<usize> {
+        dimension_of("points", &self.points)
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+        if self.tangents.len() != self.points.len() {
+            return Err(DocumentError::new(
+                "tangents",
+                format!("expected {} tangents, one per point, got {}", self.points.len(), self.tangents.len()),
+            ));
+        }
+        let dt = dimension_of("tangents", &self.tangents)?;
+        if dt != D {
+            return Err(DocumentError::new("tangents", format!("expected {D} coordinates like the points, got {dt}")));
+        }
+        let (points, tangents) = (to_points::<D>(&self.points), to_points::<D>(&self.tangents));
+        Ok(Box::new(HermiteCurve::new(points, tangents, self.params.clone())?))
+    }
+    fn example() -> Self {
+        HermiteDoc {
+            points: vec![vec![0.0, 0.0], vec![2.0, 1.0], vec![4.0, 0.0]],
+            tangents: vec![vec![1.0, 1.0], vec![1.0, 0.0], vec![1.0, -1.0]],
+            params: Some(vec![0.0, 1.0, 3.0]),
+        }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::ControlPolygon { points: &self.points, closed: false }
+    }
+    fn set_time(&mut self, _time: f64) {}
+}
+
+/// `{"type":"catmull_rom","points":[...],"alpha":0,"closed":false}`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CatmullRomDoc {
+    /// Interpolated points.
+    pub points: Vec<Vec<f64>>,
+    /// 0 uniform (default), 0.5 centripetal, 1 chordal.
+    #[serde(default)]
+    pub alpha: f64,
+    /// Closed loop through the points.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub closed: bool,
+}
+
+impl DocumentKind for CatmullRomDoc {
+    type Family = Curves;
+    fn dimension(&self) -> Result<usize> {
+        dimension_of("points", &self.points)
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+        Ok(Box::new(CatmullRomCurve::new(to_points::<D>(&self.points), self.alpha, self.closed)?))
+    }
+    /// A centripetal spline through four points.
+    fn example() -> Self {
+        CatmullRomDoc {
+            points: vec![vec![0.0, 0.0], vec![1.0, 1.0], vec![3.0, 1.0], vec![4.0, 0.0]],
+            alpha: 0.5,
+            closed: false,
+        }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::ControlPolygon { points: &self.points, closed: self.closed }
+    }
+    fn set_time(&mut self, _time: f64) {}
+}
+
+/// `{"type":"line","from":[...],"to":[...]}`, t ∈ [0, 1].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LineDoc {
+    /// c(0).
+    pub from: Vec<f64>,
+    /// c(1).
+    pub to: Vec<f64>,
+}
+
+impl DocumentKind for LineDoc {
+    type Family = Curves;
+    fn dimension(&self) -> Result<usize> {
+        dimension_of("from", std::slice::from_ref(&self.from))
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+        Ok(Box::new(Line::new(to_point::<D>("from", &self.from)?, to_point::<D>("to", &self.to)?)?))
+    }
+    fn example() -> Self {
+        LineDoc { from: vec![0.0, 0.0, 0.0], to: vec![1.0, 2.0, 0.0] }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::None
+    }
+    fn set_time(&mut self, _time: f64) {}
+}

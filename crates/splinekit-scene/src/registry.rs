@@ -1,0 +1,192 @@
+//! The registry of document kinds: what every curve or surface kind declares, and the
+//! macro that turns one list of kinds into the document enum and everything that
+//! dispatches on it.
+//!
+//! A kind is a document struct (its fields, with serde) that implements [`DocumentKind`]:
+//! its dimension, its kernel object, an example document, what a scene draws besides it,
+//! and how it poses animations. The lists in [`crate::curves`] and [`crate::surfaces`] name
+//! each kind once with its `type`; [`document_kinds!`] makes from them the enum, the
+//! `"type"` dispatch of parsing and serialising, the list of type names, and `dimension`,
+//! `build`, `examples`, `decoration` and `set_time` on the enum — each a match over every
+//! kind, so a kind that lacks one of them does not compile.
+
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+use serde_json::Value;
+
+use crate::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
+use crate::dimension::ShapeFamily;
+use crate::error::Result;
+
+/// The `type` name of a kind, set by its line in a [`document_kinds!`] list.
+pub trait KindName {
+    /// The `type` in documents, e.g. `"bezier"`.
+    const TYPE: &'static str;
+}
+
+/// One kind of curve or surface document.
+pub trait DocumentKind: KindName + Clone + Serialize + DeserializeOwned {
+    /// Curves or surfaces.
+    type Family: ShapeFamily;
+
+    /// Parses the document's fields (the object without its `type`). The default is serde
+    /// with located errors; kinds whose fields depend on each other check them here.
+    fn from_fields(fields: Value) -> Result<Self> {
+        crate::json::fields(fields)
+    }
+
+    /// The dimension of the shape's points, read from the document (model shapes: 3).
+    fn dimension(&self) -> Result<usize>;
+
+    /// The kernel object in dimension D, which must be the document's [`Self::dimension`].
+    fn build_in<const D: usize>(&self) -> Result<Box<<Self::Family as ShapeFamily>::Shape<D>>>;
+
+    /// A document of this kind with sensible values, for editors and galleries.
+    fn example() -> Self;
+
+    /// What a scene may draw besides the shape (see [`Decoration`]).
+    fn decoration(&self) -> Decoration<'_>;
+
+    /// Poses every animated blending spline in the document, nested ones too, at `time`
+    /// (seconds); kinds without animations and without nested documents do nothing.
+    fn set_time(&mut self, time: f64);
+}
+
+/// What a scene draws besides a shape when its style asks for control nets
+/// (`control_net`) or local pieces (`local_pieces`).
+#[derive(Debug, Clone, Copy)]
+pub enum Decoration<'a> {
+    /// Nothing besides the shape.
+    None,
+    /// A control polygon (curves from control points or interpolated points).
+    ControlPolygon {
+        /// The points, each of 1 to 4 coordinates.
+        points: &'a [Vec<f64>],
+        /// Whether the last point joins the first.
+        closed: bool,
+    },
+    /// A control net, rows along u.
+    ControlNet(&'a [Vec<Vec<f64>>]),
+    /// The local curves of a blending-spline curve.
+    LocalCurves(&'a BlendingSplineDoc),
+    /// The local patches of a blending-spline surface.
+    LocalPatches(&'a BlendingSplineSurfaceDoc),
+}
+
+/// Declares the document enum of a family from its list of kinds.
+///
+/// ```text
+/// document_kinds! {
+///     /// A curve shape document.
+///     pub enum CurveDocument of Curves {
+///         /// Bézier curve.
+///         Bezier(BezierDoc) = "bezier",
+///         …
+///     }
+/// }
+/// ```
+///
+/// Each `Variant(Doc) = "name"` line makes an enum variant serialised with
+/// `"type": "name"` and gives `Doc` its [`KindName`]; `Doc` must implement
+/// [`DocumentKind`] of that family. The enum gets `TYPES`, `type_name`, `parse_fields`,
+/// `examples`, `dimension`, `build_in`, `build`, `decoration`, `set_time`, `to_value`, and a
+/// `Deserialize` through its own `parse` (written beside the list, for the family's
+/// message about unknown types).
+macro_rules! document_kinds {
+    (
+        $(#[$meta:meta])*
+        pub enum $Enum:ident of $Family:ty {
+            $( $(#[$variant_meta:meta])* $Variant:ident($Doc:ty) = $name:literal, )+
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, PartialEq, serde::Serialize)]
+        #[serde(tag = "type")]
+        pub enum $Enum {
+            $( $(#[$variant_meta])* #[serde(rename = $name)] $Variant($Doc), )+
+        }
+
+        $( impl $crate::registry::KindName for $Doc {
+            const TYPE: &'static str = $name;
+        } )+
+
+        impl $Enum {
+            /// Every `type` name of the family, in the order of its registry.
+            pub const TYPES: &'static [&'static str] = &[$($name),+];
+
+            /// The `type` name.
+            pub fn type_name(&self) -> &'static str {
+                match self {
+                    $( Self::$Variant(_) => $name, )+
+                }
+            }
+
+            /// Parses the fields of a document of type `ty` (the object without its
+            /// `type`); `None` when `ty` is not a kind of this family.
+            pub fn parse_fields(ty: &str, fields: serde_json::Value) -> Option<$crate::Result<Self>> {
+                match ty {
+                    $( $name => Some(
+                        <$Doc as $crate::registry::DocumentKind>::from_fields(fields).map(Self::$Variant)
+                    ), )+
+                    _ => None,
+                }
+            }
+
+            /// A document of every kind, with sensible values, in the order of the registry.
+            pub fn examples() -> Vec<Self> {
+                vec![$( Self::$Variant(<$Doc as $crate::registry::DocumentKind>::example()), )+]
+            }
+
+            /// The dimension of the shape's points.
+            pub fn dimension(&self) -> $crate::Result<usize> {
+                match self {
+                    $( Self::$Variant(d) => $crate::registry::DocumentKind::dimension(d), )+
+                }
+            }
+
+            /// Builds the shape in dimension D (which must be the document's).
+            pub fn build_in<const D: usize>(
+                &self,
+            ) -> $crate::Result<Box<<$Family as $crate::dimension::ShapeFamily>::Shape<D>>> {
+                match self {
+                    $( Self::$Variant(d) => $crate::registry::DocumentKind::build_in::<D>(d), )+
+                }
+            }
+
+            /// Builds the shape in the dimension its points ask for.
+            pub fn build(&self) -> $crate::Result<$crate::dimension::AnyDimension<$Family>> {
+                let dimension = self.dimension()?;
+                $crate::with_dimension!(dimension, "control_points", D => {
+                    $crate::dimension::AnyDimension::new(self.build_in::<D>()?, "control_points")
+                })
+            }
+
+            /// What a scene may draw besides the shape.
+            pub fn decoration(&self) -> $crate::registry::Decoration<'_> {
+                match self {
+                    $( Self::$Variant(d) => $crate::registry::DocumentKind::decoration(d), )+
+                }
+            }
+
+            /// Poses every animated blending spline in the document (nested ones too) at
+            /// `time` (seconds).
+            pub fn set_time(&mut self, time: f64) {
+                match self {
+                    $( Self::$Variant(d) => $crate::registry::DocumentKind::set_time(d, time), )+
+                }
+            }
+
+            /// The document as JSON.
+            pub fn to_value(&self) -> serde_json::Value {
+                serde_json::to_value(self).expect("documents serialise")
+            }
+        }
+
+        impl<'de> serde::Deserialize<'de> for $Enum {
+            fn deserialize<De: serde::Deserializer<'de>>(deserializer: De) -> std::result::Result<Self, De::Error> {
+                $crate::json::nested(deserializer, Self::parse)
+            }
+        }
+    };
+}
+pub(crate) use document_kinds;

@@ -1,0 +1,187 @@
+//! Documents of tensor-product surfaces given by control nets: Bézier, B-spline and NURBS,
+//! in any dimension 1 … 4. `control_points[i][j]` is P_ij, rows along u.
+
+use serde::{Deserialize, Serialize};
+use splinekit::Point;
+use splinekit::surface::{BSplineSurface, BezierSurface, NurbsSurface, Surface};
+
+use crate::defaults::is_false;
+use crate::dimension::Surfaces;
+use crate::error::{DocumentError, Result};
+use crate::points::{check_finite_list, dimension_of, to_points};
+use crate::registry::{Decoration, DocumentKind};
+
+/// `{"type":"bezier_surface","control_points":[[...row...],...]}`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BezierSurfaceDoc {
+    /// Rows of control points (rows along u).
+    pub control_points: Vec<Vec<Vec<f64>>>,
+}
+
+impl DocumentKind for BezierSurfaceDoc {
+    type Family = Surfaces;
+    fn dimension(&self) -> Result<usize> {
+        net_dimension("control_points", &self.control_points)
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
+        Ok(Box::new(BezierSurface::new(net_points::<D>(&self.control_points))?))
+    }
+    /// A biquadratic bump over [0, 2]².
+    fn example() -> Self {
+        BezierSurfaceDoc { control_points: bump() }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::ControlNet(&self.control_points)
+    }
+    fn set_time(&mut self, _time: f64) {}
+}
+
+/// `{"type":"bspline_surface", ...}`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BSplineSurfaceDoc {
+    /// Degree in u.
+    pub degree_u: usize,
+    /// Degree in v.
+    pub degree_v: usize,
+    /// n_u + degree_u + 1 knots.
+    pub knots_u: Vec<f64>,
+    /// n_v + degree_v + 1 knots.
+    pub knots_v: Vec<f64>,
+    /// n_u rows of n_v points.
+    pub control_points: Vec<Vec<Vec<f64>>>,
+    /// Closed in u with cyclic rows.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub periodic_u: bool,
+    /// Closed in v with cyclic columns.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub periodic_v: bool,
+}
+
+impl DocumentKind for BSplineSurfaceDoc {
+    type Family = Surfaces;
+    fn dimension(&self) -> Result<usize> {
+        net_dimension("control_points", &self.control_points)
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
+        check_finite_list("knots_u", &self.knots_u)?;
+        check_finite_list("knots_v", &self.knots_v)?;
+        Ok(Box::new(BSplineSurface::new(
+            (self.degree_u, self.degree_v),
+            self.knots_u.clone(),
+            self.knots_v.clone(),
+            net_points::<D>(&self.control_points),
+            (self.periodic_u, self.periodic_v),
+        )?))
+    }
+    /// The biquadratic bump as one clamped B-spline patch.
+    fn example() -> Self {
+        BSplineSurfaceDoc {
+            degree_u: 2,
+            degree_v: 2,
+            knots_u: vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+            knots_v: vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+            control_points: bump(),
+            periodic_u: false,
+            periodic_v: false,
+        }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::ControlNet(&self.control_points)
+    }
+    fn set_time(&mut self, _time: f64) {}
+}
+
+/// `{"type":"nurbs_surface", ...bspline_surface fields..., "weights":[[...]]}`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NurbsSurfaceDoc {
+    /// Degree in u.
+    pub degree_u: usize,
+    /// Degree in v.
+    pub degree_v: usize,
+    /// n_u + degree_u + 1 knots.
+    pub knots_u: Vec<f64>,
+    /// n_v + degree_v + 1 knots.
+    pub knots_v: Vec<f64>,
+    /// n_u rows of n_v points.
+    pub control_points: Vec<Vec<Vec<f64>>>,
+    /// n_u rows of n_v positive weights.
+    pub weights: Vec<Vec<f64>>,
+    /// Closed in u.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub periodic_u: bool,
+    /// Closed in v.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub periodic_v: bool,
+}
+
+impl DocumentKind for NurbsSurfaceDoc {
+    type Family = Surfaces;
+    fn dimension(&self) -> Result<usize> {
+        net_dimension("control_points", &self.control_points)
+    }
+    fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
+        check_finite_list("knots_u", &self.knots_u)?;
+        check_finite_list("knots_v", &self.knots_v)?;
+        for (i, row) in self.weights.iter().enumerate() {
+            check_finite_list(&format!("weights[{i}]"), row)?;
+        }
+        Ok(Box::new(NurbsSurface::new(
+            (self.degree_u, self.degree_v),
+            self.knots_u.clone(),
+            self.knots_v.clone(),
+            net_points::<D>(&self.control_points),
+            self.weights.clone(),
+            (self.periodic_u, self.periodic_v),
+        )?))
+    }
+    /// A bilinear patch pulled towards its raised corner by the weight 3.
+    fn example() -> Self {
+        NurbsSurfaceDoc {
+            degree_u: 1,
+            degree_v: 1,
+            knots_u: vec![0.0, 0.0, 1.0, 1.0],
+            knots_v: vec![0.0, 0.0, 1.0, 1.0],
+            control_points: vec![
+                vec![vec![0.0, 0.0, 0.0], vec![0.0, 1.0, 0.0]],
+                vec![vec![1.0, 0.0, 0.0], vec![1.0, 1.0, 1.0]],
+            ],
+            weights: vec![vec![1.0, 1.0], vec![1.0, 3.0]],
+            periodic_u: false,
+            periodic_v: false,
+        }
+    }
+    fn decoration(&self) -> Decoration<'_> {
+        Decoration::ControlNet(&self.control_points)
+    }
+    fn set_time(&mut self, _time: f64) {}
+}
+
+/// A 3 × 3 net over [0, 2]² with its middle point raised.
+fn bump() -> Vec<Vec<Vec<f64>>> {
+    (0..3)
+        .map(|i| (0..3).map(|j| vec![i as f64, j as f64, if (i, j) == (1, 1) { 2.0 } else { 0.0 }]).collect())
+        .collect()
+}
+
+/// The common dimension of a control net's points; rows must agree.
+fn net_dimension(field: &str, net: &[Vec<Vec<f64>>]) -> Result<usize> {
+    let first = net.first().ok_or_else(|| DocumentError::new(field, "expected at least 1 row, got 0"))?;
+    let d = dimension_of(&format!("{field}[0]"), first)?;
+    for (i, row) in net.iter().enumerate() {
+        let di = dimension_of(&format!("{field}[{i}]"), row)?;
+        if di != d {
+            return Err(DocumentError::new(
+                format!("{field}[{i}]"),
+                format!("expected points of {d} coordinates like the first row, got {di}"),
+            ));
+        }
+    }
+    Ok(d)
+}
+
+fn net_points<const D: usize>(net: &[Vec<Vec<f64>>]) -> Vec<Vec<Point<D>>> {
+    net.iter().map(|r| to_points::<D>(r)).collect()
+}
