@@ -8,12 +8,12 @@
 //!  "animation": {"duration": 1, "fps": 20}}
 //! ```
 
-use serde::{Deserialize, Serialize};
+use serde::{Deserialize, Deserializer, Serialize};
 use serde_json::Value;
 
 use crate::ShapeDocument;
 use crate::error::{DocumentError, Result};
-use crate::json::{fields, kind, split_type};
+use crate::json::{fields, kind, nested, split_type};
 
 fn default_line_width() -> f32 {
     2.5
@@ -50,6 +50,29 @@ pub struct StyleDoc {
     pub hidden: bool,
 }
 
+impl StyleDoc {
+    /// Checks the ranges serde does not: colour, line width and density.
+    fn check(&self) -> Result<()> {
+        if let Some(c) = &self.color
+            && (!(3..=4).contains(&c.len()) || c.iter().any(|x| !(0.0..=1.0).contains(x)))
+        {
+            return Err(DocumentError::new("color", format!("expected 3 or 4 numbers in [0, 1], got {c:?}")));
+        }
+        if !(self.line_width > 0.0 && self.line_width <= 64.0) {
+            return Err(DocumentError::new(
+                "line_width",
+                format!("must be in (0, 64] pixels, got {}", self.line_width),
+            ));
+        }
+        if let Some(d) = self.density
+            && !(1..=2048).contains(&d)
+        {
+            return Err(DocumentError::new("density", format!("must be between 1 and 2048, got {d}")));
+        }
+        Ok(())
+    }
+}
+
 impl Default for StyleDoc {
     fn default() -> Self {
         StyleDoc {
@@ -76,7 +99,7 @@ pub enum ColorMapDoc {
     V,
 }
 
-/// One object of a scene: a shape and its style.
+/// One object of a scene: `{"shape": {…}, "points": [[x, y, z], …], …style…}`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SceneObject {
     /// The shape.
@@ -85,6 +108,41 @@ pub struct SceneObject {
     pub style: StyleDoc,
     /// Extra points to mark (e.g. data points), drawn as discs in the object's colour.
     pub points: Vec<[f64; 3]>,
+}
+
+impl SceneObject {
+    /// Parses an object: its `shape`, its `points`, and the other fields as its style.
+    fn parse(value: &Value) -> Result<Self> {
+        let Value::Object(map) = value else {
+            return Err(DocumentError::new("", format!("expected an object with a \"shape\", got {}", kind(value))));
+        };
+        let mut style = map.clone();
+        let shape = style.remove("shape").ok_or_else(|| DocumentError::new("", "missing field `shape`"))?;
+        let points: Vec<Vec<f64>> = match style.remove("points") {
+            Some(p) => fields(p).map_err(|e| e.within("points"))?,
+            None => Vec::new(),
+        };
+        let shape = ShapeDocument::parse(&shape).map_err(|e| e.within("shape"))?;
+        let style: StyleDoc = fields(Value::Object(style))?;
+        style.check()?;
+        let points = points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                if !(2..=3).contains(&p.len()) || p.iter().any(|x| !x.is_finite()) {
+                    return Err(DocumentError::new(format!("points[{i}]"), "expected 2 or 3 finite coordinates"));
+                }
+                Ok([p[0], p[1], p.get(2).copied().unwrap_or(0.0)])
+            })
+            .collect::<Result<_>>()?;
+        Ok(SceneObject { shape, style, points })
+    }
+}
+
+impl<'de> Deserialize<'de> for SceneObject {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        nested(deserializer, SceneObject::parse)
+    }
 }
 
 /// The camera of a scene.
@@ -148,14 +206,18 @@ fn seven_tenths() -> f64 {
 
 /// The animation clock of a scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(default, deny_unknown_fields)]
 pub struct AnimationDoc {
     /// Length in seconds (default 1).
-    #[serde(default = "one_f64")]
     pub duration: f64,
     /// Frames per second (default 20).
-    #[serde(default = "twenty")]
     pub fps: f64,
+}
+
+impl Default for AnimationDoc {
+    fn default() -> Self {
+        AnimationDoc { duration: 1.0, fps: 20.0 }
+    }
 }
 
 impl AnimationDoc {
@@ -169,57 +231,46 @@ impl AnimationDoc {
     }
 }
 
-fn one_f64() -> f64 {
-    1.0
-}
-fn twenty() -> f64 {
-    20.0
-}
-
 /// A scene document.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SceneDocument {
     /// The objects.
     pub objects: Vec<SceneObject>,
     /// The camera (default: fitted, from azimuth 50°, elevation 28°; plane scenes from the top).
+    #[serde(default)]
     pub camera: Option<CameraDoc>,
     /// Up to two lights (default: two fixed lights).
+    #[serde(default)]
     pub lights: Vec<LightDoc>,
     /// Background sRGB colour (default white).
+    #[serde(default = "white", deserialize_with = "white_if_null")]
     pub background: [f32; 3],
     /// Image size in pixels (default 800×600).
+    #[serde(default = "default_size", deserialize_with = "default_size_if_null")]
     pub size: [u32; 2],
     /// Draw x, y, z axes.
+    #[serde(default)]
     pub axes: bool,
     /// The animation clock (default 1 s at 20 fps).
+    #[serde(default, deserialize_with = "default_animation_if_null")]
     pub animation: AnimationDoc,
 }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawScene {
-    objects: Vec<Value>,
-    #[serde(default)]
-    camera: Option<CameraDoc>,
-    #[serde(default)]
-    lights: Vec<LightDoc>,
-    #[serde(default)]
-    background: Option<[f32; 3]>,
-    #[serde(default)]
-    size: Option<[u32; 2]>,
-    #[serde(default)]
-    axes: bool,
-    #[serde(default)]
-    animation: Option<AnimationDoc>,
+fn white() -> [f32; 3] {
+    [1.0, 1.0, 1.0]
 }
-
-#[derive(Deserialize)]
-struct RawObject {
-    shape: Value,
-    #[serde(default)]
-    points: Vec<Vec<f64>>,
-    #[serde(flatten)]
-    style: Value,
+fn default_size() -> [u32; 2] {
+    [800, 600]
+}
+fn white_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<[f32; 3], D::Error> {
+    Ok(Option::deserialize(d)?.unwrap_or_else(white))
+}
+fn default_size_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<[u32; 2], D::Error> {
+    Ok(Option::deserialize(d)?.unwrap_or_else(default_size))
+}
+fn default_animation_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<AnimationDoc, D::Error> {
+    Ok(Option::deserialize(d)?.unwrap_or_default())
 }
 
 /// Largest image side of a scene.
@@ -232,20 +283,21 @@ impl SceneDocument {
         if ty != "scene" {
             return Err(DocumentError::new("type", format!("expected \"scene\", got \"{ty}\"")));
         }
-        let raw: RawScene = fields(rest)?;
-        if raw.objects.is_empty() {
+        let scene: SceneDocument = fields(rest)?;
+        scene.check()?;
+        Ok(scene)
+    }
+
+    /// Checks the ranges serde does not: at least one object, at most two lights, sizes,
+    /// colours, the animation clock and the camera.
+    fn check(&self) -> Result<()> {
+        if self.objects.is_empty() {
             return Err(DocumentError::new("objects", "a scene needs at least one object"));
         }
-        let objects = raw
-            .objects
-            .iter()
-            .enumerate()
-            .map(|(i, o)| Self::object(o).map_err(|e| e.within(&format!("objects[{i}]"))))
-            .collect::<Result<_>>()?;
-        if raw.lights.len() > 2 {
-            return Err(DocumentError::new("lights", format!("at most 2 lights, got {}", raw.lights.len())));
+        if self.lights.len() > 2 {
+            return Err(DocumentError::new("lights", format!("at most 2 lights, got {}", self.lights.len())));
         }
-        for (i, l) in raw.lights.iter().enumerate() {
+        for (i, l) in self.lights.iter().enumerate() {
             let ok = l.direction.iter().all(|x| x.is_finite())
                 && l.direction.iter().any(|&x| x != 0.0)
                 && l.intensity.is_finite()
@@ -257,28 +309,25 @@ impl SceneDocument {
                 ));
             }
         }
-        let size = raw.size.unwrap_or([800, 600]);
+        let size = self.size;
         if !(1..=MAX_SIZE).contains(&size[0]) || !(1..=MAX_SIZE).contains(&size[1]) {
             return Err(DocumentError::new(
                 "size",
                 format!("each side must be between 1 and {MAX_SIZE} pixels, got {}×{}", size[0], size[1]),
             ));
         }
-        let background = raw.background.unwrap_or([1.0, 1.0, 1.0]);
+        let background = self.background;
         if background.iter().any(|c| !(0.0..=1.0).contains(c)) {
             return Err(DocumentError::new("background", format!("colours are in [0, 1], got {background:?}")));
         }
-        let animation = raw.animation.unwrap_or(AnimationDoc { duration: 1.0, fps: 20.0 });
-        if !(animation.duration > 0.0 && animation.duration <= 600.0 && animation.fps > 0.0 && animation.fps <= 100.0) {
+        let a = &self.animation;
+        if !(a.duration > 0.0 && a.duration <= 600.0 && a.fps > 0.0 && a.fps <= 100.0) {
             return Err(DocumentError::new(
                 "animation",
-                format!(
-                    "duration must be in (0, 600] seconds and fps in (0, 100], got {} and {}",
-                    animation.duration, animation.fps
-                ),
+                format!("duration must be in (0, 600] seconds and fps in (0, 100], got {} and {}", a.duration, a.fps),
             ));
         }
-        if let Some(CameraDoc::LookAt { eye, target, up, fov }) = &raw.camera {
+        if let Some(CameraDoc::LookAt { eye, target, up, fov }) = &self.camera {
             let finite = eye.iter().chain(target).chain(up).all(|x| x.is_finite());
             if !finite || eye == target || !(*fov > 1.0 && *fov < 170.0) {
                 return Err(DocumentError::new(
@@ -287,52 +336,7 @@ impl SceneDocument {
                 ));
             }
         }
-        Ok(SceneDocument {
-            objects,
-            camera: raw.camera,
-            lights: raw.lights,
-            background,
-            size,
-            axes: raw.axes,
-            animation,
-        })
-    }
-
-    fn object(value: &Value) -> Result<SceneObject> {
-        if !value.is_object() {
-            return Err(DocumentError::new("", format!("expected an object with a \"shape\", got {}", kind(value))));
-        }
-        let raw: RawObject = fields(value.clone())?;
-        let shape = ShapeDocument::parse(&raw.shape).map_err(|e| e.within("shape"))?;
-        let style: StyleDoc = fields(raw.style)?;
-        if let Some(c) = &style.color
-            && (!(3..=4).contains(&c.len()) || c.iter().any(|x| !(0.0..=1.0).contains(x)))
-        {
-            return Err(DocumentError::new("color", format!("expected 3 or 4 numbers in [0, 1], got {c:?}")));
-        }
-        if !(style.line_width > 0.0 && style.line_width <= 64.0) {
-            return Err(DocumentError::new(
-                "line_width",
-                format!("must be in (0, 64] pixels, got {}", style.line_width),
-            ));
-        }
-        if let Some(d) = style.density
-            && !(1..=2048).contains(&d)
-        {
-            return Err(DocumentError::new("density", format!("must be between 1 and 2048, got {d}")));
-        }
-        let points = raw
-            .points
-            .iter()
-            .enumerate()
-            .map(|(i, p)| {
-                if !(2..=3).contains(&p.len()) || p.iter().any(|x| !x.is_finite()) {
-                    return Err(DocumentError::new(format!("points[{i}]"), "expected 2 or 3 finite coordinates"));
-                }
-                Ok([p[0], p[1], p.get(2).copied().unwrap_or(0.0)])
-            })
-            .collect::<Result<_>>()?;
-        Ok(SceneObject { shape, style, points })
+        Ok(())
     }
 
     /// A scene of one shape with the default style.
@@ -341,10 +345,10 @@ impl SceneDocument {
             objects: vec![SceneObject { shape, style: StyleDoc::default(), points: Vec::new() }],
             camera: None,
             lights: Vec::new(),
-            background: [1.0, 1.0, 1.0],
-            size: [800, 600],
+            background: white(),
+            size: default_size(),
             axes: false,
-            animation: AnimationDoc { duration: 1.0, fps: 20.0 },
+            animation: AnimationDoc::default(),
         }
     }
 
