@@ -19,7 +19,7 @@ pub fn read_text(path: &str, what: &str) -> Result<String> {
 /// Reads and parses a shape document.
 pub fn read_shape(path: &str) -> Result<ShapeDocument> {
     let text = read_text(path, "SHAPE")?;
-    ShapeDocument::from_json(&text).map_err(|e| anyhow!("{e}"))
+    Ok(ShapeDocument::from_json(&text)?)
 }
 
 /// Reads points: a JSON array of points (or `{"points": [...]}`), or CSV text with one

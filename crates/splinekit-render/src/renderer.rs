@@ -36,13 +36,38 @@ const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 pub struct Renderer {
     device: wgpu::Device,
     queue: wgpu::Queue,
-    mesh_pipeline: wgpu::RenderPipeline,
-    line_pipeline: wgpu::RenderPipeline,
-    point_pipeline: wgpu::RenderPipeline,
-    flat_line_pipeline: wgpu::RenderPipeline,
-    flat_point_pipeline: wgpu::RenderPipeline,
+    pipelines: Pipelines,
     bind_layout: wgpu::BindGroupLayout,
     adapter_name: String,
+}
+
+/// The render pipelines: shaded meshes; lines and points with depth testing, and without
+/// it for plane figures drawn in painter's order.
+struct Pipelines {
+    mesh: wgpu::RenderPipeline,
+    line: wgpu::RenderPipeline,
+    point: wgpu::RenderPipeline,
+    flat_line: wgpu::RenderPipeline,
+    flat_point: wgpu::RenderPipeline,
+}
+
+/// A scene's geometry on the device: one vertex and index buffer per mesh, and instance
+/// buffers of line segments and points with their counts.
+struct Geometry {
+    meshes: Vec<(wgpu::Buffer, wgpu::Buffer, u32)>,
+    lines: Option<(wgpu::Buffer, u32)>,
+    points: Option<(wgpu::Buffer, u32)>,
+}
+
+/// The frame's textures: multisampled colour and depth, the resolved image, and the
+/// buffer it is copied into for reading (rows padded to 256 bytes).
+struct Targets {
+    size: wgpu::Extent3d,
+    msaa: wgpu::Texture,
+    depth: wgpu::Texture,
+    resolved: wgpu::Texture,
+    readback: wgpu::Buffer,
+    padded_row: u32,
 }
 
 fn linear(c: [f32; 4]) -> [f32; 4] {
@@ -80,10 +105,6 @@ impl Renderer {
             .request_device(&wgpu::DeviceDescriptor::default())
             .await
             .map_err(|e| RenderError::Device(e.to_string()))?;
-        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("splinekit shaders"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("shaders.wgsl").into()),
-        });
         let bind_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: None,
             entries: &[wgpu::BindGroupLayoutEntry {
@@ -97,88 +118,8 @@ impl Renderer {
                 count: None,
             }],
         });
-        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: None,
-            bind_group_layouts: &[Some(&bind_layout)],
-            immediate_size: 0,
-        });
-        let pipeline =
-            |vs: &str, fs: &str, buffers: &[Option<wgpu::VertexBufferLayout>], depth_write: bool, test: bool| {
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some(vs),
-                    layout: Some(&layout),
-                    vertex: wgpu::VertexState {
-                        module: &shader,
-                        entry_point: Some(vs),
-                        buffers,
-                        compilation_options: Default::default(),
-                    },
-                    fragment: Some(wgpu::FragmentState {
-                        module: &shader,
-                        entry_point: Some(fs),
-                        targets: &[Some(wgpu::ColorTargetState {
-                            format: COLOR_FORMAT,
-                            blend: Some(wgpu::BlendState::ALPHA_BLENDING),
-                            write_mask: wgpu::ColorWrites::ALL,
-                        })],
-                        compilation_options: Default::default(),
-                    }),
-                    primitive: wgpu::PrimitiveState { cull_mode: None, ..Default::default() },
-                    depth_stencil: Some(wgpu::DepthStencilState {
-                        format: DEPTH_FORMAT,
-                        depth_write_enabled: Some(depth_write),
-                        depth_compare: Some(if test {
-                            wgpu::CompareFunction::LessEqual
-                        } else {
-                            wgpu::CompareFunction::Always
-                        }),
-                        stencil: Default::default(),
-                        bias: Default::default(),
-                    }),
-                    multisample: wgpu::MultisampleState { count: SAMPLES, ..Default::default() },
-                    multiview_mask: None,
-                    cache: None,
-                })
-            };
-        let mesh_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4];
-        let line_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4, 3 => Float32];
-        let point_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32, 2 => Float32x4];
-        let mesh_pipeline = pipeline(
-            "vs_mesh",
-            "fs_mesh",
-            &[Some(wgpu::VertexBufferLayout {
-                array_stride: 40,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &mesh_attrs,
-            })],
-            true,
-            true,
-        );
-        let line_layout = [Some(wgpu::VertexBufferLayout {
-            array_stride: 48,
-            step_mode: wgpu::VertexStepMode::Instance,
-            attributes: &line_attrs,
-        })];
-        let point_layout = [Some(wgpu::VertexBufferLayout {
-            array_stride: 32,
-            step_mode: wgpu::VertexStepMode::Instance,
-            attributes: &point_attrs,
-        })];
-        let line_pipeline = pipeline("vs_line", "fs_flat", &line_layout, true, true);
-        let point_pipeline = pipeline("vs_point", "fs_point", &point_layout, false, true);
-        let flat_line_pipeline = pipeline("vs_line", "fs_flat", &line_layout, false, false);
-        let flat_point_pipeline = pipeline("vs_point", "fs_point", &point_layout, false, false);
-        Ok(Renderer {
-            device,
-            queue,
-            mesh_pipeline,
-            line_pipeline,
-            point_pipeline,
-            flat_line_pipeline,
-            flat_point_pipeline,
-            bind_layout,
-            adapter_name,
-        })
+        let pipelines = Pipelines::new(&device, &bind_layout);
+        Ok(Renderer { device, queue, pipelines, bind_layout, adapter_name })
     }
 
     /// The adapter in use, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (Gl)".
@@ -186,53 +127,57 @@ impl Renderer {
         &self.adapter_name
     }
 
-    /// Renders the scene into a `width` × `height` image.
+    /// Renders the scene into a `width` × `height` image: uploads the scene's uniforms and
+    /// geometry, draws it into multisampled targets, and reads the resolved image back.
     pub fn render(&self, scene: &RenderScene, width: u32, height: u32) -> Result<Image, RenderError> {
         if !(1..=MAX_SIDE).contains(&width) || !(1..=MAX_SIDE).contains(&height) {
             return Err(RenderError::Invalid(format!(
                 "--size: each side must be between 1 and {MAX_SIDE} pixels, got {width}x{height}"
             )));
         }
-        let aspect = width as f32 / height as f32;
-        let bounds = scene.bounds().unwrap_or(([-1.0; 3], [1.0; 3]));
-        let camera = scene.camera.unwrap_or_else(|| Camera::fit(bounds, 0.9, 0.5, aspect));
-        let (lo, hi) = bounds;
-        let centre = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0, (lo[2] + hi[2]) / 2.0];
-        let eye = camera.eye();
-        let to_centre =
-            ((eye[0] - centre[0]).powi(2) + (eye[1] - centre[1]).powi(2) + (eye[2] - centre[2]).powi(2)).sqrt();
-        let radius = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2) + (hi[2] - lo[2]).powi(2)).sqrt() / 2.0;
-        let target = match camera {
-            Camera::Perspective { target, .. } | Camera::Orthographic { target, .. } => target,
-        };
-        let to_target =
-            ((eye[0] - target[0]).powi(2) + (eye[1] - target[1]).powi(2) + (eye[2] - target[2]).powi(2)).sqrt();
-        let view_proj = camera.view_projection(aspect, radius + (to_centre - to_target).abs());
-        let mut globals = [0.0f32; 36];
-        for c in 0..4 {
-            globals[4 * c..4 * c + 4].copy_from_slice(&view_proj[c]);
-        }
-        globals[16..19].copy_from_slice(&eye);
-        globals[20..24].copy_from_slice(&[width as f32, height as f32, 2e-4, 0.0]);
-        for (k, (dir, intensity)) in scene.lights.iter().enumerate() {
-            globals[24 + 4 * k..27 + 4 * k].copy_from_slice(dir);
-            globals[27 + 4 * k] = *intensity;
-        }
-        globals[32] = scene.ambient;
-
-        let device = &self.device;
-        let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        let uniform = self.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: None,
-            contents: bytes(&globals),
+            contents: bytes(&globals(scene, width, height)),
             usage: wgpu::BufferUsages::UNIFORM,
         });
-        let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: None,
             layout: &self.bind_layout,
             entries: &[wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() }],
         });
-        // Geometry.
-        let mut mesh_buffers = Vec::new();
+        let geometry = self.upload(scene);
+        let targets = self.targets(width, height);
+        let mut encoder = self.device.create_command_encoder(&Default::default());
+        self.draw(&mut encoder, &targets, &bind, &geometry, scene);
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture: &targets.resolved,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &targets.readback,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(targets.padded_row),
+                    rows_per_image: Some(height),
+                },
+            },
+            targets.size,
+        );
+        self.queue.submit([encoder.finish()]);
+        self.read_back(&targets)
+    }
+
+    /// Uploads the meshes, the lines as instanced segments and the points as instanced
+    /// discs, with colours converted to linear.
+    fn upload(&self, scene: &RenderScene) -> Geometry {
+        let device = &self.device;
+        let buffer = |data: &[u8], usage: wgpu::BufferUsages| {
+            device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: None, contents: data, usage })
+        };
+        let mut meshes = Vec::new();
         for m in &scene.meshes {
             if m.triangles.is_empty() {
                 continue;
@@ -243,18 +188,10 @@ impl Renderer {
                 v.extend_from_slice(m.normals.get(i).unwrap_or(&[0.0; 3]));
                 v.extend_from_slice(&linear(*m.colors.get(i).unwrap_or(&m.color)));
             }
-            let vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: None,
-                contents: bytes(&v),
-                usage: wgpu::BufferUsages::VERTEX,
-            });
             let flat: Vec<u32> = m.triangles.iter().flatten().copied().collect();
-            let ib = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: None,
-                contents: bytes(&flat),
-                usage: wgpu::BufferUsages::INDEX,
-            });
-            mesh_buffers.push((vb, ib, flat.len() as u32));
+            let (vb, ib) =
+                (buffer(bytes(&v), wgpu::BufferUsages::VERTEX), buffer(bytes(&flat), wgpu::BufferUsages::INDEX));
+            meshes.push((vb, ib, flat.len() as u32));
         }
         let mut segments: Vec<f32> = Vec::new();
         for l in &scene.lines {
@@ -275,21 +212,18 @@ impl Renderer {
             points.push(p.size);
             points.extend_from_slice(&linear(p.color));
         }
-        let instance_buffer = |data: &[f32]| {
-            (!data.is_empty()).then(|| {
-                device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                    label: None,
-                    contents: bytes(data),
-                    usage: wgpu::BufferUsages::VERTEX,
-                })
-            })
+        // 12 floats per segment, 8 per point.
+        let instances = |data: &[f32], floats: usize| {
+            (!data.is_empty()).then(|| (buffer(bytes(data), wgpu::BufferUsages::VERTEX), (data.len() / floats) as u32))
         };
-        let (line_buffer, point_buffer) = (instance_buffer(&segments), instance_buffer(&points));
+        Geometry { meshes, lines: instances(&segments, 12), points: instances(&points, 8) }
+    }
 
-        // Targets.
+    /// The textures and read-back buffer of a `width` × `height` frame.
+    fn targets(&self, width: u32, height: u32) -> Targets {
         let size = wgpu::Extent3d { width, height, depth_or_array_layers: 1 };
         let texture = |samples: u32, format: wgpu::TextureFormat, usage: wgpu::TextureUsages| {
-            device.create_texture(&wgpu::TextureDescriptor {
+            self.device.create_texture(&wgpu::TextureDescriptor {
                 label: None,
                 size,
                 mip_level_count: 1,
@@ -300,102 +234,217 @@ impl Renderer {
                 view_formats: &[],
             })
         };
-        let msaa = texture(SAMPLES, COLOR_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT);
-        let depth = texture(SAMPLES, DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT);
-        let resolved = texture(1, COLOR_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC);
         let padded_row = (4 * width).div_ceil(256) * 256;
-        let readback = device.create_buffer(&wgpu::BufferDescriptor {
-            label: None,
-            size: padded_row as u64 * height as u64,
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
-        let bg = linear(scene.background);
-        let mut encoder = device.create_command_encoder(&Default::default());
-        {
-            let (mv, dv, rv) = (
-                msaa.create_view(&Default::default()),
-                depth.create_view(&Default::default()),
-                resolved.create_view(&Default::default()),
-            );
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        Targets {
+            size,
+            msaa: texture(SAMPLES, COLOR_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT),
+            depth: texture(SAMPLES, DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT),
+            resolved: texture(1, COLOR_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC),
+            readback: self.device.create_buffer(&wgpu::BufferDescriptor {
                 label: None,
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &mv,
-                    depth_slice: None,
-                    resolve_target: Some(&rv),
-                    ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(wgpu::Color {
-                            r: bg[0] as f64,
-                            g: bg[1] as f64,
-                            b: bg[2] as f64,
-                            a: bg[3] as f64,
-                        }),
-                        store: wgpu::StoreOp::Store,
-                    },
-                })],
-                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &dv,
-                    depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
-                    stencil_ops: None,
-                }),
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
-            pass.set_bind_group(0, &bind, &[]);
-            pass.set_pipeline(&self.mesh_pipeline);
-            for (vb, ib, count) in &mesh_buffers {
-                pass.set_vertex_buffer(0, vb.slice(..));
-                pass.set_index_buffer(ib.slice(..), wgpu::IndexFormat::Uint32);
-                pass.draw_indexed(0..*count, 0, 0..1);
-            }
-            if let Some(b) = &line_buffer {
-                pass.set_pipeline(if scene.painter_order { &self.flat_line_pipeline } else { &self.line_pipeline });
-                pass.set_vertex_buffer(0, b.slice(..));
-                pass.draw(0..6, 0..(segments.len() / 12) as u32);
-            }
-            if let Some(b) = &point_buffer {
-                pass.set_pipeline(if scene.painter_order { &self.flat_point_pipeline } else { &self.point_pipeline });
-                pass.set_vertex_buffer(0, b.slice(..));
-                pass.draw(0..6, 0..(points.len() / 8) as u32);
+                size: padded_row as u64 * height as u64,
+                usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+                mapped_at_creation: false,
+            }),
+            padded_row,
+        }
+    }
+
+    /// One render pass: clear to the background, then meshes, lines and points.
+    fn draw(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        targets: &Targets,
+        bind: &wgpu::BindGroup,
+        geometry: &Geometry,
+        scene: &RenderScene,
+    ) {
+        let bg = linear(scene.background);
+        let (mv, dv, rv) = (
+            targets.msaa.create_view(&Default::default()),
+            targets.depth.create_view(&Default::default()),
+            targets.resolved.create_view(&Default::default()),
+        );
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: None,
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &mv,
+                depth_slice: None,
+                resolve_target: Some(&rv),
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color {
+                        r: bg[0] as f64,
+                        g: bg[1] as f64,
+                        b: bg[2] as f64,
+                        a: bg[3] as f64,
+                    }),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &dv,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_bind_group(0, bind, &[]);
+        pass.set_pipeline(&self.pipelines.mesh);
+        for (vb, ib, count) in &geometry.meshes {
+            pass.set_vertex_buffer(0, vb.slice(..));
+            pass.set_index_buffer(ib.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..*count, 0, 0..1);
+        }
+        let p = &self.pipelines;
+        let (line, point) = if scene.painter_order { (&p.flat_line, &p.flat_point) } else { (&p.line, &p.point) };
+        for (pipeline, instances) in [(line, &geometry.lines), (point, &geometry.points)] {
+            if let Some((buffer, count)) = instances {
+                pass.set_pipeline(pipeline);
+                pass.set_vertex_buffer(0, buffer.slice(..));
+                pass.draw(0..6, 0..*count);
             }
         }
-        encoder.copy_texture_to_buffer(
-            wgpu::TexelCopyTextureInfo {
-                texture: &resolved,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            wgpu::TexelCopyBufferInfo {
-                buffer: &readback,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(padded_row),
-                    rows_per_image: Some(height),
-                },
-            },
-            size,
-        );
-        self.queue.submit([encoder.finish()]);
-        let slice = readback.slice(..);
+    }
+
+    /// Waits for the frame and copies the resolved image out of the padded read-back buffer.
+    fn read_back(&self, targets: &Targets) -> Result<Image, RenderError> {
+        let (width, height) = (targets.size.width, targets.size.height);
+        let slice = targets.readback.slice(..);
         let (tx, rx) = std::sync::mpsc::channel();
         slice.map_async(wgpu::MapMode::Read, move |r| {
             let _ = tx.send(r);
         });
-        device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| RenderError::Readback(e.to_string()))?;
+        self.device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| RenderError::Readback(e.to_string()))?;
         rx.recv()
             .map_err(|e| RenderError::Readback(e.to_string()))?
             .map_err(|e| RenderError::Readback(e.to_string()))?;
         let data = slice.get_mapped_range().map_err(|e| RenderError::Readback(format!("{e:?}")))?;
         let mut rgba = Vec::with_capacity((4 * width * height) as usize);
         for row in 0..height as usize {
-            let start = row * padded_row as usize;
+            let start = row * targets.padded_row as usize;
             rgba.extend_from_slice(&data[start..start + 4 * width as usize]);
         }
         drop(data);
-        readback.unmap();
+        targets.readback.unmap();
         Ok(Image { width, height, rgba })
     }
+}
+
+/// The uniform block: view-projection matrix, eye, viewport, lights and ambient light (see
+/// `shaders.wgsl`), with the camera fitted to the scene when it has none.
+fn globals(scene: &RenderScene, width: u32, height: u32) -> [f32; 36] {
+    let aspect = width as f32 / height as f32;
+    let bounds = scene.bounds().unwrap_or(([-1.0; 3], [1.0; 3]));
+    let camera = scene.camera.unwrap_or_else(|| Camera::fit(bounds, 0.9, 0.5, aspect));
+    let (lo, hi) = bounds;
+    let centre = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0, (lo[2] + hi[2]) / 2.0];
+    let eye = camera.eye();
+    let to_centre = ((eye[0] - centre[0]).powi(2) + (eye[1] - centre[1]).powi(2) + (eye[2] - centre[2]).powi(2)).sqrt();
+    let radius = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2) + (hi[2] - lo[2]).powi(2)).sqrt() / 2.0;
+    let target = match camera {
+        Camera::Perspective { target, .. } | Camera::Orthographic { target, .. } => target,
+    };
+    let to_target = ((eye[0] - target[0]).powi(2) + (eye[1] - target[1]).powi(2) + (eye[2] - target[2]).powi(2)).sqrt();
+    let view_proj = camera.view_projection(aspect, radius + (to_centre - to_target).abs());
+    let mut globals = [0.0f32; 36];
+    for c in 0..4 {
+        globals[4 * c..4 * c + 4].copy_from_slice(&view_proj[c]);
+    }
+    globals[16..19].copy_from_slice(&eye);
+    globals[20..24].copy_from_slice(&[width as f32, height as f32, 2e-4, 0.0]);
+    for (k, (dir, intensity)) in scene.lights.iter().enumerate() {
+        globals[24 + 4 * k..27 + 4 * k].copy_from_slice(dir);
+        globals[27 + 4 * k] = *intensity;
+    }
+    globals[32] = scene.ambient;
+    globals
+}
+
+impl Pipelines {
+    fn new(device: &wgpu::Device, bind_layout: &wgpu::BindGroupLayout) -> Self {
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("splinekit shaders"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("shaders.wgsl").into()),
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: None,
+            bind_group_layouts: &[Some(bind_layout)],
+            immediate_size: 0,
+        });
+        let pipeline = |vs: &str, fs: &str, buffers: &[Option<wgpu::VertexBufferLayout>], depth: Depth| {
+            pipeline(device, &layout, &shader, (vs, fs), buffers, depth)
+        };
+        let mesh_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4];
+        let line_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4, 3 => Float32];
+        let point_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32, 2 => Float32x4];
+        let buffer_layout = |stride: u64, step_mode: wgpu::VertexStepMode, attributes| {
+            [Some(wgpu::VertexBufferLayout { array_stride: stride, step_mode, attributes })]
+        };
+        let mesh_layout = buffer_layout(40, wgpu::VertexStepMode::Vertex, &mesh_attrs[..]);
+        let line_layout = buffer_layout(48, wgpu::VertexStepMode::Instance, &line_attrs[..]);
+        let point_layout = buffer_layout(32, wgpu::VertexStepMode::Instance, &point_attrs[..]);
+        Pipelines {
+            mesh: pipeline("vs_mesh", "fs_mesh", &mesh_layout, Depth { write: true, test: true }),
+            line: pipeline("vs_line", "fs_flat", &line_layout, Depth { write: true, test: true }),
+            point: pipeline("vs_point", "fs_point", &point_layout, Depth { write: false, test: true }),
+            flat_line: pipeline("vs_line", "fs_flat", &line_layout, Depth { write: false, test: false }),
+            flat_point: pipeline("vs_point", "fs_point", &point_layout, Depth { write: false, test: false }),
+        }
+    }
+}
+
+/// Whether a pipeline writes depth and tests against it.
+#[derive(Clone, Copy)]
+struct Depth {
+    write: bool,
+    test: bool,
+}
+
+/// A pipeline of the shader's entry points `vs` and `fs` drawing into the colour and depth
+/// targets with alpha blending and 4× multisampling.
+fn pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    shader: &wgpu::ShaderModule,
+    (vs, fs): (&str, &str),
+    buffers: &[Option<wgpu::VertexBufferLayout>],
+    depth: Depth,
+) -> wgpu::RenderPipeline {
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(vs),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module: shader,
+            entry_point: Some(vs),
+            buffers,
+            compilation_options: Default::default(),
+        },
+        fragment: Some(wgpu::FragmentState {
+            module: shader,
+            entry_point: Some(fs),
+            targets: &[Some(wgpu::ColorTargetState {
+                format: COLOR_FORMAT,
+                blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+            compilation_options: Default::default(),
+        }),
+        primitive: wgpu::PrimitiveState { cull_mode: None, ..Default::default() },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(depth.write),
+            depth_compare: Some(if depth.test {
+                wgpu::CompareFunction::LessEqual
+            } else {
+                wgpu::CompareFunction::Always
+            }),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample: wgpu::MultisampleState { count: SAMPLES, ..Default::default() },
+        multiview_mask: None,
+        cache: None,
+    })
 }

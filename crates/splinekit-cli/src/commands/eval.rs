@@ -154,7 +154,7 @@ pub fn run(args: &EvalArgs) -> Result<()> {
                 Some(s) => parse_count("--samples", s, MAX_SAMPLES)?,
                 None => 0,
             };
-            let curve = c.build().map_err(|e| anyhow!("{e}"))?;
+            let curve = c.build()?;
             curve.visit(EvalCurve { at: at.as_deref(), samples, order })?
         }
         ShapeDocument::Surface(s) => {
@@ -166,7 +166,7 @@ pub fn run(args: &EvalArgs) -> Result<()> {
             }
             let at = args.at.as_deref().map(parse_surface_params).transpose()?;
             let grid = args.grid.as_deref().map(parse_grid).transpose()?;
-            let surface = s.build().map_err(|e| anyhow!("{e}"))?;
+            let surface = s.build()?;
             surface.visit(super::eval_surface::EvalSurface { at: at.as_deref(), grid, order })?
         }
     };

@@ -57,13 +57,17 @@ fn normal_or_limit<const D: usize>(
     None
 }
 
-impl DimensionVisitor<Surfaces> for EvalSurface<'_> {
-    type Output = Result<Value>;
-    fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Result<Value> {
+/// Parameter pairs and the partials at each.
+type Samples<const D: usize> = (Vec<(f64, f64)>, Vec<Point<D>>);
+
+impl EvalSurface<'_> {
+    /// The parameters asked for (`--at` pairs, checked against open directions, or a
+    /// `--grid`) and the partials up to order k in each direction at each of them, in
+    /// blocks of (k + 1)² (i-th u- and j-th v-derivative at i·(k + 1) + j).
+    fn sample<const D: usize>(&self, s: &dyn Surface<D>, k: usize) -> Result<Samples<D>> {
         let (du, dv) = (s.domain_u(), s.domain_v());
-        let k = self.order.max(1);
         let w = (k + 1) * (k + 1);
-        let (params, values): (Vec<(f64, f64)>, Vec<Point<D>>) = match (self.at, self.grid) {
+        Ok(match (self.at, self.grid) {
             (Some(list), _) => {
                 for &(u, v) in list {
                     let slack = |d: &splinekit::curve::Interval| 1e-12 * d.length().max(d.start.abs()).max(d.end.abs());
@@ -94,7 +98,17 @@ impl DimensionVisitor<Surfaces> for EvalSurface<'_> {
                 (params, values)
             }
             (None, None) => bail!("give --at U:V,... or --grid NU,NV"),
-        };
+        })
+    }
+}
+
+impl DimensionVisitor<Surfaces> for EvalSurface<'_> {
+    type Output = Result<Value>;
+    fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Result<Value> {
+        let (du, dv) = (s.domain_u(), s.domain_v());
+        let k = self.order.max(1);
+        let w = (k + 1) * (k + 1);
+        let (params, values) = self.sample(s, k)?;
         let coords = |p: &Point<D>, what: &dyn Fn() -> String| -> Result<Value> {
             Ok(Value::Array(p.iter().map(|&c| number(c, &what())).collect::<Result<_>>()?))
         };

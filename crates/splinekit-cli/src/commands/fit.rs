@@ -151,10 +151,10 @@ fn run_fit_model(args: &FitArgs, doc: &Value) -> Result<()> {
     if args.samples < 2 || args.samples > 10_000_000 {
         bail!("--samples: must be between 2 and 10000000, got {}", args.samples);
     }
-    let ShapeDocument::Curve(model) = ShapeDocument::parse(doc).map_err(|e| anyhow!("{e}"))? else {
+    let ShapeDocument::Curve(model) = ShapeDocument::parse(doc)? else {
         bail!("POINTS: fit takes points or a model curve, not a surface document");
     };
-    let curve = model.build().map_err(|e| anyhow!("{e}"))?;
+    let curve = model.build()?;
     let closed = args.closed;
     struct FitModel<'a>(&'a FitArgs, bool);
     impl DimensionVisitor<Curves> for FitModel<'_> {

@@ -1,6 +1,6 @@
 //! `splinekit refine`: knot insertion, degree elevation or knot removal on a document.
 
-use anyhow::{Result, anyhow, bail};
+use anyhow::{Result, bail};
 use clap::Args;
 use splinekit_scene::ShapeDocument;
 use splinekit_scene::refine::{Refinement, refine};
@@ -48,7 +48,7 @@ pub fn run(args: &RefineArgs) -> Result<()> {
             "type: refine works on bezier, rational_bezier, bspline and nurbs curve documents; surface refinement is not on the command line yet"
         );
     };
-    let out = refine(&doc, &r).map_err(|e| anyhow!("{e}"))?;
+    let out = refine(&doc, &r)?;
     if let Refinement::Remove { knots, .. } = &r {
         if out.removed < knots.len() {
             eprintln!("refine: removed {} of {} knots within the tolerance", out.removed, knots.len());

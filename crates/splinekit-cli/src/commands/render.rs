@@ -66,7 +66,7 @@ fn image_size(arg: Option<&str>, scene: &SceneDocument) -> Result<(u32, u32)> {
 
 pub fn read_scene(path: &str) -> Result<SceneDocument> {
     let text = read_text(path, "scene")?;
-    Ok(SceneOrShape::from_json(&text).map_err(|e| anyhow!("{e}"))?.into_scene())
+    Ok(SceneOrShape::from_json(&text)?.into_scene())
 }
 
 /// Renders one frame of a scene (with `camera`, or the scene's own).
@@ -77,17 +77,17 @@ pub fn render_frame(
     size: (u32, u32),
     camera: Option<Camera>,
 ) -> Result<Image> {
-    let mut rs = compose(scene, time, size.0 as f32 / size.1 as f32).map_err(|e| anyhow!("{e}"))?;
+    let mut rs = compose(scene, time, size.0 as f32 / size.1 as f32)?;
     if camera.is_some() {
         rs.camera = camera;
     }
-    renderer.render(&rs, size.0, size.1).map_err(|e| anyhow!("{e}"))
+    Ok(renderer.render(&rs, size.0, size.1)?)
 }
 
 /// One camera for every frame of an animation: the scene's at time 0, moved back by 12 %
 /// to leave room for the motion (a camera refitted per frame would zoom back and forth).
 pub fn animation_camera(scene: &SceneDocument, size: (u32, u32)) -> Result<Option<Camera>> {
-    let rs = compose(scene, Some(0.0), size.0 as f32 / size.1 as f32).map_err(|e| anyhow!("{e}"))?;
+    let rs = compose(scene, Some(0.0), size.0 as f32 / size.1 as f32)?;
     Ok(rs.camera.map(|c| c.zoomed(1.12)))
 }
 
@@ -98,7 +98,7 @@ pub fn run_render(args: &RenderArgs) -> Result<()> {
     let scene = read_scene(&args.scene)?;
     let size = image_size(args.size.as_deref(), &scene)?;
     let time = args.time.as_deref().map(super::eval::parse_time).transpose()?;
-    let renderer = Renderer::new().map_err(|e| anyhow!("{e}"))?;
+    let renderer = Renderer::new()?;
     let img = render_frame(&renderer, &scene, time, size, None)?;
     img.save_png(std::path::Path::new(&args.output)).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
 }
@@ -129,7 +129,7 @@ pub fn run_animate(args: &AnimateArgs) -> Result<()> {
     if frames as u64 * size.0 as u64 * size.1 as u64 > 2_000_000_000 {
         bail!("--frames: {frames} frames of {}x{} are more than 2·10⁹ pixels", size.0, size.1);
     }
-    let renderer = Renderer::new().map_err(|e| anyhow!("{e}"))?;
+    let renderer = Renderer::new()?;
     let bar = progress(frames as u64, "rendering");
     let camera = animation_camera(&scene, size)?;
     let mut images = Vec::with_capacity(frames);

@@ -89,7 +89,7 @@ fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, ex
         bail!("-o: scenes are written as .gltf or .glb, not '{}'", args.output);
     }
     let (frames, fps) = if scene.is_animated() { (scene.animation.frames(), scene.animation.fps) } else { (1, 1.0) };
-    let gltf = splinekit_render::scene_to_gltf(scene, frames, fps).map_err(|e| anyhow!("{e}"))?;
+    let gltf = splinekit_render::scene_to_gltf(scene, frames, fps)?;
     let bytes = gltf.to_file_bytes(ext);
     std::fs::write(&args.output, bytes).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
 }
@@ -105,7 +105,7 @@ fn gltf_file(name: &str, geometry: GltfGeometry, ext: &str) -> Vec<u8> {
 pub fn run(args: &TessellateArgs) -> Result<()> {
     let ext = args.output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
     let text = crate::input::read_text(&args.shape, "shape")?;
-    let mut doc = match SceneOrShape::from_json(&text).map_err(|e| anyhow!("{e}"))? {
+    let mut doc = match SceneOrShape::from_json(&text)? {
         SceneOrShape::Scene(scene) => return write_scene(&scene, args, &ext),
         SceneOrShape::Shape(doc) => doc,
     };
@@ -118,7 +118,7 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
             if !matches!(ext.as_str(), "svg" | "obj" | "gltf" | "glb") {
                 bail!("-o: curves are written as .svg, .obj, .gltf or .glb, not '{}'", args.output);
             }
-            let curve = c.build().map_err(|e| anyhow!("{e}"))?;
+            let curve = c.build()?;
             let (points, closed, dim) = curve.visit(CurvePoly(args))?;
             match ext.as_str() {
                 "svg" => {
@@ -143,7 +143,7 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
             if !matches!(ext.as_str(), "obj" | "stl" | "stla" | "ply" | "gltf" | "glb") {
                 bail!("-o: surfaces are written as .obj, .stl, .stla, .ply, .gltf or .glb, not '{}'", args.output);
             }
-            let surface = s.build().map_err(|e| anyhow!("{e}"))?;
+            let surface = s.build()?;
             let uv = matches!(ext.as_str(), "obj" | "ply" | "gltf" | "glb");
             let mesh = surface.visit(SurfaceTriangles(args, uv))?;
             match ext.as_str() {

@@ -66,7 +66,7 @@ impl View {
         }
         self.last_tick = now;
         let time = self.animated.then_some(self.clock % self.scene.animation.duration.max(1e-3));
-        let mut rs = compose(&self.scene, time, w as f32 / h as f32).map_err(|e| anyhow!("{e}"))?;
+        let mut rs = compose(&self.scene, time, w as f32 / h as f32)?;
         let flat = rs.painter_order;
         if !flat || self.azimuth != 0.0 || self.elevation != 0.0 {
             if let Some(b) = rs.bounds() {
@@ -77,7 +77,7 @@ impl View {
         } else if let Some(c) = rs.camera {
             rs.camera = Some(c.zoomed(self.zoom));
         }
-        let img = self.renderer.render(&rs, w.min(4096), h.min(4096)).map_err(|e| anyhow!("{e}"))?;
+        let img = self.renderer.render(&rs, w.min(4096), h.min(4096))?;
         surface
             .resize(NonZeroU32::new(img.width).expect("width ≥ 1"), NonZeroU32::new(img.height).expect("height ≥ 1"))
             .map_err(|e| anyhow!("window: {e}"))?;
@@ -199,7 +199,7 @@ pub fn run(args: &ViewArgs) -> Result<()> {
         anyhow!("view: cannot open a window ({e}); it needs a display (X11: set DISPLAY, or run under xvfb-run)")
     })?;
     event_loop.set_control_flow(ControlFlow::Wait);
-    let renderer = Renderer::new().map_err(|e| anyhow!("{e}"))?;
+    let renderer = Renderer::new()?;
     let mut view = View {
         animated: scene.is_animated(),
         scene,

@@ -7,6 +7,7 @@ mod subdivision;
 
 use anyhow::{Context, Result, anyhow};
 use clap::Args;
+use indicatif::ProgressBar;
 use splinekit_render::{Renderer, scene_to_gltf, write_gif};
 use splinekit_scene::scenes::SceneDocument;
 use std::path::PathBuf;
@@ -32,12 +33,37 @@ struct Entry {
 pub fn run(args: &GalleryArgs) -> Result<()> {
     let start = Instant::now();
     std::fs::create_dir_all(&args.output).with_context(|| format!("-o: cannot create '{}'", args.output.display()))?;
-    let write = |name: &str, bytes: &[u8]| -> Result<()> {
-        let path = args.output.join(name);
-        std::fs::write(&path, bytes).with_context(|| format!("-o: cannot write '{}'", path.display()))
-    };
+    let folder = Folder(&args.output);
+    let plots = plots(&folder)?;
+    let renderer =
+        Renderer::new().map_err(|e| anyhow!("gallery: the plots are in {}, but {e}", args.output.display()))?;
+    let rendered = rendered(&folder, &renderer)?;
+    folder.write("index.html", index_html(&rendered, &plots).as_bytes())?;
+    eprintln!(
+        "gallery: {} rendered scenes and {} plots in {} ({:.1} s, {}); open {}",
+        rendered.len(),
+        plots.len(),
+        args.output.display(),
+        start.elapsed().as_secs_f64(),
+        renderer.adapter_name(),
+        args.output.join("index.html").display()
+    );
+    Ok(())
+}
 
-    // Plots (SVG).
+/// The gallery's folder.
+struct Folder<'a>(&'a std::path::Path);
+
+impl Folder<'_> {
+    /// Writes the file `name` in the folder.
+    fn write(&self, name: &str, bytes: &[u8]) -> Result<()> {
+        let path = self.0.join(name);
+        std::fs::write(&path, bytes).with_context(|| format!("-o: cannot write '{}'", path.display()))
+    }
+}
+
+/// Writes the plots (SVG).
+fn plots(folder: &Folder) -> Result<Vec<Entry>> {
     let mut plots = vec![
         figures::bspline_from_control_points()?,
         figures::least_squares_circle()?,
@@ -52,15 +78,18 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
     ];
     plots.extend(figures::model_curves()?);
     plots.extend(figures::blending()?);
-    let mut plot_entries = Vec::new();
-    for f in &plots {
-        write(f.file, f.svg.as_bytes())?;
-        plot_entries.push(Entry { file: f.file.to_string(), gltf: None, caption: f.caption.to_string() });
-    }
+    plots
+        .iter()
+        .map(|f| {
+            folder.write(f.file, f.svg.as_bytes())?;
+            Ok(Entry { file: f.file.to_string(), gltf: None, caption: f.caption.to_string() })
+        })
+        .collect()
+}
 
-    // Rendered scenes (PNG, GIF, glb).
-    let renderer =
-        Renderer::new().map_err(|e| anyhow!("gallery: the plots are in {}, but {e}", args.output.display()))?;
+/// Renders the gallery's scenes (PNG, or GIF when animated, each with a glb export) and
+/// the subdivision figures.
+fn rendered(folder: &Folder, renderer: &Renderer) -> Result<Vec<Entry>> {
     let docs: Vec<(&str, SceneDocument, &str)> = scenes::SCENES
         .iter()
         .map(|(name, json, caption)| {
@@ -73,37 +102,54 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
     let bar = progress(work, "gallery");
     let mut rendered = Vec::new();
     for (name, doc, caption) in &docs {
-        let size = (doc.size[0], doc.size[1]);
-        let glb = format!("{name}.glb");
-        if doc.is_animated() {
-            let fps = doc.animation.fps;
-            let frames = doc.animation.frames();
-            let camera = animation_camera(doc, size)?;
-            let mut images = Vec::with_capacity(frames);
-            for k in 0..frames {
-                images.push(render_frame(&renderer, doc, Some(k as f64 / fps), size, camera)?);
-                bar.inc(1);
-            }
-            let mut gif = Vec::new();
-            write_gif(&mut gif, &images, fps as f32).map_err(|e| anyhow!("{name}.gif: {e}"))?;
-            write(&format!("{name}.gif"), &gif)?;
-            write(&glb, &scene_to_gltf(doc, frames, fps).map_err(|e| anyhow!("{name}: {e}"))?.to_glb())?;
-            rendered.push(Entry { file: format!("{name}.gif"), gltf: Some(glb), caption: caption.to_string() });
-        } else {
-            let img = render_frame(&renderer, doc, None, size, None)?;
-            write(&format!("{name}.png"), &img.to_png())?;
-            write(&glb, &scene_to_gltf(doc, 1, 1.0).map_err(|e| anyhow!("{name}: {e}"))?.to_glb())?;
-            rendered.push(Entry { file: format!("{name}.png"), gltf: Some(glb), caption: caption.to_string() });
-        }
+        let file = render_scene(folder, renderer, name, doc, &bar)?;
+        rendered.push(Entry { file, gltf: Some(format!("{name}.glb")), caption: caption.to_string() });
         bar.inc(1);
     }
-    for (stem, caption, img, glb) in subdivision::figures(&renderer)? {
-        write(&format!("{stem}.png"), &img.to_png())?;
-        write(&format!("{stem}.glb"), &glb)?;
+    for (stem, caption, img, glb) in subdivision::figures(renderer)? {
+        folder.write(&format!("{stem}.png"), &img.to_png())?;
+        folder.write(&format!("{stem}.glb"), &glb)?;
         rendered.push(Entry { file: format!("{stem}.png"), gltf: Some(format!("{stem}.glb")), caption });
     }
     bar.finish_and_clear();
+    Ok(rendered)
+}
 
+/// Writes one scene as `name.png` (or `name.gif`, counting frames on `bar`) and
+/// `name.glb`; returns the picture's file name.
+fn render_scene(
+    folder: &Folder,
+    renderer: &Renderer,
+    name: &str,
+    doc: &SceneDocument,
+    bar: &ProgressBar,
+) -> Result<String> {
+    let size = (doc.size[0], doc.size[1]);
+    let glb = format!("{name}.glb");
+    if doc.is_animated() {
+        let fps = doc.animation.fps;
+        let frames = doc.animation.frames();
+        let camera = animation_camera(doc, size)?;
+        let mut images = Vec::with_capacity(frames);
+        for k in 0..frames {
+            images.push(render_frame(renderer, doc, Some(k as f64 / fps), size, camera)?);
+            bar.inc(1);
+        }
+        let mut gif = Vec::new();
+        write_gif(&mut gif, &images, fps as f32).map_err(|e| anyhow!("{name}.gif: {e}"))?;
+        folder.write(&format!("{name}.gif"), &gif)?;
+        folder.write(&glb, &scene_to_gltf(doc, frames, fps).map_err(|e| anyhow!("{name}: {e}"))?.to_glb())?;
+        Ok(format!("{name}.gif"))
+    } else {
+        let img = render_frame(renderer, doc, None, size, None)?;
+        folder.write(&format!("{name}.png"), &img.to_png())?;
+        folder.write(&glb, &scene_to_gltf(doc, 1, 1.0).map_err(|e| anyhow!("{name}: {e}"))?.to_glb())?;
+        Ok(format!("{name}.png"))
+    }
+}
+
+/// The index page: the rendered figures, then the plots.
+fn index_html(rendered: &[Entry], plots: &[Entry]) -> String {
     let mut html = String::from(
         "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>splinekit gallery</title>\n\
          <style>body{font-family:sans-serif;max-width:1400px;margin:auto;padding:1em}\
@@ -113,7 +159,7 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
          rendered offscreen with wgpu (the scene documents are in <code>examples/scenes/</code>), animations \
          as GIF, each with a glTF export, and plots as SVG.</p>\n",
     );
-    for (title, entries) in [("Scenes and animations", &rendered), ("Plots", &plot_entries)] {
+    for (title, entries) in [("Scenes and animations", rendered), ("Plots", plots)] {
         html.push_str(&format!("<h2>{title}</h2><div class=\"grid\">\n"));
         for e in entries {
             let link = e.gltf.as_ref().map(|g| format!(" <a href=\"{g}\">glTF</a>")).unwrap_or_default();
@@ -125,15 +171,5 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
         html.push_str("</div>\n");
     }
     html.push_str("</body></html>\n");
-    write("index.html", html.as_bytes())?;
-    eprintln!(
-        "gallery: {} rendered scenes and {} plots in {} ({:.1} s, {}); open {}",
-        rendered.len(),
-        plot_entries.len(),
-        args.output.display(),
-        start.elapsed().as_secs_f64(),
-        renderer.adapter_name(),
-        args.output.join("index.html").display()
-    );
-    Ok(())
+    html
 }
