@@ -5,7 +5,7 @@
 //! A kind is a document struct (its fields, with serde) that implements [`DocumentKind`]:
 //! its dimension, its kernel object, an example document, what a scene draws besides it,
 //! and how it poses animations. The lists in [`crate::curves`] and [`crate::surfaces`] name
-//! each kind once with its `type`; [`document_kinds!`] makes from them the enum, the
+//! each kind once with its `type`; the `document_kinds!` macro makes from them the enum, the
 //! `"type"` dispatch of parsing and serialising, the list of type names, and `dimension`,
 //! `build`, `examples`, `decoration` and `set_time` on the enum — each a match over every
 //! kind, so a kind that lacks one of them does not compile.
@@ -18,7 +18,7 @@ use crate::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
 use crate::dimension::ShapeFamily;
 use crate::error::Result;
 
-/// The `type` name of a kind, set by its line in a [`document_kinds!`] list.
+/// The `type` name of a kind, set by its line in the `document_kinds!` list of its family.
 pub trait KindName {
     /// The `type` in documents, e.g. `"bezier"`.
     const TYPE: &'static str;
