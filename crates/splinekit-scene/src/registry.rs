@@ -15,8 +15,8 @@ use serde::de::DeserializeOwned;
 use serde_json::Value;
 
 use crate::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
-use crate::dimension::ShapeFamily;
-use crate::error::Result;
+use crate::dimension::{Curves, ShapeFamily, Surfaces, same_type};
+use crate::error::{DocumentError, Result};
 
 /// The `type` name of a kind, set by its line in the `document_kinds!` list of its family.
 pub trait KindName {
@@ -190,3 +190,101 @@ macro_rules! document_kinds {
     };
 }
 pub(crate) use document_kinds;
+
+/// A family whose model shapes (circle, torus, …) exist in 3-D only.
+pub trait ModelFamily: ShapeFamily {
+    /// The 3-D shape made by `build` as a shape of dimension D; an error naming the kind
+    /// `name` unless D = 3.
+    fn model_in<const D: usize>(
+        name: &str,
+        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
+    ) -> Result<Box<Self::Shape<D>>>;
+}
+
+impl ModelFamily for Curves {
+    fn model_in<const D: usize>(
+        name: &str,
+        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
+    ) -> Result<Box<Self::Shape<D>>> {
+        let not_3d = || DocumentError::new("type", format!("{name} is a 3-D model curve"));
+        if D != 3 {
+            return Err(not_3d());
+        }
+        same_type(build()?).ok_or_else(not_3d)
+    }
+}
+
+impl ModelFamily for Surfaces {
+    fn model_in<const D: usize>(
+        _name: &str,
+        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
+    ) -> Result<Box<Self::Shape<D>>> {
+        let not_3d = || DocumentError::new("type", "model surfaces are 3-D");
+        if D != 3 {
+            return Err(not_3d());
+        }
+        same_type(build()?).ok_or_else(not_3d)
+    }
+}
+
+/// Declares a model shape's document: a struct of fields that all have defaults (given
+/// after `=`; they are the struct's `Default` and serde's for missing fields), and its
+/// [`DocumentKind`]: 3-D, built as `build(|d| …)` from the document `d`; its example is
+/// its default document, and it has nothing to decorate or pose.
+///
+/// ```text
+/// model_document! {
+///     /// `{"type":"circle","radius":1}`: (r cos t, r sin t, 0), t ∈ [0, 2π].
+///     pub struct CircleDoc in Curves {
+///         /// Radius r (default 1).
+///         pub radius: f64 = 1.0,
+///     }
+///     build(|d| Circle::new(d.radius))
+/// }
+/// ```
+macro_rules! model_document {
+    (
+        $(#[$meta:meta])*
+        pub struct $doc:ident in $family:ident {
+            $( $(#[$field_meta:meta])* pub $field:ident: $ty:ty = $default:expr, )+
+        }
+        build(|$d:ident| $build:expr)
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+        #[serde(default, deny_unknown_fields)]
+        pub struct $doc {
+            $( $(#[$field_meta])* pub $field: $ty, )+
+        }
+
+        impl Default for $doc {
+            fn default() -> Self {
+                $doc { $( $field: $default, )+ }
+            }
+        }
+
+        impl $crate::registry::DocumentKind for $doc {
+            type Family = $family;
+            fn dimension(&self) -> $crate::Result<usize> {
+                Ok(3)
+            }
+            fn build_in<const D: usize>(
+                &self,
+            ) -> $crate::Result<Box<<$family as $crate::dimension::ShapeFamily>::Shape<D>>> {
+                let $d = self;
+                <$family as $crate::registry::ModelFamily>::model_in::<D>(
+                    <Self as $crate::registry::KindName>::TYPE,
+                    || Ok(Box::new($build?)),
+                )
+            }
+            fn example() -> Self {
+                Self::default()
+            }
+            fn decoration(&self) -> $crate::registry::Decoration<'_> {
+                $crate::registry::Decoration::None
+            }
+            fn set_time(&mut self, _time: f64) {}
+        }
+    };
+}
+pub(crate) use model_document;

@@ -5,13 +5,12 @@ use splinekit::curve::Curve;
 use splinekit::surface::Surface;
 use splinekit::surface::derived::{CoonsBlend, CoonsPatch, Extrusion, RevolvedSurface, RuledSurface, SweepSurface};
 
-use super::surface_in_3d;
 use crate::curves::{BezierDoc, CircleDoc, CurveDocument, LineDoc, TrefoilDoc};
 use crate::defaults::{origin, tau, z_axis};
 use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::points::to_point;
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::{Decoration, DocumentKind, KindName, ModelFamily};
 
 /// `{"type":"revolution","curve":{…},"axis_point":[0,0,0],"axis":[0,0,1],"angle":2π}`:
 /// the curve turned about the axis; u is the angle, v the curve's parameter.
@@ -37,7 +36,7 @@ impl DocumentKind for RevolutionDoc {
         Ok(3)
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
-        surface_in_3d::<D>(|| {
+        Surfaces::model_in::<D>(Self::TYPE, || {
             if self.curve.dimension().map_err(|e| e.within("curve"))? != 3 {
                 return Err(DocumentError::new("curve", "the profile of a revolution must be a 3-D curve"));
             }
@@ -247,7 +246,7 @@ impl DocumentKind for SweepDoc {
             }
             c.build_in::<3>().map_err(|e| e.within(field))
         };
-        surface_in_3d::<D>(|| {
+        Surfaces::model_in::<D>(Self::TYPE, || {
             Ok(Box::new(SweepSurface::new(three(&self.profile, "profile")?, three(&self.path, "path")?)?))
         })
     }
