@@ -9,7 +9,7 @@ mod composite;
 mod splines;
 
 use serde_json::Value;
-use splinekit::curve::model::{Butterfly, Circle, Ellipse, Heart, Helix, Lissajous, Rose, Trefoil};
+use splinekit::curve::model::{Butterfly, Circle, Ellipse, Heart, Helix, Lissajous, Rolling, Rose, Trefoil, Trochoid};
 
 pub use crate::blending::{BlendingSplineDoc, LocalDoc};
 pub use composite::{BFunctionShapeDoc, BlendDoc};
@@ -54,6 +54,8 @@ document_kinds! {
         Trefoil(TrefoilDoc) = "trefoil",
         /// Butterfly curve.
         Butterfly(ButterflyDoc) = "butterfly",
+        /// Hypotrochoid or epitrochoid (spirograph curve).
+        Trochoid(TrochoidDoc) = "trochoid",
         /// A B-function as a 1-D curve.
         Bfunction(BFunctionShapeDoc) = "bfunction",
         /// Blend of two curves.
@@ -164,4 +166,43 @@ model_document! {
         pub scale: f64 = 1.0,
     }
     build(|d| Butterfly::new(d.scale))
+}
+
+model_document! {
+    /// `{"type":"trochoid","rolling":"inside","fixed_radius":5,"rolling_radius":3,"distance":5}`:
+    /// the spirograph curve drawn by a pen at distance d from the centre of a circle of
+    /// radius r rolling inside (hypotrochoid) or outside (epitrochoid) a circle of radius R,
+    /// over its whole period t ∈ [0, 2π·q] where R/r = p/q, or over t ∈ [0, 2π·turns].
+    pub struct TrochoidDoc in Curves {
+        /// `"inside"` (default: the hypotrochoid) or `"outside"` (the epitrochoid).
+        pub rolling: RollingDoc = RollingDoc::Inside,
+        /// R (default 5).
+        pub fixed_radius: f64 = 5.0,
+        /// r (default 3).
+        pub rolling_radius: f64 = 3.0,
+        /// d (default 5).
+        pub distance: f64 = 5.0,
+        /// Turns of the rolling circle's centre (default: until the curve closes).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub turns: Option<f64> = None,
+    }
+    build(|d| {
+        let rolling = match d.rolling {
+            RollingDoc::Inside => Rolling::Inside,
+            RollingDoc::Outside => Rolling::Outside,
+        };
+        match d.turns {
+            None => Trochoid::new(rolling, d.fixed_radius, d.rolling_radius, d.distance),
+            Some(turns) => Trochoid::with_turns(rolling, d.fixed_radius, d.rolling_radius, d.distance, turns),
+        }
+    })
+}
+
+/// Where the circle of a trochoid rolls: `"inside"` or `"outside"` the fixed circle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+#[allow(missing_docs)]
+pub enum RollingDoc {
+    Inside,
+    Outside,
 }

@@ -11,6 +11,7 @@ pub mod lissajous;
 pub mod rose;
 pub mod trefoil;
 pub mod trig;
+pub mod trochoid;
 
 pub use butterfly::Butterfly;
 pub use circle::Circle;
@@ -22,3 +23,4 @@ pub use lissajous::Lissajous;
 pub use rose::Rose;
 pub use trefoil::Trefoil;
 pub use trig::{Term, TrigCurve, TrigSeries};
+pub use trochoid::{Rolling, Trochoid};
