@@ -7,7 +7,10 @@
 
 #![warn(missing_docs)]
 
+pub mod adaptive_mesh;
+pub mod boundary_gluing;
 pub mod export;
+mod mesh_cleanup;
 pub mod polyline;
 pub mod subdivision_surface;
 pub mod surface_mesh;

@@ -19,6 +19,8 @@
 
 use std::collections::HashMap;
 
+use crate::export::representable::{ExportError, Precision, check_vectors, one_line};
+
 use splinekit::{Error, Result};
 
 /// A mesh of polygons (each face's vertices counter-clockwise around its outer side).
@@ -333,19 +335,25 @@ pub fn read_obj_polygons(text: &str) -> std::result::Result<PolygonMesh, String>
     Ok(m)
 }
 
-/// The mesh as OBJ text (polygon faces).
-pub fn write_obj_polygons(mesh: &PolygonMesh, name: &str) -> String {
-    use std::fmt::Write;
-    let mut s = format!("# splinekit subdivision surface\no {name}\n");
+/// Writes the mesh as OBJ text (polygon faces) to `out` (give it a buffered writer);
+/// refuses non-finite coordinates before writing anything.
+pub fn write_obj_polygons(
+    mesh: &PolygonMesh,
+    name: &str,
+    mut out: impl std::io::Write,
+) -> std::result::Result<(), ExportError> {
+    check_vectors(&mesh.vertices, Precision::Double, "OBJ", "vertices")?;
+    writeln!(out, "# splinekit subdivision surface\no {}", one_line(name))?;
     for v in &mesh.vertices {
-        let _ = writeln!(s, "v {} {} {}", v[0], v[1], v[2]);
+        writeln!(out, "v {} {} {}", v[0], v[1], v[2])?;
     }
     for f in &mesh.faces {
-        s.push('f');
+        out.write_all(b"f")?;
         for &i in f {
-            let _ = write!(s, " {}", i + 1);
+            write!(out, " {}", i + 1)?;
         }
-        s.push('\n');
+        out.write_all(b"\n")?;
     }
-    s
+    out.flush()?;
+    Ok(())
 }

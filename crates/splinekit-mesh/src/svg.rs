@@ -7,6 +7,8 @@
 use splinekit::Point;
 use std::fmt::Write;
 
+use crate::export::representable::{ExportError, Precision, check_value};
+
 /// How world points map to the drawing plane.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Projection {
@@ -87,8 +89,9 @@ impl SvgFigure {
         self
     }
 
-    /// The SVG document.
-    pub fn render(&self) -> String {
+    /// The SVG document; refuses points whose drawing coordinates are not finite (NaN,
+    /// infinite, or so far apart that the picture's scale overflows), naming the item.
+    pub fn render(&self) -> Result<String, ExportError> {
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
         let mut grow = |p: &[f64; 2]| {
             for i in 0..2 {
@@ -116,6 +119,20 @@ impl SvgFigure {
         let ox = margin + (w - span[0] * scale) / 2.0;
         let oy = margin + top + (h - span[1] * scale) / 2.0;
         let px = |p: &[f64; 2]| [ox + (p[0] - lo[0]) * scale, oy + (hi[1] - p[1]) * scale];
+        for (k, item) in self.items.iter().enumerate() {
+            let pts = match item {
+                Item::Path { pts, .. } | Item::Dots { pts, .. } => pts.as_slice(),
+                Item::Label { at, .. } => std::slice::from_ref(at),
+            };
+            for (i, p) in pts.iter().enumerate() {
+                let q = px(p);
+                for (c, &x) in q.iter().enumerate() {
+                    check_value(x, Precision::Double, "SVG", || {
+                        format!("items[{k}] point {i} ({:?}) drawn at [{c}]", p)
+                    })?;
+                }
+            }
+        }
         let mut s = String::new();
         let _ = writeln!(
             s,
@@ -169,7 +186,7 @@ impl SvgFigure {
             }
         }
         s.push_str("</svg>\n");
-        s
+        Ok(s)
     }
 }
 

@@ -42,46 +42,51 @@ impl TriangleMesh {
             ([lo[0].min(p[0]), lo[1].min(p[1]), lo[2].min(p[2])], [hi[0].max(p[0]), hi[1].max(p[1]), hi[2].max(p[2])])
         }))
     }
-    /// Replaces zero normals (poles, cusps) by the area-weighted mean of the adjacent faces'
-    /// normals; fills all normals that way when there are none.
+    /// The volume enclosed by a closed mesh, by the divergence theorem: Σ (a−o)·((b−o) × (c−o)) / 6
+    /// over the triangles, o the first vertex (positive when the triangles face outward).
+    pub fn signed_volume(&self) -> f64 {
+        let Some(&o) = self.positions.first() else { return 0.0 };
+        self.triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|i| sub(self.positions[i as usize], o));
+                let bc = cross(b, c);
+                (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]) / 6.0
+            })
+            .sum()
+    }
+    /// Gives every vertex whose normal is missing, zero or not of unit length the
+    /// area-weighted mean of its faces' normals (or, where those cancel, the mean of its
+    /// neighbours' normals); fills all normals that way when there are none.
     pub fn repair_normals(&mut self) {
         if self.normals.len() != self.positions.len() {
             self.normals = vec![[0.0; 3]; self.positions.len()];
         }
-        let missing: Vec<bool> = self.normals.iter().map(|n| norm(*n) < 0.5).collect();
+        let unit = |n: [f64; 3]| (norm(n) - 1.0).abs() < 1e-6;
+        let missing: Vec<bool> = self.normals.iter().map(|n| !unit(*n)).collect();
         if !missing.iter().any(|&m| m) {
             return;
         }
-        let mut acc = vec![[0.0; 3]; self.positions.len()];
+        let mut faces = vec![[0.0; 3]; self.positions.len()];
+        let mut neighbours = vec![[0.0; 3]; self.positions.len()];
         for t in &self.triangles {
             let [a, b, c] = t.map(|i| self.positions[i as usize]);
             let n = cross(sub(b, a), sub(c, a));
-            for &i in t {
-                let s = &mut acc[i as usize];
-                for k in 0..3 {
-                    s[k] += n[k];
+            for (k, &i) in t.iter().enumerate() {
+                add(&mut faces[i as usize], n);
+                for other in [t[(k + 1) % 3], t[(k + 2) % 3]] {
+                    if !missing[other as usize] {
+                        add(&mut neighbours[i as usize], self.normals[other as usize]);
+                    }
                 }
             }
         }
         for (i, m) in missing.iter().enumerate() {
             if *m {
-                self.normals[i] = normalize(acc[i]);
+                let from_faces = normalize(faces[i]);
+                self.normals[i] = if unit(from_faces) { from_faces } else { normalize(neighbours[i]) };
             }
         }
-    }
-    /// Removes triangles with two equal vertex indices or zero area.
-    pub fn drop_degenerate(&mut self) {
-        let keep: Vec<bool> = (0..self.triangles.len())
-            .map(|t| {
-                let [a, b, c] = self.triangles[t];
-                a != b && b != c && a != c && self.double_area(t) > 0.0
-            })
-            .collect();
-        let mut i = 0;
-        self.triangles.retain(|_| {
-            i += 1;
-            keep[i - 1]
-        });
     }
     /// Edges used by exactly one triangle (the boundary; empty for a closed surface).
     pub fn boundary_edges(&self) -> Vec<[u32; 2]> {
@@ -98,6 +103,11 @@ impl TriangleMesh {
     }
 }
 
+fn add(acc: &mut [f64; 3], v: [f64; 3]) {
+    for k in 0..3 {
+        acc[k] += v[k];
+    }
+}
 pub(crate) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }

@@ -6,7 +6,7 @@ use std::f64::consts::PI;
 
 use splinekit::Point;
 use splinekit::surface::model::{Plane, Sphere, Torus};
-use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene, obj, ply, stl};
+use splinekit_mesh::export::{ExportError, GltfGeometry, GltfObject, GltfScene, obj, ply, stl};
 use splinekit_mesh::surface_mesh::{adaptive, regular};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, TriangleMesh};
 
@@ -106,6 +106,17 @@ fn adaptive_meshes_refine_where_curved_and_stitch_levels_without_cracks() {
     }
 }
 
+/// What a writer puts into a file.
+fn bytes(write: impl FnOnce(&mut Vec<u8>) -> Result<(), ExportError>) -> Vec<u8> {
+    let mut out = Vec::new();
+    write(&mut out).unwrap();
+    out
+}
+
+fn text(write: impl FnOnce(&mut Vec<u8>) -> Result<(), ExportError>) -> String {
+    String::from_utf8(bytes(write)).unwrap()
+}
+
 fn sample_mesh() -> TriangleMesh {
     regular(&torus(), 12, 6, MeshOptions { uv: true }).unwrap()
 }
@@ -113,18 +124,18 @@ fn sample_mesh() -> TriangleMesh {
 #[test]
 fn obj_ply_and_stl_read_back() {
     let m = sample_mesh();
-    let back = obj::read_obj(&obj::write_obj(&m, "torus")).unwrap();
+    let back = obj::read_obj(&text(|out| obj::write_obj(&m, "torus", out))).unwrap();
     assert_eq!(
         (back.positions.clone(), back.normals.clone(), back.uvs.clone()),
         (m.positions.clone(), m.normals.clone(), m.uvs.clone())
     );
     assert_eq!(back.triangles, m.triangles);
-    let back = ply::read_ply(&ply::write_ply(&m)).unwrap();
+    let back = ply::read_ply(&text(|out| ply::write_ply(&m, out))).unwrap();
     assert_eq!(
         (back.positions, back.normals, back.uvs, back.triangles),
         (m.positions.clone(), m.normals.clone(), m.uvs.clone(), m.triangles.clone())
     );
-    for bytes in [stl::write_stl_binary(&m), stl::write_stl_ascii(&m, "torus").into_bytes()] {
+    for bytes in [bytes(|out| stl::write_stl_binary(&m, out)), bytes(|out| stl::write_stl_ascii(&m, "torus", out))] {
         let tris = stl::read_stl(&bytes).unwrap();
         assert_eq!(tris.len(), m.triangles.len());
         for (t, (n, c)) in tris.iter().enumerate() {
@@ -184,8 +195,8 @@ fn gltf_and_glb_read_back_with_the_gltf_crate() {
             },
         ],
     };
-    let glb = scene.to_glb();
-    let text = scene.to_gltf();
+    let glb = scene.to_glb().unwrap();
+    let text = scene.to_gltf().unwrap();
     let from_glb = gltf::Gltf::from_slice(&glb).unwrap();
     let glb_blob = from_glb.blob.clone().unwrap();
     let from_text = gltf::Gltf::from_slice(text.as_bytes()).unwrap();

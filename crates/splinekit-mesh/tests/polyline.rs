@@ -74,10 +74,18 @@ fn svg_maps_points_into_the_picture() {
     let mut fig = SvgFigure::new(200.0, 100.0, Projection::TOP);
     fig.path(&[Point::<2>::new(0.0, 0.0), Point::<2>::new(4.0, 2.0)], false, "#000", 1.0);
     fig.dots(&[Point::<2>::new(2.0, 1.0)], 3.0, "red");
-    let svg = fig.render();
+    let svg = fig.render().unwrap();
     assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
     // Uniform scale: the 4×2 box is limited by the 60-pixel height inside 20-pixel margins
     // (30 px per unit), centred horizontally; y points up.
     assert!(svg.contains("M40.00,80.00 L160.00,20.00"), "{svg}");
     assert!(svg.contains(r#"cx="100.00" cy="50.00""#), "{svg}");
+    // Points whose drawing coordinates are not finite are refused, naming the item.
+    fig.dots(&[Point::<2>::new(f64::NAN, 1.0)], 3.0, "red");
+    let e = fig.render().unwrap_err().to_string();
+    assert!(e.starts_with("items[2] point 0"), "{e}");
+    let mut far = SvgFigure::new(200.0, 100.0, Projection::TOP);
+    far.path(&[Point::<2>::new(-1e308, 0.0), Point::<2>::new(1e308, 0.0)], false, "#000", 1.0);
+    let e = far.render().unwrap_err().to_string();
+    assert!(e.contains("not a finite number, which SVG needs"), "{e}");
 }

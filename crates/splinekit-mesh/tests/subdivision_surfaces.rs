@@ -107,7 +107,9 @@ fn bad_meshes_are_refused_and_obj_round_trips() {
     assert!(e.contains("faces[") && e.contains("oriented"), "{e}");
     let bad = PolygonMesh { vertices: vec![[0.0; 3]; 3], faces: vec![vec![0, 1]] };
     assert!(bad.doo_sabin().unwrap_err().to_string().contains("faces[0]"));
-    let text = write_obj_polygons(&cube(), "cube");
+    let mut text = Vec::new();
+    write_obj_polygons(&cube(), "cube", &mut text).unwrap();
+    let text = String::from_utf8(text).unwrap();
     assert_eq!(read_obj_polygons(&text).unwrap(), cube());
     assert!(read_obj_polygons("v 0 0 0\nf 1 2 3\n").unwrap_err().contains("line 2"));
 }

@@ -45,17 +45,20 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
     };
     let out = mesh.subdivide(scheme, steps).map_err(|e| anyhow!("mesh: {e}"))?;
     let name = std::path::Path::new(&args.output).file_stem().and_then(|s| s.to_str()).unwrap_or("mesh").to_string();
-    let bytes = match ext.as_str() {
-        "obj" => write_obj_polygons(&out, &name).into_bytes(),
+    let mut bytes = Vec::new();
+    match ext.as_str() {
+        "obj" => write_obj_polygons(&out, &name, &mut bytes),
         other => {
             let t = out.triangulate();
             match other {
-                "stl" => stl::write_stl_binary(&t),
-                "ply" => ply::write_ply(&t).into_bytes(),
+                "stl" => stl::write_stl_binary(&t, &mut bytes),
+                "ply" => ply::write_ply(&t, &mut bytes),
                 _ => GltfScene::single(&name, GltfGeometry::Mesh(t), super::tessellate::EXPORT_COLOR)
-                    .to_file_bytes(other),
+                    .to_file_bytes(other)
+                    .map(|b| bytes = b),
             }
         }
-    };
+    }
+    .map_err(|e| anyhow!("{e}"))?;
     std::fs::write(&args.output, bytes).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
 }

@@ -6,7 +6,7 @@ use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
-use splinekit_mesh::export::{GltfGeometry, GltfScene, obj, ply, stl};
+use splinekit_mesh::export::{ExportError, GltfGeometry, GltfScene, obj, ply, stl};
 use splinekit_mesh::surface_mesh::{adaptive, regular, to3};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, Projection, SvgFigure, TriangleMesh};
 use splinekit_scene::{Curves, DimensionVisitor, SceneOrShape, ShapeDocument, Surfaces};
@@ -90,7 +90,7 @@ fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, ex
     }
     let (frames, fps) = if scene.is_animated() { (scene.animation.frames(), scene.animation.fps) } else { (1, 1.0) };
     let gltf = splinekit_render::scene_to_gltf(scene, frames, fps)?;
-    let bytes = gltf.to_file_bytes(ext);
+    let bytes = gltf.to_file_bytes(ext).map_err(|e| anyhow!("{e}"))?;
     std::fs::write(&args.output, bytes).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
 }
 
@@ -98,8 +98,15 @@ fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, ex
 pub const EXPORT_COLOR: [f32; 4] = [0.12, 0.37, 0.75, 1.0];
 
 /// One object as a .gltf or .glb file.
-fn gltf_file(name: &str, geometry: GltfGeometry, ext: &str) -> Vec<u8> {
+fn gltf_file(name: &str, geometry: GltfGeometry, ext: &str) -> Result<Vec<u8>, ExportError> {
     GltfScene::single(name, geometry, EXPORT_COLOR).to_file_bytes(ext)
+}
+
+/// What a writer puts into a file, or its refusal as one line.
+fn written(write: impl FnOnce(&mut Vec<u8>) -> Result<(), ExportError>) -> Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    write(&mut bytes).map_err(|e| anyhow!("{e}"))?;
+    Ok(bytes)
 }
 
 pub fn run(args: &TessellateArgs) -> Result<()> {
@@ -127,15 +134,15 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
                     let pts: Vec<splinekit::Point<3>> =
                         points.iter().map(|p| splinekit::Point::<3>::from(*p)).collect();
                     fig.path(&pts, closed, "#1f5fbf", 2.0);
-                    fig.render().into_bytes()
+                    fig.render().map_err(|e| anyhow!("{e}"))?.into_bytes()
                 }
-                "obj" => obj::write_obj_polyline(&points, closed, &name).into_bytes(),
+                "obj" => written(|out| obj::write_obj_polyline(&points, closed, &name, out))?,
                 _ => {
                     let mut strip = points.clone();
                     if closed && !points.is_empty() {
                         strip.push(points[0]);
                     }
-                    gltf_file(&name, GltfGeometry::LineStrip(strip), &ext)
+                    gltf_file(&name, GltfGeometry::LineStrip(strip), &ext).map_err(|e| anyhow!("{e}"))?
                 }
             }
         }
@@ -147,11 +154,11 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
             let uv = matches!(ext.as_str(), "obj" | "ply" | "gltf" | "glb");
             let mesh = surface.visit(SurfaceTriangles(args, uv))?;
             match ext.as_str() {
-                "obj" => obj::write_obj(&mesh, &name).into_bytes(),
-                "stl" => stl::write_stl_binary(&mesh),
-                "stla" => stl::write_stl_ascii(&mesh, &name).into_bytes(),
-                "ply" => ply::write_ply(&mesh).into_bytes(),
-                _ => gltf_file(&name, GltfGeometry::Mesh(mesh), &ext),
+                "obj" => written(|out| obj::write_obj(&mesh, &name, out))?,
+                "stl" => written(|out| stl::write_stl_binary(&mesh, out))?,
+                "stla" => written(|out| stl::write_stl_ascii(&mesh, &name, out))?,
+                "ply" => written(|out| ply::write_ply(&mesh, out))?,
+                _ => gltf_file(&name, GltfGeometry::Mesh(mesh), &ext).map_err(|e| anyhow!("{e}"))?,
             }
         }
     };

@@ -80,7 +80,7 @@ pub fn bspline_from_control_points() -> Result<Figure> {
             "Cubic B-spline c(t) = Σ N<sub>i,3</sub>(t) P<sub>i</sub> with clamped knots 0,0,0,0,1,2,3,4,5,5,5,5: \
                   control polygon dashed, control points red, the curve at the knots black."
                 .into(),
-        svg: fig.render(),
+        svg: fig.render()?,
     })
 }
 
@@ -102,7 +102,7 @@ pub fn least_squares_circle() -> Result<Figure> {
              RMS error {:.2e}, max error {:.2e}.",
             f.rms_error, f.max_error
         ),
-        svg: fig.render(),
+        svg: fig.render()?,
     })
 }
 
@@ -122,7 +122,7 @@ pub fn lane_riesenfeld_closed() -> Result<Figure> {
             "Lane–Riesenfeld subdivision (double, then 3 averaging passes) of a closed polygon: 1, 2 and 5 steps. \
                   The limit is the periodic uniform cubic B-spline on the initial points (red)."
                 .into(),
-        svg: fig.render(),
+        svg: fig.render()?,
     })
 }
 
@@ -144,7 +144,7 @@ pub fn de_casteljau() -> Result<Figure> {
         caption: "De Casteljau's algorithm: repeated linear interpolation at t = 0.4 of the control polygon, \
                   then of each new polygon, ends at the curve point c(0.4)."
             .into(),
-        svg: fig.render(),
+        svg: fig.render()?,
     })
 }
 
@@ -165,7 +165,7 @@ pub fn bernstein_basis() -> Result<Figure> {
         caption:
             "The cubic Bernstein basis C(3,i) t<sup>i</sup> (1−t)<sup>3−i</sup> on [0, 1]: non-negative, summing to 1."
                 .into(),
-        svg: fig.render(),
+        svg: fig.render()?,
     })
 }
 
@@ -180,7 +180,7 @@ pub fn bspline_basis() -> Result<Figure> {
     Ok(Figure {
         file: "bspline_basis.svg",
         caption: "Cox–de Boor basis functions N<sub>i,3</sub>: each is non-zero on 4 spans; the double knot at 2 lowers the continuity there to C¹.".into(),
-        svg: fig.render(),
+        svg: fig.render()?,
     })
 }
 
@@ -200,7 +200,7 @@ pub fn nurbs_circle() -> Result<Figure> {
         caption: format!(
             "The rational quadratic circle: corner weights √2/2 make it exact (max radius error over 10001 points: {err:.1e})."
         ),
-        svg: fig.render(),
+        svg: fig.render()?,
     })
 }
 
@@ -224,7 +224,7 @@ pub fn hermite_and_catmull_rom() -> Result<Figure> {
         caption: "Catmull–Rom splines with uniform (blue), centripetal (red) and chordal (green) knots, and a \
                   piecewise cubic Hermite curve with fixed tangents (purple). Centripetal avoids the cusp and loop near the close pair."
             .into(),
-        svg: fig.render(),
+        svg: fig.render()?,
     })
 }
 
@@ -242,7 +242,7 @@ pub fn subdivision_schemes() -> Result<Figure> {
         caption: "Chaikin corner cutting keeping the ends (blue), the interpolating 4-point scheme (red) and \
                   Lane–Riesenfeld of degree 4 (green) on the same polygon."
             .into(),
-        svg: fig.render(),
+        svg: fig.render()?,
     })
 }
 
@@ -266,7 +266,7 @@ pub fn refinement() -> Result<Figure> {
             "One cubic B-spline (blue) with three control polygons: the original (dashed), after inserting six knots \
                   (red) and after raising the degree to 5 (green). The curve is the same for all three."
                 .into(),
-        svg: fig.render(),
+        svg: fig.render()?,
     })
 }
 
@@ -306,7 +306,7 @@ pub fn model_curves() -> Result<Vec<Figure>> {
         out.push(Figure {
             file,
             caption: format!("Model curve: {caption}; analytic derivatives of every order."),
-            svg: fig.render(),
+            svg: fig.render()?,
         });
     }
     Ok(out)
@@ -335,7 +335,7 @@ pub fn blending() -> Result<Vec<Figure>> {
             "B-functions B: [0, 1] → [0, 1]. The smoother their ends, the smoother the blend: 3t² − 2t³ gives C¹, \
                   the trigonometric one C², ERBS C^∞ (all derivatives vanish at 0 and 1)."
                 .into(),
-        svg: fig.render(),
+        svg: fig.render()?,
     };
     // c₁(t) = (4t, ½ sin 2πt) and, for overlap x, c₂(s) = (4(s + x), 1.5 + ½ cos 2πs): over
     // the overlap c₁(t) and c₂(t − x) share their abscissa, so the blend visibly crosses.
@@ -362,7 +362,7 @@ pub fn blending() -> Result<Vec<Figure>> {
         caption: "The seeds' two-curve blend on [0, 1 + x]: the lower wave c₁ until x, then c₁ + B((t−x)/(1−x))(c₂(t−x) − c₁) \
                   with B = 3t² − 2t³ across the overlap, then the upper wave c₂ (both dashed grey), for overlaps x = 0.8, 0.5, 0.2."
             .into(),
-        svg: fig.render(),
+        svg: fig.render()?,
     };
     Ok(vec![bfunctions, blends])
 }

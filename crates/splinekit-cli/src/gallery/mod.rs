@@ -138,12 +138,12 @@ fn render_scene(
         let mut gif = Vec::new();
         write_gif(&mut gif, &images, fps as f32).map_err(|e| anyhow!("{name}.gif: {e}"))?;
         folder.write(&format!("{name}.gif"), &gif)?;
-        folder.write(&glb, &scene_to_gltf(doc, frames, fps).map_err(|e| anyhow!("{name}: {e}"))?.to_glb())?;
+        folder.write(&glb, &scene_to_gltf(doc, frames, fps).map_err(|e| anyhow!("{name}: {e}"))?.to_glb()?)?;
         Ok(format!("{name}.gif"))
     } else {
         let img = render_frame(renderer, doc, None, size, None)?;
         folder.write(&format!("{name}.png"), &img.to_png())?;
-        folder.write(&glb, &scene_to_gltf(doc, 1, 1.0).map_err(|e| anyhow!("{name}: {e}"))?.to_glb())?;
+        folder.write(&glb, &scene_to_gltf(doc, 1, 1.0).map_err(|e| anyhow!("{name}: {e}"))?.to_glb()?)?;
         Ok(format!("{name}.png"))
     }
 }

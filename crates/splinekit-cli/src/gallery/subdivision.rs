@@ -50,7 +50,7 @@ pub fn figures(renderer: &Renderer) -> Result<Vec<Figure>> {
         let bounds = scene.bounds().expect("a cube has bounds");
         scene.camera = Some(Camera::fit(bounds, 0.7, 0.45, 4.0 / 3.0));
         let img = renderer.render(&scene, 640, 480)?;
-        let glb = GltfScene::single(stem, GltfGeometry::Mesh(mesh), color).to_glb();
+        let glb = GltfScene::single(stem, GltfGeometry::Mesh(mesh), color).to_glb()?;
         out.push((stem.to_string(), caption.to_string(), img, glb));
     }
     Ok(out)

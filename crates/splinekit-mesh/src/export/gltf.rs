@@ -7,6 +7,7 @@
 
 use serde_json::{Value, json};
 
+use super::representable::{ExportError, Precision, check_mesh, check_value};
 use crate::triangle_mesh::TriangleMesh;
 
 /// An animation frame: time in seconds, vertex positions, vertex normals.
@@ -49,6 +50,19 @@ struct Builder {
     accessors: Vec<Value>,
 }
 
+/// What an accessor holds, for error messages: `objects[0] ("torus") POSITION`.
+struct Named<'a> {
+    object: usize,
+    name: &'a str,
+    what: &'a str,
+}
+
+impl std::fmt::Display for Named<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "objects[{}] ({:?}) {}", self.object, self.name, self.what)
+    }
+}
+
 impl Builder {
     fn view(&mut self, bytes: &[u8], target: Option<u32>) -> usize {
         while self.bin.len() % 4 != 0 {
@@ -62,26 +76,36 @@ impl Builder {
         self.views.push(v);
         self.views.len() - 1
     }
-    /// A float accessor of `n`-component elements (with min/max when `bounds`).
-    fn floats(&mut self, data: &[f32], n: usize, kind: &str, bounds: bool, target: Option<u32>) -> usize {
-        let bytes: Vec<u8> = data.iter().flat_map(|x| x.to_le_bytes()).collect();
-        let view = self.view(&bytes, target);
-        let count = data.len() / n;
-        let mut a = json!({"bufferView": view, "componentType": 5126, "count": count, "type": kind});
-        if bounds && count > 0 {
-            let mut lo = vec![f32::INFINITY; n];
-            let mut hi = vec![f32::NEG_INFINITY; n];
-            for e in data.chunks_exact(n) {
-                for k in 0..n {
-                    lo[k] = lo[k].min(e[k]);
-                    hi[k] = hi[k].max(e[k]);
-                }
+    /// A float accessor of `N`-component elements (with min/max when `bounds`), refusing
+    /// values that are not finite as 32-bit floats.
+    fn floats<const N: usize>(
+        &mut self,
+        data: &[[f64; N]],
+        kind: &str,
+        bounds: bool,
+        target: Option<u32>,
+        named: Named<'_>,
+    ) -> Result<usize, ExportError> {
+        let mut bytes = Vec::with_capacity(4 * N * data.len());
+        let mut lo = [f32::INFINITY; N];
+        let mut hi = [f32::NEG_INFINITY; N];
+        for (i, e) in data.iter().enumerate() {
+            for k in 0..N {
+                check_value(e[k], Precision::Single, "glTF", || format!("{named}[{i}][{k}]"))?;
+                let x = e[k] as f32;
+                bytes.extend_from_slice(&x.to_le_bytes());
+                lo[k] = lo[k].min(x);
+                hi[k] = hi[k].max(x);
             }
-            a["min"] = json!(lo);
-            a["max"] = json!(hi);
+        }
+        let view = self.view(&bytes, target);
+        let mut a = json!({"bufferView": view, "componentType": 5126, "count": data.len(), "type": kind});
+        if bounds && !data.is_empty() {
+            a["min"] = json!(lo.to_vec());
+            a["max"] = json!(hi.to_vec());
         }
         self.accessors.push(a);
-        self.accessors.len() - 1
+        Ok(self.accessors.len() - 1)
     }
     fn indices(&mut self, data: &[u32]) -> usize {
         let bytes: Vec<u8> = data.iter().flat_map(|x| x.to_le_bytes()).collect();
@@ -91,8 +115,23 @@ impl Builder {
     }
 }
 
-fn flat3(v: &[[f64; 3]]) -> Vec<f32> {
-    v.iter().flat_map(|p| p.map(|x| x as f32)).collect()
+/// glTF requires unit NORMALs: refuses one whose length, in f32, is off by more than 10⁻⁴.
+fn check_unit_normals(normals: &[[f64; 3]], named: &Named<'_>) -> Result<(), ExportError> {
+    for (i, n) in normals.iter().enumerate() {
+        let len = n.iter().map(|&x| (x as f32 as f64).powi(2)).sum::<f64>().sqrt();
+        if !((len - 1.0).abs() <= 1e-4) {
+            return Err(ExportError::Unrepresentable {
+                field: format!("{named}[{i}]"),
+                message: format!("has length {len}, but glTF normals must have unit length"),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The component-wise difference a − b of two equally long lists.
+fn offsets(a: &[[f64; 3]], b: &[[f64; 3]]) -> Vec<[f64; 3]> {
+    a.iter().zip(b).map(|(p, q)| [p[0] - q[0], p[1] - q[1], p[2] - q[2]]).collect()
 }
 
 impl GltfScene {
@@ -102,71 +141,91 @@ impl GltfScene {
     }
 
     /// `.glb` bytes for `ext` = "glb", else `.gltf` text bytes.
-    pub fn to_file_bytes(&self, ext: &str) -> Vec<u8> {
-        if ext.eq_ignore_ascii_case("glb") { self.to_glb() } else { self.to_gltf().into_bytes() }
+    pub fn to_file_bytes(&self, ext: &str) -> Result<Vec<u8>, ExportError> {
+        if ext.eq_ignore_ascii_case("glb") { self.to_glb() } else { Ok(self.to_gltf()?.into_bytes()) }
+    }
+
+    /// The primitive of one object's geometry.
+    fn primitive(b: &mut Builder, k: usize, obj: &GltfObject) -> Result<Value, ExportError> {
+        let named = |what| Named { object: k, name: &obj.name, what };
+        Ok(match &obj.geometry {
+            GltfGeometry::Mesh(m) => {
+                check_mesh(m, Precision::Single, "glTF")?;
+                let mut attrs =
+                    json!({"POSITION": b.floats(&m.positions, "VEC3", true, Some(34962), named("POSITION"))?});
+                if m.normals.len() == m.positions.len() {
+                    check_unit_normals(&m.normals, &named("NORMAL"))?;
+                    attrs["NORMAL"] = json!(b.floats(&m.normals, "VEC3", false, Some(34962), named("NORMAL"))?);
+                }
+                if m.uvs.len() == m.positions.len() {
+                    let uv: Vec<[f64; 2]> = m.uvs.iter().map(|t| [t[0], 1.0 - t[1]]).collect();
+                    attrs["TEXCOORD_0"] = json!(b.floats(&uv, "VEC2", false, Some(34962), named("TEXCOORD_0"))?);
+                }
+                if m.colors.len() == m.positions.len() {
+                    let c: Vec<[f64; 4]> = m.colors.iter().map(|c| c.map(f64::from)).collect();
+                    attrs["COLOR_0"] = json!(b.floats(&c, "VEC4", false, Some(34962), named("COLOR_0"))?);
+                }
+                let flat: Vec<u32> = m.triangles.iter().flatten().copied().collect();
+                json!({"attributes": attrs, "indices": b.indices(&flat), "mode": 4, "material": k})
+            }
+            GltfGeometry::LineStrip(points) => {
+                let position = b.floats(points, "VEC3", true, Some(34962), named("POSITION"))?;
+                json!({"attributes": {"POSITION": position}, "mode": 3, "material": k})
+            }
+        })
+    }
+
+    /// The morph targets of an animated object and the animation of its weights.
+    fn morph_targets(b: &mut Builder, k: usize, obj: &GltfObject) -> Result<(Vec<Value>, Value), ExportError> {
+        let (_, base_p, base_n) = &obj.frames[0];
+        let mut targets = Vec::new();
+        for (f, (time, p, n)) in obj.frames.iter().enumerate() {
+            check_value(*time as f64, Precision::Single, "glTF", || format!("objects[{k}] frames[{f}] time"))?;
+            let what = format!("frames[{f}] POSITION offset");
+            let named = Named { object: k, name: &obj.name, what: &what };
+            let mut t = json!({"POSITION": b.floats(&offsets(p, base_p), "VEC3", true, None, named)?});
+            if n.len() == p.len() && base_n.len() == p.len() {
+                let what = format!("frames[{f}] NORMAL offset");
+                let named = Named { object: k, name: &obj.name, what: &what };
+                t["NORMAL"] = json!(b.floats(&offsets(n, base_n), "VEC3", false, None, named)?);
+            }
+            targets.push(t);
+        }
+        let f = obj.frames.len();
+        let times: Vec<[f64; 1]> = obj.frames.iter().map(|(t, _, _)| [*t as f64]).collect();
+        let weights: Vec<[f64; 1]> = (0..f * f).map(|i| [if i / f == i % f { 1.0 } else { 0.0 }]).collect();
+        let input =
+            b.floats(&times, "SCALAR", true, None, Named { object: k, name: &obj.name, what: "frame times" })?;
+        let output =
+            b.floats(&weights, "SCALAR", false, None, Named { object: k, name: &obj.name, what: "weights" })?;
+        let animation = json!({
+            "name": obj.name,
+            "samplers": [{"input": input, "output": output, "interpolation": "LINEAR"}],
+            "channels": [{"sampler": 0, "target": {"node": k, "path": "weights"}}]
+        });
+        Ok((targets, animation))
     }
 
     /// The glTF JSON document and its binary buffer.
-    fn build(&self) -> (Value, Vec<u8>) {
+    fn build(&self) -> Result<(Value, Vec<u8>), ExportError> {
         let mut b = Builder::default();
         let (mut meshes, mut nodes, mut materials, mut animations) = (vec![], vec![], vec![], vec![]);
         for (k, obj) in self.objects.iter().enumerate() {
+            for (c, &x) in obj.color.iter().enumerate() {
+                check_value(x as f64, Precision::Single, "glTF", || format!("objects[{k}] color[{c}]"))?;
+            }
             materials.push(json!({
                 "name": obj.name,
                 "doubleSided": true,
                 "pbrMetallicRoughness": {"baseColorFactor": obj.color, "metallicFactor": 0.0, "roughnessFactor": 0.6}
             }));
-            let mut prim = match &obj.geometry {
-                GltfGeometry::Mesh(m) => {
-                    let mut attrs = json!({"POSITION": b.floats(&flat3(&m.positions), 3, "VEC3", true, Some(34962))});
-                    if m.normals.len() == m.positions.len() {
-                        attrs["NORMAL"] = json!(b.floats(&flat3(&m.normals), 3, "VEC3", false, Some(34962)));
-                    }
-                    if m.uvs.len() == m.positions.len() {
-                        let uv: Vec<f32> = m.uvs.iter().flat_map(|t| [t[0] as f32, 1.0 - t[1] as f32]).collect();
-                        attrs["TEXCOORD_0"] = json!(b.floats(&uv, 2, "VEC2", false, Some(34962)));
-                    }
-                    if m.colors.len() == m.positions.len() {
-                        let c: Vec<f32> = m.colors.iter().flatten().copied().collect();
-                        attrs["COLOR_0"] = json!(b.floats(&c, 4, "VEC4", false, Some(34962)));
-                    }
-                    let flat: Vec<u32> = m.triangles.iter().flatten().copied().collect();
-                    json!({"attributes": attrs, "indices": b.indices(&flat), "mode": 4, "material": k})
-                }
-                GltfGeometry::LineStrip(points) => {
-                    json!({"attributes": {"POSITION": b.floats(&flat3(points), 3, "VEC3", true, Some(34962))}, "mode": 3, "material": k})
-                }
-            };
+            let mut prim = Self::primitive(&mut b, k, obj)?;
             let mut mesh = json!({"name": obj.name});
             if obj.frames.len() > 1 {
-                let (_, base_p, base_n) = &obj.frames[0];
-                let mut targets = Vec::new();
-                for (_, p, n) in &obj.frames {
-                    let dp: Vec<[f64; 3]> =
-                        p.iter().zip(base_p).map(|(a, c)| [a[0] - c[0], a[1] - c[1], a[2] - c[2]]).collect();
-                    let mut t = json!({"POSITION": b.floats(&flat3(&dp), 3, "VEC3", true, None)});
-                    if n.len() == p.len() && base_n.len() == p.len() {
-                        let dn: Vec<[f64; 3]> =
-                            n.iter().zip(base_n).map(|(a, c)| [a[0] - c[0], a[1] - c[1], a[2] - c[2]]).collect();
-                        t["NORMAL"] = json!(b.floats(&flat3(&dn), 3, "VEC3", false, None));
-                    }
-                    targets.push(t);
-                }
+                let (targets, animation) = Self::morph_targets(&mut b, k, obj)?;
                 prim["targets"] = json!(targets);
-                let f = obj.frames.len();
-                mesh["weights"] = json!(vec![0.0; f]);
-                let times: Vec<f32> = obj.frames.iter().map(|(t, _, _)| *t).collect();
-                let mut weights = vec![0.0f32; f * f];
-                for i in 0..f {
-                    weights[i * f + i] = 1.0;
-                }
-                let input = b.floats(&times, 1, "SCALAR", true, None);
-                let output = b.floats(&weights, 1, "SCALAR", false, None);
-                animations.push(json!({
-                    "name": obj.name,
-                    "samplers": [{"input": input, "output": output, "interpolation": "LINEAR"}],
-                    "channels": [{"sampler": 0, "target": {"node": k, "path": "weights"}}]
-                }));
+                mesh["weights"] = json!(vec![0.0; obj.frames.len()]);
+                animations.push(animation);
             }
             mesh["primitives"] = json!([prim]);
             meshes.push(mesh);
@@ -186,20 +245,20 @@ impl GltfScene {
         if !animations.is_empty() {
             doc["animations"] = json!(animations);
         }
-        (doc, b.bin)
+        Ok((doc, b.bin))
     }
 
     /// The scene as a `.gltf` file (buffer embedded as a data URI).
-    pub fn to_gltf(&self) -> String {
-        let (mut doc, bin) = self.build();
+    pub fn to_gltf(&self) -> Result<String, ExportError> {
+        let (mut doc, bin) = self.build()?;
         doc["buffers"][0]["uri"] = json!(format!("data:application/octet-stream;base64,{}", base64(&bin)));
-        serde_json::to_string(&doc).expect("JSON serialises")
+        Ok(serde_json::to_string(&doc).expect("JSON of finite numbers serialises"))
     }
 
     /// The scene as a `.glb` file.
-    pub fn to_glb(&self) -> Vec<u8> {
-        let (doc, mut bin) = self.build();
-        let mut json = serde_json::to_vec(&doc).expect("JSON serialises");
+    pub fn to_glb(&self) -> Result<Vec<u8>, ExportError> {
+        let (doc, mut bin) = self.build()?;
+        let mut json = serde_json::to_vec(&doc).expect("JSON of finite numbers serialises");
         while json.len() % 4 != 0 {
             json.push(b' ');
         }
@@ -207,17 +266,22 @@ impl GltfScene {
             bin.push(0);
         }
         let total = 12 + 8 + json.len() + 8 + bin.len();
+        let too_big = |_| ExportError::Unrepresentable {
+            field: "glb".into(),
+            message: format!("{total} bytes are more than a .glb file can hold (2³² − 1)"),
+        };
+        let total32 = u32::try_from(total).map_err(too_big)?;
         let mut out = Vec::with_capacity(total);
         out.extend_from_slice(b"glTF");
         out.extend_from_slice(&2u32.to_le_bytes());
-        out.extend_from_slice(&(total as u32).to_le_bytes());
+        out.extend_from_slice(&total32.to_le_bytes());
         out.extend_from_slice(&(json.len() as u32).to_le_bytes());
         out.extend_from_slice(b"JSON");
         out.extend_from_slice(&json);
         out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
         out.extend_from_slice(b"BIN\0");
         out.extend_from_slice(&bin);
-        out
+        Ok(out)
     }
 }
 

@@ -1,55 +1,65 @@
 //! Wavefront OBJ: `v x y z`, `vt u v`, `vn x y z`, faces `f a/b/c` (1-based), polylines `l`.
 
-use std::fmt::Write;
+use std::io::Write;
 
+use super::representable::{ExportError, Precision, check_mesh, check_vectors, one_line};
 use crate::triangle_mesh::TriangleMesh;
 
-/// The mesh as OBJ text (one object named `name`).
-pub fn write_obj(mesh: &TriangleMesh, name: &str) -> String {
-    let mut s = String::with_capacity(mesh.positions.len() * 64);
-    let _ = writeln!(s, "# splinekit\no {name}");
+/// Writes the mesh as OBJ text (one object named `name`) to `out` (give it a buffered
+/// writer); refuses non-finite numbers before writing anything.
+pub fn write_obj(mesh: &TriangleMesh, name: &str, mut out: impl Write) -> Result<(), ExportError> {
+    check_mesh(mesh, Precision::Double, "OBJ")?;
+    writeln!(out, "# splinekit\no {}", one_line(name))?;
     for p in &mesh.positions {
-        let _ = writeln!(s, "v {} {} {}", p[0], p[1], p[2]);
+        writeln!(out, "v {} {} {}", p[0], p[1], p[2])?;
     }
     for t in &mesh.uvs {
-        let _ = writeln!(s, "vt {} {}", t[0], t[1]);
+        writeln!(out, "vt {} {}", t[0], t[1])?;
     }
     for n in &mesh.normals {
-        let _ = writeln!(s, "vn {} {} {}", n[0], n[1], n[2]);
+        writeln!(out, "vn {} {} {}", n[0], n[1], n[2])?;
     }
     let (has_uv, has_n) = (!mesh.uvs.is_empty(), !mesh.normals.is_empty());
     for t in &mesh.triangles {
-        s.push('f');
+        out.write_all(b"f")?;
         for &i in t {
             let i = i + 1;
-            let _ = match (has_uv, has_n) {
-                (true, true) => write!(s, " {i}/{i}/{i}"),
-                (false, true) => write!(s, " {i}//{i}"),
-                (true, false) => write!(s, " {i}/{i}"),
-                (false, false) => write!(s, " {i}"),
-            };
+            match (has_uv, has_n) {
+                (true, true) => write!(out, " {i}/{i}/{i}"),
+                (false, true) => write!(out, " {i}//{i}"),
+                (true, false) => write!(out, " {i}/{i}"),
+                (false, false) => write!(out, " {i}"),
+            }?;
         }
-        s.push('\n');
+        out.write_all(b"\n")?;
     }
-    s
+    out.flush()?;
+    Ok(())
 }
 
-/// A polyline as OBJ text: its vertices and one `l` element (closed polylines repeat the
-/// first index at the end).
-pub fn write_obj_polyline(points: &[[f64; 3]], closed: bool, name: &str) -> String {
-    let mut s = format!("# splinekit\no {name}\n");
+/// Writes a polyline as OBJ text: its vertices and one `l` element (closed polylines repeat
+/// the first index at the end).
+pub fn write_obj_polyline(
+    points: &[[f64; 3]],
+    closed: bool,
+    name: &str,
+    mut out: impl Write,
+) -> Result<(), ExportError> {
+    check_vectors(points, Precision::Double, "OBJ", "points")?;
+    writeln!(out, "# splinekit\no {}", one_line(name))?;
     for p in points {
-        let _ = writeln!(s, "v {} {} {}", p[0], p[1], p[2]);
+        writeln!(out, "v {} {} {}", p[0], p[1], p[2])?;
     }
-    s.push('l');
+    out.write_all(b"l")?;
     for i in 1..=points.len() {
-        let _ = write!(s, " {i}");
+        write!(out, " {i}")?;
     }
     if closed && !points.is_empty() {
-        s.push_str(" 1");
+        out.write_all(b" 1")?;
     }
-    s.push('\n');
-    s
+    out.write_all(b"\n")?;
+    out.flush()?;
+    Ok(())
 }
 
 /// Reads the vertices, normals, texture coordinates and triangles of an OBJ file written by

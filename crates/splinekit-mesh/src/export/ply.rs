@@ -1,47 +1,51 @@
 //! PLY (ASCII 1.0): vertices with `x y z`, `nx ny nz` and `s t` when present, RGBA colours
 //! as `red green blue alpha` bytes when present, and triangular faces.
 
-use std::fmt::Write;
+use std::io::Write;
 
+use super::representable::{ExportError, Precision, check_mesh};
 use crate::triangle_mesh::TriangleMesh;
 
-/// The mesh as ASCII PLY.
-pub fn write_ply(mesh: &TriangleMesh) -> String {
+/// Writes the mesh as ASCII PLY to `out` (give it a buffered writer); refuses non-finite
+/// numbers before writing anything.
+pub fn write_ply(mesh: &TriangleMesh, mut out: impl Write) -> Result<(), ExportError> {
+    check_mesh(mesh, Precision::Double, "PLY")?;
     let (has_n, has_uv, has_c) = (!mesh.normals.is_empty(), !mesh.uvs.is_empty(), !mesh.colors.is_empty());
-    let mut s = String::from("ply\nformat ascii 1.0\ncomment splinekit\n");
-    let _ = writeln!(s, "element vertex {}", mesh.positions.len());
-    s.push_str("property double x\nproperty double y\nproperty double z\n");
+    out.write_all(b"ply\nformat ascii 1.0\ncomment splinekit\n")?;
+    writeln!(out, "element vertex {}", mesh.positions.len())?;
+    out.write_all(b"property double x\nproperty double y\nproperty double z\n")?;
     if has_n {
-        s.push_str("property double nx\nproperty double ny\nproperty double nz\n");
+        out.write_all(b"property double nx\nproperty double ny\nproperty double nz\n")?;
     }
     if has_uv {
-        s.push_str("property double s\nproperty double t\n");
+        out.write_all(b"property double s\nproperty double t\n")?;
     }
     if has_c {
-        s.push_str("property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n");
+        out.write_all(b"property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n")?;
     }
-    let _ = writeln!(s, "element face {}", mesh.triangles.len());
-    s.push_str("property list uchar uint vertex_indices\nend_header\n");
+    writeln!(out, "element face {}", mesh.triangles.len())?;
+    out.write_all(b"property list uchar uint vertex_indices\nend_header\n")?;
     for i in 0..mesh.positions.len() {
         let p = mesh.positions[i];
-        let _ = write!(s, "{} {} {}", p[0], p[1], p[2]);
+        write!(out, "{} {} {}", p[0], p[1], p[2])?;
         if has_n {
             let n = mesh.normals[i];
-            let _ = write!(s, " {} {} {}", n[0], n[1], n[2]);
+            write!(out, " {} {} {}", n[0], n[1], n[2])?;
         }
         if has_uv {
-            let _ = write!(s, " {} {}", mesh.uvs[i][0], mesh.uvs[i][1]);
+            write!(out, " {} {}", mesh.uvs[i][0], mesh.uvs[i][1])?;
         }
         if has_c {
             let c = mesh.colors[i].map(|x| (x.clamp(0.0, 1.0) * 255.0).round() as u8);
-            let _ = write!(s, " {} {} {} {}", c[0], c[1], c[2], c[3]);
+            write!(out, " {} {} {} {}", c[0], c[1], c[2], c[3])?;
         }
-        s.push('\n');
+        out.write_all(b"\n")?;
     }
     for t in &mesh.triangles {
-        let _ = writeln!(s, "3 {} {} {}", t[0], t[1], t[2]);
+        writeln!(out, "3 {} {} {}", t[0], t[1], t[2])?;
     }
-    s
+    out.flush()?;
+    Ok(())
 }
 
 /// Reads an ASCII PLY written by [`write_ply`] (positions, normals, s t, triangles).

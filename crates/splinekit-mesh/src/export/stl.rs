@@ -1,50 +1,68 @@
 //! STL: binary (80-byte header, triangle count, 50 bytes per triangle: normal and three
 //! vertices as f32, attribute count) and ASCII (`solid … facet normal … endsolid`). STL has
-//! no shared vertices: each triangle carries its own corners and face normal.
+//! no shared vertices: each triangle carries its own corners and face normal. Both kinds
+//! store 32-bit floats, so coordinates beyond ±f32::MAX are refused.
 
-use std::fmt::Write;
+use std::io::Write;
 
-use crate::triangle_mesh::TriangleMesh;
+use super::representable::{ExportError, Precision, check_mesh, one_line};
+use crate::triangle_mesh::{TriangleMesh, norm, normalize};
 
 /// A triangle read from STL: face normal and three corners.
 pub type StlTriangle = ([f32; 3], [[f32; 3]; 3]);
 
-/// Binary STL.
-pub fn write_stl_binary(mesh: &TriangleMesh) -> Vec<u8> {
-    let mut out = Vec::with_capacity(84 + 50 * mesh.triangles.len());
+/// The facet normal of triangle `t`: its face normal, or for a triangle without area the
+/// mean of its vertex normals.
+fn facet_normal(mesh: &TriangleMesh, t: usize) -> [f64; 3] {
+    let n = mesh.face_normal(t);
+    if norm(n) > 0.5 || mesh.normals.is_empty() {
+        return n;
+    }
+    let corners = mesh.triangles[t].map(|i| mesh.normals[i as usize]);
+    normalize(std::array::from_fn(|k| corners[0][k] + corners[1][k] + corners[2][k]))
+}
+
+/// Writes the mesh as binary STL to `out` (give it a buffered writer).
+pub fn write_stl_binary(mesh: &TriangleMesh, mut out: impl Write) -> Result<(), ExportError> {
+    check_mesh(mesh, Precision::Single, "STL")?;
+    let count = u32::try_from(mesh.triangles.len()).map_err(|_| ExportError::Unrepresentable {
+        field: "triangles".into(),
+        message: format!("{} triangles are more than binary STL can count (2³² − 1)", mesh.triangles.len()),
+    })?;
     let mut header = [0u8; 80];
     let tag = b"splinekit binary STL";
     header[..tag.len()].copy_from_slice(tag);
-    out.extend_from_slice(&header);
-    out.extend_from_slice(&(mesh.triangles.len() as u32).to_le_bytes());
+    out.write_all(&header)?;
+    out.write_all(&count.to_le_bytes())?;
+    let mut record = [0u8; 50];
     for (t, tri) in mesh.triangles.iter().enumerate() {
-        for v in mesh.face_normal(t) {
-            out.extend_from_slice(&(v as f32).to_le_bytes());
+        let values = std::iter::once(facet_normal(mesh, t)).chain(tri.iter().map(|&i| mesh.positions[i as usize]));
+        for (k, v) in values.flatten().enumerate() {
+            record[4 * k..4 * k + 4].copy_from_slice(&(v as f32).to_le_bytes());
         }
-        for &i in tri {
-            for v in mesh.positions[i as usize] {
-                out.extend_from_slice(&(v as f32).to_le_bytes());
-            }
-        }
-        out.extend_from_slice(&0u16.to_le_bytes());
+        out.write_all(&record)?;
     }
-    out
+    out.flush()?;
+    Ok(())
 }
 
-/// ASCII STL.
-pub fn write_stl_ascii(mesh: &TriangleMesh, name: &str) -> String {
-    let mut s = format!("solid {name}\n");
+/// Writes the mesh as ASCII STL to `out` (give it a buffered writer).
+pub fn write_stl_ascii(mesh: &TriangleMesh, name: &str, mut out: impl Write) -> Result<(), ExportError> {
+    check_mesh(mesh, Precision::Single, "STL")?;
+    let name = one_line(name);
+    writeln!(out, "solid {name}")?;
     for (t, tri) in mesh.triangles.iter().enumerate() {
-        let n = mesh.face_normal(t);
-        let _ = writeln!(s, "  facet normal {:e} {:e} {:e}\n    outer loop", n[0], n[1], n[2]);
+        let n = facet_normal(mesh, t);
+        writeln!(out, "  facet normal {:e} {:e} {:e}\n    outer loop", n[0], n[1], n[2])?;
         for &i in tri {
             let p = mesh.positions[i as usize];
-            let _ = writeln!(s, "      vertex {:e} {:e} {:e}", p[0], p[1], p[2]);
+            writeln!(out, "      vertex {:e} {:e} {:e}", p[0], p[1], p[2])?;
         }
-        s.push_str("    endloop\n  endfacet\n");
+        out.write_all(b"    endloop\n  endfacet\n")?;
     }
-    let _ = writeln!(s, "endsolid {name}");
-    s
+    writeln!(out, "endsolid {name}")?;
+    out.flush()?;
+    Ok(())
 }
 
 /// Triangles of an STL file (binary or ASCII), as (face normal, three corners).

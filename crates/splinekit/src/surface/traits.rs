@@ -217,4 +217,7 @@ impl<const D: usize, S: Surface<D> + ?Sized> Surface<D> for Box<S> {
     fn trim_contains(&self, u: f64, v: f64) -> Option<bool> {
         (**self).trim_contains(u, v)
     }
+    fn trim_loops(&self) -> Option<TrimLoops<'_>> {
+        (**self).trim_loops()
+    }
 }

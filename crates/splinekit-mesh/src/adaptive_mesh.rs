@@ -1,0 +1,256 @@
+//! Adaptive triangle meshes of surfaces: a quad-tree over the parameter rectangle, each cell
+//! split in four while it is farther than a chord height from flat or its normals turn more
+//! than an angle. Poles and seams are glued as in the regular mesh
+//! ([`crate::boundary_gluing`]); trimmed surfaces hand the quad-tree's vertices to the
+//! constrained triangulation that follows their trimming loops ([`crate::trimmed_mesh`]).
+
+use std::collections::{HashMap, HashSet};
+
+use splinekit::surface::{Surface, unit_normal};
+use splinekit::{Error, Point, Result};
+
+use crate::boundary_gluing::{Gluing, Node};
+use crate::surface_mesh::{MAX_VERTICES, MeshOptions, lattice_param, to3};
+use crate::triangle_mesh::{TriangleMesh, norm, sub};
+
+/// Tolerances of the adaptive mesh.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AdaptiveTolerance {
+    /// Largest distance of the surface from a cell's flat approximation (at the cell centre
+    /// and edge midpoints).
+    pub chord_height: f64,
+    /// Largest angle in radians between the normals at a cell's corners and centre.
+    pub normal_angle: f64,
+    /// Deepest quad-tree level below the initial grid.
+    pub max_depth: u32,
+}
+
+/// An adaptive mesh: an initial grid of `base` = (n_u, n_v) cells, each split in four while
+/// it is farther than the chord height from flat or its normals turn more than the angle
+/// (down to `max_depth` levels). Cells are triangulated as a fan from their centre whenever a
+/// finer neighbour put vertices on their edges, so neighbouring levels stitch without cracks.
+/// Trimmed surfaces are triangulated through the quad-tree's vertices with the trimming
+/// loops (sampled to the chord height) as constraints.
+pub fn adaptive<const D: usize, S: Surface<D> + ?Sized>(
+    surface: &S,
+    base: (usize, usize),
+    tolerance: AdaptiveTolerance,
+    options: MeshOptions,
+) -> Result<TriangleMesh> {
+    if !(tolerance.chord_height > 0.0 && tolerance.chord_height.is_finite()) {
+        return Err(Error::invalid(
+            "tolerance",
+            format!("must be positive and finite, got {}", tolerance.chord_height),
+        ));
+    }
+    if tolerance.normal_angle.is_nan()
+        || tolerance.normal_angle <= 0.0
+        || tolerance.max_depth > 16
+        || base.0 == 0
+        || base.1 == 0
+        || base.0.saturating_mul(base.1) > 1 << 20
+    {
+        return Err(Error::invalid(
+            "tolerance",
+            format!(
+                "need a positive normal angle, depth ≤ 16 and a base grid of 1 to 2²⁰ cells, got {}, {}, {}×{}",
+                tolerance.normal_angle, tolerance.max_depth, base.0, base.1
+            ),
+        ));
+    }
+    let mut tree = QuadTree::new(surface, base, tolerance);
+    let scale = 1i64 << tolerance.max_depth;
+    for i in 0..base.0 as i64 {
+        for j in 0..base.1 as i64 {
+            tree.refine(i * scale, j * scale, scale)?;
+        }
+    }
+    if let Some(loops) = surface.trim_loops() {
+        let points = tree.leaf_corners();
+        return crate::trimmed_mesh::trimmed_adaptive(surface, &loops, tree.size, &points, tolerance, options);
+    }
+    let mut mesh = Stitcher::new(&mut tree, options).triangulate()?;
+    crate::mesh_cleanup::finish(&mut mesh, "tolerance")?;
+    Ok(mesh)
+}
+
+/// The refined quad-tree: its leaves and the surface samples it took.
+struct QuadTree<'a, const D: usize, S: Surface<D> + ?Sized> {
+    surface: &'a S,
+    tolerance: AdaptiveTolerance,
+    /// Lattice size in each direction (base cells × 2^depth).
+    size: (i64, i64),
+    /// Leaves as (i, j, size) in lattice units.
+    leaves: Vec<(i64, i64, i64)>,
+    /// Evaluations: lattice point → (position, unit normal or zero).
+    cache: HashMap<(i64, i64), ([f64; 3], [f64; 3])>,
+}
+
+impl<'a, const D: usize, S: Surface<D> + ?Sized> QuadTree<'a, D, S> {
+    fn new(surface: &'a S, base: (usize, usize), tolerance: AdaptiveTolerance) -> Self {
+        let scale = 1i64 << tolerance.max_depth;
+        QuadTree {
+            surface,
+            tolerance,
+            size: (base.0 as i64 * scale, base.1 as i64 * scale),
+            leaves: Vec::new(),
+            cache: HashMap::new(),
+        }
+    }
+    fn sample(&mut self, i: i64, j: i64) -> ([f64; 3], [f64; 3]) {
+        if let Some(s) = self.cache.get(&(i, j)) {
+            return *s;
+        }
+        let (du, dv) = (self.surface.domain_u(), self.surface.domain_v());
+        let (u, v) = (lattice_param(du, i, self.size.0), lattice_param(dv, j, self.size.1));
+        let mut out = [Point::<D>::zeros(); 4];
+        self.surface.eval_partials(u, v, 1, 1, &mut out);
+        let n = unit_normal(&out[2], &out[1]).map(|n| to3(&n)).unwrap_or([0.0; 3]);
+        let s = (to3(&out[0]), n);
+        self.cache.insert((i, j), s);
+        s
+    }
+    /// Whether the cell is farther than the chord height from flat or its normals turn.
+    fn needs_split(&mut self, i: i64, j: i64, size: i64) -> bool {
+        let corners = [(i, j), (i + size, j), (i + size, j + size), (i, j + size)];
+        let c: Vec<_> = corners.iter().map(|&(a, b)| self.sample(a, b)).collect();
+        let h = size / 2;
+        let centre = self.sample(i + h, j + h);
+        let mid =
+            [self.sample(i + h, j), self.sample(i + size, j + h), self.sample(i + h, j + size), self.sample(i, j + h)];
+        let bilinear: [f64; 3] = std::array::from_fn(|k| 0.25 * (c[0].0[k] + c[1].0[k] + c[2].0[k] + c[3].0[k]));
+        let mut far = norm(sub(centre.0, bilinear)) > self.tolerance.chord_height;
+        for k in 0..4 {
+            let (a, b) = (c[k].0, c[(k + 1) % 4].0);
+            let m: [f64; 3] = std::array::from_fn(|x| 0.5 * (a[x] + b[x]));
+            far |= norm(sub(mid[k].0, m)) > self.tolerance.chord_height;
+        }
+        let cos = self.tolerance.normal_angle.cos();
+        let turned = c.iter().chain(mid.iter()).any(|s| {
+            let d = s.1[0] * centre.1[0] + s.1[1] * centre.1[1] + s.1[2] * centre.1[2];
+            norm(s.1) > 0.5 && norm(centre.1) > 0.5 && d < cos
+        });
+        far || turned
+    }
+    fn refine(&mut self, i: i64, j: i64, size: i64) -> Result<()> {
+        if size > 1 && self.needs_split(i, j, size) {
+            let h = size / 2;
+            self.refine(i, j, h)?;
+            self.refine(i + h, j, h)?;
+            self.refine(i, j + h, h)?;
+            self.refine(i + h, j + h, h)?;
+        } else {
+            self.leaves.push((i, j, size));
+            if self.leaves.len() > MAX_VERTICES {
+                return Err(Error::invalid("tolerance", format!("needs more than {MAX_VERTICES} vertices")));
+            }
+        }
+        Ok(())
+    }
+    /// Every corner of a leaf, with the size of the smallest leaf it is a corner of.
+    fn leaf_corners(&self) -> HashMap<(i64, i64), i64> {
+        let mut out: HashMap<(i64, i64), i64> = HashMap::new();
+        for &(i, j, size) in &self.leaves {
+            for corner in [(i, j), (i + size, j), (i + size, j + size), (i, j + size)] {
+                let s = out.entry(corner).or_insert(size);
+                *s = (*s).min(size);
+            }
+        }
+        out
+    }
+}
+
+/// Triangulates the leaves of an untrimmed quad-tree into one crack-free mesh.
+struct Stitcher<'t, 'a, const D: usize, S: Surface<D> + ?Sized> {
+    tree: &'t mut QuadTree<'a, D, S>,
+    gluing: Gluing,
+    options: MeshOptions,
+    /// Lattice points that are leaf corners, by their fully glued node.
+    present: HashSet<Node>,
+    /// Vertex of each node (seams glued unless (u, v) is stored).
+    vertices: HashMap<Node, u32>,
+    mesh: TriangleMesh,
+}
+
+impl<'t, 'a, const D: usize, S: Surface<D> + ?Sized> Stitcher<'t, 'a, D, S> {
+    fn new(tree: &'t mut QuadTree<'a, D, S>, options: MeshOptions) -> Self {
+        let gluing = Gluing::detect(tree.surface);
+        let size = tree.size;
+        let present = tree
+            .leaves
+            .iter()
+            .flat_map(|&(i, j, s)| [(i, j), (i + s, j), (i + s, j + s), (i, j + s)])
+            .map(|(i, j)| gluing.node(i, j, size, true))
+            .collect();
+        Stitcher { tree, gluing, options, present, vertices: HashMap::new(), mesh: TriangleMesh::default() }
+    }
+    fn vertex(&mut self, i: i64, j: i64) -> Result<u32> {
+        let size = self.tree.size;
+        let node = self.gluing.node(i, j, size, !self.options.uv);
+        if let Some(&v) = self.vertices.get(&node) {
+            return Ok(v);
+        }
+        if self.mesh.positions.len() >= MAX_VERTICES {
+            return Err(Error::invalid("tolerance", format!("needs more than {MAX_VERTICES} vertices")));
+        }
+        let (p, n, uv) = match self.gluing.node(i, j, size, true) {
+            Node::Pole(c) => {
+                let pole = self.gluing.pole(c);
+                (pole.position, pole.normal.unwrap_or([0.0; 3]), pole.uv)
+            }
+            Node::Grid(a, b) => {
+                let (p, n) = self.tree.sample(a, b);
+                (p, n, [i as f64 / size.0 as f64, j as f64 / size.1 as f64])
+            }
+        };
+        let idx = self.mesh.positions.len() as u32;
+        self.mesh.positions.push(p);
+        self.mesh.normals.push(n);
+        if self.options.uv {
+            self.mesh.uvs.push(uv);
+        }
+        self.vertices.insert(node, idx);
+        Ok(idx)
+    }
+    /// Lattice points strictly inside the axis-aligned lattice edge from `a` to `b` (length
+    /// a power of two) that are corners of some leaf, in order: found by looking for
+    /// midpoints recursively. Edges along a pole have none.
+    fn edge_points(&self, a: (i64, i64), b: (i64, i64), out: &mut Vec<(i64, i64)>) {
+        let len = (b.0 - a.0).abs().max((b.1 - a.1).abs());
+        let size = self.tree.size;
+        let node = |p: (i64, i64)| self.gluing.node(p.0, p.1, size, true);
+        if len < 2 || (matches!(node(a), Node::Pole(_)) && node(a) == node(b)) {
+            return;
+        }
+        let m = ((a.0 + b.0) / 2, (a.1 + b.1) / 2);
+        if self.present.contains(&node(m)) {
+            self.edge_points(a, m, out);
+            out.push(m);
+            self.edge_points(m, b, out);
+        }
+    }
+    fn triangulate(mut self) -> Result<TriangleMesh> {
+        let leaves = std::mem::take(&mut self.tree.leaves);
+        let mut ring_points = Vec::new();
+        for (i, j, size) in leaves {
+            let corners = [(i, j), (i + size, j), (i + size, j + size), (i, j + size)];
+            ring_points.clear();
+            for k in 0..4 {
+                ring_points.push(corners[k]);
+                self.edge_points(corners[k], corners[(k + 1) % 4], &mut ring_points);
+            }
+            let ring = ring_points.iter().map(|&(a, b)| self.vertex(a, b)).collect::<Result<Vec<u32>>>()?;
+            if ring.len() == 4 {
+                self.mesh.triangles.push([ring[0], ring[1], ring[2]]);
+                self.mesh.triangles.push([ring[0], ring[2], ring[3]]);
+            } else {
+                let h = size / 2;
+                let c = self.vertex(i + h, j + h)?;
+                for k in 0..ring.len() {
+                    self.mesh.triangles.push([c, ring[k], ring[(k + 1) % ring.len()]]);
+                }
+            }
+        }
+        Ok(self.mesh)
+    }
+}

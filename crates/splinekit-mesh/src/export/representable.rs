@@ -1,0 +1,121 @@
+//! Which numbers a file format can hold, and the error of the writers.
+//!
+//! Text formats written in double precision (OBJ, PLY with `double` properties, SVG) need
+//! finite numbers; formats that store 32-bit floats (binary and ASCII STL, glTF) also need
+//! every number to stay finite once rounded to f32, i.e. |x| ≤ f32::MAX ≈ 3.4028235e38
+//! (anything larger rounds to infinity).
+
+use std::fmt;
+
+/// Why a writer refused or failed.
+#[derive(Debug)]
+pub enum ExportError {
+    /// A value the format cannot hold.
+    Unrepresentable {
+        /// What it is, e.g. `positions[12][1]`.
+        field: String,
+        /// Why, with the number and the format.
+        message: String,
+    },
+    /// Writing the output failed.
+    Io(std::io::Error),
+}
+
+impl fmt::Display for ExportError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ExportError::Unrepresentable { field, message } => write!(f, "{field}: {message}"),
+            ExportError::Io(e) => write!(f, "cannot write: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for ExportError {}
+
+impl From<std::io::Error> for ExportError {
+    fn from(e: std::io::Error) -> Self {
+        ExportError::Io(e)
+    }
+}
+
+/// How a format stores its numbers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Precision {
+    /// 64-bit floats (or decimal text read as such).
+    Double,
+    /// 32-bit floats.
+    Single,
+}
+
+/// Checks one number; `field` names it in the error, `format` the file format.
+pub fn check_value(
+    value: f64,
+    precision: Precision,
+    format: &str,
+    field: impl FnOnce() -> String,
+) -> Result<(), ExportError> {
+    let fits = match precision {
+        Precision::Double => value.is_finite(),
+        Precision::Single => value.is_finite() && value.abs() <= f32::MAX as f64,
+    };
+    if fits {
+        return Ok(());
+    }
+    let message = if !value.is_finite() {
+        format!("{value} is not a finite number, which {format} needs")
+    } else {
+        format!("{value:e} is beyond the largest 32-bit float ({:e}) that {format} stores", f32::MAX)
+    };
+    Err(ExportError::Unrepresentable { field: field(), message })
+}
+
+/// Checks every coordinate of a list of vectors named `field` (`field[i][k]` in errors).
+pub fn check_vectors<const N: usize>(
+    vectors: &[[f64; N]],
+    precision: Precision,
+    format: &str,
+    field: &str,
+) -> Result<(), ExportError> {
+    for (i, v) in vectors.iter().enumerate() {
+        for (k, &x) in v.iter().enumerate() {
+            check_value(x, precision, format, || format!("{field}[{i}][{k}]"))?;
+        }
+    }
+    Ok(())
+}
+
+/// Checks the positions, normals, (u, v) and colours of a mesh, and that its attributes
+/// and triangles refer to its vertices.
+pub fn check_mesh(mesh: &crate::TriangleMesh, precision: Precision, format: &str) -> Result<(), ExportError> {
+    let n = mesh.positions.len();
+    let unmatched = |field: &str, len: usize| ExportError::Unrepresentable {
+        field: field.to_string(),
+        message: format!("{len} entries for {n} vertices (need none or one per vertex)"),
+    };
+    for (field, len) in [("normals", mesh.normals.len()), ("uvs", mesh.uvs.len()), ("colors", mesh.colors.len())] {
+        if len != 0 && len != n {
+            return Err(unmatched(field, len));
+        }
+    }
+    if let Some((t, tri)) = mesh.triangles.iter().enumerate().find(|(_, tri)| tri.iter().any(|&i| i as usize >= n)) {
+        return Err(ExportError::Unrepresentable {
+            field: format!("triangles[{t}]"),
+            message: format!("{tri:?} refers past the {n} vertices"),
+        });
+    }
+    check_vectors(&mesh.positions, precision, format, "positions")?;
+    check_vectors(&mesh.normals, precision, format, "normals")?;
+    check_vectors(&mesh.uvs, precision, format, "uvs")?;
+    for (i, c) in mesh.colors.iter().enumerate() {
+        for (k, &x) in c.iter().enumerate() {
+            check_value(x as f64, Precision::Single, format, || format!("colors[{i}][{k}]"))?;
+        }
+    }
+    Ok(())
+}
+
+/// `name` with control characters (line breaks) replaced, for formats that put a name on a
+/// line of its own.
+pub fn one_line(name: &str) -> String {
+    name.replace(|c: char| c.is_control(), "_")
+}

@@ -1,0 +1,128 @@
+//! The last steps of every surface mesher, which make its output acceptable to programs
+//! that check meshes (the Khronos glTF validator, trimesh):
+//!
+//! 1. edges whose two ends round to the same 32-bit floats are collapsed, so no triangle
+//!    degenerates when a file stores single precision (STL, glTF);
+//! 2. triangles with a repeated vertex are dropped and unused vertices removed;
+//! 3. missing normals (isolated singular points) become the area-weighted mean of the
+//!    adjacent faces' normals, so every normal has unit length;
+//! 4. a closed, consistently oriented mesh whose signed volume is negative is turned inside
+//!    out (triangles and normals), so closed surfaces face outward.
+//!
+//! Closedness is judged after merging vertices with bitwise-equal positions, because meshes
+//! that store (u, v) keep both sides of a seam as separate vertices at the same place.
+
+use std::collections::HashMap;
+
+use splinekit::{Error, Result};
+
+use crate::triangle_mesh::TriangleMesh;
+
+/// Runs the steps above; fails when nothing is left (a grid too coarse for the surface).
+pub(crate) fn finish(mesh: &mut TriangleMesh, field: &str) -> Result<()> {
+    collapse_single_precision_edges(mesh);
+    mesh.triangles.retain(|[a, b, c]| a != b && b != c && a != c);
+    drop_unused_vertices(mesh);
+    if mesh.triangles.is_empty() {
+        return Err(Error::invalid(
+            field,
+            "too coarse for this surface: every triangle collapsed to a point or a line",
+        ));
+    }
+    mesh.repair_normals();
+    orient_outward(mesh);
+    Ok(())
+}
+
+/// Merges the two ends of every edge whose positions are equal once rounded to f32
+/// (union–find; the lower index survives).
+fn collapse_single_precision_edges(mesh: &mut TriangleMesh) {
+    let single = |i: u32| mesh.positions[i as usize].map(|x| (x as f32).to_bits());
+    let mut parent: Vec<u32> = (0..mesh.positions.len() as u32).collect();
+    fn root(parent: &mut [u32], mut i: u32) -> u32 {
+        while parent[i as usize] != i {
+            parent[i as usize] = parent[parent[i as usize] as usize];
+            i = parent[i as usize];
+        }
+        i
+    }
+    let mut merged = false;
+    for t in &mesh.triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            if a != b && single(a) == single(b) {
+                let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+                if ra != rb {
+                    parent[ra.max(rb) as usize] = ra.min(rb);
+                    merged = true;
+                }
+            }
+        }
+    }
+    if merged {
+        for t in mesh.triangles.iter_mut() {
+            *t = t.map(|i| root(&mut parent, i));
+        }
+    }
+}
+
+/// Removes vertices no triangle uses, renumbering the triangles.
+fn drop_unused_vertices(mesh: &mut TriangleMesh) {
+    let mut new_index = vec![u32::MAX; mesh.positions.len()];
+    for t in &mesh.triangles {
+        for &i in t {
+            new_index[i as usize] = 0;
+        }
+    }
+    let mut next = 0u32;
+    for slot in new_index.iter_mut() {
+        if *slot == 0 {
+            *slot = next;
+            next += 1;
+        }
+    }
+    if next as usize == mesh.positions.len() {
+        return;
+    }
+    fn keep<T: Copy>(v: &mut Vec<T>, new_index: &[u32]) {
+        if v.len() == new_index.len() {
+            let mut k = 0;
+            v.retain(|_| {
+                k += 1;
+                new_index[k - 1] != u32::MAX
+            });
+        }
+    }
+    keep(&mut mesh.positions, &new_index);
+    keep(&mut mesh.normals, &new_index);
+    keep(&mut mesh.uvs, &new_index);
+    keep(&mut mesh.colors, &new_index);
+    for t in mesh.triangles.iter_mut() {
+        *t = t.map(|i| new_index[i as usize]);
+    }
+}
+
+/// Turns a closed, consistently oriented mesh of negative signed volume inside out.
+fn orient_outward(mesh: &mut TriangleMesh) {
+    let mut same_place: HashMap<[u64; 3], u32> = HashMap::new();
+    let place: Vec<u32> = (0..mesh.positions.len())
+        .map(|i| *same_place.entry(mesh.positions[i].map(f64::to_bits)).or_insert(i as u32))
+        .collect();
+    // Directed edges: a closed, consistently oriented mesh uses each once in each direction.
+    let mut directed: HashMap<(u32, u32), u32> = HashMap::new();
+    for t in &mesh.triangles {
+        for k in 0..3 {
+            *directed.entry((place[t[k] as usize], place[t[(k + 1) % 3] as usize])).or_insert(0) += 1;
+        }
+    }
+    let closed_and_oriented = directed.iter().all(|(&(a, b), &n)| n == 1 && directed.get(&(b, a)) == Some(&1));
+    if !closed_and_oriented || mesh.signed_volume() >= 0.0 {
+        return;
+    }
+    for t in mesh.triangles.iter_mut() {
+        t.swap(1, 2);
+    }
+    for n in mesh.normals.iter_mut() {
+        *n = n.map(|x| -x);
+    }
+}
