@@ -55,25 +55,44 @@ impl TriangleMesh {
             })
             .sum()
     }
-    /// Gives every vertex whose normal is missing, zero or not of unit length the
-    /// area-weighted mean of its faces' normals (or, where those cancel, the mean of its
-    /// neighbours' normals); fills all normals that way when there are none.
+    /// Gives every vertex whose normal is missing, not of unit length, or not on the side
+    /// its triangles face (at a crease, the normal evaluated on one side can be
+    /// perpendicular to the faces of the other) the area-weighted mean of the normals of
+    /// the triangles around its position (or, where those cancel, the mean of its
+    /// neighbours' normals); fills all normals that way when there are none. Vertices at
+    /// the same position (the two sides of a seam) share the triangles around them.
     pub fn repair_normals(&mut self) {
         if self.normals.len() != self.positions.len() {
             self.normals = vec![[0.0; 3]; self.positions.len()];
         }
-        let unit = |n: [f64; 3]| (norm(n) - 1.0).abs() < 1e-6;
-        let missing: Vec<bool> = self.normals.iter().map(|n| !unit(*n)).collect();
-        if !missing.iter().any(|&m| m) {
-            return;
-        }
-        let mut faces = vec![[0.0; 3]; self.positions.len()];
-        let mut neighbours = vec![[0.0; 3]; self.positions.len()];
+        let mut same_place: std::collections::HashMap<[u64; 3], usize> = std::collections::HashMap::new();
+        let place: Vec<usize> = (0..self.positions.len())
+            .map(|i| *same_place.entry(self.positions[i].map(f64::to_bits)).or_insert(i))
+            .collect();
+        // Each vertex's own triangles decide whether its normal is wrong; the triangles
+        // around its position (both sides of a seam) give the replacement.
+        let mut own = vec![[0.0; 3]; self.positions.len()];
         for t in &self.triangles {
             let [a, b, c] = t.map(|i| self.positions[i as usize]);
             let n = cross(sub(b, a), sub(c, a));
+            for &i in t {
+                add(&mut own[i as usize], n);
+            }
+        }
+        let mut fans = vec![[0.0; 3]; self.positions.len()];
+        for (i, n) in own.iter().enumerate() {
+            add(&mut fans[place[i]], *n);
+        }
+        let unit = |n: [f64; 3]| (norm(n) - 1.0).abs() < 1e-6;
+        let faces_along = |i: usize, n: [f64; 3]| own[i][0] * n[0] + own[i][1] * n[1] + own[i][2] * n[2] > 0.0;
+        let missing: Vec<bool> =
+            self.normals.iter().enumerate().map(|(i, n)| !(unit(*n) && faces_along(i, *n))).collect();
+        if !missing.iter().any(|&m| m) {
+            return;
+        }
+        let mut neighbours = vec![[0.0; 3]; self.positions.len()];
+        for t in &self.triangles {
             for (k, &i) in t.iter().enumerate() {
-                add(&mut faces[i as usize], n);
                 for other in [t[(k + 1) % 3], t[(k + 2) % 3]] {
                     if !missing[other as usize] {
                         add(&mut neighbours[i as usize], self.normals[other as usize]);
@@ -83,8 +102,9 @@ impl TriangleMesh {
         }
         for (i, m) in missing.iter().enumerate() {
             if *m {
-                let from_faces = normalize(faces[i]);
-                self.normals[i] = if unit(from_faces) { from_faces } else { normalize(neighbours[i]) };
+                let around = normalize(fans[place[i]]);
+                let candidates = [around, normalize(own[i]), normalize(neighbours[i])];
+                self.normals[i] = candidates.into_iter().find(|n| unit(*n) && faces_along(i, *n)).unwrap_or(around);
             }
         }
     }

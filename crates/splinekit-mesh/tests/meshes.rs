@@ -1,12 +1,14 @@
 //! Triangle meshes of surfaces (welded seams, poles, adaptive quad-trees without cracks) and
 //! every export read back.
 
+mod common;
+
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use splinekit::Point;
 use splinekit::surface::model::{Plane, Sphere, Torus};
-use splinekit_mesh::export::{ExportError, GltfGeometry, GltfObject, GltfScene, obj, ply, stl};
+use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene, obj, ply, stl};
 use splinekit_mesh::surface_mesh::{adaptive, regular};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, TriangleMesh};
 
@@ -106,17 +108,6 @@ fn adaptive_meshes_refine_where_curved_and_stitch_levels_without_cracks() {
     }
 }
 
-/// What a writer puts into a file.
-fn bytes(write: impl FnOnce(&mut Vec<u8>) -> Result<(), ExportError>) -> Vec<u8> {
-    let mut out = Vec::new();
-    write(&mut out).unwrap();
-    out
-}
-
-fn text(write: impl FnOnce(&mut Vec<u8>) -> Result<(), ExportError>) -> String {
-    String::from_utf8(bytes(write)).unwrap()
-}
-
 fn sample_mesh() -> TriangleMesh {
     regular(&torus(), 12, 6, MeshOptions { uv: true }).unwrap()
 }
@@ -124,18 +115,21 @@ fn sample_mesh() -> TriangleMesh {
 #[test]
 fn obj_ply_and_stl_read_back() {
     let m = sample_mesh();
-    let back = obj::read_obj(&text(|out| obj::write_obj(&m, "torus", out))).unwrap();
+    let back = obj::read_obj(&common::text(|out| obj::write_obj(&m, "torus", out))).unwrap();
     assert_eq!(
         (back.positions.clone(), back.normals.clone(), back.uvs.clone()),
         (m.positions.clone(), m.normals.clone(), m.uvs.clone())
     );
     assert_eq!(back.triangles, m.triangles);
-    let back = ply::read_ply(&text(|out| ply::write_ply(&m, out))).unwrap();
+    let back = ply::read_ply(&common::text(|out| ply::write_ply(&m, out))).unwrap();
     assert_eq!(
         (back.positions, back.normals, back.uvs, back.triangles),
         (m.positions.clone(), m.normals.clone(), m.uvs.clone(), m.triangles.clone())
     );
-    for bytes in [bytes(|out| stl::write_stl_binary(&m, out)), bytes(|out| stl::write_stl_ascii(&m, "torus", out))] {
+    for bytes in [
+        common::bytes(|out| stl::write_stl_binary(&m, out)),
+        common::bytes(|out| stl::write_stl_ascii(&m, "torus", out)),
+    ] {
         let tris = stl::read_stl(&bytes).unwrap();
         assert_eq!(tris.len(), m.triangles.len());
         for (t, (n, c)) in tris.iter().enumerate() {
@@ -149,27 +143,6 @@ fn obj_ply_and_stl_read_back() {
     }
     assert!(obj::read_obj("v 1 2\n").unwrap_err().contains("line 1"));
     assert!(stl::read_stl(b"short").is_err());
-}
-
-fn base64_decode(s: &str) -> Vec<u8> {
-    let val = |c: u8| -> u32 {
-        match c {
-            b'A'..=b'Z' => (c - b'A') as u32,
-            b'a'..=b'z' => (c - b'a' + 26) as u32,
-            b'0'..=b'9' => (c - b'0' + 52) as u32,
-            b'+' => 62,
-            _ => 63,
-        }
-    };
-    let bytes: Vec<u8> = s.bytes().filter(|&c| c != b'=').collect();
-    let mut out = Vec::new();
-    for chunk in bytes.chunks(4) {
-        let n = chunk.iter().enumerate().fold(0u32, |acc, (k, &c)| acc | val(c) << (18 - 6 * k));
-        for k in 0..chunk.len() - 1 {
-            out.push((n >> (16 - 8 * k)) as u8);
-        }
-    }
-    out
 }
 
 #[test]
@@ -202,7 +175,7 @@ fn gltf_and_glb_read_back_with_the_gltf_crate() {
     let from_text = gltf::Gltf::from_slice(text.as_bytes()).unwrap();
     let uri = from_text.buffers().next().unwrap();
     let gltf::buffer::Source::Uri(uri) = uri.source() else { panic!("embedded buffer") };
-    let text_blob = base64_decode(uri.split_once(',').unwrap().1);
+    let text_blob = common::base64_decode(uri.split_once(',').unwrap().1);
     for (doc, blob) in [(&from_glb, &glb_blob), (&from_text, &text_blob)] {
         assert_eq!(doc.nodes().count(), 2);
         let mesh = doc.meshes().next().unwrap();
