@@ -183,11 +183,11 @@ impl GltfScene {
             check_value(*time as f64, Precision::Single, "glTF", || format!("objects[{k}] frames[{f}] time"))?;
             let what = format!("frames[{f}] POSITION offset");
             let named = Named { object: k, name: &obj.name, what: &what };
-            let mut t = json!({"POSITION": b.floats(&offsets(p, base_p), "VEC3", true, None, named)?});
+            let mut t = json!({"POSITION": b.floats(&offsets(p, base_p), "VEC3", true, Some(34962), named)?});
             if n.len() == p.len() && base_n.len() == p.len() {
                 let what = format!("frames[{f}] NORMAL offset");
                 let named = Named { object: k, name: &obj.name, what: &what };
-                t["NORMAL"] = json!(b.floats(&offsets(n, base_n), "VEC3", false, None, named)?);
+                t["NORMAL"] = json!(b.floats(&offsets(n, base_n), "VEC3", false, Some(34962), named)?);
             }
             targets.push(t);
         }
