@@ -19,13 +19,14 @@ use splinekit::curve::Interval;
 use splinekit::surface::{Surface, unit_normal};
 
 use crate::surface_mesh::to3;
-use crate::triangle_mesh::{norm, sub};
+use crate::triangle_mesh::norm;
 
 /// Samples along each side used to decide how it is glued.
 const SIDE_SAMPLES: usize = 33;
 /// Samples per direction of the interior grid that sets the surface's size.
 const SIZE_SAMPLES: usize = 9;
-/// Points closer than this fraction of the surface's size are the same point.
+/// Points closer than this fraction of the surface's size (in every coordinate) are the
+/// same point.
 const RELATIVE_TOLERANCE: f64 = 1e-9;
 
 /// A side of the parameter rectangle: u = u₀, u = u₁, v = v₀ or v = v₁.
@@ -134,22 +135,23 @@ impl Gluing {
                 hi[k] = hi[k].max(p[k]);
             }
         }
-        let size = norm(sub(hi, lo));
-        if !(size > 0.0 && size.is_finite()) {
+        // Half the widest extent, halved first so that it stays finite for huge surfaces.
+        let half_size = (0..3).map(|k| 0.5 * hi[k] - 0.5 * lo[k]).fold(0.0, f64::max);
+        if !(half_size > 0.0 && half_size.is_finite()) {
             return Gluing::none();
         }
-        let tol = RELATIVE_TOLERANCE * size;
+        let tol = RELATIVE_TOLERANCE * half_size;
         let mut gluing = Gluing::none();
         for (k, side) in Side::ALL.iter().enumerate() {
             let pts = &sides[k];
-            if pts.iter().all(|p| norm(sub(*p, pts[0])) <= tol) {
+            if pts.iter().all(|p| apart(*p, pts[0]) <= tol) {
                 let uv = side.at(0.5);
                 gluing.poles[k] =
                     Some(Pole { position: pts[0], normal: pole_normal(surface, *side), uv: [uv.0, uv.1] });
             }
         }
         let matched = |a: &[[f64; 3]], b: &[[f64; 3]], flip: bool| {
-            (0..SIDE_SAMPLES).all(|k| norm(sub(a[k], b[if flip { SIDE_SAMPLES - 1 - k } else { k }])) <= tol)
+            (0..SIDE_SAMPLES).all(|k| apart(a[k], b[if flip { SIDE_SAMPLES - 1 - k } else { k }]) <= tol)
         };
         let seam = |a: usize, b: usize| {
             if gluing.poles[a].is_some() || gluing.poles[b].is_some() {
@@ -299,4 +301,10 @@ fn limit_normal<const D: usize, S: Surface<D> + ?Sized>(surface: &S, side: Side,
 /// The parameter at fraction `f` of `d`, the ends exactly.
 fn at_fraction(d: Interval, f: f64) -> f64 {
     if f == 1.0 { d.end } else { d.lerp(f) }
+}
+
+/// The largest coordinate difference of two points (no squares, so no overflow for huge
+/// coordinates).
+fn apart(p: [f64; 3], q: [f64; 3]) -> f64 {
+    (0..3).map(|k| (p[k] - q[k]).abs()).fold(0.0, f64::max)
 }

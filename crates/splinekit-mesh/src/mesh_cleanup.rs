@@ -1,8 +1,8 @@
 //! The last steps of every surface mesher, which make its output acceptable to programs
 //! that check meshes (the Khronos glTF validator, trimesh):
 //!
-//! 1. edges whose two ends round to the same 32-bit floats are collapsed, so no triangle
-//!    degenerates when a file stores single precision (STL, glTF);
+//! 1. short edges whose two ends round to the same 32-bit floats are collapsed, so no
+//!    triangle degenerates when a file stores single precision (STL, glTF);
 //! 2. triangles with a repeated vertex are dropped and unused vertices removed;
 //! 3. missing normals (isolated singular points) become the area-weighted mean of the
 //!    adjacent faces' normals, so every normal has unit length;
@@ -34,10 +34,22 @@ pub(crate) fn finish(mesh: &mut TriangleMesh, field: &str) -> Result<()> {
     Ok(())
 }
 
-/// Merges the two ends of every edge whose positions are equal once rounded to f32
-/// (union–find; the lower index survives).
+/// Merges the two ends of every edge that single precision cannot tell apart although the
+/// surface can spare it: their positions round to the same finite f32 and the edge is
+/// shorter than 10⁻⁶ of the mesh's extent (union–find; the lower index survives). Meshes
+/// too small or too far from the origin for f32 as a whole are left for the
+/// single-precision writers to refuse.
 fn collapse_single_precision_edges(mesh: &mut TriangleMesh) {
-    let single = |i: u32| mesh.positions[i as usize].map(|x| (x as f32).to_bits());
+    let Some((lo, hi)) = mesh.bounds() else { return };
+    let extent = (0..3).map(|k| 0.5 * hi[k] - 0.5 * lo[k]).fold(0.0, f64::max);
+    let single = |i: u32| {
+        let p = mesh.positions[i as usize].map(|x| x as f32);
+        p.iter().all(|x| x.is_finite()).then(|| p.map(f32::to_bits))
+    };
+    let short = |a: u32, b: u32| {
+        let (p, q) = (mesh.positions[a as usize], mesh.positions[b as usize]);
+        (0..3).all(|k| (p[k] - q[k]).abs() <= 1e-6 * extent)
+    };
     let mut parent: Vec<u32> = (0..mesh.positions.len() as u32).collect();
     fn root(parent: &mut [u32], mut i: u32) -> u32 {
         while parent[i as usize] != i {
@@ -50,7 +62,7 @@ fn collapse_single_precision_edges(mesh: &mut TriangleMesh) {
     for t in &mesh.triangles {
         for k in 0..3 {
             let (a, b) = (t[k], t[(k + 1) % 3]);
-            if a != b && single(a) == single(b) {
+            if a != b && single(a).is_some() && single(a) == single(b) && short(a, b) {
                 let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
                 if ra != rb {
                     parent[ra.max(rb) as usize] = ra.min(rb);
@@ -116,7 +128,8 @@ fn orient_outward(mesh: &mut TriangleMesh) {
         }
     }
     let closed_and_oriented = directed.iter().all(|(&(a, b), &n)| n == 1 && directed.get(&(b, a)) == Some(&1));
-    if !closed_and_oriented || mesh.signed_volume() >= 0.0 {
+    // `!(v < 0)` also keeps meshes whose volume overflowed to NaN as they are.
+    if !closed_and_oriented || !(mesh.signed_volume() < 0.0) {
         return;
     }
     for t in mesh.triangles.iter_mut() {

@@ -24,7 +24,7 @@ impl TriangleMesh {
     /// The unit normal of triangle t (zero for a degenerate triangle).
     pub fn face_normal(&self, t: usize) -> [f64; 3] {
         let [a, b, c] = self.triangles[t].map(|i| self.positions[i as usize]);
-        normalize(cross(sub(b, a), sub(c, a)))
+        normalize(face_cross(a, b, c))
     }
     /// Twice the area of triangle t.
     pub fn double_area(&self, t: usize) -> f64 {
@@ -74,7 +74,7 @@ impl TriangleMesh {
         let mut own = vec![[0.0; 3]; self.positions.len()];
         for t in &self.triangles {
             let [a, b, c] = t.map(|i| self.positions[i as usize]);
-            let n = cross(sub(b, a), sub(c, a));
+            let n = face_cross(a, b, c);
             for &i in t {
                 add(&mut own[i as usize], n);
             }
@@ -121,6 +121,25 @@ impl TriangleMesh {
         edges.sort_unstable();
         edges
     }
+}
+
+/// (b − a) × (c − a), twice the triangle's area along its normal; for triangles so large or
+/// small that this over- or underflows, the same direction from edges scaled to unit size
+/// (so sums of them stay finite).
+fn face_cross(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> [f64; 3] {
+    let (e, f) = (sub(b, a), sub(c, a));
+    let n = cross(e, f);
+    let len = norm(n);
+    if len.is_finite() && len > f64::MIN_POSITIVE {
+        return n;
+    }
+    let unit = |v: [f64; 3]| {
+        let m = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        if m > 0.0 && m.is_finite() { v.map(|x| x / m) } else { [0.0; 3] }
+    };
+    // Halve first so that the difference of two huge coordinates cannot overflow.
+    let half = |p: [f64; 3], q: [f64; 3]| [0.5 * p[0] - 0.5 * q[0], 0.5 * p[1] - 0.5 * q[1], 0.5 * p[2] - 0.5 * q[2]];
+    cross(unit(half(b, a)), unit(half(c, a)))
 }
 
 fn add(acc: &mut [f64; 3], v: [f64; 3]) {

@@ -8,7 +8,7 @@ use std::f64::consts::PI;
 
 use splinekit::Point;
 use splinekit::surface::model::{Plane, Sphere, Torus};
-use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene, obj, ply, stl};
+use splinekit_mesh::export::{ExportError, GltfGeometry, GltfObject, GltfScene, obj, ply, stl};
 use splinekit_mesh::surface_mesh::{adaptive, regular};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, TriangleMesh};
 
@@ -228,4 +228,84 @@ fn trimmed_surfaces_follow_their_loops_by_constrained_delaunay() {
     let s = TrimmedSurface::new(plane(), Some(&outer), &[&crossing]).unwrap();
     let e = regular(&s, 16, 16, MeshOptions::default()).unwrap_err();
     assert!(e.to_string().contains("holes[0]"), "{e}");
+}
+
+/// A sink whose writes fail, like a full disk.
+struct Full;
+impl std::io::Write for Full {
+    fn write(&mut self, _: &[u8]) -> std::io::Result<usize> {
+        Err(std::io::Error::new(std::io::ErrorKind::StorageFull, "no space left on device"))
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+#[test]
+fn huge_and_tiny_spheres_keep_welded_poles_and_unit_normals() {
+    for r in [1e300, 1e-300, 1e30] {
+        let s = Sphere::new(r).unwrap();
+        let m = regular(&s, 16, 8, MeshOptions { uv: false }).unwrap();
+        assert!(m.boundary_edges().is_empty(), "radius {r}: closed by its indices");
+        assert_eq!(m.vertex_count(), 16 * 7 + 2, "radius {r}: one vertex per pole");
+        for (p, n) in m.positions.iter().zip(&m.normals) {
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            let outward = (p[0] / r) * n[0] + (p[1] / r) * n[1] + (p[2] / r) * n[2];
+            assert!((len - 1.0).abs() < 1e-12 && outward > 0.99, "radius {r}: normal {n:?} at {p:?}");
+        }
+    }
+}
+
+#[test]
+fn writers_refuse_numbers_the_format_cannot_hold_and_report_write_errors() {
+    // 1e39 is finite in f64 but beyond f32: OBJ and PLY hold it, STL and glTF refuse.
+    let m = regular(&Sphere::new(1e39).unwrap(), 8, 4, MeshOptions::default()).unwrap();
+    assert!(obj::write_obj(&m, "big", Vec::new()).is_ok());
+    assert!(ply::write_ply(&m, Vec::new()).is_ok());
+    for e in [
+        stl::write_stl_binary(&m, Vec::new()).unwrap_err(),
+        stl::write_stl_ascii(&m, "big", Vec::new()).unwrap_err(),
+        GltfScene::single("big", GltfGeometry::Mesh(m.clone()), [1.0; 4]).to_glb().unwrap_err(),
+    ] {
+        let e = e.to_string();
+        assert!(e.contains("positions[0][2]: -1e39 is beyond the largest 32-bit float"), "{e}");
+    }
+    let e = GltfScene::single("big", GltfGeometry::Mesh(m), [1.0; 4]).to_gltf().unwrap_err().to_string();
+    assert!(e.starts_with(r#"objects[0] ("big") mesh positions[0][2]"#), "{e}");
+    // A sphere too small for f32: its corners collapse, so single-precision files refuse it.
+    let tiny = regular(&Sphere::new(1e-300).unwrap(), 8, 4, MeshOptions::default()).unwrap();
+    assert!(obj::write_obj(&tiny, "tiny", Vec::new()).is_ok());
+    let e = stl::write_stl_binary(&tiny, Vec::new()).unwrap_err().to_string();
+    assert!(e.starts_with("triangles[0]: vertices") && e.contains("32-bit floats that STL stores"), "{e}");
+    // NaN anywhere is refused by every writer, naming where.
+    let mut bad = sample_mesh();
+    bad.normals[5][1] = f64::NAN;
+    let e = obj::write_obj(&bad, "bad", Vec::new()).unwrap_err().to_string();
+    assert_eq!(e, "normals[5][1]: NaN is not a finite number, which OBJ needs");
+    assert!(ply::write_ply(&bad, Vec::new()).unwrap_err().to_string().starts_with("normals[5][1]"));
+    let e = obj::write_obj_polyline(&[[0.0, f64::INFINITY, 0.0]], false, "l", Vec::new()).unwrap_err();
+    assert!(e.to_string().starts_with("points[0][1]: inf"), "{e}");
+    // A morph target whose offset overflows f32 though both frames fit: x stretched to
+    // ±2.8e38 and mirrored in the second frame.
+    let mut far = sample_mesh();
+    for p in far.positions.iter_mut() {
+        p[0] *= 7e37;
+    }
+    let mirrored: Vec<[f64; 3]> = far.positions.iter().map(|p| [-p[0], p[1], p[2]]).collect();
+    let frames = vec![(0.0, far.positions.clone(), far.normals.clone()), (1.0, mirrored, far.normals.clone())];
+    let object = GltfObject { name: "far".into(), geometry: GltfGeometry::Mesh(far), color: [1.0; 4], frames };
+    let e = GltfScene { objects: vec![object] }.to_glb().unwrap_err().to_string();
+    assert!(e.starts_with(r#"objects[0] ("far") frames[1] POSITION offset["#), "{e}");
+    assert!(e.contains("is beyond the largest 32-bit float"), "{e}");
+    // Write errors come back instead of being dropped.
+    let m = sample_mesh();
+    for e in [
+        obj::write_obj(&m, "t", Full).unwrap_err(),
+        ply::write_ply(&m, Full).unwrap_err(),
+        stl::write_stl_binary(&m, Full).unwrap_err(),
+        stl::write_stl_ascii(&m, "t", Full).unwrap_err(),
+    ] {
+        assert!(matches!(e, ExportError::Io(_)), "{e}");
+        assert!(e.to_string().contains("no space left on device"), "{e}");
+    }
 }

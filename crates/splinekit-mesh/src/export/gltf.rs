@@ -150,7 +150,12 @@ impl GltfScene {
         let named = |what| Named { object: k, name: &obj.name, what };
         Ok(match &obj.geometry {
             GltfGeometry::Mesh(m) => {
-                check_mesh(m, Precision::Single, "glTF")?;
+                check_mesh(m, Precision::Single, "glTF").map_err(|e| match e {
+                    ExportError::Unrepresentable { field, message } => {
+                        ExportError::Unrepresentable { field: format!("{} {field}", named("mesh")), message }
+                    }
+                    other => other,
+                })?;
                 let mut attrs =
                     json!({"POSITION": b.floats(&m.positions, "VEC3", true, Some(34962), named("POSITION"))?});
                 if m.normals.len() == m.positions.len() {

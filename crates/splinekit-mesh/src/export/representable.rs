@@ -104,6 +104,9 @@ pub fn check_mesh(mesh: &crate::TriangleMesh, precision: Precision, format: &str
         });
     }
     check_vectors(&mesh.positions, precision, format, "positions")?;
+    if precision == Precision::Single {
+        check_single_precision_triangles(mesh, format)?;
+    }
     check_vectors(&mesh.normals, precision, format, "normals")?;
     check_vectors(&mesh.uvs, precision, format, "uvs")?;
     for (i, c) in mesh.colors.iter().enumerate() {
@@ -118,4 +121,26 @@ pub fn check_mesh(mesh: &crate::TriangleMesh, precision: Precision, format: &str
 /// line of its own.
 pub fn one_line(name: &str) -> String {
     name.replace(|c: char| c.is_control(), "_")
+}
+
+/// Refuses a triangle two of whose corners are one point in 32-bit floats (a mesh too fine
+/// for its distance from the origin, or too small): it would be degenerate in the file.
+fn check_single_precision_triangles(mesh: &crate::TriangleMesh, format: &str) -> Result<(), ExportError> {
+    let single = |i: u32| mesh.positions[i as usize].map(|x| x as f32);
+    for (t, tri) in mesh.triangles.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (tri[k], tri[(k + 1) % 3]);
+            if a != b && single(a) == single(b) {
+                return Err(ExportError::Unrepresentable {
+                    field: format!("triangles[{t}]"),
+                    message: format!(
+                        "vertices {a} and {b} are the same point {:?} in the 32-bit floats that {format} stores \
+                         (the mesh is too fine or too small for its distance from the origin)",
+                        single(a)
+                    ),
+                });
+            }
+        }
+    }
+    Ok(())
 }
