@@ -128,8 +128,9 @@ fn orient_outward(mesh: &mut TriangleMesh) {
         }
     }
     let closed_and_oriented = directed.iter().all(|(&(a, b), &n)| n == 1 && directed.get(&(b, a)) == Some(&1));
-    // `!(v < 0)` also keeps meshes whose volume overflowed to NaN as they are.
-    if !closed_and_oriented || !(mesh.signed_volume() < 0.0) {
+    // A volume that overflowed to NaN is not negative: such meshes stay as they are.
+    let inside_out = mesh.signed_volume() < 0.0;
+    if !closed_and_oriented || !inside_out {
         return;
     }
     for t in mesh.triangles.iter_mut() {

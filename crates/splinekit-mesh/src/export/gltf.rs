@@ -119,7 +119,8 @@ impl Builder {
 fn check_unit_normals(normals: &[[f64; 3]], named: &Named<'_>) -> Result<(), ExportError> {
     for (i, n) in normals.iter().enumerate() {
         let len = n.iter().map(|&x| (x as f32 as f64).powi(2)).sum::<f64>().sqrt();
-        if !((len - 1.0).abs() <= 1e-4) {
+        let unit = (len - 1.0).abs() <= 1e-4;
+        if !unit {
             return Err(ExportError::Unrepresentable {
                 field: format!("{named}[{i}]"),
                 message: format!("has length {len}, but glTF normals must have unit length"),
