@@ -292,6 +292,8 @@ fn model_cases() -> Vec<(&'static str, Value, Shape)> {
         .collect();
     let hole = json!({"type": "nurbs", "degree": 2, "knots": circle_knots, "weights": circle_weights,
         "control_points": ring.iter().map(|c| json!([0.5 + 0.25 * c[0], 0.5 + 0.25 * c[1]])).collect::<Vec<_>>()});
+    let torus_hole = json!({"type": "nurbs", "degree": 2, "knots": circle_knots, "weights": circle_weights,
+        "control_points": ring.iter().map(|c| json!([PI + c[0], PI + c[1]])).collect::<Vec<_>>()});
     let heart = heart_volume_and_area();
     let open = |loops, orientable, area| Shape::Open { loops, orientable, area };
     vec![
@@ -336,6 +338,14 @@ fn model_cases() -> Vec<(&'static str, Value, Shape)> {
             "trimmed_plane",
             json!({"type": "trimmed", "surface": {"type": "plane"}, "holes": [hole]}),
             open(2, true, Some(1.0 - PI / 16.0)),
+        ),
+        // A torus (R = 3, r = 1) with the unit disc around (π, π) cut from its (u, v) domain,
+        // away from the seams, which still glue. The hole's area is ∬ (R + cos v) du dv =
+        // 3π − 2π J₁(1) over the disc (J₁(1) = 0.44005058574493355, Bessel).
+        (
+            "trimmed_torus",
+            json!({"type": "trimmed", "surface": {"type": "torus"}, "holes": [torus_hole]}),
+            open(1, true, Some(12.0 * PI * PI - (3.0 * PI - 2.0 * PI * 0.44005058574493355))),
         ),
     ]
 }
