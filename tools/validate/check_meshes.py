@@ -19,8 +19,12 @@ import glob
 import json
 import os
 import sys
+import warnings
 
 import trimesh
+
+# trimesh divides by the (zero) volume of flat meshes for their centre of mass.
+warnings.filterwarnings("ignore", category=RuntimeWarning)
 
 
 def load(path):
