@@ -27,6 +27,7 @@ pub mod error;
 pub mod fit;
 pub mod frame;
 pub mod ops;
+pub mod query;
 pub mod subdivision;
 pub mod surface;
 pub mod taylor;

@@ -223,7 +223,8 @@ fn closest_point_is_found_on_closed_and_open_curves() {
     // Near the seam: the answer is just before 2π.
     let a = -0.05f64;
     let q = p3(2.0 * a.cos(), 2.0 * a.sin(), 0.3);
-    let (t, p) = circle.closest_point(&q);
+    let near = circle.closest_point(&q, 0.0).unwrap();
+    let (t, p) = (near.t, near.point);
     assert!((t - (TAU + a)).abs() < 1e-12, "t = {t}");
     assert!((p - p3(a.cos(), a.sin(), 0.0)).norm() < 1e-12);
     let pts = vec![p2(0.0, 0.0), p2(1.0, 2.0), p2(2.0, -1.0), p2(3.0, 1.0), p2(4.0, 0.0)];
@@ -234,11 +235,11 @@ fn closest_point_is_found_on_closed_and_open_curves() {
         c.eval(t0, &mut d);
         let normal = p2(-d[1][1], d[1][0]).normalize();
         let q = d[0] + normal * 0.01;
-        let (t, _) = c.closest_point(&q);
+        let t = c.closest_point(&q, 0.0).unwrap().t;
         assert!((t - t0).abs() < 1e-9, "expected {t0}, got {t}");
     }
     // Beyond the end: the end point.
-    assert_eq!(c.closest_point(&p2(10.0, 0.0)).0, 1.0);
+    assert_eq!(c.closest_point(&p2(10.0, 0.0), 0.0).unwrap().t, 1.0);
 }
 
 #[test]

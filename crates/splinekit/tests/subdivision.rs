@@ -11,7 +11,7 @@ fn polygon() -> Vec<Point<2>> {
 }
 
 fn max_distance_to_curve(points: &[Point<2>], curve: &impl Curve<2>) -> f64 {
-    points.iter().map(|q| (curve.closest_point(q).1 - q).norm()).fold(0.0, f64::max)
+    points.iter().map(|q| curve.closest_point(q, 0.0).unwrap().distance).fold(0.0, f64::max)
 }
 
 #[test]

@@ -178,10 +178,20 @@ pub trait Curve<const D: usize>: Send + Sync {
         crate::ops::length::arc_length(self, d.start, d.end, tolerance)
     }
 
-    /// The parameter and point of the curve closest to `query`
-    /// (see [`crate::ops::closest_point`]).
-    fn closest_point(&self, query: &Point<D>) -> (f64, Point<D>) {
-        crate::ops::closest_point::closest_point(self, query)
+    /// The point of the curve nearest to `query`, its distance within `accuracy`
+    /// (absolute, ≥ 0) of the true minimum; an error for a non-finite query or accuracy.
+    /// To project many points, build a [`CurveProjector`](crate::query::CurveProjector)
+    /// once; for every local minimum see
+    /// [`CurveProjector::local_minima`](crate::query::CurveProjector::local_minima).
+    ///
+    /// ```
+    /// use splinekit::{Point, curve::{BSplineCurve, Curve}};
+    /// let c = BSplineCurve::<2>::clamped_uniform(1, vec![Point::<2>::new(0.0, 0.0), Point::<2>::new(4.0, 0.0)]).unwrap();
+    /// let near = c.closest_point(&Point::<2>::new(1.0, 3.0), 1e-12).unwrap();
+    /// assert!((near.t - 0.25).abs() < 1e-15 && (near.distance - 3.0).abs() < 1e-15);
+    /// ```
+    fn closest_point(&self, query: &Point<D>, accuracy: f64) -> crate::Result<crate::query::Nearest<D>> {
+        crate::query::CurveProjector::new(self).nearest(query, accuracy)
     }
 }
 

@@ -1,7 +1,6 @@
-//! Operations on curves: arc length, closest point, knot insertion and refinement, knot
+//! Operations on curves: arc length, knot insertion and refinement, knot
 //! removal, degree elevation, splitting and Bézier decomposition.
 
-pub mod closest_point;
 pub mod curve_ops;
 pub mod decomposition;
 pub mod degree_elevation;

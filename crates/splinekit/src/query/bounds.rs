@@ -1,0 +1,55 @@
+//! Axis-aligned bounding boxes in ℝᴰ, the bounding volumes of the query covers.
+
+use crate::Point;
+
+/// The box [min₀, max₀] × … × [min_{D−1}, max_{D−1}].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Aabb<const D: usize> {
+    /// Lower corner.
+    pub min: Point<D>,
+    /// Upper corner.
+    pub max: Point<D>,
+}
+
+impl<const D: usize> Aabb<D> {
+    /// The smallest box holding every point, grown by `margin` on every side.
+    pub fn around<'a>(points: impl IntoIterator<Item = &'a Point<D>>, margin: f64) -> Self {
+        let mut min = Point::<D>::repeat(f64::INFINITY);
+        let mut max = Point::<D>::repeat(f64::NEG_INFINITY);
+        for p in points {
+            min = min.inf(p);
+            max = max.sup(p);
+        }
+        Aabb { min: min.add_scalar(-margin), max: max.add_scalar(margin) }
+    }
+
+    /// The length of the diagonal, |max − min|.
+    #[inline]
+    pub fn diagonal(&self) -> f64 {
+        (self.max - self.min).norm()
+    }
+
+    /// The Euclidean distance from `q` to the box (0 inside): a lower bound on the
+    /// distance from `q` to anything the box holds.
+    #[inline]
+    pub fn distance_to(&self, q: &Point<D>) -> f64 {
+        let mut s = 0.0;
+        for k in 0..D {
+            let d = (self.min[k] - q[k]).max(q[k] - self.max[k]).max(0.0);
+            s += d * d;
+        }
+        s.sqrt()
+    }
+
+    /// Whether the two boxes, each grown by `margin`, share a point.
+    #[inline]
+    pub fn overlaps(&self, other: &Aabb<D>, margin: f64) -> bool {
+        (0..D).all(|k| self.min[k] <= other.max[k] + margin && other.min[k] <= self.max[k] + margin)
+    }
+
+    /// The smallest box holding both.
+    #[inline]
+    pub fn union(&self, other: &Aabb<D>) -> Self {
+        Aabb { min: self.min.inf(&other.min), max: self.max.sup(&other.max) }
+    }
+}

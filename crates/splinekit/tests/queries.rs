@@ -1,0 +1,147 @@
+//! Geometric queries against closed forms and brute force: projection onto curves and
+//! surfaces.
+
+mod common;
+use common::*;
+use splinekit::Point;
+use splinekit::curve::model::{Circle, Ellipse, Rose};
+use splinekit::curve::{BSplineCurve, Curve, NurbsCurve};
+use splinekit::query::CurveProjector;
+use std::f64::consts::{PI, TAU};
+
+fn spline() -> BSplineCurve<2> {
+    let pts = vec![p2(0.0, 0.0), p2(1.0, 2.0), p2(2.0, -1.0), p2(3.0, 1.5), p2(4.0, 0.0), p2(5.0, 2.0), p2(6.0, -0.5)];
+    BSplineCurve::clamped_uniform(3, pts).unwrap()
+}
+
+/// The smallest distance over 20 000 samples, refined by golden-section search around the
+/// best sample: an independent upper bound on the global minimum.
+fn brute_force_distance<const D: usize, C: Curve<D>>(c: &C, q: &Point<D>) -> f64 {
+    let d = c.domain();
+    let n = 20_000;
+    let f = |t: f64| (c.point(t) - q).norm();
+    let best = (0..=n).map(|i| d.lerp(i as f64 / n as f64)).min_by(|a, b| f(*a).total_cmp(&f(*b))).unwrap();
+    let h = d.length() / n as f64;
+    let (mut lo, mut hi) = (d.clamp(best - h), d.clamp(best + h));
+    for _ in 0..100 {
+        let (m1, m2) = (lo + 0.382 * (hi - lo), lo + 0.618 * (hi - lo));
+        if f(m1) < f(m2) { hi = m2 } else { lo = m1 }
+    }
+    f(0.5 * (lo + hi)).min(f(best))
+}
+
+#[test]
+fn nearest_point_on_a_cubic_spline_agrees_with_brute_force() {
+    let c = spline();
+    let projector = CurveProjector::new(&c);
+    for i in 0..40 {
+        let q = p2(-1.0 + 8.0 * ((i * 37) % 40) as f64 / 40.0, -2.0 + 5.0 * ((i * 13) % 40) as f64 / 40.0);
+        let near = projector.nearest(&q, 0.0).unwrap();
+        let brute = brute_force_distance(&c, &q);
+        assert!(near.distance <= brute + 1e-12, "q = {q:?}: {} vs brute force {brute}", near.distance);
+        assert!((c.point(near.t) - near.point).norm() < 1e-15);
+        // The answer is a stationary point of the distance or an end of the domain.
+        let d1 = c.derivative(near.t, 1);
+        let at_end = near.t == 0.0 || near.t == 1.0;
+        assert!(at_end || (near.point - q).dot(&d1).abs() < 1e-12 * d1.norm() * (1.0 + near.distance));
+        assert!((near.distance - (near.point - q).norm()).abs() < 1e-15);
+    }
+}
+
+#[test]
+fn accuracy_bounds_the_distance_error() {
+    let c = spline();
+    let projector = CurveProjector::new(&c);
+    for i in 0..20 {
+        let q = p2(0.3 * i as f64, 2.5 - 0.2 * i as f64);
+        let exact = projector.nearest(&q, 0.0).unwrap().distance;
+        for accuracy in [1e-3, 1e-1] {
+            let rough = projector.nearest(&q, accuracy).unwrap().distance;
+            assert!(rough >= exact && rough <= exact + accuracy, "{rough} vs {exact} at accuracy {accuracy}");
+        }
+    }
+}
+
+#[test]
+fn ellipse_from_inside_has_the_closed_form_local_minima() {
+    // (a cos t, b sin t) from q = (x, 0): f′ = 2 sin t (a x − (a² − b²) cos t), so the
+    // minima are at cos t = a x/(a² − b²) and the maxima at t = 0 and t = π.
+    let (a, b, x) = (3.0, 2.0, 0.8);
+    let e = Ellipse::new(a, b).unwrap();
+    let q = p3(x, 0.0, 0.0);
+    let minima = CurveProjector::new(&e).local_minima(&q, 0.0).unwrap();
+    let t = (a * x / (a * a - b * b)).acos();
+    assert_eq!(minima.len(), 2, "{minima:?}");
+    assert!((minima[0].t - t).abs() < 1e-13, "{} vs {t}", minima[0].t);
+    assert!((minima[1].t - (TAU - t)).abs() < 1e-13);
+}
+
+#[test]
+fn circle_centre_is_one_minimum_at_the_start() {
+    for r in [0.5, 1.0, 7.0] {
+        let c = Circle::new(r).unwrap();
+        let q = p3(0.0, 0.0, 0.0);
+        let minima = CurveProjector::new(&c).local_minima(&q, 0.0).unwrap();
+        assert_eq!(minima.len(), 1, "{minima:?}");
+        assert_eq!(minima[0].t, 0.0);
+        let near = c.closest_point(&q, 0.0).unwrap();
+        assert!((near.distance - r).abs() < 1e-13 * r);
+        // Off the plane, above the centre: still every point is nearest.
+        let near = c.closest_point(&p3(0.0, 0.0, 2.0), 0.0).unwrap();
+        assert!((near.distance - (r * r + 4.0f64).sqrt()).abs() < 1e-13);
+    }
+    let nurbs = NurbsCurve::circle(p2(1.0, 1.0), p2(1.0, 0.0), p2(0.0, 1.0), 2.0).unwrap();
+    let minima = CurveProjector::new(&nurbs).local_minima(&p2(1.0, 1.0), 0.0).unwrap();
+    // Stored as an open curve: the whole domain is one flat stretch from its start.
+    assert_eq!(minima.len(), 1, "{minima:?}");
+}
+
+#[test]
+fn minima_at_kinks_ends_and_seams() {
+    // A polyline: the corner (2, 2) is the nearest point of q above it, at the knot ½.
+    let poly =
+        BSplineCurve::new(1, vec![0.0, 0.0, 0.5, 1.0, 1.0], vec![p2(0.0, 0.0), p2(2.0, 2.0), p2(4.0, 0.0)]).unwrap();
+    let near = poly.closest_point(&p2(2.0, 3.0), 0.0).unwrap();
+    assert_eq!(near.t, 0.5);
+    let minima = CurveProjector::new(&poly).local_minima(&p2(2.0, 3.0), 0.0).unwrap();
+    assert_eq!(minima.len(), 1, "{minima:?}");
+    // Both ends are local minima of a point below the middle; the kink is a maximum.
+    let minima = CurveProjector::new(&poly).local_minima(&p2(2.0, -10.0), 0.0).unwrap();
+    let ts: Vec<f64> = minima.iter().map(|m| m.t).collect();
+    assert_eq!(ts, vec![0.0, 1.0]);
+    // Closed curve: the nearest point lies across the seam at 2π.
+    let c = Circle::new(1.0).unwrap();
+    for a in [-1e-9, 0.0, 1e-9, -0.05, 0.05] {
+        let q = p3(2.0 * f64::cos(a), 2.0 * f64::sin(a), 0.0);
+        let minima = CurveProjector::new(&c).local_minima(&q, 0.0).unwrap();
+        assert_eq!(minima.len(), 1, "a = {a}: {minima:?}");
+        let expected = if a < 0.0 { TAU + a } else { a };
+        let dt = (minima[0].t - expected).abs();
+        assert!(dt < 1e-12 || (a == 0.0 && (minima[0].t - TAU).abs() < 1e-12), "a = {a}: {}", minima[0].t);
+    }
+}
+
+#[test]
+fn every_local_minimum_of_a_rose_from_its_centre() {
+    // r = cos(3θ) has 3 petals; from the centre the distance |cos 3θ| has minima 0 at the
+    // six parameters where the curve passes through the origin, θ = π/6 + kπ/3 on [0, 2π)
+    // (the curve traces each petal twice over [0, 2π]).
+    let rose = Rose::new(1.0, 3.0, true).unwrap();
+    let minima = CurveProjector::new(&rose).local_minima(&p3(0.0, 0.0, 0.0), 1e-12).unwrap();
+    let mut expected: Vec<f64> = (0..6).map(|k| PI / 6.0 + k as f64 * PI / 3.0).collect();
+    expected.sort_by(f64::total_cmp);
+    let got: Vec<f64> = minima.iter().map(|m| m.t).collect();
+    assert_eq!(got.len(), 6, "{got:?}");
+    for (g, e) in got.iter().zip(&expected) {
+        assert!((g - e).abs() < 1e-12, "{got:?} vs {expected:?}");
+    }
+}
+
+#[test]
+fn bad_queries_are_errors() {
+    let c = spline();
+    let err = c.closest_point(&p2(f64::NAN, 0.0), 0.0).unwrap_err();
+    assert!(err.to_string().starts_with("point"), "{err}");
+    let err = c.closest_point(&p2(0.0, 0.0), -1.0).unwrap_err();
+    assert!(err.to_string().starts_with("accuracy:"), "{err}");
+}
