@@ -145,3 +145,168 @@ fn bad_queries_are_errors() {
     let err = c.closest_point(&p2(0.0, 0.0), -1.0).unwrap_err();
     assert!(err.to_string().starts_with("accuracy:"), "{err}");
 }
+
+mod surfaces {
+    use super::*;
+    use splinekit::query::{NearestOnSurface, SurfaceProjector};
+    use splinekit::surface::model::{Cone, Plane, Sphere, Torus};
+    use splinekit::surface::{BSplineSurface, Surface};
+    use std::f64::consts::FRAC_PI_2;
+
+    fn bicubic() -> BSplineSurface<3> {
+        let net: Vec<Vec<Point<3>>> = (0..7)
+            .map(|i| (0..6).map(|j| p3(i as f64, j as f64, ((i * 3 + j * 5) % 7) as f64 * 0.4 - 1.0)).collect())
+            .collect();
+        BSplineSurface::clamped_uniform((3, 3), net).unwrap()
+    }
+
+    /// The smallest distance over a 120 × 120 grid, refined by coordinate-wise golden
+    /// sections around the best sample: an independent upper bound on the minimum.
+    fn brute_force<S: Surface<3>>(s: &S, q: &Point<3>) -> f64 {
+        let (du, dv) = (s.domain_u(), s.domain_v());
+        let n = 120;
+        let f = |u: f64, v: f64| (s.point(du.clamp(u), dv.clamp(v)) - q).norm();
+        let mut best = (f64::INFINITY, 0.0, 0.0);
+        for i in 0..=n {
+            for j in 0..=n {
+                let (u, v) = (du.lerp(i as f64 / n as f64), dv.lerp(j as f64 / n as f64));
+                let d = f(u, v);
+                if d < best.0 {
+                    best = (d, u, v);
+                }
+            }
+        }
+        let (mut u, mut v) = (best.1, best.2);
+        let (mut hu, mut hv) = (du.length() / n as f64, dv.length() / n as f64);
+        for _ in 0..60 {
+            let cands = [(u + hu, v), (u - hu, v), (u, v + hv), (u, v - hv)];
+            let (d, cu, cv) =
+                cands.iter().map(|&(a, b)| (f(a, b), a, b)).fold(best, |m, c| if c.0 < m.0 { c } else { m });
+            if d < best.0 {
+                best = (d, cu, cv);
+                u = du.clamp(cu);
+                v = dv.clamp(cv);
+            } else {
+                hu *= 0.5;
+                hv *= 0.5;
+            }
+        }
+        best.0
+    }
+
+    fn check_on_surface<S: Surface<3>>(s: &S, m: &NearestOnSurface<3>, q: &Point<3>) {
+        assert!((s.point(m.u, m.v) - m.point).norm() < 1e-14 * (1.0 + m.point.norm()));
+        assert!((m.distance - (m.point - q).norm()).abs() < 1e-15 * (1.0 + m.distance));
+    }
+
+    #[test]
+    fn nearest_point_on_a_bicubic_agrees_with_brute_force() {
+        let s = bicubic();
+        let projector = SurfaceProjector::new(&s);
+        for i in 0..12 {
+            let q = p3(-1.0 + 0.7 * i as f64, 5.5 - 0.54 * i as f64, ((i * 7) % 5) as f64 - 2.0);
+            let near = projector.nearest(&q, 0.0).unwrap();
+            check_on_surface(&s, &near, &q);
+            let brute = brute_force(&s, &q);
+            assert!(near.distance <= brute + 1e-12, "q = {q:?}: {} vs brute force {brute}", near.distance);
+            // Every local minimum is a point of the surface no nearer than the global one.
+            let minima = projector.local_minima(&q, 0.0).unwrap();
+            assert!(!minima.is_empty());
+            for m in &minima {
+                check_on_surface(&s, m, &q);
+                assert!(m.distance >= near.distance - 1e-12);
+            }
+            let least = minima.iter().map(|m| m.distance).fold(f64::INFINITY, f64::min);
+            assert!((least - near.distance).abs() < 1e-12, "q = {q:?}: nearest {near:?}, minima {minima:?}");
+        }
+    }
+
+    #[test]
+    fn sphere_radial_points_poles_and_centre() {
+        let r = 2.0;
+        let sphere = Sphere::new(r).unwrap();
+        let projector = SurfaceProjector::new(&sphere);
+        for q in [p3(3.0, 1.0, -0.5), p3(-0.1, -4.0, 2.0), p3(0.5, 0.25, 0.1)] {
+            let minima = projector.local_minima(&q, 0.0).unwrap();
+            assert_eq!(minima.len(), 1, "{q:?}: {minima:?}");
+            let expected = q.normalize() * r;
+            assert!((minima[0].point - expected).norm() < 1e-12, "{:?} vs {expected:?}", minima[0].point);
+            let near = projector.nearest(&q, 0.0).unwrap();
+            assert!((near.point - expected).norm() < 1e-12);
+        }
+        // Above a pole: the pole itself, reported once, with v at the end of the domain.
+        for z in [5.0, -5.0, 0.5] {
+            let q = p3(0.0, 0.0, z);
+            let minima = projector.local_minima(&q, 0.0).unwrap();
+            assert_eq!(minima.len(), 1, "z = {z}: {minima:?}");
+            assert!((minima[0].v.abs() - FRAC_PI_2).abs() < 1e-12);
+            assert!((minima[0].distance - (z.abs() - r).abs()).abs() < 1e-12);
+        }
+        // At the centre every point is nearest: one minimum at distance r.
+        let minima = projector.local_minima(&p3(0.0, 0.0, 0.0), 0.0).unwrap();
+        assert_eq!(minima.len(), 1, "{minima:?}");
+        assert!((minima[0].distance - r).abs() < 1e-12);
+        assert!((projector.nearest(&p3(0.0, 0.0, 0.0), 0.0).unwrap().distance - r).abs() < 1e-12);
+    }
+
+    #[test]
+    fn torus_across_the_seam_and_from_its_centre() {
+        let torus = Torus::new(3.0, 1.0).unwrap();
+        let projector = SurfaceProjector::new(&torus);
+        for a in [-0.2f64, 0.0, 1e-10, 2.0] {
+            let q = p3(4.5 * a.cos(), 4.5 * a.sin(), 0.3);
+            let centre = p3(3.0 * a.cos(), 3.0 * a.sin(), 0.0);
+            let expected = centre + (q - centre).normalize();
+            let minima = projector.local_minima(&q, 0.0).unwrap();
+            assert_eq!(minima.len(), 1, "a = {a}: {minima:?}");
+            assert!((minima[0].point - expected).norm() < 1e-12);
+        }
+        // From a point in the hole off the centre: one minimum on the inner equator.
+        let minima = projector.local_minima(&p3(0.5, 0.0, 0.0), 0.0).unwrap();
+        assert_eq!(minima.len(), 1, "{minima:?}");
+        assert!((minima[0].point - p3(2.0, 0.0, 0.0)).norm() < 1e-12);
+        // From the centre the whole inner equator is nearest: reported once.
+        let minima = projector.local_minima(&p3(0.0, 0.0, 0.0), 0.0).unwrap();
+        assert_eq!(minima.len(), 1, "{minima:?}");
+        assert!((minima[0].distance - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn cone_apex_and_circles_of_nearest_points() {
+        let (r, h) = (1.0, 2.0);
+        let cone = Cone::new(r, h).unwrap();
+        let projector = SurfaceProjector::new(&cone);
+        // Above the apex: the apex.
+        let near = projector.nearest(&p3(0.0, 0.0, 3.0), 0.0).unwrap();
+        assert!((near.point - p3(0.0, 0.0, h)).norm() < 1e-12 && (near.v - 1.0).abs() < 1e-12);
+        let minima = projector.local_minima(&p3(0.0, 0.0, 3.0), 0.0).unwrap();
+        assert_eq!(minima.len(), 1, "{minima:?}");
+        // Inside on the axis: a circle at v = (r² + h z)/(r² + h²), reported once.
+        let z = 0.5;
+        let v = (r * r + h * z) / (r * r + h * h);
+        let d = (r * r * (1.0 - v) * (1.0 - v) + (h * v - z) * (h * v - z)).sqrt();
+        let minima = projector.local_minima(&p3(0.0, 0.0, z), 0.0).unwrap();
+        assert_eq!(minima.len(), 1, "{minima:?}");
+        assert!((minima[0].distance - d).abs() < 1e-12 && (minima[0].v - v).abs() < 1e-9);
+        assert!((projector.nearest(&p3(0.0, 0.0, z), 0.0).unwrap().distance - d).abs() < 1e-12);
+    }
+
+    #[test]
+    fn plane_feet_edges_and_corners() {
+        let plane = Plane::new(p3(0.0, 0.0, 0.0), p3(2.0, 0.0, 0.0), p3(0.0, 1.0, 0.0)).unwrap();
+        let projector = SurfaceProjector::new(&plane);
+        let cases = [
+            (p3(1.0, 0.5, 3.0), (0.5, 0.5)),
+            (p3(5.0, 0.5, 1.0), (1.0, 0.5)),
+            (p3(-1.0, -1.0, 0.0), (0.0, 0.0)),
+            (p3(1.5, 2.0, -1.0), (0.75, 1.0)),
+        ];
+        for (q, (u, v)) in cases {
+            let minima = projector.local_minima(&q, 0.0).unwrap();
+            assert_eq!(minima.len(), 1, "{q:?}: {minima:?}");
+            assert!((minima[0].u - u).abs() < 1e-14 && (minima[0].v - v).abs() < 1e-14, "{q:?}: {minima:?}");
+            let near = plane.closest_point(&q, 0.0).unwrap();
+            assert!((near.u - u).abs() < 1e-14 && (near.v - v).abs() < 1e-14);
+        }
+    }
+}

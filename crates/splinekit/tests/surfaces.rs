@@ -247,7 +247,8 @@ fn isocurves_and_closest_points() {
     let torus = Torus::new(3.0, 1.0).unwrap();
     // A point off the tube: the nearest point is along the tube's radius, across the seam.
     let q = p3(4.5 * (-0.2f64).cos(), 4.5 * (-0.2f64).sin(), 0.3);
-    let (u, v, p) = torus.closest_point(&q);
+    let near = torus.closest_point(&q, 0.0).unwrap();
+    let (u, v, p) = (near.u, near.v, near.point);
     let centre = p3(3.0 * (-0.2f64).cos(), 3.0 * (-0.2f64).sin(), 0.0);
     let expected = centre + (q - centre).normalize();
     assert!((p - expected).norm() < 1e-10, "{p} vs {expected} at ({u}, {v})");

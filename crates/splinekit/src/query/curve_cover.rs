@@ -117,9 +117,11 @@ impl<const D: usize> CurvePiece<D> {
         [CurvePiece::new(curve, self.start, self.mid), CurvePiece::new(curve, self.mid, self.end)]
     }
 
-    /// Whether the box says something useful: the error radius is small beside the piece.
+    /// Whether the box says something useful: the error radius is small beside the piece
+    /// (or at rounding level, as on a piece that is a single point).
     pub fn is_tame(&self) -> bool {
-        self.radius <= TAME * self.bounds.diagonal()
+        let scale = self.control.iter().fold(0.0f64, |m, p| m.max(p.amax()));
+        self.radius <= TAME * Aabb::around(&self.control, 0.0).diagonal() || self.radius <= 2.0 * ROUNDING * scale
     }
 }
 
@@ -145,6 +147,8 @@ pub struct CurveCover<const D: usize> {
     pub domain: Interval,
     /// Whether the curve is closed (the ends of the domain are one point).
     pub closed: bool,
+    /// The largest coordinate magnitude of the root boxes (for rounding-level tolerances).
+    pub scale: f64,
 }
 
 impl<const D: usize> CurveCover<D> {
@@ -189,7 +193,9 @@ impl<const D: usize> CurveCover<D> {
             }
             k += 1;
         }
-        CurveCover { nodes, roots, domain, closed: curve.is_closed() }
+        let scale =
+            nodes[..roots].iter().fold(0.0f64, |m, n| m.max(n.piece.bounds.min.amax()).max(n.piece.bounds.max.amax()));
+        CurveCover { nodes, roots, domain, closed: curve.is_closed(), scale }
     }
 
     /// The root nodes' indices.

@@ -1,15 +1,22 @@
 //! Geometric queries: projection of points onto curves and surfaces (point inversion).
 //!
 //! Every query searches a cover of the shape by cubic Hermite pieces (curves,
-//! [`curve_cover`]) whose bounding boxes carry an error radius; the pieces are split where
-//! the boxes cannot decide, and the answers are polished by Newton's method to full
-//! precision. Batch queries build the cover once ([`CurveProjector`]).
+//! [`curve_cover`]) or bicubic Hermite patches (surfaces, [`surface_cover`]) whose
+//! bounding boxes carry an error radius; pieces are split where the boxes and the
+//! Bernstein coefficients of the distance's derivatives cannot decide, and the answers are
+//! polished by Newton's method to full precision. Batch queries build the cover once
+//! ([`CurveProjector`], [`SurfaceProjector`]).
 
 pub mod bernstein_product;
+pub mod best_first;
 pub mod bounds;
 pub mod curve_cover;
 pub mod project_curve;
+pub mod project_surface;
 pub mod slope;
+pub mod surface_cover;
+pub mod surface_slope;
 
 pub use bounds::Aabb;
 pub use project_curve::{CurveProjector, Nearest};
+pub use project_surface::{NearestOnSurface, SurfaceProjector};

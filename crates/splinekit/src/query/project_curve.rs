@@ -9,7 +9,8 @@
 //! with one bracketed sign change holds exactly one, found by safeguarded Newton iteration
 //! on g (g′ = |c′|² + (c − q)·c″, bisection whenever a step leaves the bracket) to full
 //! double precision; any other piece is split. For the global minimum, pieces whose box is
-//! farther than the best distance found so far minus `accuracy` are dropped.
+//! farther than the best distance found so far minus `accuracy` (at least the rounding
+//! level of the coordinates) are dropped.
 //!
 //! What is guaranteed (wherever the cover's radii bound the curve, always for polynomial
 //! pieces of degree ≤ 3, see [`crate::query::curve_cover`]): the nearest distance returned
@@ -22,13 +23,14 @@
 //! is one stretch, reported at the domain start). Splitting stops at a width of
 //! [`MIN_WIDTH`] times the domain, so no query runs forever.
 
-use std::cmp::Ordering;
+use std::borrow::Cow;
 use std::collections::BinaryHeap;
 
 use crate::Point;
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result, check_points_finite};
-use crate::query::curve_cover::{CurveCover, CurvePiece, Sample, SearchPiece};
+use crate::query::best_first::Ranked;
+use crate::query::curve_cover::{CurveCover, CurvePiece, ROUNDING, Sample, SearchPiece};
 use crate::query::slope::{Shape, classify};
 
 /// Pieces narrower than this fraction of the domain are not split further.
@@ -61,7 +63,7 @@ impl<const D: usize> Nearest<D> {
 #[derive(Debug, Clone)]
 pub struct CurveProjector<'c, const D: usize, C: ?Sized> {
     curve: &'c C,
-    cover: CurveCover<D>,
+    cover: Cow<'c, CurveCover<D>>,
 }
 
 /// Checks a query point and an accuracy argument.
@@ -76,7 +78,12 @@ pub(crate) fn check_query<const D: usize>(q: &Point<D>, accuracy: f64) -> Result
 impl<'c, const D: usize, C: Curve<D> + ?Sized> CurveProjector<'c, D, C> {
     /// Builds the bounding hierarchy of `curve` (see [`CurveCover`]).
     pub fn new(curve: &'c C) -> Self {
-        CurveProjector { curve, cover: CurveCover::new(curve) }
+        CurveProjector { curve, cover: Cow::Owned(CurveCover::new(curve)) }
+    }
+
+    /// A projector on a cover built earlier for the same curve.
+    pub fn with_cover(curve: &'c C, cover: &'c CurveCover<D>) -> Self {
+        CurveProjector { curve, cover: Cow::Borrowed(cover) }
     }
 
     /// The point of the curve nearest to `q`, its distance within `accuracy` (≥ 0, absolute)
@@ -95,11 +102,12 @@ impl<'c, const D: usize, C: Curve<D> + ?Sized> CurveProjector<'c, D, C> {
             for s in [&node.piece.start, &node.piece.mid, &node.piece.end] {
                 offer(s, &mut best);
             }
-            heap.push(Candidate { bound: node.piece.bounds.distance_to(q), piece: SearchPiece::Cached(node) });
+            heap.push(Ranked { bound: node.piece.bounds.distance_to(q), item: SearchPiece::Cached(node) });
         }
         let min_width = MIN_WIDTH * self.cover.domain.length();
-        while let Some(Candidate { bound, piece }) = heap.pop() {
-            if bound >= best.distance - accuracy {
+        let slack = accuracy.max(ROUNDING * (q.amax() + self.cover.scale));
+        while let Some(Ranked { bound, item: piece }) = heap.pop() {
+            if bound >= best.distance - slack {
                 break;
             }
             let p = piece.piece();
@@ -124,8 +132,8 @@ impl<'c, const D: usize, C: Curve<D> + ?Sized> CurveProjector<'c, D, C> {
                     for half in piece.split(&self.cover, self.curve) {
                         offer(&half.piece().mid, &mut best);
                         let bound = half.piece().bounds.distance_to(q);
-                        if bound < best.distance - accuracy {
-                            heap.push(Candidate { bound, piece: half });
+                        if bound < best.distance - slack {
+                            heap.push(Ranked { bound, item: half });
                         }
                     }
                 }
@@ -269,30 +277,6 @@ fn merge_minima<const D: usize>(
         }
     }
     out
-}
-
-/// A piece in the best-first queue, ordered by the lower bound of its distance to q.
-struct Candidate<'a, const D: usize> {
-    bound: f64,
-    piece: SearchPiece<'a, D>,
-}
-
-impl<const D: usize> PartialEq for Candidate<'_, D> {
-    fn eq(&self, other: &Self) -> bool {
-        self.bound == other.bound
-    }
-}
-impl<const D: usize> Eq for Candidate<'_, D> {}
-impl<const D: usize> PartialOrd for Candidate<'_, D> {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl<const D: usize> Ord for Candidate<'_, D> {
-    /// Reversed, so that the max-heap pops the smallest bound first.
-    fn cmp(&self, other: &Self) -> Ordering {
-        other.bound.total_cmp(&self.bound)
-    }
 }
 
 /// The root of the slope on a piece whose end slopes bracket a minimum (− at the start,

@@ -10,7 +10,8 @@
 
 use crate::Point;
 use crate::query::bernstein_product::product;
-use crate::query::curve_cover::CurvePiece;
+use crate::query::bounds::Aabb;
+use crate::query::curve_cover::{CurvePiece, ROUNDING};
 
 /// Relative size below which a slope or a distance difference counts as zero (rounding).
 pub const ZERO_SLOPE: f64 = 1e-11;
@@ -45,8 +46,12 @@ pub struct SlopeSigns {
     pub end: i8,
 }
 
-/// Classifies `piece` for the query point `q`.
+/// Classifies `piece` for the query point `q`. A piece whose box is at the rounding level
+/// of the coordinates (such as the pole of a sphere, a circle of radius 10⁻¹⁶) is flat.
 pub fn classify<const D: usize>(piece: &CurvePiece<D>, q: &Point<D>) -> SlopeSigns {
+    if is_rounding_sized(&piece.bounds, q) {
+        return SlopeSigns { shape: Shape::Flat, start: 0, end: 0 };
+    }
     let b = &piece.control;
     let a: [Point<D>; 4] = [b[0] - q, b[1] - q, b[2] - q, b[3] - q];
     let e: [Point<D>; 3] = [(b[1] - b[0]) * 3.0, (b[2] - b[1]) * 3.0, (b[3] - b[2]) * 3.0];
@@ -72,6 +77,13 @@ pub fn classify<const D: usize>(piece: &CurvePiece<D>, q: &Point<D>) -> SlopeSig
     let end = signs.iter().rev().copied().find(|&s| s != 0).unwrap_or(0);
     let shape = shape_of(piece, q, &signs, zero);
     SlopeSigns { shape, start, end }
+}
+
+/// Whether a box is no bigger than the rounding noise of coordinates as large as its own and
+/// the query's.
+pub fn is_rounding_sized<const D: usize>(bounds: &Aabb<D>, q: &Point<D>) -> bool {
+    let scale = q.amax().max(bounds.min.amax()).max(bounds.max.amax());
+    bounds.diagonal() <= 16.0 * ROUNDING * scale
 }
 
 fn shape_of<const D: usize>(piece: &CurvePiece<D>, q: &Point<D>, signs: &[i8; 6], zero: f64) -> Shape {

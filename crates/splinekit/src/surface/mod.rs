@@ -3,7 +3,6 @@
 
 pub mod bezier_surface;
 pub mod bspline_surface;
-pub mod closest_point;
 pub mod derived;
 pub mod iso_curve;
 pub mod loft;

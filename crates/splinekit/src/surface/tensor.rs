@@ -35,6 +35,12 @@ macro_rules! tensor_surface_domains {
         fn is_closed_v(&self) -> bool {
             self.spline.v.is_periodic()
         }
+        fn breakpoints_u(&self) -> Vec<f64> {
+            self.spline.u.breakpoints()
+        }
+        fn breakpoints_v(&self) -> Vec<f64> {
+            self.spline.v.breakpoints()
+        }
     };
 }
 pub(crate) use tensor_surface_domains;

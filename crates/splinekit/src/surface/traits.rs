@@ -87,6 +87,21 @@ pub trait Surface<const D: usize>: Send + Sync {
         }
     }
 
+    /// The u-parameters where the surface may lose smoothness (knot lines, patch joins),
+    /// both ends of the domain included, in increasing order. Queries cut their patches
+    /// there.
+    fn breakpoints_u(&self) -> Vec<f64> {
+        let d = self.domain_u();
+        vec![d.start, d.end]
+    }
+
+    /// The v-parameters where the surface may lose smoothness; see
+    /// [`Surface::breakpoints_u`].
+    fn breakpoints_v(&self) -> Vec<f64> {
+        let d = self.domain_v();
+        vec![d.start, d.end]
+    }
+
     /// For trimmed surfaces, whether (u, v) lies in the trimmed region; `None` for
     /// untrimmed surfaces (every parameter of the domain belongs to them).
     fn trim_contains(&self, _u: f64, _v: f64) -> Option<bool> {
@@ -148,10 +163,20 @@ pub trait Surface<const D: usize>: Send + Sync {
         Some(Curvatures { gaussian, mean, principal: (mean + root, mean - root) })
     }
 
-    /// The parameters and point of the surface nearest to `query`
-    /// (see [`crate::surface::closest_point`]).
-    fn closest_point(&self, query: &Point<D>) -> (f64, f64, Point<D>) {
-        crate::surface::closest_point::closest_point(self, query)
+    /// The point of the surface nearest to `query`, its distance within `accuracy`
+    /// (absolute, ≥ 0) of the true minimum; an error for a non-finite query or accuracy.
+    /// To project many points, build a [`SurfaceProjector`](crate::query::SurfaceProjector)
+    /// once; for every local minimum see
+    /// [`SurfaceProjector::local_minima`](crate::query::SurfaceProjector::local_minima).
+    ///
+    /// ```
+    /// use splinekit::{Point, surface::{Surface, model::Sphere}};
+    /// let sphere = Sphere::new(2.0).unwrap();
+    /// let near = sphere.closest_point(&Point::<3>::new(0.0, 0.0, 5.0), 1e-12).unwrap();
+    /// assert!((near.distance - 3.0).abs() < 1e-12 && (near.point[2] - 2.0).abs() < 1e-12);
+    /// ```
+    fn closest_point(&self, query: &Point<D>, accuracy: f64) -> crate::Result<crate::query::NearestOnSurface<D>> {
+        crate::query::SurfaceProjector::new(self).nearest(query, accuracy)
     }
 }
 
@@ -219,5 +244,11 @@ impl<const D: usize, S: Surface<D> + ?Sized> Surface<D> for Box<S> {
     }
     fn trim_loops(&self) -> Option<TrimLoops<'_>> {
         (**self).trim_loops()
+    }
+    fn breakpoints_u(&self) -> Vec<f64> {
+        (**self).breakpoints_u()
+    }
+    fn breakpoints_v(&self) -> Vec<f64> {
+        (**self).breakpoints_v()
     }
 }
