@@ -34,6 +34,8 @@ enum Command {
     Fit(commands::fit::FitArgs),
     /// B-spline through every point (global interpolation).
     Interpolate(commands::fit::InterpolateArgs),
+    /// Nearest point of a curve or surface to given points, or every local minimum.
+    Project(commands::project::ProjectArgs),
     /// Knot insertion, degree elevation or knot removal; the curve stays the same.
     Refine(commands::refine::RefineArgs),
     /// Subdivision curves: Chaikin, Lane–Riesenfeld, 4-point.
@@ -91,6 +93,7 @@ fn main() {
         Command::Eval(a) => commands::eval::run(a),
         Command::Fit(a) => commands::fit::run_fit(a),
         Command::Interpolate(a) => commands::fit::run_interpolate(a),
+        Command::Project(a) => commands::project::run(a),
         Command::Refine(a) => commands::refine::run(a),
         Command::Subdivide(a) => commands::subdivide::run(a),
         Command::SubdivideSurface(a) => commands::subdivide_surface::run(a),

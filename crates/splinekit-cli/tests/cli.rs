@@ -735,3 +735,27 @@ fn subdivide_surface_writes_meshes_and_refuses_bad_ones() {
     assert_bad(&["subdivide-surface", "-", "--scheme", "loop", "-o", obj.to_str().unwrap()], &cube, "scheme");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn project_finds_nearest_points_and_every_minimum() {
+    let circle = r#"{"type":"nurbs","degree":2,"knots":[0,0,0,0.25,0.25,0.5,0.5,0.75,0.75,1,1,1],
+        "control_points":[[1,0],[1,1],[0,1],[-1,1],[-1,0],[-1,-1],[0,-1],[1,-1],[1,0]],
+        "weights":[1,0.7071067811865476,1,0.7071067811865476,1,0.7071067811865476,1,0.7071067811865476,1]}"#;
+    let v = ok_json(&["project", "-", "--point", "3,4"], circle);
+    let p = floats(&v["nearest"]["point"]);
+    assert!((p[0] - 0.6).abs() < 1e-14 && (p[1] - 0.8).abs() < 1e-14, "{v}");
+    assert!((v["nearest"]["distance"].as_f64().unwrap() - 4.0).abs() < 1e-14);
+    // From inside, off centre, the nearest point (1, 0) is the only local minimum; this
+    // circle is stored as an open curve, so it is reported at both ends of the domain.
+    let v = ok_json(&["project", "-", "--point", "0.5,0", "--all"], circle);
+    let ts: Vec<f64> = v["minima"].as_array().unwrap().iter().map(|m| m["t"].as_f64().unwrap()).collect();
+    assert_eq!(ts, vec![0.0, 1.0], "{v}");
+    let sphere = r#"{"type":"sphere","radius":2}"#;
+    let v = ok_json(&["project", "-", "--point", "0,0,5"], sphere);
+    assert!((v["nearest"]["distance"].as_f64().unwrap() - 3.0).abs() < 1e-12, "{v}");
+    // The centre of the sphere: every point is nearest, reported once.
+    let v = ok_json(&["project", "-", "--point", "0,0,0", "--all"], sphere);
+    assert_eq!(v["minima"].as_array().unwrap().len(), 1, "{v}");
+    assert_bad(&["project", "-", "--point", "1,2"], sphere, "--point: the shape is 3-D");
+    assert_bad(&["project", "-", "--point", "1,2,3", "--accuracy", "-1"], sphere, "--accuracy");
+}

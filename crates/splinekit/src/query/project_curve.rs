@@ -31,7 +31,7 @@ use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result, check_points_finite};
 use crate::query::best_first::Ranked;
 use crate::query::curve_cover::{CurveCover, CurvePiece, ROUNDING, Sample, SearchPiece};
-use crate::query::slope::{Shape, classify};
+use crate::query::slope::{DUPLICATE_DISTANCE, Shape, classify};
 
 /// Pieces narrower than this fraction of the domain are not split further.
 pub const MIN_WIDTH: f64 = 1e-13;
@@ -243,7 +243,8 @@ fn boundary_minima<const D: usize>(leaves: &[Leaf<D>], closed: bool, q: &Point<D
     out
 }
 
-/// Sorts minima by parameter and merges duplicates — neighbours within `accuracy` in space
+/// Sorts minima by parameter and merges duplicates — neighbours within `accuracy` (or
+/// [`DUPLICATE_DISTANCE`] relative to the coordinates) in space
 /// and [`DUPLICATE_WIDTH`] in parameter (relative to the domain), keeping the nearer —
 /// including across the seam of a closed curve.
 fn merge_minima<const D: usize>(
@@ -257,7 +258,8 @@ fn merge_minima<const D: usize>(
         let scale = a.point.amax().max(b.point.amax()).max(1.0);
         let dt = (a.t - b.t).abs();
         let dt = if closed { dt.min(domain.length() - dt) } else { dt };
-        (a.point - b.point).norm() <= accuracy.max(1e-12 * scale) && dt <= DUPLICATE_WIDTH * domain.length()
+        (a.point - b.point).norm() <= accuracy.max(DUPLICATE_DISTANCE * scale)
+            && dt <= DUPLICATE_WIDTH * domain.length()
     };
     let mut out: Vec<Nearest<D>> = Vec::with_capacity(minima.len());
     for m in minima {

@@ -33,7 +33,7 @@ use crate::error::Result;
 use crate::query::best_first::Ranked;
 use crate::query::curve_cover::{CurveCover, ROUNDING};
 use crate::query::project_curve::{CurveProjector, check_query};
-use crate::query::slope::{ZERO_SLOPE, is_rounding_sized};
+use crate::query::slope::{DUPLICATE_DISTANCE, ZERO_SLOPE, is_rounding_sized};
 use crate::query::surface_cover::{SearchPatch, SurfaceCover, SurfacePatch};
 use crate::query::surface_slope::{BoundarySides, PatchShape, classify_patch};
 use crate::surface::{Direction, IsoCurve, Surface};
@@ -362,7 +362,7 @@ impl<'s, const D: usize, S: Surface<D> + ?Sized> SurfaceProjector<'s, D, S> {
         }
     }
 
-    /// Merges duplicates (neighbours within `accuracy` in space), non-isolated minima at one
+    /// Merges duplicates (within `accuracy` or [`DUPLICATE_DISTANCE`] in space), non-isolated minima at one
     /// distance, and minima inside flat regions, as the module documentation says.
     fn merge(
         &self,
@@ -388,7 +388,7 @@ impl<'s, const D: usize, S: Surface<D> + ?Sized> SurfaceProjector<'s, D, S> {
         for (m, isolated) in found {
             let bucket = if isolated { &mut out } else { &mut degenerate };
             let dup = bucket.iter_mut().find(|r| {
-                (r.point - m.point).norm() <= accuracy.max(1e-10 * (1.0 + r.point.amax()))
+                (r.point - m.point).norm() <= accuracy.max(DUPLICATE_DISTANCE * (1.0 + r.point.amax()))
                     || (!isolated && same_distance(r.distance, m.distance))
             });
             match dup {
@@ -399,7 +399,10 @@ impl<'s, const D: usize, S: Surface<D> + ?Sized> SurfaceProjector<'s, D, S> {
             }
         }
         for d in degenerate {
-            if !out.iter().any(|r| (r.point - d.point).norm() <= accuracy.max(1e-10 * (1.0 + r.point.amax()))) {
+            if !out
+                .iter()
+                .any(|r| (r.point - d.point).norm() <= accuracy.max(DUPLICATE_DISTANCE * (1.0 + r.point.amax())))
+            {
                 out.push(d);
             }
         }

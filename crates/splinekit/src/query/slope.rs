@@ -13,6 +13,11 @@ use crate::query::bernstein_product::product;
 use crate::query::bounds::Aabb;
 use crate::query::curve_cover::{CurvePiece, ROUNDING};
 
+/// Two minima found closer than this (relative to the coordinates' size) are one: a shallow
+/// minimum is located only to about √ε, so Newton iterations from two pieces may end this
+/// far apart on it.
+pub const DUPLICATE_DISTANCE: f64 = 1e-7;
+
 /// Relative size below which a slope or a distance difference counts as zero (rounding).
 pub const ZERO_SLOPE: f64 = 1e-11;
 
