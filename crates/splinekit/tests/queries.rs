@@ -310,3 +310,141 @@ mod surfaces {
         }
     }
 }
+
+mod intersections {
+    use super::*;
+    use splinekit::curve::BezierCurve;
+    use splinekit::curve::model::{Helix, Line};
+    use splinekit::query::{IntersectionKind, intersect_curves, self_intersections};
+
+    fn unit_circle(cx: f64, cy: f64) -> NurbsCurve<2> {
+        NurbsCurve::circle(p2(cx, cy), p2(1.0, 0.0), p2(0.0, 1.0), 1.0).unwrap()
+    }
+
+    fn segment(a: Point<2>, b: Point<2>) -> BSplineCurve<2> {
+        BSplineCurve::new(1, vec![0.0, 0.0, 1.0, 1.0], vec![a, b]).unwrap()
+    }
+
+    fn assert_on_both<const D: usize, A: Curve<D>, B: Curve<D>>(
+        a: &A,
+        b: &B,
+        r: &splinekit::query::CurveIntersections<D>,
+        tol: f64,
+    ) {
+        for p in &r.points {
+            assert!((a.point(p.t_a) - p.point).norm() <= tol && (b.point(p.t_b) - p.point).norm() <= tol, "{p:?}");
+        }
+    }
+
+    #[test]
+    fn line_and_circle() {
+        let circle = unit_circle(0.0, 0.0);
+        let line = segment(p2(-3.0, 0.5), p2(3.0, 0.5));
+        let r = intersect_curves(&line, &circle, 1e-12).unwrap();
+        assert_on_both(&line, &circle, &r, 1e-12);
+        let xs: Vec<f64> = r.points.iter().map(|p| p.point[0]).collect();
+        let x = 0.75f64.sqrt();
+        assert_eq!(xs.len(), 2, "{r:?}");
+        assert!((xs[0] + x).abs() < 1e-14 && (xs[1] - x).abs() < 1e-14, "{xs:?}");
+        assert!(r.points.iter().all(|p| p.kind == IntersectionKind::Crossing && (p.point[1] - 0.5).abs() < 1e-14));
+        // Touching at the top: one tangent contact.
+        let line = segment(p2(-3.0, 1.0), p2(3.0, 1.0));
+        let r = intersect_curves(&line, &circle, 1e-9).unwrap();
+        assert_eq!(r.points.len(), 1, "{r:?}");
+        assert_eq!(r.points[0].kind, IntersectionKind::Tangent);
+        assert!((r.points[0].point - p2(0.0, 1.0)).norm() < 1e-4);
+        // Passing above: nothing.
+        let line = segment(p2(-3.0, 1.001), p2(3.0, 1.001));
+        assert!(intersect_curves(&line, &circle, 1e-9).unwrap().points.is_empty());
+    }
+
+    #[test]
+    fn circle_and_circle() {
+        for d in [1.0, 0.3, 1.9] {
+            let (a, b) = (unit_circle(0.0, 0.0), unit_circle(d, 0.0));
+            let r = intersect_curves(&a, &b, 1e-12).unwrap();
+            assert_on_both(&a, &b, &r, 1e-12);
+            let (x, y) = (d / 2.0, (1.0 - d * d / 4.0).sqrt());
+            let mut pts: Vec<Point<2>> = r.points.iter().map(|p| p.point).collect();
+            pts.sort_by(|p, q| p[1].total_cmp(&q[1]));
+            assert_eq!(pts.len(), 2, "d = {d}: {r:?}");
+            assert!((pts[0] - p2(x, -y)).norm() < 1e-13 && (pts[1] - p2(x, y)).norm() < 1e-13, "{pts:?}");
+        }
+        // The same circle twice: one overlap over the whole domain.
+        let r = intersect_curves(&unit_circle(0.0, 0.0), &unit_circle(0.0, 0.0), 1e-9).unwrap();
+        assert_eq!(r.overlaps.len(), 1, "{r:?}");
+        assert!(r.overlaps[0].a.start <= 1e-12 && r.overlaps[0].a.end >= 1.0 - 1e-12);
+        assert!(r.points.is_empty(), "{r:?}");
+    }
+
+    #[test]
+    fn collinear_segments_overlap_as_intervals() {
+        let a = segment(p2(0.0, 0.0), p2(4.0, 0.0));
+        let b = segment(p2(6.0, 0.0), p2(1.0, 0.0));
+        let r = intersect_curves(&a, &b, 1e-9).unwrap();
+        assert_eq!(r.overlaps.len(), 1, "{r:?}");
+        let o = r.overlaps[0];
+        assert!((o.a.start - 0.25).abs() < 1e-12 && (o.a.end - 1.0).abs() < 1e-12, "{o:?}");
+        assert!((o.b.0 - 1.0).abs() < 1e-12 && (o.b.1 - 0.4).abs() < 1e-12, "{o:?}");
+    }
+
+    #[test]
+    fn parabola_and_cubic_against_the_roots_of_the_implicit_equation() {
+        // The parabola y = x² as a quadratic Bézier curve; substituting the cubic's x(t),
+        // y(t) into y − x² gives a degree-6 polynomial whose roots in [0, 1] are the
+        // intersections (the resultant of the two parametric curves).
+        let parabola = BezierCurve::new(vec![p2(-2.0, 4.0), p2(0.0, -4.0), p2(2.0, 4.0)]).unwrap();
+        let cubic = BezierCurve::new(vec![p2(-2.0, 5.0), p2(-1.0, -5.0), p2(1.0, 8.0), p2(2.0, 2.0)]).unwrap();
+        let f = |t: f64| {
+            let p = cubic.point(t);
+            p[1] - p[0] * p[0]
+        };
+        let n = 100_000;
+        let mut roots = Vec::new();
+        for i in 0..n {
+            let (mut lo, mut hi) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
+            if f(lo) == 0.0 || f(lo).signum() != f(hi).signum() {
+                for _ in 0..100 {
+                    let m = 0.5 * (lo + hi);
+                    if f(lo).signum() == f(m).signum() && f(m) != 0.0 { lo = m } else { hi = m }
+                }
+                roots.push(0.5 * (lo + hi));
+            }
+        }
+        let r = intersect_curves(&cubic, &parabola, 1e-12).unwrap();
+        assert_on_both(&cubic, &parabola, &r, 1e-12);
+        let got: Vec<f64> = r.points.iter().map(|p| p.t_a).collect();
+        assert_eq!(got.len(), roots.len(), "{got:?} vs {roots:?}");
+        assert_eq!(roots.len(), 3);
+        for (g, e) in got.iter().zip(&roots) {
+            assert!((g - e).abs() < 1e-12, "{got:?} vs {roots:?}");
+        }
+    }
+
+    #[test]
+    fn helix_and_a_line_in_space() {
+        let helix = Helix::new(1.0, 1.0, 3.0).unwrap();
+        let line = Line::new(p3(1.0, 0.0, -1.0), p3(1.0, 0.0, 5.0)).unwrap();
+        let r = intersect_curves(&helix, &line, 1e-12).unwrap();
+        // (cos t, sin t, t/2π) meets x = 1, y = 0 at t = 2πk: z = 0, 1, 2, 3.
+        let zs: Vec<f64> = r.points.iter().map(|p| p.point[2]).collect();
+        assert_eq!(zs.len(), 4, "{r:?}");
+        for (k, z) in zs.iter().enumerate() {
+            assert!((z - k as f64).abs() < 1e-12, "{zs:?}");
+        }
+    }
+
+    #[test]
+    fn a_looped_cubic_crosses_itself_once() {
+        let c = BezierCurve::new(vec![p2(0.0, 0.0), p2(3.0, 2.0), p2(-1.0, 2.0), p2(2.0, 0.0)]).unwrap();
+        let r = self_intersections(&c, 1e-12).unwrap();
+        assert_eq!(r.points.len(), 1, "{r:?}");
+        let p = r.points[0];
+        assert!(p.t_b - p.t_a > 0.1 && (c.point(p.t_a) - c.point(p.t_b)).norm() < 1e-12, "{p:?}");
+        // A simple arc does not.
+        let arc = BezierCurve::new(vec![p2(0.0, 0.0), p2(1.0, 2.0), p2(2.0, 2.0), p2(3.0, 0.0)]).unwrap();
+        assert!(self_intersections(&arc, 1e-12).unwrap().points.is_empty());
+        // Nor does a closed circle at its seam.
+        assert!(self_intersections(&Circle::new(1.0).unwrap(), 1e-12).unwrap().points.is_empty());
+    }
+}

@@ -42,23 +42,34 @@ pub fn product_2d<A, B>(
     for c in out.iter_mut().take((m1 + n1 + 1) * w) {
         *c = 0.0;
     }
+    let (bm1, bm2, bn1, bn2) = (binomials(m1), binomials(m2), binomials(n1), binomials(n2));
     for i1 in 0..=m1 {
         for i2 in 0..=m2 {
             let ai = &a[i1 * (m2 + 1) + i2];
-            let wa = binomial(m1, i1) * binomial(m2, i2);
+            let wa = bm1[i1] * bm2[i2];
             for j1 in 0..=n1 {
                 for j2 in 0..=n2 {
-                    let wb = binomial(n1, j1) * binomial(n2, j2);
-                    out[(i1 + j1) * w + i2 + j2] += wa * wb * mul(ai, &b[j1 * (n2 + 1) + j2]);
+                    out[(i1 + j1) * w + i2 + j2] += wa * bn1[j1] * bn2[j2] * mul(ai, &b[j1 * (n2 + 1) + j2]);
                 }
             }
         }
     }
+    let (b1, b2) = (binomials(m1 + n1), binomials(m2 + n2));
     for k1 in 0..=m1 + n1 {
         for k2 in 0..w {
-            out[k1 * w + k2] /= binomial(m1 + n1, k1) * binomial(m2 + n2, k2);
+            out[k1 * w + k2] /= b1[k1] * b2[k2];
         }
     }
+}
+
+/// The row C(n, 0 …) of binomial coefficients, n ≤ 15.
+fn binomials(n: usize) -> [f64; 16] {
+    let mut row = [0.0; 16];
+    row[0] = 1.0;
+    for k in 1..=n {
+        row[k] = row[k - 1] * (n + 1 - k) as f64 / k as f64;
+    }
+    row
 }
 
 #[cfg(test)]

@@ -1,4 +1,5 @@
-//! Geometric queries: projection of points onto curves and surfaces (point inversion).
+//! Geometric queries: projection of points onto curves and surfaces (point inversion),
+//! intersections of curves.
 //!
 //! Every query searches a cover of the shape by cubic Hermite pieces (curves,
 //! [`curve_cover`]) or bicubic Hermite patches (surfaces, [`surface_cover`]) whose
@@ -11,12 +12,17 @@ pub mod bernstein_product;
 pub mod best_first;
 pub mod bounds;
 pub mod curve_cover;
+pub mod curve_intersection;
 pub mod project_curve;
 pub mod project_surface;
 pub mod slope;
 pub mod surface_cover;
 pub mod surface_slope;
+pub mod tangent_cone;
 
 pub use bounds::Aabb;
+pub use curve_intersection::{
+    CurveIntersection, CurveIntersections, CurveOverlap, IntersectionKind, intersect_curves, self_intersections,
+};
 pub use project_curve::{CurveProjector, Nearest};
 pub use project_surface::{NearestOnSurface, SurfaceProjector};

@@ -1,0 +1,150 @@
+"""splinekit's geometric queries against OpenCASCADE (through OCP), and their speed.
+
+Usage: python queries.py PATH/TO/splinekit [--points N]
+Run with the venv of .ci/install-ocp.sh. Builds the same B-spline shapes as splinekit shape
+documents and as OCP Geom objects, asks both the same questions and fails (exit 1) when
+splinekit misses an answer OpenCASCADE finds: a nearest point farther than OpenCASCADE's
+by more than the tolerance. Prints the timings of both side by side.
+"""
+
+import json
+import math
+import subprocess
+import sys
+import tempfile
+import time
+
+from OCP.gp import gp_Pnt
+from OCP.OCP.collections import Array1_double, Array1_gp_Pnt, Array1_int, Array2_gp_Pnt
+from OCP.Geom import Geom_BSplineCurve, Geom_BSplineSurface
+from OCP.GeomAPI import GeomAPI_ProjectPointOnCurve, GeomAPI_ProjectPointOnSurf
+
+TOLERANCE = 1e-9
+failures = []
+
+
+def clamped_knots(n, p):
+    """Clamped uniform knots on [0, 1] as a full vector and as OCP knots + multiplicities."""
+    inner = n - p - 1
+    full = [0.0] * (p + 1) + [k / (inner + 1) for k in range(1, inner + 1)] + [1.0] * (p + 1)
+    distinct = [k / (inner + 1) for k in range(inner + 2)]
+    mults = [p + 1] + [1] * inner + [p + 1]
+    knots, mult = Array1_double(1, len(distinct)), Array1_int(1, len(mults))
+    for i, (k, m) in enumerate(zip(distinct, mults)):
+        knots.SetValue(i + 1, k)
+        mult.SetValue(i + 1, m)
+    return full, knots, mult
+
+
+def bicubic_surface(n=8):
+    """z = sin(i)·cos(j) over an n × n grid: a wavy bicubic patch."""
+    net = [[[float(i), float(j), math.sin(i) * math.cos(j)] for j in range(n)] for i in range(n)]
+    full, knots, mults = clamped_knots(n, 3)
+    doc = {"type": "bspline_surface", "degree_u": 3, "degree_v": 3, "knots_u": full, "knots_v": full,
+           "control_points": net}
+    poles = Array2_gp_Pnt(1, n, 1, n)
+    for i in range(n):
+        for j in range(n):
+            poles.SetValue(i + 1, j + 1, gp_Pnt(*net[i][j]))
+    return doc, Geom_BSplineSurface(poles, knots, knots, mults, mults, 3, 3)
+
+
+def cubic_curve(n=12):
+    """A wiggly cubic B-spline in space."""
+    pts = [[float(i), math.sin(1.3 * i) * 2.0, math.cos(0.7 * i)] for i in range(n)]
+    full, knots, mults = clamped_knots(n, 3)
+    doc = {"type": "bspline", "degree": 3, "knots": full, "control_points": pts}
+    poles = Array1_gp_Pnt(1, n)
+    for i, p in enumerate(pts):
+        poles.SetValue(i + 1, gp_Pnt(*p))
+    return doc, Geom_BSplineCurve(poles, knots, mults, 3)
+
+
+def splinekit(binary, doc, *args):
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(doc, f)
+    start = time.perf_counter()
+    out = subprocess.run([binary, *args[:1], f.name, *args[1:]], capture_output=True, text=True)
+    elapsed = time.perf_counter() - start
+    if out.returncode != 0:
+        sys.exit(f"splinekit {' '.join(args)} failed: {out.stderr}")
+    return json.loads(out.stdout), elapsed
+
+
+def compare(name, ours, theirs):
+    """ours, theirs: lists of nearest distances (None where OpenCASCADE found nothing)."""
+    worse = [(i, a, b) for i, (a, b) in enumerate(zip(ours, theirs)) if b is not None and a > b + TOLERANCE]
+    better = sum(1 for a, b in zip(ours, theirs) if b is None or a < b - TOLERANCE)
+    print(f"{name}: {len(ours)} points, splinekit farther than OpenCASCADE at {len(worse)}, nearer at {better}")
+    for i, a, b in worse[:5]:
+        failures.append(f"{name}: point {i}: splinekit {a!r}, OpenCASCADE {b!r}")
+
+
+def query_points(count, lo, hi):
+    side = max(1, int(round(count ** 0.5)))
+    pts = []
+    for a in range(side):
+        for b in range(side):
+            x = lo[0] + (hi[0] - lo[0]) * (a + 0.5) / side
+            y = lo[1] + (hi[1] - lo[1]) * (b + 0.5) / side
+            pts.append([x, y, lo[2] + (hi[2] - lo[2]) * math.sin(3.0 * a + 7.0 * b) ** 2])
+    return pts
+
+
+def project_surface(binary, count):
+    doc, surface = bicubic_surface()
+    pts = query_points(count, (-1.0, -1.0, -2.0), (8.0, 8.0, 2.0))
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(pts, f)
+    ours, elapsed = splinekit(binary, doc, "project", "--points", f.name)
+    ours = [p["nearest"]["distance"] for p in ours["projections"]]
+    projector = GeomAPI_ProjectPointOnSurf()
+    start = time.perf_counter()
+    theirs = []
+    u0, u1, v0, v1 = surface.Bounds()
+    projector.Init(surface, u0, u1, v0, v1)
+    for p in pts:
+        projector.Perform(gp_Pnt(*p))
+        theirs.append(projector.LowerDistance() if projector.NbPoints() > 0 else None)
+    ocp = time.perf_counter() - start
+    compare("project onto a bicubic 8×8 B-spline surface", ours, theirs)
+    print(f"  time for {len(pts)} points: splinekit CLI {elapsed:.3f} s (process, JSON in and out included), "
+          f"OpenCASCADE {ocp:.3f} s (Python loop, Perform on one initialised projector)")
+
+
+def project_curve(binary, count):
+    doc, curve = cubic_curve()
+    pts = query_points(count, (-1.0, -3.0, -2.0), (12.0, 3.0, 2.0))
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(pts, f)
+    ours, elapsed = splinekit(binary, doc, "project", "--points", f.name)
+    ours = [p["nearest"]["distance"] for p in ours["projections"]]
+    start = time.perf_counter()
+    theirs = []
+    projector = GeomAPI_ProjectPointOnCurve()
+    projector.Init(curve, curve.FirstParameter(), curve.LastParameter())
+    for p in pts:
+        projector.Perform(gp_Pnt(*p))
+        theirs.append(projector.LowerDistance() if projector.NbPoints() > 0 else None)
+    ocp = time.perf_counter() - start
+    # OpenCASCADE reports orthogonal projections only; the nearest point may be an end.
+    ends = [curve.Value(curve.FirstParameter()), curve.Value(curve.LastParameter())]
+    theirs = [min([d] + [e.Distance(gp_Pnt(*p)) for e in ends]) if d is not None else
+              min(e.Distance(gp_Pnt(*p)) for e in ends) for d, p in zip(theirs, pts)]
+    compare("project onto a cubic B-spline curve (12 control points)", ours, theirs)
+    print(f"  time for {len(pts)} points: splinekit CLI {elapsed:.3f} s, OpenCASCADE {ocp:.3f} s")
+
+
+def main():
+    binary = sys.argv[1]
+    count = int(sys.argv[sys.argv.index("--points") + 1]) if "--points" in sys.argv else 2500
+    project_surface(binary, count)
+    project_curve(binary, count)
+    if failures:
+        print("\n".join(["FAILED:"] + failures))
+        sys.exit(1)
+    print("all queries agree with OpenCASCADE")
+
+
+if __name__ == "__main__":
+    main()
