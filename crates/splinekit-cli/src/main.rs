@@ -34,6 +34,8 @@ enum Command {
     Fit(commands::fit::FitArgs),
     /// B-spline through every point (global interpolation).
     Interpolate(commands::fit::InterpolateArgs),
+    /// Where two curves cross, touch or overlap, or where one crosses itself.
+    Intersect(commands::intersect::IntersectArgs),
     /// Nearest point of a curve or surface to given points, or every local minimum.
     Project(commands::project::ProjectArgs),
     /// Knot insertion, degree elevation or knot removal; the curve stays the same.
@@ -93,6 +95,7 @@ fn main() {
         Command::Eval(a) => commands::eval::run(a),
         Command::Fit(a) => commands::fit::run_fit(a),
         Command::Interpolate(a) => commands::fit::run_interpolate(a),
+        Command::Intersect(a) => commands::intersect::run(a),
         Command::Project(a) => commands::project::run(a),
         Command::Refine(a) => commands::refine::run(a),
         Command::Subdivide(a) => commands::subdivide::run(a),

@@ -759,3 +759,44 @@ fn project_finds_nearest_points_and_every_minimum() {
     assert_bad(&["project", "-", "--point", "1,2"], sphere, "--point: the shape is 3-D");
     assert_bad(&["project", "-", "--point", "1,2,3", "--accuracy", "-1"], sphere, "--accuracy");
 }
+
+#[test]
+fn intersect_reports_crossings_tangents_overlaps_and_self_intersections() {
+    let dir = std::env::temp_dir().join(format!("splinekit-intersect-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let circle = r#"{"type":"nurbs","degree":2,"knots":[0,0,0,0.25,0.25,0.5,0.5,0.75,0.75,1,1,1],
+        "control_points":[[1,0],[1,1],[0,1],[-1,1],[-1,0],[-1,-1],[0,-1],[1,-1],[1,0]],
+        "weights":[1,0.7071067811865476,1,0.7071067811865476,1,0.7071067811865476,1,0.7071067811865476,1]}"#;
+    let a = write("circle.json", circle);
+    let line =
+        write("line.json", r#"{"type":"bspline","degree":1,"knots":[0,0,1,1],"control_points":[[-2,0.5],[2,0.5]]}"#);
+    let v = ok_json(&["intersect", &a, &line], "");
+    let points = v["points"].as_array().unwrap();
+    assert_eq!(points.len(), 2, "{v}");
+    for p in points {
+        assert_eq!(p["kind"], "crossing");
+        let xy = floats(&p["point"]);
+        assert!((xy[0].abs() - 0.75f64.sqrt()).abs() < 1e-12 && (xy[1] - 0.5).abs() < 1e-12, "{v}");
+    }
+    assert_eq!(v["overlaps"], json!([]));
+    let top = write("top.json", r#"{"type":"bspline","degree":1,"knots":[0,0,1,1],"control_points":[[-2,1],[2,1]]}"#);
+    let v = ok_json(&["intersect", &a, &top], "");
+    assert_eq!(v["points"].as_array().unwrap().len(), 1, "{v}");
+    assert_eq!(v["points"][0]["kind"], "tangent");
+    let v = ok_json(&["intersect", &a, &a], "");
+    assert_eq!(v["overlaps"].as_array().unwrap().len(), 1, "{v}");
+    let looped = write("loop.json", r#"{"type":"bezier","control_points":[[0,0],[3,2],[-1,2],[2,0]]}"#);
+    let v = ok_json(&["intersect", &looped], "");
+    assert_eq!(v["points"].as_array().unwrap().len(), 1, "{v}");
+    let sphere = write("sphere.json", r#"{"type":"sphere","radius":1}"#);
+    assert_bad(&["intersect", &a, &sphere], "", "B: surfaces are not supported");
+    let helix = write("helix.json", r#"{"type":"helix"}"#);
+    assert_bad(&["intersect", &a, &helix], "", "B: the curves must have the same dimension");
+    assert_bad(&["intersect", &a, &line, "--tolerance", "0"], "", "--tolerance");
+    std::fs::remove_dir_all(&dir).ok();
+}
