@@ -1,4 +1,4 @@
-//! Products of polynomials in Bernstein form, exactly in the Bernstein basis.
+//! Products of polynomials in Bernstein form, exactly in the Bernstein basis (degrees ≤ 15).
 //!
 //! For f = Σᵢ aᵢ B_{i,m} and g = Σⱼ bⱼ B_{j,n} on [0, 1],
 //! f·g = Σ_k c_k B_{k,m+n} with c_k = Σ_{i+j=k} C(m,i) C(n,j) / C(m+n,k) · aᵢ bⱼ.
@@ -6,8 +6,6 @@
 //! tensor products), whose coefficients bound the sign of a gradient on a piece
 //! (the convex-hull property: a Bernstein polynomial lies between its extreme
 //! coefficients).
-
-use crate::basis::binomial;
 
 /// Coefficients of the product of two Bernstein polynomials of degrees `a.len() − 1` and
 /// `b.len() − 1`, with `mul(aᵢ, bⱼ)` the scalar product of two coefficients; writes
@@ -17,13 +15,14 @@ pub fn product<A, B>(a: &[A], b: &[B], mul: impl Fn(&A, &B) -> f64, out: &mut [f
     for c in out.iter_mut().take(m + n + 1) {
         *c = 0.0;
     }
+    let (bm, bn, bmn) = (binomials(m), binomials(n), binomials(m + n));
     for (i, ai) in a.iter().enumerate() {
         for (j, bj) in b.iter().enumerate() {
-            out[i + j] += binomial(m, i) * binomial(n, j) * mul(ai, bj);
+            out[i + j] += bm[i] * bn[j] * mul(ai, bj);
         }
     }
     for (k, c) in out.iter_mut().take(m + n + 1).enumerate() {
-        *c /= binomial(m + n, k);
+        *c /= bmn[k];
     }
 }
 
@@ -62,14 +61,26 @@ pub fn product_2d<A, B>(
     }
 }
 
-/// The row C(n, 0 …) of binomial coefficients, n ≤ 15.
-fn binomials(n: usize) -> [f64; 16] {
-    let mut row = [0.0; 16];
-    row[0] = 1.0;
-    for k in 1..=n {
-        row[k] = row[k - 1] * (n + 1 - k) as f64 / k as f64;
+/// Pascal's triangle, C(n, k) for n, k < 16 (exact in f64).
+const BINOMIALS: [[f64; 16]; 16] = {
+    let mut t = [[0.0; 16]; 16];
+    let mut n = 0;
+    while n < 16 {
+        t[n][0] = 1.0;
+        let mut k = 1;
+        while k <= n {
+            t[n][k] = t[n - 1][k - 1] + t[n - 1][k];
+            k += 1;
+        }
+        n += 1;
     }
-    row
+    t
+};
+
+/// The row C(n, 0 …) of binomial coefficients, n ≤ 15.
+#[inline]
+fn binomials(n: usize) -> &'static [f64; 16] {
+    &BINOMIALS[n]
 }
 
 #[cfg(test)]

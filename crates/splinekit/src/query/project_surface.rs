@@ -31,6 +31,7 @@ use crate::Point;
 use crate::curve::Interval;
 use crate::error::Result;
 use crate::query::best_first::Ranked;
+use crate::query::bounds::Aabb;
 use crate::query::curve_cover::{CurveCover, ROUNDING};
 use crate::query::project_curve::{CurveProjector, check_query};
 use crate::query::slope::{DUPLICATE_DISTANCE, ZERO_SLOPE, is_rounding_sized};
@@ -84,6 +85,8 @@ struct Edge<const D: usize> {
     /// The edge is a single point (a sphere's pole, a cone's apex): every direction into
     /// the domain must be checked at an edge minimum, not just the one at its parameter.
     degenerate: bool,
+    /// A box holding the whole edge.
+    bounds: Aabb<D>,
 }
 
 /// Projects many points onto one surface, building the bounding hierarchy once.
@@ -137,7 +140,7 @@ impl<'s, const D: usize, S: Surface<D> + ?Sized> SurfaceProjector<'s, D, S> {
                         .iter()
                         .fold(cover.nodes[0].piece.bounds, |b, n| b.union(&n.piece.bounds));
                     let degenerate = is_rounding_sized(&whole, &Point::<D>::zeros());
-                    edges.push(Edge { direction, fixed, inward, cover, degenerate });
+                    edges.push(Edge { direction, fixed, inward, cover, degenerate, bounds: whole });
                 }
             }
         };
@@ -178,11 +181,6 @@ impl<'s, const D: usize, S: Surface<D> + ?Sized> SurfaceProjector<'s, D, S> {
             offer_grid(&node.patch, &mut best);
             heap.push(Ranked { bound: node.patch.bounds.distance_to(q), item: SearchPatch::Cached(node) });
         }
-        for edge in &self.edges {
-            let (iso, cover) = self.edge_projector(edge);
-            let n = CurveProjector::with_cover(&iso, cover).nearest(q, accuracy)?;
-            offer(self.on_edge(edge, n.t, n.point, q), &mut best);
-        }
         let slack = accuracy.max(ROUNDING * (q.amax() + self.cover.scale));
         let mut examined = 0;
         while let Some(Ranked { bound, item: patch }) = heap.pop() {
@@ -204,6 +202,15 @@ impl<'s, const D: usize, S: Surface<D> + ?Sized> SurfaceProjector<'s, D, S> {
                     }
                 }
             }
+        }
+        // The boundary edges last, each only when its box may hold a nearer point.
+        for edge in &self.edges {
+            if edge.bounds.distance_to(q) >= best.distance - slack {
+                continue;
+            }
+            let (iso, cover) = self.edge_projector(edge);
+            let n = CurveProjector::with_cover(&iso, cover).nearest(q, accuracy)?;
+            offer(self.on_edge(edge, n.t, n.point, q), &mut best);
         }
         Ok(best)
     }

@@ -33,23 +33,27 @@ pub enum PatchShape {
     Unresolved,
 }
 
-/// Differences of a 4 × 4 net: `net[i·4+j]` → (i-steps, j-steps) forward differences times
-/// the Bernstein degree factors, giving the net of ∂^{a+b}H/∂s^a∂t^b in row-major order.
+/// The Bézier net of ∂^{a+b}H/∂s^a∂t^b (a + b ≤ 2) of a bicubic net `net[i·4 + j]`:
+/// forward differences of order a in i and b in j, times 3!/(3 − a)! · 3!/(3 − b)!,
+/// row-major with 4 − b columns.
 fn derivative_net<const D: usize>(net: &[Point<D>; 16], a: usize, b: usize) -> Vec<Point<D>> {
-    let factor = |order: usize| -> f64 { (0..order).map(|k| (3 - k) as f64).product() };
+    const FACTOR: [f64; 3] = [1.0, 3.0, 6.0];
     let (rows, cols) = (4 - a, 4 - b);
+    let scale = FACTOR[a] * FACTOR[b];
+    let at = |i: usize, j: usize| net[i * 4 + j];
     let mut out = Vec::with_capacity(rows * cols);
     for i in 0..rows {
         for j in 0..cols {
-            let mut d = Point::<D>::zeros();
-            for x in 0..=a {
-                for y in 0..=b {
-                    let sign = if (a - x + b - y) % 2 == 0 { 1.0 } else { -1.0 };
-                    let w = crate::basis::binomial(a, x) * crate::basis::binomial(b, y);
-                    d += net[(i + x) * 4 + j + y] * (sign * w);
-                }
-            }
-            out.push(d * (factor(a) * factor(b)));
+            let d = match (a, b) {
+                (0, 0) => at(i, j),
+                (1, 0) => at(i + 1, j) - at(i, j),
+                (0, 1) => at(i, j + 1) - at(i, j),
+                (2, 0) => at(i + 2, j) - at(i + 1, j) * 2.0 + at(i, j),
+                (0, 2) => at(i, j + 2) - at(i, j + 1) * 2.0 + at(i, j),
+                (1, 1) => at(i + 1, j + 1) - at(i + 1, j) - at(i, j + 1) + at(i, j),
+                _ => unreachable!("derivative_net is called with a + b ≤ 2"),
+            };
+            out.push(d * scale);
         }
     }
     out

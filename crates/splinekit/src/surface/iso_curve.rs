@@ -41,6 +41,12 @@ impl<const D: usize, S: Surface<D> + ?Sized> Curve<D> for IsoCurve<'_, S> {
             Direction::V => self.surface.is_closed_u(),
         }
     }
+    fn breakpoints(&self) -> Vec<f64> {
+        match self.direction {
+            Direction::U => self.surface.breakpoints_v(),
+            Direction::V => self.surface.breakpoints_u(),
+        }
+    }
     fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<D>]) {
         let k = out.len() - 1;
         match self.direction {
