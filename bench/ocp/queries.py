@@ -14,9 +14,11 @@ import sys
 import tempfile
 import time
 
-from OCP.gp import gp_Pnt
-from OCP.OCP.collections import Array1_double, Array1_gp_Pnt, Array1_int, Array2_gp_Pnt
+from OCP.gp import gp_Pnt, gp_Pnt2d
+from OCP.OCP.collections import Array1_double, Array1_gp_Pnt, Array1_gp_Pnt2d, Array1_int, Array2_gp_Pnt
 from OCP.Geom import Geom_BSplineCurve, Geom_BSplineSurface
+from OCP.Geom2d import Geom2d_BSplineCurve
+from OCP.Geom2dAPI import Geom2dAPI_InterCurveCurve
 from OCP.GeomAPI import GeomAPI_ProjectPointOnCurve, GeomAPI_ProjectPointOnSurf
 
 TOLERANCE = 1e-9
@@ -107,6 +109,16 @@ def project_surface(binary, count):
         projector.Perform(gp_Pnt(*p))
         theirs.append(projector.LowerDistance() if projector.NbPoints() > 0 else None)
     ocp = time.perf_counter() - start
+    # OpenCASCADE reports orthogonal projections only; points beyond the patch are nearest to
+    # its boundary, so its four edges (as curves) complete its answer.
+    edges = [surface.UIso(u0), surface.UIso(u1), surface.VIso(v0), surface.VIso(v1)]
+    for k, p in enumerate(pts):
+        for e in edges:
+            proj = GeomAPI_ProjectPointOnCurve(gp_Pnt(*p), e)
+            ends = [e.Value(e.FirstParameter()), e.Value(e.LastParameter())]
+            cands = [proj.LowerDistance()] if proj.NbPoints() > 0 else []
+            cands += [x.Distance(gp_Pnt(*p)) for x in ends]
+            theirs[k] = min([d for d in [theirs[k]] if d is not None] + cands)
     compare("project onto a bicubic 8×8 B-spline surface", ours, theirs)
     print(f"  time for {len(pts)} points: splinekit CLI {elapsed:.3f} s (process, JSON in and out included), "
           f"OpenCASCADE {ocp:.3f} s (Python loop, Perform on one initialised projector)")
@@ -135,11 +147,50 @@ def project_curve(binary, count):
     print(f"  time for {len(pts)} points: splinekit CLI {elapsed:.3f} s, OpenCASCADE {ocp:.3f} s")
 
 
+def wavy_curves():
+    """The two 100-point cubic B-splines of benches/queries.rs."""
+    a = [[0.1 * i, math.sin(0.7 * i)] for i in range(100)]
+    b = [[0.1 * i, 0.8 * math.cos(0.45 * i)] for i in range(100)]
+    full, knots, mults = clamped_knots(100, 3)
+    out = []
+    for pts in (a, b):
+        poles = Array1_gp_Pnt2d(1, len(pts))
+        for i, p in enumerate(pts):
+            poles.SetValue(i + 1, gp_Pnt2d(*p))
+        out.append(({"type": "bspline", "degree": 3, "knots": full, "control_points": pts},
+                    Geom2d_BSplineCurve(poles, knots, mults, 3)))
+    return out
+
+
+def intersect_curves(binary):
+    (doc_a, ca), (doc_b, cb) = wavy_curves()
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(doc_b, f)
+    ours, elapsed = splinekit(binary, doc_a, "intersect", f.name)
+    ours = [p["point"] for p in ours["points"]]
+    start = time.perf_counter()
+    inter = Geom2dAPI_InterCurveCurve(ca, cb, 1e-9)
+    theirs = [[inter.Point(i).X(), inter.Point(i).Y()] for i in range(1, inter.NbPoints() + 1)]
+    ocp = time.perf_counter() - start
+    near = lambda p, q: math.dist(p, q) <= 1e-7
+    missed = [p for p in theirs if not any(near(p, q) for q in ours)]
+    extra = [p for p in ours if not any(near(p, q) for q in theirs)]
+    print(f"intersect two cubic B-splines (100 control points each): splinekit {len(ours)} points, "
+          f"OpenCASCADE {len(theirs)} points and {inter.NbSegments()} segments; "
+          f"found only by OpenCASCADE: {len(missed)}, only by splinekit: {len(extra)}")
+    print(f"  time: splinekit CLI {elapsed:.3f} s (process included), OpenCASCADE {ocp * 1e3:.2f} ms")
+    for p in missed:
+        failures.append(f"intersection at {p} found by OpenCASCADE only")
+    for p in extra:
+        failures.append(f"intersection at {p} found by splinekit only")
+
+
 def main():
     binary = sys.argv[1]
     count = int(sys.argv[sys.argv.index("--points") + 1]) if "--points" in sys.argv else 2500
     project_surface(binary, count)
     project_curve(binary, count)
+    intersect_curves(binary)
     if failures:
         print("\n".join(["FAILED:"] + failures))
         sys.exit(1)
