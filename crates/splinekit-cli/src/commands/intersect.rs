@@ -6,7 +6,7 @@ use clap::Args;
 use serde_json::{Value, json};
 use splinekit::curve::Curve;
 use splinekit::query::{CurveIntersections, IntersectionKind, intersect_curves, self_intersections};
-use splinekit_scene::{CurveDocument, CurveVisitor, ShapeDocument};
+use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, ShapeDocument};
 
 use crate::input::{parse_numbers, read_shape};
 use crate::output::{check_finite, write_json};
@@ -56,7 +56,7 @@ struct Intersect<'a> {
     tolerance: f64,
 }
 
-impl CurveVisitor for Intersect<'_> {
+impl DimensionVisitor<Curves> for Intersect<'_> {
     type Output = Result<Value>;
     fn visit<const D: usize>(self, a: &dyn Curve<D>) -> Result<Value> {
         let Some(doc) = self.b else {

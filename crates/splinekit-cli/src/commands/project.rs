@@ -1,14 +1,14 @@
 //! `splinekit project`: the nearest point of a curve or surface to given points (point
 //! inversion), or every local minimum of the distance.
 
-use anyhow::{Result, anyhow, bail};
+use anyhow::{Result, bail};
 use clap::Args;
 use serde_json::{Value, json};
 use splinekit::Point;
 use splinekit::curve::Curve;
 use splinekit::query::{CurveProjector, SurfaceProjector};
 use splinekit::surface::Surface;
-use splinekit_scene::{CurveVisitor, ShapeDocument, SurfaceVisitor};
+use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument, Surfaces};
 
 use crate::input::{parse_numbers, read_points, read_shape};
 use crate::output::{check_finite, write_json};
@@ -73,7 +73,7 @@ fn coords<const D: usize>(p: &Point<D>) -> Vec<f64> {
 
 struct ProjectCurve(Query, bool);
 
-impl CurveVisitor for ProjectCurve {
+impl DimensionVisitor<Curves> for ProjectCurve {
     type Output = Result<Value>;
     fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Result<Value> {
         let projector = CurveProjector::new(curve);
@@ -94,7 +94,7 @@ impl CurveVisitor for ProjectCurve {
 
 struct ProjectSurface(Query, bool);
 
-impl SurfaceVisitor for ProjectSurface {
+impl DimensionVisitor<Surfaces> for ProjectSurface {
     type Output = Result<Value>;
     fn visit<const D: usize>(self, surface: &dyn Surface<D>) -> Result<Value> {
         let projector = SurfaceProjector::new(surface);
@@ -128,8 +128,8 @@ pub fn run(args: &ProjectArgs) -> Result<()> {
     }
     let query = Query { points, all: args.all, accuracy };
     let value = match read_shape(&args.shape)? {
-        ShapeDocument::Curve(c) => c.build().map_err(|e| anyhow!("{e}"))?.visit(ProjectCurve(query, single))?,
-        ShapeDocument::Surface(s) => s.build().map_err(|e| anyhow!("{e}"))?.visit(ProjectSurface(query, single))?,
+        ShapeDocument::Curve(c) => c.build()?.visit(ProjectCurve(query, single))?,
+        ShapeDocument::Surface(s) => s.build()?.visit(ProjectSurface(query, single))?,
     };
     check_finite(&value, "result")?;
     write_json(&value, args.output.as_deref())
