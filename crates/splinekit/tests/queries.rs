@@ -448,3 +448,63 @@ mod intersections {
         assert!(self_intersections(&Circle::new(1.0).unwrap(), 1e-12).unwrap().points.is_empty());
     }
 }
+
+mod arc_length {
+    use super::*;
+    use splinekit::curve::model::Helix;
+    use splinekit::ops::length::arc_length;
+    use splinekit::query::{ArcLengthCurve, ArcLengthTable};
+
+    #[test]
+    fn circle_and_helix_invert_in_closed_form() {
+        let r = 2.5;
+        let circle = Circle::new(r).unwrap();
+        let table = ArcLengthTable::new(&circle, 1e-12).unwrap();
+        assert!((table.total() - TAU * r).abs() < 1e-11);
+        for s in [0.0, 0.1, 3.0, 10.0, TAU * r] {
+            assert!((table.parameter_at(s).unwrap() - s / r).abs() < 1e-11, "s = {s}");
+        }
+        // (cos t, sin t, t/2π) has speed √(1 + 1/4π²).
+        let helix = Helix::new(1.0, 1.0, 2.0).unwrap();
+        let speed = (1.0 + 1.0 / (4.0 * PI * PI)).sqrt();
+        let table = ArcLengthTable::new(&helix, 1e-12).unwrap();
+        for s in [0.5, 4.0, 12.0] {
+            assert!((table.parameter_at(s).unwrap() - s / speed).abs() < 1e-11);
+        }
+        assert!(table.parameter_at(-1.0).is_err() && table.parameter_at(100.0).is_err());
+        assert!(ArcLengthTable::new(&helix, 0.0).is_err());
+    }
+
+    #[test]
+    fn equal_length_samples_of_a_spline() {
+        let c = spline();
+        let table = ArcLengthTable::new(&c, 1e-10).unwrap();
+        let ts = table.equal_length_parameters(25).unwrap();
+        let step = table.total() / 24.0;
+        for w in ts.windows(2) {
+            assert!((arc_length(&c, w[0], w[1], 1e-12) - step).abs() < 1e-9, "{w:?}");
+        }
+    }
+
+    #[test]
+    fn arc_length_curve_has_unit_speed_and_the_curvature_vector() {
+        let c = spline();
+        let b = ArcLengthCurve::new(&c, 1e-12).unwrap();
+        let total = b.domain().end;
+        for k in 1..20 {
+            let s = total * k as f64 / 20.0;
+            let mut o = [Point::<2>::zeros(); 4];
+            b.eval(s, &mut o);
+            let t = b.table().parameter_at(s).unwrap();
+            assert!((o[0] - c.point(t)).norm() < 1e-14);
+            assert!((o[1].norm() - 1.0).abs() < 1e-12, "|b′| = {}", o[1].norm());
+            // b″ is the curvature vector: perpendicular to b′, of length κ.
+            assert!(o[1].dot(&o[2]).abs() < 1e-10);
+            assert!((o[2].norm() - c.curvature(t)).abs() < 1e-9 * (1.0 + c.curvature(t)));
+            // b‴ against central differences of b″.
+            let h = 1e-4;
+            let fd = (b.derivative(s + h, 2) - b.derivative(s - h, 2)) / (2.0 * h);
+            assert!((fd - o[3]).norm() < 1e-5 * (1.0 + o[3].norm()), "{fd:?} vs {:?}", o[3]);
+        }
+    }
+}

@@ -1,5 +1,5 @@
 //! Geometric queries: projection of points onto curves and surfaces (point inversion),
-//! intersections of curves.
+//! intersections of curves, arc length as a parameter.
 //!
 //! Every query searches a cover of the shape by cubic Hermite pieces (curves,
 //! [`curve_cover`]) or bicubic Hermite patches (surfaces, [`surface_cover`]) whose
@@ -8,6 +8,7 @@
 //! polished by Newton's method to full precision. Batch queries build the cover once
 //! ([`CurveProjector`], [`SurfaceProjector`]).
 
+pub mod arc_length;
 pub mod bernstein_product;
 pub mod best_first;
 pub mod bounds;
@@ -20,6 +21,7 @@ pub mod surface_cover;
 pub mod surface_slope;
 pub mod tangent_cone;
 
+pub use arc_length::{ArcLengthCurve, ArcLengthTable};
 pub use bounds::Aabb;
 pub use curve_intersection::{
     CurveIntersection, CurveIntersections, CurveOverlap, IntersectionKind, intersect_curves, self_intersections,
