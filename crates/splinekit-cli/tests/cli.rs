@@ -800,3 +800,14 @@ fn intersect_reports_crossings_tangents_overlaps_and_self_intersections() {
     assert_bad(&["intersect", &a, &line, "--tolerance", "0"], "", "--tolerance");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn eval_samples_at_equal_arc_length() {
+    // The quarter points of an ellipse by length are its vertices, by symmetry.
+    let v = ok_json(&["eval", "-", "--samples", "5", "--arc-length"], r#"{"type":"ellipse","a":2,"b":1}"#);
+    let ts = floats(&v["params"]);
+    for (t, k) in ts.iter().zip(0..) {
+        assert!((t - k as f64 * std::f64::consts::FRAC_PI_2).abs() < 1e-9, "{ts:?}");
+    }
+    assert_bad(&["eval", "-", "--grid", "3,3", "--arc-length"], r#"{"type":"sphere"}"#, "--samples");
+}

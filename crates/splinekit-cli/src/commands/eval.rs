@@ -28,6 +28,9 @@ pub struct EvalArgs {
     /// Curves: number of parameters spread evenly over the whole domain, ends included.
     #[arg(long, allow_hyphen_values = true)]
     pub samples: Option<String>,
+    /// Curves with --samples: spread the parameters at equal arc length instead.
+    #[arg(long, requires = "samples")]
+    pub arc_length: bool,
     /// Surfaces: NU,NV parameters spread evenly over each direction, ends included;
     /// the output lists (u, v) with u varying slowest.
     #[arg(long)]
@@ -68,6 +71,7 @@ pub(crate) fn parse_count(name: &str, text: &str, max: usize) -> Result<usize> {
 struct EvalCurve<'a> {
     at: Option<&'a [f64]>,
     samples: usize,
+    arc_length: bool,
     order: usize,
 }
 
@@ -94,17 +98,21 @@ impl DimensionVisitor<Curves> for EvalCurve<'_> {
                 if n == 0 {
                     bail!("--samples: must be at least 1");
                 }
-                (0..n)
-                    .map(|i| {
-                        if n == 1 {
-                            dom.start
-                        } else if i + 1 == n {
-                            dom.end
-                        } else {
-                            dom.lerp(i as f64 / (n - 1) as f64)
-                        }
-                    })
-                    .collect()
+                if self.arc_length && n >= 2 {
+                    super::arc_length::equal_length_params(curve, n)?
+                } else {
+                    (0..n)
+                        .map(|i| {
+                            if n == 1 {
+                                dom.start
+                            } else if i + 1 == n {
+                                dom.end
+                            } else {
+                                dom.lerp(i as f64 / (n - 1) as f64)
+                            }
+                        })
+                        .collect()
+                }
             }
         };
         let total = params.len().saturating_mul((self.order + 1) * D);
@@ -155,10 +163,10 @@ pub fn run(args: &EvalArgs) -> Result<()> {
                 None => 0,
             };
             let curve = c.build()?;
-            curve.visit(EvalCurve { at: at.as_deref(), samples, order })?
+            curve.visit(EvalCurve { at: at.as_deref(), samples, arc_length: args.arc_length, order })?
         }
         ShapeDocument::Surface(s) => {
-            if args.samples.is_some() {
+            if args.samples.is_some() || args.arc_length {
                 bail!("--samples: surfaces take --at U:V,... or --grid NU,NV");
             }
             if order > MAX_SURFACE_DERIVATIVES {

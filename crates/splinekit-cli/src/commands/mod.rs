@@ -1,5 +1,6 @@
 //! One module per subcommand.
 
+pub mod arc_length;
 pub mod eval;
 pub mod eval_surface;
 pub mod fit;
