@@ -165,6 +165,8 @@ pub trait Surface<const D: usize>: Send + Sync {
 
     /// The point of the surface nearest to `query`, its distance within `accuracy`
     /// (absolute, ≥ 0) of the true minimum; an error for a non-finite query or accuracy.
+    /// Trimming is not taken into account yet: a trimmed surface is projected as its
+    /// untrimmed base surface.
     /// To project many points, build a [`SurfaceProjector`](crate::query::SurfaceProjector)
     /// once; for every local minimum see
     /// [`SurfaceProjector::local_minima`](crate::query::SurfaceProjector::local_minima).
