@@ -1,0 +1,12 @@
+//! # splinekit-step
+//!
+//! STEP (ISO 10303-21, AP214/AP242 geometry) for splinekit: a streaming Part 21 reader and
+//! writer, and the mapping between STEP geometry entities and splinekit's curves and
+//! surfaces.
+
+#![warn(missing_docs)]
+
+pub mod error;
+pub mod part21;
+
+pub use error::{Result, StepError};
