@@ -52,6 +52,8 @@ enum Command {
     Animate(commands::render::AnimateArgs),
     /// Show a scene in an interactive window (drag to orbit, scroll to zoom, space to pause).
     View(commands::view::ViewArgs),
+    /// Exact geometry between JSON documents and STEP (ISO 10303-21) files.
+    Convert(commands::convert::ConvertArgs),
     /// Render the showcase figures into a folder with index.html.
     Gallery(gallery::GalleryArgs),
 }
@@ -105,6 +107,7 @@ fn main() {
         Command::Animate(a) => commands::render::run_animate(a),
         Command::View(a) => commands::view::run(a),
         Command::Gallery(a) => gallery::run(a),
+        Command::Convert(a) => commands::convert::run(a),
     });
     match result {
         Ok(Ok(())) => {}

@@ -10,3 +10,9 @@ pub mod error;
 pub mod part21;
 
 pub use error::{Result, StepError};
+pub mod approximate;
+pub mod documents;
+pub mod export;
+pub mod geometry;
+pub mod import;
+pub mod kernel;

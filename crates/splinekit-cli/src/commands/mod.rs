@@ -1,6 +1,7 @@
 //! One module per subcommand.
 
 pub mod arc_length;
+pub mod convert;
 pub mod eval;
 pub mod eval_surface;
 pub mod fit;

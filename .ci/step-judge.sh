@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# OpenCASCADE judges splinekit's STEP export (tests/step/ocp_judge.py): the exact forms
+# and a set of example documents are converted with their reports, then read by OCP's
+# STEPControl_Reader and evaluated at the reported parameters.
+# usage: .ci/step-judge.sh PATH/TO/splinekit
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin="$1"
+py="$(bash .ci/install-ocp.sh | tail -n 1)"
+out=target/step-judge
+rm -rf "$out" && mkdir -p "$out"
+args=()
+# The examples quick to approximate in a debug build (the animated blending surfaces
+# with moved patches take minutes; they pass the same check in release builds).
+for f in tests/step/shapes/exact_forms.json examples/scenes/{bezier_surface,bspline_polygon,nurbs_torus,surface_of_revolution,torus_gaussian_curvature,coons_patch,rose_and_blending_copy,heart_transformed,seashell,mobius,klein_bottle,sweep_trefoil}.json; do
+    n=$(basename "$f" .json)
+    "$bin" convert "$f" -o "$out/$n.step" --report "$out/$n.report.json" 2>"$out/$n.log"
+    args+=("$out/$n.step" "$out/$n.report.json")
+done
+"$py" tests/step/ocp_judge.py "${args[@]}" 2>/dev/null | grep -E '^(ok|FAIL|[0-9]+ passed)'

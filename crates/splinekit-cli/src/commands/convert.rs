@@ -1,0 +1,177 @@
+//! `splinekit convert IN -o OUT`: exact geometry between JSON documents and STEP
+//! (ISO 10303-21, AP214), formats by extension: `.json` ↔ `.step`/`.stp`, and STEP →
+//! STEP (normalised: re-written from the geometry read).
+
+use anyhow::{Result, anyhow, bail};
+use clap::Args;
+use serde_json::{Value, json};
+use splinekit_scene::{SceneOrShape, ShapeDocument};
+use splinekit_step::documents::{Exported, Form, export_document, import_items, samples};
+use splinekit_step::export::write_step;
+use splinekit_step::part21::StepFile;
+use splinekit_step::part21::writer::HeaderInfo;
+
+#[derive(Args, Debug)]
+pub struct ConvertArgs {
+    /// Input: a shape or scene document (.json, or - for JSON on standard input) or a STEP
+    /// file (.step, .stp).
+    pub input: String,
+    /// Output: .step/.stp (STEP AP214 in millimetres) or .json (a shape document, or a scene
+    /// when the STEP file holds several objects); - writes JSON to standard output.
+    #[arg(short, long)]
+    pub output: String,
+    /// Largest deviation of B-spline approximations (objects without an exact STEP form),
+    /// relative to each object's size (bounding-box diagonal).
+    #[arg(long, default_value_t = 1e-6)]
+    pub tolerance: f64,
+    /// Also write a JSON report: per object its form, measured deviation, parameter map and
+    /// 128 samples (parameters and splinekit's points), for checking the file elsewhere.
+    #[arg(long)]
+    pub report: Option<String>,
+}
+
+#[derive(PartialEq)]
+enum Format {
+    Json,
+    Step,
+}
+
+fn format_of(path: &str, flag: &str) -> Result<Format> {
+    let lower = path.to_ascii_lowercase();
+    if path == "-" || lower.ends_with(".json") {
+        Ok(Format::Json)
+    } else if lower.ends_with(".step") || lower.ends_with(".stp") {
+        Ok(Format::Step)
+    } else {
+        bail!("{flag}: unknown format of '{path}' (expected .json, .step or .stp)")
+    }
+}
+
+/// The current UTC time as ISO 8601 (for the STEP header).
+fn now_iso8601() -> String {
+    let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs()) as i64;
+    let (days, rem) = (secs.div_euclid(86_400), secs.rem_euclid(86_400));
+    // Civil date from days since 1970-01-01 (Howard Hinnant's algorithm).
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!("{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}", rem / 3600, rem % 3600 / 60, rem % 60)
+}
+
+fn header(name: &str) -> HeaderInfo {
+    HeaderInfo { name: name.to_string(), time_stamp: now_iso8601(), ..HeaderInfo::default() }
+}
+
+fn stem(path: &str) -> String {
+    std::path::Path::new(path).file_stem().and_then(|s| s.to_str()).unwrap_or("splinekit").to_string()
+}
+
+pub fn run(args: &ConvertArgs) -> Result<()> {
+    if !(args.tolerance.is_finite() && args.tolerance > 0.0) {
+        bail!("--tolerance: must be a positive number, got {}", args.tolerance);
+    }
+    let (input, output) = (format_of(&args.input, "IN")?, format_of(&args.output, "--output")?);
+    if input == Format::Json && output == Format::Json {
+        bail!("--output: JSON to JSON is no conversion; give a .step or .stp output");
+    }
+    if input == Format::Json { json_to_step(args) } else { step_to_any(args, output) }
+}
+
+fn describe(e: &Exported) -> String {
+    match e.form {
+        Form::Exact => "exact".to_string(),
+        Form::ExactPolynomial { degree } => format!(
+            "exact B-spline: piecewise polynomial of degree {} (Bézier locals and a polynomial B-function), measured deviation {:.1e}",
+            if degree.1 == 0 { degree.0.to_string() } else { format!("({}, {})", degree.0, degree.1) },
+            e.max_deviation
+        ),
+        Form::Approximated => {
+            format!("B-spline approximation, max deviation {:.2e} (tolerance {:.2e})", e.max_deviation, e.tolerance)
+        }
+    }
+}
+
+fn json_to_step(args: &ConvertArgs) -> Result<()> {
+    let text = crate::input::read_text(&args.input, "IN")?;
+    let doc = SceneOrShape::from_json(&text).map_err(|e| anyhow!("{e}"))?;
+    let name = stem(&args.input);
+    let (step, exported) = export_document(&doc, &name, args.tolerance, &header(&name)).map_err(|e| anyhow!("{e}"))?;
+    std::fs::write(&args.output, step).map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
+    for e in &exported {
+        eprintln!("{}: {}", e.item.name, describe(e));
+    }
+    if let Some(path) = &args.report {
+        let shapes: Vec<&ShapeDocument> = match &doc {
+            SceneOrShape::Shape(s) => vec![s],
+            SceneOrShape::Scene(s) => s.objects.iter().map(|o| &o.shape).collect(),
+        };
+        let mut items = Vec::new();
+        for (shape, e) in shapes.iter().zip(&exported) {
+            let count = if matches!(shape, ShapeDocument::Curve(_)) { 128 } else { 12 };
+            let s = samples(shape, e, count).map_err(|e| anyhow!("{e}"))?;
+            items.push(json!({
+                "name": e.item.name,
+                "kind": if matches!(shape, ShapeDocument::Curve(_)) { "curve" } else { "surface" },
+                "form": match e.form { Form::Exact => "exact", Form::ExactPolynomial { .. } => "exact_polynomial", Form::Approximated => "approximated" },
+                "max_deviation": e.max_deviation,
+                "tolerance": e.tolerance,
+                "params": s.iter().map(|s| [s.param.0, s.param.1]).collect::<Vec<_>>(),
+                "step_params": s.iter().map(|s| [s.step_param.0, s.step_param.1]).collect::<Vec<_>>(),
+                "points": s.iter().map(|s| s.point).collect::<Vec<_>>(),
+            }));
+        }
+        let report = json!({ "items": items });
+        std::fs::write(path, serde_json::to_string(&report)?)
+            .map_err(|e| anyhow!("--report: cannot write '{path}': {e}"))?;
+    }
+    Ok(())
+}
+
+fn step_to_any(args: &ConvertArgs, output: Format) -> Result<()> {
+    let file = if args.input == "-" {
+        StepFile::from_reader(std::io::stdin().lock())
+    } else {
+        StepFile::open(std::path::Path::new(&args.input))
+    }
+    .map_err(|e| anyhow!("IN: {e}"))?;
+    let imported = import_items(&file).map_err(|e| anyhow!("IN: {e}"))?;
+    for (name, count) in &imported.not_understood {
+        eprintln!("warning: {count} × {name} not converted (no splinekit equivalent yet)");
+    }
+    if imported.items.is_empty() {
+        bail!("IN: the file holds no curve or surface that splinekit reads");
+    }
+    match output {
+        Format::Step => {
+            let items: Vec<_> = imported.items.iter().map(|(item, _)| item.clone()).collect();
+            let name = stem(&args.input);
+            std::fs::write(&args.output, write_step(&items, &name, &header(&name)))
+                .map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
+        }
+        Format::Json => {
+            let value: Value = if let [(_, doc)] = imported.items.as_slice() {
+                shape_value(doc)
+            } else {
+                json!({
+                    "type": "scene",
+                    "objects": imported.items.iter().map(|(_, doc)| json!({"shape": shape_value(doc)})).collect::<Vec<_>>(),
+                })
+            };
+            crate::output::write_json(&value, (args.output != "-").then_some(args.output.as_str()))?;
+        }
+    }
+    Ok(())
+}
+
+fn shape_value(doc: &ShapeDocument) -> Value {
+    match doc {
+        ShapeDocument::Curve(c) => c.to_value(),
+        ShapeDocument::Surface(s) => s.to_value(),
+    }
+}

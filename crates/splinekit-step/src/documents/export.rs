@@ -1,0 +1,557 @@
+//! Shape documents → STEP geometry: the exact entity where STEP has one, else a measured
+//! B-spline form (see [`crate::approximate`]).
+//!
+//! Parametrisations. Splines, Bézier curves and surfaces, circles, ellipses, spheres,
+//! tori and revolutions keep their parameters (the STEP object at t is the document's at
+//! t). Others take an affine map per direction, listed in [`ParamMap`]: a line is a unit
+//! `LINE` trimmed by length (t' = |to − from| t), an extrusion has a unit direction
+//! (v' = |direction| v); a plane with orthogonal axes U, V is `PLANE` with u' = |U| u,
+//! v' = |V| v (a plane with skew axes is its exact bilinear B-spline instead);
+//! a cylinder of height h has v' = h v. A cone is the exact `SURFACE_OF_REVOLUTION` of its
+//! straight generatrix (parameters kept). 2-D documents lie in the plane z = 0.
+
+use splinekit::Point;
+use splinekit::basis::Side;
+use splinekit::curve::{Curve as KernelCurve, Interval};
+use splinekit::surface::Surface as KernelSurface;
+use splinekit_scene::bfunctions::BFunctionDoc;
+use splinekit_scene::blending::{BlendingSource, LocalDoc, LocalPatchDoc};
+use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
+use std::f64::consts::{FRAC_PI_2, TAU};
+
+use crate::approximate::{
+    Fitted, hermite_curve, hermite_surface, polynomial_curve, polynomial_surface, uniform_breaks,
+};
+use crate::error::{Result, StepError};
+use crate::geometry::{Axes, Curve, Geometry, Item, P3, SplineCurve, SplineSurface, Surface, norm};
+
+/// u' = a·u + b per direction: the STEP parameter of the document's parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParamMap {
+    /// (a, b) of u (curves: of t).
+    pub u: (f64, f64),
+    /// (a, b) of v.
+    pub v: (f64, f64),
+}
+
+impl ParamMap {
+    /// The identity.
+    pub const IDENTITY: ParamMap = ParamMap { u: (1.0, 0.0), v: (1.0, 0.0) };
+}
+
+/// How an object was written.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Form {
+    /// Its own STEP entity or an identical B-spline.
+    Exact,
+    /// A B-spline equal to it up to rounding, because the maths says it is one (a blending
+    /// spline with Bézier locals and a polynomial B-function).
+    ExactPolynomial {
+        /// The degree of the pieces (per direction for surfaces).
+        degree: (usize, usize),
+    },
+    /// A B-spline within the tolerance.
+    Approximated,
+}
+
+/// One exported object with what the export measured.
+#[derive(Debug, Clone)]
+pub struct Exported {
+    /// The STEP item.
+    pub item: Item,
+    /// How it was written.
+    pub form: Form,
+    /// max |STEP(map(t)) − document(t)| as measured (0 for exact forms, where no
+    /// arithmetic but the file's decimal round trip lies between them).
+    pub max_deviation: f64,
+    /// The absolute tolerance used for approximations.
+    pub tolerance: f64,
+    /// Parameter map document → STEP.
+    pub map: ParamMap,
+    /// The document's domain (u, v; curves: v is unused).
+    pub domain: (Interval, Interval),
+}
+
+fn plain(field: &str, e: impl std::fmt::Display) -> StepError {
+    StepError::plain(format!("{field}: {e}"))
+}
+
+fn p3(p: &[f64]) -> Result<Vec<f64>> {
+    match p.len() {
+        3 => Ok(p.to_vec()),
+        2 => Ok(vec![p[0], p[1], 0.0]),
+        d => Err(StepError::plain(format!("control_points: STEP geometry is 2-D or 3-D, got {d} coordinates"))),
+    }
+}
+
+/// Knots of the unrolled periodic spline: the n + p + 1 given ones and p more,
+/// t_{i} = t_{i−n} + T (as the kernel evaluates them).
+fn unrolled_knots(knots: &[f64], n: usize, p: usize) -> Vec<f64> {
+    let period = knots[n + p] - knots[p];
+    let mut ext = knots.to_vec();
+    for i in n + p + 1..n + 2 * p + 1 {
+        let v = ext[i - n] + period;
+        ext.push(v);
+    }
+    ext
+}
+
+fn spline_curve(
+    degree: usize,
+    knots: &[f64],
+    points: &[Vec<f64>],
+    weights: Option<&[f64]>,
+    periodic: bool,
+) -> Result<SplineCurve> {
+    let n = points.len();
+    let pts: Vec<Vec<f64>> = points.iter().map(|p| p3(p)).collect::<Result<_>>()?;
+    if !periodic {
+        return Ok(SplineCurve {
+            degree,
+            knots: knots.to_vec(),
+            points: pts,
+            weights: weights.map(<[f64]>::to_vec),
+            closed: false,
+        });
+    }
+    let count = n + degree;
+    Ok(SplineCurve {
+        degree,
+        knots: unrolled_knots(knots, n, degree),
+        points: (0..count).map(|i| pts[i % n].clone()).collect(),
+        weights: weights.map(|w| (0..count).map(|i| w[i % n]).collect()),
+        closed: true,
+    })
+}
+
+/// The polynomial degree of a B-function, if it is a polynomial.
+fn bfunction_degree(b: &BFunctionDoc) -> Option<usize> {
+    match b {
+        BFunctionDoc::Linear(_) => Some(1),
+        BFunctionDoc::Polynomial(p) => Some(2 * p.smoothness + 1),
+        BFunctionDoc::Beta(b) => Some(b.a + b.b + 1),
+        _ => None,
+    }
+}
+
+/// The degree of a local curve document that is a polynomial in its parameter.
+fn polynomial_local_degree(c: &CurveDocument) -> Option<usize> {
+    match c {
+        CurveDocument::Bezier(b) => Some(b.control_points.len().saturating_sub(1)),
+        CurveDocument::Line(_) => Some(1),
+        _ => None,
+    }
+}
+
+/// The piece degree of a blending spline that is a piecewise polynomial: Bézier (or line)
+/// locals of degree d and a polynomial B-function of degree β give degree d + β.
+fn blending_polynomial_degree(d: &splinekit_scene::curves::BlendingSplineDoc) -> Option<usize> {
+    let beta = bfunction_degree(&d.bfunction)?;
+    let local = match &d.source {
+        BlendingSource::Model { local: LocalDoc::Bezier { degree }, .. } => *degree,
+        BlendingSource::Explicit { local_curves, .. } => {
+            local_curves.iter().map(polynomial_local_degree).collect::<Option<Vec<_>>>()?.into_iter().max()?
+        }
+        _ => return None,
+    };
+    Some(local + beta)
+}
+
+/// A 2-D curve seen in the plane z = 0.
+struct Lifted(Box<dyn KernelCurve<2>>);
+
+impl KernelCurve<3> for Lifted {
+    fn domain(&self) -> Interval {
+        self.0.domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.0.is_closed()
+    }
+    fn eval_side(&self, t: f64, side: Side, out: &mut [Point<3>]) {
+        let mut tmp = vec![Point::<2>::zeros(); out.len()];
+        self.0.eval_side(t, side, &mut tmp);
+        for (o, p) in out.iter_mut().zip(&tmp) {
+            *o = Point::<3>::new(p[0], p[1], 0.0);
+        }
+    }
+    fn breakpoints(&self) -> Vec<f64> {
+        self.0.breakpoints()
+    }
+}
+
+fn kernel_curve(doc: &CurveDocument) -> Result<Box<dyn KernelCurve<3>>> {
+    match doc.dimension().map_err(|e| plain("document", e))? {
+        3 => doc.build_in::<3>().map_err(|e| plain("document", e)),
+        2 => Ok(Box::new(Lifted(doc.build_in::<2>().map_err(|e| plain("document", e))?))),
+        d => Err(StepError::plain(format!("document: STEP geometry is 2-D or 3-D, got a {d}-D curve"))),
+    }
+}
+
+/// Bounding-box diagonal of samples: the size a relative tolerance refers to.
+fn curve_size(c: &dyn KernelCurve<3>) -> f64 {
+    let d = c.domain();
+    box_diagonal((0..=256).map(|i| c.point(d.lerp(i as f64 / 256.0))))
+}
+
+fn box_diagonal(points: impl Iterator<Item = Point<3>>) -> f64 {
+    let (mut lo, mut hi) = (Point::<3>::repeat(f64::INFINITY), Point::<3>::repeat(f64::NEG_INFINITY));
+    for p in points {
+        lo = lo.inf(&p);
+        hi = hi.sup(&p);
+    }
+    (hi - lo).norm().max(f64::MIN_POSITIVE)
+}
+
+/// Exports a curve document; `relative_tolerance` scales with the curve's size.
+pub fn export_curve(doc: &CurveDocument, name: &str, relative_tolerance: f64) -> Result<Exported> {
+    let kernel = kernel_curve(doc)?;
+    let tolerance = relative_tolerance * curve_size(kernel.as_ref());
+    let domain = (kernel.domain(), Interval::new(0.0, 0.0));
+    let exact = |curve: Curve| Exported {
+        item: Item { name: name.to_string(), geometry: Geometry::Curve(curve) },
+        form: Form::Exact,
+        max_deviation: 0.0,
+        tolerance,
+        map: ParamMap::IDENTITY,
+        domain,
+    };
+    let clamped_bezier = |n: usize| [vec![0.0; n], vec![1.0; n]].concat();
+    Ok(match doc {
+        CurveDocument::Bspline(d) => {
+            exact(Curve::Spline(spline_curve(d.degree, &d.knots, &d.control_points, None, d.periodic)?))
+        }
+        CurveDocument::Nurbs(d) => {
+            exact(Curve::Spline(spline_curve(d.degree, &d.knots, &d.control_points, Some(&d.weights), d.periodic)?))
+        }
+        CurveDocument::Bezier(d) => {
+            let n = d.control_points.len();
+            exact(Curve::Spline(spline_curve(n - 1, &clamped_bezier(n), &d.control_points, None, false)?))
+        }
+        CurveDocument::RationalBezier(d) => {
+            let n = d.control_points.len();
+            exact(Curve::Spline(spline_curve(n - 1, &clamped_bezier(n), &d.control_points, Some(&d.weights), false)?))
+        }
+        CurveDocument::Line(d) => {
+            let (from, to) = (p3(&d.from)?, p3(&d.to)?);
+            // A unit direction, trimmed by length: readers (OpenCASCADE) parametrise lines
+            // by arc length whatever the VECTOR's magnitude, so t' = |to − from| t.
+            let d: Vec<f64> = (0..3).map(|k| to[k] - from[k]).collect();
+            let len = norm([d[0], d[1], d[2]]);
+            let direction = d.iter().map(|c| c / len).collect();
+            let mut e = exact(Curve::Trimmed {
+                basis: Box::new(Curve::Line { origin: from, direction }),
+                start: 0.0,
+                end: len,
+            });
+            e.map = ParamMap { u: (len, 0.0), v: (1.0, 0.0) };
+            e
+        }
+        CurveDocument::Circle(d) => exact(Curve::Circle { axes: Axes::WORLD, radius: d.radius }),
+        CurveDocument::Ellipse(d) => exact(Curve::Ellipse { axes: Axes::WORLD, a: d.a, b: d.b }),
+        other => {
+            let (fitted, form) = match other {
+                CurveDocument::BlendingSpline(b) if blending_polynomial_degree(b).is_some() => {
+                    let m = blending_polynomial_degree(b).expect("checked");
+                    (
+                        polynomial_curve(kernel.as_ref(), &kernel.breakpoints(), m)?,
+                        Form::ExactPolynomial { degree: (m, 0) },
+                    )
+                }
+                _ => (hermite_curve(kernel.as_ref(), tolerance)?, Form::Approximated),
+            };
+            Exported {
+                item: Item { name: name.to_string(), geometry: Geometry::Curve(Curve::Spline(fitted.spline)) },
+                form,
+                max_deviation: fitted.max_deviation,
+                tolerance,
+                map: ParamMap::IDENTITY,
+                domain,
+            }
+        }
+    })
+}
+
+fn net3(net: &[Vec<Vec<f64>>]) -> Result<Vec<Vec<Vec<f64>>>> {
+    net.iter().map(|row| row.iter().map(|p| p3(p)).collect()).collect()
+}
+
+/// Rows (or within each row, columns) of a periodic direction unrolled: index i % n.
+fn unroll<T: Clone>(items: &[T], p: usize) -> Vec<T> {
+    (0..items.len() + p).map(|i| items[i % items.len()].clone()).collect()
+}
+
+#[allow(clippy::too_many_arguments)]
+fn spline_surface(
+    (p, q): (usize, usize),
+    knots_u: &[f64],
+    knots_v: &[f64],
+    net: &[Vec<Vec<f64>>],
+    weights: Option<&[Vec<f64>]>,
+    (pu, pv): (bool, bool),
+) -> Result<SplineSurface> {
+    let mut pts = net3(net)?;
+    let mut w = weights.map(<[Vec<f64>]>::to_vec);
+    let (nu, nv) = (pts.len(), pts.first().map_or(0, Vec::len));
+    let (mut ku, mut kv) = (knots_u.to_vec(), knots_v.to_vec());
+    if pu {
+        pts = unroll(&pts, p);
+        w = w.map(|w| unroll(&w, p));
+        ku = unrolled_knots(knots_u, nu, p);
+    }
+    if pv {
+        pts = pts.iter().map(|row| unroll(row, q)).collect();
+        w = w.map(|w| w.iter().map(|row| unroll(row, q)).collect());
+        kv = unrolled_knots(knots_v, nv, q);
+    }
+    Ok(SplineSurface { degrees: (p, q), knots_u: ku, knots_v: kv, points: pts, weights: w, closed: (pu, pv) })
+}
+
+fn kernel_surface(doc: &SurfaceDocument) -> Result<Box<dyn KernelSurface<3>>> {
+    match doc.dimension().map_err(|e| plain("document", e))? {
+        3 => doc.build_in::<3>().map_err(|e| plain("document", e)),
+        d => Err(StepError::plain(format!("document: STEP surfaces are 3-D, got a {d}-D surface"))),
+    }
+}
+
+fn surface_size(s: &dyn KernelSurface<3>) -> f64 {
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    box_diagonal(
+        (0..=32)
+            .flat_map(|i| (0..=32).map(move |j| (i, j)))
+            .map(|(i, j)| s.point(du.lerp(i as f64 / 32.0), dv.lerp(j as f64 / 32.0))),
+    )
+}
+
+fn trimmed(basis: Surface, u: (f64, f64), v: (f64, f64)) -> Surface {
+    Surface::Trimmed { basis: Box::new(basis), u, v }
+}
+
+/// A profile curve of a swept surface, exact or approximated (its deviation bounds the
+/// surface's: revolutions and extrusions move it rigidly).
+fn profile(doc: &CurveDocument, relative_tolerance: f64) -> Result<(Curve, Form, f64)> {
+    let e = export_curve(doc, "", relative_tolerance)?;
+    let Geometry::Curve(c) = e.item.geometry else { unreachable!("a curve exports as a curve") };
+    Ok((c, e.form, e.max_deviation))
+}
+
+/// Exports a surface document; `relative_tolerance` scales with the surface's size.
+pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64) -> Result<Exported> {
+    let kernel = kernel_surface(doc)?;
+    let tolerance = relative_tolerance * surface_size(kernel.as_ref());
+    let domain = (kernel.domain_u(), kernel.domain_v());
+    let make = |surface: Surface, form: Form, max_deviation: f64, map: ParamMap| Exported {
+        item: Item { name: name.to_string(), geometry: Geometry::Surface(surface) },
+        form,
+        max_deviation,
+        tolerance,
+        map,
+        domain,
+    };
+    let exact = |surface: Surface, map: ParamMap| make(surface, Form::Exact, 0.0, map);
+    let id = ParamMap::IDENTITY;
+    Ok(match doc {
+        SurfaceDocument::BsplineSurface(d) => exact(
+            Surface::Spline(spline_surface(
+                (d.degree_u, d.degree_v),
+                &d.knots_u,
+                &d.knots_v,
+                &d.control_points,
+                None,
+                (d.periodic_u, d.periodic_v),
+            )?),
+            id,
+        ),
+        SurfaceDocument::NurbsSurface(d) => exact(
+            Surface::Spline(spline_surface(
+                (d.degree_u, d.degree_v),
+                &d.knots_u,
+                &d.knots_v,
+                &d.control_points,
+                Some(&d.weights),
+                (d.periodic_u, d.periodic_v),
+            )?),
+            id,
+        ),
+        SurfaceDocument::BezierSurface(d) => {
+            let (nu, nv) = (d.control_points.len(), d.control_points.first().map_or(0, Vec::len));
+            let k = |n: usize| [vec![0.0; n], vec![1.0; n]].concat();
+            exact(
+                Surface::Spline(spline_surface(
+                    (nu - 1, nv - 1),
+                    &k(nu),
+                    &k(nv),
+                    &d.control_points,
+                    None,
+                    (false, false),
+                )?),
+                id,
+            )
+        }
+        SurfaceDocument::Plane(d) => {
+            let (o, u, v) = (p3(&d.origin)?, p3(&d.u_axis)?, p3(&d.v_axis)?);
+            let (o, u, v): (P3, P3, P3) = ([o[0], o[1], o[2]], [u[0], u[1], u[2]], [v[0], v[1], v[2]]);
+            let (lu, lv) = (norm(u), norm(v));
+            let dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+            if dot.abs() <= 1e-14 * lu * lv {
+                let x = u.map(|c| c / lu);
+                let z = crate::geometry::cross(u, v).map(|c| c / (lu * lv));
+                let axes = Axes { origin: o, z, x };
+                exact(trimmed(Surface::Plane(axes), (0.0, lu), (0.0, lv)), ParamMap { u: (lu, 0.0), v: (lv, 0.0) })
+            } else {
+                let corner = |a: f64, b: f64| (0..3).map(|k| o[k] + a * u[k] + b * v[k]).collect::<Vec<f64>>();
+                let net = vec![vec![corner(0.0, 0.0), corner(0.0, 1.0)], vec![corner(1.0, 0.0), corner(1.0, 1.0)]];
+                let k = vec![0.0, 0.0, 1.0, 1.0];
+                exact(Surface::Spline(spline_surface((1, 1), &k, &k, &net, None, (false, false))?), id)
+            }
+        }
+        SurfaceDocument::Cylinder(d) => exact(
+            trimmed(Surface::Cylinder { axes: Axes::WORLD, radius: d.radius }, (0.0, TAU), (0.0, d.height)),
+            ParamMap { u: (1.0, 0.0), v: (d.height, 0.0) },
+        ),
+        SurfaceDocument::Cone(d) => {
+            // The exact revolution of its degree-1 B-spline generatrix, parameters kept:
+            // OpenCASCADE reads CONICAL_SURFACE's v along the generatrix (slant length)
+            // where ISO 10303-42 measures height, so the entity would not round-trip.
+            let generatrix = SplineCurve {
+                degree: 1,
+                knots: vec![0.0, 0.0, 1.0, 1.0],
+                points: vec![vec![d.radius, 0.0, 0.0], vec![0.0, 0.0, d.height]],
+                weights: None,
+                closed: false,
+            };
+            let rev = Surface::Revolution {
+                profile: Curve::Spline(generatrix),
+                axis_origin: [0.0; 3],
+                axis: [0.0, 0.0, 1.0],
+            };
+            exact(trimmed(rev, (0.0, TAU), (0.0, 1.0)), id)
+        }
+        SurfaceDocument::Sphere(d) => exact(
+            trimmed(Surface::Sphere { axes: Axes::WORLD, radius: d.radius }, (0.0, TAU), (-FRAC_PI_2, FRAC_PI_2)),
+            id,
+        ),
+        SurfaceDocument::Torus(d) => exact(
+            trimmed(
+                Surface::Torus { axes: Axes::WORLD, major_radius: d.major_radius, minor_radius: d.minor_radius },
+                (0.0, TAU),
+                (0.0, TAU),
+            ),
+            id,
+        ),
+        SurfaceDocument::Revolution(d) => {
+            let (c, form, dev) = profile(&d.curve, relative_tolerance)?;
+            let axis = p3(&d.axis)?;
+            let len = norm([axis[0], axis[1], axis[2]]);
+            let o = p3(&d.axis_point)?;
+            let rev = Surface::Revolution {
+                profile: c,
+                axis_origin: [o[0], o[1], o[2]],
+                axis: [axis[0] / len, axis[1] / len, axis[2] / len],
+            };
+            make(trimmed(rev, (0.0, d.angle), (domain.1.start, domain.1.end)), form, dev, id)
+        }
+        SurfaceDocument::Extrusion(d) => {
+            let (c, form, dev) = profile(&d.curve, relative_tolerance)?;
+            // Unit direction, v' = |direction| v (readers parametrise v by length).
+            let dir = p3(&d.direction)?;
+            let len = norm([dir[0], dir[1], dir[2]]);
+            let ext = Surface::Extrusion { profile: c, direction: [dir[0] / len, dir[1] / len, dir[2] / len] };
+            make(
+                trimmed(ext, (domain.0.start, domain.0.end), (0.0, len)),
+                form,
+                dev,
+                ParamMap { u: (1.0, 0.0), v: (len, 0.0) },
+            )
+        }
+        SurfaceDocument::Trimmed(_) => {
+            return Err(StepError::plain(
+                "type: trimmed surfaces are not exported yet (bounded faces with trimming loops are still to come)",
+            ));
+        }
+        other => {
+            let blending_knots = match other {
+                SurfaceDocument::BlendingSplineSurface(b) => {
+                    let built = b.build_in::<3>().map_err(|e| plain("document", e))?;
+                    let (ku, kv) = built.knots();
+                    Some((dedup(ku.values()), dedup(kv.values())))
+                }
+                _ => None,
+            };
+            let polynomial = match other {
+                SurfaceDocument::BlendingSplineSurface(b) => match (&b.local, bfunction_degree(&b.bfunction)) {
+                    (LocalPatchDoc::Bezier { degree }, Some(beta)) => Some((degree[0] + beta, degree[1] + beta)),
+                    _ => None,
+                },
+                _ => None,
+            };
+            let (fitted, form): (Fitted<SplineSurface>, Form) = match polynomial {
+                Some(m) => {
+                    let (bu, bv) = blending_knots.expect("a blending surface");
+                    (polynomial_surface(kernel.as_ref(), &bu, &bv, m)?, Form::ExactPolynomial { degree: m })
+                }
+                None => {
+                    let (bu, bv) =
+                        blending_knots.unwrap_or_else(|| (uniform_breaks(domain.0, 4), uniform_breaks(domain.1, 4)));
+                    (hermite_surface(kernel.as_ref(), &bu, &bv, tolerance)?, Form::Approximated)
+                }
+            };
+            make(Surface::Spline(fitted.spline), form, fitted.max_deviation, id)
+        }
+    })
+}
+
+fn dedup(v: &[f64]) -> Vec<f64> {
+    let mut v = v.to_vec();
+    v.dedup();
+    v
+}
+
+/// Exports any shape document.
+pub fn export_shape(doc: &ShapeDocument, name: &str, relative_tolerance: f64) -> Result<Exported> {
+    match doc {
+        ShapeDocument::Curve(c) => export_curve(c, name, relative_tolerance),
+        ShapeDocument::Surface(s) => export_surface(s, name, relative_tolerance),
+    }
+}
+
+/// A parameter of the document, the matching STEP parameter, and the document's point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sample {
+    /// (u, v) of the document (curves: (t, 0)).
+    pub param: (f64, f64),
+    /// The STEP parameter map(param).
+    pub step_param: (f64, f64),
+    /// The document's point there, evaluated by splinekit.
+    pub point: P3,
+}
+
+/// `count` samples of a curve (uniform in t, ends included), or `count` × `count` of a
+/// surface, of the document and the STEP parameters the export maps them to: what a
+/// reader of the file should find there.
+pub fn samples(doc: &ShapeDocument, exported: &Exported, count: usize) -> Result<Vec<Sample>> {
+    let m = exported.map;
+    let step = |(u, v): (f64, f64)| (m.u.0 * u + m.u.1, m.v.0 * v + m.v.1);
+    let at = |d: Interval, i: usize| d.lerp(i as f64 / (count - 1).max(1) as f64);
+    let point = |p: Point<3>| [p[0], p[1], p[2]];
+    match doc {
+        ShapeDocument::Curve(c) => {
+            let k = kernel_curve(c)?;
+            Ok((0..count)
+                .map(|i| {
+                    let t = at(exported.domain.0, i);
+                    Sample { param: (t, 0.0), step_param: step((t, 0.0)), point: point(k.point(t)) }
+                })
+                .collect())
+        }
+        ShapeDocument::Surface(s) => {
+            let k = kernel_surface(s)?;
+            Ok((0..count)
+                .flat_map(|i| (0..count).map(move |j| (i, j)))
+                .map(|(i, j)| {
+                    let (u, v) = (at(exported.domain.0, i), at(exported.domain.1, j));
+                    Sample { param: (u, v), step_param: step((u, v)), point: point(k.point(u, v)) }
+                })
+                .collect())
+        }
+    }
+}

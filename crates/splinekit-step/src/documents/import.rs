@@ -1,0 +1,465 @@
+//! STEP geometry → shape documents. Splines keep everything (knots, weights; a closed
+//! spline whose last p points repeat its first p and whose knots repeat their spacing
+//! becomes a periodic document, undoing the export). Lines, planes and swept surfaces keep
+//! their parametrisation up to an affine map per direction; circles and ellipses at the
+//! world frame stay `circle`/`ellipse`, elsewhere they become exact rational arcs (same
+//! points, rational parametrisation); quadrics at the world frame with the export's
+//! ranges stay model surfaces, elsewhere they become exact revolutions. Faces on planes,
+//! splines, revolutions and extrusions become `trimmed` documents whose loops are their
+//! pcurves joined into one exact B-spline (NURBS) loop each.
+
+use splinekit::Point;
+use splinekit::curve::{Curve as KernelCurve, NurbsCurve};
+use splinekit_scene::curves::{BSplineDoc, CircleDoc, EllipseDoc, LineDoc, NurbsDoc};
+use splinekit_scene::surfaces::{
+    BSplineSurfaceDoc, ExtrusionDoc, NurbsSurfaceDoc, PlaneDoc, RadiusDoc, RadiusHeightDoc, RevolutionDoc, TorusDoc,
+    TrimmedDoc,
+};
+use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
+use std::f64::consts::{FRAC_PI_2, TAU};
+
+use crate::error::{Result, StepError};
+use crate::geometry::{Axes, Curve, Geometry, Item, P3, SplineCurve, SplineSurface, Surface};
+use crate::import::{Face, GeometryOrFace, import, is_world, radial};
+use crate::kernel::nurbs;
+use crate::part21::StepFile;
+
+/// Documents read from a STEP file.
+#[derive(Debug, Clone, Default)]
+pub struct ImportedDocuments {
+    /// Each converted object: its STEP geometry (for STEP → STEP) and its document.
+    pub items: Vec<(Item, ShapeDocument)>,
+    /// Entity types not converted, with counts (to report; nothing is dropped silently).
+    pub not_understood: Vec<(String, usize)>,
+}
+
+/// Reads every curve, surface and face of the file as documents.
+pub fn import_items(file: &StepFile) -> Result<ImportedDocuments> {
+    let found = import(file)?;
+    let mut out = ImportedDocuments::default();
+    let mut skipped = found.not_understood;
+    for (name, g) in found.geometry {
+        let converted = match &g {
+            GeometryOrFace::Curve(c) => curve_doc(c).map(|d| d.map(ShapeDocument::Curve)),
+            GeometryOrFace::Surface(s) => surface_doc(s).map(|d| d.map(ShapeDocument::Surface)),
+            GeometryOrFace::Face(f) => face_doc(f).map(|d| d.map(ShapeDocument::Surface)),
+        }?;
+        let geometry = match g {
+            GeometryOrFace::Curve(c) => Some(Geometry::Curve(c)),
+            GeometryOrFace::Surface(s) => Some(Geometry::Surface(s)),
+            GeometryOrFace::Face(_) => None,
+        };
+        match (converted, geometry) {
+            (Some(doc), Some(geometry)) => out.items.push((Item { name, geometry }, doc)),
+            // Faces travel as their `trimmed` documents; STEP → STEP writes their surfaces
+            // (face export is still to come).
+            (Some(doc), None) => out.items.push((face_item(&name, &doc)?, doc)),
+            (None, _) => *skipped.entry(format!("{name} (no document form)")).or_default() += 1,
+        }
+    }
+    out.not_understood = skipped.into_iter().filter(|(_, c)| *c > 0).collect();
+    Ok(out)
+}
+
+/// A face's STEP item for STEP → STEP: its document's surface, exported.
+fn face_item(name: &str, doc: &ShapeDocument) -> Result<Item> {
+    let ShapeDocument::Surface(SurfaceDocument::Trimmed(t)) = doc else { unreachable!("faces are trimmed") };
+    Ok(crate::documents::export_surface(&t.surface, name, 1e-6)?.item)
+}
+
+fn v3(p: P3) -> Vec<f64> {
+    p.to_vec()
+}
+
+fn pts_of<const D: usize>(c: &NurbsCurve<D>) -> Vec<Vec<f64>> {
+    c.control_points().iter().map(|p| p.iter().copied().collect()).collect()
+}
+
+/// A kernel NURBS curve as a `bspline` (all weights 1) or `nurbs` document.
+fn nurbs_doc<const D: usize>(c: &NurbsCurve<D>) -> CurveDocument {
+    if c.weights().iter().all(|&w| w == 1.0) {
+        CurveDocument::Bspline(BSplineDoc {
+            degree: c.degree(),
+            knots: c.knots().to_vec(),
+            control_points: pts_of(c),
+            periodic: false,
+        })
+    } else {
+        CurveDocument::Nurbs(NurbsDoc {
+            degree: c.degree(),
+            knots: c.knots().to_vec(),
+            control_points: pts_of(c),
+            weights: c.weights().to_vec(),
+            periodic: false,
+        })
+    }
+}
+
+/// The periodic form (n points, n + p + 1 knots) of a closed spline written unrolled, if
+/// it is one.
+fn periodic_form<T: PartialEq + Clone>(items: &[T], knots: &[f64], p: usize) -> Option<(Vec<T>, Vec<f64>)> {
+    let total = items.len();
+    if p == 0 || total < 2 * p + 1 {
+        return None;
+    }
+    let n = total - p;
+    if (0..p).any(|i| items[i] != items[i + n]) {
+        return None;
+    }
+    let period = knots[n + p] - knots[p];
+    let scale = knots[n + p].abs().max(knots[0].abs()).max(period);
+    let tail_ok = (n + p + 1..knots.len()).all(|i| ((knots[i] - knots[i - n]) - period).abs() <= 1e-12 * scale);
+    tail_ok.then(|| (items[..n].to_vec(), knots[..n + p + 1].to_vec()))
+}
+
+fn spline_curve_doc(s: &SplineCurve) -> CurveDocument {
+    let p = s.degree;
+    let periodic = if s.closed {
+        let tagged: Vec<(Vec<f64>, Option<f64>)> =
+            s.points.iter().enumerate().map(|(i, pt)| (pt.clone(), s.weights.as_ref().map(|w| w[i]))).collect();
+        periodic_form(&tagged, &s.knots, p)
+    } else {
+        None
+    };
+    let (points, weights, knots, periodic) = match periodic {
+        Some((items, knots)) => {
+            let w: Option<Vec<f64>> = s.weights.as_ref().map(|_| items.iter().map(|(_, w)| w.unwrap_or(1.0)).collect());
+            (items.into_iter().map(|(p, _)| p).collect(), w, knots, true)
+        }
+        None => (s.points.clone(), s.weights.clone(), s.knots.clone(), false),
+    };
+    let doc = match weights {
+        None => CurveDocument::Bspline(BSplineDoc { degree: p, knots, control_points: points, periodic }),
+        Some(weights) => CurveDocument::Nurbs(NurbsDoc { degree: p, knots, control_points: points, weights, periodic }),
+    };
+    if periodic && doc.build().is_err() {
+        // The knots only almost repeat: keep the unrolled open form, which is exact.
+        return spline_curve_doc(&SplineCurve { closed: false, ..s.clone() });
+    }
+    doc
+}
+
+/// An exact rational arc of an ellipse with semi-axes (a, b) in a placement, angles
+/// [t0, t1].
+fn conic_arc<const D: usize>(axes: &Axes, a: f64, b: f64, t0: f64, t1: f64) -> Result<NurbsCurve<D>> {
+    let v = |p: P3| Point::<D>::from_fn(|k, _| p[k]);
+    let (x, y) = (axes.x.map(|c| c * a), axes.y().map(|c| c * b));
+    NurbsCurve::arc(v(axes.origin), v(x), v(y), 1.0, t0, t1).map_err(|e| StepError::plain(format!("arc: {e}")))
+}
+
+/// A piece [start, end] of a spline, by knot insertion (the whole curve when the range
+/// is its domain).
+fn spline_piece<const D: usize>(s: &SplineCurve, start: f64, end: f64) -> Result<NurbsCurve<D>> {
+    let mut c = nurbs::<D>(s)?.clamped().map_err(|e| StepError::plain(format!("B-spline curve: {e}")))?;
+    let d = c.domain();
+    let err = |e: splinekit::Error| StepError::plain(format!("B-spline curve: {e}"));
+    if start > d.start {
+        c = c.split(start).map_err(err)?.1.ok_or_else(|| StepError::plain("cannot trim a B-spline curve"))?;
+    }
+    if end < d.end {
+        c = c.split(end).map_err(err)?.0;
+    }
+    Ok(c)
+}
+
+/// A free 3-D curve as a document; `None` where no document form exists.
+fn curve_doc(c: &Curve) -> Result<Option<CurveDocument>> {
+    Ok(Some(match c {
+        Curve::Spline(s) => spline_curve_doc(s),
+        Curve::Line { origin, direction } => CurveDocument::Line(LineDoc {
+            from: origin.clone(),
+            to: origin.iter().zip(direction).map(|(o, d)| o + d).collect(),
+        }),
+        Curve::Circle { axes, radius } if is_world(axes) => CurveDocument::Circle(CircleDoc { radius: *radius }),
+        Curve::Ellipse { axes, a, b } if is_world(axes) => CurveDocument::Ellipse(EllipseDoc { a: *a, b: *b }),
+        Curve::Circle { axes, radius } => nurbs_doc(&conic_arc::<3>(axes, *radius, *radius, 0.0, TAU)?),
+        Curve::Ellipse { axes, a, b } => nurbs_doc(&conic_arc::<3>(axes, *a, *b, 0.0, TAU)?),
+        Curve::Trimmed { basis, start, end } => match basis.as_ref() {
+            Curve::Line { origin, direction } => CurveDocument::Line(LineDoc {
+                from: origin.iter().zip(direction).map(|(o, d)| o + start * d).collect(),
+                to: origin.iter().zip(direction).map(|(o, d)| o + end * d).collect(),
+            }),
+            Curve::Circle { axes, radius } if is_world(axes) && *start == 0.0 && *end == TAU => {
+                CurveDocument::Circle(CircleDoc { radius: *radius })
+            }
+            Curve::Circle { axes, radius } => nurbs_doc(&conic_arc::<3>(axes, *radius, *radius, *start, *end)?),
+            Curve::Ellipse { axes, a, b } => nurbs_doc(&conic_arc::<3>(axes, *a, *b, *start, *end)?),
+            Curve::Spline(s) => nurbs_doc(&spline_piece::<3>(s, *start, *end)?),
+            Curve::Trimmed { .. } => return Ok(None),
+        },
+    }))
+}
+
+/// A row or column of a control net with its weights (rational nets).
+type WeightedLine = (Vec<Vec<f64>>, Option<Vec<f64>>);
+
+fn spline_surface_doc(s: &SplineSurface) -> SurfaceDocument {
+    let (p, q) = s.degrees;
+    let mut points = s.points.clone();
+    let mut weights = s.weights.clone();
+    let (mut ku, mut kv) = (s.knots_u.clone(), s.knots_v.clone());
+    let mut periodic = (false, false);
+    if s.closed.0 {
+        let rows: Vec<WeightedLine> =
+            points.iter().enumerate().map(|(i, r)| (r.clone(), weights.as_ref().map(|w| w[i].clone()))).collect();
+        if let Some((rows, k)) = periodic_form(&rows, &ku, p) {
+            weights = weights.as_ref().map(|_| rows.iter().map(|(_, w)| w.clone().unwrap_or_default()).collect());
+            points = rows.into_iter().map(|(r, _)| r).collect();
+            ku = k;
+            periodic.0 = true;
+        }
+    }
+    if s.closed.1 {
+        let cols: Vec<WeightedLine> = (0..points[0].len())
+            .map(|j| {
+                (
+                    points.iter().map(|r| r[j].clone()).collect(),
+                    weights.as_ref().map(|w| w.iter().map(|r| r[j]).collect()),
+                )
+            })
+            .collect();
+        if let Some((cols, k)) = periodic_form(&cols, &kv, q) {
+            points = (0..points.len()).map(|i| cols.iter().map(|(c, _)| c[i].clone()).collect()).collect();
+            weights = weights.as_ref().map(|_| {
+                (0..points.len())
+                    .map(|i| cols.iter().map(|(_, w)| w.as_ref().map_or(1.0, |w| w[i])).collect())
+                    .collect()
+            });
+            kv = k;
+            periodic.1 = true;
+        }
+    }
+    let doc = match &weights {
+        None => SurfaceDocument::BsplineSurface(BSplineSurfaceDoc {
+            degree_u: p,
+            degree_v: q,
+            knots_u: ku,
+            knots_v: kv,
+            control_points: points,
+            periodic_u: periodic.0,
+            periodic_v: periodic.1,
+        }),
+        Some(w) => SurfaceDocument::NurbsSurface(NurbsSurfaceDoc {
+            degree_u: p,
+            degree_v: q,
+            knots_u: ku,
+            knots_v: kv,
+            control_points: points,
+            weights: w.clone(),
+            periodic_u: periodic.0,
+            periodic_v: periodic.1,
+        }),
+    };
+    if periodic != (false, false) && doc.build().is_err() {
+        return spline_surface_doc(&SplineSurface { closed: (false, false), ..s.clone() });
+    }
+    doc
+}
+
+/// The revolution (about the placement's axis) of a profile curve document in the
+/// half-plane at angle u₀, by the angle u₁ − u₀.
+fn revolution(axes: &Axes, profile: CurveDocument, angle: f64) -> SurfaceDocument {
+    SurfaceDocument::Revolution(RevolutionDoc {
+        curve: Box::new(profile),
+        axis_point: v3(axes.origin),
+        axis: v3(axes.z),
+        angle,
+    })
+}
+
+/// A bounded quadric as a document: the model surface when it sits where the export puts
+/// it, else an exact revolution of its profile (line or arc) starting at u₀.
+fn quadric_doc(basis: &Surface, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> Result<Option<SurfaceDocument>> {
+    let full = u0 == 0.0 && u1 == TAU;
+    Ok(Some(match basis {
+        Surface::Cylinder { axes, radius } if is_world(axes) && full && v0 == 0.0 => {
+            SurfaceDocument::Cylinder(RadiusHeightDoc { radius: *radius, height: v1 })
+        }
+        Surface::Sphere { axes, radius } if is_world(axes) && full && (v0, v1) == (-FRAC_PI_2, FRAC_PI_2) => {
+            SurfaceDocument::Sphere(RadiusDoc { radius: *radius })
+        }
+        Surface::Torus { axes, major_radius, minor_radius } if is_world(axes) && full && (v0, v1) == (0.0, TAU) => {
+            SurfaceDocument::Torus(TorusDoc { major_radius: *major_radius, minor_radius: *minor_radius })
+        }
+        Surface::Cylinder { axes, radius } | Surface::Cone { axes, radius, .. } => {
+            let slope = if let Surface::Cone { semi_angle, .. } = basis { semi_angle.tan() } else { 0.0 };
+            let e = radial(axes, u0);
+            let at = |v: f64| -> Vec<f64> {
+                (0..3).map(|k| axes.origin[k] + (radius + v * slope) * e[k] + v * axes.z[k]).collect()
+            };
+            revolution(axes, CurveDocument::Line(LineDoc { from: at(v0), to: at(v1) }), u1 - u0)
+        }
+        Surface::Sphere { axes, radius } => {
+            let meridian =
+                Axes { origin: axes.origin, z: crate::geometry::cross(radial(axes, u0), axes.z), x: radial(axes, u0) };
+            let arc = NurbsCurve::<3>::arc(
+                Point::<3>::from(axes.origin),
+                Point::<3>::from(meridian.x),
+                Point::<3>::from(axes.z),
+                *radius,
+                v0,
+                v1,
+            )
+            .map_err(|e| StepError::plain(format!("sphere: {e}")))?;
+            revolution(axes, nurbs_doc(&arc), u1 - u0)
+        }
+        Surface::Torus { axes, major_radius, minor_radius } => {
+            let e = radial(axes, u0);
+            let centre: P3 = std::array::from_fn(|k| axes.origin[k] + major_radius * e[k]);
+            let arc = NurbsCurve::<3>::arc(
+                Point::<3>::from(centre),
+                Point::<3>::from(e),
+                Point::<3>::from(axes.z),
+                *minor_radius,
+                v0,
+                v1,
+            )
+            .map_err(|e| StepError::plain(format!("torus: {e}")))?;
+            revolution(axes, nurbs_doc(&arc), u1 - u0)
+        }
+        _ => return Ok(None),
+    }))
+}
+
+/// A free surface as a document (bounded: splines, trimmed surfaces); `None` where no
+/// document form exists (unbounded surfaces outside faces).
+fn surface_doc(s: &Surface) -> Result<Option<SurfaceDocument>> {
+    Ok(match s {
+        Surface::Spline(b) => Some(spline_surface_doc(b)),
+        Surface::Trimmed { basis, u, v } => match basis.as_ref() {
+            Surface::Plane(a) => Some(plane_doc(a, *u, *v)),
+            Surface::Spline(b) if *u == domain(&b.knots_u, b.degrees.0) && *v == domain(&b.knots_v, b.degrees.1) => {
+                Some(spline_surface_doc(b))
+            }
+            Surface::Revolution { profile, axis_origin, axis } if u.0 == 0.0 => {
+                let Some(c) = trimmed_profile(profile, *v)? else { return Ok(None) };
+                Some(SurfaceDocument::Revolution(RevolutionDoc {
+                    curve: Box::new(c),
+                    axis_point: v3(*axis_origin),
+                    axis: v3(*axis),
+                    angle: u.1,
+                }))
+            }
+            Surface::Extrusion { profile, direction } if v.0 == 0.0 => {
+                let Some(c) = trimmed_profile(profile, *u)? else { return Ok(None) };
+                Some(SurfaceDocument::Extrusion(ExtrusionDoc {
+                    curve: Box::new(c),
+                    direction: direction.map(|d| d * v.1).to_vec(),
+                }))
+            }
+            other => quadric_doc(other, *u, *v)?,
+        },
+        _ => None,
+    })
+}
+
+fn domain(knots: &[f64], p: usize) -> (f64, f64) {
+    (knots[p], knots[knots.len() - 1 - p])
+}
+
+/// The profile curve's document on [a, b] of its parameter.
+fn trimmed_profile(c: &Curve, (a, b): (f64, f64)) -> Result<Option<CurveDocument>> {
+    match c {
+        Curve::Spline(s) if (a, b) == domain(&s.knots, s.degree) => curve_doc(c),
+        _ => curve_doc(&Curve::Trimmed { basis: Box::new(c.clone()), start: a, end: b }),
+    }
+}
+
+fn plane_doc(a: &Axes, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> SurfaceDocument {
+    let y = a.y();
+    SurfaceDocument::Plane(PlaneDoc {
+        origin: v3(a.at(u0, v0, 0.0)),
+        u_axis: a.x.map(|c| c * (u1 - u0)).to_vec(),
+        v_axis: y.map(|c| c * (v1 - v0)).to_vec(),
+    })
+}
+
+/// One piece of a parameter-space loop as a clamped 2-D NURBS curve.
+fn loop_piece(c: &Curve) -> Result<Option<NurbsCurve<2>>> {
+    let Curve::Trimmed { basis, start, end } = c else { return Ok(None) };
+    Ok(Some(match basis.as_ref() {
+        Curve::Line { origin, direction } => {
+            let at = |t: f64| Point::<2>::new(origin[0] + t * direction[0], origin[1] + t * direction[1]);
+            NurbsCurve::new(1, vec![0.0, 0.0, 1.0, 1.0], vec![at(*start), at(*end)], vec![1.0, 1.0])
+                .map_err(|e| StepError::plain(format!("loop: {e}")))?
+        }
+        Curve::Circle { axes, radius } => conic_arc::<2>(axes, *radius, *radius, *start, *end)?,
+        Curve::Ellipse { axes, a, b } => conic_arc::<2>(axes, *a, *b, *start, *end)?,
+        Curve::Spline(s) => spline_piece::<2>(s, *start, *end)?,
+        Curve::Trimmed { .. } => return Ok(None),
+    }))
+}
+
+/// Loop pieces end to end as one clamped NURBS loop: every piece elevated to the highest
+/// degree, its parameter mapped onto [k, k + 1], joints kept at multiplicity p (exact).
+fn join_loop(pieces: &[Curve], map: &dyn Fn(Point<2>) -> Point<2>) -> Result<Option<CurveDocument>> {
+    let mut parts = Vec::new();
+    for c in pieces {
+        let Some(p) = loop_piece(c)? else { return Ok(None) };
+        parts.push(p.map_points(|q| map(*q)));
+    }
+    let p = parts.iter().map(|c| c.degree()).max().unwrap_or(1);
+    let err = |e: splinekit::Error| StepError::plain(format!("loop: {e}"));
+    let mut knots = vec![0.0; p + 1];
+    let (mut points, mut weights) = (Vec::new(), Vec::new());
+    for (k, c) in parts.iter().enumerate() {
+        let c = c.elevate_degree(p - c.degree()).map_err(err)?;
+        let d = c.domain();
+        let inner: Vec<f64> =
+            c.knots()[p + 1..c.knots().len() - p - 1].iter().map(|t| k as f64 + (t - d.start) / d.length()).collect();
+        knots.extend(inner);
+        knots.extend(std::iter::repeat_n((k + 1) as f64, if k + 1 == parts.len() { p + 1 } else { p }));
+        let skip = usize::from(k > 0);
+        points.extend(c.control_points()[skip..].iter().copied());
+        weights.extend_from_slice(&c.weights()[skip..]);
+    }
+    let first = points[0];
+    let last = points.len() - 1;
+    points[last] = first; // the loop closes; pieces meet at shared vertices
+    Ok(Some(nurbs_doc(&NurbsCurve::new(p, knots, points, weights).map_err(err)?)))
+}
+
+/// A face as a `trimmed` document.
+fn face_doc(f: &Face) -> Result<Option<SurfaceDocument>> {
+    let identity = |q: Point<2>| q;
+    let (surface, map): (SurfaceDocument, Box<dyn Fn(Point<2>) -> Point<2>>) = match &f.surface {
+        Surface::Spline(b) => (spline_surface_doc(b), Box::new(identity)),
+        Surface::Plane(a) => {
+            // The plane document spans the loops' bounding box; loops map onto [0, 1]².
+            let (mut lo, mut hi) = (Point::<2>::repeat(f64::INFINITY), Point::<2>::repeat(f64::NEG_INFINITY));
+            for c in f.loops.iter().flatten() {
+                let Some(p) = loop_piece(c)? else { return Ok(None) };
+                for q in p.control_points() {
+                    lo = lo.inf(q);
+                    hi = hi.sup(q);
+                }
+            }
+            let size = hi - lo;
+            (plane_doc(a, (lo[0], hi[0]), (lo[1], hi[1])), Box::new(move |q: Point<2>| (q - lo).component_div(&size)))
+        }
+        Surface::Revolution { profile, axis_origin, axis } => {
+            let Some(c) = curve_doc(profile)? else { return Ok(None) };
+            (
+                SurfaceDocument::Revolution(RevolutionDoc {
+                    curve: Box::new(c),
+                    axis_point: v3(*axis_origin),
+                    axis: v3(*axis),
+                    angle: TAU,
+                }),
+                Box::new(identity),
+            )
+        }
+        _ => return Ok(None),
+    };
+    let mut outer = None;
+    let mut holes = Vec::new();
+    for (i, l) in f.loops.iter().enumerate() {
+        let Some(doc) = join_loop(l, map.as_ref())? else { return Ok(None) };
+        if Some(i) == f.outer || (f.outer.is_none() && i == 0) {
+            outer = Some(Box::new(doc));
+        } else {
+            holes.push(doc);
+        }
+    }
+    Ok(Some(SurfaceDocument::Trimmed(TrimmedDoc { surface: Box::new(surface), outer, holes })))
+}

@@ -1,0 +1,49 @@
+//! The thin layer between splinekit's JSON documents and STEP geometry: export of shape
+//! and scene documents, import of STEP items as shape documents.
+
+pub mod export;
+
+pub use export::{Exported, Form, ParamMap, Sample, export_curve, export_shape, export_surface, samples};
+
+use splinekit_scene::{SceneOrShape, ShapeDocument};
+
+use crate::error::{Result, StepError};
+use crate::export::write_step;
+use crate::part21::writer::HeaderInfo;
+
+/// The name of a scene's object `index` (1-based in the name) of a shape type.
+pub fn object_name(index: usize, shape: &ShapeDocument) -> String {
+    let ty = match shape {
+        ShapeDocument::Curve(c) => c.type_name().to_string(),
+        ShapeDocument::Surface(s) => s.to_value()["type"].as_str().unwrap_or("surface").to_string(),
+    };
+    format!("object {} ({ty})", index + 1)
+}
+
+/// Exports a scene (one item per object, named after it) or a single shape (named
+/// `name`) as one STEP file; returns the text and what was measured per item.
+pub fn export_document(
+    doc: &SceneOrShape,
+    name: &str,
+    relative_tolerance: f64,
+    header: &HeaderInfo,
+) -> Result<(String, Vec<Exported>)> {
+    let exported: Vec<Exported> = match doc {
+        SceneOrShape::Shape(shape) => vec![export_shape(shape, name, relative_tolerance)?],
+        SceneOrShape::Scene(scene) => scene
+            .objects
+            .iter()
+            .enumerate()
+            .map(|(i, o)| {
+                let n = object_name(i, &o.shape);
+                export_shape(&o.shape, &n, relative_tolerance)
+                    .map_err(|e| StepError::plain(format!("objects[{i}]: {}", e.message)))
+            })
+            .collect::<Result<_>>()?,
+    };
+    let items: Vec<_> = exported.iter().map(|e| e.item.clone()).collect();
+    Ok((write_step(&items, name, header), exported))
+}
+
+pub mod import;
+pub use import::{ImportedDocuments, import_items};

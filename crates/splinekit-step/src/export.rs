@@ -1,0 +1,275 @@
+//! Geometry items → a complete AP214 file that strict readers (OpenCASCADE's
+//! `STEPControl_Reader`) accept and transfer: header, application protocol, one product
+//! with its definition and shape, millimetre/radian units with an uncertainty, and a
+//! `GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION` holding one `GEOMETRIC_SET` of
+//! every item, each named after its object. Every item is bounded (B-splines, trimmed
+//! curves, rectangular trimmed surfaces), as geometric sets require.
+
+use crate::geometry::{Axes, Curve, Geometry, Item, P3, SplineCurve, SplineSurface, Surface, knot_multiplicities};
+use crate::part21::writer::{HeaderInfo, Part21Writer};
+use crate::part21::{Param, Record};
+
+fn s(text: &str) -> Param {
+    Param::String(text.to_string())
+}
+fn r(id: u64) -> Param {
+    Param::Reference(id)
+}
+fn e(name: &str) -> Param {
+    Param::Enumeration(name.to_string())
+}
+fn real(x: f64) -> Param {
+    Param::Real(x)
+}
+fn reals(xs: &[f64]) -> Param {
+    Param::List(xs.iter().map(|&x| real(x)).collect())
+}
+fn ints(xs: &[usize]) -> Param {
+    Param::List(xs.iter().map(|&x| Param::Integer(x as i64)).collect())
+}
+fn flag(b: bool) -> Param {
+    e(if b { "T" } else { "F" })
+}
+fn rec(name: &str, params: Vec<Param>) -> Record {
+    Record { name: name.to_string(), params }
+}
+
+/// Writes geometry entities into a [`Part21Writer`].
+pub struct GeometryWriter<'a> {
+    w: &'a mut Part21Writer,
+}
+
+impl<'a> GeometryWriter<'a> {
+    /// Writes into `w`.
+    pub fn new(w: &'a mut Part21Writer) -> Self {
+        GeometryWriter { w }
+    }
+
+    fn point(&mut self, p: &[f64]) -> u64 {
+        self.w.add("CARTESIAN_POINT", vec![s(""), reals(p)])
+    }
+
+    fn direction(&mut self, d: &[f64]) -> u64 {
+        self.w.add("DIRECTION", vec![s(""), reals(d)])
+    }
+
+    fn axes(&mut self, a: &Axes) -> u64 {
+        let (o, z, x) = (self.point(&a.origin), self.direction(&a.z), self.direction(&a.x));
+        self.w.add("AXIS2_PLACEMENT_3D", vec![s(""), r(o), r(z), r(x)])
+    }
+
+    fn axis1(&mut self, origin: P3, axis: P3) -> u64 {
+        let (o, z) = (self.point(&origin), self.direction(&axis));
+        self.w.add("AXIS1_PLACEMENT", vec![s(""), r(o), r(z)])
+    }
+
+    fn vector(&mut self, v: &[f64]) -> u64 {
+        let len = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let unit: Vec<f64> = v.iter().map(|x| x / len).collect();
+        let d = self.direction(&unit);
+        self.w.add("VECTOR", vec![s(""), r(d), real(len)])
+    }
+
+    /// Writes a curve named `name`; returns its `#id`.
+    pub fn curve(&mut self, c: &Curve, name: &str) -> u64 {
+        match c {
+            Curve::Line { origin, direction } => {
+                let (o, v) = (self.point(origin), self.vector(direction));
+                self.w.add("LINE", vec![s(name), r(o), r(v)])
+            }
+            Curve::Circle { axes, radius } => {
+                let a = self.axes(axes);
+                self.w.add("CIRCLE", vec![s(name), r(a), real(*radius)])
+            }
+            Curve::Ellipse { axes, a, b } => {
+                let p = self.axes(axes);
+                self.w.add("ELLIPSE", vec![s(name), r(p), real(*a), real(*b)])
+            }
+            Curve::Spline(sc) => self.spline_curve(sc, name),
+            Curve::Trimmed { basis, start, end } => {
+                let b = self.curve(basis, "");
+                let trim = |t: f64| Param::List(vec![Param::Typed("PARAMETER_VALUE".into(), Box::new(real(t)))]);
+                self.w.add("TRIMMED_CURVE", vec![s(name), r(b), trim(*start), trim(*end), flag(true), e("PARAMETER")])
+            }
+        }
+    }
+
+    fn spline_curve(&mut self, c: &SplineCurve, name: &str) -> u64 {
+        let pts: Vec<Param> = c.points.iter().map(|p| r(self.point(p))).collect();
+        let (values, mults) = knot_multiplicities(&c.knots);
+        let closed = flag(c.closed);
+        let curve = vec![Param::Integer(c.degree as i64), Param::List(pts), e("UNSPECIFIED"), closed, flag(false)];
+        let knots = vec![ints(&mults), reals(&values), e("UNSPECIFIED")];
+        match &c.weights {
+            None => {
+                let mut params = vec![s(name)];
+                params.extend(curve);
+                params.extend(knots);
+                self.w.add("B_SPLINE_CURVE_WITH_KNOTS", params)
+            }
+            Some(w) => self.w.add_complex(vec![
+                rec("BOUNDED_CURVE", vec![]),
+                rec("B_SPLINE_CURVE", curve),
+                rec("B_SPLINE_CURVE_WITH_KNOTS", knots),
+                rec("CURVE", vec![]),
+                rec("GEOMETRIC_REPRESENTATION_ITEM", vec![]),
+                rec("RATIONAL_B_SPLINE_CURVE", vec![reals(w)]),
+                rec("REPRESENTATION_ITEM", vec![s(name)]),
+            ]),
+        }
+    }
+
+    fn spline_surface(&mut self, sf: &SplineSurface, name: &str) -> u64 {
+        let net: Vec<Param> =
+            sf.points.iter().map(|row| Param::List(row.iter().map(|p| r(self.point(p))).collect())).collect();
+        let (ku, mu) = knot_multiplicities(&sf.knots_u);
+        let (kv, mv) = knot_multiplicities(&sf.knots_v);
+        let surface = vec![
+            Param::Integer(sf.degrees.0 as i64),
+            Param::Integer(sf.degrees.1 as i64),
+            Param::List(net),
+            e("UNSPECIFIED"),
+            flag(sf.closed.0),
+            flag(sf.closed.1),
+            flag(false),
+        ];
+        let knots = vec![ints(&mu), ints(&mv), reals(&ku), reals(&kv), e("UNSPECIFIED")];
+        match &sf.weights {
+            None => {
+                let mut params = vec![s(name)];
+                params.extend(surface);
+                params.extend(knots);
+                self.w.add("B_SPLINE_SURFACE_WITH_KNOTS", params)
+            }
+            Some(w) => self.w.add_complex(vec![
+                rec("BOUNDED_SURFACE", vec![]),
+                rec("B_SPLINE_SURFACE", surface),
+                rec("B_SPLINE_SURFACE_WITH_KNOTS", knots),
+                rec("GEOMETRIC_REPRESENTATION_ITEM", vec![]),
+                rec("RATIONAL_B_SPLINE_SURFACE", vec![Param::List(w.iter().map(|row| reals(row)).collect())]),
+                rec("REPRESENTATION_ITEM", vec![s(name)]),
+                rec("SURFACE", vec![]),
+            ]),
+        }
+    }
+
+    /// Writes a surface named `name`; returns its `#id`.
+    pub fn surface(&mut self, sf: &Surface, name: &str) -> u64 {
+        match sf {
+            Surface::Plane(axes) => {
+                let a = self.axes(axes);
+                self.w.add("PLANE", vec![s(name), r(a)])
+            }
+            Surface::Cylinder { axes, radius } => {
+                let a = self.axes(axes);
+                self.w.add("CYLINDRICAL_SURFACE", vec![s(name), r(a), real(*radius)])
+            }
+            Surface::Cone { axes, radius, semi_angle } => {
+                let a = self.axes(axes);
+                self.w.add("CONICAL_SURFACE", vec![s(name), r(a), real(*radius), real(*semi_angle)])
+            }
+            Surface::Sphere { axes, radius } => {
+                let a = self.axes(axes);
+                self.w.add("SPHERICAL_SURFACE", vec![s(name), r(a), real(*radius)])
+            }
+            Surface::Torus { axes, major_radius, minor_radius } => {
+                let a = self.axes(axes);
+                self.w.add("TOROIDAL_SURFACE", vec![s(name), r(a), real(*major_radius), real(*minor_radius)])
+            }
+            Surface::Spline(b) => self.spline_surface(b, name),
+            Surface::Revolution { profile, axis_origin, axis } => {
+                let c = self.curve(profile, "");
+                let a = self.axis1(*axis_origin, *axis);
+                self.w.add("SURFACE_OF_REVOLUTION", vec![s(name), r(c), r(a)])
+            }
+            Surface::Extrusion { profile, direction } => {
+                let c = self.curve(profile, "");
+                let v = self.vector(direction);
+                self.w.add("SURFACE_OF_LINEAR_EXTRUSION", vec![s(name), r(c), r(v)])
+            }
+            Surface::Trimmed { basis, u, v } => {
+                let b = self.surface(basis, "");
+                self.w.add(
+                    "RECTANGULAR_TRIMMED_SURFACE",
+                    vec![s(name), r(b), real(u.0), real(u.1), real(v.0), real(v.1), flag(true), flag(true)],
+                )
+            }
+        }
+    }
+}
+
+/// The ids of the shared context entities.
+struct Context {
+    geometric_context: u64,
+    product_shape: u64,
+}
+
+/// Application protocol, product structure, units and the 3-D representation context.
+fn write_context(w: &mut Part21Writer, product_name: &str) -> Context {
+    let app = w.add("APPLICATION_CONTEXT", vec![s("core data for automotive mechanical design processes")]);
+    w.add(
+        "APPLICATION_PROTOCOL_DEFINITION",
+        vec![s("international standard"), s("automotive_design"), Param::Integer(2000), r(app)],
+    );
+    let pc = w.add("PRODUCT_CONTEXT", vec![s(""), r(app), s("mechanical")]);
+    let product = w.add("PRODUCT", vec![s(product_name), s(product_name), s(""), Param::List(vec![r(pc)])]);
+    w.add("PRODUCT_RELATED_PRODUCT_CATEGORY", vec![s("part"), Param::Unset, Param::List(vec![r(product)])]);
+    let formation = w.add("PRODUCT_DEFINITION_FORMATION", vec![s(""), s(""), r(product)]);
+    let pdc = w.add("PRODUCT_DEFINITION_CONTEXT", vec![s("part definition"), r(app), s("design")]);
+    let pd = w.add("PRODUCT_DEFINITION", vec![s("design"), s(""), r(formation), r(pdc)]);
+    let product_shape = w.add("PRODUCT_DEFINITION_SHAPE", vec![s(""), s(""), r(pd)]);
+    let mm = w.add_complex(vec![
+        rec("LENGTH_UNIT", vec![]),
+        rec("NAMED_UNIT", vec![Param::Derived]),
+        rec("SI_UNIT", vec![e("MILLI"), e("METRE")]),
+    ]);
+    let rad = w.add_complex(vec![
+        rec("NAMED_UNIT", vec![Param::Derived]),
+        rec("PLANE_ANGLE_UNIT", vec![]),
+        rec("SI_UNIT", vec![Param::Unset, e("RADIAN")]),
+    ]);
+    let sr = w.add_complex(vec![
+        rec("NAMED_UNIT", vec![Param::Derived]),
+        rec("SI_UNIT", vec![Param::Unset, e("STERADIAN")]),
+        rec("SOLID_ANGLE_UNIT", vec![]),
+    ]);
+    let uncertainty = w.add(
+        "UNCERTAINTY_MEASURE_WITH_UNIT",
+        vec![
+            Param::Typed("LENGTH_MEASURE".into(), Box::new(real(1e-7))),
+            r(mm),
+            s("distance_accuracy_value"),
+            s("confusion accuracy"),
+        ],
+    );
+    let geometric_context = w.add_complex(vec![
+        rec("GEOMETRIC_REPRESENTATION_CONTEXT", vec![Param::Integer(3)]),
+        rec("GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT", vec![Param::List(vec![r(uncertainty)])]),
+        rec("GLOBAL_UNIT_ASSIGNED_CONTEXT", vec![Param::List(vec![r(mm), r(rad), r(sr)])]),
+        rec("REPRESENTATION_CONTEXT", vec![s("3D"), s("splinekit geometry in millimetres")]),
+    ]);
+    Context { geometric_context, product_shape }
+}
+
+/// The complete file text of `items` (one product named `product_name`).
+pub fn write_step(items: &[Item], product_name: &str, header: &HeaderInfo) -> String {
+    let mut w = Part21Writer::new(header);
+    let ctx = write_context(&mut w, product_name);
+    let mut ids = Vec::with_capacity(items.len());
+    {
+        let mut g = GeometryWriter::new(&mut w);
+        for item in items {
+            ids.push(r(match &item.geometry {
+                Geometry::Curve(c) => g.curve(c, &item.name),
+                Geometry::Surface(sf) => g.surface(sf, &item.name),
+            }));
+        }
+    }
+    let set = w.add("GEOMETRIC_SET", vec![s(product_name), Param::List(ids)]);
+    let rep = w.add(
+        "GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION",
+        vec![s(product_name), Param::List(vec![r(set)]), r(ctx.geometric_context)],
+    );
+    w.add("SHAPE_DEFINITION_REPRESENTATION", vec![r(ctx.product_shape), r(rep)]);
+    w.finish()
+}

@@ -1,0 +1,583 @@
+//! STEP entities → geometry items: the curves and surfaces of geometric sets and
+//! representations, and faces with their bounds (as parameter-space loops from the
+//! pcurves of their edges). Every instance that is neither converted nor part of the
+//! file's product, unit and representation structure is counted by type, so callers can
+//! say what was left out.
+
+use std::collections::{BTreeMap, HashSet};
+
+use crate::error::{Result, StepError};
+use crate::geometry::{Axes, Curve, P3, SplineCurve, SplineSurface, Surface, cross, dot, expand_knots, norm};
+use crate::part21::{Instance, Param, StepFile};
+
+/// A face: a surface and its bounds as closed loops of curves in the surface's (u, v)
+/// parameters (each loop a list of 2-D curves end to end).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Face {
+    /// The face's name.
+    pub name: String,
+    /// The underlying surface.
+    pub surface: Surface,
+    /// Parameter-space loops; `outer` first when known.
+    pub loops: Vec<Vec<Curve>>,
+    /// Which loop is the outer bound (`FACE_OUTER_BOUND`), if one is marked.
+    pub outer: Option<usize>,
+}
+
+/// What an import found.
+#[derive(Debug, Clone, Default)]
+pub struct Imported {
+    /// Named curves and surfaces of geometric sets and representations.
+    pub geometry: Vec<(String, GeometryOrFace)>,
+    /// Entity types read but not converted, with counts.
+    pub not_understood: BTreeMap<String, usize>,
+}
+
+/// A free curve or surface, or a bounded face.
+#[derive(Debug, Clone, PartialEq)]
+pub enum GeometryOrFace {
+    /// A curve.
+    Curve(Curve),
+    /// A surface.
+    Surface(Surface),
+    /// A face.
+    Face(Face),
+}
+
+/// Types that carry structure (product, context, units, representations, topology that
+/// faces consume) rather than geometry; they are never reported as not understood.
+const STRUCTURE: &[&str] = &[
+    "APPLICATION_CONTEXT",
+    "APPLICATION_PROTOCOL_DEFINITION",
+    "PRODUCT",
+    "PRODUCT_CONTEXT",
+    "PRODUCT_DEFINITION",
+    "PRODUCT_DEFINITION_CONTEXT",
+    "PRODUCT_DEFINITION_FORMATION",
+    "PRODUCT_DEFINITION_FORMATION_WITH_SPECIFIED_SOURCE",
+    "PRODUCT_DEFINITION_SHAPE",
+    "PRODUCT_RELATED_PRODUCT_CATEGORY",
+    "PRODUCT_CATEGORY",
+    "SHAPE_DEFINITION_REPRESENTATION",
+    "SHAPE_REPRESENTATION",
+    "ADVANCED_BREP_SHAPE_REPRESENTATION",
+    "MANIFOLD_SURFACE_SHAPE_REPRESENTATION",
+    "GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION",
+    "GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION",
+    "SHAPE_REPRESENTATION_RELATIONSHIP",
+    "UNCERTAINTY_MEASURE_WITH_UNIT",
+    "GEOMETRIC_SET",
+    "GEOMETRIC_CURVE_SET",
+    "SHELL_BASED_SURFACE_MODEL",
+    "OPEN_SHELL",
+    "CLOSED_SHELL",
+    "MANIFOLD_SOLID_BREP",
+    "AXIS2_PLACEMENT_3D",
+    "DEFINITIONAL_REPRESENTATION",
+    "APPLICATION_PROTOCOL",
+];
+
+fn structural(type_name: &str) -> bool {
+    STRUCTURE.contains(&type_name)
+        || type_name.starts_with('(') && (type_name.contains("UNIT") || type_name.contains("REPRESENTATION_CONTEXT"))
+}
+
+/// Reads every curve, surface and face the file's geometric sets, shape representations
+/// and shells hold.
+pub fn import(file: &StepFile) -> Result<Imported> {
+    let mut r = Reader { file, visited: HashSet::new() };
+    let mut out = Imported::default();
+    let mut roots: Vec<u64> = Vec::new();
+    for set in ["GEOMETRIC_SET", "GEOMETRIC_CURVE_SET"] {
+        for id in file.ids_of_type(set) {
+            r.visited.insert(id);
+            let inst = file.get(id)?;
+            roots.extend(refs(param(&inst, 1)?).map_err(|e| e.within(inst.line, id))?);
+        }
+    }
+    for shell in ["OPEN_SHELL", "CLOSED_SHELL"] {
+        for id in file.ids_of_type(shell) {
+            r.visited.insert(id);
+            let inst = file.get(id)?;
+            roots.extend(refs(param(&inst, 1)?).map_err(|e| e.within(inst.line, id))?);
+        }
+    }
+    for id in roots {
+        r.visited.insert(id);
+        let inst = file.get(id)?;
+        let name = inst_name(&inst);
+        let geometry = match inst.records[0].name.as_str() {
+            "ADVANCED_FACE" | "FACE_SURFACE" => r.face(&inst).map(GeometryOrFace::Face),
+            _ if r.is_surface(&inst) => r.surface(id).map(GeometryOrFace::Surface),
+            _ => r.curve(id).map(GeometryOrFace::Curve),
+        };
+        match geometry {
+            Ok(g) => out.geometry.push((name, g)),
+            Err(Unsupported::Type(t)) => *out.not_understood.entry(t).or_default() += 1,
+            Err(Unsupported::Bad(e)) => return Err(e),
+        }
+    }
+    for id in file.ids() {
+        let t = file.type_of(id).unwrap_or("");
+        if !r.visited.contains(&id) && !structural(t) {
+            *out.not_understood.entry(t.to_string()).or_default() += 1;
+        }
+    }
+    Ok(out)
+}
+
+/// Why an entity was not converted: a type without a mapping, or a malformed file.
+enum Unsupported {
+    Type(String),
+    Bad(StepError),
+}
+
+impl From<StepError> for Unsupported {
+    fn from(e: StepError) -> Self {
+        Unsupported::Bad(e)
+    }
+}
+
+type Conv<T> = std::result::Result<T, Unsupported>;
+
+fn inst_name(inst: &Instance) -> String {
+    let r = inst.record("REPRESENTATION_ITEM").unwrap_or(&inst.records[0]);
+    match r.params.first() {
+        Some(Param::String(s)) => s.clone(),
+        _ => String::new(),
+    }
+}
+
+fn param(inst: &Instance, i: usize) -> Result<&Param> {
+    inst.records[0].params.get(i).ok_or_else(|| {
+        StepError::at(
+            inst.line,
+            Some(inst.id),
+            format!("{}: expected at least {} parameters", inst.records[0].name, i + 1),
+        )
+    })
+}
+
+fn bad(what: &str, got: &Param) -> StepError {
+    StepError::plain(format!("expected {what}, got {got:?}"))
+}
+
+fn real(p: &Param) -> Result<f64> {
+    match p {
+        Param::Real(x) => Ok(*x),
+        Param::Integer(i) => Ok(*i as f64),
+        Param::Typed(_, inner) => real(inner),
+        other => Err(bad("a number", other)),
+    }
+}
+
+fn reals(p: &Param) -> Result<Vec<f64>> {
+    match p {
+        Param::List(items) => items.iter().map(real).collect(),
+        other => Err(bad("a list of numbers", other)),
+    }
+}
+
+fn integer(p: &Param) -> Result<usize> {
+    match p {
+        Param::Integer(i) if *i >= 0 => Ok(*i as usize),
+        other => Err(bad("a non-negative integer", other)),
+    }
+}
+
+fn reference(p: &Param) -> Result<u64> {
+    match p {
+        Param::Reference(id) => Ok(*id),
+        other => Err(bad("a reference #id", other)),
+    }
+}
+
+fn refs(p: &Param) -> Result<Vec<u64>> {
+    match p {
+        Param::List(items) => items.iter().map(reference).collect(),
+        other => Err(bad("a list of references", other)),
+    }
+}
+
+fn boolean(p: &Param) -> Result<bool> {
+    match p {
+        Param::Enumeration(e) if e == "T" => Ok(true),
+        Param::Enumeration(e) if e == "F" || e == "U" => Ok(false),
+        other => Err(bad(".T. or .F.", other)),
+    }
+}
+
+fn to3(v: &[f64]) -> P3 {
+    [v[0], v[1], v.get(2).copied().unwrap_or(0.0)]
+}
+
+fn unit(v: P3) -> Result<P3> {
+    let n = norm(v);
+    if !(n > 0.0 && n.is_finite()) {
+        return Err(StepError::plain("a direction has zero length"));
+    }
+    Ok(v.map(|c| c / n))
+}
+
+/// Follows references, marking what it reads.
+struct Reader<'a> {
+    file: &'a StepFile,
+    visited: HashSet<u64>,
+}
+
+impl Reader<'_> {
+    fn get(&mut self, id: u64) -> Result<Instance> {
+        self.visited.insert(id);
+        self.file.get(id)
+    }
+
+    /// Runs `f` on the instance, placing its errors at the instance.
+    fn with<T>(&mut self, id: u64, f: impl FnOnce(&mut Self, &Instance) -> Conv<T>) -> Conv<T> {
+        let inst = self.get(id)?;
+        f(self, &inst).map_err(|e| match e {
+            Unsupported::Bad(err) => Unsupported::Bad(err.within(inst.line, inst.id)),
+            other => other,
+        })
+    }
+
+    fn is_surface(&self, inst: &Instance) -> bool {
+        inst.records.iter().any(|r| r.name.contains("SURFACE") && !r.name.contains("CURVE"))
+            || inst.records[0].name == "PLANE"
+    }
+
+    fn point(&mut self, id: u64) -> Conv<Vec<f64>> {
+        self.with(id, |_, inst| match inst.records[0].name.as_str() {
+            "CARTESIAN_POINT" => {
+                let c = reals(param(inst, 1)?)?;
+                if !(1..=3).contains(&c.len()) {
+                    return Err(StepError::plain(format!("a point has 1 to 3 coordinates, got {}", c.len())).into());
+                }
+                Ok(c)
+            }
+            other => Err(Unsupported::Type(other.to_string())),
+        })
+    }
+
+    fn direction(&mut self, id: u64) -> Conv<P3> {
+        self.with(id, |_, inst| Ok(unit(to3(&reals(param(inst, 1)?)?))?))
+    }
+
+    fn vector(&mut self, id: u64) -> Conv<Vec<f64>> {
+        self.with(id, |r, inst| {
+            let d = r.with(reference(param(inst, 1)?)?, |_, i| Ok(reals(param(i, 1)?)?))?;
+            let len = norm(to3(&d));
+            let m = real(param(inst, 2)?)?;
+            Ok(d.iter().map(|c| c / len * m).collect())
+        })
+    }
+
+    fn axes(&mut self, id: u64) -> Conv<Axes> {
+        self.with(id, |r, inst| {
+            let origin = to3(&r.point(reference(param(inst, 1)?)?)?);
+            let z = match param(inst, 2)? {
+                Param::Unset => [0.0, 0.0, 1.0],
+                p => r.direction(reference(p)?)?,
+            };
+            let x0 = match inst.records[0].params.get(3) {
+                Some(Param::Reference(d)) => r.direction(*d)?,
+                _ => {
+                    if z[0].abs() < 0.9 {
+                        [1.0, 0.0, 0.0]
+                    } else {
+                        [0.0, 1.0, 0.0]
+                    }
+                }
+            };
+            // Reference direction made orthogonal to the axis (ISO 10303-42 build_axes).
+            let x = unit(std::array::from_fn(|k| x0[k] - dot(x0, z) * z[k]))?;
+            Ok(Axes { origin, z, x })
+        })
+    }
+
+    fn spline_curve(&mut self, inst: &Instance) -> Conv<SplineCurve> {
+        let (curve, knots) = match inst.record("B_SPLINE_CURVE") {
+            Some(c) => (c.params.clone(), inst.record("B_SPLINE_CURVE_WITH_KNOTS").map(|k| k.params.clone())),
+            None => (inst.records[0].params[1..].to_vec(), Some(inst.records[0].params[6..].to_vec())),
+        };
+        let knots = knots.ok_or_else(|| Unsupported::Type(inst.type_name()))?;
+        if curve.len() < 5 || knots.len() < 2 {
+            return Err(StepError::plain("B-spline curve: missing parameters").into());
+        }
+        let degree = integer(&curve[0])?;
+        let points = refs(&curve[1])?.into_iter().map(|id| self.point(id)).collect::<Conv<Vec<_>>>()?;
+        let mults: Vec<usize> = match &knots[0] {
+            Param::List(m) => m.iter().map(integer).collect::<Result<_>>()?,
+            other => return Err(bad("knot multiplicities", other).into()),
+        };
+        let values = reals(&knots[1])?;
+        let weights = inst.record("RATIONAL_B_SPLINE_CURVE").map(|r| reals(&r.params[0])).transpose()?;
+        Ok(SplineCurve { degree, knots: expand_knots(&values, &mults), points, weights, closed: boolean(&curve[3])? })
+    }
+
+    fn curve(&mut self, id: u64) -> Conv<Curve> {
+        self.with(id, |r, inst| {
+            if inst.record("B_SPLINE_CURVE_WITH_KNOTS").is_some() {
+                return Ok(Curve::Spline(r.spline_curve(inst)?));
+            }
+            Ok(match inst.records[0].name.as_str() {
+                "LINE" => Curve::Line {
+                    origin: r.point(reference(param(inst, 1)?)?)?,
+                    direction: r.vector(reference(param(inst, 2)?)?)?,
+                },
+                "CIRCLE" => {
+                    Curve::Circle { axes: r.axes(reference(param(inst, 1)?)?)?, radius: real(param(inst, 2)?)? }
+                }
+                "ELLIPSE" => Curve::Ellipse {
+                    axes: r.axes(reference(param(inst, 1)?)?)?,
+                    a: real(param(inst, 2)?)?,
+                    b: real(param(inst, 3)?)?,
+                },
+                "TRIMMED_CURVE" => {
+                    let basis = r.curve(reference(param(inst, 1)?)?)?;
+                    let trim = |p: &Param| -> Option<f64> {
+                        match p {
+                            Param::List(items) => items.iter().find_map(|i| match i {
+                                Param::Typed(n, v) if n == "PARAMETER_VALUE" => real(v).ok(),
+                                _ => None,
+                            }),
+                            _ => None,
+                        }
+                    };
+                    let (Some(start), Some(end)) = (trim(param(inst, 2)?), trim(param(inst, 3)?)) else {
+                        return Err(Unsupported::Type("TRIMMED_CURVE (trimmed by points)".into()));
+                    };
+                    if !boolean(param(inst, 4)?)? {
+                        return Err(Unsupported::Type("TRIMMED_CURVE (reversed sense)".into()));
+                    }
+                    Curve::Trimmed { basis: Box::new(basis), start, end }
+                }
+                "SURFACE_CURVE" | "SEAM_CURVE" => r.curve(reference(param(inst, 1)?)?)?,
+                other => return Err(Unsupported::Type(other.to_string())),
+            })
+        })
+    }
+
+    fn spline_surface(&mut self, inst: &Instance) -> Conv<SplineSurface> {
+        let (surf, knots) = match inst.record("B_SPLINE_SURFACE") {
+            Some(s) => (s.params.clone(), inst.record("B_SPLINE_SURFACE_WITH_KNOTS").map(|k| k.params.clone())),
+            None => (inst.records[0].params[1..].to_vec(), Some(inst.records[0].params[8..].to_vec())),
+        };
+        let knots = knots.ok_or_else(|| Unsupported::Type(inst.type_name()))?;
+        if surf.len() < 7 || knots.len() < 4 {
+            return Err(StepError::plain("B-spline surface: missing parameters").into());
+        }
+        let degrees = (integer(&surf[0])?, integer(&surf[1])?);
+        let rows = match &surf[2] {
+            Param::List(rows) => rows.clone(),
+            other => return Err(bad("a net of point references", other).into()),
+        };
+        let mut points = Vec::with_capacity(rows.len());
+        for row in &rows {
+            points.push(refs(row)?.into_iter().map(|id| self.point(id)).collect::<Conv<Vec<_>>>()?);
+        }
+        let ints = |p: &Param| -> Result<Vec<usize>> {
+            match p {
+                Param::List(m) => m.iter().map(integer).collect(),
+                other => Err(bad("knot multiplicities", other)),
+            }
+        };
+        let (mu, mv, ku, kv) = (ints(&knots[0])?, ints(&knots[1])?, reals(&knots[2])?, reals(&knots[3])?);
+        let weights = match inst.record("RATIONAL_B_SPLINE_SURFACE") {
+            Some(r) => match &r.params[0] {
+                Param::List(rows) => Some(rows.iter().map(reals).collect::<Result<Vec<_>>>()?),
+                other => return Err(bad("rows of weights", other).into()),
+            },
+            None => None,
+        };
+        Ok(SplineSurface {
+            degrees,
+            knots_u: expand_knots(&ku, &mu),
+            knots_v: expand_knots(&kv, &mv),
+            points,
+            weights,
+            closed: (boolean(&surf[4])?, boolean(&surf[5])?),
+        })
+    }
+
+    fn surface(&mut self, id: u64) -> Conv<Surface> {
+        self.with(id, |r, inst| {
+            if inst.record("B_SPLINE_SURFACE_WITH_KNOTS").is_some() {
+                return Ok(Surface::Spline(r.spline_surface(inst)?));
+            }
+            let axes = |r: &mut Self| -> Conv<Axes> { r.axes(reference(param(inst, 1)?)?) };
+            Ok(match inst.records[0].name.as_str() {
+                "PLANE" => Surface::Plane(axes(r)?),
+                "CYLINDRICAL_SURFACE" => Surface::Cylinder { axes: axes(r)?, radius: real(param(inst, 2)?)? },
+                "CONICAL_SURFACE" => {
+                    Surface::Cone { axes: axes(r)?, radius: real(param(inst, 2)?)?, semi_angle: real(param(inst, 3)?)? }
+                }
+                "SPHERICAL_SURFACE" => Surface::Sphere { axes: axes(r)?, radius: real(param(inst, 2)?)? },
+                "TOROIDAL_SURFACE" => Surface::Torus {
+                    axes: axes(r)?,
+                    major_radius: real(param(inst, 2)?)?,
+                    minor_radius: real(param(inst, 3)?)?,
+                },
+                "SURFACE_OF_REVOLUTION" => {
+                    let profile = r.curve(reference(param(inst, 1)?)?)?;
+                    let (axis_origin, axis) = r.with(reference(param(inst, 2)?)?, |r, a| {
+                        let o = to3(&r.point(reference(param(a, 1)?)?)?);
+                        let z = match param(a, 2)? {
+                            Param::Unset => [0.0, 0.0, 1.0],
+                            p => r.direction(reference(p)?)?,
+                        };
+                        Ok((o, z))
+                    })?;
+                    Surface::Revolution { profile, axis_origin, axis }
+                }
+                "SURFACE_OF_LINEAR_EXTRUSION" => {
+                    let profile = r.curve(reference(param(inst, 1)?)?)?;
+                    Surface::Extrusion { profile, direction: to3(&r.vector(reference(param(inst, 2)?)?)?) }
+                }
+                "RECTANGULAR_TRIMMED_SURFACE" => {
+                    let basis = r.surface(reference(param(inst, 1)?)?)?;
+                    let v = |i| real(param(inst, i)?);
+                    if !(boolean(param(inst, 6)?)? && boolean(param(inst, 7)?)?) {
+                        return Err(Unsupported::Type("RECTANGULAR_TRIMMED_SURFACE (reversed sense)".into()));
+                    }
+                    Surface::Trimmed { basis: Box::new(basis), u: (v(2)?, v(3)?), v: (v(4)?, v(5)?) }
+                }
+                other => return Err(Unsupported::Type(other.to_string())),
+            })
+        })
+    }
+
+    /// A face: its surface and its loops from the pcurves its edges carry on that surface.
+    fn face(&mut self, inst: &Instance) -> Conv<Face> {
+        let surface_id = reference(param(inst, 2)?)?;
+        let surface = self.surface(surface_id)?;
+        let mut loops = Vec::new();
+        let mut outer = None;
+        for bound in refs(param(inst, 1)?)? {
+            let b = self.get(bound)?;
+            if b.records[0].name == "FACE_OUTER_BOUND" {
+                outer = Some(loops.len());
+            }
+            let forward = boolean(param(&b, 2)?)?;
+            let lp = self.get(reference(param(&b, 1)?)?)?;
+            if lp.records[0].name != "EDGE_LOOP" {
+                return Err(Unsupported::Type(format!("face bound {}", lp.records[0].name)));
+            }
+            let mut pieces = Vec::new();
+            for oe in refs(param(&lp, 1)?)? {
+                let oe = self.get(oe)?;
+                let oriented = boolean(param(&oe, 4)?)?;
+                let edge = self.get(reference(param(&oe, 3)?)?)?;
+                let mut ends = Vec::with_capacity(2);
+                for v in [1, 2] {
+                    let vp = self.get(reference(param(&edge, v)?)?)?;
+                    ends.push(to3(&self.point(reference(param(&vp, 1)?)?)?));
+                }
+                let same_sense = boolean(param(&edge, 4)?)?;
+                let (space, pcurve) = self.pcurve_on(reference(param(&edge, 3)?)?, surface_id)?;
+                let (t0, t1) = (parameter_on(&space, ends[0])?, parameter_on(&space, ends[1])?);
+                let (lo, mut hi) = if same_sense { (t0, t1) } else { (t1, t0) };
+                if hi <= lo && matches!(space, Curve::Circle { .. } | Curve::Ellipse { .. }) {
+                    hi += std::f64::consts::TAU;
+                }
+                let piece = Curve::Trimmed { basis: Box::new(pcurve), start: lo, end: hi };
+                pieces.push((piece, oriented == same_sense));
+            }
+            if !forward {
+                pieces.reverse();
+                pieces.iter_mut().for_each(|p| p.1 = !p.1);
+            }
+            let lp: Option<Vec<Curve>> =
+                pieces.into_iter().map(|(c, fwd)| if fwd { Some(c) } else { reversed(c) }).collect();
+            loops.push(lp.ok_or_else(|| Unsupported::Type("face loop with a reversed conic pcurve".into()))?);
+        }
+        Ok(Face { name: inst_name(inst), surface, loops, outer })
+    }
+
+    /// The 3-D curve of an edge's geometry and its 2-D pcurve on the surface `surface_id`
+    /// (same parametrisation, as ISO 10303-42 requires of a surface curve).
+    fn pcurve_on(&mut self, edge_geometry: u64, surface_id: u64) -> Conv<(Curve, Curve)> {
+        let g = self.get(edge_geometry)?;
+        if !matches!(g.records[0].name.as_str(), "SURFACE_CURVE" | "SEAM_CURVE") {
+            return Err(Unsupported::Type(format!("face edge without pcurves ({})", g.records[0].name)));
+        }
+        let space = self.curve(reference(param(&g, 1)?)?)?;
+        for pc in refs(param(&g, 2)?)? {
+            let pci = self.get(pc)?;
+            if pci.records[0].name != "PCURVE" || reference(param(&pci, 1)?)? != surface_id {
+                continue;
+            }
+            let rep = self.get(reference(param(&pci, 2)?)?)?;
+            let items = refs(param(&rep, 1)?)?;
+            self.visited.insert(reference(param(&rep, 2)?)?);
+            let c = items.first().ok_or_else(|| StepError::plain("an empty pcurve representation"))?;
+            return Ok((space, self.curve(*c)?));
+        }
+        Err(Unsupported::Type("face edge without a pcurve on its face's surface".into()))
+    }
+}
+
+/// The same curve run backwards: c(a + b − t) on [a, b] (lines, splines and trimmed
+/// lines and splines; `None` for conics).
+pub fn reversed(c: Curve) -> Option<Curve> {
+    Some(match c {
+        Curve::Spline(mut s) => {
+            let (a, b) = (s.knots[s.degree], s.knots[s.knots.len() - 1 - s.degree]);
+            s.points.reverse();
+            if let Some(w) = s.weights.as_mut() {
+                w.reverse();
+            }
+            s.knots = s.knots.iter().rev().map(|k| a + b - k).collect();
+            Curve::Spline(s)
+        }
+        Curve::Trimmed { basis, start, end } => match *basis {
+            Curve::Line { origin, direction } => Curve::Trimmed {
+                basis: Box::new(Curve::Line { origin, direction: direction.iter().map(|d| -d).collect() }),
+                start: -end,
+                end: -start,
+            },
+            Curve::Spline(s) => {
+                let (a, b) = (s.knots[s.degree], s.knots[s.knots.len() - 1 - s.degree]);
+                Curve::Trimmed { basis: Box::new(reversed(Curve::Spline(s))?), start: a + b - end, end: a + b - start }
+            }
+            _ => return None,
+        },
+        Curve::Line { origin, direction } => {
+            let end: Vec<f64> = origin.iter().zip(&direction).map(|(o, d)| o + d).collect();
+            Curve::Line { origin: end, direction: direction.iter().map(|d| -d).collect() }
+        }
+        _ => return None,
+    })
+}
+
+/// Whether a placement is the world frame.
+pub fn is_world(a: &Axes) -> bool {
+    a.origin == [0.0; 3] && a.z == [0.0, 0.0, 1.0] && a.x == [1.0, 0.0, 0.0]
+}
+
+/// e(θ) = cos θ x + sin θ y of a placement.
+pub fn radial(a: &Axes, theta: f64) -> P3 {
+    let y = cross(a.z, a.x);
+    std::array::from_fn(|k| theta.cos() * a.x[k] + theta.sin() * y[k])
+}
+
+/// The parameter of the point `p` (a vertex) on a 3-D curve: projection for lines, the
+/// angle for conics, the closest point for splines.
+fn parameter_on(c: &Curve, p: P3) -> Conv<f64> {
+    Ok(match c {
+        Curve::Line { origin, direction } => {
+            let (o, d) = (to3(origin), to3(direction));
+            dot(std::array::from_fn(|k| p[k] - o[k]), d) / dot(d, d)
+        }
+        Curve::Circle { axes, .. } | Curve::Ellipse { axes, .. } => {
+            let q: P3 = std::array::from_fn(|k| p[k] - axes.origin[k]);
+            let (a, b) = match c {
+                Curve::Ellipse { a, b, .. } => (*a, *b),
+                _ => (1.0, 1.0),
+            };
+            let t = (dot(q, axes.y()) / b).atan2(dot(q, axes.x) / a);
+            if t < 0.0 { t + std::f64::consts::TAU } else { t }
+        }
+        Curve::Spline(s) => crate::kernel::closest_parameter(s, p)?,
+        Curve::Trimmed { basis, .. } => parameter_on(basis, p)?,
+    })
+}
