@@ -19,5 +19,8 @@ pub fn nurbs<const D: usize>(s: &SplineCurve) -> Result<NurbsCurve<D>> {
 /// The parameter of the point of the spline closest to `p`.
 pub fn closest_parameter(s: &SplineCurve, p: P3) -> Result<f64> {
     let c = nurbs::<3>(s)?;
-    Ok(c.closest_point(&Point::<3>::new(p[0], p[1], p[2])).0)
+    let scale = s.points.iter().flatten().fold(1.0f64, |m, x| m.max(x.abs()));
+    c.closest_point(&Point::<3>::new(p[0], p[1], p[2]), 1e-12 * scale)
+        .map(|n| n.t)
+        .map_err(|e| StepError::plain(format!("closest point: {e}")))
 }

@@ -15,7 +15,7 @@ use splinekit::basis::Side;
 use splinekit::curve::{Curve as KernelCurve, Interval};
 use splinekit::surface::Surface as KernelSurface;
 use splinekit_scene::bfunctions::BFunctionDoc;
-use splinekit_scene::blending::{BlendingSource, LocalDoc, LocalPatchDoc};
+use splinekit_scene::blending::{BlendingSource, BlendingSplineDoc, LocalDoc, LocalPatchDoc};
 use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
@@ -145,9 +145,9 @@ fn polynomial_local_degree(c: &CurveDocument) -> Option<usize> {
 
 /// The piece degree of a blending spline that is a piecewise polynomial: Bézier (or line)
 /// locals of degree d and a polynomial B-function of degree β give degree d + β.
-fn blending_polynomial_degree(d: &splinekit_scene::curves::BlendingSplineDoc) -> Option<usize> {
-    let beta = bfunction_degree(&d.bfunction)?;
-    let local = match &d.source {
+fn blending_polynomial_degree(d: &BlendingSplineDoc) -> Option<usize> {
+    let beta = bfunction_degree(d.bfunction.as_ref()?)?;
+    let local = match d.source().ok()? {
         BlendingSource::Model { local: LocalDoc::Bezier { degree }, .. } => *degree,
         BlendingSource::Explicit { local_curves, .. } => {
             local_curves.iter().map(polynomial_local_degree).collect::<Option<Vec<_>>>()?.into_iter().max()?
@@ -471,14 +471,17 @@ pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64
         other => {
             let blending_knots = match other {
                 SurfaceDocument::BlendingSplineSurface(b) => {
-                    let built = b.build_in::<3>().map_err(|e| plain("document", e))?;
+                    let built = b.surface::<3>().map_err(|e| plain("document", e))?;
                     let (ku, kv) = built.knots();
                     Some((dedup(ku.values()), dedup(kv.values())))
                 }
                 _ => None,
             };
             let polynomial = match other {
-                SurfaceDocument::BlendingSplineSurface(b) => match (&b.local, bfunction_degree(&b.bfunction)) {
+                SurfaceDocument::BlendingSplineSurface(b) => match (
+                    b.local.as_ref().unwrap_or(&LocalPatchDoc::Bezier { degree: [3, 3] }),
+                    b.bfunction.as_ref().and_then(bfunction_degree),
+                ) {
                     (LocalPatchDoc::Bezier { degree }, Some(beta)) => Some((degree[0] + beta, degree[1] + beta)),
                     _ => None,
                 },

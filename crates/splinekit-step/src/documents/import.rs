@@ -12,7 +12,7 @@ use splinekit::Point;
 use splinekit::curve::{Curve as KernelCurve, NurbsCurve};
 use splinekit_scene::curves::{BSplineDoc, CircleDoc, EllipseDoc, LineDoc, NurbsDoc};
 use splinekit_scene::surfaces::{
-    BSplineSurfaceDoc, ExtrusionDoc, NurbsSurfaceDoc, PlaneDoc, RadiusDoc, RadiusHeightDoc, RevolutionDoc, TorusDoc,
+    BSplineSurfaceDoc, CylinderDoc, ExtrusionDoc, NurbsSurfaceDoc, PlaneDoc, RevolutionDoc, SphereDoc, TorusDoc,
     TrimmedDoc,
 };
 use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
@@ -273,10 +273,10 @@ fn quadric_doc(basis: &Surface, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> R
     let full = u0 == 0.0 && u1 == TAU;
     Ok(Some(match basis {
         Surface::Cylinder { axes, radius } if is_world(axes) && full && v0 == 0.0 => {
-            SurfaceDocument::Cylinder(RadiusHeightDoc { radius: *radius, height: v1 })
+            SurfaceDocument::Cylinder(CylinderDoc { radius: *radius, height: v1 })
         }
         Surface::Sphere { axes, radius } if is_world(axes) && full && (v0, v1) == (-FRAC_PI_2, FRAC_PI_2) => {
-            SurfaceDocument::Sphere(RadiusDoc { radius: *radius })
+            SurfaceDocument::Sphere(SphereDoc { radius: *radius })
         }
         Surface::Torus { axes, major_radius, minor_radius } if is_world(axes) && full && (v0, v1) == (0.0, TAU) => {
             SurfaceDocument::Torus(TorusDoc { major_radius: *major_radius, minor_radius: *minor_radius })
