@@ -58,10 +58,36 @@ impl<const D: usize> Affine<D> {
     pub fn apply_vector(&self, v: &Point<D>) -> Point<D> {
         self.linear * v
     }
-    /// Maps `[c, c', c'', …]`: the first entry as a point, the rest as vectors.
-    pub fn apply_derivatives(&self, values: &mut [Point<D>]) {
-        for (k, v) in values.iter_mut().enumerate() {
-            *v = if k == 0 { self.apply_point(v) } else { self.apply_vector(v) };
+    /// Maps a position in the frame of a local piece with origin o: o + T(p − o), the map
+    /// acting about o instead of the world origin.
+    #[inline]
+    pub fn apply_point_about(&self, origin: &Point<D>, p: &Point<D>) -> Point<D> {
+        origin + self.apply_point(&(p - origin))
+    }
+    /// Maps `[c, c', c'', …]` about `origin`: the first entry as a point
+    /// ([`Self::apply_point_about`]), the derivatives as vectors (A v) — the frame of a
+    /// local piece applied to its values.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::frame::Affine;
+    /// // A quarter turn about o = (1, 0): the point (2, 0) goes to (1, 1), the velocity
+    /// // (0, 1) to (−1, 0).
+    /// let turn = Affine::rotation_2d(std::f64::consts::FRAC_PI_2);
+    /// let mut jet = [Point::<2>::new(2.0, 0.0), Point::<2>::new(0.0, 1.0)];
+    /// turn.apply_derivatives_about(&Point::<2>::new(1.0, 0.0), &mut jet);
+    /// assert!((jet[0] - Point::<2>::new(1.0, 1.0)).norm() < 1e-15);
+    /// assert!((jet[1] - Point::<2>::new(-1.0, 0.0)).norm() < 1e-15);
+    /// ```
+    #[inline]
+    pub fn apply_derivatives_about(&self, origin: &Point<D>, values: &mut [Point<D>]) {
+        if let Some((first, rest)) = values.split_first_mut() {
+            *first = self.apply_point_about(origin, first);
+            for v in rest {
+                *v = self.apply_vector(v);
+            }
         }
     }
     /// The inverse map, if A is invertible.

@@ -26,13 +26,16 @@ pub mod curve;
 pub mod error;
 pub mod fit;
 pub mod frame;
+pub mod interval;
 pub mod ops;
+pub mod quadrature;
 pub mod query;
 pub mod subdivision;
 pub mod surface;
 pub mod taylor;
 
 pub use error::{Error, Result};
+pub use interval::Interval;
 
 /// The README's Rust examples, compiled and run as doctests.
 #[doc = include_str!("../../../README.md")]

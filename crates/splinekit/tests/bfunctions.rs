@@ -189,7 +189,7 @@ fn two_curve_blends_follow_the_definition_and_join_smoothly() {
         }
     }
     assert!(TwoCurveBlend::new(c1(), c2(), 1.0, BFunction::Linear).is_err());
-    let plain = PlainBlend::new(c1(), c2(), BFunction::Linear);
+    let plain = PlainBlend::new(c1(), c2(), BFunction::Linear).unwrap();
     assert!((plain.point(0.5) - (c1().point(std::f64::consts::PI) + c2().point(0.5)) * 0.5).norm() < 1e-15);
 }
 

@@ -193,7 +193,8 @@ fn chord_length_knots_space_the_locals_evenly_along_the_model() {
     )
     .unwrap();
     let knots = c.knots().values();
-    let lengths: Vec<f64> = knots.windows(2).map(|w| arc_length(h.as_ref(), w[0], w[1], 1e-10)).collect();
+    let lengths: Vec<f64> =
+        knots.windows(2).map(|w| arc_length(h.as_ref(), splinekit::Interval::new(w[0], w[1]), 1e-10)).collect();
     let mean = lengths.iter().sum::<f64>() / lengths.len() as f64;
     for l in &lengths {
         assert!((l - mean).abs() < 1e-4 * mean, "{lengths:?}");

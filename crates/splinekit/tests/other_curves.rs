@@ -254,6 +254,6 @@ fn affine_frames_map_points_and_vectors() {
     assert!((inv.apply_point(&m.apply_point(&p3(0.3, -2.0, 5.0))) - p3(0.3, -2.0, 5.0)).norm() < 1e-14);
     assert!(Affine::<3>::scale(p3(1.0, 0.0, 1.0)).inverse().is_err());
     let mut d = [p3(1.0, 0.0, 0.0), p3(1.0, 0.0, 0.0)];
-    m.apply_derivatives(&mut d);
+    m.apply_derivatives_about(&Point::<3>::zeros(), &mut d);
     assert!((d[0] - p3(1.0, 3.0, 3.0)).norm() < 1e-15 && (d[1] - p3(0.0, 1.0, 0.0)).norm() < 1e-15);
 }

@@ -3,6 +3,7 @@
 pub mod bernstein;
 pub mod bfunction;
 pub mod bspline_basis;
+pub mod erbs;
 pub mod knot_vector;
 pub mod spline_axis;
 

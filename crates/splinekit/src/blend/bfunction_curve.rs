@@ -13,9 +13,6 @@ impl Curve<1> for BFunctionCurve {
     fn domain(&self) -> Interval {
         Interval::new(0.0, 1.0)
     }
-    fn is_closed(&self) -> bool {
-        false
-    }
     fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<1>]) {
         let mut v: SmallVec<[f64; 8]> = smallvec![0.0; out.len()];
         self.0.eval(t, &mut v);

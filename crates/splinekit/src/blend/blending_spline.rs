@@ -20,12 +20,13 @@ use std::sync::Arc;
 use smallvec::{SmallVec, smallvec};
 
 use super::animation::Track;
-use super::hermite::IntervalBezier;
+use super::hermite::{IntervalBezier, hermite_bezier};
 use super::knots::BlendKnots;
+use super::leibniz::blend_derivatives;
 use super::osculating_arc::OsculatingArc;
 use crate::Point;
 use crate::basis::{BFunction, Side};
-use crate::curve::{Curve, Interval};
+use crate::curve::{Curve, Interval, Reparametrized};
 use crate::error::{Error, Result};
 use crate::frame::Affine;
 
@@ -85,21 +86,17 @@ impl<const D: usize> Local<D> {
         self.transform = transform;
         if let LocalCurve::Bezier { fitted, world } = &mut self.curve {
             let o = self.origin;
-            for (w, p) in world.points.iter_mut().zip(&fitted.points) {
-                *w = o + transform.apply_point(&(p - o));
-            }
+            *world = fitted.map_curve(|b| b.map_points(|p| transform.apply_point_about(&o, p)));
         }
     }
     /// World values at t: o + T(ℓ − o) for the position, T's linear part for derivatives.
+    #[inline]
     fn eval(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         match &self.curve {
             LocalCurve::Bezier { world, .. } => world.eval_side(t, side, out),
             LocalCurve::General(c) => {
                 c.eval_side(t, side, out);
-                out[0] = self.origin + self.transform.apply_point(&(out[0] - self.origin));
-                for o in out.iter_mut().skip(1) {
-                    *o = self.transform.apply_vector(o);
-                }
+                self.transform.apply_derivatives_about(&self.origin, out);
             }
         }
     }
@@ -184,10 +181,10 @@ impl<const D: usize> BlendingSplineCurve<D> {
             .enumerate()
             .map(|(k, curve)| {
                 let (a, b) = knots.support(k);
-                let mapped: Arc<dyn Curve<D>> = Arc::new(MappedCurve::onto(curve, a, b));
-                Local::new(LocalCurve::General(mapped), knots.centre(k))
+                let mapped: Arc<dyn Curve<D>> = Arc::new(Reparametrized::new(curve, Interval::new(a, b))?);
+                Ok(Local::new(LocalCurve::General(mapped), knots.centre(k)))
             })
-            .collect();
+            .collect::<Result<_>>()?;
         Ok(BlendingSplineCurve { locals, knots, bfunction, source: None })
     }
 
@@ -230,7 +227,7 @@ impl<const D: usize> BlendingSplineCurve<D> {
                 let mut target = [Point::<D>::zeros(); 4];
                 self.eval(t, &mut target);
                 let (a, b) = knots.support(k);
-                LocalCurve::bezier(IntervalBezier::hermite(&target, a, b - a, (t - a) / (b - a))?)
+                LocalCurve::bezier(hermite_bezier(&target, Interval::new(a, b), t)?)
             }
         };
         self.knots = knots;
@@ -328,7 +325,7 @@ fn local_from_model<const D: usize>(
 ) -> Result<LocalCurve<D>> {
     let c = knots.centre(k);
     Ok(match kind {
-        LocalKind::SubCurve => LocalCurve::General(Arc::new(SharedCurve(model.clone()))),
+        LocalKind::SubCurve => LocalCurve::General(model.clone()),
         LocalKind::Arc => LocalCurve::General(Arc::new(OsculatingArc::of(model.as_ref(), c)?)),
         LocalKind::Bezier(d) => {
             if d == 0 || d > 20 {
@@ -337,7 +334,7 @@ fn local_from_model<const D: usize>(
             let mut target = vec![Point::<D>::zeros(); d + 1];
             model.eval(c, &mut target);
             let (a, b) = knots.support(k);
-            LocalCurve::bezier(IntervalBezier::hermite(&target, a, b - a, (c - a) / (b - a))?)
+            LocalCurve::bezier(hermite_bezier(&target, Interval::new(a, b), c)?)
         }
     })
 }
@@ -371,55 +368,6 @@ fn chord_length_knots<const D: usize>(model: &dyn Curve<D>, uniform: &[f64]) -> 
     knots
 }
 
-/// A local that is the (shared) model curve itself.
-struct SharedCurve<const D: usize>(Arc<dyn Curve<D>>);
-
-impl<const D: usize> Curve<D> for SharedCurve<D> {
-    fn domain(&self) -> Interval {
-        self.0.domain()
-    }
-    fn is_closed(&self) -> bool {
-        self.0.is_closed()
-    }
-    fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-        self.0.eval_side(t, side, out)
-    }
-}
-
-/// A curve whose domain [a₀, a₁] is mapped affinely onto [b₀, b₁]:
-/// m(t) = c(a₀ + (t − b₀)s), s = (a₁ − a₀)/(b₁ − b₀), m^{(j)} = s^j c^{(j)}.
-struct MappedCurve<const D: usize> {
-    curve: Arc<dyn Curve<D>>,
-    from: f64,
-    to: f64,
-    scale: f64,
-}
-
-impl<const D: usize> MappedCurve<D> {
-    fn onto(curve: Arc<dyn Curve<D>>, b0: f64, b1: f64) -> Self {
-        let dom = curve.domain();
-        MappedCurve { scale: dom.length() / (b1 - b0), from: dom.start, to: b0, curve }
-    }
-}
-
-impl<const D: usize> Curve<D> for MappedCurve<D> {
-    fn domain(&self) -> Interval {
-        let d = self.curve.domain();
-        Interval::new(self.to, self.to + d.length() / self.scale)
-    }
-    fn is_closed(&self) -> bool {
-        false
-    }
-    fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-        self.curve.eval_side(self.from + (t - self.to) * self.scale, side, out);
-        let mut s = 1.0;
-        for o in out.iter_mut().skip(1) {
-            s *= self.scale;
-            *o *= s;
-        }
-    }
-}
-
 impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
     fn domain(&self) -> Interval {
         self.knots.domain()
@@ -441,22 +389,6 @@ impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
         self.locals[span.second].eval(span.t + span.second_shift, side, &mut b);
         let mut bf: SmallVec<[f64; 8]> = smallvec![0.0; n];
         self.bfunction.eval(span.w, &mut bf);
-        blend_leibniz(&a, &b, &bf, 1.0 / span.width, out);
-    }
-}
-
-/// out^{(r)} = a^{(r)} + Σ_{j≤r} C(r, j) B^{(j)} h^j (b − a)^{(r−j)}: the Leibniz rule for
-/// a + B((t − c)/Δ)(b − a) with h = 1/Δ.
-pub(crate) fn blend_leibniz<const D: usize>(a: &[Point<D>], b: &[Point<D>], bf: &[f64], h: f64, out: &mut [Point<D>]) {
-    for r in 0..out.len() {
-        let mut v = a[r];
-        let (mut scale, mut choose) = (1.0, 1.0);
-        for j in 0..=r {
-            v += (b[r - j] - a[r - j]) * (choose * bf[j] * scale);
-            scale *= h;
-            // C(r, j+1) = C(r, j)(r − j)/(j + 1), exact for the small orders used here.
-            choose = choose * (r - j) as f64 / (j + 1) as f64;
-        }
-        out[r] = v;
+        blend_derivatives(&a, &b, &bf, 1.0 / span.width, out);
     }
 }

@@ -25,8 +25,9 @@ use smallvec::{SmallVec, smallvec};
 use super::animation::Track;
 use super::hermite::inverse_hermite_matrix;
 use super::knots::{BlendKnots, BlendSpan};
+use super::leibniz::{blend_derivatives, blend_derivatives_strided};
 use crate::Point;
-use crate::basis::{BFunction, Side, bernstein_derivatives, binomial};
+use crate::basis::{BFunction, Side, bernstein_derivatives};
 use crate::curve::Interval;
 use crate::error::{Error, Result};
 use crate::frame::Affine;
@@ -94,19 +95,15 @@ impl<const D: usize> LocalPatch<D> {
             }
             PatchShape::Shared(s) => {
                 s.eval_partials(u, v, du, dv, out);
-                out[0] = self.origin + self.transform.apply_point(&(out[0] - self.origin));
-                for o in out.iter_mut().take((du + 1) * (dv + 1)).skip(1) {
-                    *o = self.transform.apply_vector(o);
-                }
+                self.transform.apply_derivatives_about(&self.origin, &mut out[..(du + 1) * (dv + 1)]);
             }
         }
     }
     fn set_transform(&mut self, t: Affine<D>) {
         self.transform = t;
         if let PatchShape::Bezier(p) = &mut self.shape {
-            let o = self.origin;
             for (w, c) in p.world.iter_mut().zip(&p.net) {
-                *w = o + t.apply_point(&(c - o));
+                *w = t.apply_point_about(&self.origin, c);
             }
         }
     }
@@ -361,37 +358,20 @@ impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
         let mut bv: SmallVec<[f64; 8]> = smallvec![0.0; dv + 1];
         self.bfunction.eval(su.w, &mut bu);
         self.bfunction.eval(sv.w, &mut bv);
-        // Blend in u for the two v-rows: t_b = s_0b + Σ_p C(i,p) B^{(p)} h_u^p (s_1b − s_0b)_{i−p, j}.
+        // Blend in u for the two v-rows (each v-order j a strided column of partials), then
+        // in v for each u-order i (a contiguous row).
         let mut t: SmallVec<[Point<D>; 18]> = smallvec![Point::<D>::zeros(); 2 * w];
-        let hu = 1.0 / su.width;
+        let (hu, hv) = (1.0 / su.width, 1.0 / sv.width);
+        let row = dv + 1;
         for b in 0..2 {
             let (s0, s1) = (&s[b * w..(b + 1) * w], &s[(2 + b) * w..(3 + b) * w]);
-            for i in 0..=du {
-                for j in 0..=dv {
-                    let mut acc = s0[i * (dv + 1) + j];
-                    let mut scale = 1.0;
-                    for p in 0..=i {
-                        let idx = (i - p) * (dv + 1) + j;
-                        acc += (s1[idx] - s0[idx]) * (binomial(i, p) * bu[p] * scale);
-                        scale *= hu;
-                    }
-                    t[b * w + i * (dv + 1) + j] = acc;
-                }
+            for j in 0..=dv {
+                blend_derivatives_strided(&s0[j..], &s1[j..], &bu, hu, &mut t[b * w + j..], row, du + 1);
             }
         }
-        // Blend in v.
-        let hv = 1.0 / sv.width;
         for i in 0..=du {
-            for j in 0..=dv {
-                let mut acc = t[i * (dv + 1) + j];
-                let mut scale = 1.0;
-                for q in 0..=j {
-                    let idx = i * (dv + 1) + j - q;
-                    acc += (t[w + idx] - t[idx]) * (binomial(j, q) * bv[q] * scale);
-                    scale *= hv;
-                }
-                out[i * (dv + 1) + j] = acc;
-            }
+            let (t0, t1) = (&t[i * row..(i + 1) * row], &t[w + i * row..w + (i + 1) * row]);
+            blend_derivatives(t0, t1, &bv, hv, &mut out[i * row..(i + 1) * row]);
         }
     }
 

@@ -48,9 +48,6 @@ impl<const D: usize> Curve<D> for OsculatingArc<D> {
     fn domain(&self) -> Interval {
         Interval::new(f64::NEG_INFINITY, f64::INFINITY)
     }
-    fn is_closed(&self) -> bool {
-        false
-    }
     fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<D>]) {
         let tau = t - self.centre_parameter;
         let (k, s) = (self.curvature, self.speed);

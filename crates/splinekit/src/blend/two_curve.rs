@@ -12,22 +12,43 @@
 
 use smallvec::{SmallVec, smallvec};
 
+use super::leibniz::blend_derivatives;
 use crate::Point;
-use crate::basis::{BFunction, Side, binomial};
-use crate::curve::unit_parameter::unit_derivatives;
-use crate::curve::{Curve, Interval};
+use crate::basis::{BFunction, Side};
+use crate::curve::{Curve, Interval, Reparametrized};
 use crate::error::{Error, Result};
+
+/// A curve of a blend, reparametrised to [0, 1].
+type UnitCurve<const D: usize> = Reparametrized<Box<dyn Curve<D>>>;
 
 /// The seeds' blend of two curves with overlap x.
 pub struct TwoCurveBlend<const D: usize> {
-    first: Box<dyn Curve<D>>,
-    second: Box<dyn Curve<D>>,
+    first: UnitCurve<D>,
+    second: UnitCurve<D>,
     overlap: f64,
     bfunction: BFunction,
 }
 
 impl<const D: usize> TwoCurveBlend<D> {
-    /// Blends `first` into `second` over the overlap fraction x ∈ (0, 1).
+    /// Blends `first` into `second` over the overlap fraction x ∈ (0, 1); both curves need
+    /// finite, non-empty domains.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::basis::BFunction;
+    /// use splinekit::blend::TwoCurveBlend;
+    /// use splinekit::curve::Curve;
+    /// use splinekit::curve::model::Line;
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let first = Box::new(Line::new(p(0.0, 0.0), p(1.0, 0.0)).unwrap());
+    /// let second = Box::new(Line::new(p(0.5, 0.0), p(1.5, 1.0)).unwrap());
+    /// let blend = TwoCurveBlend::new(first, second, 0.5, BFunction::Trigonometric).unwrap();
+    /// // The first curve alone before x, the second alone after 1.
+    /// assert_eq!(blend.point(0.25), p(0.25, 0.0));
+    /// assert_eq!(blend.point(1.25), p(1.25, 0.75));
+    /// ```
     pub fn new(
         first: Box<dyn Curve<D>>,
         second: Box<dyn Curve<D>>,
@@ -37,6 +58,7 @@ impl<const D: usize> TwoCurveBlend<D> {
         if !(overlap > 0.0 && overlap < 1.0) {
             return Err(Error::invalid("overlap", format!("must be in (0, 1), got {overlap}")));
         }
+        let (first, second) = (Reparametrized::unit(first)?, Reparametrized::unit(second)?);
         Ok(TwoCurveBlend { first, second, overlap, bfunction })
     }
 }
@@ -45,51 +67,42 @@ impl<const D: usize> Curve<D> for TwoCurveBlend<D> {
     fn domain(&self) -> Interval {
         Interval::new(0.0, 1.0 + self.overlap)
     }
-    fn is_closed(&self) -> bool {
-        false
-    }
     fn breakpoints(&self) -> Vec<f64> {
         vec![0.0, self.overlap, 1.0, 1.0 + self.overlap]
     }
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         let x = self.overlap;
         let t = t.clamp(0.0, 1.0 + x);
-        let k = out.len() - 1;
         let before = |b: f64| t < b || (t == b && side == Side::Left);
         if before(x) {
-            out.copy_from_slice(&unit_derivatives(self.first.as_ref(), t, side, k));
+            self.first.eval_side(t, side, out);
         } else if !before(1.0) {
-            out.copy_from_slice(&unit_derivatives(self.second.as_ref(), t - x, side, k));
+            self.second.eval_side(t - x, side, out);
         } else {
-            let a = unit_derivatives(self.first.as_ref(), t, side, k);
-            let b = unit_derivatives(self.second.as_ref(), t - x, side, k);
-            let mut bf: SmallVec<[f64; 8]> = smallvec![0.0; k + 1];
+            let n = out.len();
+            let mut a: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); n];
+            let mut b: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); n];
+            self.first.eval_side(t, side, &mut a);
+            self.second.eval_side(t - x, side, &mut b);
+            let mut bf: SmallVec<[f64; 8]> = smallvec![0.0; n];
             self.bfunction.eval((t - x) / (1.0 - x), &mut bf);
-            let inv = 1.0 / (1.0 - x);
-            for m in 0..=k {
-                let mut v = a[m];
-                let mut scale = 1.0;
-                for j in 0..=m {
-                    v += (b[m - j] - a[m - j]) * (binomial(m, j) * bf[j] * scale);
-                    scale *= inv;
-                }
-                out[m] = v;
-            }
+            blend_derivatives(&a, &b, &bf, 1.0 / (1.0 - x), out);
         }
     }
 }
 
 /// The plain blend c₁(t) + B(t)(c₂(t) − c₁(t)) of two curves on a common domain [0, 1].
 pub struct PlainBlend<const D: usize> {
-    first: Box<dyn Curve<D>>,
-    second: Box<dyn Curve<D>>,
+    first: UnitCurve<D>,
+    second: UnitCurve<D>,
     bfunction: BFunction,
 }
 
 impl<const D: usize> PlainBlend<D> {
-    /// Blends `first` into `second` (both reparametrised to [0, 1]).
-    pub fn new(first: Box<dyn Curve<D>>, second: Box<dyn Curve<D>>, bfunction: BFunction) -> Self {
-        PlainBlend { first, second, bfunction }
+    /// Blends `first` into `second` (both reparametrised to [0, 1], so their domains must
+    /// be finite and non-empty).
+    pub fn new(first: Box<dyn Curve<D>>, second: Box<dyn Curve<D>>, bfunction: BFunction) -> Result<Self> {
+        Ok(PlainBlend { first: Reparametrized::unit(first)?, second: Reparametrized::unit(second)?, bfunction })
     }
 }
 
@@ -97,22 +110,15 @@ impl<const D: usize> Curve<D> for PlainBlend<D> {
     fn domain(&self) -> Interval {
         Interval::new(0.0, 1.0)
     }
-    fn is_closed(&self) -> bool {
-        false
-    }
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         let t = t.clamp(0.0, 1.0);
-        let k = out.len() - 1;
-        let a = unit_derivatives(self.first.as_ref(), t, side, k);
-        let b = unit_derivatives(self.second.as_ref(), t, side, k);
-        let mut bf: SmallVec<[f64; 8]> = smallvec![0.0; k + 1];
+        let n = out.len();
+        let mut a: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); n];
+        let mut b: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); n];
+        self.first.eval_side(t, side, &mut a);
+        self.second.eval_side(t, side, &mut b);
+        let mut bf: SmallVec<[f64; 8]> = smallvec![0.0; n];
         self.bfunction.eval(t, &mut bf);
-        for m in 0..=k {
-            let mut v = a[m];
-            for j in 0..=m {
-                v += (b[m - j] - a[m - j]) * (binomial(m, j) * bf[j]);
-            }
-            out[m] = v;
-        }
+        blend_derivatives(&a, &b, &bf, 1.0, out);
     }
 }

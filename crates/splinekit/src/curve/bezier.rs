@@ -81,6 +81,12 @@ impl<const D: usize> BezierCurve<D> {
         BezierCurve { control_points: q }
     }
 
+    /// The same curve with every control point mapped by `f` (affine maps give the mapped
+    /// curve exactly: Bézier curves are affinely invariant).
+    pub fn map_points(&self, f: impl Fn(&Point<D>) -> Point<D>) -> Self {
+        BezierCurve { control_points: self.control_points.iter().map(f).collect() }
+    }
+
     /// The hodograph c'(t) as a Bézier curve of degree n − 1: n (P_{i+1} − P_i).
     /// A degree-0 curve has the zero curve as hodograph.
     pub fn hodograph(&self) -> Self {
@@ -122,23 +128,65 @@ pub fn cubic_matrix_form<const D: usize>(m: &[[f64; 4]; 4], geometry: &[Point<D>
 }
 
 /// De Casteljau with derivatives: writes c^{(k)}(t) for k = 0 … `out.len() − 1` of the
-/// Bézier curve with coefficients `points` (any linear space), t ∈ [0, 1].
+/// Bézier curve with coefficients `points` (any linear space), t ∈ [0, 1] (any t works:
+/// the polynomial is continued).
 ///
 /// Level r of the triangle holds n − r + 1 points; the derivative of order j = n − r is
-/// n!/(n−j)! Δ^j of them. Cost O(n² + k³); no heap allocation below degree 16.
+/// n!/(n−j)! Δ^j of them. Cost O(n² + k³). Up to 8 coefficients (degree 7) the triangle
+/// lives in fixed-size arrays the compiler unrolls; above, in a stack buffer up to 16 and
+/// on the heap beyond. This is the one home of Bézier derivatives: curves, rational
+/// curves, Hermite segments, polynomial B-functions, Bézier surfaces and the local Bézier
+/// pieces of blending splines all call it.
+///
+/// # Examples
+///
+/// ```
+/// use splinekit::curve::bezier::bezier_derivatives;
+/// // The cubic with coefficients 0, 0, 0, 1 is t³: at t = ½, (⅛, ¾, 3, 6).
+/// let mut out = [0.0; 4];
+/// bezier_derivatives(&[0.0, 0.0, 0.0, 1.0], 0.5, &mut out);
+/// assert_eq!(out, [0.125, 0.75, 3.0, 6.0]);
+/// ```
+#[inline]
 pub fn bezier_derivatives<T: Coefficient>(points: &[T], t: f64, out: &mut [T]) {
-    let n = points.len() - 1;
+    match points.len() {
+        1 => bezier_derivatives_fixed::<T, 1>(points, t, out),
+        2 => bezier_derivatives_fixed::<T, 2>(points, t, out),
+        3 => bezier_derivatives_fixed::<T, 3>(points, t, out),
+        4 => bezier_derivatives_fixed::<T, 4>(points, t, out),
+        5 => bezier_derivatives_fixed::<T, 5>(points, t, out),
+        6 => bezier_derivatives_fixed::<T, 6>(points, t, out),
+        7 => bezier_derivatives_fixed::<T, 7>(points, t, out),
+        8 => bezier_derivatives_fixed::<T, 8>(points, t, out),
+        _ => {
+            let mut b: SmallVec<[T; 16]> = SmallVec::from_slice(points);
+            let mut diff = b.clone();
+            de_casteljau_triangle(&mut b, &mut diff, t, out)
+        }
+    }
+}
+
+/// [`bezier_derivatives`] with the W coefficients in arrays.
+#[inline(always)]
+fn bezier_derivatives_fixed<T: Coefficient, const W: usize>(points: &[T], t: f64, out: &mut [T]) {
+    let mut b: [T; W] = points.try_into().expect("W coefficients");
+    let mut diff = b;
+    de_casteljau_triangle(&mut b, &mut diff, t, out)
+}
+
+/// The triangle of [`bezier_derivatives`] on the coefficients `b` (overwritten), with
+/// `diff` (as long as `b`) as scratch for the differences.
+#[inline(always)]
+fn de_casteljau_triangle<T: Coefficient>(b: &mut [T], diff: &mut [T], t: f64, out: &mut [T]) {
+    let n = b.len() - 1;
     let k = out.len() - 1;
-    let mut b: SmallVec<[T; 16]> = SmallVec::from_slice(points);
-    let mut diff: SmallVec<[T; 16]> = SmallVec::new();
     for o in out.iter_mut().skip(n + 1) {
         *o = T::zero();
     }
     for r in 0..=n {
         let j = n - r;
         if j <= k {
-            diff.clear();
-            diff.extend_from_slice(&b[..=j]);
+            diff[..=j].copy_from_slice(&b[..=j]);
             for s in 0..j {
                 for i in 0..j - s {
                     diff[i] = diff[i + 1] - diff[i];
@@ -158,9 +206,6 @@ pub fn bezier_derivatives<T: Coefficient>(points: &[T], t: f64, out: &mut [T]) {
 impl<const D: usize> Curve<D> for BezierCurve<D> {
     fn domain(&self) -> Interval {
         Interval::new(0.0, 1.0)
-    }
-    fn is_closed(&self) -> bool {
-        false
     }
     fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<D>]) {
         bezier_derivatives(&self.control_points, t.clamp(0.0, 1.0), out);

@@ -80,9 +80,6 @@ impl<const D: usize> Curve<D> for RationalBezierCurve<D> {
     fn domain(&self) -> Interval {
         Interval::new(0.0, 1.0)
     }
-    fn is_closed(&self) -> bool {
-        false
-    }
     fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<D>]) {
         let t = t.clamp(0.0, 1.0);
         let mut w: SmallVec<[f64; 8]> = smallvec![0.0; out.len()];

@@ -2,62 +2,8 @@
 
 use smallvec::{SmallVec, smallvec};
 
-use crate::Point;
 use crate::basis::Side;
-
-/// A closed parameter interval [start, end].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Interval {
-    /// Lower end.
-    pub start: f64,
-    /// Upper end.
-    pub end: f64,
-}
-
-impl Interval {
-    /// The interval [start, end].
-    pub const fn new(start: f64, end: f64) -> Self {
-        Interval { start, end }
-    }
-    /// end − start.
-    #[inline]
-    pub fn length(&self) -> f64 {
-        self.end - self.start
-    }
-    /// `t` clamped into the interval.
-    #[inline]
-    pub fn clamp(&self, t: f64) -> f64 {
-        t.clamp(self.start, self.end)
-    }
-    /// `t` wrapped periodically into [start, end] (the end itself is kept).
-    #[inline]
-    pub fn wrap(&self, t: f64) -> f64 {
-        if t >= self.start && t <= self.end {
-            return t;
-        }
-        let len = self.length();
-        let w = self.start + (t - self.start).rem_euclid(len);
-        if w >= self.end { self.start } else { w }
-    }
-    /// `t` wrapped into one period for a periodic curve, honouring the side: the right
-    /// limit at the end of the domain is the value at its start, and the left limit at the
-    /// start is the value at its end, so c(start) and c(end) agree to the last bit.
-    #[inline]
-    pub fn wrap_periodic(&self, t: f64, side: Side) -> f64 {
-        let w = if t >= self.start && t < self.end {
-            t
-        } else {
-            let r = self.start + (t - self.start).rem_euclid(self.length());
-            if r >= self.end { self.start } else { r }
-        };
-        if side == Side::Left && w == self.start { self.end } else { w }
-    }
-    /// The parameter start + s·(end − start).
-    #[inline]
-    pub fn lerp(&self, s: f64) -> f64 {
-        self.start + s * (self.end - self.start)
-    }
-}
+use crate::{Interval, Point};
 
 /// The Frenet frame of a curve at a parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -74,8 +20,8 @@ pub struct FrenetFrame<const D: usize> {
 
 /// A parametric curve c: [a, b] → ℝᴰ.
 ///
-/// Implementors provide [`Curve::domain`], [`Curve::is_closed`] and
-/// [`Curve::eval_side`], which writes the position and the first `out.len() − 1`
+/// Implementors provide [`Curve::domain`] and [`Curve::eval_side`] (and
+/// [`Curve::is_closed`] when the curve is periodic), which writes the position and the first `out.len() − 1`
 /// derivatives with respect to the curve's own parameter into a caller-provided buffer
 /// (no heap allocation per call for the curves of this crate at practical degrees).
 ///
@@ -85,8 +31,11 @@ pub trait Curve<const D: usize>: Send + Sync {
     /// The parameter domain [a, b].
     fn domain(&self) -> Interval;
 
-    /// Whether c(a) = c(b) with the curve continuing smoothly (periodic).
-    fn is_closed(&self) -> bool;
+    /// Whether c(a) = c(b) with the curve continuing smoothly (periodic). Most kinds are
+    /// open; the default says so.
+    fn is_closed(&self) -> bool {
+        false
+    }
 
     /// Writes c(t), c'(t), …, c^{(k)}(t) into `out[0..=k]`, k = `out.len() − 1`.
     /// At a parameter where the curve is not smooth, `side` selects the one-sided limit.
@@ -174,8 +123,7 @@ pub trait Curve<const D: usize>: Send + Sync {
     /// Arc length of the whole curve to the absolute tolerance `tolerance`
     /// (adaptive Gauss–Legendre, see [`crate::ops::length`]).
     fn length(&self, tolerance: f64) -> f64 {
-        let d = self.domain();
-        crate::ops::length::arc_length(self, d.start, d.end, tolerance)
+        crate::ops::length::arc_length(self, self.domain(), tolerance)
     }
 
     /// The point of the curve nearest to `query`, its distance within `accuracy`
@@ -205,20 +153,60 @@ pub fn curvature_from<const D: usize>(d1: &Point<D>, d2: &Point<D>) -> f64 {
     cross2.sqrt() / (s2 * s2.sqrt())
 }
 
-impl<const D: usize, C: Curve<D> + ?Sized> Curve<D> for Box<C> {
-    fn domain(&self) -> Interval {
-        (**self).domain()
-    }
-    fn is_closed(&self) -> bool {
-        (**self).is_closed()
-    }
-    fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-        (**self).eval_side(t, side, out)
-    }
-    fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
-        (**self).eval_many(params, order, out)
-    }
-    fn breakpoints(&self) -> Vec<f64> {
-        (**self).breakpoints()
-    }
+/// Implements [`Curve`] for a pointer to a curve, forwarding every method — the provided
+/// ones too, so an override in the pointee (a faster `eval_many`, an exact `length`) is
+/// kept behind `&C`, `Box<C>` and `Arc<C>`.
+macro_rules! forward_curve {
+    ($($lt:lifetime)? ; $ptr:ty) => {
+        impl<$($lt,)? const D: usize, C: Curve<D> + ?Sized> Curve<D> for $ptr {
+            #[inline]
+            fn domain(&self) -> Interval {
+                (**self).domain()
+            }
+            #[inline]
+            fn is_closed(&self) -> bool {
+                (**self).is_closed()
+            }
+            #[inline]
+            fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
+                (**self).eval_side(t, side, out)
+            }
+            #[inline]
+            fn eval(&self, t: f64, out: &mut [Point<D>]) {
+                (**self).eval(t, out)
+            }
+            fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
+                (**self).eval_many(params, order, out)
+            }
+            fn breakpoints(&self) -> Vec<f64> {
+                (**self).breakpoints()
+            }
+            #[inline]
+            fn point(&self, t: f64) -> Point<D> {
+                (**self).point(t)
+            }
+            fn derivative(&self, t: f64, order: usize) -> Point<D> {
+                (**self).derivative(t, order)
+            }
+            fn tangent(&self, t: f64) -> Point<D> {
+                (**self).tangent(t)
+            }
+            fn curvature(&self, t: f64) -> f64 {
+                (**self).curvature(t)
+            }
+            fn frame(&self, t: f64) -> Option<FrenetFrame<D>> {
+                (**self).frame(t)
+            }
+            fn length(&self, tolerance: f64) -> f64 {
+                (**self).length(tolerance)
+            }
+            fn closest_point(&self, query: &Point<D>, accuracy: f64) -> crate::Result<crate::query::Nearest<D>> {
+                (**self).closest_point(query, accuracy)
+            }
+        }
+    };
 }
+
+forward_curve!('a; &'a C);
+forward_curve!(; Box<C>);
+forward_curve!(; std::sync::Arc<C>);

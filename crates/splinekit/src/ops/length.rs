@@ -1,39 +1,38 @@
 //! Arc length by adaptive Gauss–Legendre quadrature.
 //!
 //! L = ∫_a^b |c'(t)| dt. Each piece between breakpoints (knots, segment joins) is
-//! integrated with a 10-point Gauss–Legendre rule and compared with the sum over its two
-//! halves; pieces whose estimates differ by more than their share of the tolerance are
-//! bisected (to depth 50).
+//! integrated with the 10-point Gauss–Legendre rule ([`crate::quadrature`]) and compared
+//! with the sum over its two halves; pieces whose estimates differ by more than their
+//! share of the tolerance are bisected (to depth [`MAX_DEPTH`]). Nodes left of a piece's
+//! midpoint take the right-hand limit and those right of it the left-hand one, so a piece
+//! never sees the kink at the breakpoints that bound it.
+
+use std::sync::OnceLock;
 
 use crate::Point;
-use crate::curve::Curve;
+use crate::basis::Side;
+use crate::curve::{Curve, Interval};
+use crate::quadrature::GaussLegendre;
 
-const NODES: [f64; 5] = [
-    0.148_874_338_981_631_2,
-    0.433_395_394_129_247_2,
-    0.679_409_568_299_024_4,
-    0.865_063_366_688_984_5,
-    0.973_906_528_517_171_7,
-];
-const WEIGHTS: [f64; 5] = [
-    0.295_524_224_714_752_9,
-    0.269_266_719_309_996_4,
-    0.219_086_362_515_982_04,
-    0.149_451_349_150_580_6,
-    0.066_671_344_308_688_14,
-];
+/// The smallest absolute tolerance honoured (below it, rounding dominates).
+pub const MIN_TOLERANCE: f64 = 1e-15;
 
+/// How many times a piece may be halved.
+pub const MAX_DEPTH: u32 = 50;
+
+fn ten_point_rule() -> &'static GaussLegendre {
+    static RULE: OnceLock<GaussLegendre> = OnceLock::new();
+    RULE.get_or_init(|| GaussLegendre::new(10))
+}
+
+/// ∫ |c'| over [a, b] by one 10-point rule.
 fn gauss<const D: usize, C: Curve<D> + ?Sized>(curve: &C, a: f64, b: f64) -> f64 {
     let (m, h) = ((a + b) / 2.0, (b - a) / 2.0);
     let mut out = [Point::<D>::zeros(); 2];
-    let mut sum = 0.0;
-    for (x, w) in NODES.iter().zip(WEIGHTS) {
-        curve.eval_side(m - h * x, crate::basis::Side::Right, &mut out);
-        sum += w * out[1].norm();
-        curve.eval_side(m + h * x, crate::basis::Side::Left, &mut out);
-        sum += w * out[1].norm();
-    }
-    sum * h
+    ten_point_rule().integrate_about(m, h, |t| {
+        curve.eval_side(t, if t < m { Side::Right } else { Side::Left }, &mut out);
+        out[1].norm()
+    })
 }
 
 fn adaptive<const D: usize, C: Curve<D> + ?Sized>(curve: &C, a: f64, b: f64, whole: f64, tol: f64, depth: u32) -> f64 {
@@ -45,12 +44,26 @@ fn adaptive<const D: usize, C: Curve<D> + ?Sized>(curve: &C, a: f64, b: f64, who
     adaptive(curve, a, m, l, tol / 2.0, depth - 1) + adaptive(curve, m, b, r, tol / 2.0, depth - 1)
 }
 
-/// Arc length of `curve` between parameters `a ≤ b` to about `tolerance` (absolute).
-pub fn arc_length<const D: usize, C: Curve<D> + ?Sized>(curve: &C, a: f64, b: f64, tolerance: f64) -> f64 {
-    let tol = tolerance.max(1e-15);
+/// Arc length of `curve` over the parameter interval `range` to about `tolerance`
+/// (absolute, at least [`MIN_TOLERANCE`]).
+///
+/// # Examples
+///
+/// ```
+/// use splinekit::curve::Interval;
+/// use splinekit::curve::model::Circle;
+/// use splinekit::ops::length::arc_length;
+/// // A quarter of the circle of radius 2 is π long.
+/// let c = Circle::new(2.0).unwrap();
+/// let l = arc_length(&c, Interval::new(0.0, std::f64::consts::FRAC_PI_2), 1e-12);
+/// assert!((l - std::f64::consts::PI).abs() < 1e-12);
+/// ```
+pub fn arc_length<const D: usize, C: Curve<D> + ?Sized>(curve: &C, range: Interval, tolerance: f64) -> f64 {
+    let (a, b) = (range.start, range.end);
+    let tol = tolerance.max(MIN_TOLERANCE);
     let mut cuts: Vec<f64> = curve.breakpoints().into_iter().filter(|&k| k > a && k < b).collect();
     cuts.insert(0, a);
     cuts.push(b);
     let pieces = (cuts.len() - 1) as f64;
-    cuts.windows(2).map(|w| adaptive(curve, w[0], w[1], gauss(curve, w[0], w[1]), tol / pieces, 50)).sum()
+    cuts.windows(2).map(|w| adaptive(curve, w[0], w[1], gauss(curve, w[0], w[1]), tol / pieces, MAX_DEPTH)).sum()
 }

@@ -69,7 +69,7 @@ impl<'c, C: ?Sized> ArcLengthTable<'c, C> {
         let mut lengths = vec![0.0];
         for w in params.windows(2) {
             let last = *lengths.last().unwrap();
-            lengths.push(last + arc_length(curve, w[0], w[1], share));
+            lengths.push(last + arc_length(curve, Interval::new(w[0], w[1]), share));
         }
         Ok(ArcLengthTable { curve, params, lengths, accuracy })
     }
@@ -96,7 +96,7 @@ impl<'c, C: ?Sized> ArcLengthTable<'c, C> {
             return Ok(lo);
         };
         for _ in 0..MAX_STEPS {
-            let f = base + arc_length(self.curve, start, t, tol) - s;
+            let f = base + arc_length(self.curve, Interval::new(start, t), tol) - s;
             if f.abs() <= tol {
                 return Ok(t);
             }

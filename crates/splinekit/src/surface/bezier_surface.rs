@@ -39,12 +39,6 @@ impl<const D: usize> Surface<D> for BezierSurface<D> {
     fn domain_v(&self) -> Interval {
         Interval::new(0.0, 1.0)
     }
-    fn is_closed_u(&self) -> bool {
-        false
-    }
-    fn is_closed_v(&self) -> bool {
-        false
-    }
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let (u, v) = (u.clamp(0.0, 1.0), v.clamp(0.0, 1.0));
         let rows = self.net.len();

@@ -45,18 +45,22 @@ pub struct TrimLoops<'a> {
 
 /// A parametric surface S(u, v) over [u₀, u₁] × [v₀, v₁].
 ///
-/// Implementors provide the domains, closedness and [`Surface::eval_partials`]; everything
-/// else is derived. Parameters outside the domain are clamped in open directions and
+/// Implementors provide the domains and [`Surface::eval_partials`] (and closedness where a
+/// direction is periodic); everything else is derived. Parameters outside the domain are clamped in open directions and
 /// wrapped in closed ones.
 pub trait Surface<const D: usize>: Send + Sync {
     /// The u-domain.
     fn domain_u(&self) -> Interval;
     /// The v-domain.
     fn domain_v(&self) -> Interval;
-    /// Whether S(u₀, v) = S(u₁, v), continuing smoothly.
-    fn is_closed_u(&self) -> bool;
-    /// Whether S(u, v₀) = S(u, v₁), continuing smoothly.
-    fn is_closed_v(&self) -> bool;
+    /// Whether S(u₀, v) = S(u₁, v), continuing smoothly (open by default).
+    fn is_closed_u(&self) -> bool {
+        false
+    }
+    /// Whether S(u, v₀) = S(u, v₁), continuing smoothly (open by default).
+    fn is_closed_v(&self) -> bool {
+        false
+    }
 
     /// Writes ∂^{i+j}S/∂uⁱ∂vʲ for i ≤ `du`, j ≤ `dv` into `out[i·(dv+1) + j]`
     /// (`out.len()` ≥ (du+1)(dv+1)).
@@ -219,38 +223,83 @@ fn unit_normal_rescaled<const D: usize>(a: &Point<D>, b: &Point<D>) -> Option<Po
     (len > 0.0 && len.is_finite()).then(|| n / len)
 }
 
-impl<const D: usize, S: Surface<D> + ?Sized> Surface<D> for Box<S> {
-    fn domain_u(&self) -> Interval {
-        (**self).domain_u()
-    }
-    fn domain_v(&self) -> Interval {
-        (**self).domain_v()
-    }
-    fn is_closed_u(&self) -> bool {
-        (**self).is_closed_u()
-    }
-    fn is_closed_v(&self) -> bool {
-        (**self).is_closed_v()
-    }
-    fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
-        (**self).eval_partials(u, v, du, dv, out)
-    }
-    fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
-        (**self).eval_grid(us, vs, du, dv, out)
-    }
-    fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
-        (**self).eval_grid_with_normals(us, vs, points, normals)
-    }
-    fn trim_contains(&self, u: f64, v: f64) -> Option<bool> {
-        (**self).trim_contains(u, v)
-    }
-    fn trim_loops(&self) -> Option<TrimLoops<'_>> {
-        (**self).trim_loops()
-    }
-    fn breakpoints_u(&self) -> Vec<f64> {
-        (**self).breakpoints_u()
-    }
-    fn breakpoints_v(&self) -> Vec<f64> {
-        (**self).breakpoints_v()
-    }
+/// Implements [`Surface`] for a pointer to a surface, forwarding every method — the
+/// provided ones too (a tensor-product grid path, a trimmed surface's loops), behind `&S`,
+/// `Box<S>` and `Arc<S>`.
+macro_rules! forward_surface {
+    ($($lt:lifetime)? ; $ptr:ty) => {
+        impl<$($lt,)? const D: usize, S: Surface<D> + ?Sized> Surface<D> for $ptr {
+            #[inline]
+            fn domain_u(&self) -> Interval {
+                (**self).domain_u()
+            }
+            #[inline]
+            fn domain_v(&self) -> Interval {
+                (**self).domain_v()
+            }
+            #[inline]
+            fn is_closed_u(&self) -> bool {
+                (**self).is_closed_u()
+            }
+            #[inline]
+            fn is_closed_v(&self) -> bool {
+                (**self).is_closed_v()
+            }
+            #[inline]
+            fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
+                (**self).eval_partials(u, v, du, dv, out)
+            }
+            fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
+                (**self).eval_grid(us, vs, du, dv, out)
+            }
+            fn eval_grid_with_normals(
+                &self,
+                us: &[f64],
+                vs: &[f64],
+                points: &mut [Point<D>],
+                normals: &mut [Point<D>],
+            ) {
+                (**self).eval_grid_with_normals(us, vs, points, normals)
+            }
+            fn trim_contains(&self, u: f64, v: f64) -> Option<bool> {
+                (**self).trim_contains(u, v)
+            }
+            fn trim_loops(&self) -> Option<TrimLoops<'_>> {
+                (**self).trim_loops()
+            }
+            fn breakpoints_u(&self) -> Vec<f64> {
+                (**self).breakpoints_u()
+            }
+            fn breakpoints_v(&self) -> Vec<f64> {
+                (**self).breakpoints_v()
+            }
+            #[inline]
+            fn point(&self, u: f64, v: f64) -> Point<D> {
+                (**self).point(u, v)
+            }
+            fn partial(&self, u: f64, v: f64, i: usize, j: usize) -> Point<D> {
+                (**self).partial(u, v, i, j)
+            }
+            fn normal(&self, u: f64, v: f64) -> Option<Point<D>> {
+                (**self).normal(u, v)
+            }
+            fn fundamental_forms(&self, u: f64, v: f64) -> Option<FundamentalForms> {
+                (**self).fundamental_forms(u, v)
+            }
+            fn curvatures(&self, u: f64, v: f64) -> Option<Curvatures> {
+                (**self).curvatures(u, v)
+            }
+            fn closest_point(
+                &self,
+                query: &Point<D>,
+                accuracy: f64,
+            ) -> crate::Result<crate::query::NearestOnSurface<D>> {
+                (**self).closest_point(query, accuracy)
+            }
+        }
+    };
 }
+
+forward_surface!('a; &'a S);
+forward_surface!(; Box<S>);
+forward_surface!(; std::sync::Arc<S>);

@@ -6,11 +6,12 @@
 //! with F₀ = 1 − t, F₁ = t (bilinearly blended) or F₀ = 1 − 3t² + 2t³, F₁ = 3t² − 2t³
 //! (bicubically blended, cross-boundary derivatives taken from the boundary curves only).
 
+use smallvec::{SmallVec, smallvec};
+
 use crate::Point;
-use crate::curve::{Curve, Interval};
+use crate::curve::{Curve, Interval, Reparametrized};
 use crate::error::{Error, Result};
 use crate::surface::Surface;
-use crate::surface::derived::unit_derivatives;
 
 /// The blending functions of a Coons patch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -44,12 +45,15 @@ impl CoonsBlend {
     }
 }
 
+/// A boundary curve reparametrised to [0, 1].
+type UnitCurve<const D: usize> = Reparametrized<Box<dyn Curve<D>>>;
+
 /// A Coons patch from four boundary curves (each reparametrised to [0, 1]).
 pub struct CoonsPatch<const D: usize> {
-    bottom: Box<dyn Curve<D>>,
-    top: Box<dyn Curve<D>>,
-    left: Box<dyn Curve<D>>,
-    right: Box<dyn Curve<D>>,
+    bottom: UnitCurve<D>,
+    top: UnitCurve<D>,
+    left: UnitCurve<D>,
+    right: UnitCurve<D>,
     corners: [[Point<D>; 2]; 2],
     blend: CoonsBlend,
 }
@@ -64,12 +68,13 @@ impl<const D: usize> CoonsPatch<D> {
         right: Box<dyn Curve<D>>,
         blend: CoonsBlend,
     ) -> Result<Self> {
-        let end = |c: &dyn Curve<D>, s: f64| c.point(c.domain().lerp(s));
+        let [bottom, top, left, right] = [bottom, top, left, right].map(Reparametrized::unit);
+        let (bottom, top, left, right) = (bottom?, top?, left?, right?);
         let pairs = [
-            ("bottom start and left start", end(bottom.as_ref(), 0.0), end(left.as_ref(), 0.0)),
-            ("bottom end and right start", end(bottom.as_ref(), 1.0), end(right.as_ref(), 0.0)),
-            ("top start and left end", end(top.as_ref(), 0.0), end(left.as_ref(), 1.0)),
-            ("top end and right end", end(top.as_ref(), 1.0), end(right.as_ref(), 1.0)),
+            ("bottom start and left start", bottom.point(0.0), left.point(0.0)),
+            ("bottom end and right start", bottom.point(1.0), right.point(0.0)),
+            ("top start and left end", top.point(0.0), left.point(1.0)),
+            ("top end and right end", top.point(1.0), right.point(1.0)),
         ];
         let scale = pairs.iter().map(|p| p.1.norm()).fold(1.0, f64::max);
         for (name, a, b) in &pairs {
@@ -89,18 +94,15 @@ impl<const D: usize> Surface<D> for CoonsPatch<D> {
     fn domain_v(&self) -> Interval {
         Interval::new(0.0, 1.0)
     }
-    fn is_closed_u(&self) -> bool {
-        false
-    }
-    fn is_closed_v(&self) -> bool {
-        false
-    }
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let (u, v) = (u.clamp(0.0, 1.0), v.clamp(0.0, 1.0));
-        let c0 = unit_derivatives(self.bottom.as_ref(), u, du);
-        let c1 = unit_derivatives(self.top.as_ref(), u, du);
-        let d0 = unit_derivatives(self.left.as_ref(), v, dv);
-        let d1 = unit_derivatives(self.right.as_ref(), v, dv);
+        let jet = |c: &UnitCurve<D>, t: f64, order: usize| {
+            let mut out: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); order + 1];
+            c.eval(t, &mut out);
+            out
+        };
+        let (c0, c1) = (jet(&self.bottom, u, du), jet(&self.top, u, du));
+        let (d0, d1) = (jet(&self.left, v, dv), jet(&self.right, v, dv));
         let f = |w: usize, t: f64, k: usize| self.blend.value(w, t, k);
         for i in 0..=du {
             for j in 0..=dv {

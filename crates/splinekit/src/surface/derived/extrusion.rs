@@ -33,9 +33,6 @@ impl<const D: usize> Surface<D> for Extrusion<D> {
     fn is_closed_u(&self) -> bool {
         self.curve.is_closed()
     }
-    fn is_closed_v(&self) -> bool {
-        false
-    }
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let v = v.clamp(0.0, 1.0);
         let mut c: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); du + 1];

@@ -1,5 +1,6 @@
-//! Surfaces made from curves: revolution, ruled surfaces, extrusions and Coons patches.
-//! Their partials of every order come from the curves' derivatives.
+//! Surfaces made from curves: revolution, ruled surfaces, extrusions, sweeps and Coons
+//! patches. Their partials of every order come from the curves' derivatives (curves used
+//! on [0, 1] are [`crate::curve::Reparametrized`] there).
 
 pub mod coons;
 pub mod extrusion;
@@ -12,14 +13,3 @@ pub use extrusion::Extrusion;
 pub use revolved::RevolvedSurface;
 pub use ruled::RuledSurface;
 pub use sweep::SweepSurface;
-
-use crate::Point;
-use crate::basis::Side;
-use crate::curve::Curve;
-use smallvec::SmallVec;
-
-/// A curve reparametrised to [0, 1], right-hand limits (see
-/// [`crate::curve::unit_parameter::unit_derivatives`]).
-pub(crate) fn unit_derivatives<const D: usize>(c: &dyn Curve<D>, t: f64, order: usize) -> SmallVec<[Point<D>; 8]> {
-    crate::curve::unit_parameter::unit_derivatives(c, t, Side::Right, order)
-}

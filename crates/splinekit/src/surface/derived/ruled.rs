@@ -1,16 +1,17 @@
 //! Ruled surfaces S(u, v) = (1 − v) c₁(u) + v c₂(u), each curve reparametrised to
 //! u ∈ [0, 1], v ∈ [0, 1].
 
+use smallvec::{SmallVec, smallvec};
+
 use crate::Point;
-use crate::curve::{Curve, Interval};
+use crate::curve::{Curve, Interval, Reparametrized};
 use crate::error::{Error, Result};
 use crate::surface::Surface;
-use crate::surface::derived::unit_derivatives;
 
 /// The straight lines between corresponding points of two curves.
 pub struct RuledSurface<const D: usize> {
-    first: Box<dyn Curve<D>>,
-    second: Box<dyn Curve<D>>,
+    first: Reparametrized<Box<dyn Curve<D>>>,
+    second: Reparametrized<Box<dyn Curve<D>>>,
 }
 
 impl<const D: usize> RuledSurface<D> {
@@ -19,7 +20,7 @@ impl<const D: usize> RuledSurface<D> {
         if first.is_closed() != second.is_closed() {
             return Err(Error::invalid("second", "both curves must be open or both closed"));
         }
-        Ok(RuledSurface { first, second })
+        Ok(RuledSurface { first: Reparametrized::unit(first)?, second: Reparametrized::unit(second)? })
     }
 }
 
@@ -33,14 +34,13 @@ impl<const D: usize> Surface<D> for RuledSurface<D> {
     fn is_closed_u(&self) -> bool {
         self.first.is_closed()
     }
-    fn is_closed_v(&self) -> bool {
-        false
-    }
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let u = if self.is_closed_u() { self.domain_u().wrap(u) } else { u.clamp(0.0, 1.0) };
         let v = v.clamp(0.0, 1.0);
-        let a = unit_derivatives(self.first.as_ref(), u, du);
-        let b = unit_derivatives(self.second.as_ref(), u, du);
+        let mut a: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); du + 1];
+        let mut b: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); du + 1];
+        self.first.eval(u, &mut a);
+        self.second.eval(u, &mut b);
         for i in 0..=du {
             for j in 0..=dv {
                 out[i * (dv + 1) + j] = match j {
