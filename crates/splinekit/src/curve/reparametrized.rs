@@ -1,8 +1,9 @@
 //! A curve reparametrised onto another interval by an affine map.
 //!
 //! For a curve c on [a₀, a₁] and a new domain [b₀, b₁], the reparametrised curve is
-//! m(t) = c(φ(t)) with φ(t) = a₀ + (t − b₀) s and s = (a₁ − a₀)/(b₁ − b₀); by the chain
-//! rule m^{(j)}(t) = s^j c^{(j)}(φ(t)). Blends and derived surfaces use it to put curves on
+//! m(t) = c(φ(t)) with φ(t) = a₀ + (a₁ − a₀)(t − b₀)/(b₁ − b₀); by the chain rule
+//! m^{(j)}(t) = s^j c^{(j)}(φ(t)) with s = (a₁ − a₀)/(b₁ − b₀). φ goes through the
+//! normalised parameter (t − b₀)/(b₁ − b₀), which is exactly 0 and 1 at the ends. Blends and derived surfaces use it to put curves on
 //! [0, 1], blending splines to put explicit local curves on their supports, and the local
 //! Bézier pieces of blending splines are Bézier curves reparametrised onto their supports.
 
@@ -23,6 +24,8 @@ pub struct Reparametrized<C> {
     domain: Interval,
     /// a₀, the start of the inner curve's domain.
     inner_start: f64,
+    /// a₁ − a₀.
+    inner_length: f64,
     /// s = (a₁ − a₀)/(b₁ − b₀).
     scale: f64,
 }
@@ -59,7 +62,7 @@ impl<C> Reparametrized<C> {
             ));
         }
         let scale = inner.length() / domain.length();
-        Ok(Reparametrized { curve, domain, inner_start: inner.start, scale })
+        Ok(Reparametrized { curve, domain, inner_start: inner.start, inner_length: inner.length(), scale })
     }
 
     /// `curve` reparametrised onto [0, 1]: m(s) = c(a₀ + s (a₁ − a₀)).
@@ -79,13 +82,13 @@ impl<C> Reparametrized<C> {
     /// inner domain (moving control points does; this is how the local Bézier pieces of
     /// blending splines follow their frames).
     pub fn map_curve(&self, f: impl FnOnce(&C) -> C) -> Self {
-        Reparametrized { curve: f(&self.curve), domain: self.domain, inner_start: self.inner_start, scale: self.scale }
+        Reparametrized { curve: f(&self.curve), ..*self }
     }
 
-    /// φ(t), the inner parameter of t.
+    /// φ(t) = a₀ + (a₁ − a₀)(t − b₀)/(b₁ − b₀), the inner parameter of t.
     #[inline]
     pub fn inner_parameter(&self, t: f64) -> f64 {
-        self.inner_start + (t - self.domain.start) * self.scale
+        self.inner_start + (t - self.domain.start) / self.domain.length() * self.inner_length
     }
 }
 
@@ -111,7 +114,7 @@ impl<const D: usize, C: Curve<D>> Curve<D> for Reparametrized<C> {
             .curve
             .breakpoints()
             .into_iter()
-            .map(|x| self.domain.start + (x - self.inner_start) / self.scale)
+            .map(|x| self.domain.start + (x - self.inner_start) / self.inner_length * self.domain.length())
             .filter(|&t| t > self.domain.start && t < self.domain.end)
             .collect();
         b.insert(0, self.domain.start);
