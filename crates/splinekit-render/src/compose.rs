@@ -221,7 +221,8 @@ fn local_curves(d: &BlendingSplineDoc, style: &StyleDoc, out: &mut RenderScene) 
             let c = d.curve::<$dim>()?;
             let n = c.local_count();
             for k in 0..n {
-                let (a, b) = c.local_support(k);
+                let support = c.local_support(k);
+                let (a, b) = (support.start, support.end);
                 let mut v = [Point::<$dim>::zeros(); 1];
                 let pts: Vec<[f32; 3]> = (0..=96)
                     .map(|i| {
@@ -257,7 +258,8 @@ fn local_patches(d: &BlendingSplineSurfaceDoc, out: &mut RenderScene) -> Result<
     let mut v = [Point::<3>::zeros(); 1];
     for k in 0..nu {
         for l in 0..nv {
-            let ((u0, u1), (v0, v1)) = s.local_support(k, l);
+            let rect = s.local_support(k, l);
+            let ((u0, u1), (v0, v1)) = ((rect.u.start, rect.u.end), (rect.v.start, rect.v.end));
             let color = local_color(k * nv + l, nu * nv);
             // The patch's outline and middle lines over its support.
             for (fixed_u, t) in [(true, 0.0), (true, 0.5), (true, 1.0), (false, 0.0), (false, 0.5), (false, 1.0)] {

@@ -4,6 +4,15 @@
 use crate::basis::Side;
 
 /// A closed parameter interval [start, end].
+///
+/// # Examples
+///
+/// ```
+/// use splinekit::Interval;
+/// let i = Interval::new(2.0, 6.0);
+/// assert_eq!((i.length(), i.lerp(0.25), i.clamp(7.0)), (4.0, 3.0, 6.0));
+/// assert_eq!(i.wrap(7.0), 3.0);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Interval {
     /// Lower end.
@@ -54,5 +63,21 @@ impl Interval {
     #[inline]
     pub fn lerp(&self, s: f64) -> f64 {
         self.start + s * (self.end - self.start)
+    }
+}
+
+/// A rectangle of parameters [u₀, u₁] × [v₀, v₁].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParamRect {
+    /// [u₀, u₁].
+    pub u: Interval,
+    /// [v₀, v₁].
+    pub v: Interval,
+}
+
+impl ParamRect {
+    /// The rectangle u × v.
+    pub const fn new(u: Interval, v: Interval) -> Self {
+        ParamRect { u, v }
     }
 }

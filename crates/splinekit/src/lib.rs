@@ -35,7 +35,7 @@ pub mod surface;
 pub mod taylor;
 
 pub use error::{Error, Result};
-pub use interval::Interval;
+pub use interval::{Interval, ParamRect};
 
 /// The README's Rust examples, compiled and run as doctests.
 #[doc = include_str!("../../../README.md")]

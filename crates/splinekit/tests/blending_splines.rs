@@ -92,7 +92,7 @@ fn moving_a_local_changes_only_its_support_and_frames_are_affine() {
     let rot = Affine::rotation(p3(0.0, 0.0, 1.0), 0.4).unwrap().after(&Affine::uniform_scale(1.3));
     let ranges = c.set_transform(0, Affine::translation(p3(0.5, 1.0, 0.0)).after(&rot));
     assert_eq!(ranges.len(), 2, "local 0 of a closed curve straddles the seam");
-    let inside = |t: f64| ranges.iter().any(|&(a, b)| t >= a && t <= b);
+    let inside = |t: f64| ranges.iter().any(|r| t >= r.start && t <= r.end);
     let mut changed = 0;
     for (t, p) in &before {
         let q = c.point(*t);

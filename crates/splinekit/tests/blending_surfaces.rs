@@ -128,7 +128,8 @@ fn moving_a_patch_is_local_and_frames_are_affine() {
     let mut s = base.clone();
     let rects = s.set_transform(0, 3, Affine::translation(Point::<3>::new(0.0, 0.0, 1.0)));
     assert_eq!(rects.len(), 2, "patch 0 in u straddles the u seam");
-    let inside = |u: f64, v: f64| rects.iter().any(|((a, b), (c, d))| u >= *a && u <= *b && v >= *c && v <= *d);
+    let inside =
+        |u: f64, v: f64| rects.iter().any(|r| u >= r.u.start && u <= r.u.end && v >= r.v.start && v <= r.v.end);
     let mut moved = 0;
     for i in 0..=60 {
         for j in 0..=60 {

@@ -284,10 +284,10 @@ fn split_and_bezier_decomposition_reproduce_the_curve() {
     let segs = c.bezier_segments().unwrap();
     let distinct_spans = c.breakpoints().len() - 1;
     assert_eq!(segs.len(), distinct_spans);
-    for (a, b, bez) in &segs {
+    for (span, bez) in &segs {
         for i in 0..=20 {
             let s = i as f64 / 20.0;
-            assert!((bez.point(s) - c.point(a + (b - a) * s)).norm() < 1e-12);
+            assert!((bez.point(s) - c.point(span.start + (span.end - span.start) * s)).norm() < 1e-12);
         }
     }
 }

@@ -4,12 +4,12 @@
 mod common;
 use common::*;
 use proptest::prelude::*;
-use splinekit::Point;
 use splinekit::curve::Curve;
 use splinekit::surface::TrimmedSurface;
 use splinekit::surface::model::*;
 use splinekit::surface::surface_ops::BezierPatch;
 use splinekit::surface::*;
+use splinekit::{Interval, Point};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 fn net(nu: usize, nv: usize) -> Vec<Vec<Point<3>>> {
@@ -383,7 +383,12 @@ fn surface_refinement_elevation_and_bezier_patches_keep_the_shape() {
     let patches = s.bezier_patches().unwrap();
     assert_eq!((patches.len(), patches[0].len()), (3, 3));
     for row in &patches {
-        for BezierPatch { u_range: (u0, u1), v_range: (v0, v1), surface: patch } in row {
+        for BezierPatch {
+            u_range: Interval { start: u0, end: u1 },
+            v_range: Interval { start: v0, end: v1 },
+            surface: patch,
+        } in row
+        {
             for k in 0..=6 {
                 let (a, b) = (k as f64 / 6.0, (6 - k) as f64 / 6.0);
                 let p = patch.point(a, b);

@@ -1,5 +1,6 @@
 //! Knot vectors: validation, span search and common constructions.
 
+use crate::Interval;
 use crate::error::{Error, Result, check_finite};
 
 /// Which one-sided limit to take where a curve is evaluated exactly at a knot.
@@ -90,16 +91,26 @@ impl KnotVector {
         Ok(kv)
     }
 
-    /// Clamped (open) uniform knots for `n` control points of `degree` on `[start, end]`:
+    /// Clamped (open) uniform knots for `n` control points of `degree` on `domain`:
     /// p + 1 copies of each end and n − p − 1 uniform interior knots.
-    pub fn clamped_uniform(degree: usize, n: usize, start: f64, end: f64) -> Result<Self> {
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Interval;
+    /// use splinekit::basis::KnotVector;
+    /// let k = KnotVector::clamped_uniform(2, 5, Interval::new(0.0, 3.0)).unwrap();
+    /// assert_eq!(k.as_slice(), &[0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0]);
+    /// ```
+    pub fn clamped_uniform(degree: usize, n: usize, domain: Interval) -> Result<Self> {
+        let Interval { start, end } = domain;
         if n < degree + 1 {
             return Err(Error::invalid(
                 "control_points",
                 format!("degree {degree} needs at least {} control points, got {n}", degree + 1),
             ));
         }
-        check_interval(start, end)?;
+        check_interval(domain)?;
         let segments = n - degree;
         let mut knots = Vec::with_capacity(n + degree + 1);
         knots.extend(std::iter::repeat_n(start, degree + 1));
@@ -190,7 +201,7 @@ pub fn advance_span(knots: &[f64], degree: usize, n: usize, mut span: usize, t: 
     span
 }
 
-pub(crate) fn check_interval(start: f64, end: f64) -> Result<()> {
+fn check_interval(Interval { start, end }: Interval) -> Result<()> {
     if !(start.is_finite() && end.is_finite() && start < end) {
         return Err(Error::invalid("domain", format!("expected finite start < end, got [{start}, {end}]")));
     }

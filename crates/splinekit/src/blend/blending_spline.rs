@@ -180,8 +180,7 @@ impl<const D: usize> BlendingSplineCurve<D> {
             .into_iter()
             .enumerate()
             .map(|(k, curve)| {
-                let (a, b) = knots.support(k);
-                let mapped: Arc<dyn Curve<D>> = Arc::new(Reparametrized::new(curve, Interval::new(a, b))?);
+                let mapped: Arc<dyn Curve<D>> = Arc::new(Reparametrized::new(curve, knots.support(k))?);
                 Ok(Local::new(LocalCurve::General(mapped), knots.centre(k)))
             })
             .collect::<Result<_>>()?;
@@ -226,8 +225,7 @@ impl<const D: usize> BlendingSplineCurve<D> {
             None => {
                 let mut target = [Point::<D>::zeros(); 4];
                 self.eval(t, &mut target);
-                let (a, b) = knots.support(k);
-                LocalCurve::bezier(hermite_bezier(&target, Interval::new(a, b), t)?)
+                LocalCurve::bezier(hermite_bezier(&target, knots.support(k), t)?)
             }
         };
         self.knots = knots;
@@ -271,19 +269,19 @@ impl<const D: usize> BlendingSplineCurve<D> {
         self.locals[k].eval(t, Side::Right, out)
     }
     /// The parameter interval [c_{k−1}, c_{k+1}] where local k takes part.
-    pub fn local_support(&self, k: usize) -> (f64, f64) {
+    pub fn local_support(&self, k: usize) -> Interval {
         self.knots.support(k)
     }
     /// Sets the frame of local k (about its origin); returns the parameter ranges whose
     /// points changed ([`Self::affected_ranges`]).
-    pub fn set_transform(&mut self, k: usize, transform: Affine<D>) -> Vec<(f64, f64)> {
+    pub fn set_transform(&mut self, k: usize, transform: Affine<D>) -> Vec<Interval> {
         self.locals[k].set_transform(transform);
         self.affected_ranges(k)
     }
     /// Poses the animated locals at `time`: local k's frame becomes track(time) ∘ `rest[k]`
     /// for each track (locals without a track keep their frames). Returns the parameter
     /// ranges that changed.
-    pub fn animate(&mut self, rest: &[Affine<D>], tracks: &[Track<usize>], time: f64) -> Result<Vec<(f64, f64)>> {
+    pub fn animate(&mut self, rest: &[Affine<D>], tracks: &[Track<usize>], time: f64) -> Result<Vec<Interval>> {
         let n = self.local_count();
         if rest.len() != n {
             return Err(Error::invalid("rest", format!("expected {n} rest frames, got {}", rest.len())));
@@ -311,7 +309,7 @@ impl<const D: usize> BlendingSplineCurve<D> {
 
     /// The parameter ranges where local k is active: (c_{k−1}, c_{k+1}), clipped to the
     /// domain (and split at the seam of a closed curve).
-    pub fn affected_ranges(&self, k: usize) -> Vec<(f64, f64)> {
+    pub fn affected_ranges(&self, k: usize) -> Vec<Interval> {
         self.knots.affected_ranges(k)
     }
 }
@@ -333,8 +331,7 @@ fn local_from_model<const D: usize>(
             }
             let mut target = vec![Point::<D>::zeros(); d + 1];
             model.eval(c, &mut target);
-            let (a, b) = knots.support(k);
-            LocalCurve::bezier(hermite_bezier(&target, Interval::new(a, b), c)?)
+            LocalCurve::bezier(hermite_bezier(&target, knots.support(k), c)?)
         }
     })
 }

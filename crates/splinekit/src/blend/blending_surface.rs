@@ -26,12 +26,12 @@ use super::animation::Track;
 use super::hermite::inverse_hermite_matrix;
 use super::knots::{BlendKnots, BlendSpan};
 use super::leibniz::{blend_derivatives, blend_derivatives_strided};
+pub use crate::ParamRect;
 use crate::Point;
 use crate::basis::{BFunction, Side, bernstein_derivatives};
 use crate::curve::Interval;
 use crate::error::{Error, Result};
 use crate::frame::Affine;
-pub use crate::surface::samples::ParamRect;
 use crate::surface::{Surface, unit_normal};
 
 /// How local patches are made from a model surface.
@@ -44,7 +44,7 @@ pub enum PatchKind {
     Bezier(usize, usize),
 }
 
-/// A Bézier patch on [su, su + lu] × [sv, sv + lv] in the global parameters.
+/// A Bézier patch on its support in the global parameters.
 #[derive(Clone)]
 struct HermitePatch<const D: usize> {
     degrees: (usize, usize),
@@ -52,8 +52,7 @@ struct HermitePatch<const D: usize> {
     net: Vec<Point<D>>,
     /// The net with the frame applied.
     world: Vec<Point<D>>,
-    start: (f64, f64),
-    length: (f64, f64),
+    support: ParamRect,
 }
 
 #[derive(Clone)]
@@ -77,8 +76,8 @@ impl<const D: usize> LocalPatch<D> {
                 let (nu, nv) = (p.degrees.0 + 1, p.degrees.1 + 1);
                 let mut bu: SmallVec<[f64; 32]> = smallvec![0.0; (du + 1) * nu];
                 let mut bv: SmallVec<[f64; 32]> = smallvec![0.0; (dv + 1) * nv];
-                scaled_bernstein(p.degrees.0, p.start.0, p.length.0, u, du, &mut bu);
-                scaled_bernstein(p.degrees.1, p.start.1, p.length.1, v, dv, &mut bv);
+                scaled_bernstein(p.degrees.0, p.support.u, u, du, &mut bu);
+                scaled_bernstein(p.degrees.1, p.support.v, v, dv, &mut bv);
                 let mut row: SmallVec<[Point<D>; 32]> = smallvec![Point::<D>::zeros(); (dv + 1) * nu];
                 for a in 0..nu {
                     for j in 0..=dv {
@@ -109,9 +108,10 @@ impl<const D: usize> LocalPatch<D> {
     }
 }
 
-/// Bernstein derivatives of degree d on [s, s + l] at x, with respect to x.
-fn scaled_bernstein(d: usize, s: f64, l: f64, x: f64, order: usize, out: &mut [f64]) {
-    bernstein_derivatives(d, (x - s) / l, order, out);
+/// Bernstein derivatives of degree d on `support` at x, with respect to x.
+fn scaled_bernstein(d: usize, support: Interval, x: f64, order: usize, out: &mut [f64]) {
+    let l = support.length();
+    bernstein_derivatives(d, (x - support.start) / l, order, out);
     let mut f = 1.0;
     for r in 1..=order {
         f /= l;
@@ -200,7 +200,7 @@ impl<const D: usize> BlendingSplineSurface<D> {
     }
     /// The support [u_{k−1}, u_{k+1}] × [v_{l−1}, v_{l+1}] of patch (k, l).
     pub fn local_support(&self, k: usize, l: usize) -> ParamRect {
-        (self.knots_u.support(k), self.knots_v.support(l))
+        ParamRect::new(self.knots_u.support(k), self.knots_v.support(l))
     }
     /// Partials of patch (k, l) in world coordinates at the global (u, v), laid out like
     /// [`Surface::eval_partials`].
@@ -261,7 +261,7 @@ impl<const D: usize> BlendingSplineSurface<D> {
         let mut rects = Vec::new();
         for ru in self.knots_u.affected_ranges(k) {
             for rv in self.knots_v.affected_ranges(l) {
-                rects.push((ru, rv));
+                rects.push(ParamRect::new(ru, rv));
             }
         }
         rects
@@ -303,10 +303,10 @@ fn make_patch<const D: usize>(
                     format!("the model's partial ({}, {}) at ({uc}, {vc}) is not finite", i / (dv + 1), i % (dv + 1)),
                 ));
             }
-            let (au, bu) = knots_u.support(k);
-            let (av, bv) = knots_v.support(l);
-            let hu = inverse_hermite_matrix(du, (uc - au) / (bu - au), bu - au)?;
-            let hv = inverse_hermite_matrix(dv, (vc - av) / (bv - av), bv - av)?;
+            let support = ParamRect::new(knots_u.support(k), knots_v.support(l));
+            let (su, sv) = (support.u, support.v);
+            let hu = inverse_hermite_matrix(du, (uc - su.start) / su.length(), su.length())?;
+            let hv = inverse_hermite_matrix(dv, (vc - sv.start) / sv.length(), sv.length())?;
             // C = H_u⁻¹ G H_v⁻ᵀ.
             let mut net = vec![Point::<D>::zeros(); (du + 1) * (dv + 1)];
             for a in 0..=du {
@@ -320,13 +320,7 @@ fn make_patch<const D: usize>(
                     net[a * (dv + 1) + b] = acc;
                 }
             }
-            PatchShape::Bezier(HermitePatch {
-                degrees: (du, dv),
-                world: net.clone(),
-                net,
-                start: (au, av),
-                length: (bu - au, bv - av),
-            })
+            PatchShape::Bezier(HermitePatch { degrees: (du, dv), world: net.clone(), net, support })
         }
     };
     Ok(LocalPatch { shape, origin, transform: Affine::identity() })
@@ -398,10 +392,8 @@ impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
             for (c, (col, at)) in
                 [(span.first, span.t), (span.second, span.t + span.second_shift)].into_iter().enumerate()
             {
-                let (s, e) = self.knots_u.support(col);
-                let l = e - s;
                 let base = (a * 2 + c) * 2 * nu;
-                scaled_bernstein(du, s, l, at, 1, &mut u_bases[base..base + 2 * nu]);
+                scaled_bernstein(du, self.knots_u.support(col), at, 1, &mut u_bases[base..base + 2 * nu]);
             }
             u_samples.push(USample { span, beta: [beta[0], beta[1] / span.width] });
         }
@@ -414,8 +406,7 @@ impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
             self.bfunction.eval(sv.w, &mut gamma);
             gamma[1] /= sv.width;
             for (row, (l, at)) in [(sv.first, sv.t), (sv.second, sv.t + sv.second_shift)].into_iter().enumerate() {
-                let (s, e) = self.knots_v.support(l);
-                scaled_bernstein(dv, s, e - s, at, 1, &mut bv);
+                scaled_bernstein(dv, self.knots_v.support(l), at, 1, &mut bv);
                 for k in 0..n_patch_u {
                     let PatchShape::Bezier(p) = &self.patches[k * self.knots_v.count() + l].shape else {
                         unreachable!("all patches are Bézier")

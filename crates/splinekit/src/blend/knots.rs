@@ -124,8 +124,8 @@ impl BlendKnots {
         }
     }
     /// The support [c_{k−1}, c_{k+1}] of local k (extended past the ends).
-    pub fn support(&self, k: usize) -> (f64, f64) {
-        (self.extended(k as isize - 1), self.extended(k as isize + 1))
+    pub fn support(&self, k: usize) -> Interval {
+        Interval::new(self.extended(k as isize - 1), self.extended(k as isize + 1))
     }
 
     /// The span containing `t` (clamped into an open domain, wrapped into a closed one). At
@@ -148,19 +148,19 @@ impl BlendKnots {
 
     /// The parameter ranges where local k takes part, (c_{k−1}, c_{k+1}) clipped to the
     /// domain (split at the seam of a closed spline).
-    pub fn affected_ranges(&self, k: usize) -> Vec<(f64, f64)> {
-        let (a, b) = self.support(k);
+    pub fn affected_ranges(&self, k: usize) -> Vec<Interval> {
+        let Interval { start: a, end: b } = self.support(k);
         let dom = self.domain();
         if !self.closed {
-            return vec![(a.max(dom.start), b.min(dom.end))];
+            return vec![Interval::new(a.max(dom.start), b.min(dom.end))];
         }
         let p = dom.length();
         if a < dom.start {
-            vec![(dom.start, b), (a + p, dom.end)]
+            vec![Interval::new(dom.start, b), Interval::new(a + p, dom.end)]
         } else if b > dom.end {
-            vec![(a, dom.end), (dom.start, b - p)]
+            vec![Interval::new(a, dom.end), Interval::new(dom.start, b - p)]
         } else {
-            vec![(a, b)]
+            vec![Interval::new(a, b)]
         }
     }
 
@@ -222,15 +222,15 @@ mod tests {
         assert_eq!((s.first, s.t), (0, 0.0));
         let s = k.locate(0.0, Side::Left);
         assert_eq!((s.first, s.t, s.w), (3, 4.0, 1.0));
-        assert_eq!(k.support(0), (-1.0, 1.0));
-        assert_eq!(k.affected_ranges(0), vec![(0.0, 1.0), (3.0, 4.0)]);
+        assert_eq!(k.support(0), Interval::new(-1.0, 1.0));
+        assert_eq!(k.affected_ranges(0), vec![Interval::new(0.0, 1.0), Interval::new(3.0, 4.0)]);
     }
 
     #[test]
     fn open_ends_mirror_and_double_knots_are_skipped() {
         let mut k = BlendKnots::new(vec![0.0, 1.0, 3.0, 4.0], false).unwrap();
-        assert_eq!(k.support(0), (-1.0, 1.0));
-        assert_eq!(k.support(3), (3.0, 5.0));
+        assert_eq!(k.support(0), Interval::new(-1.0, 1.0));
+        assert_eq!(k.support(3), Interval::new(3.0, 5.0));
         k.split(1).unwrap();
         assert_eq!(k.values(), &[0.0, 1.0, 1.0, 3.0, 4.0]);
         let r = k.locate(1.0, Side::Right);

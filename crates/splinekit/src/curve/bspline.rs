@@ -56,7 +56,7 @@ impl<const D: usize> BSplineCurve<D> {
 
     /// Clamped B-spline with uniform interior knots on [0, 1].
     pub fn clamped_uniform(degree: usize, control_points: Vec<Point<D>>) -> Result<Self> {
-        let kv = KnotVector::clamped_uniform(degree, control_points.len(), 0.0, 1.0)?;
+        let kv = KnotVector::clamped_uniform(degree, control_points.len(), Interval::new(0.0, 1.0))?;
         Self::new(degree, kv.into_vec(), control_points)
     }
 

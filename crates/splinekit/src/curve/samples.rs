@@ -2,10 +2,10 @@
 //! that reports the ranges it changed (e.g. moving a local of a blending spline), only the
 //! samples inside them are evaluated again.
 
-use crate::Point;
 use crate::basis::Side;
 use crate::curve::Curve;
 use crate::error::{Error, Result};
+use crate::{Interval, Point};
 
 /// `count` evenly spaced samples of a curve with derivatives up to `order`.
 #[derive(Debug, Clone)]
@@ -38,11 +38,11 @@ impl<const D: usize> CurveSamples<D> {
     }
     /// Re-evaluates the samples whose parameters lie in any of the closed `ranges`;
     /// returns how many were evaluated.
-    pub fn refresh<C: Curve<D> + ?Sized>(&mut self, curve: &C, ranges: &[(f64, f64)]) -> usize {
+    pub fn refresh<C: Curve<D> + ?Sized>(&mut self, curve: &C, ranges: &[Interval]) -> usize {
         let mut done = 0;
-        for &(a, b) in ranges {
-            let lo = self.params.partition_point(|&t| t < a);
-            let hi = self.params.partition_point(|&t| t <= b);
+        for range in ranges {
+            let lo = self.params.partition_point(|&t| t < range.start);
+            let hi = self.params.partition_point(|&t| t <= range.end);
             if lo < hi {
                 self.evaluate(curve, lo..hi);
                 done += hi - lo;

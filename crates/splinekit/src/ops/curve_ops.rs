@@ -2,6 +2,7 @@
 //! periodic (the operation is applied to every periodic image of a knot); clamping,
 //! splitting and Bézier decomposition open them.
 
+use crate::Interval;
 use crate::Point;
 use crate::curve::{BSplineCurve, BezierCurve, NurbsCurve, RationalBezierCurve};
 use crate::error::{Error, Result};
@@ -15,7 +16,7 @@ use crate::ops::spline_data::{SplineData, to_bspline, to_nurbs};
 /// All images u + jT of `u` strictly inside the open interval of `data`'s domain, plus
 /// the domain ends when they are images.
 fn images<T: crate::Coefficient>(data: &SplineData<T>, u: f64, period: f64) -> Vec<f64> {
-    let (a, b) = data.domain();
+    let Interval { start: a, end: b } = data.domain();
     let base = u - ((u - a) / period).floor() * period;
     let mut out = Vec::new();
     let mut v = base;
@@ -37,7 +38,7 @@ fn insert_generic<T: CoefficientNorm>(
     if !periodic {
         return insert_knot(data, u, times);
     }
-    let (a, b) = data.domain();
+    let Interval { start: a, end: b } = data.domain();
     if !(u >= a && u <= b) {
         return Err(Error::invalid("insert", format!("knot {u} is outside the domain [{a}, {b}]")));
     }
@@ -73,7 +74,7 @@ fn remove_generic<T: CoefficientNorm>(
     let mut removed = usize::MAX;
     let out = data.map_periodic(|mut d, period| {
         for v in images(&d, u, period) {
-            let (a, b) = d.domain();
+            let Interval { start: a, end: b } = d.domain();
             if v > a && v < b {
                 let (next, r) = remove_knot(&d, v, times, tol)?;
                 removed = removed.min(r);
@@ -152,14 +153,12 @@ impl<const D: usize> BSplineCurve<D> {
         let (l, r) = decomposition::split(&self.data(), u)?;
         Ok((to_bspline(l, false)?, Some(to_bspline(r, false)?)))
     }
-    /// The Bézier segments of the curve (each with its parameter interval).
-    pub fn bezier_segments(&self) -> Result<Vec<(f64, f64, BezierCurve<D>)>> {
+    /// The Bézier segments of the curve, each with its parameter interval.
+    pub fn bezier_segments(&self) -> Result<Vec<(Interval, BezierCurve<D>)>> {
         let d = if self.is_periodic() { open_at(&self.data(), self.knots()[self.degree()])? } else { self.data() };
         decomposition::bezier_segments(&d)?
             .into_iter()
-            .map(|BezierSegment { interval, control_points }| {
-                Ok((interval.0, interval.1, BezierCurve::new(control_points)?))
-            })
+            .map(|BezierSegment { interval, control_points }| Ok((interval, BezierCurve::new(control_points)?)))
             .collect()
     }
 }
@@ -208,14 +207,14 @@ impl<const D: usize> NurbsCurve<D> {
         Ok((to_nurbs(l, false)?, Some(to_nurbs(r, false)?)))
     }
     /// The rational Bézier segments with their parameter intervals.
-    pub fn bezier_segments(&self) -> Result<Vec<(f64, f64, RationalBezierCurve<D>)>> {
+    pub fn bezier_segments(&self) -> Result<Vec<(Interval, RationalBezierCurve<D>)>> {
         let d = if self.is_periodic() { open_at(&self.data(), self.knots()[self.degree()])? } else { self.data() };
         decomposition::bezier_segments(&d)?
             .into_iter()
             .map(|BezierSegment { interval, control_points }| {
                 let pts = control_points.iter().map(|h| h.project()).collect();
                 let ws = control_points.iter().map(|h| h.weight).collect();
-                Ok((interval.0, interval.1, RationalBezierCurve::new(pts, ws)?))
+                Ok((interval, RationalBezierCurve::new(pts, ws)?))
             })
             .collect()
     }

@@ -1,6 +1,7 @@
 //! Clamping, Bézier decomposition and splitting, all by knot insertion.
 
 use crate::Coefficient;
+use crate::Interval;
 use crate::error::{Error, Result};
 use crate::ops::knot_insertion::insert_knot;
 use crate::ops::spline_data::SplineData;
@@ -18,7 +19,7 @@ fn raise_to<T: Coefficient>(data: SplineData<T>, u: f64, target: usize) -> Resul
 /// The same curve on its domain [t_p, t_n] with clamped knots (p + 1 copies of each end).
 pub fn clamp<T: Coefficient>(data: &SplineData<T>) -> Result<SplineData<T>> {
     let p = data.degree;
-    let (a, b) = data.domain();
+    let Interval { start: a, end: b } = data.domain();
     if p == 0 {
         let i = data.knots.iter().rposition(|&k| k == a).unwrap();
         let j = data.knots.iter().position(|&k| k == b).unwrap();
@@ -41,7 +42,7 @@ pub fn clamp<T: Coefficient>(data: &SplineData<T>) -> Result<SplineData<T>> {
 #[derive(Debug, Clone, PartialEq)]
 pub struct BezierSegment<T> {
     /// Parameter interval [start, end] of the segment in the spline's parameter.
-    pub interval: (f64, f64),
+    pub interval: Interval,
     /// Control points of the segment, as a Bézier curve on [0, 1].
     pub control_points: Vec<T>,
 }
@@ -51,7 +52,7 @@ pub struct BezierSegment<T> {
 pub fn bezier_segments<T: Coefficient>(data: &SplineData<T>) -> Result<Vec<BezierSegment<T>>> {
     let p = data.degree;
     let mut d = clamp(data)?;
-    let (a, b) = d.domain();
+    let Interval { start: a, end: b } = d.domain();
     let mut interior: Vec<f64> = d.knots.iter().copied().filter(|&k| k > a && k < b).collect();
     interior.dedup();
     for &u in &interior {
@@ -64,7 +65,7 @@ pub fn bezier_segments<T: Coefficient>(data: &SplineData<T>) -> Result<Vec<Bezie
         .windows(2)
         .enumerate()
         .map(|(s, w)| BezierSegment {
-            interval: (w[0], w[1]),
+            interval: Interval::new(w[0], w[1]),
             control_points: d.coefficients[s * p..=s * p + p].to_vec(),
         })
         .collect())
@@ -75,7 +76,7 @@ pub fn bezier_segments<T: Coefficient>(data: &SplineData<T>) -> Result<Vec<Bezie
 /// the left limit and the right piece starts at the right limit.
 pub fn split<T: Coefficient>(data: &SplineData<T>, u: f64) -> Result<(SplineData<T>, SplineData<T>)> {
     let p = data.degree;
-    let (a, b) = data.domain();
+    let Interval { start: a, end: b } = data.domain();
     if !(u > a && u < b) {
         return Err(Error::invalid("split", format!("parameter {u} is not inside the domain ({a}, {b})")));
     }

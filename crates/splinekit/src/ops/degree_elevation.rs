@@ -3,6 +3,7 @@
 //! Each interior knot of multiplicity m ends with multiplicity m + t, so the elevated
 //! curve has the same continuity and the same shape.
 
+use crate::Interval;
 use crate::basis::binomial;
 use crate::error::{Error, Result};
 use crate::ops::decomposition::bezier_segments;
@@ -34,7 +35,7 @@ pub fn elevate_degree<T: CoefficientNorm>(data: &SplineData<T>, t: usize) -> Res
     let p = data.degree;
     let q = p + t;
     let segments = bezier_segments(data)?;
-    let (a, b) = data.domain();
+    let Interval { start: a, end: b } = data.domain();
     // Assemble with every interior knot of multiplicity q (C⁰ joins of the Bézier pieces).
     let mut knots = vec![a; q + 1];
     let mut coefficients = Vec::new();
@@ -46,7 +47,7 @@ pub fn elevate_degree<T: CoefficientNorm>(data: &SplineData<T>, t: usize) -> Res
             coefficients.extend_from_slice(&e[1..]);
         }
         if s + 1 < segments.len() {
-            knots.extend(std::iter::repeat_n(seg.interval.1, q));
+            knots.extend(std::iter::repeat_n(seg.interval.end, q));
         }
     }
     knots.extend(std::iter::repeat_n(b, q + 1));
@@ -54,7 +55,7 @@ pub fn elevate_degree<T: CoefficientNorm>(data: &SplineData<T>, t: usize) -> Res
     let scale = out.coefficients.iter().map(|c| c.norm()).fold(1.0, f64::max);
     let tol = 1e-9 * scale;
     for seg in segments.iter().take(segments.len().saturating_sub(1)) {
-        let u = seg.interval.1;
+        let u = seg.interval.end;
         let m = data.knots.iter().filter(|&&k| k == u).count();
         let surplus = p - m.min(p);
         if surplus > 0 {

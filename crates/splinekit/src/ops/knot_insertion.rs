@@ -7,6 +7,7 @@
 use smallvec::SmallVec;
 
 use crate::Coefficient;
+use crate::Interval;
 use crate::error::{Error, Result};
 use crate::ops::spline_data::SplineData;
 
@@ -16,7 +17,7 @@ pub fn insert_knot<T: Coefficient>(data: &SplineData<T>, u: f64, times: usize) -
     let p = data.degree;
     let knots = &data.knots;
     let pts = &data.coefficients;
-    let (a, b) = data.domain();
+    let Interval { start: a, end: b } = data.domain();
     if !(u >= a && u <= b) {
         return Err(Error::invalid("insert", format!("knot {u} is outside the domain [{a}, {b}]")));
     }

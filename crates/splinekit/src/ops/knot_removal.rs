@@ -5,6 +5,7 @@
 //! meet within `tolerance` the knot is removable. The deviation of the curve is bounded by
 //! the tolerance (convex-hull property).
 
+use crate::Interval;
 use crate::error::{Error, Result};
 use crate::ops::homogeneous::CoefficientNorm;
 use crate::ops::spline_data::SplineData;
@@ -22,7 +23,7 @@ pub fn remove_knot<T: CoefficientNorm>(
     let mut pw = data.coefficients.clone();
     let n = pw.len() - 1; // last index
     let m = n + p + 1;
-    let (a, b) = data.domain();
+    let Interval { start: a, end: b } = data.domain();
     if !(u > a && u < b) {
         return Err(Error::invalid("remove", format!("knot {u} is not inside the domain ({a}, {b})")));
     }

@@ -6,7 +6,7 @@
 use crate::curve::{BSplineCurve, NurbsCurve};
 use crate::error::{Error, Result};
 use crate::ops::homogeneous::Homogeneous;
-use crate::{Coefficient, Point};
+use crate::{Coefficient, Interval, Point};
 
 /// A B-spline in raw form: Σ N_{i,p} c_i over `knots` (n + p + 1 of them).
 #[derive(Debug, Clone, PartialEq)]
@@ -21,8 +21,8 @@ pub struct SplineData<T> {
 
 impl<T: Coefficient> SplineData<T> {
     /// Domain [t_p, t_n].
-    pub fn domain(&self) -> (f64, f64) {
-        (self.knots[self.degree], self.knots[self.coefficients.len()])
+    pub fn domain(&self) -> Interval {
+        Interval::new(self.knots[self.degree], self.knots[self.coefficients.len()])
     }
 
     /// Unrolls the periodic spline with base knots t_0 … t_{n+p} and n coefficients over

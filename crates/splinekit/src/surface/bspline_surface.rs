@@ -1,10 +1,11 @@
 //! B-spline surfaces S(u, v) = Σ_i Σ_j N_{i,p}(u) M_{j,q}(v) P_ij.
 
-use crate::Point;
+use crate::basis::KnotVector;
 use crate::curve::BSplineCurve;
 use crate::error::Result;
 use crate::surface::tensor::{TensorSpline, net_axes, net_shape, tensor_surface_domains};
 use crate::surface::{Surface, unit_normal};
+use crate::{Interval, Point};
 
 /// A tensor-product B-spline surface of degrees (p, q). The net's first index runs along
 /// u. Each direction may be clamped, unclamped or periodic (closed), with the knot rules
@@ -33,8 +34,9 @@ impl<const D: usize> BSplineSurface<D> {
     /// Clamped uniform knots on [0, 1]² for the given net.
     pub fn clamped_uniform(degrees: (usize, usize), net: Vec<Vec<Point<D>>>) -> Result<Self> {
         let (nu, nv) = net_shape(&net, "control_points")?;
-        let ku = crate::basis::KnotVector::clamped_uniform(degrees.0, nu, 0.0, 1.0)?.into_vec();
-        let kv = crate::basis::KnotVector::clamped_uniform(degrees.1, nv, 0.0, 1.0)?.into_vec();
+        let unit = Interval::new(0.0, 1.0);
+        let ku = KnotVector::clamped_uniform(degrees.0, nu, unit)?.into_vec();
+        let kv = KnotVector::clamped_uniform(degrees.1, nv, unit)?.into_vec();
         Self::new(degrees, ku, kv, net, (false, false))
     }
 

@@ -2,12 +2,10 @@
 //! parameter rectangles only (after an edit that reports what it changed, such as moving a
 //! patch of a blending-spline surface).
 
-use crate::Point;
+pub use crate::ParamRect;
 use crate::error::{Error, Result};
 use crate::surface::Surface;
-
-/// A rectangle of parameters [u₀, u₁] × [v₀, v₁].
-pub type ParamRect = ((f64, f64), (f64, f64));
+use crate::{Interval, Point};
 
 /// Points and normals at `us × vs` (`points[a·vs.len() + b]` at (`us[a]`, `vs[b]`)).
 #[derive(Debug, Clone)]
@@ -42,10 +40,10 @@ impl<const D: usize> SurfaceGridSamples<D> {
     /// Re-evaluates the samples inside any of the closed rectangles; returns how many.
     pub fn refresh<S: Surface<D> + ?Sized>(&mut self, surface: &S, rects: &[ParamRect]) -> usize {
         let mut done = 0;
-        let range = |xs: &[f64], (a, b): (f64, f64)| xs.partition_point(|&x| x < a)..xs.partition_point(|&x| x <= b);
+        let range = |xs: &[f64], i: Interval| xs.partition_point(|&x| x < i.start)..xs.partition_point(|&x| x <= i.end);
         let (mut pts, mut nrm) = (Vec::new(), Vec::new());
-        for &(ru, rv) in rects {
-            let (iu, iv) = (range(&self.us, ru), range(&self.vs, rv));
+        for rect in rects {
+            let (iu, iv) = (range(&self.us, rect.u), range(&self.vs, rect.v));
             let (n_u, n_v) = (iu.len(), iv.len());
             if n_u == 0 || n_v == 0 {
                 continue;

@@ -3,19 +3,19 @@
 //! curve (all columns share the u-knots, so they end with the same new knots); an
 //! operation in v acts on every row. The surface is unchanged.
 
-use crate::Point;
 use crate::curve::{BSplineCurve, NurbsCurve};
 use crate::error::Result;
 use crate::surface::iso_curve::Direction;
 use crate::surface::{BSplineSurface, BezierSurface, NurbsSurface};
+use crate::{Interval, Point};
 
 /// One Bézier patch of a B-spline surface and the parameter rectangle it covers.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BezierPatch<const D: usize> {
     /// [u₀, u₁] of the patch in the spline's parameters.
-    pub u_range: (f64, f64),
+    pub u_range: Interval,
     /// [v₀, v₁] of the patch.
-    pub v_range: (f64, f64),
+    pub v_range: Interval,
     /// The patch as a Bézier surface on [0, 1]².
     pub surface: BezierSurface<D>,
 }
@@ -105,8 +105,8 @@ impl<const D: usize> BSplineSurface<D> {
             for b in 0..bv.len() - 1 {
                 let patch: Vec<Vec<Point<D>>> = (0..=p).map(|i| net[a * p + i][b * q..=b * q + q].to_vec()).collect();
                 row.push(BezierPatch {
-                    u_range: (bu[a], bu[a + 1]),
-                    v_range: (bv[b], bv[b + 1]),
+                    u_range: Interval::new(bu[a], bu[a + 1]),
+                    v_range: Interval::new(bv[b], bv[b + 1]),
                     surface: BezierSurface::new(patch)?,
                 });
             }
