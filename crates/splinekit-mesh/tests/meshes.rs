@@ -201,14 +201,14 @@ fn gltf_and_glb_read_back_with_the_gltf_crate() {
 
 #[test]
 fn trimmed_surfaces_follow_their_loops_by_constrained_delaunay() {
-    use splinekit::curve::NurbsCurve;
+    use splinekit::curve::{CircleFrame, NurbsCurve};
     use splinekit::surface::TrimmedSurface;
     let plane = || {
         Box::new(
             Plane::new(Point::<3>::zeros(), Point::<3>::new(1.0, 0.0, 0.0), Point::<3>::new(0.0, 1.0, 0.0)).unwrap(),
         )
     };
-    let hole = NurbsCurve::<2>::circle(Point::<2>::new(0.5, 0.5), Point::<2>::x(), Point::<2>::y(), 0.25).unwrap();
+    let hole = NurbsCurve::<2>::circle(&CircleFrame::in_xy_plane(Point::<2>::new(0.5, 0.5), 0.25)).unwrap();
     let s = TrimmedSurface::new(plane(), None, &[&hole]).unwrap();
     let m = regular(&s, 32, 32, MeshOptions::default()).unwrap();
     let exact = 1.0 - PI * 0.25 * 0.25;
@@ -223,8 +223,8 @@ fn trimmed_surfaces_follow_their_loops_by_constrained_delaunay() {
     }
     assert!(m.triangles.len() > 1000);
     // A hole crossing the outer loop is refused.
-    let outer = NurbsCurve::<2>::circle(Point::<2>::new(0.5, 0.5), Point::<2>::x(), Point::<2>::y(), 0.4).unwrap();
-    let crossing = NurbsCurve::<2>::circle(Point::<2>::new(0.85, 0.5), Point::<2>::x(), Point::<2>::y(), 0.2).unwrap();
+    let outer = NurbsCurve::<2>::circle(&CircleFrame::in_xy_plane(Point::<2>::new(0.5, 0.5), 0.4)).unwrap();
+    let crossing = NurbsCurve::<2>::circle(&CircleFrame::in_xy_plane(Point::<2>::new(0.85, 0.5), 0.2)).unwrap();
     let s = TrimmedSurface::new(plane(), Some(&outer), &[&crossing]).unwrap();
     let e = regular(&s, 16, 16, MeshOptions::default()).unwrap_err();
     assert!(e.to_string().contains("holes[0]"), "{e}");

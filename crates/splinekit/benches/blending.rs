@@ -5,7 +5,9 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use splinekit::Point;
 use splinekit::basis::BFunction;
-use splinekit::blend::{BlendingSplineCurve, BlendingSplineSurface, LocalKind, PatchKind};
+use splinekit::blend::{
+    BlendingCurveOptions, BlendingSplineCurve, BlendingSplineSurface, BlendingSurfaceOptions, LocalKind, PatchKind,
+};
 use splinekit::curve::Curve;
 use splinekit::curve::model::Heart;
 use splinekit::frame::Affine;
@@ -18,9 +20,7 @@ fn bench(c: &mut Criterion) {
     let curve = BlendingSplineCurve::from_model(
         Arc::new(Heart::new(1.0).unwrap()),
         10,
-        LocalKind::Bezier(3),
-        BFunction::erbs_default(),
-        true,
+        &BlendingCurveOptions { local: LocalKind::Bezier(3), closed: Some(true), ..Default::default() },
     )
     .unwrap();
     let n = 1_000_000;
@@ -39,9 +39,12 @@ fn bench(c: &mut Criterion) {
     let torus = BlendingSplineSurface::from_model(
         Arc::new(Torus::new(3.0, 1.0).unwrap()),
         (8, 8),
-        PatchKind::Bezier(3, 3),
-        BFunction::erbs_default(),
-        (true, true),
+        &BlendingSurfaceOptions {
+            local: PatchKind::Bezier(3, 3),
+            bfunction: BFunction::erbs_default(),
+            closed_u: Some(true),
+            closed_v: Some(true),
+        },
     )
     .unwrap();
     g.bench_function("torus 8×8 bicubic, 256×256 grid with normals", |b| {

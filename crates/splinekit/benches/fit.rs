@@ -2,7 +2,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use splinekit::Point;
-use splinekit::fit::{FitOptions, KnotPlacement, Parametrization, fit, fit_knots, fit_with_knots};
+use splinekit::fit::{FitOptions, FitWithKnotsOptions, KnotPlacement, Parametrization, fit, fit_knots, fit_with_knots};
 use std::hint::black_box;
 
 fn bench(c: &mut Criterion) {
@@ -16,7 +16,7 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("fit 10^6 samples, 1000 control points, cubic 3d");
     g.sample_size(10);
     g.bench_function("fit_with_knots (given params and knots)", |b| {
-        b.iter(|| fit_with_knots(black_box(&points), &params, 3, knots.clone(), None, false, false).unwrap())
+        b.iter(|| fit_with_knots(black_box(&points), &params, &FitWithKnotsOptions::new(3, knots.clone())).unwrap())
     });
     let mut o = FitOptions::new(3, 1000);
     o.params = Parametrization::ChordLength;

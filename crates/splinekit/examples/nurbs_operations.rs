@@ -4,10 +4,10 @@
 //! cargo run -p splinekit --example nurbs_operations
 
 use splinekit::Point;
-use splinekit::curve::{Curve, NurbsCurve};
+use splinekit::curve::{CircleFrame, Curve, NurbsCurve};
 
 fn main() -> splinekit::Result<()> {
-    let circle = NurbsCurve::<3>::circle(Point::<3>::zeros(), Point::<3>::x(), Point::<3>::y(), 2.0)?;
+    let circle = NurbsCurve::<3>::circle(&CircleFrame::in_xy_plane(Point::<3>::zeros(), 2.0))?;
     let refined = circle.refine(&[0.1, 0.3, 0.3])?.elevate_degree(2)?;
     println!(
         "degree {} → {}, control points {} → {}",

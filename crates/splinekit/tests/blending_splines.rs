@@ -6,7 +6,7 @@ mod common;
 use common::*;
 use splinekit::Point;
 use splinekit::basis::{BFunction, Side};
-use splinekit::blend::{BlendingSplineCurve, LocalKind};
+use splinekit::blend::{BlendKnots, BlendingCurveOptions, BlendingSplineCurve, LocalKind};
 use splinekit::curve::Curve;
 use splinekit::curve::model::{Circle, Heart, Helix};
 use splinekit::frame::Affine;
@@ -24,9 +24,7 @@ fn erbs_with_bezier_locals_reproduces_the_model_derivatives_at_every_knot() {
             let c = BlendingSplineCurve::from_model(
                 model.clone(),
                 10,
-                LocalKind::Bezier(d),
-                BFunction::erbs_default(),
-                closed,
+                &BlendingCurveOptions { local: LocalKind::Bezier(d), closed: Some(closed), ..Default::default() },
             )
             .unwrap();
             for k in 0..c.local_count() {
@@ -47,8 +45,17 @@ fn erbs_with_bezier_locals_reproduces_the_model_derivatives_at_every_knot() {
         }
     }
     // With 3t² − 2t³ only the value and the first derivative are reproduced.
-    let c = BlendingSplineCurve::from_model(heart(), 10, LocalKind::Bezier(3), BFunction::polynomial(1).unwrap(), true)
-        .unwrap();
+    let c = BlendingSplineCurve::from_model(
+        heart(),
+        10,
+        &BlendingCurveOptions {
+            local: LocalKind::Bezier(3),
+            bfunction: BFunction::polynomial(1).unwrap(),
+            closed: Some(true),
+            ..Default::default()
+        },
+    )
+    .unwrap();
     let t = c.centre(4) + 0.0;
     let (mut got, mut want) = ([Point::<3>::zeros(); 3], [Point::<3>::zeros(); 3]);
     c.eval(t, &mut got);
@@ -59,9 +66,24 @@ fn erbs_with_bezier_locals_reproduces_the_model_derivatives_at_every_knot() {
 
 #[test]
 fn sub_curve_locals_give_back_the_model_and_closed_curves_close() {
-    let c = BlendingSplineCurve::from_model(heart(), 10, LocalKind::SubCurve, BFunction::erbs_default(), true).unwrap();
+    let c = BlendingSplineCurve::from_model(
+        heart(),
+        10,
+        &BlendingCurveOptions { local: LocalKind::SubCurve, closed: Some(true), ..Default::default() },
+    )
+    .unwrap();
     assert!(max_distance(&c, heart().as_ref(), 400) < 1e-13);
-    let b = BlendingSplineCurve::from_model(heart(), 7, LocalKind::Bezier(2), BFunction::Trigonometric, true).unwrap();
+    let b = BlendingSplineCurve::from_model(
+        heart(),
+        7,
+        &BlendingCurveOptions {
+            local: LocalKind::Bezier(2),
+            bfunction: BFunction::Trigonometric,
+            closed: Some(true),
+            ..Default::default()
+        },
+    )
+    .unwrap();
     let d = b.domain();
     let (mut l, mut r) = ([Point::<3>::zeros(); 3], [Point::<3>::zeros(); 3]);
     b.eval_side(d.end, Side::Left, &mut l);
@@ -81,8 +103,12 @@ fn sub_curve_locals_give_back_the_model_and_closed_curves_close() {
 
 #[test]
 fn moving_a_local_changes_only_its_support_and_frames_are_affine() {
-    let mut c =
-        BlendingSplineCurve::from_model(heart(), 10, LocalKind::Bezier(3), BFunction::erbs_default(), true).unwrap();
+    let mut c = BlendingSplineCurve::from_model(
+        heart(),
+        10,
+        &BlendingCurveOptions { local: LocalKind::Bezier(3), closed: Some(true), ..Default::default() },
+    )
+    .unwrap();
     let before: Vec<(f64, Point<3>)> = (0..=500)
         .map(|i| {
             let t = c.domain().lerp(i as f64 / 500.0);
@@ -115,10 +141,18 @@ fn moving_a_local_changes_only_its_support_and_frames_are_affine() {
     // One affine map M applied through every frame equals M applied to the curve.
     let m = Affine::rotation(p3(1.0, 2.0, 0.5), 0.7).unwrap().after(&Affine::scale(p3(1.0, 2.0, 0.5)));
     let m = Affine::translation(p3(3.0, -1.0, 2.0)).after(&m);
-    let plain =
-        BlendingSplineCurve::from_model(heart(), 8, LocalKind::Bezier(2), BFunction::erbs_default(), true).unwrap();
-    let mut mapped =
-        BlendingSplineCurve::from_model(heart(), 8, LocalKind::Bezier(2), BFunction::erbs_default(), true).unwrap();
+    let plain = BlendingSplineCurve::from_model(
+        heart(),
+        8,
+        &BlendingCurveOptions { local: LocalKind::Bezier(2), closed: Some(true), ..Default::default() },
+    )
+    .unwrap();
+    let mut mapped = BlendingSplineCurve::from_model(
+        heart(),
+        8,
+        &BlendingCurveOptions { local: LocalKind::Bezier(2), closed: Some(true), ..Default::default() },
+    )
+    .unwrap();
     for k in 0..8 {
         let o = mapped.origin(k);
         let frame = Affine { linear: m.linear, translation: m.apply_point(&o) - o };
@@ -136,9 +170,12 @@ fn bezier_locals_converge_to_the_circle() {
     let mut last = f64::INFINITY;
     let mut rates = Vec::new();
     for n in [4, 8, 16, 32] {
-        let c =
-            BlendingSplineCurve::from_model(circle.clone(), n, LocalKind::Bezier(2), BFunction::erbs_default(), true)
-                .unwrap();
+        let c = BlendingSplineCurve::from_model(
+            circle.clone(),
+            n,
+            &BlendingCurveOptions { local: LocalKind::Bezier(2), closed: Some(true), ..Default::default() },
+        )
+        .unwrap();
         let err = (0..2000)
             .map(|i| (c.point(std::f64::consts::TAU * i as f64 / 2000.0).norm() - 1.0).abs())
             .fold(0.0, f64::max);
@@ -150,20 +187,41 @@ fn bezier_locals_converge_to_the_circle() {
     }
     eprintln!("blending spline of the circle, Bézier degree 2 locals, n = 4→8→16→32: rates {rates:?}");
     assert!(rates.iter().all(|&r| r > 2.5), "convergence rates {rates:?}");
-    assert!(BlendingSplineCurve::from_model(circle, 2, LocalKind::Bezier(2), BFunction::Linear, true).is_err());
+    assert!(
+        BlendingSplineCurve::from_model(
+            circle,
+            2,
+            &BlendingCurveOptions {
+                local: LocalKind::Bezier(2),
+                bfunction: BFunction::Linear,
+                closed: Some(true),
+                ..Default::default()
+            }
+        )
+        .is_err()
+    );
 }
 
 #[test]
 fn osculating_arc_locals_match_position_tangent_and_curvature_and_give_the_circle_back() {
     let circle: Arc<dyn Curve<3>> = Arc::new(Circle::new(2.0).unwrap());
-    let c =
-        BlendingSplineCurve::from_model(circle.clone(), 5, LocalKind::Arc, BFunction::erbs_default(), true).unwrap();
+    let c = BlendingSplineCurve::from_model(
+        circle.clone(),
+        5,
+        &BlendingCurveOptions { local: LocalKind::Arc, closed: Some(true), ..Default::default() },
+    )
+    .unwrap();
     for i in 0..=200 {
         let t = i as f64 * std::f64::consts::TAU / 200.0;
         assert!((c.point(t) - circle.point(t)).norm() < 1e-13, "t = {t}");
     }
     let h: Arc<dyn Curve<3>> = Arc::new(splinekit::curve::model::Ellipse::new(3.0, 1.0).unwrap());
-    let c = BlendingSplineCurve::from_model(h.clone(), 12, LocalKind::Arc, BFunction::erbs_default(), true).unwrap();
+    let c = BlendingSplineCurve::from_model(
+        h.clone(),
+        12,
+        &BlendingCurveOptions { local: LocalKind::Arc, closed: Some(true), ..Default::default() },
+    )
+    .unwrap();
     for k in 0..12 {
         let t = c.centre(k);
         let (mut got, mut want) = ([Point::<3>::zeros(); 3], [Point::<3>::zeros(); 3]);
@@ -174,7 +232,11 @@ fn osculating_arc_locals_match_position_tangent_and_curvature_and_give_the_circl
         assert!((kg - kw).abs() < 1e-10 * kw.max(1.0), "knot {k}: curvature {kg} vs {kw}");
     }
     // The heart has no tangent at its cusp (t = 0): arcs are refused there, with a reason.
-    let e = BlendingSplineCurve::from_model(heart(), 12, LocalKind::Arc, BFunction::erbs_default(), true);
+    let e = BlendingSplineCurve::from_model(
+        heart(),
+        12,
+        &BlendingCurveOptions { local: LocalKind::Arc, closed: Some(true), ..Default::default() },
+    );
     assert!(e.err().unwrap().to_string().contains("no tangent"));
 }
 
@@ -183,13 +245,15 @@ fn chord_length_knots_space_the_locals_evenly_along_the_model() {
     use splinekit::blend::KnotSpacing;
     use splinekit::ops::length::arc_length;
     let h = heart();
-    let c = BlendingSplineCurve::from_model_spaced(
+    let c = BlendingSplineCurve::from_model(
         h.clone(),
         10,
-        LocalKind::Bezier(3),
-        BFunction::erbs_default(),
-        true,
-        KnotSpacing::ChordLength,
+        &BlendingCurveOptions {
+            local: LocalKind::Bezier(3),
+            bfunction: BFunction::erbs_default(),
+            closed: Some(true),
+            spacing: KnotSpacing::ChordLength,
+        },
     )
     .unwrap();
     let knots = c.knots().values();
@@ -219,7 +283,12 @@ fn explicit_locals_are_mapped_onto_their_supports() {
         Arc::new(BezierCurve::new(vec![Point::<2>::from(a), Point::<2>::from(b)]).unwrap())
     };
     let locals = vec![line([-1.0, 0.0], [1.0, 0.0]), line([0.0, 0.0], [2.0, 2.0]), line([1.0, 1.0], [3.0, 1.0])];
-    let c = BlendingSplineCurve::from_locals(vec![0.0, 1.0, 3.0], locals, BFunction::erbs_default(), false).unwrap();
+    let c = BlendingSplineCurve::from_locals(
+        BlendKnots::new(vec![0.0, 1.0, 3.0], false).unwrap(),
+        locals,
+        BFunction::erbs_default(),
+    )
+    .unwrap();
     // Local k's [0,1] spans [c_{k−1}, c_{k+1}]; its midpoint ... at the knot it is at u = (c_k − c_{k−1})/(c_{k+1} − c_{k−1}).
     assert!((c.point(0.0) - Point::<2>::new(0.0, 0.0)).norm() < 1e-15);
     assert!((c.point(1.0) - Point::<2>::new(2.0 / 3.0, 2.0 / 3.0)).norm() < 1e-15);
@@ -229,7 +298,8 @@ fn explicit_locals_are_mapped_onto_their_supports() {
     c.eval(1.0, &mut d);
     assert!((d[1] - Point::<2>::new(2.0 / 3.0, 2.0 / 3.0)).norm() < 1e-14);
     check_derivatives_by_finite_differences(&c, &[0.3, 1.7, 2.5]);
-    let bad = BlendingSplineCurve::<2>::from_locals(vec![0.0, 1.0], vec![], BFunction::erbs_default(), false);
+    let two_knots = BlendKnots::new(vec![0.0, 1.0], false).unwrap();
+    let bad = BlendingSplineCurve::<2>::from_locals(two_knots, vec![], BFunction::erbs_default());
     assert!(bad.err().unwrap().to_string().contains("local_curves"));
 }
 
@@ -250,8 +320,12 @@ fn check_derivatives_by_finite_differences<C: Curve<D>, const D: usize>(c: &C, t
 #[test]
 fn inserting_a_local_keeps_the_curve_outside_its_interval_and_still_interpolates() {
     let h = heart();
-    let mut c =
-        BlendingSplineCurve::from_model(h.clone(), 8, LocalKind::Bezier(2), BFunction::erbs_default(), true).unwrap();
+    let mut c = BlendingSplineCurve::from_model(
+        h.clone(),
+        8,
+        &BlendingCurveOptions { local: LocalKind::Bezier(2), closed: Some(true), ..Default::default() },
+    )
+    .unwrap();
     let before = c.clone();
     let (lo, hi) = (c.centre(2), c.centre(3));
     let t_new = 0.5 * (lo + hi) + 0.1;
@@ -278,8 +352,12 @@ fn inserting_a_local_keeps_the_curve_outside_its_interval_and_still_interpolates
 
 #[test]
 fn splitting_a_knot_gives_a_c0_joint_that_survives_rotating_one_copy() {
-    let mut c =
-        BlendingSplineCurve::from_model(heart(), 8, LocalKind::Bezier(3), BFunction::erbs_default(), true).unwrap();
+    let mut c = BlendingSplineCurve::from_model(
+        heart(),
+        8,
+        &BlendingCurveOptions { local: LocalKind::Bezier(3), closed: Some(true), ..Default::default() },
+    )
+    .unwrap();
     let before = c.clone();
     c.split_knot(3).unwrap();
     assert_eq!(c.local_count(), 9);
@@ -300,7 +378,12 @@ fn splitting_a_knot_gives_a_c0_joint_that_survives_rotating_one_copy() {
 #[test]
 fn rebuilding_changes_count_degree_and_bfunction_and_refresh_only_touches_the_affected_range() {
     use splinekit::curve::CurveSamples;
-    let c = BlendingSplineCurve::from_model(heart(), 6, LocalKind::Bezier(2), BFunction::erbs_default(), true).unwrap();
+    let c = BlendingSplineCurve::from_model(
+        heart(),
+        6,
+        &BlendingCurveOptions { local: LocalKind::Bezier(2), closed: Some(true), ..Default::default() },
+    )
+    .unwrap();
     let finer = c.rebuilt(24, LocalKind::Bezier(4)).unwrap();
     assert_eq!(finer.local_count(), 24);
     let err = |c: &BlendingSplineCurve<3>| {

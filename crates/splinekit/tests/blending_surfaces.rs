@@ -4,7 +4,7 @@
 
 use splinekit::Point;
 use splinekit::basis::BFunction;
-use splinekit::blend::{BlendingSplineSurface, PatchKind};
+use splinekit::blend::{BlendingSplineSurface, BlendingSurfaceOptions, PatchKind};
 use splinekit::frame::Affine;
 use splinekit::surface::Surface;
 use splinekit::surface::SurfaceGridSamples;
@@ -31,7 +31,17 @@ fn models() -> Vec<(&'static str, Arc<dyn Surface<3>>)> {
 }
 fn build(model: &Arc<dyn Surface<3>>, n: (usize, usize), kind: PatchKind) -> BlendingSplineSurface<3> {
     let closed = (model.is_closed_u(), model.is_closed_v());
-    BlendingSplineSurface::from_model(model.clone(), n, kind, BFunction::erbs_default(), closed).unwrap()
+    BlendingSplineSurface::from_model(
+        model.clone(),
+        n,
+        &BlendingSurfaceOptions {
+            local: kind,
+            bfunction: BFunction::erbs_default(),
+            closed_u: Some(closed.0),
+            closed_v: Some(closed.1),
+        },
+    )
+    .unwrap()
 }
 fn close(a: &Point<3>, b: &Point<3>, tol: f64) -> bool {
     (a - b).norm() <= tol * b.norm().max(1.0)
@@ -210,17 +220,23 @@ fn bad_counts_and_degrees_are_refused_with_the_field() {
     let e = BlendingSplineSurface::from_model(
         torus(),
         (2, 5),
-        PatchKind::SubSurface,
-        BFunction::erbs_default(),
-        (true, true),
+        &BlendingSurfaceOptions {
+            local: PatchKind::SubSurface,
+            bfunction: BFunction::erbs_default(),
+            closed_u: Some(true),
+            closed_v: Some(true),
+        },
     );
     assert!(e.err().unwrap().to_string().contains("local_surfaces[0]"));
     let e = BlendingSplineSurface::from_model(
         torus(),
         (4, 4),
-        PatchKind::Bezier(0, 3),
-        BFunction::erbs_default(),
-        (true, true),
+        &BlendingSurfaceOptions {
+            local: PatchKind::Bezier(0, 3),
+            bfunction: BFunction::erbs_default(),
+            closed_u: Some(true),
+            closed_v: Some(true),
+        },
     );
     assert!(e.err().unwrap().to_string().contains("local"));
 }

@@ -6,7 +6,7 @@ use common::*;
 use proptest::prelude::*;
 use splinekit::Point;
 use splinekit::basis::{Side, basis_derivatives, basis_function, basis_functions, find_span};
-use splinekit::curve::{BSplineCurve, Curve, NurbsCurve};
+use splinekit::curve::{BSplineCurve, CircleFrame, Curve, NurbsCurve};
 
 fn sample_curve(degree: usize, n: usize) -> BSplineCurve<3> {
     let pts = (0..n)
@@ -194,7 +194,9 @@ fn periodic_knots_must_repeat_their_spacing() {
 
 #[test]
 fn nurbs_circle_is_exact() {
-    let c = NurbsCurve::circle(p3(1.0, -2.0, 0.5), p3(1.0, 0.0, 0.0), p3(0.0, 1.0, 0.0), 2.5).unwrap();
+    let frame =
+        CircleFrame { center: p3(1.0, -2.0, 0.5), x_axis: p3(1.0, 0.0, 0.0), y_axis: p3(0.0, 1.0, 0.0), radius: 2.5 };
+    let c = NurbsCurve::circle(&frame).unwrap();
     for i in 0..=1000 {
         let t = i as f64 / 1000.0;
         let mut d = [Point::<3>::zeros(); 3];
@@ -210,7 +212,7 @@ fn nurbs_circle_is_exact() {
 
 #[test]
 fn nurbs_derivatives_match_finite_differences() {
-    let c = NurbsCurve::arc(p2(0.0, 0.0), p2(1.0, 0.0), p2(0.0, 1.0), 1.0, 0.2, 4.0).unwrap();
+    let c = NurbsCurve::arc(&CircleFrame::in_xy_plane(p2(0.0, 0.0), 1.0), 0.2, 4.0).unwrap();
     for &t in &[0.05, 0.33, 0.61, 0.9] {
         let mut d = [Point::<2>::zeros(); 4];
         c.eval(t, &mut d);
@@ -330,7 +332,7 @@ fn periodic_operations_stay_periodic_and_unchanged() {
 
 #[test]
 fn nurbs_operations_leave_the_circle_unchanged() {
-    let c = NurbsCurve::circle(p2(0.0, 0.0), p2(1.0, 0.0), p2(0.0, 1.0), 1.0).unwrap();
+    let c = NurbsCurve::circle(&CircleFrame::in_xy_plane(p2(0.0, 0.0), 1.0)).unwrap();
     let r = c.refine(&[0.1, 0.6, 0.6]).unwrap();
     check_same(&c, &r, "nurbs refine");
     let e = c.elevate_degree(2).unwrap();

@@ -26,8 +26,8 @@ fn check_lsq<const D: usize>(case: &Value) {
     let k = case["degree"].as_u64().unwrap() as usize;
     let pts: Vec<Point<D>> = points(&case["points"]);
     let w = if case["weights"].is_null() { None } else { Some(floats(&case["weights"])) };
-    let f = fit::fit_with_knots(&pts, &floats(&case["params"]), k, floats(&case["knots"]), w.as_deref(), false, false)
-        .unwrap();
+    let options = fit::FitWithKnotsOptions { weights: w, ..fit::FitWithKnotsOptions::new(k, floats(&case["knots"])) };
+    let f = fit::fit_with_knots(&pts, &floats(&case["params"]), &options).unwrap();
     let expected: Vec<Point<D>> = points(&case["control_points"]);
     let scale = expected.iter().map(|p| p.norm()).fold(1.0, f64::max);
     let err = f.curve.control_points().iter().zip(&expected).map(|(a, b)| (a - b).norm()).fold(0.0, f64::max);
@@ -58,7 +58,7 @@ fn interpolation_agrees_with_scipy_make_interp_spline() {
         let pts: Vec<Point<2>> = points(&case["points"]);
         let params = floats(&case["params"]);
         // Same knots and parameters: the least-squares solve of a square system interpolates.
-        let f = fit::fit_with_knots(&pts, &params, k, floats(&case["knots"]), None, false, false).unwrap();
+        let f = fit::fit_with_knots(&pts, &params, &fit::FitWithKnotsOptions::new(k, floats(&case["knots"]))).unwrap();
         let expected: Vec<Point<2>> = points(&case["control_points"]);
         for (a, b) in f.curve.control_points().iter().zip(&expected) {
             assert!((a - b).norm() < 1e-10 * (1.0 + b.norm()), "degree {k}: {a} vs {b}");
@@ -149,7 +149,7 @@ fn underdetermined_fits_are_refused() {
     let params: Vec<f64> = (0..30).map(|i| i as f64 / 60.0).collect();
     let pts: Vec<Point<2>> = params.iter().map(|&t| p2(t, t * t)).collect();
     let knots = vec![0., 0., 0., 0., 0.2, 0.4, 0.6, 0.8, 1., 1., 1., 1.];
-    let e = fit::fit_with_knots(&pts, &params, 3, knots, None, false, false).unwrap_err().to_string();
+    let e = fit::fit_with_knots(&pts, &params, &fit::FitWithKnotsOptions::new(3, knots)).unwrap_err().to_string();
     assert!(e.contains("control point") && e.contains("not determined"), "{e}");
 }
 

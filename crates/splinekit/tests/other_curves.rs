@@ -85,7 +85,8 @@ fn bezier_de_casteljau_bernstein_and_matrix_forms_agree() {
 
 #[test]
 fn rational_bezier_conics_are_exact() {
-    let arc = RationalBezierCurve::circular_arc(p2(1.0, 1.0), p2(1.0, 0.0), p2(0.0, 1.0), 3.0, 0.3, 2.0).unwrap();
+    let frame = CircleFrame { center: p2(1.0, 1.0), x_axis: p2(1.0, 0.0), y_axis: p2(0.0, 1.0), radius: 3.0 };
+    let arc = RationalBezierCurve::circular_arc(&frame, 0.3, 2.0).unwrap();
     for i in 0..=100 {
         let t = i as f64 / 100.0;
         assert!(((arc.point(t) - p2(1.0, 1.0)).norm() - 3.0).abs() < 1e-14);

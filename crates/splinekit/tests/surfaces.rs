@@ -526,8 +526,13 @@ fn derived_surfaces_revolution_ruled_extrusion_coons() {
     let rev = RevolvedSurface::new(Box::new(tube), p3(0.0, 0.0, 0.0), p3(0.0, 0.0, 2.0), TAU).unwrap();
     assert!(rev.is_closed_u() && rev.is_closed_v());
     check_partials(&rev, "revolved b-spline");
-    let circle_profile =
-        splinekit::curve::NurbsCurve::circle(p3(3.0, 0.0, 0.0), p3(1.0, 0.0, 0.0), p3(0.0, 0.0, 1.0), 1.0).unwrap();
+    let circle_profile = splinekit::curve::NurbsCurve::circle(&splinekit::curve::CircleFrame {
+        center: p3(3.0, 0.0, 0.0),
+        x_axis: p3(1.0, 0.0, 0.0),
+        y_axis: p3(0.0, 0.0, 1.0),
+        radius: 1.0,
+    })
+    .unwrap();
     let exact = RevolvedSurface::new(Box::new(circle_profile), p3(0.0, 0.0, 0.0), p3(0.0, 0.0, 1.0), TAU).unwrap();
     for a in 0..=8 {
         for b in 0..=8 {

@@ -4,7 +4,7 @@ use anyhow::Result;
 use splinekit::Point;
 use splinekit::basis::{basis_function, bernstein};
 use splinekit::curve::model::{Butterfly, Circle, Heart, Helix, Lissajous, Trefoil};
-use splinekit::curve::{BSplineCurve, BezierCurve, CatmullRomCurve, Curve, HermiteCurve, NurbsCurve};
+use splinekit::curve::{BSplineCurve, BezierCurve, CatmullRomCurve, CircleFrame, Curve, HermiteCurve, NurbsCurve};
 use splinekit::fit::{FitOptions, KnotPlacement, fit_curve};
 use splinekit::subdivision::{chaikin, four_point, lane_riesenfeld};
 use splinekit_mesh::{Polyline, Projection, SvgFigure};
@@ -186,7 +186,12 @@ pub fn bspline_basis() -> Result<Figure> {
 
 /// The exact NURBS circle.
 pub fn nurbs_circle() -> Result<Figure> {
-    let c = NurbsCurve::circle(Point::<2>::zeros(), p2(1.0, 0.0), p2(0.0, 1.0), 1.0)?;
+    let c = NurbsCurve::circle(&CircleFrame {
+        center: Point::<2>::zeros(),
+        x_axis: p2(1.0, 0.0),
+        y_axis: p2(0.0, 1.0),
+        radius: 1.0,
+    })?;
     let mut fig = SvgFigure::new(W, H, Projection::TOP).title("NURBS circle: degree 2, 9 control points");
     fig.dashed(c.control_points(), false, POLYGON, 1.5);
     draw(&mut fig, &c, CURVE, 3.0)?;

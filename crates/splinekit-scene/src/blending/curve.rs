@@ -5,7 +5,7 @@ use std::sync::Arc;
 
 use serde::{Deserialize, Deserializer, Serialize};
 use serde_json::Value;
-use splinekit::blend::{BlendingSplineCurve, KnotSpacing, LocalKind};
+use splinekit::blend::{BlendKnots, BlendingCurveOptions, BlendingSplineCurve, KnotSpacing, LocalKind};
 use splinekit::curve::Curve;
 
 use super::DEFAULT_BFUNCTION;
@@ -190,7 +190,8 @@ impl BlendingSplineDoc {
                     KnotSpacingDoc::Uniform => KnotSpacing::Uniform,
                     KnotSpacingDoc::ChordLength => KnotSpacing::ChordLength,
                 };
-                BlendingSplineCurve::from_model_spaced(model, local_curves, kind, b, closed, spacing)?
+                let options = BlendingCurveOptions { local: kind, bfunction: b, closed: Some(closed), spacing };
+                BlendingSplineCurve::from_model(model, local_curves, &options)?
             }
             BlendingSource::Explicit { knots, local_curves } => {
                 let locals = local_curves
@@ -198,7 +199,11 @@ impl BlendingSplineDoc {
                     .enumerate()
                     .map(|(i, c)| c.build_in::<D>().map(Arc::from).map_err(|e| e.within(&format!("local_curves[{i}]"))))
                     .collect::<Result<Vec<Arc<dyn Curve<D>>>>>()?;
-                BlendingSplineCurve::from_locals(knots.to_vec(), locals, b, self.closed.unwrap_or(false))?
+                BlendingSplineCurve::from_locals(
+                    BlendKnots::new(knots.to_vec(), self.closed.unwrap_or(false))?,
+                    locals,
+                    b,
+                )?
             }
         };
         self.pose(&mut c)?;

@@ -4,7 +4,7 @@
 use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
-use splinekit::blend::{BlendingSplineSurface, PatchKind};
+use splinekit::blend::{BlendingSplineSurface, BlendingSurfaceOptions, PatchKind};
 use splinekit::frame::Affine;
 use splinekit::surface::Surface;
 
@@ -83,7 +83,9 @@ impl BlendingSplineSurfaceDoc {
         };
         let b = self.bfunction.as_ref().unwrap_or(&DEFAULT_BFUNCTION).build().map_err(|e| e.within("bfunction"))?;
         let counts = (self.local_surfaces[0], self.local_surfaces[1]);
-        let mut s = BlendingSplineSurface::from_model(model, counts, kind, b, closed)?;
+        let options =
+            BlendingSurfaceOptions { local: kind, bfunction: b, closed_u: Some(closed.0), closed_v: Some(closed.1) };
+        let mut s = BlendingSplineSurface::from_model(model, counts, &options)?;
         self.pose(&mut s)?;
         Ok(s)
     }

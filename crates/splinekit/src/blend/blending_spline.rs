@@ -102,6 +102,32 @@ impl<const D: usize> Local<D> {
     }
 }
 
+/// How [`BlendingSplineCurve::from_model`] makes a spline from a model. The defaults are
+/// the shape documents': cubic Bézier locals, the default ERBS, the model's own closedness
+/// and uniform knots.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BlendingCurveOptions {
+    /// How each local curve is made from the model.
+    pub local: LocalKind,
+    /// The B-function blending neighbouring locals.
+    pub bfunction: BFunction,
+    /// Closed (n locals on n intervals) or open; `None`: as the model is.
+    pub closed: Option<bool>,
+    /// Where the knots go.
+    pub spacing: KnotSpacing,
+}
+
+impl Default for BlendingCurveOptions {
+    fn default() -> Self {
+        BlendingCurveOptions {
+            local: LocalKind::Bezier(3),
+            bfunction: BFunction::erbs_default(),
+            closed: None,
+            spacing: KnotSpacing::Uniform,
+        }
+    }
+}
+
 /// The model a spline was built from, kept so it can be rebuilt with other settings.
 #[derive(Clone)]
 struct ModelSource<const D: usize> {
@@ -120,51 +146,67 @@ pub struct BlendingSplineCurve<const D: usize> {
 }
 
 impl<const D: usize> BlendingSplineCurve<D> {
-    /// `count` local curves of `kind` made from `model` over its domain at uniform knots,
-    /// blended by `bfunction`; closed when `closed` (a closed model is expected then).
-    pub fn from_model(
-        model: Arc<dyn Curve<D>>,
-        count: usize,
-        kind: LocalKind,
-        bfunction: BFunction,
-        closed: bool,
-    ) -> Result<Self> {
-        Self::from_model_spaced(model, count, kind, bfunction, closed, KnotSpacing::Uniform)
-    }
-
-    /// As [`Self::from_model`], with the knots placed by `spacing`.
-    pub fn from_model_spaced(
-        model: Arc<dyn Curve<D>>,
-        count: usize,
-        kind: LocalKind,
-        bfunction: BFunction,
-        closed: bool,
-        spacing: KnotSpacing,
-    ) -> Result<Self> {
-        let dom = model.domain();
-        let uniform = BlendKnots::uniform(dom, count, closed, "local_curves")?;
+    /// `local_curves` local curves made from `model` over its domain as `options` say.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use splinekit::blend::{BlendingCurveOptions, BlendingSplineCurve};
+    /// use splinekit::curve::Curve;
+    /// use splinekit::curve::model::Circle;
+    /// // 8 cubic Bézier locals blended by ERBS: at every knot the spline reproduces the
+    /// // circle's position and first three derivatives.
+    /// let circle = Arc::new(Circle::new(2.0).unwrap());
+    /// let c = BlendingSplineCurve::from_model(circle.clone(), 8, &BlendingCurveOptions::default()).unwrap();
+    /// assert!(c.is_closed());
+    /// let knot = c.centre(3);
+    /// for order in 0..=3 {
+    ///     assert!((c.derivative(knot, order) - circle.derivative(knot, order)).norm() < 1e-12);
+    /// }
+    /// ```
+    pub fn from_model(model: Arc<dyn Curve<D>>, local_curves: usize, options: &BlendingCurveOptions) -> Result<Self> {
+        let (kind, spacing) = (options.local, options.spacing);
+        let closed = options.closed.unwrap_or_else(|| model.is_closed());
+        let uniform = BlendKnots::uniform(model.domain(), local_curves, closed, "local_curves")?;
         let knots = match spacing {
             KnotSpacing::Uniform => uniform,
             KnotSpacing::ChordLength => BlendKnots::new(chord_length_knots(model.as_ref(), uniform.values()), closed)?,
         };
-        let mut locals = Vec::with_capacity(count);
+        let mut locals = Vec::with_capacity(local_curves);
         for k in 0..knots.count() {
             locals.push(Local::new(local_from_model(&model, kind, &knots, k)?, knots.centre(k)));
         }
-        Ok(BlendingSplineCurve { locals, knots, bfunction, source: Some(ModelSource { model, kind, spacing }) })
+        let source = Some(ModelSource { model, kind, spacing });
+        Ok(BlendingSplineCurve { locals, knots, bfunction: options.bfunction.clone(), source })
     }
 
-    /// Explicit knots and local curves of any kind. Local k's own domain is mapped
-    /// affinely onto its support [c_{k−1}, c_{k+1}] (past the ends of an open spline the
-    /// end spacing is mirrored). Open: n knots for n locals; closed: n + 1 knots, the last
-    /// being the first plus the period.
-    pub fn from_locals(
-        knots: Vec<f64>,
-        locals: Vec<Arc<dyn Curve<D>>>,
-        bfunction: BFunction,
-        closed: bool,
-    ) -> Result<Self> {
-        let knots = BlendKnots::new(knots, closed)?;
+    /// Explicit knots and local curves of any kind, one local per knot. Local k's own
+    /// domain is mapped affinely onto its support [c_{k−1}, c_{k+1}] ([`Reparametrized`];
+    /// past the ends of an open spline the end spacing is mirrored), so every local needs
+    /// a finite, non-empty domain.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use splinekit::Point;
+    /// use splinekit::basis::BFunction;
+    /// use splinekit::blend::{BlendKnots, BlendingSplineCurve};
+    /// use splinekit::curve::Curve;
+    /// use splinekit::curve::model::Line;
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let line = |a, b| -> Arc<dyn Curve<2>> { Arc::new(Line::new(a, b).unwrap()) };
+    /// // Two locals on the knots 0 and 1: the first line on [−1, 1], the second on [0, 2].
+    /// let knots = BlendKnots::new(vec![0.0, 1.0], false).unwrap();
+    /// let locals = vec![line(p(-1.0, 0.0), p(1.0, 0.0)), line(p(0.0, 1.0), p(2.0, 1.0))];
+    /// let c = BlendingSplineCurve::from_locals(knots, locals, BFunction::erbs_default()).unwrap();
+    /// // Each knot is its local's point there; halfway, B(½) = ½ blends them evenly.
+    /// assert_eq!(c.point(0.0), p(0.0, 0.0));
+    /// assert_eq!(c.point(1.0), p(1.0, 1.0));
+    /// assert!((c.point(0.5) - p(0.5, 0.5)).norm() < 1e-15);
+    /// ```
+    pub fn from_locals(knots: BlendKnots, locals: Vec<Arc<dyn Curve<D>>>, bfunction: BFunction) -> Result<Self> {
         if locals.len() != knots.count() {
             return Err(Error::invalid(
                 "local_curves",
@@ -187,20 +229,19 @@ impl<const D: usize> BlendingSplineCurve<D> {
         Ok(BlendingSplineCurve { locals, knots, bfunction, source: None })
     }
 
-    /// The same spline rebuilt from its model with `count` locals of `kind` (frames are
-    /// reset). An error for splines made from explicit locals.
-    pub fn rebuilt(&self, count: usize, kind: LocalKind) -> Result<Self> {
+    /// The same spline rebuilt from its model with `local_curves` locals of `kind` (frames
+    /// are reset). An error for splines made from explicit locals.
+    pub fn rebuilt(&self, local_curves: usize, kind: LocalKind) -> Result<Self> {
         let src = self.source.as_ref().ok_or_else(|| {
             Error::invalid("local_curves", "this blending spline was built from explicit locals, not a model")
         })?;
-        Self::from_model_spaced(
-            src.model.clone(),
-            count,
-            kind,
-            self.bfunction.clone(),
-            self.knots.is_closed(),
-            src.spacing,
-        )
+        let options = BlendingCurveOptions {
+            local: kind,
+            bfunction: self.bfunction.clone(),
+            closed: Some(self.knots.is_closed()),
+            spacing: src.spacing,
+        };
+        Self::from_model(src.model.clone(), local_curves, &options)
     }
 
     /// Replaces the B-function (the locals and frames stay).

@@ -44,6 +44,32 @@ pub enum PatchKind {
     Bezier(usize, usize),
 }
 
+/// How [`BlendingSplineSurface::from_model`] makes a surface from a model. The defaults
+/// are the shape documents': bicubic Bézier patches, the default ERBS and the model's own
+/// closedness in each direction.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BlendingSurfaceOptions {
+    /// How each local patch is made from the model.
+    pub local: PatchKind,
+    /// The B-function blending neighbouring patches (in u and in v).
+    pub bfunction: BFunction,
+    /// Closed in u (n_u patches on n_u intervals) or open; `None`: as the model is.
+    pub closed_u: Option<bool>,
+    /// Closed in v; `None`: as the model is.
+    pub closed_v: Option<bool>,
+}
+
+impl Default for BlendingSurfaceOptions {
+    fn default() -> Self {
+        BlendingSurfaceOptions {
+            local: PatchKind::Bezier(3, 3),
+            bfunction: BFunction::erbs_default(),
+            closed_u: None,
+            closed_v: None,
+        }
+    }
+}
+
 /// A Bézier patch on its support in the global parameters.
 #[derive(Clone)]
 struct HermitePatch<const D: usize> {
@@ -132,15 +158,34 @@ pub struct BlendingSplineSurface<const D: usize> {
 }
 
 impl<const D: usize> BlendingSplineSurface<D> {
-    /// `counts` = (n_u, n_v) local patches of `kind` made from `model` at uniform knots
-    /// over its domain, blended by `bfunction`, closed in u and v as asked.
+    /// `counts` = (n_u, n_v) local patches made from `model` at uniform knots over its
+    /// domain as `options` say.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use splinekit::blend::{BlendingSplineSurface, BlendingSurfaceOptions};
+    /// use splinekit::surface::Surface;
+    /// use splinekit::surface::model::Torus;
+    /// // 8×6 bicubic patches on the torus, closed both ways like the model; at every knot
+    /// // pair the surface passes through the torus.
+    /// let torus = Arc::new(Torus::new(3.0, 1.0).unwrap());
+    /// let s = BlendingSplineSurface::from_model(torus.clone(), (8, 6), &BlendingSurfaceOptions::default()).unwrap();
+    /// assert!(s.is_closed_u() && s.is_closed_v());
+    /// let (u, v) = (s.knots().0.centre(3), s.knots().1.centre(2));
+    /// assert!((s.point(u, v) - torus.point(u, v)).norm() < 1e-13);
+    /// ```
     pub fn from_model(
         model: Arc<dyn Surface<D>>,
         counts: (usize, usize),
-        kind: PatchKind,
-        bfunction: BFunction,
-        closed: (bool, bool),
+        options: &BlendingSurfaceOptions,
     ) -> Result<Self> {
+        let (kind, bfunction) = (options.local, options.bfunction.clone());
+        let closed = (
+            options.closed_u.unwrap_or_else(|| model.is_closed_u()),
+            options.closed_v.unwrap_or_else(|| model.is_closed_v()),
+        );
         let knots_u = BlendKnots::uniform(model.domain_u(), counts.0, closed.0, "local_surfaces[0]")?;
         let knots_v = BlendKnots::uniform(model.domain_v(), counts.1, closed.1, "local_surfaces[1]")?;
         if counts.0 * counts.1 > 1_000_000 {
@@ -163,13 +208,13 @@ impl<const D: usize> BlendingSplineSurface<D> {
     /// The same surface rebuilt from its model with other counts or patch kind (frames
     /// are reset).
     pub fn rebuilt(&self, counts: (usize, usize), kind: PatchKind) -> Result<Self> {
-        Self::from_model(
-            self.model.clone(),
-            counts,
-            kind,
-            self.bfunction.clone(),
-            (self.knots_u.is_closed(), self.knots_v.is_closed()),
-        )
+        let options = BlendingSurfaceOptions {
+            local: kind,
+            bfunction: self.bfunction.clone(),
+            closed_u: Some(self.knots_u.is_closed()),
+            closed_v: Some(self.knots_v.is_closed()),
+        };
+        Self::from_model(self.model.clone(), counts, &options)
     }
     /// Replaces the B-function.
     pub fn set_bfunction(&mut self, bfunction: BFunction) {

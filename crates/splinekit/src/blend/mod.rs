@@ -14,8 +14,8 @@ pub mod two_curve;
 
 pub use animation::{Motion, Track};
 pub use bfunction_curve::BFunctionCurve;
-pub use blending_spline::{BlendingSplineCurve, KnotSpacing, LocalKind};
-pub use blending_surface::{BlendingSplineSurface, ParamRect, PatchKind};
+pub use blending_spline::{BlendingCurveOptions, BlendingSplineCurve, KnotSpacing, LocalKind};
+pub use blending_surface::{BlendingSplineSurface, BlendingSurfaceOptions, ParamRect, PatchKind};
 pub use hermite::{IntervalBezier, hermite_bezier};
 pub use knots::{BlendKnots, BlendSpan};
 pub use osculating_arc::OsculatingArc;

@@ -4,9 +4,8 @@
 use std::sync::Arc;
 
 use super::animation::{Motion, Track};
-use super::{BlendingSplineCurve, BlendingSplineSurface, LocalKind, PatchKind};
+use super::{BlendingCurveOptions, BlendingSplineCurve, BlendingSplineSurface, BlendingSurfaceOptions, LocalKind};
 use crate::Point;
-use crate::basis::BFunction;
 use crate::curve::model::Heart;
 use crate::error::Result;
 use crate::surface::model::{Cylinder, Plane, Torus};
@@ -29,9 +28,7 @@ pub fn beating_heart() -> Result<(BlendingSplineCurve<3>, Vec<Track<usize>>)> {
     let curve = BlendingSplineCurve::from_model(
         Arc::new(Heart::new(1.0)?),
         10,
-        LocalKind::SubCurve,
-        BFunction::erbs_default(),
-        true,
+        &BlendingCurveOptions { local: LocalKind::SubCurve, closed: Some(true), ..Default::default() },
     )?;
     let mut tracks = Vec::new();
     for k in 1..=4 {
@@ -53,7 +50,11 @@ fn surface(
     n: (usize, usize),
     closed: (bool, bool),
 ) -> Result<BlendingSplineSurface<3>> {
-    BlendingSplineSurface::from_model(model, n, PatchKind::Bezier(3, 3), BFunction::erbs_default(), closed)
+    BlendingSplineSurface::from_model(
+        model,
+        n,
+        &BlendingSurfaceOptions { closed_u: Some(closed.0), closed_v: Some(closed.1), ..Default::default() },
+    )
 }
 
 /// The unit plane \[0, 1\]² (z = 0) with 5×5 bicubic patches: the centre patch rises and falls

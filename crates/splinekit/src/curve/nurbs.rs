@@ -7,7 +7,7 @@ use crate::basis::Side;
 use crate::curve::bezier_spans::BezierSpans;
 use crate::curve::rational::rational_derivatives;
 use crate::curve::span_kernel::eval_on_span;
-use crate::curve::{BSplineCurve, Curve, Interval};
+use crate::curve::{BSplineCurve, CircleFrame, Curve, Interval};
 use crate::error::{Error, Result, check_finite};
 use crate::ops::homogeneous::Homogeneous;
 
@@ -65,27 +65,32 @@ impl<const D: usize> NurbsCurve<D> {
         Ok(NurbsCurve { weighted, points, weights, homogeneous, spans })
     }
 
-    /// Exact full circle of `radius` about `center` in the plane spanned by the orthonormal
-    /// vectors `x_axis`, `y_axis`: 9 control points, degree 2, weights 1, √2/2 alternating,
+    /// The exact full circle: 9 control points, degree 2, weights 1, √2/2 alternating,
     /// knots {0,0,0,¼,¼,½,½,¾,¾,1,1,1}. The parametrisation is not by arc length.
-    pub fn circle(center: Point<D>, x_axis: Point<D>, y_axis: Point<D>, radius: f64) -> Result<Self> {
-        Self::arc(center, x_axis, y_axis, radius, 0.0, 2.0 * std::f64::consts::PI)
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{CircleFrame, Curve, NurbsCurve};
+    /// let frame = CircleFrame::in_xy_plane(Point::<2>::new(1.0, 1.0), 2.0);
+    /// let c = NurbsCurve::circle(&frame).unwrap();
+    /// for i in 0..=16 {
+    ///     let p = c.point(i as f64 / 16.0);
+    ///     assert!(((p - frame.center).norm() - 2.0).abs() < 1e-14);
+    /// }
+    /// ```
+    pub fn circle(frame: &CircleFrame<D>) -> Result<Self> {
+        Self::arc(frame, 0.0, 2.0 * std::f64::consts::PI)
     }
 
-    /// Exact circular arc from angle `start` to `end` (radians, |end − start| ≤ 2π), using
-    /// one rational quadratic segment per quarter turn or less (NURBS Book A7.1); the middle
-    /// control point of a segment of sweep θ has weight cos(θ/2).
-    pub fn arc(
-        center: Point<D>,
-        x_axis: Point<D>,
-        y_axis: Point<D>,
-        radius: f64,
-        start: f64,
-        end: f64,
-    ) -> Result<Self> {
-        if !(radius > 0.0 && radius.is_finite()) {
-            return Err(Error::invalid("radius", format!("must be positive and finite, got {radius}")));
-        }
+    /// The exact circular arc of `frame` from angle `start` to `end` (radians,
+    /// |end − start| ≤ 2π), using one rational quadratic segment per quarter turn or less
+    /// (NURBS Book A7.1); the middle control point of a segment of sweep θ has weight
+    /// cos(θ/2).
+    pub fn arc(frame: &CircleFrame<D>, start: f64, end: f64) -> Result<Self> {
+        frame.check()?;
+        let radius = frame.radius;
         let sweep = end - start;
         if !(sweep.is_finite() && sweep.abs() > 0.0 && sweep.abs() <= 2.0 * std::f64::consts::PI + 1e-12) {
             return Err(Error::invalid("angle", format!("sweep must be in (0, 2π], got {sweep}")));
@@ -93,8 +98,7 @@ impl<const D: usize> NurbsCurve<D> {
         let segments = ((sweep.abs() / (std::f64::consts::FRAC_PI_2)) - 1e-12).ceil().max(1.0) as usize;
         let dtheta = sweep / segments as f64;
         let w1 = (dtheta / 2.0).cos();
-        let at = |a: f64| center + x_axis * (radius * a.cos()) + y_axis * (radius * a.sin());
-        let tangent = |a: f64| -x_axis * a.sin() + y_axis * a.cos();
+        let (at, tangent) = (|a| frame.point(a), |a| frame.unit_tangent(a));
         let mut pts = vec![at(start)];
         let mut ws = vec![1.0];
         let mut knots = vec![0.0; 3];

@@ -7,7 +7,7 @@ use crate::basis::Side;
 use crate::curve::bezier::bezier_derivatives;
 use crate::curve::nurbs::check_weights;
 use crate::curve::rational::rational_derivatives;
-use crate::curve::{Curve, Interval};
+use crate::curve::{CircleFrame, Curve, Interval};
 use crate::error::{Error, Result, check_points_finite};
 
 /// A rational Bézier curve with positive weights.
@@ -39,27 +39,28 @@ impl<const D: usize> RationalBezierCurve<D> {
         Self::new(vec![p0, p1, p2], vec![1.0, w, 1.0])
     }
 
-    /// The exact circular arc of `radius` about `center` from angle `start` over `sweep`
-    /// radians (0 < |sweep| < π) in the plane of the orthonormal vectors `x_axis`, `y_axis`:
-    /// a quadratic with middle weight cos(sweep/2).
-    pub fn circular_arc(
-        center: Point<D>,
-        x_axis: Point<D>,
-        y_axis: Point<D>,
-        radius: f64,
-        start: f64,
-        sweep: f64,
-    ) -> Result<Self> {
+    /// The exact circular arc of `frame` from angle `start` over `sweep` radians
+    /// (0 < |sweep| < π): a quadratic with middle weight cos(sweep/2) whose middle control
+    /// point is where the end tangents meet.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{CircleFrame, Curve, RationalBezierCurve};
+    /// // A quarter of the unit circle: every point is at distance 1 from the centre.
+    /// let frame = CircleFrame::in_xy_plane(Point::<2>::zeros(), 1.0);
+    /// let arc = RationalBezierCurve::circular_arc(&frame, 0.0, std::f64::consts::FRAC_PI_2).unwrap();
+    /// assert!((arc.point(0.37).norm() - 1.0).abs() < 1e-15);
+    /// assert!((arc.point(1.0) - Point::<2>::new(0.0, 1.0)).norm() < 1e-15);
+    /// ```
+    pub fn circular_arc(frame: &CircleFrame<D>, start: f64, sweep: f64) -> Result<Self> {
         if !(sweep.abs() > 0.0 && sweep.abs() < std::f64::consts::PI) {
             return Err(Error::invalid("sweep", format!("must satisfy 0 < |sweep| < π, got {sweep}")));
         }
-        if !(radius > 0.0 && radius.is_finite()) {
-            return Err(Error::invalid("radius", format!("must be positive and finite, got {radius}")));
-        }
-        let at = |a: f64| center + x_axis * (radius * a.cos()) + y_axis * (radius * a.sin());
-        let tan0 = -x_axis * start.sin() + y_axis * start.cos();
-        let p1 = at(start) + tan0 * (radius * (sweep / 2.0).tan());
-        Self::conic(at(start), p1, at(start + sweep), (sweep / 2.0).cos())
+        frame.check()?;
+        let p1 = frame.point(start) + frame.unit_tangent(start) * (frame.radius * (sweep / 2.0).tan());
+        Self::conic(frame.point(start), p1, frame.point(start + sweep), (sweep / 2.0).cos())
     }
 
     /// The control points.

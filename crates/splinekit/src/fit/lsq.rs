@@ -10,7 +10,7 @@ use crate::Point;
 use crate::basis::{advance_span, basis_functions};
 use crate::curve::{BSplineCurve, Curve};
 use crate::error::{Error, Result, check_finite, check_points_finite};
-use crate::fit::banded_qr::BandedLeastSquares;
+use crate::fit::banded_qr::{BandedLeastSquares, Solution};
 use crate::fit::parametrize::{KnotPlacement, Parametrization, fit_knots, parametrize, periodic_knots};
 
 /// A fitted curve with its data parameters and quality figures.
@@ -49,6 +49,17 @@ pub struct FitOptions {
 }
 
 impl FitOptions {
+    /// The options of [`fit_with_knots`] with these settings on `knots`.
+    fn with_knots(&self, knots: Vec<f64>) -> FitWithKnotsOptions {
+        FitWithKnotsOptions {
+            degree: self.degree,
+            knots,
+            closed: self.closed,
+            interpolate_ends: self.interpolate_ends,
+            weights: self.weights.clone(),
+        }
+    }
+
     /// Degree and control-point count, other options at their defaults (chord length,
     /// averaged knots, open, free ends, unweighted).
     pub fn new(degree: usize, control_points: usize) -> Self {
@@ -90,24 +101,65 @@ pub fn fit<const D: usize>(points: &[Point<D>], options: &FitOptions) -> Result<
     } else {
         fit_knots(&params, p, n, options.knots)
     };
-    fit_with_knots(points, &params, p, knots, options.weights.as_deref(), options.closed, options.interpolate_ends)
+    fit_with_knots(points, &params, &options.with_knots(knots))
 }
 
-/// Least-squares B-spline of `degree` on `knots` through `points` at `params`.
+/// Options of [`fit_with_knots`]: the degree and the knot vector are given; the rest
+/// defaults to an open, unweighted fit with free ends.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FitWithKnotsOptions {
+    /// Degree p ≥ 1.
+    pub degree: usize,
+    /// The knots: n + p + 1 values for n control points (a periodic knot vector, see
+    /// [`BSplineCurve::new_periodic`], when `closed`).
+    pub knots: Vec<f64>,
+    /// Fit a closed (periodic) curve; parameters are wrapped into its domain.
+    pub closed: bool,
+    /// Open curves on clamped knots only: the first and last control points are the first
+    /// and last data points; the rest are fitted.
+    pub interpolate_ends: bool,
+    /// Optional weights w_i ≥ 0 multiplying the residuals.
+    pub weights: Option<Vec<f64>>,
+}
+
+impl FitWithKnotsOptions {
+    /// Degree and knots, other options at their defaults (open, free ends, unweighted).
+    pub fn new(degree: usize, knots: Vec<f64>) -> Self {
+        FitWithKnotsOptions { degree, knots, closed: false, interpolate_ends: false, weights: None }
+    }
+}
+
+/// Least-squares B-spline of the given degree on the given knots through `points` at
+/// `params` (see [`FitWithKnotsOptions`]).
 ///
-/// * `periodic`: the knots are a periodic vector (see [`BSplineCurve::new_periodic`]) and
-///   parameters are wrapped into its domain.
-/// * `fixed_ends` (open, clamped knots only): the first and last control points are the
-///   first and last data points; the rest are fitted.
+/// # Examples
+///
+/// ```
+/// use splinekit::Point;
+/// use splinekit::curve::Curve;
+/// use splinekit::fit::{FitWithKnotsOptions, fit_with_knots};
+/// // Points on the parabola y = x², fitted by a quadratic: reproduced exactly.
+/// let params: Vec<f64> = (0..9).map(|i| i as f64 / 8.0).collect();
+/// let points: Vec<Point<2>> = params.iter().map(|&t| Point::<2>::new(t, t * t)).collect();
+/// let options = FitWithKnotsOptions::new(2, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]);
+/// let fit = fit_with_knots(&points, &params, &options).unwrap();
+/// assert!(fit.max_error < 1e-14);
+/// assert!((fit.curve.point(0.3) - Point::<2>::new(0.3, 0.09)).norm() < 1e-14);
+/// ```
 pub fn fit_with_knots<const D: usize>(
     points: &[Point<D>],
     params: &[f64],
-    degree: usize,
-    knots: Vec<f64>,
-    weights: Option<&[f64]>,
-    periodic: bool,
-    fixed_ends: bool,
+    options: &FitWithKnotsOptions,
 ) -> Result<Fit<D>> {
+    let weights = options.weights.as_deref();
+    check_data(points, params, weights)?;
+    let problem = KnotFit::new(options, params)?;
+    let unknowns = problem.solve(points, params, weights)?;
+    problem.finish(points, params, unknowns)
+}
+
+/// Finite points, one finite parameter per point, finite non-negative weights.
+fn check_data<const D: usize>(points: &[Point<D>], params: &[f64], weights: Option<&[f64]>) -> Result<()> {
     check_points_finite("points", points)?;
     check_finite("params", params)?;
     let m = points.len();
@@ -123,97 +175,131 @@ pub fn fit_with_knots<const D: usize>(
             return Err(Error::invalid("weights", format!("weight {i} is {v}, but weights must be ≥ 0")));
         }
     }
-    let p = degree;
-    if knots.len() < p + 2 {
-        return Err(Error::count("knots", format!("at least {} values for degree {p}", p + 2), knots.len()));
-    }
-    let n = knots.len() - p - 1;
-    let zeros = vec![Point::<D>::zeros(); n];
-    let template =
-        if periodic { BSplineCurve::new_periodic(p, knots, zeros)? } else { BSplineCurve::new(p, knots, zeros)? };
-    let dom = template.domain();
-    if !periodic && let Some((i, t)) = params.iter().enumerate().find(|(_, t)| **t < dom.start || **t > dom.end) {
-        {
+    Ok(())
+}
+
+/// The spline being fitted: its knots (as a template curve) and which control points are
+/// unknowns.
+struct KnotFit<const D: usize> {
+    template: BSplineCurve<D>,
+    degree: usize,
+    /// Number of control points n.
+    count: usize,
+    periodic: bool,
+    fixed_ends: bool,
+}
+
+impl<const D: usize> KnotFit<D> {
+    /// Validates the knots against the degree, the parameters against the domain and the
+    /// fixed ends against the knots.
+    fn new(options: &FitWithKnotsOptions, params: &[f64]) -> Result<Self> {
+        let (p, periodic, fixed_ends) = (options.degree, options.closed, options.interpolate_ends);
+        let knots = options.knots.clone();
+        if knots.len() < p + 2 {
+            return Err(Error::count("knots", format!("at least {} values for degree {p}", p + 2), knots.len()));
+        }
+        let n = knots.len() - p - 1;
+        let zeros = vec![Point::<D>::zeros(); n];
+        let template =
+            if periodic { BSplineCurve::new_periodic(p, knots, zeros)? } else { BSplineCurve::new(p, knots, zeros)? };
+        let dom = template.domain();
+        if !periodic && let Some((i, t)) = params.iter().enumerate().find(|(_, t)| **t < dom.start || **t > dom.end) {
             return Err(Error::invalid(
                 "params",
                 format!("parameter {i} ({t}) is outside the domain [{}, {}]", dom.start, dom.end),
             ));
         }
-    }
-    let k = template.knots();
-    if fixed_ends && (periodic || k[0] != k[p] || k[n] != k[n + p]) {
-        return Err(Error::invalid("interpolate_ends", "needs an open curve with clamped knots"));
-    }
-    let (eval_knots, eval_pts) = template.evaluation_data();
-    let n_eval = eval_pts.len();
-    let (first_unknown, unknowns) = if fixed_ends { (1, n - 2) } else { (0, n) };
-    let mut ls = BandedLeastSquares::<D>::new(unknowns, p + 1, if periodic { p } else { 0 });
-    // Rows in parameter order keep the QR fill bounded.
-    let mut order: Vec<usize> = (0..m).collect();
-    let wrap = |t: f64| if periodic { dom.wrap(t) } else { t };
-    if params.windows(2).any(|w| wrap(w[1]) < wrap(w[0])) {
-        order.sort_by(|&a, &b| wrap(params[a]).total_cmp(&wrap(params[b])));
-    }
-    let mut basis: SmallVec<[f64; 16]> = SmallVec::from_elem(0.0, p + 1);
-    let mut row: SmallVec<[f64; 16]> = SmallVec::new();
-    let mut span = p;
-    for &i in &order {
-        let t = wrap(params[i]);
-        // Rows come in parameter order: advance the span instead of searching.
-        span = advance_span(eval_knots, p, n_eval, span, t);
-        basis_functions(eval_knots, p, span, t, &mut basis);
-        let w = weights.map_or(1.0, |w| w[i]);
-        if w == 0.0 {
-            continue;
+        let k = template.knots();
+        if fixed_ends && (periodic || k[0] != k[p] || k[n] != k[n + p]) {
+            return Err(Error::invalid("interpolate_ends", "needs an open curve with clamped knots"));
         }
-        let mut rhs = points[i] * w;
-        let mut first = (span - p) % n;
-        row.clear();
-        for (r, b) in basis.iter().enumerate() {
-            let col = (span - p + r) % n;
-            if fixed_ends && col == 0 {
-                rhs -= points[0] * (b * w);
-                first = 1;
-            } else if fixed_ends && col == n - 1 {
-                rhs -= points[m - 1] * (b * w);
-            } else {
-                row.push(b * w);
+        Ok(KnotFit { template, degree: p, count: n, periodic, fixed_ends })
+    }
+
+    /// The unknown control points by banded QR, one row per data point in parameter order
+    /// (which keeps the fill of R bounded); fixed end points move to the right-hand side.
+    fn solve(&self, points: &[Point<D>], params: &[f64], weights: Option<&[f64]>) -> Result<Solution<D>> {
+        let (p, n, m) = (self.degree, self.count, points.len());
+        let dom = self.template.domain();
+        let (eval_knots, eval_pts) = self.template.evaluation_data();
+        let (first_unknown, unknowns) = if self.fixed_ends { (1, n - 2) } else { (0, n) };
+        let mut ls = BandedLeastSquares::<D>::new(unknowns, p + 1, if self.periodic { p } else { 0 });
+        let mut order: Vec<usize> = (0..m).collect();
+        let wrap = |t: f64| if self.periodic { dom.wrap(t) } else { t };
+        if params.windows(2).any(|w| wrap(w[1]) < wrap(w[0])) {
+            order.sort_by(|&a, &b| wrap(params[a]).total_cmp(&wrap(params[b])));
+        }
+        let mut basis: SmallVec<[f64; 16]> = SmallVec::from_elem(0.0, p + 1);
+        let mut row: SmallVec<[f64; 16]> = SmallVec::new();
+        let mut span = p;
+        for &i in &order {
+            let t = wrap(params[i]);
+            // Rows come in parameter order: advance the span instead of searching.
+            span = advance_span(eval_knots, p, eval_pts.len(), span, t);
+            basis_functions(eval_knots, p, span, t, &mut basis);
+            let w = weights.map_or(1.0, |w| w[i]);
+            if w == 0.0 {
+                continue;
+            }
+            let mut rhs = points[i] * w;
+            let mut first = (span - p) % n;
+            row.clear();
+            for (r, b) in basis.iter().enumerate() {
+                let col = (span - p + r) % n;
+                if self.fixed_ends && col == 0 {
+                    rhs -= points[0] * (b * w);
+                    first = 1;
+                } else if self.fixed_ends && col == n - 1 {
+                    rhs -= points[m - 1] * (b * w);
+                } else {
+                    row.push(b * w);
+                }
+            }
+            if !row.is_empty() {
+                ls.add_row(first - first_unknown, &row, rhs);
             }
         }
-        if !row.is_empty() {
-            ls.add_row(first - first_unknown, &row, rhs);
+        ls.solve().map_err(|e| match e {
+            Error::Numerical { message, .. } => Error::numerical("fit", message.replace("unknown", "control point")),
+            other => other,
+        })
+    }
+
+    /// The fitted curve (fixed ends put back) and its errors at the data.
+    fn finish(self, points: &[Point<D>], params: &[f64], sol: Solution<D>) -> Result<Fit<D>> {
+        let m = points.len();
+        let ctrl = if self.fixed_ends {
+            let mut ctrl = Vec::with_capacity(self.count);
+            ctrl.push(points[0]);
+            ctrl.extend_from_slice(&sol.x);
+            ctrl.push(points[m - 1]);
+            ctrl
+        } else {
+            sol.x
+        };
+        let (p, knots) = (self.degree, self.template.knots().to_vec());
+        let curve = if self.periodic {
+            BSplineCurve::new_periodic(p, knots, ctrl)?
+        } else {
+            BSplineCurve::new(p, knots, ctrl)?
+        };
+        let mut values = vec![Point::<D>::zeros(); m];
+        curve.eval_many(params, 0, &mut values);
+        let mut sum = 0.0;
+        let mut max: f64 = 0.0;
+        for (q, v) in points.iter().zip(&values) {
+            let e = (v - q).norm();
+            sum += e * e;
+            max = max.max(e);
         }
+        Ok(Fit {
+            curve,
+            params: params.to_vec(),
+            rms_error: (sum / m as f64).sqrt(),
+            max_error: max,
+            condition_estimate: sol.condition_estimate,
+        })
     }
-    let sol = ls.solve().map_err(|e| match e {
-        Error::Numerical { message, .. } => Error::numerical("fit", message.replace("unknown", "control point")),
-        other => other,
-    })?;
-    let mut ctrl = Vec::with_capacity(n);
-    if fixed_ends {
-        ctrl.push(points[0]);
-        ctrl.extend_from_slice(&sol.x);
-        ctrl.push(points[m - 1]);
-    } else {
-        ctrl = sol.x;
-    }
-    let knots = template.knots().to_vec();
-    let curve = if periodic { BSplineCurve::new_periodic(p, knots, ctrl)? } else { BSplineCurve::new(p, knots, ctrl)? };
-    let mut values = vec![Point::<D>::zeros(); m];
-    curve.eval_many(params, 0, &mut values);
-    let mut sum = 0.0;
-    let mut max: f64 = 0.0;
-    for (q, v) in points.iter().zip(&values) {
-        let e = (v - q).norm();
-        sum += e * e;
-        max = max.max(e);
-    }
-    Ok(Fit {
-        curve,
-        params: params.to_vec(),
-        rms_error: (sum / m as f64).sqrt(),
-        max_error: max,
-        condition_estimate: sol.condition_estimate,
-    })
 }
 
 /// Samples a curve at `samples` uniform parameters (closed curves: without repeating the
@@ -241,5 +327,5 @@ pub fn fit_curve<const D: usize, C: Curve<D> + ?Sized>(
     }
     let knots =
         if closed { periodic_knots(&params, p, n, options.knots) } else { fit_knots(&params, p, n, options.knots) };
-    fit_with_knots(&points, &params, p, knots, options.weights.as_deref(), closed, options.interpolate_ends)
+    fit_with_knots(&points, &params, &options.with_knots(knots))
 }

@@ -7,7 +7,7 @@
 
 use crate::Point;
 use crate::error::{Error, Result, check_points_finite};
-use crate::fit::lsq::fit_with_knots;
+use crate::fit::lsq::{FitWithKnotsOptions, fit_with_knots};
 use crate::fit::parametrize::{KnotPlacement, Parametrization, fit_knots, parametrize};
 use crate::surface::BSplineSurface;
 
@@ -72,11 +72,15 @@ pub fn fit_surface<const D: usize>(grid: &[Vec<Point<D>>], options: &SurfaceFitO
     // Rows in v, then the columns of the intermediate net in u.
     let mut mid = Vec::with_capacity(mu);
     for row in grid {
-        mid.push(fit_with_knots(row, &vparams, q, kv.clone(), None, false, false)?.curve.control_points().to_vec());
+        mid.push(
+            fit_with_knots(row, &vparams, &FitWithKnotsOptions::new(q, kv.clone()))?.curve.control_points().to_vec(),
+        );
     }
     let mut cols = Vec::with_capacity(nv);
     for col in transpose(&mid) {
-        cols.push(fit_with_knots(&col, &uparams, p, ku.clone(), None, false, false)?.curve.control_points().to_vec());
+        cols.push(
+            fit_with_knots(&col, &uparams, &FitWithKnotsOptions::new(p, ku.clone()))?.curve.control_points().to_vec(),
+        );
     }
     BSplineSurface::new((p, q), ku, kv, transpose(&cols), (false, false))
 }
@@ -101,7 +105,7 @@ pub fn interpolate_surface<const D: usize>(
             knots.push(t[j..j + deg].iter().sum::<f64>() / deg as f64);
         }
         knots.extend(vec![1.0; deg + 1]);
-        Ok(fit_with_knots(pts, t, deg, knots, None, false, false)?.curve)
+        Ok(fit_with_knots(pts, t, &FitWithKnotsOptions::new(deg, knots))?.curve)
     };
     let mut mid = Vec::with_capacity(mu);
     let mut kv = Vec::new();

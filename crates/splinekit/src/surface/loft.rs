@@ -6,7 +6,7 @@
 use crate::Point;
 use crate::curve::BSplineCurve;
 use crate::error::{Error, Result};
-use crate::fit::lsq::fit_with_knots;
+use crate::fit::lsq::{FitWithKnotsOptions, fit_with_knots};
 use crate::fit::parametrize::{Parametrization, parametrize};
 use crate::surface::BSplineSurface;
 
@@ -87,7 +87,7 @@ impl<const D: usize> BSplineSurface<D> {
         kv.extend(vec![1.0; q + 1]);
         let mut net = vec![Vec::with_capacity(k); n];
         for (j, col) in columns.iter().enumerate() {
-            net[j] = fit_with_knots(col, &v, q, kv.clone(), None, false, false)?.curve.control_points().to_vec();
+            net[j] = fit_with_knots(col, &v, &FitWithKnotsOptions::new(q, kv.clone()))?.curve.control_points().to_vec();
         }
         BSplineSurface::new((p, q), curves[0].knots().to_vec(), kv, net, (false, false))
     }

@@ -2,7 +2,7 @@
 //! sphere, cylinder and torus built from them.
 
 use crate::Point;
-use crate::curve::NurbsCurve;
+use crate::curve::{CircleFrame, NurbsCurve};
 use crate::error::{Error, Result};
 use crate::surface::NurbsSurface;
 use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, FRAC_PI_4};
@@ -42,8 +42,11 @@ impl NurbsSurface<3> {
     /// The exact sphere of `radius` about the origin (revolved half circle; v from the
     /// south to the north pole).
     pub fn sphere(radius: f64) -> Result<Self> {
-        let arc =
-            NurbsCurve::arc(Point::<3>::zeros(), Point::<3>::x(), Point::<3>::z(), radius, -FRAC_PI_2, FRAC_PI_2)?;
+        let arc = NurbsCurve::arc(
+            &CircleFrame { center: Point::<3>::zeros(), x_axis: Point::<3>::x(), y_axis: Point::<3>::z(), radius },
+            -FRAC_PI_2,
+            FRAC_PI_2,
+        )?;
         Self::revolve_z(&arc)
     }
 
@@ -72,12 +75,12 @@ impl NurbsSurface<3> {
                 format!("need 0 < minor_radius < major_radius, got {minor_radius} and {major_radius}"),
             ));
         }
-        let tube = NurbsCurve::circle(
-            Point::<3>::new(major_radius, 0.0, 0.0),
-            Point::<3>::x(),
-            Point::<3>::z(),
-            minor_radius,
-        )?;
+        let tube = NurbsCurve::circle(&CircleFrame {
+            center: Point::<3>::new(major_radius, 0.0, 0.0),
+            x_axis: Point::<3>::x(),
+            y_axis: Point::<3>::z(),
+            radius: minor_radius,
+        })?;
         Self::revolve_z(&tube)
     }
 }
