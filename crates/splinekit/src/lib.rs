@@ -1,9 +1,11 @@
 //! # splinekit
 //!
-//! A geometric-modelling kernel for parametric curves (and, as the project grows,
-//! surfaces and blending splines): Bézier, rational Bézier, B-spline and NURBS curves,
-//! Hermite and Catmull–Rom splines, model curves, least-squares fitting and
-//! interpolation, knot insertion, degree elevation and subdivision.
+//! A geometric-modelling kernel for parametric curves and surfaces: Bézier, rational
+//! Bézier, B-spline and NURBS curves and surfaces, Hermite and Catmull–Rom splines, model
+//! curves and surfaces, surfaces made from curves (revolution, ruled, extrusion, sweep,
+//! Coons, loft, trimmed), blending splines (GERBS/ERBS curves and surfaces with affine
+//! frames and animation), least-squares fitting and interpolation, knot insertion and
+//! removal, degree elevation, splitting and subdivision.
 //!
 //! Points are `nalgebra` vectors [`Point<D>`] with a compile-time dimension. Every
 //! constructor validates its input and returns [`Result`]; nothing here prints, reads
@@ -33,6 +35,7 @@ pub mod query;
 pub mod subdivision;
 pub mod surface;
 pub mod taylor;
+pub mod tolerance;
 
 pub use error::{Error, Result};
 pub use interval::{Interval, ParamRect};

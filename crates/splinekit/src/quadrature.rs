@@ -8,9 +8,12 @@
 
 use std::f64::consts::PI;
 
-/// Newton stops when a step is below this fraction of |x| (or of 10⁻³ near x = 0): one
-/// ulp of a node, so the nodes are as accurate as double precision allows.
+/// Newton stops when a step is below this fraction of max(|x|, [`NEWTON_FLOOR`]): one ulp
+/// of a node, so the nodes are as accurate as double precision allows.
 const NEWTON_STEP: f64 = 1e-16;
+
+/// Near x = 0 the Newton step is measured against this instead of |x|.
+const NEWTON_FLOOR: f64 = 1e-3;
 
 /// The n-point Gauss–Legendre rule on [−1, 1].
 #[derive(Debug, Clone, PartialEq)]
@@ -40,7 +43,7 @@ impl GaussLegendre {
                 let (p, dp) = legendre(n, z);
                 let dz = p / dp;
                 z -= dz;
-                if dz.abs() <= NEWTON_STEP * z.abs().max(1e-3) {
+                if dz.abs() <= NEWTON_STEP * z.abs().max(NEWTON_FLOOR) {
                     break;
                 }
             }

@@ -51,8 +51,7 @@ impl Kernel {
             return;
         }
         let g0 = self.log_phi(s);
-        if g0 < -700.0 {
-            // φ and every derivative are below 1e-280 here.
+        if g0 < NEGLIGIBLE_LOG_PHI {
             return;
         }
         // Work on at least two coefficients (the linear parts below), return the first n.
@@ -69,10 +68,10 @@ impl Kernel {
             // At s = λ the jet of |u|^a is u^a's (a ≥ 1 integer-like for the usual parameters);
             // use the binomial series of (s − λ)^a with integer a, else step off λ slightly.
             let ai = a.round();
-            if (a - ai).abs() < 1e-12 && ai >= 0.0 && (ai as usize) < m {
+            if (a - ai).abs() < INTEGER_EXPONENT && ai >= 0.0 && (ai as usize) < m {
                 ua[ai as usize] = 1.0;
             } else {
-                return self.phi_jet(s + 1e-15, out);
+                return self.phi_jet(s + STEP_OFF_LAMBDA, out);
             }
         } else {
             taylor::powf(&u[..m], a, &mut ua[..m]);
@@ -94,6 +93,27 @@ impl Kernel {
         out.copy_from_slice(&e[..n]);
     }
 }
+
+/// Below this, ln φ makes φ and every derivative smaller than 1e-280: the jet is zero.
+const NEGLIGIBLE_LOG_PHI: f64 = -700.0;
+
+/// The exponent α(1 + γ) counts as an integer within this distance (then |s − λ|^a has an
+/// exact binomial jet at s = λ).
+const INTEGER_EXPONENT: f64 = 1e-12;
+
+/// At s = λ with a non-integer exponent, the jet is taken this far to the right instead.
+const STEP_OFF_LAMBDA: f64 = 1e-15;
+
+/// A fast cell's B may differ from the exact path by this much (both are within about an
+/// ulp of the truth).
+const FAST_VALUE_TOLERANCE: f64 = 2.3e-16;
+
+/// A fast cell's derivatives may differ from the exact ones by this fraction of their
+/// value …
+const FAST_DERIVATIVE_RELATIVE: f64 = 1e-14;
+
+/// … plus this fraction of the derivative's largest size over [0, 1].
+const FAST_DERIVATIVE_OF_SCALE: f64 = 1e-15;
 
 /// Cells of the ERBS table.
 const CELLS: usize = 512;
@@ -205,8 +225,7 @@ impl ErbsTable {
     }
 
     /// The per-cell polynomials of the fast path, each checked against the quadrature and
-    /// jet path at 9 points of its cell: the value to 2⁻⁵² absolute, derivatives 1…3 to
-    /// 1e-14 of their largest size in the cell (at least 1e-14). Where a polynomial for B
+    /// jet path ([`Self::fast_cell_agrees`]). Where a polynomial for B
     /// fails (next to 0 and 1, where φ's essential singularity limits the Taylor series)
     /// the cell tries a polynomial for ln B (below λ) or ln(1 − B) (above λ), whose
     /// singularity is only a pole; cells that fail both keep the exact path.
@@ -269,7 +288,8 @@ impl ErbsTable {
     }
 
     /// Whether cell i's fast path matches the exact one at 17 points of the cell: B to
-    /// 2.3e-16 (both are within about an ulp of the truth), B^{(k)} to 1e-14 relative plus 1e-15 of its size over [0, 1].
+    /// [`FAST_VALUE_TOLERANCE`], B^{(k)} to [`FAST_DERIVATIVE_RELATIVE`] relative plus
+    /// [`FAST_DERIVATIVE_OF_SCALE`] of its size over [0, 1].
     fn fast_cell_agrees(&self, i: usize, m: f64, r: f64, scale: &[f64; FAST_ORDER + 1]) -> bool {
         (0..17).all(|j| {
             let t = m + r * (j as f64 / 8.0 - 1.0);
@@ -277,7 +297,11 @@ impl ErbsTable {
             self.eval_exact(t, &mut exact);
             self.eval_fast(i, t, &mut approx);
             (0..=FAST_ORDER).all(|k| {
-                let tol = if k == 0 { 2.3e-16 } else { 1e-14 * exact[k].abs() + 1e-15 * scale[k] };
+                let tol = if k == 0 {
+                    FAST_VALUE_TOLERANCE
+                } else {
+                    FAST_DERIVATIVE_RELATIVE * exact[k].abs() + FAST_DERIVATIVE_OF_SCALE * scale[k]
+                };
                 (exact[k] - approx[k]).abs() <= tol
             })
         })

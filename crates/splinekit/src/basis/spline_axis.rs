@@ -5,6 +5,7 @@ use crate::basis::{KnotVector, Side, find_span};
 use crate::curve::Interval;
 use crate::curve::span_kernel::ReciprocalKnotDifferences;
 use crate::error::{Error, Result};
+use crate::tolerance::PARAMETER_RELATIVE;
 
 /// The knot data of one parameter direction of a spline: of a B-spline curve, or of the
 /// u or v direction of a spline surface.
@@ -44,7 +45,7 @@ impl SplineAxis {
             let scale = knots[n + p].abs().max(knots[0].abs()).max(period);
             for j in 0..=p {
                 let d = knots[j + n] - knots[j];
-                if (d - period).abs() > 1e-12 * scale {
+                if (d - period).abs() > PARAMETER_RELATIVE * scale {
                     return Err(Error::invalid(
                         field,
                         format!(
@@ -67,7 +68,7 @@ impl SplineAxis {
         let inv = ReciprocalKnotDifferences::new(&eval_knots, p);
         let h = (eval_knots[n_eval] - eval_knots[p]) / (n_eval - p) as f64;
         let uniform = (p..n_eval)
-            .all(|i| ((eval_knots[i + 1] - eval_knots[i]) - h).abs() <= 1e-12 * h)
+            .all(|i| ((eval_knots[i + 1] - eval_knots[i]) - h).abs() <= PARAMETER_RELATIVE * h)
             .then(|| (eval_knots[p], 1.0 / h));
         Ok(SplineAxis { degree, knots, count, periodic, eval_knots, inv, uniform })
     }

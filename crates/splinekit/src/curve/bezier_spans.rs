@@ -69,7 +69,7 @@ impl<T: Coefficient> BezierSpans<T> {
                     let x = args[r - 1];
                     for j in (r..=p).rev() {
                         let i = s - p + j;
-                        let alpha = (x - knots[i]) * inv_get(inv, i + p + 1 - r, p + 1 - r);
+                        let alpha = (x - knots[i]) * inv.get(i + p + 1 - r, p + 1 - r);
                         d[j] = d[j - 1] * (1.0 - alpha) + d[j] * alpha;
                     }
                 }
@@ -146,11 +146,6 @@ impl<T: Coefficient> BezierSpans<T> {
             eval_fixed::<W, T>(&b, (t - frame.0) * frame.1, frame.1, o);
         }
     }
-}
-
-#[inline(always)]
-fn inv_get(inv: &ReciprocalKnotDifferences, i: usize, j: usize) -> f64 {
-    inv.value(i, j)
 }
 
 #[inline(always)]

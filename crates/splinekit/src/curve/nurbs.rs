@@ -10,6 +10,7 @@ use crate::curve::span_kernel::eval_on_span;
 use crate::curve::{BSplineCurve, CircleFrame, Curve, Interval};
 use crate::error::{Error, Result, check_finite};
 use crate::ops::homogeneous::Homogeneous;
+use crate::tolerance::ANGLE_SLACK;
 
 /// A non-uniform rational B-spline curve: a [`BSplineCurve`] whose control points carry
 /// positive weights. Clamped, unclamped and periodic knot vectors work as for B-splines.
@@ -92,10 +93,10 @@ impl<const D: usize> NurbsCurve<D> {
         frame.check()?;
         let radius = frame.radius;
         let sweep = end - start;
-        if !(sweep.is_finite() && sweep.abs() > 0.0 && sweep.abs() <= 2.0 * std::f64::consts::PI + 1e-12) {
+        if !(sweep.is_finite() && sweep.abs() > 0.0 && sweep.abs() <= 2.0 * std::f64::consts::PI + ANGLE_SLACK) {
             return Err(Error::invalid("angle", format!("sweep must be in (0, 2π], got {sweep}")));
         }
-        let segments = ((sweep.abs() / (std::f64::consts::FRAC_PI_2)) - 1e-12).ceil().max(1.0) as usize;
+        let segments = ((sweep.abs() / (std::f64::consts::FRAC_PI_2)) - ANGLE_SLACK).ceil().max(1.0) as usize;
         let dtheta = sweep / segments as f64;
         let w1 = (dtheta / 2.0).cos();
         let (at, tangent) = (|a| frame.point(a), |a| frame.unit_tangent(a));

@@ -40,15 +40,10 @@ impl ReciprocalKnotDifferences {
         }
         ReciprocalKnotDifferences { degree, values }
     }
-    /// 1/(t_i − t_{i−j}).
-    #[inline(always)]
-    fn get(&self, i: usize, j: usize) -> f64 {
-        self.values[i * self.degree + j - 1]
-    }
     /// 1/(t_i − t_{i−j}) for 1 ≤ j ≤ p (0 where the knots coincide).
     #[inline(always)]
-    pub fn value(&self, i: usize, j: usize) -> f64 {
-        self.get(i, j)
+    pub(crate) fn get(&self, i: usize, j: usize) -> f64 {
+        self.values[i * self.degree + j - 1]
     }
 }
 

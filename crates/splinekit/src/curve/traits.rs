@@ -5,6 +5,10 @@ use smallvec::{SmallVec, smallvec};
 use crate::basis::Side;
 use crate::{Interval, Point};
 
+/// The part of c″ normal to the tangent counts as zero (no principal normal: the curve is
+/// straight there) below this fraction of |c″|.
+pub const STRAIGHT_RELATIVE: f64 = 1e-14;
+
 /// The Frenet frame of a curve at a parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FrenetFrame<const D: usize> {
@@ -105,8 +109,11 @@ pub trait Curve<const D: usize>: Send + Sync {
         let tangent = out[1] / speed;
         let perp = out[2] - tangent * tangent.dot(&out[2]);
         let curvature = curvature_from(&out[1], &out[2]);
-        let normal =
-            if perp.norm() > 1e-14 * out[2].norm().max(f64::MIN_POSITIVE) { Some(perp.normalize()) } else { None };
+        let normal = if perp.norm() > STRAIGHT_RELATIVE * out[2].norm().max(f64::MIN_POSITIVE) {
+            Some(perp.normalize())
+        } else {
+            None
+        };
         let binormal = match normal {
             Some(n) if D == 3 => {
                 let mut b = Point::<D>::zeros();

@@ -11,6 +11,13 @@
 use crate::Point;
 use crate::error::{Error, Result};
 
+/// A pivot |R_kk| at most this fraction of the largest marks an unknown the data do not
+/// determine (R singular to working precision).
+const RANK_RELATIVE: f64 = 1e-14;
+
+/// Below this, r² + x² may have lost digits to underflow and Givens takes `hypot`.
+const SQUARES_UNDERFLOW: f64 = 1e-290;
+
 /// Incremental banded least-squares problem A x ≈ B with D right-hand sides.
 #[derive(Debug, Clone)]
 pub struct BandedLeastSquares<const D: usize> {
@@ -154,7 +161,7 @@ impl<const D: usize> BandedLeastSquares<D> {
         let max = (0..n).map(|k| diag(k).abs()).fold(0.0, f64::max);
         let min = (0..n).map(|k| diag(k).abs()).fold(f64::INFINITY, f64::min);
         for k in 0..n {
-            if diag(k).abs() <= max * 1e-14 || diag(k).is_nan() {
+            if diag(k).abs() <= max * RANK_RELATIVE || diag(k).is_nan() {
                 return Err(Error::numerical(
                     "fit",
                     format!(
@@ -200,7 +207,7 @@ impl<const D: usize> BandedLeastSquares<D> {
 #[inline]
 fn givens(r: f64, x: f64) -> (f64, f64) {
     let sq = r * r + x * x;
-    let h = if sq.is_finite() && sq > 1e-290 { sq.sqrt() } else { r.hypot(x) };
+    let h = if sq.is_finite() && sq > SQUARES_UNDERFLOW { sq.sqrt() } else { r.hypot(x) };
     let inv = 1.0 / h;
     (r * inv, x * inv)
 }

@@ -11,6 +11,11 @@ use crate::ops::homogeneous::CoefficientNorm;
 use crate::ops::knot_removal::remove_knot;
 use crate::ops::spline_data::SplineData;
 
+/// Elevating Bézier pieces doubles the interior knots; removing the copies again must not
+/// move the curve by more than this fraction of max(1, |coefficients|) (the pieces join
+/// exactly, so only rounding is left).
+const RESTORE_KNOT_RELATIVE: f64 = 1e-9;
+
 /// Elevates a Bézier control polygon of degree p by `t`.
 pub fn elevate_bezier<T: CoefficientNorm>(points: &[T], t: usize) -> Vec<T> {
     let p = points.len() - 1;
@@ -53,7 +58,7 @@ pub fn elevate_degree<T: CoefficientNorm>(data: &SplineData<T>, t: usize) -> Res
     knots.extend(std::iter::repeat_n(b, q + 1));
     let mut out = SplineData { degree: q, knots, coefficients };
     let scale = out.coefficients.iter().map(|c| c.norm()).fold(1.0, f64::max);
-    let tol = 1e-9 * scale;
+    let tol = RESTORE_KNOT_RELATIVE * scale;
     for seg in segments.iter().take(segments.len().saturating_sub(1)) {
         let u = seg.interval.end;
         let m = data.knots.iter().filter(|&&k| k == u).count();

@@ -6,6 +6,7 @@
 use crate::curve::{BSplineCurve, NurbsCurve};
 use crate::error::{Error, Result};
 use crate::ops::homogeneous::Homogeneous;
+use crate::tolerance::PARAMETER_RELATIVE;
 use crate::{Coefficient, Interval, Point};
 
 /// A B-spline in raw form: Σ N_{i,p} c_i over `knots` (n + p + 1 of them).
@@ -58,7 +59,7 @@ impl<T: Coefficient> SplineData<T> {
         let out = op(unrolled, period)?;
         let q = out.degree;
         // First knot index s with K[s] ≥ a, then one period: n' knots in [a, a + T).
-        let tol = 1e-12 * period.max(a.abs()).max(b.abs());
+        let tol = PARAMETER_RELATIVE * period.max(a.abs()).max(b.abs());
         let s = out.knots.partition_point(|&k| k < a - tol);
         let n_new = out.knots[s..].partition_point(|&k| k < b - tol);
         if s < q || s + n_new + 1 > out.knots.len() || s - q + n_new > out.coefficients.len() {

@@ -10,6 +10,7 @@ use crate::Point;
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result};
 use crate::surface::Surface;
+use crate::tolerance::JOIN_RELATIVE;
 
 /// A surface with trimming loops in its parameter domain.
 pub struct TrimmedSurface<const D: usize> {
@@ -22,7 +23,7 @@ fn flatten(curve: &dyn Curve<2>, field: &str) -> Result<Vec<Point<2>>> {
     let d = curve.domain();
     let (a, b) = (curve.point(d.start), curve.point(d.end));
     let scale = a.norm().max(b.norm()).max(1.0);
-    if !curve.is_closed() && (a - b).norm() > 1e-9 * scale {
+    if !curve.is_closed() && (a - b).norm() > JOIN_RELATIVE * scale {
         return Err(Error::invalid(
             field,
             format!("a trimming loop must be closed, but its ends are {} apart", (a - b).norm()),

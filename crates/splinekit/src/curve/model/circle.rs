@@ -1,7 +1,8 @@
 //! The circle (r cos t, r sin t, 0), t ∈ [0, 2π], closed.
 
-use super::trig::{TAU, Term, TrigCurve, TrigSeries, positive, trig_model_curve};
+use super::trig::{Term, TrigCurve, TrigSeries, positive, trig_model_curve};
 use crate::curve::Interval;
+use std::f64::consts::TAU;
 
 /// Circle of radius r in the xy-plane about the origin; c^{(k)} has length r.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,7 +1,8 @@
 //! The ellipse (a cos t, b sin t, 0), t ∈ [0, 2π], closed.
 
-use super::trig::{TAU, Term, TrigCurve, TrigSeries, positive, trig_model_curve};
+use super::trig::{Term, TrigCurve, TrigSeries, positive, trig_model_curve};
 use crate::curve::Interval;
+use std::f64::consts::TAU;
 
 /// Axis-aligned ellipse with semi-axes a (along x) and b (along y).
 #[derive(Debug, Clone, PartialEq)]

@@ -1,7 +1,8 @@
 //! The heart curve (16 sin³t, 13 cos t − 5 cos 2t − 2 cos 3t − cos 4t, 0), t ∈ [0, 2π], closed.
 
-use super::trig::{TAU, Term, TrigCurve, TrigSeries, positive, trig_model_curve};
+use super::trig::{Term, TrigCurve, TrigSeries, positive, trig_model_curve};
 use crate::curve::Interval;
+use std::f64::consts::TAU;
 
 /// The classic heart curve, scaled by `scale`. With sin³t = (3 sin t − sin 3t)/4 both
 /// coordinates are trigonometric polynomials, so derivatives of every order are exact.

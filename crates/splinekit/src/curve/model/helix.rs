@@ -1,7 +1,8 @@
 //! The circular helix (r cos t, r sin t, h t / 2π), t ∈ [0, 2π·turns], open.
 
-use super::trig::{TAU, Term, TrigCurve, TrigSeries, finite, positive, trig_model_curve};
+use super::trig::{Term, TrigCurve, TrigSeries, finite, positive, trig_model_curve};
 use crate::curve::Interval;
+use std::f64::consts::TAU;
 
 /// Helix of radius r rising by `pitch` per turn.
 #[derive(Debug, Clone, PartialEq)]

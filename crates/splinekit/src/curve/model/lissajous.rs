@@ -1,7 +1,8 @@
 //! Lissajous curves (A sin(a t + δ), B sin(b t), C sin(c t)), t ∈ [0, 2π].
 
-use super::trig::{TAU, Term, TrigCurve, TrigSeries, finite, trig_model_curve};
+use super::trig::{Term, TrigCurve, TrigSeries, finite, trig_model_curve};
 use crate::curve::Interval;
+use std::f64::consts::TAU;
 
 /// Lissajous figure with amplitudes (A, B, C) and frequencies (a, b, c); c = 0 or C = 0
 /// keeps it planar. Closed over [0, 2π] when the frequencies are integers.

@@ -1,7 +1,8 @@
 //! The rose curve r cos(nt)(cos t, sin t) with z = r sin(nt) (3-D) or z = 0 (planar).
 
-use super::trig::{TAU, Term, TrigCurve, TrigSeries, positive, trig_model_curve};
+use super::trig::{Term, TrigCurve, TrigSeries, positive, trig_model_curve};
 use crate::curve::Interval;
+use std::f64::consts::TAU;
 
 /// Rose (rhodonea) curve, t ∈ [0, 2π]: (r cos(nt) cos t, r cos(nt) sin t, r sin(nt)).
 ///

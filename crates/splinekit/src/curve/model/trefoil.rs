@@ -1,7 +1,8 @@
 //! The trefoil knot (sin t + 2 sin 2t, cos t − 2 cos 2t, −sin 3t), t ∈ [0, 2π], closed.
 
-use super::trig::{TAU, Term, TrigCurve, TrigSeries, positive, trig_model_curve};
+use super::trig::{Term, TrigCurve, TrigSeries, positive, trig_model_curve};
 use crate::curve::Interval;
+use std::f64::consts::TAU;
 
 /// Trefoil knot scaled by `scale`.
 #[derive(Debug, Clone, PartialEq)]

@@ -134,6 +134,3 @@ pub(crate) fn positive(field: &str, v: f64) -> crate::Result<f64> {
 pub(crate) fn finite(field: &str, v: f64) -> crate::Result<f64> {
     if v.is_finite() { Ok(v) } else { Err(crate::Error::invalid(field, format!("must be finite, got {v}"))) }
 }
-
-/// Tau = 2π.
-pub(crate) const TAU: f64 = std::f64::consts::TAU;

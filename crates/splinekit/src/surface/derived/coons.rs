@@ -12,6 +12,7 @@ use crate::Point;
 use crate::curve::{Curve, Interval, Reparametrized};
 use crate::error::{Error, Result};
 use crate::surface::Surface;
+use crate::tolerance::JOIN_RELATIVE;
 
 /// The blending functions of a Coons patch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -78,7 +79,7 @@ impl<const D: usize> CoonsPatch<D> {
         ];
         let scale = pairs.iter().map(|p| p.1.norm()).fold(1.0, f64::max);
         for (name, a, b) in &pairs {
-            if (a - b).norm() > 1e-9 * scale {
+            if (a - b).norm() > JOIN_RELATIVE * scale {
                 return Err(Error::invalid("corners", format!("{name} must meet, but are {} apart", (a - b).norm())));
             }
         }

@@ -9,6 +9,7 @@ use crate::Point;
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result, check_points_finite};
 use crate::surface::Surface;
+use crate::tolerance::PARAMETER_RELATIVE;
 use smallvec::{SmallVec, smallvec};
 
 /// A profile curve revolved about an axis.
@@ -29,7 +30,7 @@ impl RevolvedSurface {
         if n == 0.0 {
             return Err(Error::invalid("axis", "must not be the zero vector"));
         }
-        if !(angle > 0.0 && angle <= std::f64::consts::TAU * (1.0 + 1e-12)) {
+        if !(angle > 0.0 && angle <= std::f64::consts::TAU * (1.0 + PARAMETER_RELATIVE)) {
             return Err(Error::invalid("angle", format!("must be in (0, 2π], got {angle}")));
         }
         Ok(RevolvedSurface { profile, origin, axis: axis / n, angle: angle.min(std::f64::consts::TAU) })

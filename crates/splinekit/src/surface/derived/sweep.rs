@@ -16,7 +16,12 @@ use crate::error::{Error, Result};
 use crate::surface::Surface;
 use smallvec::{SmallVec, smallvec};
 
+/// Samples of the rotation-minimising frame along the path.
 const STEPS: usize = 1024;
+
+/// Step of the central differences for v-derivatives of order 2 and more, as a fraction
+/// of the path's domain.
+const DIFFERENCE_STEP: f64 = 1e-4;
 
 /// A profile swept along a path.
 pub struct SweepSurface {
@@ -131,7 +136,7 @@ impl Surface<3> for SweepSurface {
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<3>]) {
         let mut p: SmallVec<[Point<3>; 8]> = smallvec![Point::<3>::zeros(); du + 1];
         self.profile.eval(u, &mut p);
-        let h = 1e-4 * self.path.domain().length();
+        let h = DIFFERENCE_STEP * self.path.domain().length();
         for i in 0..=du {
             let (s0, s1) = self.first(&p[i], i == 0, v);
             out[i * (dv + 1)] = s0;
