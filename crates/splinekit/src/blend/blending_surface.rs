@@ -421,15 +421,51 @@ impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
         let PatchKind::Bezier(du, dv) = self.kind else {
             return default_grid_with_normals(self, us, vs, points, normals);
         };
-        let (nu, nv) = (du + 1, dv + 1);
-        let n_patch_u = self.knots_u.count();
-        // Per u sample: span, B-function value and derivative, bases of the two patch columns.
-        struct USample {
-            span: BlendSpan,
-            beta: [f64; 2],
+        let nu = du + 1;
+        let columns = self.bezier_grid_columns(us, du);
+        let mut bv = vec![0.0; 2 * (dv + 1)];
+        let mut rows = vec![Point::<D>::zeros(); self.knots_u.count() * 2 * 2 * nu];
+        for (b, &v) in vs.iter().enumerate() {
+            let sv = self.knots_v.locate(v, Side::Right);
+            let mut gamma = [0.0; 2];
+            self.bfunction.eval(sv.w, &mut gamma);
+            gamma[1] /= sv.width;
+            self.contract_bezier_rows(&sv, (du, dv), &mut bv, &mut rows);
+            for (a, span) in columns.spans.iter().enumerate() {
+                // S, S_u, S_v of the four active patches (a, b) ∈ {first, second}², then the blend.
+                let mut s = [[Point::<D>::zeros(); 3]; 4];
+                for (c, (col, row)) in
+                    [(span.first, 0), (span.first, 1), (span.second, 0), (span.second, 1)].into_iter().enumerate()
+                {
+                    let cb = (a * 2 + c / 2) * 2 * nu;
+                    let base = ((col * 2 + row) * 2) * nu;
+                    s[c] = patch_first_partials(&rows[base..base + 2 * nu], &columns.bases[cb..cb + 2 * nu]);
+                }
+                let (p, su, sv) = blend_first_partials(&s, columns.beta[a], gamma);
+                points[a * vs.len() + b] = p;
+                normals[a * vs.len() + b] = unit_normal(&su, &sv).unwrap_or_else(Point::<D>::zeros);
+            }
         }
-        let mut u_samples = Vec::with_capacity(us.len());
-        let mut u_bases = vec![0.0; us.len() * 2 * 2 * nu];
+    }
+}
+
+/// The u side of the Bézier grid path: per u sample its span, (B(w), B′(w)/Δ) and the
+/// degree-d_u Bernstein bases with first derivatives of its two patch columns.
+struct BezierGridColumns {
+    spans: Vec<BlendSpan>,
+    beta: Vec<[f64; 2]>,
+    /// `2·(d_u + 1)` values (basis, then derivative) per sample and patch column.
+    bases: Vec<f64>,
+}
+
+impl<const D: usize> BlendingSplineSurface<D> {
+    fn bezier_grid_columns(&self, us: &[f64], du: usize) -> BezierGridColumns {
+        let nu = du + 1;
+        let mut columns = BezierGridColumns {
+            spans: Vec::with_capacity(us.len()),
+            beta: Vec::new(),
+            bases: vec![0.0; us.len() * 4 * nu],
+        };
         for (a, &u) in us.iter().enumerate() {
             let span = self.knots_u.locate(u, Side::Right);
             let mut beta = [0.0; 2];
@@ -438,75 +474,78 @@ impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
                 [(span.first, span.t), (span.second, span.t + span.second_shift)].into_iter().enumerate()
             {
                 let base = (a * 2 + c) * 2 * nu;
-                scaled_bernstein(du, self.knots_u.support(col), at, 1, &mut u_bases[base..base + 2 * nu]);
+                scaled_bernstein(du, self.knots_u.support(col), at, 1, &mut columns.bases[base..base + 2 * nu]);
             }
-            u_samples.push(USample { span, beta: [beta[0], beta[1] / span.width] });
+            columns.spans.push(span);
+            columns.beta.push([beta[0], beta[1] / span.width]);
         }
-        // Per v sample: r_a = Σ_b C_ab N_b(v) and r'_a for every patch column and both active rows.
-        let mut bv = vec![0.0; 2 * nv];
-        let mut r = vec![Point::<D>::zeros(); n_patch_u * 2 * 2 * nu];
-        for (bi, &v) in vs.iter().enumerate() {
-            let sv = self.knots_v.locate(v, Side::Right);
-            let mut gamma = [0.0; 2];
-            self.bfunction.eval(sv.w, &mut gamma);
-            gamma[1] /= sv.width;
-            for (row, (l, at)) in [(sv.first, sv.t), (sv.second, sv.t + sv.second_shift)].into_iter().enumerate() {
-                scaled_bernstein(dv, self.knots_v.support(l), at, 1, &mut bv);
-                for k in 0..n_patch_u {
-                    let PatchShape::Bezier(p) = &self.patches[k * self.knots_v.count() + l].shape else {
-                        unreachable!("all patches are Bézier")
-                    };
-                    let base = ((k * 2 + row) * 2) * nu;
-                    for a in 0..nu {
-                        let net = &p.world[a * nv..(a + 1) * nv];
-                        let (mut val, mut der) = (Point::<D>::zeros(), Point::<D>::zeros());
-                        for b in 0..nv {
-                            val += net[b] * bv[b];
-                            der += net[b] * bv[nv + b];
-                        }
-                        r[base + a] = val;
-                        r[base + nu + a] = der;
-                    }
-                }
-            }
-            for (a, us_a) in u_samples.iter().enumerate() {
-                // Patch values S, S_u, S_v for the four active patches, then the blend.
-                let mut s = [[Point::<D>::zeros(); 3]; 4];
-                for (c, (col, row)) in
-                    [(us_a.span.first, 0), (us_a.span.first, 1), (us_a.span.second, 0), (us_a.span.second, 1)]
-                        .into_iter()
-                        .enumerate()
-                {
-                    let cb = (a * 2 + c / 2) * 2 * nu;
-                    let (nb, nd) = (&u_bases[cb..cb + nu], &u_bases[cb + nu..cb + 2 * nu]);
-                    let base = ((col * 2 + row) * 2) * nu;
-                    let (rv, rd) = (&r[base..base + nu], &r[base + nu..base + 2 * nu]);
-                    let (mut p, mut pu, mut pv) = (Point::<D>::zeros(), Point::<D>::zeros(), Point::<D>::zeros());
-                    for i in 0..nu {
-                        p += rv[i] * nb[i];
-                        pu += rv[i] * nd[i];
-                        pv += rd[i] * nb[i];
-                    }
-                    s[c] = [p, pu, pv];
-                }
-                let (b0, b1) = (us_a.beta[0], us_a.beta[1]);
-                let (g0, g1) = (gamma[0], gamma[1]);
-                // Blend in u per row, then in v.
-                let row = |r: usize| -> [Point<D>; 3] {
-                    let (x, y) = (&s[r], &s[2 + r]);
-                    let diff = y[0] - x[0];
-                    [x[0] + diff * b0, x[1] + (y[1] - x[1]) * b0 + diff * b1, x[2] + (y[2] - x[2]) * b0]
+        columns
+    }
+
+    /// For the v sample of span `sv`: r_a = Σ_b C_ab N_b(v) and r′_a (the net contracted
+    /// with the v-basis and its derivative) for every patch column and both active patch
+    /// rows, into `rows` (`bv` is scratch for the basis).
+    fn contract_bezier_rows(&self, sv: &BlendSpan, (du, dv): (usize, usize), bv: &mut [f64], rows: &mut [Point<D>]) {
+        let (nu, nv) = (du + 1, dv + 1);
+        for (row, (l, at)) in [(sv.first, sv.t), (sv.second, sv.t + sv.second_shift)].into_iter().enumerate() {
+            scaled_bernstein(dv, self.knots_v.support(l), at, 1, bv);
+            for k in 0..self.knots_u.count() {
+                let PatchShape::Bezier(p) = &self.patches[k * self.knots_v.count() + l].shape else {
+                    unreachable!("all patches are Bézier")
                 };
-                let (t0, t1) = (row(0), row(1));
-                let diff = t1[0] - t0[0];
-                let idx = a * vs.len() + bi;
-                points[idx] = t0[0] + diff * g0;
-                let su = t0[1] + (t1[1] - t0[1]) * g0;
-                let sv = t0[2] + (t1[2] - t0[2]) * g0 + diff * g1;
-                normals[idx] = unit_normal(&su, &sv).unwrap_or_else(Point::<D>::zeros);
+                let base = ((k * 2 + row) * 2) * nu;
+                for a in 0..nu {
+                    let net = &p.world[a * nv..(a + 1) * nv];
+                    let (mut val, mut der) = (Point::<D>::zeros(), Point::<D>::zeros());
+                    for b in 0..nv {
+                        val += net[b] * bv[b];
+                        der += net[b] * bv[nv + b];
+                    }
+                    rows[base + a] = val;
+                    rows[base + nu + a] = der;
+                }
             }
         }
     }
+}
+
+/// S, S_u, S_v of one Bézier patch from its row contractions (r, then r′) and its u-bases
+/// (N, then N′): S = Σ r_a N_a, S_u = Σ r_a N′_a, S_v = Σ r′_a N_a.
+#[inline(always)]
+fn patch_first_partials<const D: usize>(rows: &[Point<D>], bases: &[f64]) -> [Point<D>; 3] {
+    let nu = bases.len() / 2;
+    let (rv, rd) = rows.split_at(nu);
+    let (nb, nd) = bases.split_at(nu);
+    let (mut p, mut pu, mut pv) = (Point::<D>::zeros(), Point::<D>::zeros(), Point::<D>::zeros());
+    for i in 0..nu {
+        p += rv[i] * nb[i];
+        pu += rv[i] * nd[i];
+        pv += rd[i] * nb[i];
+    }
+    [p, pu, pv]
+}
+
+/// S, S_u, S_v of the blend of four patches `s[2·a + b]` = [S, S_u, S_v] of patch (a, b):
+/// the Leibniz blend in u of each patch row (first order for S, S_u; S_v is blended as a
+/// value), then in v. `beta` and `gamma` are (B, B′/Δ) in u and in v.
+#[inline(always)]
+fn blend_first_partials<const D: usize>(
+    s: &[[Point<D>; 3]; 4],
+    beta: [f64; 2],
+    gamma: [f64; 2],
+) -> (Point<D>, Point<D>, Point<D>) {
+    let row = |r: usize| -> [Point<D>; 3] {
+        let (x, y) = (&s[r], &s[2 + r]);
+        let mut t = [Point::<D>::zeros(); 3];
+        blend_derivatives(&x[..2], &y[..2], &beta, 1.0, &mut t[..2]);
+        blend_derivatives(&x[2..], &y[2..], &beta, 1.0, &mut t[2..]);
+        t
+    };
+    let (t0, t1) = (row(0), row(1));
+    let (mut p_sv, mut su) = ([Point::<D>::zeros(); 2], [Point::<D>::zeros()]);
+    blend_derivatives(&[t0[0], t0[2]], &[t1[0], t1[2]], &gamma, 1.0, &mut p_sv);
+    blend_derivatives(&t0[1..2], &t1[1..2], &gamma, 1.0, &mut su);
+    (p_sv[0], su[0], p_sv[1])
 }
 
 /// The trait's generic grid path, for sub-surface patches.

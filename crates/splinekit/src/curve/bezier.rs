@@ -132,9 +132,9 @@ pub fn cubic_matrix_form<const D: usize>(m: &[[f64; 4]; 4], geometry: &[Point<D>
 /// the polynomial is continued).
 ///
 /// Level r of the triangle holds n − r + 1 points; the derivative of order j = n − r is
-/// n!/(n−j)! Δ^j of them. Cost O(n² + k³). Up to 8 coefficients (degree 7) the triangle
-/// lives in fixed-size arrays the compiler unrolls; above, in a stack buffer up to 16 and
-/// on the heap beyond. This is the one home of Bézier derivatives: curves, rational
+/// n!/(n−j)! Δ^j of them. Cost O(n² + k³). Up to 8 coefficients (degree 7) and 4 outputs
+/// the triangle lives in fixed-size arrays the compiler unrolls; otherwise in a stack
+/// buffer up to 16 coefficients and on the heap beyond. This is the one home of Bézier derivatives: curves, rational
 /// curves, Hermite segments, polynomial B-functions, Bézier surfaces and the local Bézier
 /// pieces of blending splines all call it.
 ///
@@ -149,33 +149,51 @@ pub fn cubic_matrix_form<const D: usize>(m: &[[f64; 4]; 4], geometry: &[Point<D>
 /// ```
 #[inline]
 pub fn bezier_derivatives<T: Coefficient>(points: &[T], t: f64, out: &mut [T]) {
+    /// Dispatches to the array path for W coefficients, by the number of outputs K.
+    macro_rules! by_outputs {
+        ($w:literal) => {
+            match out.len() {
+                1 => bezier_derivatives_fixed::<T, $w, 1>(points, t, out),
+                2 => bezier_derivatives_fixed::<T, $w, 2>(points, t, out),
+                3 => bezier_derivatives_fixed::<T, $w, 3>(points, t, out),
+                4 => bezier_derivatives_fixed::<T, $w, 4>(points, t, out),
+                _ => bezier_derivatives_slices(points, t, out),
+            }
+        };
+    }
     match points.len() {
-        1 => bezier_derivatives_fixed::<T, 1>(points, t, out),
-        2 => bezier_derivatives_fixed::<T, 2>(points, t, out),
-        3 => bezier_derivatives_fixed::<T, 3>(points, t, out),
-        4 => bezier_derivatives_fixed::<T, 4>(points, t, out),
-        5 => bezier_derivatives_fixed::<T, 5>(points, t, out),
-        6 => bezier_derivatives_fixed::<T, 6>(points, t, out),
-        7 => bezier_derivatives_fixed::<T, 7>(points, t, out),
-        8 => bezier_derivatives_fixed::<T, 8>(points, t, out),
-        _ => {
-            let mut b: SmallVec<[T; 16]> = SmallVec::from_slice(points);
-            let mut diff = b.clone();
-            de_casteljau_triangle(&mut b, &mut diff, t, out)
-        }
+        1 => by_outputs!(1),
+        2 => by_outputs!(2),
+        3 => by_outputs!(3),
+        4 => by_outputs!(4),
+        5 => by_outputs!(5),
+        6 => by_outputs!(6),
+        7 => by_outputs!(7),
+        8 => by_outputs!(8),
+        _ => bezier_derivatives_slices(points, t, out),
     }
 }
 
-/// [`bezier_derivatives`] with the W coefficients in arrays.
+/// [`bezier_derivatives`] with W coefficients and K outputs in arrays: every loop has a
+/// constant trip count, so the triangle stays in registers.
 #[inline(always)]
-fn bezier_derivatives_fixed<T: Coefficient, const W: usize>(points: &[T], t: f64, out: &mut [T]) {
+fn bezier_derivatives_fixed<T: Coefficient, const W: usize, const K: usize>(points: &[T], t: f64, out: &mut [T]) {
     let mut b: [T; W] = points.try_into().expect("W coefficients");
-    let mut diff = b;
+    let mut diff = [T::zero(); W];
+    let out: &mut [T; K] = out.try_into().expect("K outputs");
+    de_casteljau_triangle(&mut b, &mut diff, t, out)
+}
+
+/// [`bezier_derivatives`] for any sizes, with stack buffers up to 16 coefficients.
+fn bezier_derivatives_slices<T: Coefficient>(points: &[T], t: f64, out: &mut [T]) {
+    let mut b: SmallVec<[T; 16]> = SmallVec::from_slice(points);
+    let mut diff: SmallVec<[T; 16]> = SmallVec::from_elem(T::zero(), points.len());
     de_casteljau_triangle(&mut b, &mut diff, t, out)
 }
 
 /// The triangle of [`bezier_derivatives`] on the coefficients `b` (overwritten), with
-/// `diff` (as long as `b`) as scratch for the differences.
+/// `diff` (as long as `b`) as scratch for the differences; only the levels whose
+/// derivative is asked for are differenced.
 #[inline(always)]
 fn de_casteljau_triangle<T: Coefficient>(b: &mut [T], diff: &mut [T], t: f64, out: &mut [T]) {
     let n = b.len() - 1;
@@ -186,14 +204,22 @@ fn de_casteljau_triangle<T: Coefficient>(b: &mut [T], diff: &mut [T], t: f64, ou
     for r in 0..=n {
         let j = n - r;
         if j <= k {
-            diff[..=j].copy_from_slice(&b[..=j]);
-            for s in 0..j {
-                for i in 0..j - s {
-                    diff[i] = diff[i + 1] - diff[i];
+            // Δ^j of b[..=j]: the first differences straight from b, then in place.
+            let delta = if j == 0 {
+                b[0]
+            } else {
+                for i in 0..j {
+                    diff[i] = b[i + 1] - b[i];
                 }
-            }
+                for s in 1..j {
+                    for i in 0..j - s {
+                        diff[i] = diff[i + 1] - diff[i];
+                    }
+                }
+                diff[0]
+            };
             let falling = (0..j).fold(1.0, |acc, i| acc * (n - i) as f64);
-            out[j] = diff[0] * falling;
+            out[j] = delta * falling;
         }
         if r < n {
             for i in 0..n - r {
@@ -209,5 +235,37 @@ impl<const D: usize> Curve<D> for BezierCurve<D> {
     }
     fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<D>]) {
         bezier_derivatives(&self.control_points, t.clamp(0.0, 1.0), out);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The array paths (up to 8 coefficients and 4 outputs) and the buffer path are the same
+    /// arithmetic, and both match the derivatives of the power form.
+    #[test]
+    fn every_path_of_bezier_derivatives_agrees_with_the_power_form() {
+        for n in 0..=10usize {
+            // t^m with m = n/2 in Bernstein form of degree n: b_i = C(i, m)/C(n, m).
+            let m = n / 2;
+            let coefficients: Vec<f64> =
+                (0..=n).map(|i| crate::basis::binomial(i, m) / crate::basis::binomial(n, m)).collect();
+            let t = 0.3;
+            let mut long = vec![0.0; 7];
+            bezier_derivatives(&coefficients, t, &mut long);
+            for outputs in 1..=4 {
+                let mut short = vec![0.0; outputs];
+                bezier_derivatives(&coefficients, t, &mut short);
+                assert_eq!(short[..], long[..outputs], "n = {n}, {outputs} outputs");
+            }
+            for (k, d) in long.iter().enumerate() {
+                let falling: f64 = (0..k).map(|i| (m as f64) - i as f64).product();
+                let want = if k <= m { falling * t.powi((m - k) as i32) } else { 0.0 };
+                // Differences of order k of the coefficients carry n!/(n−k)! of their rounding.
+                let scale: f64 = (0..k.min(n)).map(|i| (n - i) as f64).product();
+                assert!((d - want).abs() < 1e-14 * scale.max(1.0), "n = {n}, t^{m}, order {k}: {d} vs {want}");
+            }
+        }
     }
 }
