@@ -507,10 +507,10 @@ fn surface_fitting_equals_the_dense_least_squares_solution() {
 }
 
 #[test]
-fn derived_surfaces_revolution_ruled_extrusion_coons() {
+fn revolved_surfaces_turn_profiles_about_any_axis() {
+    use splinekit::curve::BSplineCurve;
     use splinekit::curve::model::{Circle, Line};
-    use splinekit::curve::{BSplineCurve, BezierCurve};
-    use splinekit::surface::derived::*;
+    use splinekit::surface::derived::RevolvedSurface;
     // A circle of radius 1 about (3, 0, 0) in the xz-plane, revolved about z: the torus.
     let tube = BSplineCurve::new_periodic(
         3,
@@ -557,6 +557,13 @@ fn derived_surfaces_revolution_ruled_extrusion_coons() {
     assert!(
         RevolvedSurface::new(Box::new(Circle::new(1.0).unwrap()), p3(0.0, 0.0, 0.0), p3(0.0, 0.0, 0.0), 1.0).is_err()
     );
+}
+
+#[test]
+fn ruled_surfaces_are_bilinear_and_extrusions_translate() {
+    use splinekit::curve::BezierCurve;
+    use splinekit::curve::model::Line;
+    use splinekit::surface::derived::{Extrusion, RuledSurface};
     // Ruled surface between two lines is bilinear; extrusion is a translation.
     let ruled = RuledSurface::new(
         Box::new(Line::new(p2(0.0, 0.0), p2(2.0, 0.0)).unwrap()),
@@ -568,6 +575,13 @@ fn derived_surfaces_revolution_ruled_extrusion_coons() {
     let ext = Extrusion::new(Box::new(bez.clone()), p3(0.0, 0.0, 2.0)).unwrap();
     assert!((ext.point(0.3, 0.25) - (bez.point(0.3) + p3(0.0, 0.0, 0.5))).norm() < 1e-15);
     check_partials(&ext, "extrusion");
+}
+
+#[test]
+fn coons_patches_interpolate_their_boundaries() {
+    use splinekit::curve::BezierCurve;
+    use splinekit::curve::model::Line;
+    use splinekit::surface::derived::{CoonsBlend, CoonsPatch};
     // Coons patches interpolate their boundaries and reproduce bilinear surfaces.
     let corner = |u: f64, v: f64| p3(u, v, u * v);
     let line = |a: Point<3>, b: Point<3>| -> Box<dyn Curve<3>> { Box::new(Line::new(a, b).unwrap()) };

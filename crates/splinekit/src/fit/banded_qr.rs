@@ -64,7 +64,9 @@ impl<const D: usize> BandedLeastSquares<D> {
         }
     }
 
-    /// Adds the row Σ_j `values[j]` x_{(first + j) mod n} ≈ rhs.
+    /// Adds the row Σ_j `values[j]` x_{(first + j) mod n} ≈ rhs: its band part and border
+    /// part are rotated into R (Givens), and what is left of the right-hand side adds to
+    /// the residual.
     pub fn add_row(&mut self, first: usize, values: &[f64], rhs: Point<D>) {
         let (w, b, nb) = (self.width, self.border, self.band_cols);
         let mut xb = [0.0f64; 64];
@@ -92,43 +94,63 @@ impl<const D: usize> BandedLeastSquares<D> {
         }
         let mut xr = rhs;
         self.rows += 1;
-        if lead != usize::MAX {
-            let mut k = lead;
-            while k < nb {
-                if xband[0] != 0.0 {
-                    let rrow = &mut self.band[k * w..(k + 1) * w];
-                    let rb = &mut self.border_part[k * b..(k + 1) * b];
-                    if rrow[0] == 0.0 {
-                        // Empty row of R: the new row becomes it.
-                        let cols = w.min(nb - k);
-                        rrow[..cols].copy_from_slice(&xband[..cols]);
-                        rb.copy_from_slice(xbord);
-                        self.rhs[k] = xr;
-                        return;
-                    }
-                    let (c, s) = givens(rrow[0], xband[0]);
-                    for j in 0..w.min(nb - k) {
-                        let (r, x) = (rrow[j], xband[j]);
-                        rrow[j] = c * r + s * x;
-                        xband[j] = c * x - s * r;
-                    }
-                    for j in 0..b {
-                        let (r, x) = (rb[j], xbord[j]);
-                        rb[j] = c * r + s * x;
-                        xbord[j] = c * x - s * r;
-                    }
-                    let r = self.rhs[k];
-                    self.rhs[k] = r * c + xr * s;
-                    xr = xr * c - r * s;
+        if lead != usize::MAX && self.rotate_into_band(lead, xband, xbord, &mut xr) {
+            return;
+        }
+        if self.rotate_into_border(xbord, &mut xr) {
+            return;
+        }
+        self.residual_sq += xr.norm_squared();
+    }
+
+    /// Rotates the row (band part `xband` starting at column `lead`, border part `xbord`,
+    /// right-hand side `xr`) into the band rows of R from row `lead` on, until its band
+    /// part is zero. Returns whether the row filled an empty row of R instead (then
+    /// nothing is left of it).
+    fn rotate_into_band(&mut self, lead: usize, xband: &mut [f64], xbord: &mut [f64], xr: &mut Point<D>) -> bool {
+        let (w, b, nb) = (self.width, self.border, self.band_cols);
+        let mut k = lead;
+        while k < nb {
+            if xband[0] != 0.0 {
+                let rrow = &mut self.band[k * w..(k + 1) * w];
+                let rb = &mut self.border_part[k * b..(k + 1) * b];
+                if rrow[0] == 0.0 {
+                    // Empty row of R: the new row becomes it.
+                    let cols = w.min(nb - k);
+                    rrow[..cols].copy_from_slice(&xband[..cols]);
+                    rb.copy_from_slice(xbord);
+                    self.rhs[k] = *xr;
+                    return true;
                 }
-                xband.copy_within(1..w, 0);
-                xband[w - 1] = 0.0;
-                k += 1;
-                if xband.iter().all(|&v| v == 0.0) {
-                    break;
+                let (c, s) = givens(rrow[0], xband[0]);
+                for j in 0..w.min(nb - k) {
+                    let (r, x) = (rrow[j], xband[j]);
+                    rrow[j] = c * r + s * x;
+                    xband[j] = c * x - s * r;
                 }
+                for j in 0..b {
+                    let (r, x) = (rb[j], xbord[j]);
+                    rb[j] = c * r + s * x;
+                    xbord[j] = c * x - s * r;
+                }
+                let r = self.rhs[k];
+                self.rhs[k] = r * c + *xr * s;
+                *xr = *xr * c - r * s;
+            }
+            xband.copy_within(1..w, 0);
+            xband[w - 1] = 0.0;
+            k += 1;
+            if xband.iter().all(|&v| v == 0.0) {
+                break;
             }
         }
+        false
+    }
+
+    /// Rotates the border part `xbord` (and `xr`) into the dense border rows of R.
+    /// Returns whether it filled an empty row of R instead.
+    fn rotate_into_border(&mut self, xbord: &mut [f64], xr: &mut Point<D>) -> bool {
+        let (b, nb) = (self.border, self.band_cols);
         for i in 0..b {
             if xbord[i] == 0.0 {
                 continue;
@@ -137,8 +159,8 @@ impl<const D: usize> BandedLeastSquares<D> {
             let rb = &mut self.border_part[row * b..(row + 1) * b];
             if rb[i] == 0.0 {
                 rb[i..].copy_from_slice(&xbord[i..]);
-                self.rhs[row] = xr;
-                return;
+                self.rhs[row] = *xr;
+                return true;
             }
             let (c, s) = givens(rb[i], xbord[i]);
             for j in i..b {
@@ -147,10 +169,10 @@ impl<const D: usize> BandedLeastSquares<D> {
                 xbord[j] = c * x - s * r;
             }
             let r = self.rhs[row];
-            self.rhs[row] = r * c + xr * s;
-            xr = xr * c - r * s;
+            self.rhs[row] = r * c + *xr * s;
+            *xr = *xr * c - r * s;
         }
-        self.residual_sq += xr.norm_squared();
+        false
     }
 
     /// Back substitution. Fails (naming the unknown) when R is singular to working

@@ -12,6 +12,10 @@ use crate::ops::spline_data::SplineData;
 
 /// Removes `u` up to `times` times while the coefficient check stays within `tolerance`.
 /// Returns the new spline and how many times the knot was actually removed.
+///
+/// A textbook algorithm kept whole on purpose (about 85 lines): it follows *The NURBS
+/// Book*'s A5.8 (RemoveCurveKnot) step by step, index names included, so it can be
+/// checked against the book line by line.
 pub fn remove_knot<T: CoefficientNorm>(
     data: &SplineData<T>,
     u: f64,
