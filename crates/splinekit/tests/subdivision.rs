@@ -4,7 +4,9 @@ mod common;
 use common::*;
 use splinekit::Point;
 use splinekit::curve::Curve;
-use splinekit::subdivision::{chaikin, four_point, lane_riesenfeld, lane_riesenfeld_limit};
+use splinekit::subdivision::{
+    ChaikinOptions, FourPointOptions, chaikin, four_point, lane_riesenfeld, lane_riesenfeld_limit,
+};
 
 fn polygon() -> Vec<Point<2>> {
     vec![p2(0.0, 0.0), p2(2.0, 0.5), p2(3.0, 2.0), p2(1.5, 3.5), p2(-0.5, 2.5), p2(-1.0, 1.0)]
@@ -56,7 +58,7 @@ fn lane_riesenfeld_converges_to_the_uniform_bspline() {
 #[test]
 fn chaikin_is_lane_riesenfeld_of_degree_two() {
     let p = polygon();
-    let a = chaikin(&p, 3, true, false).unwrap();
+    let a = chaikin(&p, 3, ChaikinOptions { closed: true, keep_ends: false }).unwrap();
     let b = lane_riesenfeld(&p, 2, 3, true).unwrap();
     assert_eq!(a.len(), b.len());
     // LR output is rotated by one relative to Chaikin's; compare as cyclic sequences.
@@ -64,7 +66,7 @@ fn chaikin_is_lane_riesenfeld_of_degree_two() {
     for i in 0..a.len() {
         assert!((a[i] - b[(i + shift) % b.len()]).norm() < 1e-12);
     }
-    let open = chaikin(&p, 2, false, true).unwrap();
+    let open = chaikin(&p, 2, ChaikinOptions { closed: false, keep_ends: true }).unwrap();
     assert_eq!(open[0], p[0]);
     assert_eq!(*open.last().unwrap(), p[5]);
 }
@@ -72,14 +74,14 @@ fn chaikin_is_lane_riesenfeld_of_degree_two() {
 #[test]
 fn four_point_interpolates_and_reproduces_cubics() {
     let p = polygon();
-    let q = four_point(&p, 2, true, 1.0 / 16.0).unwrap();
+    let q = four_point(&p, 2, FourPointOptions { closed: true, tension: 1.0 / 16.0 }).unwrap();
     for (i, v) in p.iter().enumerate() {
         assert_eq!(q[4 * i], *v, "old point {i} kept");
     }
     // Samples of a cubic stay on the cubic (inner points; the reflected ends only keep lines).
     let cubic = |t: f64| p2(t, t * t * t - 2.0 * t);
     let pts: Vec<Point<2>> = (0..8).map(|i| cubic(i as f64)).collect();
-    let r = four_point(&pts, 1, false, 1.0 / 16.0).unwrap();
+    let r = four_point(&pts, 1, FourPointOptions { closed: false, tension: 1.0 / 16.0 }).unwrap();
     for i in 1..6 {
         assert!((r[2 * i + 1] - cubic(i as f64 + 0.5)).norm() < 1e-12);
     }

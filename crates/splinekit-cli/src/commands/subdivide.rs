@@ -3,7 +3,7 @@
 use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
 use serde_json::Value;
-use splinekit::subdivision::{chaikin, four_point, lane_riesenfeld};
+use splinekit::subdivision::{ChaikinOptions, FourPointOptions, chaikin, four_point, lane_riesenfeld};
 use splinekit_scene::points::{from_points, to_points};
 use splinekit_scene::with_dimension;
 
@@ -61,7 +61,7 @@ pub fn run(args: &SubdivideArgs) -> Result<()> {
                 if let Some(d) = args.degree.filter(|&d| d != 2) {
                     bail!("--degree: Chaikin's scheme is of degree 2, got {d} (use --scheme lane_riesenfeld)");
                 }
-                chaikin(&p, args.steps, args.closed, args.keep_ends)
+                chaikin(&p, args.steps, ChaikinOptions { closed: args.closed, keep_ends: args.keep_ends })
             }
             Scheme::LaneRiesenfeld => {
                 let d = args.degree.unwrap_or(3);
@@ -70,7 +70,9 @@ pub fn run(args: &SubdivideArgs) -> Result<()> {
                 }
                 lane_riesenfeld(&p, d, args.steps, args.closed)
             }
-            Scheme::FourPoint => four_point(&p, args.steps, args.closed, args.tension),
+            Scheme::FourPoint => {
+                four_point(&p, args.steps, FourPointOptions { closed: args.closed, tension: args.tension })
+            }
         }
         .map_err(|e| anyhow!("{}", e.to_string().replacen("steps:", "--steps:", 1).replacen("tension:", "--tension:", 1).replacen("degree:", "--degree:", 1)))?;
         Ok(from_points(&r))

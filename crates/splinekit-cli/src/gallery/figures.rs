@@ -6,7 +6,7 @@ use splinekit::basis::{basis_function, bernstein};
 use splinekit::curve::model::{Butterfly, Circle, Heart, Helix, Lissajous, Trefoil};
 use splinekit::curve::{BSplineCurve, BezierCurve, CatmullRomCurve, CircleFrame, Curve, HermiteCurve, NurbsCurve};
 use splinekit::fit::{FitOptions, KnotPlacement, fit_curve};
-use splinekit::subdivision::{chaikin, four_point, lane_riesenfeld};
+use splinekit::subdivision::{ChaikinOptions, FourPointOptions, chaikin, four_point, lane_riesenfeld};
 use splinekit_mesh::{Polyline, Projection, SvgFigure};
 use std::f64::consts::TAU;
 
@@ -238,8 +238,8 @@ pub fn subdivision_schemes() -> Result<Figure> {
     let pts = vec![p2(0.0, 0.0), p2(1.0, 3.0), p2(3.0, 3.5), p2(4.0, 0.5), p2(6.0, 0.0), p2(7.0, 3.0)];
     let mut fig = SvgFigure::new(W, H, Projection::TOP).title("Subdivision curves after 5 steps");
     fig.dashed(&pts, false, POLYGON, 1.5);
-    fig.path(&chaikin(&pts, 5, false, true)?, false, PALETTE[0], 2.0);
-    fig.path(&four_point(&pts, 5, false, 1.0 / 16.0)?, false, PALETTE[1], 2.0);
+    fig.path(&chaikin(&pts, 5, ChaikinOptions { closed: false, keep_ends: true })?, false, PALETTE[0], 2.0);
+    fig.path(&four_point(&pts, 5, FourPointOptions { closed: false, tension: 1.0 / 16.0 })?, false, PALETTE[1], 2.0);
     fig.path(&lane_riesenfeld(&pts, 4, 5, false)?, false, PALETTE[2], 2.0);
     fig.dots(&pts, 4.0, "#000");
     Ok(Figure {

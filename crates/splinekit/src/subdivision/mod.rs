@@ -4,6 +4,6 @@ pub mod chaikin;
 pub mod four_point;
 pub mod lane_riesenfeld;
 
-pub use chaikin::chaikin;
-pub use four_point::four_point;
+pub use chaikin::{ChaikinOptions, chaikin};
+pub use four_point::{FourPointOptions, four_point};
 pub use lane_riesenfeld::{lane_riesenfeld, lane_riesenfeld_limit};
