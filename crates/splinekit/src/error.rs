@@ -64,7 +64,7 @@ impl Error {
     }
 }
 
-/// `Result` with the kernel's [`Error`].
+/// `Result` with the kernel's [`Error`](enum@Error).
 pub type Result<T> = std::result::Result<T, Error>;
 
 /// Checks that every value is finite; names the field and the first bad index.

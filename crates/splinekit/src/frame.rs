@@ -144,6 +144,19 @@ impl<const D: usize> Affine<D> {
 
 impl Affine<3> {
     /// Rotation by `angle` radians about `axis` through the origin (right-hand rule).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::frame::Affine;
+    /// // A quarter turn about z takes x to y; about a point, that point stays put.
+    /// let turn = Affine::rotation(Point::<3>::z(), std::f64::consts::FRAC_PI_2).unwrap();
+    /// assert!((turn.apply_point(&Point::<3>::x()) - Point::<3>::y()).norm() < 1e-16);
+    /// let c = Point::<3>::new(1.0, 2.0, 3.0);
+    /// assert!((turn.about(&c).apply_point(&c) - c).norm() < 1e-15);
+    /// assert!(Affine::rotation(Point::<3>::zeros(), 1.0).is_err());
+    /// ```
     pub fn rotation(axis: Point<3>, angle: f64) -> Result<Self> {
         let n = axis.norm();
         if !(n > 0.0 && n.is_finite() && angle.is_finite()) {

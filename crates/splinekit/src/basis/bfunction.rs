@@ -49,6 +49,19 @@ pub enum BFunction {
 impl BFunction {
     /// The polynomial B-function of smoothness k ≥ 1 (k = 1: 3t² − 2t³, k = 2:
     /// 6t⁵ − 15t⁴ + 10t³): C^k blends.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::basis::BFunction;
+    /// // k = 1 is 3t² − 2t³: at ½ the value ½, slope 3/2 and no curvature; flat at both ends.
+    /// let b = BFunction::polynomial(1).unwrap();
+    /// let mut d = [0.0; 3];
+    /// b.eval(0.5, &mut d);
+    /// assert_eq!(d, [0.5, 1.5, 0.0]);
+    /// b.eval(1.0, &mut d);
+    /// assert_eq!(d[..2], [1.0, 0.0]);
+    /// ```
     pub fn polynomial(smoothness: usize) -> Result<Self> {
         if smoothness == 0 || smoothness > 30 {
             return Err(Error::invalid("smoothness", format!("must be between 1 and 30, got {smoothness}")));
@@ -66,6 +79,21 @@ impl BFunction {
 
     /// The ERBS B-function with intrinsic parameters α, β, γ > 0 and λ ∈ (0, 1) (defaults
     /// 1, 1, 1, ½). Tables are built once per parameter set and shared.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::basis::BFunction;
+    /// // The default ERBS (α = β = γ = 1, λ = ½) is symmetric: B(½) = ½, B(t) + B(1 − t) = 1,
+    /// // and every derivative vanishes at the ends.
+    /// let b = BFunction::erbs(1.0, 1.0, 1.0, 0.5).unwrap();
+    /// assert!((b.value(0.5) - 0.5).abs() < 1e-16);
+    /// assert!((b.value(0.2) + b.value(0.8) - 1.0).abs() < 1e-15);
+    /// let mut d = [0.0; 4];
+    /// b.eval(0.0, &mut d);
+    /// assert_eq!(d, [0.0; 4]);
+    /// assert!(BFunction::erbs(1.0, 1.0, 1.0, 1.5).is_err());
+    /// ```
     pub fn erbs(alpha: f64, beta: f64, gamma: f64, lambda: f64) -> Result<Self> {
         for (name, v) in [("alpha", alpha), ("beta", beta), ("gamma", gamma)] {
             if !(v > 0.0 && v.is_finite() && v <= 100.0) {

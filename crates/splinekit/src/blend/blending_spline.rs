@@ -315,6 +315,26 @@ impl<const D: usize> BlendingSplineCurve<D> {
     }
     /// Sets the frame of local k (about its origin); returns the parameter ranges whose
     /// points changed ([`Self::affected_ranges`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use splinekit::Point;
+    /// use splinekit::blend::{BlendingCurveOptions, BlendingSplineCurve};
+    /// use splinekit::curve::Curve;
+    /// use splinekit::curve::model::Helix;
+    /// use splinekit::frame::Affine;
+    /// // Lift local 3 of an open helix: the curve changes on (c₂, c₄) only.
+    /// let helix = Arc::new(Helix::new(1.0, 1.0, 2.0).unwrap());
+    /// let mut c = BlendingSplineCurve::from_model(helix, 8, &BlendingCurveOptions::default()).unwrap();
+    /// let before = c.clone();
+    /// let ranges = c.set_transform(3, Affine::translation(Point::<3>::new(0.0, 0.0, 0.5)));
+    /// assert_eq!(ranges, vec![c.local_support(3)]);
+    /// let (inside, outside) = (c.centre(3), c.centre(5));
+    /// assert!((c.point(inside) - before.point(inside) - Point::<3>::new(0.0, 0.0, 0.5)).norm() < 1e-14);
+    /// assert_eq!(c.point(outside), before.point(outside));
+    /// ```
     pub fn set_transform(&mut self, k: usize, transform: Affine<D>) -> Vec<Interval> {
         self.locals[k].set_transform(transform);
         self.affected_ranges(k)

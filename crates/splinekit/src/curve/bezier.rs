@@ -20,6 +20,19 @@ pub struct BezierCurve<const D: usize> {
 
 impl<const D: usize> BezierCurve<D> {
     /// A Bézier curve through its control points (at least one).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{BezierCurve, Curve};
+    /// // The quadratic with P0 = (0, 0), P1 = (1, 2), P2 = (2, 0): c(½) = (1, 1), c′(½) = (2, 0).
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let c = BezierCurve::new(vec![p(0.0, 0.0), p(1.0, 2.0), p(2.0, 0.0)]).unwrap();
+    /// assert_eq!(c.point(0.5), p(1.0, 1.0));
+    /// assert_eq!(c.derivative(0.5, 1), p(2.0, 0.0));
+    /// assert!(BezierCurve::<2>::new(vec![]).is_err());
+    /// ```
     pub fn new(control_points: Vec<Point<D>>) -> Result<Self> {
         if control_points.is_empty() {
             return Err(Error::count("control_points", "at least 1 point", 0));

@@ -34,12 +34,44 @@ pub struct BSplineCurve<const D: usize> {
 
 impl<const D: usize> BSplineCurve<D> {
     /// A B-spline from degree, n + p + 1 knots and n control points (open: clamped or not).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{BSplineCurve, Curve};
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let points = vec![p(0.0, 0.0), p(1.0, 2.0), p(3.0, 2.0), p(4.0, 0.0)];
+    /// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0], points.clone()).unwrap();
+    /// // Clamped: the curve starts at P0 and ends at P3; at the knot 1 it is (P1 + P2)/2.
+    /// assert_eq!((c.point(0.0), c.point(2.0), c.point(1.0)), (p(0.0, 0.0), p(4.0, 0.0), p(2.0, 2.0)));
+    /// assert_eq!(c.point(0.5), p(1.0, 1.5));
+    /// // The knot count is checked, with the numbers in the message.
+    /// let e = BSplineCurve::new(2, vec![0.0, 0.0, 1.0, 2.0, 2.0, 2.0], points).unwrap_err();
+    /// assert_eq!(e.to_string(), "knots: expected 7 values for 4 control points of degree 2, got 6");
+    /// ```
     pub fn new(degree: usize, knots: Vec<f64>, control_points: Vec<Point<D>>) -> Result<Self> {
         Self::build(degree, knots, control_points, false)
     }
 
     /// A periodic (closed) B-spline from degree, n + p + 1 knots and n control points;
     /// see the type documentation for the knot condition.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{BSplineCurve, Curve};
+    /// // The uniform quadratic through the corners of the unit square, closed: at every knot it
+    /// // passes through the midpoint of two neighbouring corners.
+    /// let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]].map(|[x, y]| Point::<2>::new(x, y));
+    /// let knots = (0..7).map(|i| (i as f64 - 2.0) / 4.0).collect();
+    /// let c = BSplineCurve::new_periodic(2, knots, square.to_vec()).unwrap();
+    /// assert!(c.is_closed());
+    /// assert!((c.point(0.0) - Point::<2>::new(0.5, 0.0)).norm() < 1e-15);
+    /// assert!((c.point(0.25) - Point::<2>::new(1.0, 0.5)).norm() < 1e-15);
+    /// assert!((c.point(1.0) - c.point(0.0)).norm() < 1e-15);
+    /// ```
     pub fn new_periodic(degree: usize, knots: Vec<f64>, control_points: Vec<Point<D>>) -> Result<Self> {
         Self::build(degree, knots, control_points, true)
     }

@@ -22,6 +22,19 @@ pub struct CatmullRomCurve<const D: usize> {
 
 impl<const D: usize> CatmullRomCurve<D> {
     /// Builds the spline; `alpha` ∈ [0, 1]. Consecutive points must differ when α > 0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{CatmullRomCurve, Curve};
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let pts = vec![p(0.0, 0.0), p(1.0, 1.0), p(3.0, 1.0), p(4.0, 0.0)];
+    /// // Uniform (α = 0): knots 0, 1, 2, 3 and the classic tangents (P_{i+1} − P_{i−1})/2.
+    /// let c = CatmullRomCurve::new(pts.clone(), 0.0, false).unwrap();
+    /// assert_eq!(c.point(1.0), pts[1]);
+    /// assert!((c.derivative(1.0, 1) - (pts[2] - pts[0]) / 2.0).norm() < 1e-15);
+    /// ```
     pub fn new(points: Vec<Point<D>>, alpha: f64, closed: bool) -> Result<Self> {
         check_points_finite("points", &points)?;
         if !(0.0..=1.0).contains(&alpha) {

@@ -26,6 +26,24 @@ pub struct HermiteCurve<const D: usize> {
 
 impl<const D: usize> HermiteCurve<D> {
     /// From points, tangents and optional strictly increasing parameters (default 0, 1, …).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{Curve, HermiteCurve};
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let c = HermiteCurve::new(
+    ///     vec![p(0.0, 0.0), p(2.0, 1.0), p(4.0, 0.0)],
+    ///     vec![p(1.0, 1.0), p(1.0, 0.0), p(1.0, -1.0)],
+    ///     Some(vec![0.0, 1.0, 3.0]),
+    /// )
+    /// .unwrap();
+    /// // Through each point at its parameter, with the given tangent there.
+    /// assert_eq!(c.point(1.0), p(2.0, 1.0));
+    /// assert!((c.derivative(1.0, 1) - p(1.0, 0.0)).norm() < 1e-15);
+    /// assert!((c.derivative(3.0, 1) - p(1.0, -1.0)).norm() < 1e-15);
+    /// ```
     pub fn new(points: Vec<Point<D>>, tangents: Vec<Point<D>>, params: Option<Vec<f64>>) -> Result<Self> {
         Self::build(points, tangents, params, false)
     }

@@ -31,6 +31,21 @@ pub struct NurbsCurve<const D: usize> {
 
 impl<const D: usize> NurbsCurve<D> {
     /// A NURBS curve from degree, knots, control points and weights (all > 0).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{Curve, NurbsCurve};
+    /// // A quarter of the unit circle: the middle weight √2/2 makes every point lie on it.
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let w = std::f64::consts::FRAC_1_SQRT_2;
+    /// let arc = NurbsCurve::new(2, vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0], vec![p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0)], vec![1.0, w, 1.0])
+    ///     .unwrap();
+    /// for i in 0..=10 {
+    ///     assert!((arc.point(i as f64 / 10.0).norm() - 1.0).abs() < 1e-15);
+    /// }
+    /// ```
     pub fn new(degree: usize, knots: Vec<f64>, control_points: Vec<Point<D>>, weights: Vec<f64>) -> Result<Self> {
         Self::build(degree, knots, control_points, weights, false)
     }

@@ -31,6 +31,22 @@ pub struct FrenetFrame<const D: usize> {
 ///
 /// Parameters outside the domain are clamped for open curves and wrapped periodically for
 /// closed ones.
+///
+/// # Examples
+///
+/// ```
+/// use splinekit::curve::Curve;
+/// use splinekit::curve::model::Circle;
+/// // The circle of radius 2: curvature ½ everywhere, length 4π, closed.
+/// let c = Circle::new(2.0).unwrap();
+/// assert!(c.is_closed());
+/// assert!((c.curvature(0.3) - 0.5).abs() < 1e-15);
+/// assert!((c.length(1e-12) - 4.0 * std::f64::consts::PI).abs() < 1e-12);
+/// // Position and the first two derivatives in one call, into a buffer of the caller.
+/// let mut out = [splinekit::Point::<3>::zeros(); 3];
+/// c.eval(0.0, &mut out);
+/// assert_eq!(out[1], splinekit::Point::<3>::new(0.0, 2.0, 0.0));
+/// ```
 pub trait Curve<const D: usize>: Send + Sync {
     /// The parameter domain [a, b].
     fn domain(&self) -> Interval;

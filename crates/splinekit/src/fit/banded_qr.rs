@@ -25,7 +25,7 @@ pub struct BandedLeastSquares<const D: usize> {
     width: usize,
     border: usize,
     band_cols: usize,
-    /// R[k][j] = R(k, k + j) for k < band_cols, j < width (columns < band_cols only).
+    /// `band[k·width + j]` = R(k, k + j) for k < band_cols, j < width (columns < band_cols only).
     band: Vec<f64>,
     /// R(k, band_cols + j) for every row k < n.
     border_part: Vec<f64>,

@@ -45,6 +45,22 @@ pub struct Interpolation<const D: usize> {
 ///   u_{j+p} = (1/p) Σ_{i=j−1}^{j+p−2} t_i.
 /// * Closed: n = m control points on a periodic knot vector of period 1 with knots at the
 ///   parameters (odd p) or midway between them (even p).
+///
+/// # Examples
+///
+/// ```
+/// use splinekit::Point;
+/// use splinekit::curve::Curve;
+/// use splinekit::fit::{InterpolationOptions, interpolate};
+/// let points: Vec<Point<2>> = [[0.0, 0.0], [1.0, 2.0], [2.0, 1.0], [3.0, 3.0], [4.0, 0.0]]
+///     .iter()
+///     .map(|&[x, y]| Point::<2>::new(x, y))
+///     .collect();
+/// let i = interpolate(&points, &InterpolationOptions::new(3)).unwrap();
+/// for (t, q) in i.params.iter().zip(&points) {
+///     assert!((i.curve.point(*t) - q).norm() < 1e-14);
+/// }
+/// ```
 pub fn interpolate<const D: usize>(points: &[Point<D>], options: &InterpolationOptions<D>) -> Result<Interpolation<D>> {
     check_points_finite("points", points)?;
     let p = options.degree;

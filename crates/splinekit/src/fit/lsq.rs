@@ -77,6 +77,21 @@ impl FitOptions {
 
 /// Fits a B-spline to `points` as `options` say: parameters, knots, then
 /// [`fit_with_knots`].
+///
+/// # Examples
+///
+/// ```
+/// use splinekit::Point;
+/// use splinekit::curve::Curve;
+/// use splinekit::fit::{FitOptions, Parametrization, fit};
+/// // Samples of the parabola y = x² at equal steps: with uniform parameters a quadratic
+/// // reproduces it, whatever its knots.
+/// let points: Vec<Point<2>> = (0..11).map(|i| i as f64 / 10.0).map(|x| Point::<2>::new(x, x * x)).collect();
+/// let options = FitOptions { params: Parametrization::Uniform, ..FitOptions::new(2, 5) };
+/// let f = fit(&points, &options).unwrap();
+/// assert!(f.max_error < 1e-14);
+/// assert!((f.curve.point(0.45) - Point::<2>::new(0.45, 0.2025)).norm() < 1e-14);
+/// ```
 pub fn fit<const D: usize>(points: &[Point<D>], options: &FitOptions) -> Result<Fit<D>> {
     check_points_finite("points", points)?;
     let (p, n, m) = (options.degree, options.control_points, points.len());
@@ -305,6 +320,18 @@ impl<const D: usize> KnotFit<D> {
 /// Samples a curve at `samples` uniform parameters (closed curves: without repeating the
 /// first point) and fits it with [`fit`]; the data parameters are the model's own,
 /// rescaled to [0, 1], so `params` in the options is ignored.
+///
+/// # Examples
+///
+/// ```
+/// use splinekit::curve::Curve;
+/// use splinekit::curve::model::Circle;
+/// use splinekit::fit::{FitOptions, fit_curve};
+/// // A closed cubic with 16 control points through 200 samples of the circle of radius 2.
+/// let options = FitOptions { closed: true, ..FitOptions::new(3, 16) };
+/// let f = fit_curve(&Circle::new(2.0).unwrap(), 200, &options).unwrap();
+/// assert!(f.curve.is_closed() && f.max_error < 1e-4);
+/// ```
 pub fn fit_curve<const D: usize, C: Curve<D> + ?Sized>(
     model: &C,
     samples: usize,

@@ -52,6 +52,26 @@ fn check_grid<const D: usize>(grid: &[Vec<Point<D>>]) -> Result<(usize, usize)> 
 
 /// Least-squares B-spline surface through a grid of points (`grid[a][b]`, rows along u),
 /// with clamped knots on [0, 1]².
+///
+/// # Examples
+///
+/// ```
+/// use splinekit::Point;
+/// use splinekit::fit::{KnotPlacement, Parametrization, SurfaceFitOptions, fit_surface};
+/// use splinekit::surface::Surface;
+/// // A 6 × 5 grid on the plane z = x/2 + y/4 is fitted exactly by a bilinear patch.
+/// let grid: Vec<Vec<Point<3>>> = (0..6)
+///     .map(|a| (0..5).map(|b| (a as f64 / 5.0, b as f64 / 4.0)).map(|(x, y)| Point::<3>::new(x, y, x / 2.0 + y / 4.0)).collect())
+///     .collect();
+/// let options = SurfaceFitOptions {
+///     degrees: (1, 1),
+///     control_points: (2, 2),
+///     params: Parametrization::Uniform,
+///     knots: KnotPlacement::Uniform,
+/// };
+/// let s = fit_surface(&grid, &options).unwrap();
+/// assert!((s.point(0.3, 0.6) - Point::<3>::new(0.3, 0.6, 0.3)).norm() < 1e-14);
+/// ```
 pub fn fit_surface<const D: usize>(grid: &[Vec<Point<D>>], options: &SurfaceFitOptions) -> Result<BSplineSurface<D>> {
     let (mu, mv) = check_grid(grid)?;
     let ((p, q), (nu, nv)) = (options.degrees, options.control_points);

@@ -115,6 +115,19 @@ impl<const D: usize> BSplineCurve<D> {
         SplineData::from(self)
     }
     /// Inserts knot `u` `times` times (Boehm); the curve is unchanged.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{BSplineCurve, Curve};
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let c = BSplineCurve::clamped_uniform(3, vec![p(0.0, 0.0), p(1.0, 2.0), p(2.0, -1.0), p(4.0, 1.0), p(5.0, 0.0)]).unwrap();
+    /// let same = |a: &BSplineCurve<2>, b: &BSplineCurve<2>| (0..=20).all(|i| (a.point(i as f64 / 20.0) - b.point(i as f64 / 20.0)).norm() < 1e-14);
+    /// let k = c.insert_knot(0.3, 2).unwrap();
+    /// assert_eq!(k.control_points().len(), 7);
+    /// assert!(same(&c, &k));
+    /// ```
     pub fn insert_knot(&self, u: f64, times: usize) -> Result<Self> {
         to_bspline(insert_generic(&self.data(), self.is_periodic(), u, times)?, self.is_periodic())
     }
@@ -124,12 +137,39 @@ impl<const D: usize> BSplineCurve<D> {
     }
     /// Removes the interior knot `u` up to `times` times while the curve moves by at most
     /// `tolerance`; returns the curve and the number of removals.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{BSplineCurve, Curve};
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let c = BSplineCurve::clamped_uniform(3, vec![p(0.0, 0.0), p(1.0, 2.0), p(2.0, -1.0), p(4.0, 1.0), p(5.0, 0.0)]).unwrap();
+    /// let same = |a: &BSplineCurve<2>, b: &BSplineCurve<2>| (0..=20).all(|i| (a.point(i as f64 / 20.0) - b.point(i as f64 / 20.0)).norm() < 1e-14);
+    /// // A knot just inserted comes out again, as often as it went in.
+    /// let (back, removed) = c.insert_knot(0.3, 2).unwrap().remove_knot(0.3, 2, 1e-12).unwrap();
+    /// assert_eq!((removed, back.control_points().len()), (2, 5));
+    /// assert!(same(&c, &back));
+    /// ```
     pub fn remove_knot(&self, u: f64, times: usize, tolerance: f64) -> Result<(Self, usize)> {
         check_removal_tolerance(tolerance)?;
         let (d, r) = remove_generic(&self.data(), self.is_periodic(), u, times, tolerance)?;
         Ok((to_bspline(d, self.is_periodic())?, r))
     }
     /// Raises the degree by `t`; the curve is unchanged.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{BSplineCurve, Curve};
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let c = BSplineCurve::clamped_uniform(3, vec![p(0.0, 0.0), p(1.0, 2.0), p(2.0, -1.0), p(4.0, 1.0), p(5.0, 0.0)]).unwrap();
+    /// let same = |a: &BSplineCurve<2>, b: &BSplineCurve<2>| (0..=20).all(|i| (a.point(i as f64 / 20.0) - b.point(i as f64 / 20.0)).norm() < 1e-14);
+    /// let e = c.elevate_degree(2).unwrap();
+    /// assert_eq!(e.degree(), 5);
+    /// assert!(same(&c, &e));
+    /// ```
     pub fn elevate_degree(&self, t: usize) -> Result<Self> {
         to_bspline(elevate_generic(&self.data(), self.is_periodic(), t)?, self.is_periodic())
     }
@@ -146,6 +186,20 @@ impl<const D: usize> BSplineCurve<D> {
     /// Splits at `u` into the curves on [start, u] and [u, end]. A periodic curve is cut
     /// open at `u` instead: the result is one open curve on [u, u + T] (returned twice is
     /// not useful, so the second element is `None`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{BSplineCurve, Curve};
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// let c = BSplineCurve::clamped_uniform(3, vec![p(0.0, 0.0), p(1.0, 2.0), p(2.0, -1.0), p(4.0, 1.0), p(5.0, 0.0)]).unwrap();
+    /// let same = |a: &BSplineCurve<2>, b: &BSplineCurve<2>| (0..=20).all(|i| (a.point(i as f64 / 20.0) - b.point(i as f64 / 20.0)).norm() < 1e-14);
+    /// let (left, right) = c.split(0.4).unwrap();
+    /// let right = right.unwrap();
+    /// assert_eq!((left.domain().end, right.domain().start), (0.4, 0.4));
+    /// assert!((left.point(0.25) - c.point(0.25)).norm() < 1e-14 && (right.point(0.7) - c.point(0.7)).norm() < 1e-14);
+    /// ```
     pub fn split(&self, u: f64) -> Result<(Self, Option<Self>)> {
         if self.is_periodic() {
             return Ok((to_bspline(open_at(&self.data(), u)?, false)?, None));

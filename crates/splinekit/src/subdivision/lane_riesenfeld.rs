@@ -45,6 +45,19 @@ fn check_output_size(n: usize, steps: usize, factor: usize, field: &str) -> Resu
 /// Closed polygons (cyclic; the first point is not repeated at the end) of n points give
 /// 2^k n points. Open polygons of n points give n_{k+1} = 2 n_k − d points after each step,
 /// the control polygon of the same unclamped uniform B-spline on half-spaced knots.
+///
+/// # Examples
+///
+/// ```
+/// use splinekit::Point;
+/// use splinekit::subdivision::{ChaikinOptions, chaikin, lane_riesenfeld};
+/// // Degree 2 is Chaikin's corner cutting.
+/// let p: Vec<Point<2>> = [[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 3.0]].iter().map(|&[x, y]| Point::<2>::new(x, y)).collect();
+/// let lr = lane_riesenfeld(&p, 2, 2, true).unwrap();
+/// let ch = chaikin(&p, 2, ChaikinOptions { closed: true, keep_ends: false }).unwrap();
+/// assert_eq!(lr.len(), 16);
+/// assert!(lr.iter().all(|q| ch.iter().any(|c| (c - q).norm() < 1e-15)));
+/// ```
 pub fn lane_riesenfeld<const D: usize>(
     points: &[Point<D>],
     degree: usize,

@@ -18,6 +18,19 @@ pub struct BezierSurface<const D: usize> {
 
 impl<const D: usize> BezierSurface<D> {
     /// A surface from its control net (first index along u).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::surface::{BezierSurface, Surface};
+    /// // A biquadratic net lifted in the middle: S(½, ½) = Σ B_i(½) B_j(½) P_ij, B(½) = (¼, ½, ¼).
+    /// let net: Vec<Vec<Point<3>>> = (0..3)
+    ///     .map(|i| (0..3).map(|j| Point::<3>::new(i as f64, j as f64, if (i, j) == (1, 1) { 4.0 } else { 0.0 })).collect())
+    ///     .collect();
+    /// let s = BezierSurface::new(net).unwrap();
+    /// assert_eq!(s.point(0.5, 0.5), Point::<3>::new(1.0, 1.0, 1.0));
+    /// ```
     pub fn new(net: Vec<Vec<Point<D>>>) -> Result<Self> {
         checked_net(&net)?;
         Ok(BezierSurface { net })

@@ -19,6 +19,19 @@ pub struct BSplineSurface<const D: usize> {
 impl<const D: usize> BSplineSurface<D> {
     /// A surface from degrees, knot vectors (n_u + p + 1 and n_v + q + 1 values), the
     /// control net (n_u rows of n_v points) and the periodic flags.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::surface::{BSplineSurface, Surface};
+    /// // The bilinear patch S(u, v) = (u, v, uv) on [0, 1]²: degrees (1, 1), one span each way.
+    /// let p = |x, y, z| Point::<3>::new(x, y, z);
+    /// let net = vec![vec![p(0.0, 0.0, 0.0), p(0.0, 1.0, 0.0)], vec![p(1.0, 0.0, 0.0), p(1.0, 1.0, 1.0)]];
+    /// let s = BSplineSurface::new((1, 1), vec![0.0, 0.0, 1.0, 1.0], vec![0.0, 0.0, 1.0, 1.0], net, (false, false)).unwrap();
+    /// assert_eq!(s.point(0.5, 0.25), p(0.5, 0.25, 0.125));
+    /// assert_eq!(s.partial(0.3, 0.7, 1, 1), p(0.0, 0.0, 1.0));
+    /// ```
     pub fn new(
         degrees: (usize, usize),
         knots_u: Vec<f64>,

@@ -22,6 +22,21 @@ impl<const D: usize> BSplineSurface<D> {
     /// The surface through the `sections` (u runs along each section, v across them):
     /// S(u, v_k) = section_k(u) at parameters v_k from the section control polygons
     /// (`params`, averaged over the columns), with interpolation of degree `degree_v` in v.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::BSplineCurve;
+    /// use splinekit::fit::Parametrization;
+    /// use splinekit::surface::{BSplineSurface, Surface};
+    /// // Two straight sections, lofted linearly in v: the ruled surface between them.
+    /// let p = |x, y, z| Point::<3>::new(x, y, z);
+    /// let bottom = BSplineCurve::clamped_uniform(1, vec![p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0)]).unwrap();
+    /// let top = BSplineCurve::clamped_uniform(1, vec![p(0.0, 1.0, 1.0), p(1.0, 1.0, 1.0)]).unwrap();
+    /// let s = BSplineSurface::loft(&[bottom, top], 1, Parametrization::ChordLength).unwrap();
+    /// assert!((s.point(0.5, 0.5) - p(0.5, 0.5, 0.5)).norm() < 1e-15);
+    /// ```
     pub fn loft(sections: &[BSplineCurve<D>], degree_v: usize, params: Parametrization) -> Result<Self> {
         let k = sections.len();
         if k < 2 {

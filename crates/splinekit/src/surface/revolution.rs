@@ -41,6 +41,16 @@ impl NurbsSurface<3> {
 
     /// The exact sphere of `radius` about the origin (revolved half circle; v from the
     /// south to the north pole).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::surface::{NurbsSurface, Surface};
+    /// let s = NurbsSurface::sphere(2.0).unwrap();
+    /// for (u, v) in [(0.1, 0.2), (0.5, 0.5), (0.9, 0.7)] {
+    ///     assert!((s.point(u, v).norm() - 2.0).abs() < 1e-14);
+    /// }
+    /// ```
     pub fn sphere(radius: f64) -> Result<Self> {
         let arc = NurbsCurve::arc(
             &CircleFrame { center: Point::<3>::zeros(), x_axis: Point::<3>::x(), y_axis: Point::<3>::z(), radius },

@@ -48,6 +48,20 @@ pub struct TrimLoops<'a> {
 /// Implementors provide the domains and [`Surface::eval_partials`] (and closedness where a
 /// direction is periodic); everything else is derived. Parameters outside the domain are clamped in open directions and
 /// wrapped in closed ones.
+///
+/// # Examples
+///
+/// ```
+/// use splinekit::surface::Surface;
+/// use splinekit::surface::model::Sphere;
+/// // The sphere of radius 2: unit normals point outwards, K = 1/4 and H = ∓1/2 everywhere.
+/// let s = Sphere::new(2.0).unwrap();
+/// let (u, v) = (0.7, 0.3);
+/// let n = s.normal(u, v).unwrap();
+/// assert!((n - s.point(u, v) / 2.0).norm() < 1e-15);
+/// let k = s.curvatures(u, v).unwrap();
+/// assert!((k.gaussian - 0.25).abs() < 1e-14 && (k.mean.abs() - 0.5).abs() < 1e-14);
+/// ```
 pub trait Surface<const D: usize>: Send + Sync {
     /// The u-domain.
     fn domain_u(&self) -> Interval;

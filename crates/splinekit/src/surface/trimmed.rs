@@ -59,6 +59,21 @@ fn winding(poly: &[Point<2>], p: &Point<2>) -> i32 {
 
 impl<const D: usize> TrimmedSurface<D> {
     /// Trims `surface` to the inside of `outer` (whole domain if `None`) minus the holes.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::{CircleFrame, NurbsCurve};
+    /// use splinekit::surface::TrimmedSurface;
+    /// use splinekit::surface::model::Plane;
+    /// // The unit square of a plane with a round hole of radius 0.2 in the middle.
+    /// let plane = Plane::new(Point::<3>::zeros(), Point::<3>::x(), Point::<3>::y()).unwrap();
+    /// let hole = NurbsCurve::circle(&CircleFrame::in_xy_plane(Point::<2>::new(0.5, 0.5), 0.2)).unwrap();
+    /// let s = TrimmedSurface::new(Box::new(plane), None, &[&hole]).unwrap();
+    /// assert!(!s.contains(0.5, 0.5) && !s.contains(0.6, 0.5));
+    /// assert!(s.contains(0.1, 0.1) && s.contains(0.75, 0.5));
+    /// ```
     pub fn new(surface: Box<dyn Surface<D>>, outer: Option<&dyn Curve<2>>, holes: &[&dyn Curve<2>]) -> Result<Self> {
         let outer = outer.map(|c| flatten(c, "outer")).transpose()?;
         let holes =

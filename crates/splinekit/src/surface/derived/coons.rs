@@ -62,6 +62,28 @@ pub struct CoonsPatch<const D: usize> {
 impl<const D: usize> CoonsPatch<D> {
     /// The patch with boundaries bottom (v = 0), top (v = 1), left (u = 0), right
     /// (u = 1). Their ends must meet at the four corners.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::Curve;
+    /// use splinekit::curve::model::Line;
+    /// use splinekit::surface::Surface;
+    /// use splinekit::surface::derived::{CoonsBlend, CoonsPatch};
+    /// // Four straight boundaries of the saddle z = uv: the bilinear Coons patch is the saddle.
+    /// let corner = |u: f64, v: f64| Point::<3>::new(u, v, u * v);
+    /// let line = |a, b| -> Box<dyn Curve<3>> { Box::new(Line::new(a, b).unwrap()) };
+    /// let s = CoonsPatch::new(
+    ///     line(corner(0.0, 0.0), corner(1.0, 0.0)),
+    ///     line(corner(0.0, 1.0), corner(1.0, 1.0)),
+    ///     line(corner(0.0, 0.0), corner(0.0, 1.0)),
+    ///     line(corner(1.0, 0.0), corner(1.0, 1.0)),
+    ///     CoonsBlend::Linear,
+    /// )
+    /// .unwrap();
+    /// assert!((s.point(0.3, 0.6) - corner(0.3, 0.6)).norm() < 1e-15);
+    /// ```
     pub fn new(
         bottom: Box<dyn Curve<D>>,
         top: Box<dyn Curve<D>>,

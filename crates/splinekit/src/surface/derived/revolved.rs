@@ -23,6 +23,22 @@ pub struct RevolvedSurface {
 impl RevolvedSurface {
     /// Revolves `profile` about the axis through `origin` along `axis` by `angle`
     /// radians (0 < angle ≤ 2π; 2π closes the surface in u).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::curve::model::Line;
+    /// use splinekit::surface::Surface;
+    /// use splinekit::surface::derived::RevolvedSurface;
+    /// // The segment x = 1, 0 ≤ z ≤ 2 turned a full turn about the z axis: the cylinder of radius 1.
+    /// let profile = Line::new(Point::<3>::new(1.0, 0.0, 0.0), Point::<3>::new(1.0, 0.0, 2.0)).unwrap();
+    /// let axis = Point::<3>::new(0.0, 0.0, 1.0);
+    /// let s = RevolvedSurface::new(Box::new(profile), Point::<3>::zeros(), axis, std::f64::consts::TAU).unwrap();
+    /// assert!(s.is_closed_u());
+    /// let q = s.point(1.0, 0.5);
+    /// assert!((q[0].hypot(q[1]) - 1.0).abs() < 1e-15 && (q[2] - 1.0).abs() < 1e-15);
+    /// ```
     pub fn new(profile: Box<dyn Curve<3>>, origin: Point<3>, axis: Point<3>, angle: f64) -> Result<Self> {
         check_points_finite("axis_point", &[origin])?;
         check_points_finite("axis", &[axis])?;
