@@ -22,8 +22,9 @@
 //! epicycloid, with cusps where c′ = 0; a hypotrochoid with R = 2r is the ellipse
 //! ((r + d) cos t, (r − d) sin t); an epitrochoid with R = r = d is the cardioid.
 
-use super::trig::{TAU, Term, TrigCurve, TrigSeries, finite, positive, trig_model_curve};
+use super::trig::{Term, TrigCurve, TrigSeries, finite, positive, trig_model_curve};
 use crate::curve::Interval;
+use std::f64::consts::TAU;
 
 /// Where the rolling circle rolls.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
