@@ -5,7 +5,7 @@ mod common;
 use common::*;
 use splinekit::Point;
 use splinekit::curve::model::{Circle, Ellipse, Rose};
-use splinekit::curve::{BSplineCurve, Curve, NurbsCurve};
+use splinekit::curve::{BSplineCurve, CircleFrame, Curve, NurbsCurve};
 use splinekit::query::CurveProjector;
 use std::f64::consts::{PI, TAU};
 
@@ -90,7 +90,7 @@ fn circle_centre_is_one_minimum_at_the_start() {
         let near = c.closest_point(&p3(0.0, 0.0, 2.0), 0.0).unwrap();
         assert!((near.distance - (r * r + 4.0f64).sqrt()).abs() < 1e-13);
     }
-    let nurbs = NurbsCurve::circle(p2(1.0, 1.0), p2(1.0, 0.0), p2(0.0, 1.0), 2.0).unwrap();
+    let nurbs = NurbsCurve::circle(&CircleFrame::in_xy_plane(p2(1.0, 1.0), 2.0)).unwrap();
     let minima = CurveProjector::new(&nurbs).local_minima(&p2(1.0, 1.0), 0.0).unwrap();
     // Stored as an open curve: the whole domain is one flat stretch from its start.
     assert_eq!(minima.len(), 1, "{minima:?}");
@@ -318,7 +318,7 @@ mod intersections {
     use splinekit::query::{IntersectionKind, intersect_curves, self_intersections};
 
     fn unit_circle(cx: f64, cy: f64) -> NurbsCurve<2> {
-        NurbsCurve::circle(p2(cx, cy), p2(1.0, 0.0), p2(0.0, 1.0), 1.0).unwrap()
+        NurbsCurve::circle(&CircleFrame::in_xy_plane(p2(cx, cy), 1.0)).unwrap()
     }
 
     fn segment(a: Point<2>, b: Point<2>) -> BSplineCurve<2> {
@@ -482,7 +482,7 @@ mod arc_length {
         let ts = table.equal_length_parameters(25).unwrap();
         let step = table.total() / 24.0;
         for w in ts.windows(2) {
-            assert!((arc_length(&c, w[0], w[1], 1e-12) - step).abs() < 1e-9, "{w:?}");
+            assert!((arc_length(&c, splinekit::Interval::new(w[0], w[1]), 1e-12) - step).abs() < 1e-9, "{w:?}");
         }
     }
 

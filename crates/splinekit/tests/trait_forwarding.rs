@@ -8,6 +8,7 @@ use std::sync::Arc;
 
 use splinekit::basis::Side;
 use splinekit::curve::{Curve, FrenetFrame};
+use splinekit::query::{Nearest, NearestOnSurface};
 use splinekit::surface::{Curvatures, FundamentalForms, Surface, TrimLoops};
 use splinekit::{Interval, Point};
 
@@ -59,8 +60,8 @@ impl Curve<2> for SentinelCurve {
     fn length(&self, tolerance: f64) -> f64 {
         11.0 + tolerance
     }
-    fn closest_point(&self, query: &Point<2>) -> (f64, Point<2>) {
-        (12.0, *query)
+    fn closest_point(&self, query: &Point<2>, accuracy: f64) -> splinekit::Result<Nearest<2>> {
+        Ok(Nearest { t: 12.0, point: *query, distance: accuracy })
     }
 }
 
@@ -82,7 +83,8 @@ fn check_curve(name: &str, c: &impl Curve<2>) {
     assert_eq!(c.curvature(0.0), 9.0, "{name}: curvature");
     assert_eq!(c.frame(0.0).map(|f| f.curvature), Some(10.0), "{name}: frame");
     assert_eq!(c.length(0.5), 11.5, "{name}: length");
-    assert_eq!(c.closest_point(&p2(0.25)), (12.0, p2(0.25)), "{name}: closest_point");
+    let nearest = c.closest_point(&p2(0.25), 0.125).unwrap();
+    assert_eq!((nearest.t, nearest.point, nearest.distance), (12.0, p2(0.25), 0.125), "{name}: closest_point");
 }
 
 #[test]
@@ -148,8 +150,14 @@ impl Surface<3> for SentinelSurface {
     fn curvatures(&self, _u: f64, _v: f64) -> Option<Curvatures> {
         Some(Curvatures { gaussian: 12.0, mean: 0.0, principal: (0.0, 0.0) })
     }
-    fn closest_point(&self, query: &Point<3>) -> (f64, f64, Point<3>) {
-        (13.0, 14.0, *query)
+    fn closest_point(&self, query: &Point<3>, accuracy: f64) -> splinekit::Result<NearestOnSurface<3>> {
+        Ok(NearestOnSurface { u: 13.0, v: 14.0, point: *query, distance: accuracy })
+    }
+    fn breakpoints_u(&self) -> Vec<f64> {
+        vec![0.0, 0.5, 2.0]
+    }
+    fn breakpoints_v(&self) -> Vec<f64> {
+        vec![-2.0, -0.5, 0.0]
     }
 }
 
@@ -173,7 +181,14 @@ fn check_surface(name: &str, s: &impl Surface<3>) {
     assert_eq!(s.normal(0.0, 0.0), Some(p3(10.0)), "{name}: normal");
     assert_eq!(s.fundamental_forms(0.0, 0.0).map(|f| f.e), Some(11.0), "{name}: fundamental_forms");
     assert_eq!(s.curvatures(0.0, 0.0).map(|c| c.gaussian), Some(12.0), "{name}: curvatures");
-    assert_eq!(s.closest_point(&p3(0.5)), (13.0, 14.0, p3(0.5)), "{name}: closest_point");
+    let nearest = s.closest_point(&p3(0.5), 0.125).unwrap();
+    assert_eq!(
+        (nearest.u, nearest.v, nearest.point, nearest.distance),
+        (13.0, 14.0, p3(0.5), 0.125),
+        "{name}: closest_point"
+    );
+    assert_eq!(s.breakpoints_u(), vec![0.0, 0.5, 2.0], "{name}: breakpoints_u");
+    assert_eq!(s.breakpoints_v(), vec![-2.0, -0.5, 0.0], "{name}: breakpoints_v");
 }
 
 #[test]

@@ -9,7 +9,7 @@
 //! pcurves joined into one exact B-spline (NURBS) loop each.
 
 use splinekit::Point;
-use splinekit::curve::{Curve as KernelCurve, NurbsCurve};
+use splinekit::curve::{CircleFrame, Curve as KernelCurve, NurbsCurve};
 use splinekit_scene::curves::{BSplineDoc, CircleDoc, EllipseDoc, LineDoc, NurbsDoc};
 use splinekit_scene::surfaces::{
     BSplineSurfaceDoc, CylinderDoc, ExtrusionDoc, NurbsSurfaceDoc, PlaneDoc, RevolutionDoc, SphereDoc, TorusDoc,
@@ -144,7 +144,8 @@ fn spline_curve_doc(s: &SplineCurve) -> CurveDocument {
 fn conic_arc<const D: usize>(axes: &Axes, a: f64, b: f64, t0: f64, t1: f64) -> Result<NurbsCurve<D>> {
     let v = |p: P3| Point::<D>::from_fn(|k, _| p[k]);
     let (x, y) = (axes.x.map(|c| c * a), axes.y().map(|c| c * b));
-    NurbsCurve::arc(v(axes.origin), v(x), v(y), 1.0, t0, t1).map_err(|e| StepError::plain(format!("arc: {e}")))
+    let frame = CircleFrame { center: v(axes.origin), x_axis: v(x), y_axis: v(y), radius: 1.0 };
+    NurbsCurve::arc(&frame, t0, t1).map_err(|e| StepError::plain(format!("arc: {e}")))
 }
 
 /// A piece [start, end] of a spline, by knot insertion (the whole curve when the range
@@ -292,29 +293,25 @@ fn quadric_doc(basis: &Surface, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> R
         Surface::Sphere { axes, radius } => {
             let meridian =
                 Axes { origin: axes.origin, z: crate::geometry::cross(radial(axes, u0), axes.z), x: radial(axes, u0) };
-            let arc = NurbsCurve::<3>::arc(
-                Point::<3>::from(axes.origin),
-                Point::<3>::from(meridian.x),
-                Point::<3>::from(axes.z),
-                *radius,
-                v0,
-                v1,
-            )
-            .map_err(|e| StepError::plain(format!("sphere: {e}")))?;
+            let frame = CircleFrame {
+                center: Point::<3>::from(axes.origin),
+                x_axis: Point::<3>::from(meridian.x),
+                y_axis: Point::<3>::from(axes.z),
+                radius: *radius,
+            };
+            let arc = NurbsCurve::<3>::arc(&frame, v0, v1).map_err(|e| StepError::plain(format!("sphere: {e}")))?;
             revolution(axes, nurbs_doc(&arc), u1 - u0)
         }
         Surface::Torus { axes, major_radius, minor_radius } => {
             let e = radial(axes, u0);
             let centre: P3 = std::array::from_fn(|k| axes.origin[k] + major_radius * e[k]);
-            let arc = NurbsCurve::<3>::arc(
-                Point::<3>::from(centre),
-                Point::<3>::from(e),
-                Point::<3>::from(axes.z),
-                *minor_radius,
-                v0,
-                v1,
-            )
-            .map_err(|e| StepError::plain(format!("torus: {e}")))?;
+            let frame = CircleFrame {
+                center: Point::<3>::from(centre),
+                x_axis: Point::<3>::from(e),
+                y_axis: Point::<3>::from(axes.z),
+                radius: *minor_radius,
+            };
+            let arc = NurbsCurve::<3>::arc(&frame, v0, v1).map_err(|e| StepError::plain(format!("torus: {e}")))?;
             revolution(axes, nurbs_doc(&arc), u1 - u0)
         }
         _ => return Ok(None),
