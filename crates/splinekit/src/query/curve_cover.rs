@@ -135,7 +135,7 @@ pub struct CoverNode<const D: usize> {
 }
 
 /// The cached bounding hierarchy of a curve: root pieces between breakpoints (at least
-/// [`MIN_ROOT_PIECES`]), each split until its box is tame. Built once and shared by many
+/// `MIN_ROOT_PIECES`), each split until its box is tame. Built once and shared by many
 /// queries (batch projection), which split leaves further on their own.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CurveCover<const D: usize> {

@@ -5,7 +5,7 @@
 //! f(t) = |c(t) − q|²/2 has its minima at the domain ends, at kinks (breakpoints where
 //! the slope jumps from − to +), and at the roots of its slope g = (c − q)·c′ where g
 //! changes sign from − to +. Each piece is classified by the Bernstein coefficients of its
-//! slope ([`slope::classify`]): monotone and flat pieces hold no interior minimum; a piece
+//! slope (`slope::classify`): monotone and flat pieces hold no interior minimum; a piece
 //! with one bracketed sign change holds exactly one, found by safeguarded Newton iteration
 //! on g (g′ = |c′|² + (c − q)·c″, bisection whenever a step leaves the bracket) to full
 //! double precision; any other piece is split. For the global minimum, pieces whose box is

@@ -188,7 +188,7 @@ pub struct PatchNode<const D: usize> {
 }
 
 /// The cached bounding hierarchy of a surface: root patches on the grid of its breakpoint
-/// lines (at least [`MIN_ROOT_PATCHES`] each way), each split until its box is tame.
+/// lines (at least `MIN_ROOT_PATCHES` each way), each split until its box is tame.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SurfaceCover<const D: usize> {
     /// Every node; the roots first.
