@@ -4,16 +4,36 @@ use anyhow::{Context, Result, anyhow, bail};
 use serde_json::Value;
 use splinekit_scene::ShapeDocument;
 
-/// Reads a file, or standard input for `-`.
+/// Reads a file, or standard input for `-`, refusing text too large to parse within the
+/// budget before reading it (standard input: as soon as it grows past that size).
 pub fn read_text(path: &str, what: &str) -> Result<String> {
+    use std::io::Read;
+    let limit = crate::budget::max_input_bytes() as u64;
+    let mut text = String::new();
     if path == "-" {
-        let mut s = String::new();
-        std::io::Read::read_to_string(&mut std::io::stdin(), &mut s)
+        let read = std::io::stdin()
+            .take(limit + 1)
+            .read_to_string(&mut text)
             .with_context(|| format!("{what}: cannot read standard input"))?;
-        Ok(s)
+        if read as u64 > limit {
+            return Err(crate::budget::input_too_large(what));
+        }
     } else {
-        std::fs::read_to_string(path).map_err(|e| anyhow!("{what}: cannot read '{path}': {e}"))
+        let mut file = std::fs::File::open(path).map_err(|e| anyhow!("{what}: cannot read '{path}': {e}"))?;
+        if let Ok(meta) = file.metadata()
+            && meta.is_file()
+        {
+            crate::budget::check_input(what, meta.len() as f64)?;
+        }
+        let read = (&mut file)
+            .take(limit + 1)
+            .read_to_string(&mut text)
+            .map_err(|e| anyhow!("{what}: cannot read '{path}': {e}"))?;
+        if read as u64 > limit {
+            return Err(crate::budget::input_too_large(what));
+        }
     }
+    Ok(text)
 }
 
 /// Reads and parses a shape document.

@@ -4,6 +4,7 @@
 //! Exit status: 0 on success, 2 on bad input (with one line `error: …` on standard error
 //! naming the offending field), never a panic trace.
 
+mod budget;
 mod commands;
 mod gallery;
 mod input;
@@ -24,6 +25,15 @@ use clap::{Parser, Subcommand};
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// Most memory one request may use: bytes, or with a suffix K, M, G (powers of 1024)
+    /// or KB, MB, GB (default: the environment variable SPLINEKIT_MAX_MEMORY, else half the
+    /// physical memory). Requests estimated to need more are refused before they start.
+    #[arg(long, global = true, value_name = "BYTES")]
+    max_memory: Option<String>,
+    /// Most work one request may do, in operations (≈ floating-point operations; 10⁹ take
+    /// about a second; default: SPLINEKIT_MAX_WORK, else 1e10).
+    #[arg(long, global = true, value_name = "OPERATIONS")]
+    max_work: Option<String>,
 }
 
 #[derive(Subcommand, Debug)]
@@ -93,6 +103,13 @@ fn main() {
             std::process::exit(2);
         }
     };
+    match splinekit_scene::budget::Budget::from_options(cli.max_memory.as_deref(), cli.max_work.as_deref()) {
+        Ok(b) => budget::set(b),
+        Err(e) => {
+            eprintln!("error: {}", one_line(&e.to_string()));
+            std::process::exit(2);
+        }
+    }
     let result = std::panic::catch_unwind(|| match &cli.command {
         Command::Eval(a) => commands::eval::run(a),
         Command::Fit(a) => commands::fit::run_fit(a),

@@ -1,9 +1,19 @@
-//! Writing JSON results to standard output or a file.
+//! Writing results to standard output or a file.
+//!
+//! Large results are streamed: [`JsonOut`] writes numbers as they come (each checked to
+//! be finite, since JSON has no infinity and serde_json would print `null`), through a
+//! buffer, so the memory of the output does not grow with the number of values. A write
+//! error, or a value that is not finite, ends the command with exit status 2; a partly
+//! written output file is removed, and standard output is left cut off mid-way (not valid
+//! JSON).
+
+use std::io::{BufWriter, Write};
 
 use anyhow::{Result, anyhow, bail};
 use serde_json::Value;
 
-/// Fails if any number in `value` is not finite (serde_json would print it as null).
+/// Fails if any number in `value` is not finite (serde_json would print it as null),
+/// naming `what` the value is and the path inside it.
 pub fn check_finite(value: &Value, path: &str) -> Result<()> {
     match value {
         Value::Number(n) if n.as_f64().is_some_and(|f| !f.is_finite()) => {
@@ -24,28 +34,120 @@ pub fn check_finite(value: &Value, path: &str) -> Result<()> {
     Ok(())
 }
 
-/// A JSON number that must be finite (NaN would become `null`).
-pub fn number(v: f64, what: &str) -> Result<Value> {
-    serde_json::Number::from_f64(v).map(Value::Number).ok_or_else(|| anyhow!("{what}: the result is not finite ({v})"))
-}
-
 /// Writes `value` as compact JSON plus a newline to `output` (a path) or standard output.
 pub fn write_json(value: &Value, output: Option<&str>) -> Result<()> {
     let mut text = serde_json::to_string(value)?;
     text.push('\n');
-    write_text(&text, output)
+    write_bytes(text.as_bytes(), output)
 }
 
-/// Writes text to `output` (a path) or standard output.
-pub fn write_text(text: &str, output: Option<&str>) -> Result<()> {
-    match output {
-        Some(path) if path != "-" => std::fs::write(path, text).map_err(|e| anyhow!("-o: cannot write '{path}': {e}")),
-        _ => {
-            use std::io::Write;
-            let mut out = std::io::stdout().lock();
-            out.write_all(text.as_bytes())
-                .and_then(|_| out.flush())
-                .map_err(|e| anyhow!("cannot write standard output: {e}"))
+/// Writes bytes to `output` (a path; `-` or `None` is standard output).
+pub fn write_bytes(bytes: &[u8], output: Option<&str>) -> Result<()> {
+    let mut out = JsonOut::create(output)?;
+    out.raw(bytes)?;
+    out.finish()
+}
+
+/// Where output goes.
+enum Sink {
+    Stdout(BufWriter<std::io::Stdout>),
+    File(BufWriter<std::fs::File>, String),
+}
+
+/// A streaming JSON writer (see the module documentation).
+pub struct JsonOut {
+    sink: Option<Sink>,
+    number: Vec<u8>,
+}
+
+impl JsonOut {
+    /// Output to the file `output`, or to standard output for `None` or `-`.
+    pub fn create(output: Option<&str>) -> Result<Self> {
+        const BUFFER: usize = 1 << 16;
+        let sink = match output {
+            Some(path) if path != "-" => {
+                let file = std::fs::File::create(path).map_err(|e| anyhow!("-o: cannot write '{path}': {e}"))?;
+                Sink::File(BufWriter::with_capacity(BUFFER, file), path.to_string())
+            }
+            _ => Sink::Stdout(BufWriter::with_capacity(BUFFER, std::io::stdout())),
+        };
+        Ok(JsonOut { sink: Some(sink), number: Vec::with_capacity(32) })
+    }
+
+    fn fail(&mut self, e: std::io::Error) -> anyhow::Error {
+        match self.sink.take() {
+            Some(Sink::File(_, path)) => {
+                let _ = std::fs::remove_file(&path);
+                anyhow!("-o: cannot write '{path}': {e}")
+            }
+            _ => anyhow!("cannot write standard output: {e}"),
         }
+    }
+
+    /// Writes text as it is (punctuation, keys).
+    pub fn raw(&mut self, bytes: &[u8]) -> Result<()> {
+        let result = match self.sink.as_mut() {
+            Some(Sink::Stdout(w)) => w.write_all(bytes),
+            Some(Sink::File(w, _)) => w.write_all(bytes),
+            None => return Ok(()),
+        };
+        result.map_err(|e| self.fail(e))
+    }
+
+    /// Writes a number in serde_json's format (shortest digits that read back exactly);
+    /// a value that is not finite is an error naming `what` it is.
+    pub fn number(&mut self, v: f64, what: impl FnOnce() -> String) -> Result<()> {
+        if !v.is_finite() {
+            self.abandon();
+            bail!("{}: the result is not finite ({v}); the numbers overflow double precision", what());
+        }
+        let mut number = std::mem::take(&mut self.number);
+        number.clear();
+        serde_json::to_writer(&mut number, &v).expect("writing to memory");
+        let result = self.raw(&number);
+        self.number = number;
+        result
+    }
+
+    /// Writes `[x, y, …]`.
+    pub fn point(&mut self, p: &[f64], what: impl Fn() -> String) -> Result<()> {
+        self.raw(b"[")?;
+        for (i, &c) in p.iter().enumerate() {
+            if i > 0 {
+                self.raw(b",")?;
+            }
+            self.number(c, &what)?;
+        }
+        self.raw(b"]")
+    }
+
+    /// Drops the output after an error: a partly written file is removed.
+    pub fn abandon(&mut self) {
+        if let Some(Sink::File(_, path)) = self.sink.take() {
+            let _ = std::fs::remove_file(&path);
+        }
+    }
+
+    /// Flushes everything; a write error here is an error too.
+    pub fn finish(mut self) -> Result<()> {
+        let result = match self.sink.as_mut() {
+            Some(Sink::Stdout(w)) => w.flush(),
+            Some(Sink::File(w, _)) => w.flush(),
+            None => return Ok(()),
+        };
+        match result {
+            Ok(()) => {
+                self.sink = None;
+                Ok(())
+            }
+            Err(e) => Err(self.fail(e)),
+        }
+    }
+}
+
+impl Drop for JsonOut {
+    /// An output dropped before [`JsonOut::finish`] (an error on the way) is abandoned.
+    fn drop(&mut self) {
+        self.abandon();
     }
 }

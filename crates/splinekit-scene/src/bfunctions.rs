@@ -82,6 +82,11 @@ pub enum BFunctionDoc {
 impl BFunctionDoc {
     /// Parses a B-function object.
     pub fn parse(value: &Value) -> Result<Self> {
+        Self::from_value(value.clone())
+    }
+
+    /// Parses a B-function document, taking the JSON value.
+    pub fn from_value(value: Value) -> Result<Self> {
         let (ty, rest) = split_type(value)?;
         use BFunctionDoc as B;
         Ok(match ty.as_str() {
@@ -120,6 +125,6 @@ impl BFunctionDoc {
 
 impl<'de> Deserialize<'de> for BFunctionDoc {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
-        nested(deserializer, Self::parse)
+        nested(deserializer, Self::from_value)
     }
 }

@@ -32,12 +32,12 @@ pub fn fields<T: DeserializeOwned>(value: Value) -> Result<T> {
 
 /// Deserialises a value with `parse`, reporting its errors relative to the field that
 /// holds it: the `Deserialize` of documents nested in other documents.
-pub fn nested<'de, D, T>(deserializer: D, parse: impl FnOnce(&Value) -> Result<T>) -> std::result::Result<T, D::Error>
+pub fn nested<'de, D, T>(deserializer: D, parse: impl FnOnce(Value) -> Result<T>) -> std::result::Result<T, D::Error>
 where
     D: Deserializer<'de>,
 {
     let value = Value::deserialize(deserializer)?;
-    parse(&value).map_err(|e| D::Error::custom(format_args!("{NESTED}{}{NESTED}{}", e.path, e.message)))
+    parse(value).map_err(|e| D::Error::custom(format_args!("{NESTED}{}{NESTED}{}", e.path, e.message)))
 }
 
 /// A list field that may also be absent or `null` (an empty list); anything else than a
@@ -50,23 +50,23 @@ where
     nested(deserializer, |value| match value {
         Value::Null => Ok(Vec::new()),
         Value::Array(items) => items
-            .iter()
+            .into_iter()
             .enumerate()
-            .map(|(i, item)| fields(item.clone()).map_err(|e| e.within(&format!("[{i}]"))))
+            .map(|(i, item)| fields(item).map_err(|e| e.within(&format!("[{i}]"))))
             .collect(),
-        other => Err(DocumentError::new("", format!("expected a list, got {}", kind(other)))),
+        other => Err(DocumentError::new("", format!("expected a list, got {}", kind(&other)))),
     })
 }
 
-/// Splits a document object into its `type` and the remaining fields.
-pub fn split_type(value: &Value) -> Result<(String, Value)> {
-    let Value::Object(map) = value else {
+/// Splits a document object into its `type` and the remaining fields (taking the object,
+/// so that a large document is not copied).
+pub fn split_type(value: Value) -> Result<(String, Value)> {
+    let Value::Object(mut map) = value else {
         return Err(DocumentError::new(
             "",
-            format!("expected a JSON object with a \"type\" field, got {}", kind(value)),
+            format!("expected a JSON object with a \"type\" field, got {}", kind(&value)),
         ));
     };
-    let mut map = map.clone();
     let ty = match map.remove("type") {
         Some(Value::String(s)) => s,
         Some(other) => return Err(DocumentError::new("type", format!("expected a string, got {}", kind(&other)))),

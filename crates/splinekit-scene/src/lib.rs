@@ -8,6 +8,7 @@
 
 pub mod bfunctions;
 pub mod blending;
+pub mod budget;
 pub mod curves;
 mod defaults;
 pub mod dimension;
@@ -43,7 +44,7 @@ impl ShapeDocument {
     pub fn from_json(text: &str) -> Result<Self> {
         let value: Value =
             serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
-        Self::parse(&value)
+        Self::from_value(value)
     }
 
     /// Poses every animated blending spline in the document at `time` (seconds).
@@ -56,9 +57,14 @@ impl ShapeDocument {
 
     /// Parses a shape document.
     pub fn parse(value: &Value) -> Result<Self> {
+        Self::from_value(value.clone())
+    }
+
+    /// Parses a shape document, taking the JSON value (a large document is not copied).
+    pub fn from_value(value: Value) -> Result<Self> {
         let (ty, rest) = json::split_type(value)?;
-        if let Some(c) = CurveDocument::parse_fields(&ty, rest.clone()) {
-            return c.map(ShapeDocument::Curve);
+        if CurveDocument::TYPES.contains(&ty.as_str()) {
+            return CurveDocument::parse_fields(&ty, rest).expect("a curve type").map(ShapeDocument::Curve);
         }
         if let Some(s) = SurfaceDocument::parse_fields(&ty, rest) {
             return s.map(ShapeDocument::Surface);

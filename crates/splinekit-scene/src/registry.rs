@@ -15,6 +15,7 @@ use serde::de::DeserializeOwned;
 use serde_json::Value;
 
 use crate::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
+use crate::budget::ShapeCost;
 use crate::dimension::{Curves, ShapeFamily, Surfaces, same_type};
 use crate::error::{DocumentError, Result};
 
@@ -37,6 +38,11 @@ pub trait DocumentKind: KindName + Clone + Serialize + DeserializeOwned {
 
     /// The dimension of the shape's points, read from the document (model shapes: 3).
     fn dimension(&self) -> Result<usize>;
+
+    /// What building the kernel object and evaluating it cost, estimated from the
+    /// document's counts, degrees and nesting without building anything (see
+    /// [`crate::budget`]).
+    fn cost(&self) -> ShapeCost;
 
     /// The kernel object in dimension D, which must be the document's [`Self::dimension`].
     fn build_in<const D: usize>(&self) -> Result<Box<<Self::Family as ShapeFamily>::Shape<D>>>;
@@ -89,7 +95,7 @@ pub enum Decoration<'a> {
 /// Each `Variant(Doc) = "name"` line makes an enum variant serialised with
 /// `"type": "name"` and gives `Doc` its [`KindName`]; `Doc` must implement
 /// [`DocumentKind`] of that family. The enum gets `TYPES`, `type_name`, `parse_fields`,
-/// `examples`, `dimension`, `build_in`, `build`, `decoration`, `set_time`, `to_value`, and a
+/// `examples`, `dimension`, `cost`, `build_in`, `build`, `decoration`, `set_time`, `to_value`, and a
 /// `Deserialize` through its own `parse` (written beside the list, for the family's
 /// message about unknown types).
 macro_rules! document_kinds {
@@ -144,6 +150,13 @@ macro_rules! document_kinds {
                 }
             }
 
+            /// What building and evaluating the shape cost (see [`crate::budget`]).
+            pub fn cost(&self) -> $crate::budget::ShapeCost {
+                match self {
+                    $( Self::$Variant(d) => $crate::registry::DocumentKind::cost(d), )+
+                }
+            }
+
             /// Builds the shape in dimension D (which must be the document's).
             pub fn build_in<const D: usize>(
                 &self,
@@ -184,7 +197,7 @@ macro_rules! document_kinds {
 
         impl<'de> serde::Deserialize<'de> for $Enum {
             fn deserialize<De: serde::Deserializer<'de>>(deserializer: De) -> std::result::Result<Self, De::Error> {
-                $crate::json::nested(deserializer, Self::parse)
+                $crate::json::nested(deserializer, Self::from_value)
             }
         }
     };
@@ -267,6 +280,9 @@ macro_rules! model_document {
             type Family = $family;
             fn dimension(&self) -> $crate::Result<usize> {
                 Ok(3)
+            }
+            fn cost(&self) -> $crate::budget::ShapeCost {
+                $crate::budget::ShapeCost::model()
             }
             fn build_in<const D: usize>(
                 &self,

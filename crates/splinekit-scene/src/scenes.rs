@@ -112,17 +112,16 @@ pub struct SceneObject {
 
 impl SceneObject {
     /// Parses an object: its `shape`, its `points`, and the other fields as its style.
-    fn parse(value: &Value) -> Result<Self> {
-        let Value::Object(map) = value else {
-            return Err(DocumentError::new("", format!("expected an object with a \"shape\", got {}", kind(value))));
+    fn parse(value: Value) -> Result<Self> {
+        let Value::Object(mut style) = value else {
+            return Err(DocumentError::new("", format!("expected an object with a \"shape\", got {}", kind(&value))));
         };
-        let mut style = map.clone();
         let shape = style.remove("shape").ok_or_else(|| DocumentError::new("", "missing field `shape`"))?;
         let points: Vec<Vec<f64>> = match style.remove("points") {
             Some(p) => fields(p).map_err(|e| e.within("points"))?,
             None => Vec::new(),
         };
-        let shape = ShapeDocument::parse(&shape).map_err(|e| e.within("shape"))?;
+        let shape = ShapeDocument::from_value(shape).map_err(|e| e.within("shape"))?;
         let style: StyleDoc = fields(Value::Object(style))?;
         style.check()?;
         let points = points
@@ -279,6 +278,11 @@ pub const MAX_SIZE: u32 = 8192;
 impl SceneDocument {
     /// Parses `{"type":"scene",…}`.
     pub fn parse(value: &Value) -> Result<Self> {
+        Self::from_value(value.clone())
+    }
+
+    /// Parses `{"type":"scene",…}`, taking the JSON value.
+    pub fn from_value(value: Value) -> Result<Self> {
         let (ty, rest) = split_type(value)?;
         if ty != "scene" {
             return Err(DocumentError::new("type", format!("expected \"scene\", got \"{ty}\"")));
@@ -387,9 +391,9 @@ impl SceneOrShape {
         let value: Value =
             serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
         if value.get("type").and_then(Value::as_str) == Some("scene") {
-            Ok(SceneOrShape::Scene(SceneDocument::parse(&value)?))
+            Ok(SceneOrShape::Scene(SceneDocument::from_value(value)?))
         } else {
-            Ok(SceneOrShape::Shape(ShapeDocument::parse(&value)?))
+            Ok(SceneOrShape::Shape(ShapeDocument::from_value(value)?))
         }
     }
     /// The scene (a shape becomes a one-object scene).

@@ -82,6 +82,11 @@ pub const SURFACE_TYPES: &[&str] = SurfaceDocument::TYPES;
 impl SurfaceDocument {
     /// Parses a surface document.
     pub fn parse(value: &Value) -> Result<Self> {
+        Self::from_value(value.clone())
+    }
+
+    /// Parses a surface document, taking the JSON value.
+    pub fn from_value(value: Value) -> Result<Self> {
         let (ty, rest) = split_type(value)?;
         Self::parse_fields(&ty, rest)
             .unwrap_or_else(|| Err(DocumentError::new("type", format!("expected a surface type, got \"{ty}\""))))

@@ -93,7 +93,7 @@ pub mod by_index {
         nested(deserializer, parse)
     }
 
-    fn parse(value: &Value) -> Result<LocalTransforms> {
+    fn parse(value: Value) -> Result<LocalTransforms> {
         match value {
             Value::Null => Ok(Vec::new()),
             Value::Array(list) => list
@@ -108,7 +108,7 @@ pub mod by_index {
                     Ok((i, fields(t.clone()).map_err(|e| e.within(k))?))
                 })
                 .collect(),
-            other => Err(DocumentError::new("", format!("expected a list or an object, got {}", kind(other)))),
+            other => Err(DocumentError::new("", format!("expected a list or an object, got {}", kind(&other)))),
         }
     }
 
@@ -141,7 +141,7 @@ pub mod by_pair {
         nested(deserializer, parse)
     }
 
-    fn parse(value: &Value) -> Result<PatchTransforms> {
+    fn parse(value: Value) -> Result<PatchTransforms> {
         match value {
             Value::Null => Ok(Vec::new()),
             Value::Array(rows) => {
@@ -169,7 +169,7 @@ pub mod by_pair {
                     Ok((pair, fields(t.clone()).map_err(|e| e.within(key))?))
                 })
                 .collect(),
-            other => Err(DocumentError::new("", format!("expected a list of rows or an object, got {}", kind(other)))),
+            other => Err(DocumentError::new("", format!("expected a list of rows or an object, got {}", kind(&other)))),
         }
     }
 

@@ -2,13 +2,13 @@
 
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
-use serde_json::{Value, json};
 use splinekit::Point;
-use splinekit::curve::Curve;
+use splinekit::curve::{Curve, Interval};
+use splinekit_scene::budget::{Cost, ShapeCost};
 use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument};
 
 use crate::input::{parse_numbers, read_shape};
-use crate::output::{number, write_json};
+use crate::output::JsonOut;
 
 /// Most parameters one call may evaluate.
 pub const MAX_SAMPLES: usize = 10_000_000;
@@ -68,88 +68,137 @@ pub(crate) fn parse_count(name: &str, text: &str, max: usize) -> Result<usize> {
     Ok(v as usize)
 }
 
+/// The parameters asked for: a list, or `samples` evenly over the domain (ends included).
+enum Params<'a> {
+    List(&'a [f64]),
+    Samples(usize),
+    /// At equal arc length.
+    ArcLength(usize),
+}
+
+impl Params<'_> {
+    fn len(&self) -> usize {
+        match self {
+            Params::List(l) => l.len(),
+            Params::Samples(n) | Params::ArcLength(n) => *n,
+        }
+    }
+    /// The parameters on `curve`.
+    fn on<const D: usize>(&self, curve: &dyn Curve<D>) -> Result<Vec<f64>> {
+        let dom = curve.domain();
+        Ok(match self {
+            Params::List(l) => l.to_vec(),
+            Params::ArcLength(n) if *n >= 2 => super::arc_length::equal_length_params(curve, *n)?,
+            Params::Samples(n) | Params::ArcLength(n) => (0..*n).map(|i| spread(i, *n, dom)).collect(),
+        })
+    }
+    /// The flag that asked for them.
+    fn flag(&self) -> &'static str {
+        match self {
+            Params::List(_) => "--at",
+            Params::Samples(_) | Params::ArcLength(_) => "--samples",
+        }
+    }
+    /// Evaluations of the curve that finding them takes (arc length: a table of running
+    /// lengths and Newton steps per parameter, counted as 16 evaluations each).
+    fn evaluations(&self) -> f64 {
+        match self {
+            Params::ArcLength(n) => 16.0 * *n as f64,
+            _ => 0.0,
+        }
+    }
+}
+
+/// Sample i of n spread evenly over `dom`, ends included.
+pub(crate) fn spread(i: usize, n: usize, dom: Interval) -> f64 {
+    if n == 1 || i == 0 {
+        dom.start
+    } else if i + 1 == n {
+        dom.end
+    } else {
+        dom.lerp(i as f64 / (n - 1) as f64)
+    }
+}
+
+/// Evaluates a curve at the parameters and streams `{"params", "points", "derivatives"}`.
 struct EvalCurve<'a> {
-    at: Option<&'a [f64]>,
-    samples: usize,
-    arc_length: bool,
+    params: Params<'a>,
     order: usize,
+    out: &'a mut JsonOut,
 }
 
 impl DimensionVisitor<Curves> for EvalCurve<'_> {
-    type Output = Result<Value>;
-    fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Result<Value> {
+    type Output = Result<()>;
+    fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Result<()> {
         let dom = curve.domain();
-        let params: Vec<f64> = match self.at {
-            Some(list) => {
-                if !curve.is_closed() {
-                    let slack = 1e-12 * dom.length().max(dom.start.abs()).max(dom.end.abs());
-                    if let Some(t) = list.iter().find(|&&t| t < dom.start - slack || t > dom.end + slack) {
-                        bail!(
-                            "--at: parameter {t} is outside the domain [{}, {}] of this open curve",
-                            dom.start,
-                            dom.end
-                        );
-                    }
-                }
-                list.to_vec()
+        if let Params::List(list) = self.params
+            && !curve.is_closed()
+        {
+            let slack = 1e-12 * dom.length().max(dom.start.abs()).max(dom.end.abs());
+            if let Some(t) = list.iter().find(|&&t| t < dom.start - slack || t > dom.end + slack) {
+                bail!("--at: parameter {t} is outside the domain [{}, {}] of this open curve", dom.start, dom.end);
             }
-            None => {
-                let n = self.samples;
-                if n == 0 {
-                    bail!("--samples: must be at least 1");
-                }
-                if self.arc_length && n >= 2 {
-                    super::arc_length::equal_length_params(curve, n)?
-                } else {
-                    (0..n)
-                        .map(|i| {
-                            if n == 1 {
-                                dom.start
-                            } else if i + 1 == n {
-                                dom.end
-                            } else {
-                                dom.lerp(i as f64 / (n - 1) as f64)
-                            }
-                        })
-                        .collect()
-                }
-            }
-        };
-        let total = params.len().saturating_mul((self.order + 1) * D);
-        if total > 100_000_000 {
-            bail!(
-                "request too large: {} parameters × {} orders × {D} coordinates exceeds 100000000 numbers",
-                params.len(),
-                self.order + 1
-            );
         }
         let w = self.order + 1;
-        let mut values = vec![Point::<D>::zeros(); params.len() * w];
+        let params = self.params.on(curve)?;
+        let n = params.len();
+        let mut values = vec![Point::<D>::zeros(); n * w];
         curve.eval_many(&params, self.order, &mut values);
-        let coords = |p: &Point<D>, what: &str| -> Result<Value> {
-            Ok(Value::Array(p.iter().map(|&c| number(c, what)).collect::<Result<_>>()?))
-        };
-        let mut points = Vec::with_capacity(params.len());
-        let mut derivs = Vec::with_capacity(params.len());
+        let out = self.out;
+        out.raw(b"{\"params\":[")?;
         for (i, &t) in params.iter().enumerate() {
-            let at = format!("the point at t = {t}");
-            points.push(coords(&values[i * w], &at)?);
-            let d: Vec<Value> = (1..w)
-                .map(|k| coords(&values[i * w + k], &format!("derivative {k} at t = {t}")))
-                .collect::<Result<_>>()?;
-            derivs.push(Value::Array(d));
+            if i > 0 {
+                out.raw(b",")?;
+            }
+            out.number(t, || format!("params[{i}]"))?;
         }
-        Ok(json!({ "params": params, "points": points, "derivatives": derivs }))
+        out.raw(b"],\"points\":[")?;
+        for (i, &t) in params.iter().enumerate() {
+            if i > 0 {
+                out.raw(b",")?;
+            }
+            out.point(values[i * w].as_slice(), || format!("points[{i}] (t = {t})"))?;
+        }
+        out.raw(b"],\"derivatives\":[")?;
+        for (i, &t) in params.iter().enumerate() {
+            out.raw(if i > 0 { b",[" } else { b"[" })?;
+            for k in 1..w {
+                if k > 1 {
+                    out.raw(b",")?;
+                }
+                out.point(values[i * w + k].as_slice(), || format!("derivatives[{i}][{}] (order {k} at t = {t})", k - 1))?;
+            }
+            out.raw(b"]")?;
+        }
+        out.raw(b"]}\n")
     }
+}
+
+/// Refuses an evaluation of `count` parameters (asked for by `flag`) with `order`
+/// derivatives that would not fit the budget: the document's building, the parameters
+/// and values held in memory, their evaluation and formatting.
+fn check_curve_request(params: &Params, order: usize, dimension: usize, cost: &ShapeCost) -> Result<()> {
+    let (count, flag) = (params.len(), params.flag());
+    let n = count as f64;
+    let numbers = n * (order as f64 + 1.0) * dimension as f64;
+    let work = cost.evaluations(n, order) + cost.evaluations(params.evaluations(), 1);
+    let request = crate::budget::output(n + numbers) + Cost::new(0.0, work);
+    crate::budget::check_request(
+        flag,
+        &format!("{count} parameters with {order} derivatives ({:.1e} operations each)", cost.eval * (order as f64 + 1.0)),
+        cost,
+        request,
+    )
 }
 
 pub fn run(args: &EvalArgs) -> Result<()> {
     let order = parse_count("--derivatives", &args.derivatives, MAX_DERIVATIVES)?;
+    let time = args.time.as_deref().map(parse_time).transpose()?;
     let mut doc = read_shape(&args.shape)?;
-    if let Some(t) = &args.time {
-        doc.set_time(parse_time(t)?);
+    if let Some(t) = time {
+        doc.set_time(t);
     }
-    let value = match doc {
+    match doc {
         ShapeDocument::Curve(c) => {
             if args.grid.is_some() {
                 bail!("--grid: curves take --at T,... or --samples N");
@@ -158,12 +207,23 @@ pub fn run(args: &EvalArgs) -> Result<()> {
             if at.as_ref().is_some_and(|a| a.len() > MAX_SAMPLES) {
                 bail!("--at: more than {MAX_SAMPLES} parameters");
             }
-            let samples = match &args.samples {
-                Some(s) => parse_count("--samples", s, MAX_SAMPLES)?,
-                None => 0,
+            let params = match (&at, &args.samples) {
+                (Some(list), _) => Params::List(list),
+                (None, Some(s)) => match parse_count("--samples", s, MAX_SAMPLES)? {
+                    0 => bail!("--samples: must be at least 1"),
+                    n if args.arc_length => Params::ArcLength(n),
+                    n => Params::Samples(n),
+                },
+                (None, None) => bail!("give --at T,... or --samples N"),
             };
+            let cost = c.cost();
+            crate::budget::check_shape(&cost)?;
+            let dimension = c.dimension()?;
+            check_curve_request(&params, order, dimension, &cost)?;
             let curve = c.build()?;
-            curve.visit(EvalCurve { at: at.as_deref(), samples, arc_length: args.arc_length, order })?
+            let mut out = JsonOut::create(args.output.as_deref())?;
+            curve.visit(EvalCurve { params, order, out: &mut out })?;
+            out.finish()
         }
         ShapeDocument::Surface(s) => {
             if args.samples.is_some() || args.arc_length {
@@ -174,11 +234,16 @@ pub fn run(args: &EvalArgs) -> Result<()> {
             }
             let at = args.at.as_deref().map(parse_surface_params).transpose()?;
             let grid = args.grid.as_deref().map(parse_grid).transpose()?;
+            let cost = s.cost();
+            crate::budget::check_shape(&cost)?;
+            let request = super::eval_surface::EvalSurface { at: at.as_deref(), grid, order };
+            request.check_budget(s.dimension()?, &cost)?;
             let surface = s.build()?;
-            surface.visit(super::eval_surface::EvalSurface { at: at.as_deref(), grid, order })?
+            let mut out = JsonOut::create(args.output.as_deref())?;
+            surface.visit(super::eval_surface::SurfaceOutput { request, out: &mut out })?;
+            out.finish()
         }
-    };
-    write_json(&value, args.output.as_deref())
+    }
 }
 
 /// Highest total order of surface partials one call may ask for.

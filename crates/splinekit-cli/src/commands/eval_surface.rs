@@ -1,32 +1,24 @@
 //! `splinekit eval` on surfaces: points, partials up to a total order, unit normals.
 
 use anyhow::{Result, bail};
-use serde_json::{Map, Value, json};
 use splinekit::Point;
+use splinekit::curve::Interval;
 use splinekit::surface::{Surface, unit_normal};
+use splinekit_scene::budget::{Cost, ShapeCost};
 use splinekit_scene::{DimensionVisitor, Surfaces};
 
-use super::eval::MAX_SAMPLES;
-use crate::output::number;
+use crate::output::JsonOut;
 
+/// The points of a surface evaluation: `--at` pairs or a `--grid`, with partials up to
+/// total order `order`.
 pub struct EvalSurface<'a> {
     pub at: Option<&'a [(f64, f64)]>,
     pub grid: Option<(usize, usize)>,
     pub order: usize,
 }
 
-fn spread(n: usize, a: f64, b: f64) -> Vec<f64> {
-    (0..n)
-        .map(|i| {
-            if n == 1 {
-                a
-            } else if i + 1 == n {
-                b
-            } else {
-                a + (b - a) * i as f64 / (n - 1) as f64
-            }
-        })
-        .collect()
+fn spread(n: usize, d: Interval) -> Vec<f64> {
+    (0..n).map(|i| super::eval::spread(i, n, d)).collect()
 }
 
 /// The unit normal at (u, v), or its limit from just inside the domain where S_u × S_v
@@ -43,7 +35,7 @@ fn normal_or_limit<const D: usize>(
     }
     let (du, dv) = (s.domain_u(), s.domain_v());
     let (hu, hv) = (1e-7 * du.length(), 1e-7 * dv.length());
-    let inside = |x: f64, d: &splinekit::curve::Interval| x >= d.start && x <= d.end;
+    let inside = |x: f64, d: &Interval| x >= d.start && x <= d.end;
     for (a, b) in [(0.0, hv), (0.0, -hv), (hu, 0.0), (-hu, 0.0), (hu, hv), (-hu, -hv), (hu, -hv), (-hu, hv)] {
         let (x, y) = (u + a, v + b);
         if inside(x, &du) && inside(y, &dv) {
@@ -61,6 +53,29 @@ fn normal_or_limit<const D: usize>(
 type Samples<const D: usize> = (Vec<(f64, f64)>, Vec<Point<D>>);
 
 impl EvalSurface<'_> {
+    fn count(&self) -> usize {
+        match (self.at, self.grid) {
+            (Some(list), _) => list.len(),
+            (None, Some((nu, nv))) => nu * nv,
+            (None, None) => 0,
+        }
+    }
+
+    /// Refuses a request that would not fit the budget: the partials held in memory (up to
+    /// order max(K, 1) in each direction, for the normals), their evaluation (and a few
+    /// more near singular points) and formatting.
+    pub fn check_budget(&self, dimension: usize, cost: &ShapeCost) -> Result<()> {
+        let k = self.order.max(1);
+        let n = self.count() as f64;
+        let block = ((k + 1) * (k + 1)) as f64;
+        let written = n * (2.0 + (1.0 + ((self.order + 1) * (self.order + 2) / 2) as f64) * dimension as f64);
+        let request = Cost::new(n * (block * dimension as f64 + 2.0) * 8.0, cost.evaluations(n, (k + 1) * (k + 1) - 1))
+            + crate::budget::output(written);
+        let flag = if self.grid.is_some() { "--grid" } else { "--at" };
+        let what = format!("{} points with partials up to order {k} ({:.1e} operations each)", self.count(), cost.eval * block);
+        crate::budget::check_request(flag, &what, cost, request)
+    }
+
     /// The parameters asked for (`--at` pairs, checked against open directions, or a
     /// `--grid`) and the partials up to order k in each direction at each of them, in
     /// blocks of (k + 1)² (i-th u- and j-th v-derivative at i·(k + 1) + j).
@@ -70,7 +85,7 @@ impl EvalSurface<'_> {
         Ok(match (self.at, self.grid) {
             (Some(list), _) => {
                 for &(u, v) in list {
-                    let slack = |d: &splinekit::curve::Interval| 1e-12 * d.length().max(d.start.abs()).max(d.end.abs());
+                    let slack = |d: &Interval| 1e-12 * d.length().max(d.start.abs()).max(d.end.abs());
                     if !s.is_closed_u() && (u < du.start - slack(&du) || u > du.end + slack(&du)) {
                         bail!("--at: u = {u} is outside the domain [{}, {}] of this surface", du.start, du.end);
                     }
@@ -85,13 +100,8 @@ impl EvalSurface<'_> {
                 (list.to_vec(), values)
             }
             (None, Some((nu, nv))) => {
-                if (nu * nv).saturating_mul(w * D) > 100_000_000 || nu * nv > MAX_SAMPLES {
-                    bail!(
-                        "request too large: {nu} × {nv} points with partials up to order {k} exceeds 100000000 numbers"
-                    );
-                }
-                let us = spread(nu, du.start, du.end);
-                let vs = spread(nv, dv.start, dv.end);
+                let us = spread(nu, du);
+                let vs = spread(nv, dv);
                 let mut values = vec![Point::<D>::zeros(); nu * nv * w];
                 s.eval_grid(&us, &vs, k, k, &mut values);
                 let params = us.iter().flat_map(|&u| vs.iter().map(move |&v| (u, v))).collect();
@@ -102,61 +112,76 @@ impl EvalSurface<'_> {
     }
 }
 
-impl DimensionVisitor<Surfaces> for EvalSurface<'_> {
-    type Output = Result<Value>;
-    fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Result<Value> {
+/// Streams a surface evaluation as `{"params", "points", "partials", "inside", "normals"}`.
+pub struct SurfaceOutput<'a> {
+    pub request: EvalSurface<'a>,
+    pub out: &'a mut JsonOut,
+}
+
+impl DimensionVisitor<Surfaces> for SurfaceOutput<'_> {
+    type Output = Result<()>;
+    fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Result<()> {
         let (du, dv) = (s.domain_u(), s.domain_v());
-        let k = self.order.max(1);
+        let order = self.request.order;
+        let k = order.max(1);
         let w = (k + 1) * (k + 1);
-        let (params, values) = self.sample(s, k)?;
-        let coords = |p: &Point<D>, what: &dyn Fn() -> String| -> Result<Value> {
-            Ok(Value::Array(p.iter().map(|&c| number(c, &what())).collect::<Result<_>>()?))
+        let (params, values) = self.request.sample(s, k)?;
+        let out = self.out;
+        let list = |out: &mut JsonOut, key: &str, item: &mut dyn FnMut(&mut JsonOut, usize) -> Result<()>| -> Result<()> {
+            out.raw(format!("\"{key}\":[").as_bytes())?;
+            for n in 0..params.len() {
+                if n > 0 {
+                    out.raw(b",")?;
+                }
+                item(out, n)?;
+            }
+            out.raw(b"]")
         };
-        let mut points = Vec::with_capacity(params.len());
-        let mut normals = Vec::with_capacity(params.len());
-        let mut partials: Vec<(String, Vec<Value>)> = Vec::new();
-        for total in 1..=self.order {
+        out.raw(b"{")?;
+        list(out, "params", &mut |out, n| out.point(&[params[n].0, params[n].1], || format!("params[{n}]")))?;
+        out.raw(b",")?;
+        list(out, "points", &mut |out, n| {
+            let (u, v) = params[n];
+            out.point(values[n * w].as_slice(), || format!("points[{n}] (at ({u}, {v}))"))
+        })?;
+        out.raw(b",\"partials\":{")?;
+        let mut first = true;
+        for total in 1..=order {
             for i in (0..=total).rev() {
-                partials.push(("u".repeat(i) + &"v".repeat(total - i), Vec::with_capacity(params.len())));
+                let j = total - i;
+                let key = "u".repeat(i) + &"v".repeat(j);
+                if !first {
+                    out.raw(b",")?;
+                }
+                first = false;
+                list(out, &key, &mut |out, n| {
+                    let (u, v) = params[n];
+                    out.point(values[n * w + i * (k + 1) + j].as_slice(), || format!("partials.{key}[{n}] (at ({u}, {v}))"))
+                })?;
             }
         }
-        for (n, &(u, v)) in params.iter().enumerate() {
-            let o = &values[n * w..(n + 1) * w];
-            points.push(coords(&o[0], &|| format!("the point at ({u}, {v})"))?);
-            let mut slot = 0;
-            for total in 1..=self.order {
-                for i in (0..=total).rev() {
-                    let j = total - i;
-                    let key = partials[slot].0.clone();
-                    partials[slot].1.push(coords(&o[i * (k + 1) + j], &|| format!("partial {key} at ({u}, {v})"))?);
-                    slot += 1;
-                }
-            }
-            if D == 3 {
-                let (su, sv) = (o[k + 1], o[1]);
-                match normal_or_limit(s, u, v, &su, &sv) {
-                    Some(nrm) => normals.push(coords(&nrm, &|| format!("the normal at ({u}, {v})"))?),
+        out.raw(b"}")?;
+        if s.trim_contains(du.start, dv.start).is_some() {
+            out.raw(b",")?;
+            list(out, "inside", &mut |out, n| {
+                let (u, v) = params[n];
+                out.raw(if s.trim_contains(u, v).unwrap_or(true) { b"true" } else { b"false" })
+            })?;
+        }
+        if D == 3 {
+            out.raw(b",")?;
+            list(out, "normals", &mut |out, n| {
+                let (u, v) = params[n];
+                let o = &values[n * w..(n + 1) * w];
+                match normal_or_limit(s, u, v, &o[k + 1], &o[1]) {
+                    Some(nrm) => out.point(nrm.as_slice(), || format!("normals[{n}] (at ({u}, {v}))")),
                     None => {
+                        out.abandon();
                         bail!("normals: the surface has no normal at ({u}, {v}): S_u × S_v vanishes there and nearby")
                     }
                 }
-            }
+            })?;
         }
-        let mut map = Map::new();
-        for (key, vals) in partials {
-            map.insert(key, Value::Array(vals));
-        }
-        let params_uv = params;
-        let params: Vec<Value> = params_uv.iter().map(|&(u, v)| json!([u, v])).collect();
-        let inside: Option<Vec<bool>> = (s.trim_contains(du.start, dv.start).is_some())
-            .then(|| params_uv.iter().map(|&(u, v)| s.trim_contains(u, v).unwrap_or(true)).collect());
-        let mut out = json!({ "params": params, "points": points, "partials": Value::Object(map) });
-        if let Some(inside) = inside {
-            out["inside"] = json!(inside);
-        }
-        if D == 3 {
-            out["normals"] = Value::Array(normals);
-        }
-        Ok(out)
+        out.raw(b"}\n")
     }
 }

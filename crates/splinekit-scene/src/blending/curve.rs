@@ -11,6 +11,7 @@ use splinekit::curve::Curve;
 use super::DEFAULT_BFUNCTION;
 use super::animation::{TrackDoc, tracks};
 use crate::bfunctions::BFunctionDoc;
+use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
 use crate::curves::{CurveDocument, HeartDoc};
 use crate::dimension::Curves;
 use crate::error::{DocumentError, Result};
@@ -64,16 +65,16 @@ impl<'de> Deserialize<'de> for LocalCurves {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
         nested(deserializer, |value| match value {
             Value::Array(list) => list
-                .iter()
+                .into_iter()
                 .enumerate()
-                .map(|(i, c)| CurveDocument::parse(c).map_err(|e| e.within(&format!("[{i}]"))))
+                .map(|(i, c)| CurveDocument::from_value(c).map_err(|e| e.within(&format!("[{i}]"))))
                 .collect::<Result<_>>()
                 .map(LocalCurves::List),
             other => {
                 other.as_u64().map(|n| LocalCurves::Count(usize::try_from(n).unwrap_or(usize::MAX))).ok_or_else(|| {
                     DocumentError::new(
                         "",
-                        format!("expected a count of local curves or a list of curves, got {}", kind(other)),
+                        format!("expected a count of local curves or a list of curves, got {}", kind(&other)),
                     )
                 })
             }
@@ -287,6 +288,51 @@ impl DocumentKind for BlendingSplineDoc {
                     }
                 }
                 Ok(first)
+            }
+        }
+    }
+    /// Built from a model: the model, and per local what making it costs (Bézier locals:
+    /// the model's first d derivatives and a Hermite fit; arcs: two derivatives). A point
+    /// evaluates two locals and the B-function; sub-curve locals share one evaluation of
+    /// the model (two where `closed` forces an open model shut, on the seam interval).
+    /// Explicit locals: each local's cost, and a point evaluates the costliest two.
+    fn cost(&self) -> ShapeCost {
+        let blend = BFUNCTION_EVALUATION + 50.0;
+        match self.source() {
+            Err(_) => ShapeCost::new("local_curves", 0.0, 0.0, 0.0),
+            Ok(BlendingSource::Model { model, local_curves, local, knot_spacing }) => {
+                let m = model.cost().within("model");
+                let n = local_curves as f64;
+                let d = 4.0;
+                let (bytes, build, eval) = match local {
+                    LocalDoc::Bezier { degree } => {
+                        let q = *degree as f64 + 1.0;
+                        (2.0 * n * q * d * F64, n * (m.eval * q + q * q * d), 2.0 * q * q * d)
+                    }
+                    LocalDoc::SubCurve => {
+                        let twice = if self.closed == Some(true) { 2.0 } else { 1.0 };
+                        (0.0, n, twice * m.eval)
+                    }
+                    LocalDoc::Arc => (n * 8.0 * d * F64, n * 3.0 * m.eval, 100.0),
+                };
+                let spacing = match knot_spacing {
+                    KnotSpacingDoc::Uniform => 0.0,
+                    KnotSpacingDoc::ChordLength => 256.0 * n * m.eval,
+                };
+                let own = ShapeCost::new("local_curves", n * LOCAL_PIECE + bytes, build + spacing, 0.0);
+                let mut cost = own.and(m);
+                cost.eval = eval + blend;
+                cost
+            }
+            Ok(BlendingSource::Explicit { local_curves, .. }) => {
+                let n = local_curves.len() as f64;
+                let own = ShapeCost::new("local_curves", n * LOCAL_PIECE, n, 0.0);
+                let (cost, costliest) = local_curves.iter().enumerate().fold((own, 0.0f64), |(acc, most), (i, c)| {
+                    let c = c.cost().within(&format!("local_curves[{i}]"));
+                    let eval = c.eval;
+                    (acc.and(c), most.max(eval))
+                });
+                ShapeCost { eval: 2.0 * costliest + blend, ..cost }
             }
         }
     }

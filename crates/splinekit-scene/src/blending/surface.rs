@@ -11,6 +11,7 @@ use splinekit::surface::Surface;
 use super::DEFAULT_BFUNCTION;
 use super::animation::{TrackDoc, tracks};
 use crate::bfunctions::BFunctionDoc;
+use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
 use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::registry::{Decoration, DocumentKind};
@@ -122,6 +123,29 @@ impl DocumentKind for BlendingSplineSurfaceDoc {
     type Family = Surfaces;
     fn dimension(&self) -> Result<usize> {
         self.model.dimension().map_err(|e| e.within("model"))
+    }
+    /// The model, and per patch what making it costs (Bézier patches: the model's mixed
+    /// partials up to (d_u, d_v) and a Hermite fit). A point evaluates four patches and
+    /// two B-functions; sub-surface patches share one evaluation of the model (up to four
+    /// where `closed_u`/`closed_v` force an open model shut, on the seam intervals).
+    fn cost(&self) -> ShapeCost {
+        let m = self.model.cost().within("model");
+        let n = self.local_surfaces[0] as f64 * self.local_surfaces[1] as f64;
+        let d = 4.0;
+        let (bytes, build, eval) = match self.local.as_ref().unwrap_or(&BICUBIC_PATCHES) {
+            LocalPatchDoc::Bezier { degree } => {
+                let q = (degree[0] as f64 + 1.0) * (degree[1] as f64 + 1.0);
+                (2.0 * n * q * d * F64, n * (m.eval * q + q * q * d), 4.0 * q * d * 4.0)
+            }
+            LocalPatchDoc::SubSurface => {
+                let forced = |c: Option<bool>| if c == Some(true) { 2.0 } else { 1.0 };
+                (0.0, n, forced(self.closed_u) * forced(self.closed_v) * m.eval)
+            }
+        };
+        let own = ShapeCost::new("local_surfaces", n * LOCAL_PIECE + bytes, build, 0.0);
+        let mut cost = own.and(m);
+        cost.eval = eval + 2.0 * BFUNCTION_EVALUATION + 100.0;
+        cost
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         Ok(Box::new(self.surface::<D>()?))

@@ -6,6 +6,7 @@ use splinekit::curve::Curve;
 
 use super::CurveDocument;
 use crate::bfunctions::{BFunctionDoc, ErbsDoc, NoParams, PolynomialDoc};
+use crate::budget::ShapeCost;
 use crate::dimension::{Curves, same_type};
 use crate::error::{DocumentError, Result};
 use crate::registry::{Decoration, DocumentKind};
@@ -22,6 +23,9 @@ impl DocumentKind for BFunctionShapeDoc {
     type Family = Curves;
     fn dimension(&self) -> Result<usize> {
         Ok(1)
+    }
+    fn cost(&self) -> ShapeCost {
+        ShapeCost::new("bfunction", 1024.0, 0.0, crate::budget::BFUNCTION_EVALUATION)
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
         let b = self.bfunction.build().map_err(|e| e.within("bfunction"))?;
@@ -67,6 +71,12 @@ impl DocumentKind for BlendDoc {
             return Err(DocumentError::new("second", format!("expected a curve of dimension {a} like first, got {b}")));
         }
         Ok(a)
+    }
+    /// Both curves, each evaluated once per point where they overlap, and the B-function.
+    fn cost(&self) -> ShapeCost {
+        let mut c = self.first.cost().within("first").and(self.second.cost().within("second"));
+        c.eval += crate::budget::BFUNCTION_EVALUATION;
+        c
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
         let bfunction = self.bfunction.as_ref().unwrap_or(&Self::DEFAULT_BFUNCTION);

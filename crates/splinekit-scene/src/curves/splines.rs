@@ -7,6 +7,7 @@ use splinekit::curve::{
     BSplineCurve, BezierCurve, CatmullRomCurve, Curve, HermiteCurve, NurbsCurve, RationalBezierCurve,
 };
 
+use crate::budget::{ShapeCost, check_degree, spline_cost};
 use crate::defaults::is_false;
 use crate::dimension::Curves;
 use crate::error::{DocumentError, Result};
@@ -26,7 +27,12 @@ impl DocumentKind for BezierDoc {
     fn dimension(&self) -> Result<usize> {
         dimension_of("control_points", &self.control_points)
     }
+    /// De Casteljau's triangle: n²/2 interpolations of D coordinates per point.
+    fn cost(&self) -> ShapeCost {
+        bezier_cost(&self.control_points, 0)
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+        check_bezier_degree(&self.control_points)?;
         Ok(Box::new(BezierCurve::new(to_points::<D>(&self.control_points))?))
     }
     fn example() -> Self {
@@ -53,7 +59,12 @@ impl DocumentKind for RationalBezierDoc {
     fn dimension(&self) -> Result<usize> {
         dimension_of("control_points", &self.control_points)
     }
+    /// De Casteljau's triangle in homogeneous coordinates (one more than the points').
+    fn cost(&self) -> ShapeCost {
+        bezier_cost(&self.control_points, 1)
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
+        check_bezier_degree(&self.control_points)?;
         check_finite_list("weights", &self.weights)?;
         Ok(Box::new(RationalBezierCurve::new(to_points::<D>(&self.control_points), self.weights.clone())?))
     }
@@ -88,6 +99,7 @@ pub struct BSplineDoc {
 impl BSplineDoc {
     /// The kernel curve in dimension D (the document's).
     pub fn curve<const D: usize>(&self) -> Result<BSplineCurve<D>> {
+        check_degree("degree", self.degree)?;
         check_finite_list("knots", &self.knots)?;
         let points = to_points::<D>(&self.control_points);
         Ok(if self.periodic {
@@ -102,6 +114,9 @@ impl DocumentKind for BSplineDoc {
     type Family = Curves;
     fn dimension(&self) -> Result<usize> {
         dimension_of("control_points", &self.control_points)
+    }
+    fn cost(&self) -> ShapeCost {
+        spline_cost(self.degree, self.control_points.len(), coordinates(&self.control_points))
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
         Ok(Box::new(self.curve::<D>()?))
@@ -153,6 +168,7 @@ pub struct NurbsDoc {
 impl NurbsDoc {
     /// The kernel curve in dimension D (the document's).
     pub fn curve<const D: usize>(&self) -> Result<NurbsCurve<D>> {
+        check_degree("degree", self.degree)?;
         check_finite_list("knots", &self.knots)?;
         check_finite_list("weights", &self.weights)?;
         let points = to_points::<D>(&self.control_points);
@@ -169,6 +185,9 @@ impl DocumentKind for NurbsDoc {
     type Family = Curves;
     fn dimension(&self) -> Result<usize> {
         dimension_of("control_points", &self.control_points)
+    }
+    fn cost(&self) -> ShapeCost {
+        spline_cost(self.degree, self.control_points.len(), coordinates(&self.control_points) + 1)
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
         Ok(Box::new(self.curve::<D>()?))
@@ -221,6 +240,9 @@ impl DocumentKind for HermiteDoc {
     fn dimension(&self) -> Result<usize> {
         dimension_of("points", &self.points)
     }
+    fn cost(&self) -> ShapeCost {
+        piecewise_cubic_cost("points", &self.points)
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
         if self.tangents.len() != self.points.len() {
             return Err(DocumentError::new(
@@ -267,6 +289,9 @@ impl DocumentKind for CatmullRomDoc {
     fn dimension(&self) -> Result<usize> {
         dimension_of("points", &self.points)
     }
+    fn cost(&self) -> ShapeCost {
+        piecewise_cubic_cost("points", &self.points)
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
         Ok(Box::new(CatmullRomCurve::new(to_points::<D>(&self.points), self.alpha, self.closed)?))
     }
@@ -299,6 +324,9 @@ impl DocumentKind for LineDoc {
     fn dimension(&self) -> Result<usize> {
         dimension_of("from", std::slice::from_ref(&self.from))
     }
+    fn cost(&self) -> ShapeCost {
+        ShapeCost::new("from", 64.0, 0.0, 10.0)
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
         Ok(Box::new(Line::new(to_point::<D>("from", &self.from)?, to_point::<D>("to", &self.to)?)?))
     }
@@ -309,4 +337,29 @@ impl DocumentKind for LineDoc {
         Decoration::None
     }
     fn set_time(&mut self, _time: f64) {}
+}
+
+/// Coordinates per point (of the first point; the dimension is checked when building).
+fn coordinates(points: &[Vec<f64>]) -> usize {
+    points.first().map_or(1, Vec::len).max(1)
+}
+
+/// A Bézier curve of n + 1 points: n + 1 points of D (+ `extra`) coordinates, and de
+/// Casteljau's n(n + 1)/2 interpolations per point.
+fn bezier_cost(points: &[Vec<f64>], extra: usize) -> ShapeCost {
+    let (n, d) = (points.len() as f64, (coordinates(points) + extra) as f64);
+    ShapeCost::new("control_points", n * d * crate::budget::F64, n * d, n * n * d)
+}
+
+/// Refuses Bézier curves above [`crate::budget::MAX_DEGREE`], naming the points.
+fn check_bezier_degree(points: &[Vec<f64>]) -> Result<()> {
+    check_degree("control_points", points.len().saturating_sub(1)).map_err(|e| {
+        DocumentError::new(e.path, format!("{} points make a Bézier curve of {}", points.len(), e.message))
+    })
+}
+
+/// Piecewise cubic curves through points: a span search and one cubic per point.
+fn piecewise_cubic_cost(field: &str, points: &[Vec<f64>]) -> ShapeCost {
+    let (n, d) = (points.len() as f64, coordinates(points) as f64);
+    ShapeCost::new(field, 3.0 * n * d * crate::budget::F64, 10.0 * n * d, 20.0 * d + n.max(2.0).log2())
 }

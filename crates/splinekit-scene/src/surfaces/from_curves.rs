@@ -6,6 +6,7 @@ use splinekit::surface::Surface;
 use splinekit::surface::derived::{CoonsBlend, CoonsPatch, Extrusion, RevolvedSurface, RuledSurface, SweepSurface};
 
 use crate::curves::{BezierDoc, CircleDoc, CurveDocument, LineDoc, TrefoilDoc};
+use crate::budget::ShapeCost;
 use crate::defaults::{origin, tau, z_axis};
 use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
@@ -34,6 +35,9 @@ impl DocumentKind for RevolutionDoc {
     type Family = Surfaces;
     fn dimension(&self) -> Result<usize> {
         Ok(3)
+    }
+    fn cost(&self) -> ShapeCost {
+        self.curve.cost().within("curve")
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         Surfaces::model_in::<D>(Self::TYPE, || {
@@ -82,6 +86,9 @@ impl DocumentKind for RuledDoc {
     fn dimension(&self) -> Result<usize> {
         same_dimension(&[("first", &self.first), ("second", &self.second)])
     }
+    fn cost(&self) -> ShapeCost {
+        self.first.cost().within("first").and(self.second.cost().within("second"))
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         Ok(Box::new(RuledSurface::new(
             self.first.build_in::<D>().map_err(|e| e.within("first"))?,
@@ -124,6 +131,9 @@ impl DocumentKind for ExtrusionDoc {
             ));
         }
         Ok(dim)
+    }
+    fn cost(&self) -> ShapeCost {
+        self.curve.cost().within("curve")
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         Ok(Box::new(Extrusion::new(
@@ -187,6 +197,15 @@ impl DocumentKind for CoonsDoc {
     fn dimension(&self) -> Result<usize> {
         same_dimension(&[("bottom", &self.bottom), ("top", &self.top), ("left", &self.left), ("right", &self.right)])
     }
+    /// The four boundary curves, each evaluated twice per point (at u or v and at the corners).
+    fn cost(&self) -> ShapeCost {
+        let c = [("bottom", &self.bottom), ("top", &self.top), ("left", &self.left), ("right", &self.right)]
+            .into_iter()
+            .map(|(name, c)| c.cost().within(name))
+            .reduce(ShapeCost::and)
+            .expect("four curves");
+        ShapeCost { eval: 2.0 * c.eval, ..c }
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         Ok(Box::new(CoonsPatch::new(
             self.bottom.build_in::<D>().map_err(|e| e.within("bottom"))?,
@@ -239,6 +258,13 @@ impl DocumentKind for SweepDoc {
     fn dimension(&self) -> Result<usize> {
         Ok(3)
     }
+    /// The profile and the path, and the rotation-minimising frames sampled along the path.
+    fn cost(&self) -> ShapeCost {
+        let mut c = self.profile.cost().within("profile").and(self.path.cost().within("path"));
+        c.build.work += SWEEP_FRAMES * c.eval;
+        c.build.bytes += SWEEP_FRAMES * 128.0;
+        c
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         let three = |c: &CurveDocument, field: &str| -> Result<Box<dyn Curve<3>>> {
             if c.dimension().map_err(|e| e.within(field))? != 3 {
@@ -265,6 +291,9 @@ impl DocumentKind for SweepDoc {
         self.path.set_time(time);
     }
 }
+
+/// Frames a sweep samples along its path (an upper estimate).
+const SWEEP_FRAMES: f64 = 4096.0;
 
 /// The common dimension of named curve documents, which must agree.
 fn same_dimension(curves: &[(&str, &CurveDocument)]) -> Result<usize> {

@@ -5,6 +5,7 @@ use serde::{Deserialize, Serialize};
 use splinekit::Point;
 use splinekit::surface::{BSplineSurface, BezierSurface, NurbsSurface, Surface};
 
+use crate::budget::{F64, ShapeCost, check_degree};
 use crate::defaults::is_false;
 use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
@@ -24,7 +25,15 @@ impl DocumentKind for BezierSurfaceDoc {
     fn dimension(&self) -> Result<usize> {
         net_dimension("control_points", &self.control_points)
     }
+    /// De Casteljau along every row, then once across: n_u·n_v² + n_u² interpolations.
+    fn cost(&self) -> ShapeCost {
+        let (nu, nv, d) = net_size(&self.control_points);
+        ShapeCost::new("control_points", nu * nv * d * F64, nu * nv * d, (nu * nv * nv + nu * nu) * d)
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
+        let (nu, nv, _) = net_size(&self.control_points);
+        check_degree("control_points", nu as usize - 1)?;
+        check_degree("control_points[0]", nv as usize - 1)?;
         Ok(Box::new(BezierSurface::new(net_points::<D>(&self.control_points))?))
     }
     /// A biquadratic bump over [0, 2]².
@@ -64,7 +73,12 @@ impl DocumentKind for BSplineSurfaceDoc {
     fn dimension(&self) -> Result<usize> {
         net_dimension("control_points", &self.control_points)
     }
+    fn cost(&self) -> ShapeCost {
+        tensor_spline_cost(self.degree_u, self.degree_v, &self.control_points, 0.0)
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
+        check_degree("degree_u", self.degree_u)?;
+        check_degree("degree_v", self.degree_v)?;
         check_finite_list("knots_u", &self.knots_u)?;
         check_finite_list("knots_v", &self.knots_v)?;
         Ok(Box::new(BSplineSurface::new(
@@ -122,7 +136,12 @@ impl DocumentKind for NurbsSurfaceDoc {
     fn dimension(&self) -> Result<usize> {
         net_dimension("control_points", &self.control_points)
     }
+    fn cost(&self) -> ShapeCost {
+        tensor_spline_cost(self.degree_u, self.degree_v, &self.control_points, 1.0)
+    }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
+        check_degree("degree_u", self.degree_u)?;
+        check_degree("degree_v", self.degree_v)?;
         check_finite_list("knots_u", &self.knots_u)?;
         check_finite_list("knots_v", &self.knots_v)?;
         for (i, row) in self.weights.iter().enumerate() {
@@ -184,4 +203,24 @@ fn net_dimension(field: &str, net: &[Vec<Vec<f64>>]) -> Result<usize> {
 
 fn net_points<const D: usize>(net: &[Vec<Vec<f64>>]) -> Vec<Vec<Point<D>>> {
     net.iter().map(|r| to_points::<D>(r)).collect()
+}
+
+/// Rows, points per row (of the first row) and coordinates per point of a net, as numbers
+/// for estimates (at least 1 each).
+fn net_size(net: &[Vec<Vec<f64>>]) -> (f64, f64, f64) {
+    let row = net.first().map(Vec::as_slice).unwrap_or_default();
+    let d = row.first().map_or(1, Vec::len);
+    (net.len().max(1) as f64, row.len().max(1) as f64, d.max(1) as f64)
+}
+
+/// A tensor-product B-spline surface (with `extra` = 1 for NURBS weights): the net and
+/// knots stored; per point two span searches, the two bases and the (p_u + 1)(p_v + 1)
+/// combination.
+fn tensor_spline_cost(pu: usize, pv: usize, net: &[Vec<Vec<f64>>], extra: f64) -> ShapeCost {
+    let (nu, nv, d) = net_size(net);
+    let (pu, pv, d) = (pu as f64 + 1.0, pv as f64 + 1.0, d + extra);
+    let stored = nu * nv * d + nu + nv + pu + pv;
+    let eval = pu * pu + pv * pv + pu * pv * d + (nu * nv).max(2.0).log2();
+    let field = if pu > nu { "degree_u" } else if pv > nv { "degree_v" } else { "control_points" };
+    ShapeCost::new(field, stored * F64, stored, eval)
 }

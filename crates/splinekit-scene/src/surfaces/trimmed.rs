@@ -6,6 +6,7 @@ use splinekit::surface::{Surface, TrimmedSurface};
 
 use super::SurfaceDocument;
 use crate::curves::{CatmullRomDoc, CurveDocument};
+use crate::budget::ShapeCost;
 use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::registry::{Decoration, DocumentKind};
@@ -26,6 +27,9 @@ pub struct TrimmedDoc {
     pub holes: Vec<CurveDocument>,
 }
 
+/// Points a trimming loop is flattened to (an upper estimate).
+const TRIM_SAMPLES: f64 = 10_000.0;
+
 /// A trimming loop as a 2-D curve.
 fn trimming_loop(c: &CurveDocument, field: &str) -> Result<Box<dyn Curve<2>>> {
     if c.dimension().map_err(|e| e.within(field))? != 2 {
@@ -38,6 +42,21 @@ impl DocumentKind for TrimmedDoc {
     type Family = Surfaces;
     fn dimension(&self) -> Result<usize> {
         self.surface.dimension().map_err(|e| e.within("surface"))
+    }
+    /// The surface and its loops (each flattened to a polyline when built).
+    fn cost(&self) -> ShapeCost {
+        let loops = self.outer.iter().map(|o| o.cost().within("outer")).chain(
+            self.holes.iter().enumerate().map(|(i, h)| h.cost().within(&format!("holes[{i}]"))),
+        );
+        let mut c = loops.fold(self.surface.cost().within("surface"), |acc, l| {
+            let mut l = l;
+            l.build.work += TRIM_SAMPLES * l.eval;
+            l.build.bytes += TRIM_SAMPLES * 16.0;
+            l.eval = 0.0;
+            acc.and(l)
+        });
+        c.eval += 100.0;
+        c
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         let outer = self.outer.as_ref().map(|o| trimming_loop(o, "outer")).transpose()?;

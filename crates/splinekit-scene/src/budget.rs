@@ -1,0 +1,343 @@
+//! Budgets: what a request will cost, estimated from the document and the options before
+//! any work starts, and the limits it must stay within.
+//!
+//! A [`Cost`] counts bytes of memory and units of work (one unit ≈ one floating-point
+//! operation; this machine does about 10⁹ of them a second on the paths measured). Every
+//! document kind estimates its own [`ShapeCost`] (see
+//! [`DocumentKind::cost`](crate::registry::DocumentKind::cost)): the memory and work of
+//! building its kernel object and the work of evaluating one point, from its counts,
+//! degrees and nesting. Commands add what their options ask for (samples, grids, steps)
+//! and check the sum against a [`Budget`] before they allocate: a request over the budget
+//! is refused at once with one line naming the flag or field, the estimate and the limit.
+//!
+//! The estimates are in `f64` so that products of huge counts cannot wrap around: an
+//! overflowing estimate is infinite and over every limit.
+
+use std::fmt;
+
+use crate::error::{DocumentError, Result};
+
+/// Memory in bytes and work in operations.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Cost {
+    /// Bytes of memory held at the peak.
+    pub bytes: f64,
+    /// Operations (≈ floating-point operations).
+    pub work: f64,
+}
+
+impl Cost {
+    /// Nothing.
+    pub const ZERO: Cost = Cost { bytes: 0.0, work: 0.0 };
+
+    /// A cost of `bytes` and `work`.
+    pub fn new(bytes: f64, work: f64) -> Self {
+        Cost { bytes, work }
+    }
+
+    /// `count` copies of this cost (memory and work both scale).
+    pub fn times(self, count: f64) -> Self {
+        Cost { bytes: self.bytes * count, work: self.work * count }
+    }
+}
+
+impl std::ops::Add for Cost {
+    type Output = Cost;
+    fn add(self, other: Cost) -> Cost {
+        Cost { bytes: self.bytes + other.bytes, work: self.work + other.work }
+    }
+}
+
+/// Bytes of one stored coordinate or knot.
+pub const F64: f64 = 8.0;
+
+/// Operations of one evaluation of a model curve or surface given by a formula (a few
+/// dozen trigonometric calls with their derivatives).
+pub const MODEL_EVALUATION: f64 = 200.0;
+
+/// Operations of one evaluation of a B-function with a few derivatives.
+pub const BFUNCTION_EVALUATION: f64 = 100.0;
+
+/// Bytes of one local piece's frame and bookkeeping in a blending spline.
+pub const LOCAL_PIECE: f64 = 256.0;
+
+/// Highest degree of Bézier, B-spline and NURBS curves and surfaces (per direction) that
+/// documents may ask for. De Casteljau's and Cox–de Boor's algorithms cost O(p²) per point;
+/// at p = 1024 that is about a million operations per point, and polynomials of such degree
+/// carry no information that a B-spline of lower degree with more knots would not.
+pub const MAX_DEGREE: usize = 1024;
+
+/// Deepest nesting of documents inside documents (blends of blends, blending splines of
+/// blending splines, …). Each level adds at least one evaluation of the level below.
+pub const MAX_NESTING: usize = 64;
+
+/// The cost of a shape document: building its kernel object, and evaluating one point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShapeCost {
+    /// Memory and work of building the kernel object from the document.
+    pub build: Cost,
+    /// Operations of one evaluation of the point at one parameter (derivatives of order k
+    /// cost about k + 1 times this).
+    pub eval: f64,
+    /// Levels of documents nested inside this one (0 for a document with no sub-documents).
+    pub depth: usize,
+    /// The field that makes most of the cost (`control_points`, `model.local_curves`), for
+    /// messages.
+    pub field: String,
+}
+
+impl ShapeCost {
+    /// A shape of `bytes` and `build` work whose points cost `eval`, its cost driven by
+    /// `field`.
+    pub fn new(field: &str, bytes: f64, build: f64, eval: f64) -> Self {
+        ShapeCost { build: Cost::new(bytes, build), eval, depth: 0, field: field.to_string() }
+    }
+
+    /// A model curve or surface given by a formula: nothing to store, a fixed cost per point.
+    pub fn model() -> Self {
+        ShapeCost::new("type", 64.0, 0.0, MODEL_EVALUATION)
+    }
+
+    /// The same cost seen from the parent field `prefix` (one more level of nesting).
+    pub fn within(mut self, prefix: &str) -> Self {
+        self.field = DocumentError::new(std::mem::take(&mut self.field), "").within(prefix).path;
+        self.depth += 1;
+        self
+    }
+
+    /// Both costs together (a document made of two others); the field is the costlier one's.
+    pub fn and(self, other: ShapeCost) -> Self {
+        let weight = |c: &ShapeCost| c.build.bytes + c.build.work + c.eval;
+        let field = if weight(&other) > weight(&self) { other.field } else { self.field };
+        ShapeCost {
+            build: self.build + other.build,
+            eval: self.eval + other.eval,
+            depth: self.depth.max(other.depth),
+            field,
+        }
+    }
+
+    /// Work of evaluating `points` parameters with derivatives up to order `order`.
+    pub fn evaluations(&self, points: f64, order: usize) -> f64 {
+        points * self.eval * (order as f64 + 1.0)
+    }
+}
+
+/// A B-spline of `degree` p with n control points of `coordinates` numbers each (one more
+/// for NURBS): the points and n + p + 1 knots stored, and per point a span search and
+/// Cox–de Boor's (p + 1)² basis operations plus the (p + 1)·D combination.
+pub fn spline_cost(degree: usize, n: usize, coordinates: usize) -> ShapeCost {
+    let (p, n, d) = (degree as f64, n as f64, coordinates as f64);
+    let stored = n * d + n + p + 1.0;
+    let eval = (p + 1.0) * (p + 1.0) + (p + 1.0) * d + (n + p).max(2.0).log2();
+    ShapeCost::new(if p > n { "degree" } else { "control_points" }, stored * F64, stored, eval)
+}
+
+/// Checks a degree against [`MAX_DEGREE`], naming `field`.
+pub fn check_degree(field: &str, degree: usize) -> Result<()> {
+    if degree > MAX_DEGREE {
+        return Err(DocumentError::new(
+            field,
+            format!("degree {degree} is more than the limit of {MAX_DEGREE} (see Limits in docs/format.md)"),
+        ));
+    }
+    Ok(())
+}
+
+/// The limits a request must stay within.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Budget {
+    /// Most bytes of memory.
+    pub max_bytes: f64,
+    /// Most operations.
+    pub max_work: f64,
+}
+
+/// The environment variable that sets the memory limit (bytes, or with a suffix K, M, G, T).
+pub const MEMORY_VARIABLE: &str = "SPLINEKIT_MAX_MEMORY";
+/// The environment variable that sets the work limit (operations, e.g. `2e10`).
+pub const WORK_VARIABLE: &str = "SPLINEKIT_MAX_WORK";
+/// Default work limit: about ten seconds of computing on this machine.
+pub const DEFAULT_MAX_WORK: f64 = 1e10;
+/// Share of the physical memory a request may use by default.
+pub const DEFAULT_MEMORY_SHARE: f64 = 0.5;
+
+impl Budget {
+    /// The default budget: half of the physical memory, [`DEFAULT_MAX_WORK`] operations.
+    pub fn machine() -> Self {
+        Budget { max_bytes: physical_memory() * DEFAULT_MEMORY_SHARE, max_work: DEFAULT_MAX_WORK }
+    }
+
+    /// The budget set by the flags `--max-memory` and `--max-work` (given as text), else by
+    /// the environment variables [`MEMORY_VARIABLE`] and [`WORK_VARIABLE`], else
+    /// [`Budget::machine`].
+    pub fn from_options(max_memory: Option<&str>, max_work: Option<&str>) -> Result<Self> {
+        let mut budget = Budget::machine();
+        let memory = match max_memory {
+            Some(text) => Some(("--max-memory", text.to_string())),
+            None => std::env::var(MEMORY_VARIABLE).ok().map(|v| (MEMORY_VARIABLE, v)),
+        };
+        if let Some((name, text)) = memory {
+            budget.max_bytes = parse_amount(name, &text, true)?;
+        }
+        let work = match max_work {
+            Some(text) => Some(("--max-work", text.to_string())),
+            None => std::env::var(WORK_VARIABLE).ok().map(|v| (WORK_VARIABLE, v)),
+        };
+        if let Some((name, text)) = work {
+            budget.max_work = parse_amount(name, &text, false)?;
+        }
+        Ok(budget)
+    }
+
+    /// Refuses `cost` if it is over the budget, in a message that names `field` and says
+    /// what the cost is `for` (e.g. "10⁹ samples").
+    pub fn check(&self, field: &str, what: &str, cost: Cost) -> Result<()> {
+        if !(cost.bytes <= self.max_bytes) {
+            return Err(DocumentError::new(
+                field,
+                format!(
+                    "{what} would need about {} of memory, more than the limit of {} (raise it with --max-memory or {MEMORY_VARIABLE})",
+                    Bytes(cost.bytes),
+                    Bytes(self.max_bytes)
+                ),
+            ));
+        }
+        if !(cost.work <= self.max_work) {
+            return Err(DocumentError::new(
+                field,
+                format!(
+                    "{what} would need about {:.1e} operations, more than the limit of {:.1e} (raise it with --max-work or {WORK_VARIABLE})",
+                    cost.work, self.max_work
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Refuses a document whose own cost (building it, and a first evaluation) is over the
+    /// budget or nests deeper than [`MAX_NESTING`], naming the field that drives the cost.
+    pub fn check_shape(&self, cost: &ShapeCost) -> Result<()> {
+        if cost.depth > MAX_NESTING {
+            return Err(DocumentError::new(
+                cost.field.as_str(),
+                format!("documents nested {} deep, more than the limit of {MAX_NESTING}", cost.depth),
+            ));
+        }
+        self.check(&cost.field, "building this document and evaluating one point", cost.build + Cost::new(0.0, cost.eval))
+    }
+}
+
+/// Bytes written for people: `1.5 GB`.
+#[derive(Debug, Clone, Copy)]
+pub struct Bytes(pub f64);
+
+impl fmt::Display for Bytes {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let b = self.0;
+        if !b.is_finite() {
+            return write!(f, "more than any machine has");
+        }
+        let units = [("TB", 1e12), ("GB", 1e9), ("MB", 1e6), ("kB", 1e3)];
+        for (unit, size) in units {
+            if b >= size {
+                return write!(f, "{:.1} {unit}", b / size);
+            }
+        }
+        write!(f, "{b:.0} bytes")
+    }
+}
+
+/// Parses a limit: a positive number, for memory with an optional suffix K, M, G or T
+/// (powers of 1024) or KB, MB, GB, TB (powers of 1000).
+fn parse_amount(name: &str, text: &str, memory: bool) -> Result<f64> {
+    let t = text.trim();
+    let (number, scale) = if memory {
+        let upper = t.to_ascii_uppercase();
+        let suffixes = [
+            ("KB", 1e3),
+            ("MB", 1e6),
+            ("GB", 1e9),
+            ("TB", 1e12),
+            ("K", 1024.0),
+            ("M", 1024.0 * 1024.0),
+            ("G", 1024.0 * 1024.0 * 1024.0),
+            ("T", 1024.0f64.powi(4)),
+            ("B", 1.0),
+        ];
+        match suffixes.iter().find(|(s, _)| upper.ends_with(s)) {
+            Some((s, scale)) => (&t[..t.len() - s.len()], *scale),
+            None => (t, 1.0),
+        }
+    } else {
+        (t, 1.0)
+    };
+    let value: f64 = number.trim().parse().map_err(|_| {
+        DocumentError::new(
+            name,
+            if memory {
+                format!("expected bytes like 4G, 512M or 2e9, got '{text}'")
+            } else {
+                format!("expected a number of operations like 2e10, got '{text}'")
+            },
+        )
+    })?;
+    let amount = value * scale;
+    if !(amount.is_finite() && amount > 0.0) {
+        return Err(DocumentError::new(name, format!("must be positive and finite, got '{text}'")));
+    }
+    Ok(amount)
+}
+
+/// Physical memory in bytes (`MemTotal` of /proc/meminfo; 4 GiB where it cannot be read).
+pub fn physical_memory() -> f64 {
+    const FALLBACK: f64 = 4.0 * 1024.0 * 1024.0 * 1024.0;
+    std::fs::read_to_string("/proc/meminfo")
+        .ok()
+        .and_then(|text| {
+            let line = text.lines().find(|l| l.starts_with("MemTotal:"))?;
+            let kib: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
+            Some(kib * 1024.0)
+        })
+        .unwrap_or(FALLBACK)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn amounts_parse_with_suffixes() {
+        assert_eq!(parse_amount("m", "512M", true).unwrap(), 512.0 * 1024.0 * 1024.0);
+        assert_eq!(parse_amount("m", "2GB", true).unwrap(), 2e9);
+        assert_eq!(parse_amount("m", "1e6", true).unwrap(), 1e6);
+        assert_eq!(parse_amount("w", "2e10", false).unwrap(), 2e10);
+        assert!(parse_amount("m", "-1G", true).is_err());
+        assert!(parse_amount("w", "lots", false).unwrap_err().to_string().starts_with("w: expected"));
+        assert!(parse_amount("w", "inf", false).is_err());
+    }
+
+    #[test]
+    fn over_budget_names_the_field_and_both_numbers() {
+        let budget = Budget { max_bytes: 1e9, max_work: 1e10 };
+        let e = budget.check("--samples", "10⁹ samples", Cost::new(8.8e11, 1.0)).unwrap_err();
+        assert_eq!(e.path, "--samples");
+        assert!(e.message.contains("880.0 GB") && e.message.contains("1.0 GB"), "{e}");
+        let e = budget.check("--grid", "a grid", Cost::new(1.0, 2e10)).unwrap_err();
+        assert!(e.message.contains("2.0e10") && e.message.contains("1.0e10"), "{e}");
+        assert!(budget.check("x", "y", Cost::new(1e9, 1e10)).is_ok());
+        assert!(budget.check("x", "y", Cost::new(f64::INFINITY, 0.0)).is_err());
+        assert!(budget.check("x", "y", Cost::new(f64::NAN, 0.0)).is_err());
+    }
+
+    #[test]
+    fn nested_costs_name_the_inner_field_and_count_levels() {
+        let inner = ShapeCost::new("control_points", 100.0, 10.0, 5.0).within("model");
+        let outer = ShapeCost::new("local_curves", 10.0, 1.0, 1.0).and(inner).within("first");
+        assert_eq!(outer.field, "first.model.control_points");
+        assert_eq!(outer.depth, 2);
+        assert_eq!(outer.build, Cost::new(110.0, 11.0));
+        let deep = (0..=MAX_NESTING).fold(ShapeCost::model(), |c, _| c.within("model"));
+        assert!(Budget::machine().check_shape(&deep).unwrap_err().message.contains("nested"));
+    }
+}
