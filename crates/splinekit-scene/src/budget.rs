@@ -53,7 +53,7 @@ pub const F64: f64 = 8.0;
 
 /// Operations of one evaluation of a model curve or surface given by a formula (a few
 /// dozen trigonometric calls with their derivatives).
-pub const MODEL_EVALUATION: f64 = 200.0;
+pub const MODEL_EVALUATION: f64 = 100.0;
 
 /// Operations of one evaluation of a B-function with a few derivatives.
 pub const BFUNCTION_EVALUATION: f64 = 100.0;

@@ -55,6 +55,14 @@ impl ShapeDocument {
         }
     }
 
+    /// What building and evaluating the shape cost (see [`budget`]).
+    pub fn cost(&self) -> budget::ShapeCost {
+        match self {
+            ShapeDocument::Curve(c) => c.cost(),
+            ShapeDocument::Surface(s) => s.cost(),
+        }
+    }
+
     /// Parses a shape document.
     pub fn parse(value: &Value) -> Result<Self> {
         Self::from_value(value.clone())

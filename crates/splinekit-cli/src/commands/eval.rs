@@ -185,7 +185,11 @@ fn check_curve_request(params: &Params, order: usize, dimension: usize, cost: &S
     let request = crate::budget::output(n + numbers) + Cost::new(0.0, work);
     crate::budget::check_request(
         flag,
-        &format!("{count} parameters with {order} derivatives ({:.1e} operations each)", cost.eval * (order as f64 + 1.0)),
+        &format!(
+            "{count} parameters with {order} derivatives ({:.1e} operations each, driven by {})",
+            cost.eval * (order as f64 + 1.0),
+            cost.field
+        ),
         cost,
         request,
     )

@@ -72,7 +72,12 @@ impl EvalSurface<'_> {
         let request = Cost::new(n * (block * dimension as f64 + 2.0) * 8.0, cost.evaluations(n, (k + 1) * (k + 1) - 1))
             + crate::budget::output(written);
         let flag = if self.grid.is_some() { "--grid" } else { "--at" };
-        let what = format!("{} points with partials up to order {k} ({:.1e} operations each)", self.count(), cost.eval * block);
+        let what = format!(
+            "{} points with partials up to order {k} ({:.1e} operations each, driven by {})",
+            self.count(),
+            cost.eval * block,
+            cost.field
+        );
         crate::budget::check_request(flag, &what, cost, request)
     }
 

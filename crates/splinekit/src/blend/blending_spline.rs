@@ -100,6 +100,11 @@ impl<const D: usize> Local<D> {
             }
         }
     }
+    /// Applies the frame to values of the local's own curve: o + T(ℓ − o), T's linear
+    /// part for derivatives.
+    fn to_world(&self, out: &mut [Point<D>]) {
+        self.transform.apply_derivatives_about(&self.origin, out);
+    }
 }
 
 /// How [`BlendingSplineCurve::from_model`] makes a spline from a model. The defaults are
@@ -438,13 +443,29 @@ impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
         b.dedup();
         b
     }
+    /// Sub-curve locals are all the model: where both active locals see it at the same
+    /// point (always but on the seam interval of a model closed by force), the model is
+    /// evaluated once and both frames applied, so nested blending splines cost one
+    /// evaluation per level, not two.
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         let span = self.knots.locate(t, side);
         let n = out.len();
         let mut a: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); n];
         let mut b: SmallVec<[Point<D>; 8]> = smallvec![Point::<D>::zeros(); n];
-        self.locals[span.first].eval(span.t, side, &mut a);
-        self.locals[span.second].eval(span.t + span.second_shift, side, &mut b);
+        match &self.source {
+            Some(ModelSource { model, kind: LocalKind::SubCurve, .. })
+                if span.second_shift == 0.0 || model.is_closed() =>
+            {
+                model.eval_side(span.t, side, &mut a);
+                b.copy_from_slice(&a);
+                self.locals[span.first].to_world(&mut a);
+                self.locals[span.second].to_world(&mut b);
+            }
+            _ => {
+                self.locals[span.first].eval(span.t, side, &mut a);
+                self.locals[span.second].eval(span.t + span.second_shift, side, &mut b);
+            }
+        }
         let mut bf: SmallVec<[f64; 8]> = smallvec![0.0; n];
         self.bfunction.eval(span.w, &mut bf);
         blend_derivatives(&a, &b, &bf, 1.0 / span.width, out);

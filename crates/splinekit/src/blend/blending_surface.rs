@@ -124,6 +124,10 @@ impl<const D: usize> LocalPatch<D> {
             }
         }
     }
+    /// Applies the frame to the model's values: o + T(S − o), T's linear part for partials.
+    fn to_world(&self, out: &mut [Point<D>]) {
+        self.transform.apply_derivatives_about(&self.origin, out);
+    }
     fn set_transform(&mut self, t: Affine<D>) {
         self.transform = t;
         if let PatchShape::Bezier(p) = &mut self.shape {
@@ -390,8 +394,25 @@ impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
         let sv = self.knots_v.locate(v, Side::Right);
         let w = (du + 1) * (dv + 1);
         let mut s: SmallVec<[Point<D>; 36]> = smallvec![Point::<D>::zeros(); 4 * w];
+        // Sub-surface patches are all the model: where the four active patches see it at
+        // the same point (always but on seam intervals of a model closed by force), the
+        // model is evaluated once and each frame applied, so nesting costs one evaluation
+        // per level, not four.
+        let shared = matches!(self.kind, PatchKind::SubSurface)
+            && (su.second_shift == 0.0 || self.model.is_closed_u())
+            && (sv.second_shift == 0.0 || self.model.is_closed_v());
+        if shared {
+            self.model.eval_partials(su.t, sv.t, du, dv, &mut s[..w]);
+            for c in 1..4 {
+                s.copy_within(0..w, c * w);
+            }
+        }
         for (c, (p, pu, pv)) in self.cell(&su, &sv).into_iter().enumerate() {
-            self.patches[p].eval(pu, pv, du, dv, &mut s[c * w..(c + 1) * w]);
+            if shared {
+                self.patches[p].to_world(&mut s[c * w..(c + 1) * w]);
+            } else {
+                self.patches[p].eval(pu, pv, du, dv, &mut s[c * w..(c + 1) * w]);
+            }
         }
         let mut bu: SmallVec<[f64; 8]> = smallvec![0.0; du + 1];
         let mut bv: SmallVec<[f64; 8]> = smallvec![0.0; dv + 1];
