@@ -190,28 +190,16 @@ impl PolygonMesh {
         self.validate()?;
         let ef = self.edge_faces();
         let mut out = PolygonMesh::default();
-        // corner[(f, k)] = index of the new point for corner k of face f.
-        let mut corner: HashMap<(usize, u32), u32> = HashMap::new();
+        // corner[(f, v)] = (index of the new point for vertex v of face f, v's place in f).
+        let mut corner: HashMap<(usize, u32), (u32, usize)> = HashMap::new();
         for (f, face) in self.faces.iter().enumerate() {
-            let n = face.len();
-            let mut ids = Vec::with_capacity(n);
-            for i in 0..n {
-                let mut p = [0.0; 3];
-                for j in 0..n {
-                    let w = if i == j {
-                        (n as f64 + 5.0) / (4.0 * n as f64)
-                    } else {
-                        (3.0 + 2.0 * (std::f64::consts::TAU * (i as f64 - j as f64) / n as f64).cos())
-                            / (4.0 * n as f64)
-                    };
-                    p = add(p, scale(self.vertices[face[j] as usize], w));
-                }
-                let id = out.vertices.len() as u32;
-                out.vertices.push(p);
-                corner.insert((f, face[i]), id);
-                ids.push(id);
+            let points: Vec<[f64; 3]> = face.iter().map(|&v| self.vertices[v as usize]).collect();
+            let first = out.vertices.len() as u32;
+            out.vertices.extend(doo_sabin_corners(&points));
+            for (k, &v) in face.iter().enumerate() {
+                corner.insert((f, v), (first + k as u32, k));
             }
-            out.faces.push(ids);
+            out.faces.push((first..first + face.len() as u32).collect());
         }
         // Edge faces: for an interior edge a→b in face f (and b→a in face g).
         let mut directed: HashMap<Edge, usize> = HashMap::new();
@@ -225,18 +213,23 @@ impl PolygonMesh {
             if let Some(&g) = directed.get(&(b, a))
                 && done.insert(edge(a, b))
             {
-                out.faces.push(vec![corner[&(f, b)], corner[&(f, a)], corner[&(g, a)], corner[&(g, b)]]);
+                out.faces.push(vec![corner[&(f, b)].0, corner[&(f, a)].0, corner[&(g, a)].0, corner[&(g, b)].0]);
             }
         }
-        // Vertex faces: around each interior vertex, in the order of its faces.
-        let interior =
-            |v: u32| -> bool { ef.iter().filter(|(e, _)| e.0 == v || e.1 == v).all(|(_, fs)| fs.len() == 2) };
+        // Vertex faces: around each interior vertex (none of its edges on the boundary), in
+        // the order of its faces.
+        let mut on_boundary = std::collections::HashSet::new();
+        for (e, fs) in &ef {
+            if fs.len() == 1 {
+                on_boundary.extend([e.0, e.1]);
+            }
+        }
         let mut outgoing: HashMap<u32, Vec<(u32, usize)>> = HashMap::new();
         for (&(a, b), &f) in &directed {
             outgoing.entry(a).or_default().push((b, f));
         }
         for (&v, list) in &outgoing {
-            if list.len() < 3 || !interior(v) {
+            if list.len() < 3 || on_boundary.contains(&v) {
                 continue;
             }
             // Walk the faces around v: from face f (edge v→b) the next face owns edge b'→v ... use
@@ -244,12 +237,12 @@ impl PolygonMesh {
             let mut ring = Vec::with_capacity(list.len());
             let (mut w, mut f) = list[0];
             for _ in 0..list.len() {
-                ring.push(corner[&(f, v)]);
+                ring.push(corner[&(f, v)].0);
                 // The face on the other side of edge v→w is the one containing w→v; its
                 // outgoing edge from v is the next around v.
                 let g = directed[&(w, v)];
                 let face = &self.faces[g];
-                let k = face.iter().position(|&x| x == v).expect("v is in g");
+                let k = corner[&(g, v)].1;
                 w = face[(k + 1) % face.len()];
                 f = g;
                 if f == list[0].1 {
@@ -288,6 +281,30 @@ impl PolygonMesh {
         m.repair_normals();
         m
     }
+}
+
+/// The Doo–Sabin points of one n-gon's corners, p_i = Σ_j α_ij v_j, in O(n): with
+/// θ_j = 2πj/n, cos(θ_i − θ_j) = cos θ_i cos θ_j + sin θ_i sin θ_j turns the weights into
+/// p_i = v_i/4 + 3/(4n) Σ_j v_j + 1/(2n) (cos θ_i Σ_j cos θ_j v_j + sin θ_i Σ_j sin θ_j v_j).
+fn doo_sabin_corners(v: &[[f64; 3]]) -> Vec<[f64; 3]> {
+    let n = v.len() as f64;
+    let angle = |j: usize| std::f64::consts::TAU * j as f64 / n;
+    let (mut sum, mut cos, mut sin) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+    for (j, &p) in v.iter().enumerate() {
+        let (s, c) = angle(j).sin_cos();
+        sum = add(sum, p);
+        cos = add(cos, scale(p, c));
+        sin = add(sin, scale(p, s));
+    }
+    let mean = scale(sum, 3.0 / (4.0 * n));
+    v.iter()
+        .enumerate()
+        .map(|(i, &p)| {
+            let (s, c) = angle(i).sin_cos();
+            let turn = scale(add(scale(cos, c), scale(sin, s)), 1.0 / (2.0 * n));
+            add(add(scale(p, 0.25), mean), turn)
+        })
+        .collect()
 }
 
 /// A subdivision-surface scheme.
@@ -356,4 +373,33 @@ pub fn write_obj_polygons(
     }
     out.flush()?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The O(n) corner points equal the mask Σ_j α_ij v_j summed term by term.
+    #[test]
+    fn doo_sabin_corners_match_the_mask() {
+        for n in 3..12 {
+            let v: Vec<[f64; 3]> =
+                (0..n).map(|j| [(j as f64 * 1.7).sin() * 3.0, (j * j) as f64 * 0.1, 1.0 / (j as f64 + 1.0)]).collect();
+            let fast = doo_sabin_corners(&v);
+            for i in 0..n {
+                let mut p = [0.0; 3];
+                for j in 0..n {
+                    let w = if i == j {
+                        (n as f64 + 5.0) / (4.0 * n as f64)
+                    } else {
+                        (3.0 + 2.0 * (std::f64::consts::TAU * (i as f64 - j as f64) / n as f64).cos()) / (4.0 * n as f64)
+                    };
+                    p = add(p, scale(v[j], w));
+                }
+                for c in 0..3 {
+                    assert!((fast[i][c] - p[c]).abs() < 1e-13, "n = {n}, corner {i}: {:?} vs {p:?}", fast[i]);
+                }
+            }
+        }
+    }
 }
