@@ -3,7 +3,7 @@
 use crate::Coefficient;
 use crate::Interval;
 use crate::error::{Error, Result};
-use crate::ops::knot_insertion::insert_knot;
+use crate::ops::knot_insertion::{insert_knot, refine};
 use crate::ops::spline_data::SplineData;
 
 fn count(knots: &[f64], u: f64) -> usize {
@@ -54,10 +54,13 @@ pub fn bezier_segments<T: Coefficient>(data: &SplineData<T>) -> Result<Vec<Bezie
     let mut d = clamp(data)?;
     let Interval { start: a, end: b } = d.domain();
     let mut interior: Vec<f64> = d.knots.iter().copied().filter(|&k| k > a && k < b).collect();
-    interior.dedup();
-    for &u in &interior {
-        d = raise_to(d, u, p)?;
+    // One refinement raises every interior knot to multiplicity p (linear in the knots).
+    let mut missing = Vec::new();
+    for run in interior.chunk_by(|x, y| x == y) {
+        missing.extend(std::iter::repeat_n(run[0], p.saturating_sub(run.len())));
     }
+    d = refine(&d, &missing)?;
+    interior.dedup();
     let mut bounds = vec![a];
     bounds.extend(&interior);
     bounds.push(b);
