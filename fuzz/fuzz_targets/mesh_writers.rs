@@ -15,14 +15,14 @@ fuzz_target!(|data: &[u8]| {
         return;
     }
     let mesh = polygons.triangulate();
-    let _ = obj::write_obj(&mesh, "fuzz");
-    let _ = stl::write_stl_binary(&mesh);
-    let _ = stl::write_stl_ascii(&mesh, "fuzz");
-    let _ = ply::write_ply(&mesh);
+    let _ = obj::write_obj(&mesh, "fuzz", Vec::new());
+    let _ = stl::write_stl_binary(&mesh, Vec::new());
+    let _ = stl::write_stl_ascii(&mesh, "fuzz", Vec::new());
+    let _ = ply::write_ply(&mesh, Vec::new());
     let color = [0.5, 0.5, 0.5, 1.0];
     let _ = GltfScene::single("fuzz", GltfGeometry::Mesh(mesh.clone()), color).to_file_bytes("glb");
     let _ = GltfScene::single("fuzz", GltfGeometry::LineStrip(mesh.positions.clone()), color).to_file_bytes("gltf");
-    let _ = obj::write_obj_polyline(&mesh.positions, true, "fuzz");
+    let _ = obj::write_obj_polyline(&mesh.positions, true, "fuzz", Vec::new());
     let points: Vec<Point<3>> = mesh.positions.iter().map(|p| Point::<3>::from(*p)).collect();
     let mut figure = SvgFigure::new(200.0, 100.0, Projection::view(0.6, 0.45));
     figure.path(&points, false, "#000", 1.0);

@@ -67,3 +67,84 @@ pub fn check_request(field: &str, what: &str, shape: &ShapeCost, request: Cost) 
 pub fn output(numbers: f64) -> Cost {
     Cost::new(numbers * 8.0, numbers * FORMAT_WORK_PER_NUMBER)
 }
+
+/// Bytes of one vertex of a triangle mesh held for output: position, normal and (u, v)
+/// in f64, their f32 copies, and the samples they came from.
+pub const MESH_VERTEX_BYTES: f64 = 160.0;
+/// Bytes of one vertex written as text (OBJ/PLY lines) or binary (STL, glTF).
+pub const MESH_VERTEX_OUTPUT_BYTES: f64 = 120.0;
+/// Work of one mesh vertex besides evaluating the surface: normals, welding, writing.
+pub const MESH_VERTEX_WORK: f64 = 400.0;
+/// Bytes of one cell of an adaptive quad-tree: its leaf, its cached samples and the
+/// vertex and two triangles it becomes.
+pub const ADAPTIVE_CELL_BYTES: f64 = 600.0;
+
+/// A regular mesh of n × n cells of a shape whose points cost `eval`: (n + 1)² vertices
+/// (each a point and its partials), held and written.
+pub fn regular_mesh(n: usize, eval: f64) -> Cost {
+    let vertices = (n as f64 + 1.0).powi(2);
+    Cost::new(vertices * (MESH_VERTEX_BYTES + MESH_VERTEX_OUTPUT_BYTES), vertices * (4.0 * eval + MESH_VERTEX_WORK))
+}
+
+/// The most cells an adaptive mesh of a shape (built at `shape`) may have within the
+/// budget: its memory and its work (about five samples of the surface per cell).
+pub fn adaptive_cells(shape: &ShapeCost) -> usize {
+    let b = current();
+    let by_memory = (b.max_bytes - shape.build.bytes) / ADAPTIVE_CELL_BYTES;
+    let by_work = (b.max_work - shape.build.work) / (5.0 * 4.0 * shape.eval + MESH_VERTEX_WORK);
+    by_memory.min(by_work).max(1.0) as usize
+}
+
+/// The cost of composing one frame of a scene (every object's document checked on its
+/// own first, named `objects[i].shape.…`): surfaces as meshes of their style's density
+/// (default 64), curves as polylines of their density (default: adaptive, up to 200 000
+/// points).
+pub fn scene_frame(scene: &splinekit_scene::SceneDocument) -> Result<Cost> {
+    let mut total = Cost::ZERO;
+    for (i, object) in scene.objects.iter().enumerate() {
+        let cost = object.shape.cost();
+        current().check_shape(&cost).map_err(|e| e.within(&format!("objects[{i}].shape")))?;
+        let drawn = match &object.shape {
+            splinekit_scene::ShapeDocument::Surface(_) => regular_mesh(object.style.density.unwrap_or(64), cost.eval),
+            splinekit_scene::ShapeDocument::Curve(_) => {
+                let points = object.style.density.map_or(200_000.0, |n| n as f64 + 1.0);
+                Cost::new(points * 64.0, points * (3.0 * cost.eval + 100.0))
+            }
+        };
+        total = total + cost.build + drawn;
+    }
+    Ok(total)
+}
+
+/// Bytes the renderer holds per pixel of an image: 4× multisampled colour and depth,
+/// the resolved image, its read-back copy and the image kept.
+pub const RENDER_BYTES_PER_PIXEL: f64 = 4.0 * 4.0 + 4.0 * 4.0 + 4.0 + 4.0 + 4.0;
+/// Work of one pixel of a software render (rasterising, resolving, encoding).
+pub const RENDER_WORK_PER_PIXEL: f64 = 200.0;
+/// The largest buffer the renderer's device accepts (wgpu's default limit, 256 MiB): the
+/// read-back of one image must fit it.
+pub const MAX_RENDER_BUFFER: f64 = 256.0 * 1024.0 * 1024.0;
+
+/// Refuses `frames` renders of a scene at `size` that would not fit the budget or the
+/// renderer's buffers, naming `--size` (one image too large) or `flag` (too many frames);
+/// every rendered frame is kept until the file is written (GIF frames: one byte a pixel
+/// after quantisation, counted at four).
+pub fn check_render(scene: &splinekit_scene::SceneDocument, size: (u32, u32), frames: usize, flag: &str) -> Result<()> {
+    let pixels = size.0 as f64 * size.1 as f64;
+    let row = (size.0 as f64 * 4.0 / 256.0).ceil() * 256.0;
+    if row * size.1 as f64 > MAX_RENDER_BUFFER {
+        anyhow::bail!(
+            "--size: a {}x{} image needs a read-back buffer of {}, more than the renderer's limit of {} (at most about 8000x8000 pixels)",
+            size.0,
+            size.1,
+            Bytes(row * size.1 as f64),
+            Bytes(MAX_RENDER_BUFFER)
+        );
+    }
+    let frame = scene_frame(scene)?;
+    let one = Cost::new(pixels * RENDER_BYTES_PER_PIXEL, pixels * RENDER_WORK_PER_PIXEL) + frame;
+    current().check("--size", &format!("rendering {}x{}", size.0, size.1), one)?;
+    let n = frames as f64;
+    let all = Cost::new(one.bytes + n * pixels * 4.0, n * one.work);
+    Ok(current().check(flag, &format!("{frames} frames of {}x{}", size.0, size.1), all)?)
+}

@@ -68,6 +68,9 @@ pub fn parse_points(text: &str) -> Result<Vec<Vec<f64>>> {
         if let Some((j, v)) = p.iter().enumerate().find(|(_, v)| !v.is_finite()) {
             bail!("points[{i}][{j}]: coordinate is not finite ({v})");
         }
+        for (j, &v) in p.iter().enumerate() {
+            splinekit_scene::points::check_magnitude(&format!("points[{i}][{j}]"), v)?;
+        }
     }
     Ok(pts)
 }

@@ -37,6 +37,18 @@ pub fn adaptive<const D: usize, S: Surface<D> + ?Sized>(
     tolerance: AdaptiveTolerance,
     options: MeshOptions,
 ) -> Result<TriangleMesh> {
+    adaptive_with_limit(surface, base, tolerance, options, MAX_VERTICES)
+}
+
+/// [`adaptive`], refusing (with an error on `tolerance`) a quad-tree of more than
+/// `max_leaves` cells, the budget of the mesh (about two triangles and one vertex each).
+pub fn adaptive_with_limit<const D: usize, S: Surface<D> + ?Sized>(
+    surface: &S,
+    base: (usize, usize),
+    tolerance: AdaptiveTolerance,
+    options: MeshOptions,
+    max_leaves: usize,
+) -> Result<TriangleMesh> {
     if !(tolerance.chord_height > 0.0 && tolerance.chord_height.is_finite()) {
         return Err(Error::invalid(
             "tolerance",
@@ -59,6 +71,7 @@ pub fn adaptive<const D: usize, S: Surface<D> + ?Sized>(
         ));
     }
     let mut tree = QuadTree::new(surface, base, tolerance);
+    tree.max_leaves = max_leaves.min(MAX_VERTICES);
     let scale = 1i64 << tolerance.max_depth;
     for i in 0..base.0 as i64 {
         for j in 0..base.1 as i64 {
@@ -84,6 +97,8 @@ struct QuadTree<'a, const D: usize, S: Surface<D> + ?Sized> {
     leaves: Vec<(i64, i64, i64)>,
     /// Evaluations: lattice point → (position, unit normal or zero).
     cache: HashMap<(i64, i64), ([f64; 3], [f64; 3])>,
+    /// Most leaves the tree may grow.
+    max_leaves: usize,
 }
 
 impl<'a, const D: usize, S: Surface<D> + ?Sized> QuadTree<'a, D, S> {
@@ -95,6 +110,7 @@ impl<'a, const D: usize, S: Surface<D> + ?Sized> QuadTree<'a, D, S> {
             size: (base.0 as i64 * scale, base.1 as i64 * scale),
             leaves: Vec::new(),
             cache: HashMap::new(),
+            max_leaves: MAX_VERTICES,
         }
     }
     fn sample(&mut self, i: i64, j: i64) -> ([f64; 3], [f64; 3]) {
@@ -141,8 +157,11 @@ impl<'a, const D: usize, S: Surface<D> + ?Sized> QuadTree<'a, D, S> {
             self.refine(i + h, j + h, h)?;
         } else {
             self.leaves.push((i, j, size));
-            if self.leaves.len() > MAX_VERTICES {
-                return Err(Error::invalid("tolerance", format!("needs more than {MAX_VERTICES} vertices")));
+            if self.leaves.len() > self.max_leaves {
+                return Err(Error::invalid(
+                    "tolerance",
+                    format!("needs more than {} cells, the budget of this mesh", self.max_leaves),
+                ));
             }
         }
         Ok(())

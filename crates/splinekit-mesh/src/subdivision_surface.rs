@@ -392,7 +392,8 @@ mod tests {
                     let w = if i == j {
                         (n as f64 + 5.0) / (4.0 * n as f64)
                     } else {
-                        (3.0 + 2.0 * (std::f64::consts::TAU * (i as f64 - j as f64) / n as f64).cos()) / (4.0 * n as f64)
+                        (3.0 + 2.0 * (std::f64::consts::TAU * (i as f64 - j as f64) / n as f64).cos())
+                            / (4.0 * n as f64)
                     };
                     p = add(p, scale(v[j], w));
                 }

@@ -18,7 +18,7 @@ use splinekit::{Error, Point, Result};
 use crate::boundary_gluing::{Gluing, Node};
 use crate::triangle_mesh::TriangleMesh;
 
-pub use crate::adaptive_mesh::{AdaptiveTolerance, adaptive};
+pub use crate::adaptive_mesh::{AdaptiveTolerance, adaptive, adaptive_with_limit};
 
 /// Most vertices a surface mesh may have.
 pub const MAX_VERTICES: usize = 20_000_000;

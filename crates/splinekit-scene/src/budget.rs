@@ -61,6 +61,11 @@ pub const BFUNCTION_EVALUATION: f64 = 100.0;
 /// Bytes of one local piece's frame and bookkeeping in a blending spline.
 pub const LOCAL_PIECE: f64 = 256.0;
 
+/// Largest magnitude of a coordinate, knot, weight or model parameter in a document:
+/// about the square root of the largest double (1.8·10³⁰⁸), so that squared distances,
+/// normal equations and products of two coordinates cannot overflow.
+pub const MAX_MAGNITUDE: f64 = 1e150;
+
 /// Highest degree of Bézier, B-spline and NURBS curves and surfaces (per direction) that
 /// documents may ask for. De Casteljau's and Cox–de Boor's algorithms cost O(p²) per point;
 /// at p = 1024 that is about a million operations per point, and polynomials of such degree
@@ -224,7 +229,11 @@ impl Budget {
                 format!("documents nested {} deep, more than the limit of {MAX_NESTING}", cost.depth),
             ));
         }
-        self.check(&cost.field, "building this document and evaluating one point", cost.build + Cost::new(0.0, cost.eval))
+        self.check(
+            &cost.field,
+            "building this document and evaluating one point",
+            cost.build + Cost::new(0.0, cost.eval),
+        )
     }
 }
 

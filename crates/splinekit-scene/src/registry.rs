@@ -288,6 +288,7 @@ macro_rules! model_document {
                 &self,
             ) -> $crate::Result<Box<<$family as $crate::dimension::ShapeFamily>::Shape<D>>> {
                 let $d = self;
+                $crate::registry::check_magnitudes(&serde_json::to_value(self).expect("documents serialise"), "")?;
                 <$family as $crate::registry::ModelFamily>::model_in::<D>(
                     <Self as $crate::registry::KindName>::TYPE,
                     || Ok(Box::new($build?)),
@@ -304,3 +305,17 @@ macro_rules! model_document {
     };
 }
 pub(crate) use model_document;
+
+/// Refuses any number in a (small) document beyond ±[`MAX_MAGNITUDE`](crate::budget::MAX_MAGNITUDE),
+/// naming its path.
+pub fn check_magnitudes(value: &Value, path: &str) -> Result<()> {
+    let join = |key: &str| if path.is_empty() { key.to_string() } else { format!("{path}.{key}") };
+    match value {
+        Value::Number(n) => crate::points::check_magnitude(path, n.as_f64().unwrap_or(0.0)),
+        Value::Array(items) => {
+            items.iter().enumerate().try_for_each(|(i, v)| check_magnitudes(v, &format!("{path}[{i}]")))
+        }
+        Value::Object(map) => map.iter().try_for_each(|(k, v)| check_magnitudes(v, &join(k))),
+        _ => Ok(()),
+    }
+}

@@ -166,7 +166,9 @@ impl DimensionVisitor<Curves> for EvalCurve<'_> {
                 if k > 1 {
                     out.raw(b",")?;
                 }
-                out.point(values[i * w + k].as_slice(), || format!("derivatives[{i}][{}] (order {k} at t = {t})", k - 1))?;
+                out.point(values[i * w + k].as_slice(), || {
+                    format!("derivatives[{i}][{}] (order {k} at t = {t})", k - 1)
+                })?;
             }
             out.raw(b"]")?;
         }

@@ -132,16 +132,17 @@ impl DimensionVisitor<Surfaces> for SurfaceOutput<'_> {
         let w = (k + 1) * (k + 1);
         let (params, values) = self.request.sample(s, k)?;
         let out = self.out;
-        let list = |out: &mut JsonOut, key: &str, item: &mut dyn FnMut(&mut JsonOut, usize) -> Result<()>| -> Result<()> {
-            out.raw(format!("\"{key}\":[").as_bytes())?;
-            for n in 0..params.len() {
-                if n > 0 {
-                    out.raw(b",")?;
+        let list =
+            |out: &mut JsonOut, key: &str, item: &mut dyn FnMut(&mut JsonOut, usize) -> Result<()>| -> Result<()> {
+                out.raw(format!("\"{key}\":[").as_bytes())?;
+                for n in 0..params.len() {
+                    if n > 0 {
+                        out.raw(b",")?;
+                    }
+                    item(out, n)?;
                 }
-                item(out, n)?;
-            }
-            out.raw(b"]")
-        };
+                out.raw(b"]")
+            };
         out.raw(b"{")?;
         list(out, "params", &mut |out, n| out.point(&[params[n].0, params[n].1], || format!("params[{n}]")))?;
         out.raw(b",")?;
@@ -161,7 +162,9 @@ impl DimensionVisitor<Surfaces> for SurfaceOutput<'_> {
                 first = false;
                 list(out, &key, &mut |out, n| {
                     let (u, v) = params[n];
-                    out.point(values[n * w + i * (k + 1) + j].as_slice(), || format!("partials.{key}[{n}] (at ({u}, {v}))"))
+                    out.point(values[n * w + i * (k + 1) + j].as_slice(), || {
+                        format!("partials.{key}[{n}] (at ({u}, {v}))")
+                    })
                 })?;
             }
         }

@@ -78,10 +78,27 @@ pub fn render_frame(
     camera: Option<Camera>,
 ) -> Result<Image> {
     let mut rs = compose(scene, time, size.0 as f32 / size.1 as f32)?;
+    check_drawable(&rs)?;
     if camera.is_some() {
         rs.camera = camera;
     }
     Ok(renderer.render(&rs, size.0, size.1)?)
+}
+
+/// Refuses a composed scene with coordinates that are not finite in single precision (the
+/// renderer's): they would draw nothing and leave a blank image.
+fn check_drawable(rs: &splinekit_render::RenderScene) -> Result<()> {
+    let finite = |p: &[f32; 3]| p.iter().all(|x| x.is_finite());
+    if let Some(i) = rs.meshes.iter().position(|m| !m.positions.iter().all(finite)) {
+        bail!("objects: mesh {i} has coordinates beyond single precision (±3.4e38); the scene cannot be drawn");
+    }
+    if let Some(i) = rs.lines.iter().position(|l| !l.points.iter().all(finite)) {
+        bail!("objects: line {i} has coordinates beyond single precision (±3.4e38); the scene cannot be drawn");
+    }
+    if let Some(i) = rs.points.iter().position(|p| !finite(&p.position)) {
+        bail!("objects: point {i} has coordinates beyond single precision (±3.4e38); the scene cannot be drawn");
+    }
+    Ok(())
 }
 
 /// One camera for every frame of an animation: the scene's at time 0, moved back by 12 %
@@ -98,9 +115,10 @@ pub fn run_render(args: &RenderArgs) -> Result<()> {
     let scene = read_scene(&args.scene)?;
     let size = image_size(args.size.as_deref(), &scene)?;
     let time = args.time.as_deref().map(super::eval::parse_time).transpose()?;
+    crate::budget::check_render(&scene, size, 1, "--size")?;
     let renderer = Renderer::new()?;
     let img = render_frame(&renderer, &scene, time, size, None)?;
-    img.save_png(std::path::Path::new(&args.output)).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
+    crate::output::write_bytes(&img.to_png(), Some(&args.output))
 }
 
 pub fn run_animate(args: &AnimateArgs) -> Result<()> {
@@ -129,6 +147,7 @@ pub fn run_animate(args: &AnimateArgs) -> Result<()> {
     if frames as u64 * size.0 as u64 * size.1 as u64 > 2_000_000_000 {
         bail!("--frames: {frames} frames of {}x{} are more than 2·10⁹ pixels", size.0, size.1);
     }
+    crate::budget::check_render(&scene, size, frames, if args.frames.is_some() { "--frames" } else { "animation" })?;
     let renderer = Renderer::new()?;
     let bar = progress(frames as u64, "rendering");
     let camera = animation_camera(&scene, size)?;
@@ -138,8 +157,9 @@ pub fn run_animate(args: &AnimateArgs) -> Result<()> {
         bar.inc(1);
     }
     bar.finish_and_clear();
-    let file = std::fs::File::create(&args.output).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))?;
-    write_gif(std::io::BufWriter::new(file), &images, fps as f32).map_err(|e| anyhow!("-o: {e}"))
+    let mut gif = Vec::new();
+    write_gif(&mut gif, &images, fps as f32).map_err(|e| anyhow!("-o: {e}"))?;
+    crate::output::write_bytes(&gif, Some(&args.output))
 }
 
 /// A progress bar on standard error (drawn only when standard error is a terminal).

@@ -2,13 +2,13 @@
 
 use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
-use serde_json::Value;
 use splinekit::subdivision::{ChaikinOptions, FourPointOptions, chaikin, four_point, lane_riesenfeld};
 use splinekit_scene::points::{from_points, to_points};
 use splinekit_scene::with_dimension;
 
 use crate::input::read_points;
-use crate::output::{check_finite, write_json};
+use crate::output::JsonOut;
+use splinekit_scene::budget::Cost;
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum Scheme {
@@ -54,6 +54,17 @@ pub struct SubdivideArgs {
 pub fn run(args: &SubdivideArgs) -> Result<()> {
     let pts = read_points(&args.points)?;
     let dim = pts[0].len();
+    let passes = match args.scheme {
+        Scheme::LaneRiesenfeld => args.degree.unwrap_or(3) as f64 + 1.0,
+        _ => 1.0,
+    };
+    let out_points = pts.len() as f64 * 2f64.powi(args.steps.min(1100) as i32) + 4.0;
+    let numbers = out_points * dim as f64;
+    crate::budget::current().check(
+        "--steps",
+        &format!("{} steps on {} points", args.steps, pts.len()),
+        Cost::new(numbers * 8.0 * 3.0, numbers * 4.0 * passes) + crate::budget::output(numbers),
+    )?;
     let out: Vec<Vec<f64>> = with_dimension!(dim, "points", D => {
         let p = to_points::<D>(&pts);
         let r = match args.scheme {
@@ -78,7 +89,14 @@ pub fn run(args: &SubdivideArgs) -> Result<()> {
         Ok(from_points(&r))
     })
     .map_err(|e: anyhow::Error| e)?;
-    let v = Value::from(out);
-    check_finite(&v, "points")?;
-    write_json(&v, args.output.as_deref())
+    let mut json = JsonOut::create(args.output.as_deref())?;
+    json.raw(b"[")?;
+    for (i, p) in out.iter().enumerate() {
+        if i > 0 {
+            json.raw(b",")?;
+        }
+        json.point(p, || format!("points[{i}] of the subdivided polygon"))?;
+    }
+    json.raw(b"]\n")?;
+    json.finish()
 }

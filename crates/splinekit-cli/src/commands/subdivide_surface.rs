@@ -39,6 +39,15 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
     if mesh.faces.is_empty() {
         bail!("mesh: no faces (f lines) found");
     }
+    // Each step makes about four corners of every corner (an n-gon becomes n quads); a
+    // corner holds its point, its place in a face and its hash-map entries.
+    let corners: f64 = mesh.faces.iter().map(|f| f.len() as f64).sum();
+    let out_corners = corners * 4f64.powi(steps as i32);
+    crate::budget::current().check(
+        "--steps",
+        &format!("{steps} steps on {} faces", mesh.faces.len()),
+        splinekit_scene::budget::Cost::new(out_corners * 200.0, out_corners * 300.0),
+    )?;
     let scheme = match args.scheme {
         Scheme::CatmullClark => SurfaceScheme::CatmullClark,
         Scheme::DooSabin => SurfaceScheme::DooSabin,
@@ -60,5 +69,5 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         }
     }
     .map_err(|e| anyhow!("{e}"))?;
-    std::fs::write(&args.output, bytes).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
+    crate::output::write_bytes(&bytes, Some(&args.output))
 }

@@ -7,8 +7,9 @@ use clap::Args;
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
 use splinekit_mesh::export::{ExportError, GltfGeometry, GltfScene, obj, ply, stl};
-use splinekit_mesh::surface_mesh::{adaptive, regular, to3};
+use splinekit_mesh::surface_mesh::{adaptive_with_limit, regular, to3};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, Projection, SvgFigure, TriangleMesh};
+use splinekit_scene::budget::{Cost, ShapeCost};
 use splinekit_scene::{Curves, DimensionVisitor, SceneOrShape, ShapeDocument, Surfaces};
 
 #[derive(Args, Debug)]
@@ -35,7 +36,7 @@ pub struct TessellateArgs {
 /// Most points one curve file may hold.
 const MAX_CURVE_POINTS: usize = 1_000_000;
 /// Most cells per direction of a regular surface mesh.
-const MAX_DENSITY: usize = 4096;
+const MAX_DENSITY: usize = 2048;
 
 struct CurvePoly<'a>(&'a TessellateArgs);
 
@@ -60,12 +61,12 @@ impl DimensionVisitor<Curves> for CurvePoly<'_> {
     }
 }
 
-struct SurfaceTriangles<'a>(&'a TessellateArgs, bool);
+struct SurfaceTriangles<'a>(&'a TessellateArgs, bool, usize);
 
 impl DimensionVisitor<Surfaces> for SurfaceTriangles<'_> {
     type Output = Result<TriangleMesh>;
     fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Self::Output {
-        let (args, uv) = (self.0, self.1);
+        let (args, uv, max_cells) = (self.0, self.1, self.2);
         let options = MeshOptions { uv };
         let mesh = match (args.density, args.tolerance) {
             (Some(n), _) if n == 0 || n > MAX_DENSITY => {
@@ -73,7 +74,8 @@ impl DimensionVisitor<Surfaces> for SurfaceTriangles<'_> {
             }
             (Some(n), _) => regular(s, n, n, options),
             (None, Some(t)) => {
-                adaptive(s, (8, 8), AdaptiveTolerance { chord_height: t, normal_angle: 0.2, max_depth: 10 }, options)
+                let tolerance = AdaptiveTolerance { chord_height: t, normal_angle: 0.2, max_depth: 10 };
+                adaptive_with_limit(s, (8, 8), tolerance, options, max_cells)
             }
             (None, None) => regular(s, 64, 64, options),
         }
@@ -89,9 +91,15 @@ fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, ex
         bail!("-o: scenes are written as .gltf or .glb, not '{}'", args.output);
     }
     let (frames, fps) = if scene.is_animated() { (scene.animation.frames(), scene.animation.fps) } else { (1, 1.0) };
+    let frame = crate::budget::scene_frame(scene)?;
+    crate::budget::current().check(
+        if frames > 1 { "animation" } else { "objects" },
+        &format!("{} objects over {frames} frames", scene.objects.len()),
+        frame.times(frames as f64),
+    )?;
     let gltf = splinekit_render::scene_to_gltf(scene, frames, fps)?;
     let bytes = gltf.to_file_bytes(ext).map_err(|e| anyhow!("{e}"))?;
-    std::fs::write(&args.output, bytes).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
+    crate::output::write_bytes(&bytes, Some(&args.output))
 }
 
 /// The default colour of exported objects (linear RGBA).
@@ -119,6 +127,9 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
     if let Some(t) = &args.time {
         doc.set_time(super::eval::parse_time(t)?);
     }
+    let cost = doc.cost();
+    crate::budget::check_shape(&cost)?;
+    check_request(&doc, args, &cost)?;
     let name = std::path::Path::new(&args.output).file_stem().and_then(|s| s.to_str()).unwrap_or("shape").to_string();
     let bytes: Vec<u8> = match &doc {
         ShapeDocument::Curve(c) => {
@@ -152,7 +163,7 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
             }
             let surface = s.build()?;
             let uv = matches!(ext.as_str(), "obj" | "ply" | "gltf" | "glb");
-            let mesh = surface.visit(SurfaceTriangles(args, uv))?;
+            let mesh = surface.visit(SurfaceTriangles(args, uv, crate::budget::adaptive_cells(&cost)))?;
             match ext.as_str() {
                 "obj" => written(|out| obj::write_obj(&mesh, &name, out))?,
                 "stl" => written(|out| stl::write_stl_binary(&mesh, out))?,
@@ -162,5 +173,24 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
             }
         }
     };
-    std::fs::write(&args.output, bytes).map_err(|e| anyhow!("-o: cannot write {}: {e}", args.output))
+    crate::output::write_bytes(&bytes, Some(&args.output))
+}
+
+/// Refuses a regular polyline or mesh (or the largest adaptive polyline) that would not
+/// fit the budget; adaptive meshes get their budget as a cell limit instead.
+fn check_request(doc: &ShapeDocument, args: &TessellateArgs, cost: &ShapeCost) -> Result<()> {
+    let flag = if args.density.is_some() { "--density" } else { "--tolerance" };
+    match doc {
+        ShapeDocument::Curve(_) => {
+            let points = args.density.map_or(MAX_CURVE_POINTS, |n| n.min(MAX_CURVE_POINTS)) as f64 + 1.0;
+            let request = Cost::new(points * 160.0, points * (4.0 * cost.eval + 300.0));
+            crate::budget::check_request(flag, &format!("a polyline of up to {points} points"), cost, request)
+        }
+        ShapeDocument::Surface(_) if args.tolerance.is_none() => {
+            let n = args.density.unwrap_or(64).min(MAX_DENSITY);
+            let what = format!("a mesh of {n}×{n} cells");
+            crate::budget::check_request("--density", &what, cost, crate::budget::regular_mesh(n, cost.eval))
+        }
+        ShapeDocument::Surface(_) => Ok(()),
+    }
 }

@@ -5,8 +5,8 @@ use splinekit::curve::Curve;
 use splinekit::surface::Surface;
 use splinekit::surface::derived::{CoonsBlend, CoonsPatch, Extrusion, RevolvedSurface, RuledSurface, SweepSurface};
 
-use crate::curves::{BezierDoc, CircleDoc, CurveDocument, LineDoc, TrefoilDoc};
 use crate::budget::ShapeCost;
+use crate::curves::{BezierDoc, CircleDoc, CurveDocument, LineDoc, TrefoilDoc};
 use crate::defaults::{origin, tau, z_axis};
 use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};

@@ -221,6 +221,12 @@ fn tensor_spline_cost(pu: usize, pv: usize, net: &[Vec<Vec<f64>>], extra: f64) -
     let (pu, pv, d) = (pu as f64 + 1.0, pv as f64 + 1.0, d + extra);
     let stored = nu * nv * d + nu + nv + pu + pv;
     let eval = pu * pu + pv * pv + pu * pv * d + (nu * nv).max(2.0).log2();
-    let field = if pu > nu { "degree_u" } else if pv > nv { "degree_v" } else { "control_points" };
+    let field = if pu > nu {
+        "degree_u"
+    } else if pv > nv {
+        "degree_v"
+    } else {
+        "control_points"
+    };
     ShapeCost::new(field, stored * F64, stored, eval)
 }

@@ -5,8 +5,8 @@ use splinekit::curve::Curve;
 use splinekit::surface::{Surface, TrimmedSurface};
 
 use super::SurfaceDocument;
-use crate::curves::{CatmullRomDoc, CurveDocument};
 use crate::budget::ShapeCost;
+use crate::curves::{CatmullRomDoc, CurveDocument};
 use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::registry::{Decoration, DocumentKind};
@@ -45,9 +45,11 @@ impl DocumentKind for TrimmedDoc {
     }
     /// The surface and its loops (each flattened to a polyline when built).
     fn cost(&self) -> ShapeCost {
-        let loops = self.outer.iter().map(|o| o.cost().within("outer")).chain(
-            self.holes.iter().enumerate().map(|(i, h)| h.cost().within(&format!("holes[{i}]"))),
-        );
+        let loops = self
+            .outer
+            .iter()
+            .map(|o| o.cost().within("outer"))
+            .chain(self.holes.iter().enumerate().map(|(i, h)| h.cost().within(&format!("holes[{i}]"))));
         let mut c = loops.fold(self.surface.cost().within("surface"), |acc, l| {
             let mut l = l;
             l.build.work += TRIM_SAMPLES * l.eval;
