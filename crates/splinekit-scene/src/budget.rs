@@ -198,7 +198,7 @@ impl Budget {
     /// Refuses `cost` if it is over the budget, in a message that names `field` and says
     /// what the cost is `for` (e.g. "10⁹ samples").
     pub fn check(&self, field: &str, what: &str, cost: Cost) -> Result<()> {
-        if !(cost.bytes <= self.max_bytes) {
+        if cost.bytes.is_nan() || cost.bytes > self.max_bytes {
             return Err(DocumentError::new(
                 field,
                 format!(
@@ -208,7 +208,7 @@ impl Budget {
                 ),
             ));
         }
-        if !(cost.work <= self.max_work) {
+        if cost.work.is_nan() || cost.work > self.max_work {
             return Err(DocumentError::new(
                 field,
                 format!(

@@ -204,10 +204,9 @@ fn elevate_clamped<T: CoefficientNorm>(data: &SplineData<T>, t: usize) -> Spline
         qw.extend_from_slice(&ebpts[lbz..=rbz]);
         if b < m {
             // Set up the next segment.
-            for j in 0..r.max(0) as usize {
-                bpts[j] = next_bpts[j];
-            }
-            for j in r.max(0) as usize..=p {
+            let kept = r.max(0) as usize;
+            bpts[..kept].copy_from_slice(&next_bpts[..kept]);
+            for j in kept..=p {
                 bpts[j] = pw[b - p + j];
             }
             a = b;
