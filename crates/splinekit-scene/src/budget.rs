@@ -131,8 +131,10 @@ impl ShapeCost {
 /// A B-spline of `degree` p with n control points of `coordinates` numbers each (one more
 /// for NURBS): the points and n + p + 1 knots stored, and per point a span search and
 /// Cox–de Boor's (p + 1)² basis operations plus the (p + 1)·D combination.
+/// Degrees above [`MAX_DEGREE`] are counted as MAX_DEGREE + 1: such documents are refused
+/// by [`check_degree`] when built, with a message about their degree.
 pub fn spline_cost(degree: usize, n: usize, coordinates: usize) -> ShapeCost {
-    let (p, n, d) = (degree as f64, n as f64, coordinates as f64);
+    let (p, n, d) = (degree.min(MAX_DEGREE + 1) as f64, n as f64, coordinates as f64);
     let stored = n * d + n + p + 1.0;
     let eval = (p + 1.0) * (p + 1.0) + (p + 1.0) * d + (n + p).max(2.0).log2();
     ShapeCost::new(if p > n { "degree" } else { "control_points" }, stored * F64, stored, eval)

@@ -348,7 +348,9 @@ fn coordinates(points: &[Vec<f64>]) -> usize {
 /// Casteljau's n(n + 1)/2 interpolations per point.
 fn bezier_cost(points: &[Vec<f64>], extra: usize) -> ShapeCost {
     let (n, d) = (points.len() as f64, (coordinates(points) + extra) as f64);
-    ShapeCost::new("control_points", n * d * crate::budget::F64, n * d, n * n * d)
+    // Degrees above the limit are refused when built (check_bezier_degree).
+    let order = n.min(crate::budget::MAX_DEGREE as f64 + 1.0);
+    ShapeCost::new("control_points", n * d * crate::budget::F64, n * d, order * order * d)
 }
 
 /// Refuses Bézier curves above [`crate::budget::MAX_DEGREE`], naming the points.

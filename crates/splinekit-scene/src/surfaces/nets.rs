@@ -28,7 +28,13 @@ impl DocumentKind for BezierSurfaceDoc {
     /// De Casteljau along every row, then once across: n_u·n_v² + n_u² interpolations.
     fn cost(&self) -> ShapeCost {
         let (nu, nv, d) = net_size(&self.control_points);
-        ShapeCost::new("control_points", nu * nv * d * F64, nu * nv * d, (nu * nv * nv + nu * nu) * d)
+        let cap = |n: f64| n.min(crate::budget::MAX_DEGREE as f64 + 1.0);
+        ShapeCost::new(
+            "control_points",
+            nu * nv * d * F64,
+            nu * nv * d,
+            (cap(nu) * cap(nv).powi(2) + cap(nu).powi(2)) * d,
+        )
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         let (nu, nv, _) = net_size(&self.control_points);
@@ -218,7 +224,8 @@ fn net_size(net: &[Vec<Vec<f64>>]) -> (f64, f64, f64) {
 /// combination.
 fn tensor_spline_cost(pu: usize, pv: usize, net: &[Vec<Vec<f64>>], extra: f64) -> ShapeCost {
     let (nu, nv, d) = net_size(net);
-    let (pu, pv, d) = (pu as f64 + 1.0, pv as f64 + 1.0, d + extra);
+    let cap = |p: usize| p.min(crate::budget::MAX_DEGREE + 1) as f64 + 1.0;
+    let (pu, pv, d) = (cap(pu), cap(pv), d + extra);
     let stored = nu * nv * d + nu + nv + pu + pv;
     let eval = pu * pu + pv * pv + pu * pv * d + (nu * nv).max(2.0).log2();
     let field = if pu > nu {
