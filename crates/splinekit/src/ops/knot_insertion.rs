@@ -90,7 +90,7 @@ pub fn refine<T: Coefficient>(data: &SplineData<T>, new_knots: &[f64]) -> Result
     }
     let mut x = new_knots.to_vec();
     x.sort_by(f64::total_cmp);
-    let (lo, hi) = data.domain();
+    let Interval { start: lo, end: hi } = data.domain();
     let u = &data.knots;
     let mut i = 0;
     while i < x.len() {
