@@ -4,8 +4,10 @@
 //! be finite, since JSON has no infinity and serde_json would print `null`), through a
 //! buffer, so the memory of the output does not grow with the number of values. A write
 //! error, or a value that is not finite, ends the command with exit status 2; a partly
-//! written output file is removed, and standard output is left cut off mid-way (not valid
-//! JSON).
+//! written output file is removed. Standard output is held in memory up to
+//! [`STDOUT_HOLD`] bytes, so a command that fails before producing that much prints
+//! nothing at all (CONTRACT.md section 3); only a larger result that fails part-way is
+//! left cut off mid-way (not valid JSON).
 
 use std::io::{BufWriter, Write};
 
@@ -48,9 +50,14 @@ pub fn write_bytes(bytes: &[u8], output: Option<&str>) -> Result<()> {
     out.finish()
 }
 
+/// Bytes of standard output held back before the first write, so an error found while
+/// computing a result of up to this size leaves standard output empty.
+pub const STDOUT_HOLD: usize = 16 << 20;
+
 /// Where output goes.
 enum Sink {
-    Stdout(BufWriter<std::io::Stdout>),
+    /// Standard output: bytes held until [`STDOUT_HOLD`] is reached or the output finishes.
+    Stdout(Vec<u8>),
     File(BufWriter<std::fs::File>, String),
 }
 
@@ -69,7 +76,7 @@ impl JsonOut {
                 let file = std::fs::File::create(path).map_err(|e| anyhow!("-o: cannot write '{path}': {e}"))?;
                 Sink::File(BufWriter::with_capacity(BUFFER, file), path.to_string())
             }
-            _ => Sink::Stdout(BufWriter::with_capacity(BUFFER, std::io::stdout())),
+            _ => Sink::Stdout(Vec::with_capacity(BUFFER)),
         };
         Ok(JsonOut { sink: Some(sink), number: Vec::with_capacity(32) })
     }
@@ -87,7 +94,10 @@ impl JsonOut {
     /// Writes text as it is (punctuation, keys).
     pub fn raw(&mut self, bytes: &[u8]) -> Result<()> {
         let result = match self.sink.as_mut() {
-            Some(Sink::Stdout(w)) => w.write_all(bytes),
+            Some(Sink::Stdout(held)) => {
+                held.extend_from_slice(bytes);
+                if held.len() >= STDOUT_HOLD { write_stdout(held) } else { Ok(()) }
+            }
             Some(Sink::File(w, _)) => w.write_all(bytes),
             None => return Ok(()),
         };
@@ -121,7 +131,8 @@ impl JsonOut {
         self.raw(b"]")
     }
 
-    /// Drops the output after an error: a partly written file is removed.
+    /// Drops the output after an error: a partly written file is removed, standard output
+    /// still held back is never written.
     pub fn abandon(&mut self) {
         if let Some(Sink::File(_, path)) = self.sink.take() {
             let _ = std::fs::remove_file(&path);
@@ -131,7 +142,7 @@ impl JsonOut {
     /// Flushes everything; a write error here is an error too.
     pub fn finish(mut self) -> Result<()> {
         let result = match self.sink.as_mut() {
-            Some(Sink::Stdout(w)) => w.flush(),
+            Some(Sink::Stdout(held)) => write_stdout(held).and_then(|()| std::io::stdout().flush()),
             Some(Sink::File(w, _)) => w.flush(),
             None => return Ok(()),
         };
@@ -143,6 +154,13 @@ impl JsonOut {
             Err(e) => Err(self.fail(e)),
         }
     }
+}
+
+/// Writes the held bytes to standard output and empties the buffer.
+fn write_stdout(held: &mut Vec<u8>) -> std::io::Result<()> {
+    std::io::stdout().lock().write_all(held)?;
+    held.clear();
+    Ok(())
 }
 
 impl Drop for JsonOut {
