@@ -126,7 +126,8 @@ pub const RENDER_WORK_PER_PIXEL: f64 = 200.0;
 pub const MAX_RENDER_BUFFER: f64 = 256.0 * 1024.0 * 1024.0;
 
 /// Refuses `frames` renders of a scene at `size` that would not fit the budget or the
-/// renderer's buffers, naming `--size` (one image too large) or `flag` (too many frames);
+/// renderer's buffers, naming `objects` (the scene's meshes and polylines too large),
+/// `--size` (the image too large) or `flag` (too many frames);
 /// every rendered frame is kept until the file is written (GIF frames: one byte a pixel
 /// after quantisation, counted at four).
 pub fn check_render(scene: &splinekit_scene::SceneDocument, size: (u32, u32), frames: usize, flag: &str) -> Result<()> {
@@ -142,8 +143,17 @@ pub fn check_render(scene: &splinekit_scene::SceneDocument, size: (u32, u32), fr
         );
     }
     let frame = scene_frame(scene)?;
-    let one = Cost::new(pixels * RENDER_BYTES_PER_PIXEL, pixels * RENDER_WORK_PER_PIXEL) + frame;
-    current().check("--size", &format!("rendering {}x{}", size.0, size.1), one)?;
+    let drawing = format!("drawing {} objects", scene.objects.len());
+    current().check("objects", &drawing, frame)?;
+    let image = Cost::new(pixels * RENDER_BYTES_PER_PIXEL, pixels * RENDER_WORK_PER_PIXEL);
+    let rendering = format!("rendering {}x{}", size.0, size.1);
+    current().check("--size", &rendering, image)?;
+    // Each fits alone: the larger part of the two is the one to blame.
+    let one = image + frame;
+    let b = current();
+    let share = |c: Cost| (c.bytes / b.max_bytes).max(c.work / b.max_work);
+    let blamed = if share(frame) > share(image) { "objects" } else { "--size" };
+    b.check(blamed, &format!("{drawing}, {rendering}"), one)?;
     let n = frames as f64;
     let all = Cost::new(one.bytes + n * pixels * 4.0, n * one.work);
     Ok(current().check(flag, &format!("{frames} frames of {}x{}", size.0, size.1), all)?)

@@ -13,6 +13,10 @@ use crate::boundary_gluing::{Gluing, Node};
 use crate::surface_mesh::{MAX_VERTICES, MeshOptions, lattice_param, to3};
 use crate::triangle_mesh::{TriangleMesh, norm, sub};
 
+/// Levels below the initial grid at which [`adaptive_with_limit`] probes the surface to
+/// estimate the size of the mesh before refining (8 × 8 base cells make a 32 × 32 probe).
+const PROBE_LEVELS: u32 = 2;
+
 /// Tolerances of the adaptive mesh.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AdaptiveTolerance {
@@ -72,6 +76,16 @@ pub fn adaptive_with_limit<const D: usize, S: Surface<D> + ?Sized>(
     }
     let mut tree = QuadTree::new(surface, base, tolerance);
     tree.max_leaves = max_leaves.min(MAX_VERTICES);
+    let estimate = tree.estimated_leaves(base);
+    if estimate > tree.max_leaves as f64 {
+        return Err(Error::invalid(
+            "tolerance",
+            format!(
+                "{:?} needs about {estimate:.2e} cells (estimated from the surface's flatness on a coarse grid), more than the budget of {} cells of this mesh",
+                tolerance.chord_height, tree.max_leaves
+            ),
+        ));
+    }
     let scale = 1i64 << tolerance.max_depth;
     for i in 0..base.0 as i64 {
         for j in 0..base.1 as i64 {
@@ -126,8 +140,10 @@ impl<'a, const D: usize, S: Surface<D> + ?Sized> QuadTree<'a, D, S> {
         self.cache.insert((i, j), s);
         s
     }
-    /// Whether the cell is farther than the chord height from flat or its normals turn.
-    fn needs_split(&mut self, i: i64, j: i64, size: i64) -> bool {
+    /// How far the cell is from flat: the largest distance of its centre and edge midpoints
+    /// from the bilinear patch and the straight edges through its corners, and the largest
+    /// turn of the normal from its centre to its corners and midpoints, as the smallest cosine.
+    fn flatness(&mut self, i: i64, j: i64, size: i64) -> (f64, f64) {
         let corners = [(i, j), (i + size, j), (i + size, j + size), (i, j + size)];
         let c: Vec<_> = corners.iter().map(|&(a, b)| self.sample(a, b)).collect();
         let h = size / 2;
@@ -135,18 +151,46 @@ impl<'a, const D: usize, S: Surface<D> + ?Sized> QuadTree<'a, D, S> {
         let mid =
             [self.sample(i + h, j), self.sample(i + size, j + h), self.sample(i + h, j + size), self.sample(i, j + h)];
         let bilinear: [f64; 3] = std::array::from_fn(|k| 0.25 * (c[0].0[k] + c[1].0[k] + c[2].0[k] + c[3].0[k]));
-        let mut far = norm(sub(centre.0, bilinear)) > self.tolerance.chord_height;
+        let mut chord = norm(sub(centre.0, bilinear));
         for k in 0..4 {
             let (a, b) = (c[k].0, c[(k + 1) % 4].0);
             let m: [f64; 3] = std::array::from_fn(|x| 0.5 * (a[x] + b[x]));
-            far |= norm(sub(mid[k].0, m)) > self.tolerance.chord_height;
+            chord = chord.max(norm(sub(mid[k].0, m)));
         }
-        let cos = self.tolerance.normal_angle.cos();
-        let turned = c.iter().chain(mid.iter()).any(|s| {
-            let d = s.1[0] * centre.1[0] + s.1[1] * centre.1[1] + s.1[2] * centre.1[2];
-            norm(s.1) > 0.5 && norm(centre.1) > 0.5 && d < cos
-        });
-        far || turned
+        let mut cos: f64 = 1.0;
+        for s in c.iter().chain(mid.iter()) {
+            if norm(s.1) > 0.5 && norm(centre.1) > 0.5 {
+                cos = cos.min(s.1[0] * centre.1[0] + s.1[1] * centre.1[1] + s.1[2] * centre.1[2]);
+            }
+        }
+        (chord, cos)
+    }
+    /// Whether the cell is farther than the chord height from flat or its normals turn.
+    fn needs_split(&mut self, i: i64, j: i64, size: i64) -> bool {
+        let (chord, cos) = self.flatness(i, j, size);
+        chord > self.tolerance.chord_height || cos < self.tolerance.normal_angle.cos()
+    }
+    /// An estimate of the leaves the refinement will make, from the cells `PROBE_LEVELS`
+    /// below the initial grid: a smooth surface's chord height falls as h² and its normals'
+    /// turn as h in a cell of size h, so a probe cell of chord height e and turn θ becomes
+    /// about max(e / chord_height, (θ / normal_angle)²) leaves (at least one, at most
+    /// 4^(levels left)). Its samples stay in the cache for the refinement.
+    fn estimated_leaves(&mut self, base: (usize, usize)) -> f64 {
+        let probe = PROBE_LEVELS.min(self.tolerance.max_depth);
+        let size = 1i64 << (self.tolerance.max_depth - probe);
+        let most = 4f64.powi((self.tolerance.max_depth - probe) as i32);
+        let cells = (base.0 as i64) << probe;
+        let rows = (base.1 as i64) << probe;
+        let mut total = 0.0;
+        for a in 0..cells {
+            for b in 0..rows {
+                let (chord, cos) = self.flatness(a * size, b * size, size);
+                let by_chord = chord / self.tolerance.chord_height;
+                let by_angle = (cos.clamp(-1.0, 1.0).acos() / self.tolerance.normal_angle).powi(2);
+                total += by_chord.max(by_angle).clamp(1.0, most);
+            }
+        }
+        total
     }
     fn refine(&mut self, i: i64, j: i64, size: i64) -> Result<()> {
         if size > 1 && self.needs_split(i, j, size) {
@@ -160,7 +204,10 @@ impl<'a, const D: usize, S: Surface<D> + ?Sized> QuadTree<'a, D, S> {
             if self.leaves.len() > self.max_leaves {
                 return Err(Error::invalid(
                     "tolerance",
-                    format!("needs more than {} cells, the budget of this mesh", self.max_leaves),
+                    format!(
+                        "{:?} needs more than {} cells, the budget of this mesh",
+                        self.tolerance.chord_height, self.max_leaves
+                    ),
                 ));
             }
         }

@@ -74,6 +74,15 @@ impl<const D: usize> Polyline<D> {
         }
         let mut ps = vec![Point::<D>::zeros(); ts.len()];
         curve.eval_many(&ts, 0, &mut ps);
+        let estimate = estimated_points(curve, &ts, &ps, tolerance);
+        if estimate > max_points as f64 {
+            return Err(Error::invalid(
+                "tolerance",
+                format!(
+                    "{tolerance:?} needs about {estimate:.2e} points (estimated from the curve's flatness between its first samples), more than the limit of {max_points}"
+                ),
+            ));
+        }
         // 2. Greedy chords over the samples.
         let mut keep = vec![0usize];
         let mut i = 0;
@@ -110,7 +119,7 @@ impl<const D: usize> Polyline<D> {
                     if points.len() > max_points {
                         return Err(Error::invalid(
                             "tolerance",
-                            format!("{tolerance} needs more than {max_points} points"),
+                            format!("{tolerance:?} needs more than {max_points} points"),
                         ));
                     }
                 }
@@ -132,6 +141,25 @@ impl<const D: usize> Polyline<D> {
         }
         l
     }
+}
+
+/// An estimate of the points adaptive flattening to `tolerance` makes, before it starts:
+/// a smooth arc's chord height falls as h² with its parameter step h, so a sample step whose
+/// midpoint lies e from its chord needs about √(e / (0.8·tolerance)) segments (at least
+/// one, at most 2²⁴ — the depth limit of the halving).
+fn estimated_points<const D: usize, C: Curve<D> + ?Sized>(
+    curve: &C,
+    ts: &[f64],
+    ps: &[Point<D>],
+    tolerance: f64,
+) -> f64 {
+    let mids: Vec<f64> = ts.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
+    let mut qs = vec![Point::<D>::zeros(); mids.len()];
+    curve.eval_many(&mids, 0, &mut qs);
+    let most = (1u64 << 24) as f64;
+    (0..mids.len())
+        .map(|i| (distance_to_segment(&qs[i], &ps[i], &ps[i + 1]) / (0.8 * tolerance)).sqrt().clamp(1.0, most))
+        .sum()
 }
 
 /// Distance from `p` to the segment [a, b].

@@ -309,3 +309,27 @@ fn writers_refuse_numbers_the_format_cannot_hold_and_report_write_errors() {
         assert!(e.to_string().contains("no space left on device"), "{e}");
     }
 }
+
+#[test]
+fn adaptive_meshes_estimate_their_size_before_refining() {
+    let sphere = Sphere::new(2.0).unwrap();
+    let tol = AdaptiveTolerance { chord_height: 1e-3, normal_angle: 0.2, max_depth: 10 };
+    let mesh = adaptive(&sphere, (8, 8), tol, MeshOptions::default()).unwrap();
+    let cells = mesh.triangles.len() / 2;
+    // The estimate is within a small factor of the cells made: a budget well above them
+    // passes, one far below is refused at once by the estimate (not by the running count).
+    let roomy =
+        splinekit_mesh::adaptive_mesh::adaptive_with_limit(&sphere, (8, 8), tol, MeshOptions::default(), 3 * cells);
+    assert!(roomy.is_ok(), "{:?}", roomy.err());
+    let tight =
+        splinekit_mesh::adaptive_mesh::adaptive_with_limit(&sphere, (8, 8), tol, MeshOptions::default(), cells / 4);
+    let message = tight.unwrap_err().to_string();
+    assert!(message.starts_with("tolerance:") && message.contains("estimated"), "{message}");
+    // A tolerance far below the sphere's size is refused before any refinement.
+    let tiny = AdaptiveTolerance { chord_height: 1e-12, ..tol };
+    let started = std::time::Instant::now();
+    let refused =
+        splinekit_mesh::adaptive_mesh::adaptive_with_limit(&sphere, (8, 8), tiny, MeshOptions::default(), 1 << 24);
+    assert!(refused.unwrap_err().to_string().contains("estimated"));
+    assert!(started.elapsed().as_secs_f64() < 5.0, "refusal is immediate (probe only)");
+}

@@ -89,3 +89,16 @@ fn svg_maps_points_into_the_picture() {
     let e = far.render().unwrap_err().to_string();
     assert!(e.contains("not a finite number, which SVG needs"), "{e}");
 }
+
+#[test]
+fn adaptive_polylines_estimate_their_size_before_flattening() {
+    let circle = Circle::new(1.0).unwrap();
+    let made = Polyline::adaptive(&circle, 1e-6).unwrap().points.len();
+    // Within a small factor of what is made: 3× the points passes, a quarter is refused at
+    // once by the estimate.
+    assert!(Polyline::adaptive_with_limit(&circle, 1e-6, 3 * made).is_ok());
+    let message = Polyline::adaptive_with_limit(&circle, 1e-6, made / 4).unwrap_err().to_string();
+    assert!(message.starts_with("tolerance:") && message.contains("estimated"), "{message}");
+    let message = Polyline::adaptive(&circle, 1e-300).unwrap_err().to_string();
+    assert!(message.contains("1e-300") && message.contains("estimated"), "{message}");
+}

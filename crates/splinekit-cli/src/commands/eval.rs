@@ -48,11 +48,18 @@ pub struct EvalArgs {
     pub output: Option<String>,
 }
 
-/// Parses `--time` (a finite number of seconds).
+/// The largest `--time` in seconds (about 31 700 years): far beyond it the phase of a
+/// motion, 2π f T + φ, has lost every digit (and near 1e308 it overflows).
+pub(crate) const MAX_TIME: f64 = 1e12;
+
+/// Parses `--time` (a finite number of seconds within ±[`MAX_TIME`]).
 pub(crate) fn parse_time(text: &str) -> Result<f64> {
     let t: f64 = text.trim().parse().map_err(|_| anyhow!("--time: '{text}' is not a number"))?;
     if !t.is_finite() {
         bail!("--time: must be finite, got {t}");
+    }
+    if t.abs() > MAX_TIME {
+        bail!("--time: {t} s is beyond the limit of ±{MAX_TIME:e} s");
     }
     Ok(t)
 }

@@ -48,7 +48,7 @@ pub fn run(args: &RefineArgs) -> Result<()> {
             "type: refine works on bezier, rational_bezier, bspline and nurbs curve documents; surface refinement is not on the command line yet"
         );
     };
-    let out = refine(&doc, &r)?;
+    let out = refine(&doc, &r).map_err(|e| named_by_flag(&e.to_string(), &r))?;
     if let Refinement::Remove { knots, .. } = &r {
         if out.removed < knots.len() {
             eprintln!("refine: removed {} of {} knots within the tolerance", out.removed, knots.len());
@@ -57,4 +57,21 @@ pub fn run(args: &RefineArgs) -> Result<()> {
     let v = out.document.to_value();
     check_finite(&v, "control_points")?;
     write_json(&v, args.output.as_deref())
+}
+
+/// The kernel and the document layer name the arguments of knot operations `insert`,
+/// `elevate`, `remove` and `knots`; on the command line the user wrote them as flags, so an
+/// error about one of them names the flag.
+fn named_by_flag(message: &str, r: &Refinement) -> anyhow::Error {
+    let flag = match r {
+        Refinement::Insert(_) => "--insert",
+        Refinement::Elevate(_) => "--elevate",
+        Refinement::Remove { .. } => "--remove",
+    };
+    for argument in ["insert", "elevate", "remove", "knots"] {
+        if let Some(rest) = message.strip_prefix(argument).and_then(|r| r.strip_prefix(':')) {
+            return anyhow::anyhow!("{flag}:{rest}");
+        }
+    }
+    anyhow::anyhow!("{message}")
 }

@@ -64,8 +64,17 @@ pub enum Motion {
     },
 }
 
-fn wave(amplitude: f64, frequency: f64, phase: f64, time: f64) -> f64 {
-    amplitude * (std::f64::consts::TAU * frequency * time + phase).sin()
+/// The angle `theta` of a motion at `time` (2π f T + φ, or ω T + φ for a rotation),
+/// refused when it overflowed: a time so large that the motion's phase is no longer a number.
+fn finite_phase(theta: f64, time: f64) -> Result<f64> {
+    if !theta.is_finite() {
+        return Err(Error::invalid("time", format!("at {time} s the phase of a motion overflows (got {theta})")));
+    }
+    Ok(theta)
+}
+
+fn wave(amplitude: f64, frequency: f64, phase: f64, time: f64) -> Result<f64> {
+    Ok(amplitude * finite_phase(std::f64::consts::TAU * frequency * time + phase, time)?.sin())
 }
 
 fn finite(field: &str, values: &[(&str, f64)]) -> Result<()> {
@@ -131,16 +140,17 @@ impl Motion {
         };
         Ok(match self {
             Motion::Oscillate { direction, amplitude, frequency, phase } => Affine::translation(
-                Point::<D>::from_iterator(direction.iter().copied()) * wave(*amplitude, *frequency, *phase, time),
+                Point::<D>::from_iterator(direction.iter().copied()) * wave(*amplitude, *frequency, *phase, time)?,
             ),
             Motion::Rotate { axis, speed, phase, pivot } => {
-                about_pivot(Affine::rotation_in(axis.as_deref(), speed * time + phase)?, pivot)
+                let angle = finite_phase(speed * time + phase, time)?;
+                about_pivot(Affine::rotation_in(axis.as_deref(), angle)?, pivot)
             }
             Motion::Swing { axis, amplitude, frequency, phase, pivot } => {
-                about_pivot(Affine::rotation_in(axis.as_deref(), wave(*amplitude, *frequency, *phase, time))?, pivot)
+                about_pivot(Affine::rotation_in(axis.as_deref(), wave(*amplitude, *frequency, *phase, time)?)?, pivot)
             }
             Motion::Pulse { amplitude, frequency, phase } => {
-                Affine::uniform_scale(1.0 + wave(*amplitude, *frequency, *phase, time))
+                Affine::uniform_scale(1.0 + wave(*amplitude, *frequency, *phase, time)?)
             }
         })
     }
@@ -207,5 +217,16 @@ mod tests {
         let t = Track { local: 3usize, motions: vec![osc, pulse] };
         let (a, b) = (t.at::<3>(0.3, &o).unwrap(), t.at::<3>(1.3, &o).unwrap());
         assert!((a.linear - b.linear).norm() < 1e-14 && (a.translation - b.translation).norm() < 1e-14);
+    }
+
+    #[test]
+    fn a_time_that_overflows_the_phase_names_the_time() {
+        let o = Point::<3>::zeros();
+        let swing = Motion::Swing { axis: None, amplitude: 0.3, frequency: 2.0, phase: 0.0, pivot: None };
+        let spin = Motion::Rotate { axis: None, speed: 4.0, phase: 0.0, pivot: None };
+        for m in [swing, spin] {
+            let e = Track { local: 0usize, motions: vec![m] }.at::<3>(1e308, &o).unwrap_err().to_string();
+            assert!(e.starts_with("time:") && e.contains("overflows"), "{e}");
+        }
     }
 }
