@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # OpenCASCADE judges splinekit's STEP export (tests/step/ocp_judge.py): the exact forms
 # and a set of example documents are converted with their reports, then read by OCP's
-# STEPControl_Reader and evaluated at the reported parameters.
+# STEPControl_Reader and evaluated at the reported parameters. Then the import: files OCP
+# writes are read back by splinekit (tests/step/ocp_writes.py).
 # usage: .ci/step-judge.sh PATH/TO/splinekit
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,3 +19,7 @@ for f in tests/step/shapes/exact_forms.json examples/scenes/{bezier_surface,bspl
     args+=("$out/$n.step" "$out/$n.report.json")
 done
 "$py" tests/step/ocp_judge.py "${args[@]}" 2>/dev/null | grep -E '^(ok|FAIL|[0-9]+ passed)'
+
+# The other way: STEP files that OpenCASCADE writes (splines, rational ones, a revolution,
+# an extrusion, a plate with a hole, a box) come back with the same geometry and trims.
+"$py" tests/step/ocp_writes.py "$bin" "$out/from-occ" 2>/dev/null | grep -E '^(ok|FAIL|[0-9]+ passed)'

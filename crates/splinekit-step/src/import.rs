@@ -20,6 +20,11 @@ pub struct Face {
     pub surface: Surface,
     /// Parameter-space loops; `outer` first when known.
     pub loops: Vec<Vec<Curve>>,
+    /// For each piece of each loop, the edge's `#id` and the other pcurve of a seam edge (a
+    /// closed surface's seam carries one pcurve per side; a loop that uses the seam twice
+    /// runs once along each, and which is which is told by continuity, see
+    /// `documents::import`).
+    pub seam_twins: Vec<Vec<Option<(u64, Curve)>>>,
     /// Which loop is the outer bound (`FACE_OUTER_BOUND`), if one is marked.
     pub outer: Option<usize>,
 }
@@ -274,6 +279,14 @@ impl Reader<'_> {
     fn axes(&mut self, id: u64) -> Conv<Axes> {
         self.with(id, |r, inst| {
             let origin = to3(&r.point(reference(param(inst, 1)?)?)?);
+            if inst.records[0].name == "AXIS2_PLACEMENT_2D" {
+                // (name, location, ref_direction): the plane's own z, x from ref_direction.
+                let x = match param(inst, 2)? {
+                    Param::Unset => [1.0, 0.0, 0.0],
+                    p => r.direction(reference(p)?)?,
+                };
+                return Ok(Axes { origin, z: [0.0, 0.0, 1.0], x: unit([x[0], x[1], 0.0])? });
+            }
             let z = match param(inst, 2)? {
                 Param::Unset => [0.0, 0.0, 1.0],
                 p => r.direction(reference(p)?)?,
@@ -451,6 +464,7 @@ impl Reader<'_> {
         let surface_id = reference(param(inst, 2)?)?;
         let surface = self.surface(surface_id)?;
         let mut loops = Vec::new();
+        let mut seam_twins = Vec::new();
         let mut outer = None;
         for bound in refs(param(inst, 1)?)? {
             let b = self.get(bound)?;
@@ -466,41 +480,54 @@ impl Reader<'_> {
             for oe in refs(param(&lp, 1)?)? {
                 let oe = self.get(oe)?;
                 let oriented = boolean(param(&oe, 4)?)?;
-                let edge = self.get(reference(param(&oe, 3)?)?)?;
+                let edge_id = reference(param(&oe, 3)?)?;
+                let edge = self.get(edge_id)?;
                 let mut ends = Vec::with_capacity(2);
                 for v in [1, 2] {
                     let vp = self.get(reference(param(&edge, v)?)?)?;
                     ends.push(to3(&self.point(reference(param(&vp, 1)?)?)?));
                 }
                 let same_sense = boolean(param(&edge, 4)?)?;
-                let (space, pcurve) = self.pcurve_on(reference(param(&edge, 3)?)?, surface_id)?;
+                let (space, pcurves) = self.pcurves_on(reference(param(&edge, 3)?)?, surface_id)?;
                 let (t0, t1) = (parameter_on(&space, ends[0])?, parameter_on(&space, ends[1])?);
                 let (lo, mut hi) = if same_sense { (t0, t1) } else { (t1, t0) };
                 if hi <= lo && matches!(space, Curve::Circle { .. } | Curve::Ellipse { .. }) {
                     hi += std::f64::consts::TAU;
                 }
-                let piece = Curve::Trimmed { basis: Box::new(pcurve), start: lo, end: hi };
-                pieces.push((piece, oriented == same_sense));
+                let trim = |c: &Curve| Curve::Trimmed { basis: Box::new(c.clone()), start: lo, end: hi };
+                pieces.push((trim(&pcurves[0]), pcurves.get(1).map(|c| (edge_id, trim(c))), oriented == same_sense));
             }
             if !forward {
                 pieces.reverse();
-                pieces.iter_mut().for_each(|p| p.1 = !p.1);
+                pieces.iter_mut().for_each(|p| p.2 = !p.2);
             }
-            let lp: Option<Vec<Curve>> =
-                pieces.into_iter().map(|(c, fwd)| if fwd { Some(c) } else { reversed(c) }).collect();
-            loops.push(lp.ok_or_else(|| Unsupported::Type("face loop with a reversed conic pcurve".into()))?);
+            let run = |c: Curve, fwd: bool| if fwd { Some(c) } else { reversed(c) };
+            let mut curves = Vec::new();
+            let mut twins = Vec::new();
+            for (c, twin, fwd) in pieces {
+                let no_reversal = || Unsupported::Type("face loop with a reversed ellipse pcurve".into());
+                curves.push(run(c, fwd).ok_or_else(no_reversal)?);
+                twins.push(match twin {
+                    Some((id, t)) => Some((id, run(t, fwd).ok_or_else(no_reversal)?)),
+                    None => None,
+                });
+            }
+            loops.push(curves);
+            seam_twins.push(twins);
         }
-        Ok(Face { name: inst_name(inst), surface, loops, outer })
+        Ok(Face { name: inst_name(inst), surface, loops, seam_twins, outer })
     }
 
-    /// The 3-D curve of an edge's geometry and its 2-D pcurve on the surface `surface_id`
-    /// (same parametrisation, as ISO 10303-42 requires of a surface curve).
-    fn pcurve_on(&mut self, edge_geometry: u64, surface_id: u64) -> Conv<(Curve, Curve)> {
+    /// The 3-D curve of an edge's geometry and its 2-D pcurves on the surface `surface_id`
+    /// (same parametrisation, as ISO 10303-42 requires of a surface curve): one, or two for
+    /// a seam curve on a closed surface.
+    fn pcurves_on(&mut self, edge_geometry: u64, surface_id: u64) -> Conv<(Curve, Vec<Curve>)> {
         let g = self.get(edge_geometry)?;
         if !matches!(g.records[0].name.as_str(), "SURFACE_CURVE" | "SEAM_CURVE") {
             return Err(Unsupported::Type(format!("face edge without pcurves ({})", g.records[0].name)));
         }
         let space = self.curve(reference(param(&g, 1)?)?)?;
+        let mut found = Vec::new();
         for pc in refs(param(&g, 2)?)? {
             let pci = self.get(pc)?;
             if pci.records[0].name != "PCURVE" || reference(param(&pci, 1)?)? != surface_id {
@@ -510,14 +537,27 @@ impl Reader<'_> {
             let items = refs(param(&rep, 1)?)?;
             self.visited.insert(reference(param(&rep, 2)?)?);
             let c = items.first().ok_or_else(|| StepError::plain("an empty pcurve representation"))?;
-            return Ok((space, self.curve(*c)?));
+            found.push(self.curve(*c)?);
         }
-        Err(Unsupported::Type("face edge without a pcurve on its face's surface".into()))
+        if found.is_empty() {
+            return Err(Unsupported::Type("face edge without a pcurve on its face's surface".into()));
+        }
+        Ok((space, found))
     }
 }
 
-/// The same curve run backwards: c(a + b − t) on [a, b] (lines, splines and trimmed
-/// lines and splines; `None` for conics).
+/// A circle run backwards over the same parameter range [a, b]: with φ = a + b,
+/// c(φ − t) = o + r(cos t x′ + sin t y′) where x′ = cos φ x + sin φ y and y′ = sin φ x − cos φ y,
+/// the circle of the placement (o, −z, x′).
+fn reversed_circle(axes: Axes, radius: f64, (a, b): (f64, f64)) -> Curve {
+    let phi = a + b;
+    let (x, y) = (axes.x, axes.y());
+    let x_reversed: P3 = std::array::from_fn(|k| phi.cos() * x[k] + phi.sin() * y[k]);
+    Curve::Circle { axes: Axes { origin: axes.origin, z: axes.z.map(|c| -c), x: x_reversed }, radius }
+}
+
+/// The same curve run backwards: c(a + b − t) on [a, b] (lines, splines, circles and their
+/// trimmed pieces; `None` for ellipses, whose reversal is no ellipse in standard form).
 pub fn reversed(c: Curve) -> Option<Curve> {
     Some(match c {
         Curve::Spline(mut s) => {
@@ -539,8 +579,12 @@ pub fn reversed(c: Curve) -> Option<Curve> {
                 let (a, b) = (s.knots[s.degree], s.knots[s.knots.len() - 1 - s.degree]);
                 Curve::Trimmed { basis: Box::new(reversed(Curve::Spline(s))?), start: a + b - end, end: a + b - start }
             }
+            Curve::Circle { axes, radius } => {
+                Curve::Trimmed { basis: Box::new(reversed_circle(axes, radius, (start, end))), start, end }
+            }
             _ => return None,
         },
+        Curve::Circle { axes, radius } => reversed_circle(axes, radius, (0.0, std::f64::consts::TAU)),
         Curve::Line { origin, direction } => {
             let end: Vec<f64> = origin.iter().zip(&direction).map(|(o, d)| o + d).collect();
             Curve::Line { origin: end, direction: direction.iter().map(|d| -d).collect() }
@@ -580,4 +624,32 @@ fn parameter_on(c: &Curve, p: P3) -> Conv<f64> {
         Curve::Spline(s) => crate::kernel::closest_parameter(s, p)?,
         Curve::Trimmed { basis, .. } => parameter_on(basis, p)?,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn circle_point(axes: &Axes, r: f64, t: f64) -> P3 {
+        axes.at(r * t.cos(), r * t.sin(), 0.0)
+    }
+
+    #[test]
+    fn a_reversed_circle_runs_the_same_points_backwards() {
+        let axes = Axes { origin: [1.0, -2.0, 0.5], z: [0.0, 0.6, 0.8], x: [1.0, 0.0, 0.0] };
+        let (a, b) = (0.4, 2.9);
+        let Curve::Trimmed { basis, start, end } =
+            reversed(Curve::Trimmed { basis: Box::new(Curve::Circle { axes, radius: 2.0 }), start: a, end: b })
+                .expect("circles reverse")
+        else {
+            panic!("a trimmed circle stays trimmed")
+        };
+        let Curve::Circle { axes: back, radius } = *basis else { panic!("still a circle") };
+        assert_eq!((start, end, radius), (a, b, 2.0));
+        for k in 0..=10 {
+            let t = a + (b - a) * k as f64 / 10.0;
+            let (p, q) = (circle_point(&back, radius, t), circle_point(&axes, 2.0, a + b - t));
+            assert!((0..3).all(|i| (p[i] - q[i]).abs() < 1e-14), "{p:?} vs {q:?}");
+        }
+    }
 }

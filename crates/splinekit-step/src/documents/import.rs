@@ -5,8 +5,8 @@
 //! world frame stay `circle`/`ellipse`, elsewhere they become exact rational arcs (same
 //! points, rational parametrisation); quadrics at the world frame with the export's
 //! ranges stay model surfaces, elsewhere they become exact revolutions. Faces on planes,
-//! splines, revolutions and extrusions become `trimmed` documents whose loops are their
-//! pcurves joined into one exact B-spline (NURBS) loop each.
+//! splines, cylinders, revolutions and extrusions become `trimmed` documents whose loops
+//! are their pcurves joined into one exact B-spline (NURBS) loop each.
 
 use splinekit::Point;
 use splinekit::curve::{CircleFrame, Curve as KernelCurve, NurbsCurve};
@@ -39,6 +39,7 @@ pub fn import_items(file: &StepFile) -> Result<ImportedDocuments> {
     let mut out = ImportedDocuments::default();
     let mut skipped = found.not_understood;
     for (name, g) in found.geometry {
+        let label = if name.is_empty() { what(&g) } else { format!("'{name}' ({})", what(&g)) };
         let converted = match &g {
             GeometryOrFace::Curve(c) => curve_doc(c).map(|d| d.map(ShapeDocument::Curve)),
             GeometryOrFace::Surface(s) => surface_doc(s).map(|d| d.map(ShapeDocument::Surface)),
@@ -54,11 +55,31 @@ pub fn import_items(file: &StepFile) -> Result<ImportedDocuments> {
             // Faces travel as their `trimmed` documents; STEP → STEP writes their surfaces
             // (face export is still to come).
             (Some(doc), None) => out.items.push((face_item(&name, &doc)?, doc)),
-            (None, _) => *skipped.entry(format!("{name} (no document form)")).or_default() += 1,
+            (None, _) => *skipped.entry(format!("{label} (no document form)")).or_default() += 1,
         }
     }
     out.not_understood = skipped.into_iter().filter(|(_, c)| *c > 0).collect();
     Ok(out)
+}
+
+/// What a converted object is, for the list of those without a document form.
+fn what(g: &GeometryOrFace) -> String {
+    let surface = |s: &Surface| match s {
+        Surface::Plane(_) => "plane",
+        Surface::Cylinder { .. } => "cylinder",
+        Surface::Cone { .. } => "cone",
+        Surface::Sphere { .. } => "sphere",
+        Surface::Torus { .. } => "torus",
+        Surface::Spline(_) => "B-spline surface",
+        Surface::Revolution { .. } => "surface of revolution",
+        Surface::Extrusion { .. } => "surface of linear extrusion",
+        Surface::Trimmed { .. } => "trimmed surface",
+    };
+    match g {
+        GeometryOrFace::Curve(_) => "curve".to_string(),
+        GeometryOrFace::Surface(s) => surface(s).to_string(),
+        GeometryOrFace::Face(f) => format!("face on a {}", surface(&f.surface)),
+    }
 }
 
 /// A face's STEP item for STEP → STEP: its document's surface, exported.
@@ -389,12 +410,26 @@ fn loop_piece(c: &Curve) -> Result<Option<NurbsCurve<2>>> {
 
 /// Loop pieces end to end as one clamped NURBS loop: every piece elevated to the highest
 /// degree, its parameter mapped onto [k, k + 1], joints kept at multiplicity p (exact).
-fn join_loop(pieces: &[Curve], map: &dyn Fn(Point<2>) -> Point<2>) -> Result<Option<CurveDocument>> {
+fn join_loop(
+    pieces: &[Curve],
+    seam_twins: &[Option<(u64, Curve)>],
+    map: &dyn Fn(Point<2>) -> Point<2>,
+) -> Result<Option<CurveDocument>> {
     let mut parts = Vec::new();
-    for c in pieces {
+    let mut twins = Vec::new();
+    for (c, twin) in pieces.iter().zip(seam_twins) {
         let Some(p) = loop_piece(c)? else { return Ok(None) };
         parts.push(p.map_points(|q| map(*q)));
+        twins.push(match twin {
+            Some((edge, t)) => match loop_piece(t)? {
+                Some(t) => Some((*edge, t.map_points(|q| map(*q)))),
+                None => return Ok(None),
+            },
+            None => None,
+        });
     }
+    choose_seam_sides(&mut parts, twins);
+    let parts = bridge_gaps(parts)?;
     let p = parts.iter().map(|c| c.degree()).max().unwrap_or(1);
     let err = |e: splinekit::Error| StepError::plain(format!("loop: {e}"));
     let mut knots = vec![0.0; p + 1];
@@ -416,42 +451,179 @@ fn join_loop(pieces: &[Curve], map: &dyn Fn(Point<2>) -> Point<2>) -> Result<Opt
     Ok(Some(nurbs_doc(&NurbsCurve::new(p, knots, points, weights).map_err(err)?)))
 }
 
-/// A face as a `trimmed` document.
-fn face_doc(f: &Face) -> Result<Option<SurfaceDocument>> {
+/// The box of a face's loops in its (u, v) plane: lower and upper corners of the loops'
+/// control points (which hold the loops).
+fn loops_box(f: &Face) -> Result<Option<(Point<2>, Point<2>)>> {
+    let (mut lo, mut hi) = (Point::<2>::repeat(f64::INFINITY), Point::<2>::repeat(f64::NEG_INFINITY));
+    for c in f.loops.iter().flatten() {
+        let Some(p) = loop_piece(c)? else { return Ok(None) };
+        for q in p.control_points() {
+            lo = lo.inf(q);
+            hi = hi.sup(q);
+        }
+    }
+    Ok((lo[0] <= hi[0] && lo[1] <= hi[1]).then_some((lo, hi)))
+}
+
+/// Whether [`curve_doc`] keeps the curve's parameter (splines, lines, conics at the world
+/// frame), so that a face's pcurves over a surface swept from it stay valid.
+fn keeps_parameter(c: &Curve) -> bool {
+    match c {
+        Curve::Spline(_) | Curve::Line { .. } => true,
+        Curve::Circle { axes, .. } | Curve::Ellipse { axes, .. } => is_world(axes),
+        Curve::Trimmed { .. } => false,
+    }
+}
+
+/// A curve document moved by `offset` (splines, Bézier curves and lines; `None` for the
+/// model curves, which have no placement).
+fn translated(doc: CurveDocument, offset: P3) -> Option<CurveDocument> {
+    let shift =
+        |pts: &mut Vec<Vec<f64>>| pts.iter_mut().for_each(|p| p.iter_mut().zip(offset).for_each(|(x, o)| *x += o));
+    Some(match doc {
+        CurveDocument::Bspline(mut d) => {
+            shift(&mut d.control_points);
+            CurveDocument::Bspline(d)
+        }
+        CurveDocument::Nurbs(mut d) => {
+            shift(&mut d.control_points);
+            CurveDocument::Nurbs(d)
+        }
+        CurveDocument::Line(mut d) => {
+            let mut ends = vec![d.from, d.to];
+            shift(&mut ends);
+            (d.from, d.to) = (ends[0].clone(), ends[1].clone());
+            CurveDocument::Line(d)
+        }
+        _ => return None,
+    })
+}
+
+/// A face's surface as a document and the map of its (u, v) onto the document's.
+type FaceSurface = (SurfaceDocument, Box<dyn Fn(Point<2>) -> Point<2>>);
+
+/// The document of a face's surface: splines and revolutions keep their parameters; a
+/// plane spans the loops' box (loops map onto [0, 1]²); a cylinder is the exact revolution
+/// of a line and an extrusion its profile moved to the loops' lowest v, both spanning the
+/// loops' v range (v maps onto [0, 1]). `None` for other surfaces (cones, spheres, tori:
+/// no document with their parametrisation and placement).
+fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
     let identity = |q: Point<2>| q;
-    let (surface, map): (SurfaceDocument, Box<dyn Fn(Point<2>) -> Point<2>>) = match &f.surface {
+    let span_v = |(lo, hi): (Point<2>, Point<2>)| {
+        let (v0, dv) = (lo[1], hi[1] - lo[1]);
+        Box::new(move |q: Point<2>| Point::<2>::new(q[0], (q[1] - v0) / dv)) as Box<dyn Fn(Point<2>) -> Point<2>>
+    };
+    Ok(Some(match &f.surface {
         Surface::Spline(b) => (spline_surface_doc(b), Box::new(identity)),
         Surface::Plane(a) => {
-            // The plane document spans the loops' bounding box; loops map onto [0, 1]².
-            let (mut lo, mut hi) = (Point::<2>::repeat(f64::INFINITY), Point::<2>::repeat(f64::NEG_INFINITY));
-            for c in f.loops.iter().flatten() {
-                let Some(p) = loop_piece(c)? else { return Ok(None) };
-                for q in p.control_points() {
-                    lo = lo.inf(q);
-                    hi = hi.sup(q);
-                }
-            }
+            let Some((lo, hi)) = loops_box(f)? else { return Ok(None) };
             let size = hi - lo;
             (plane_doc(a, (lo[0], hi[0]), (lo[1], hi[1])), Box::new(move |q: Point<2>| (q - lo).component_div(&size)))
         }
-        Surface::Revolution { profile, axis_origin, axis } => {
+        Surface::Revolution { profile, axis_origin, axis } if keeps_parameter(profile) => {
             let Some(c) = curve_doc(profile)? else { return Ok(None) };
-            (
-                SurfaceDocument::Revolution(RevolutionDoc {
-                    curve: Box::new(c),
-                    axis_point: v3(*axis_origin),
-                    axis: v3(*axis),
-                    angle: TAU,
-                }),
-                Box::new(identity),
-            )
+            let doc = RevolutionDoc { curve: Box::new(c), axis_point: v3(*axis_origin), axis: v3(*axis), angle: TAU };
+            (SurfaceDocument::Revolution(doc), Box::new(identity))
+        }
+        Surface::Cylinder { axes, radius } => {
+            let Some(b) = loops_box(f)? else { return Ok(None) };
+            let line = LineDoc { from: v3(axes.at(*radius, 0.0, b.0[1])), to: v3(axes.at(*radius, 0.0, b.1[1])) };
+            let doc = RevolutionDoc {
+                curve: Box::new(CurveDocument::Line(line)),
+                axis_point: v3(axes.origin),
+                axis: v3(axes.z),
+                angle: TAU,
+            };
+            (SurfaceDocument::Revolution(doc), span_v(b))
+        }
+        Surface::Extrusion { profile, direction } if keeps_parameter(profile) => {
+            let Some(b) = loops_box(f)? else { return Ok(None) };
+            let (v0, dv) = (b.0[1], b.1[1] - b.0[1]);
+            let Some(c) = curve_doc(profile)? else { return Ok(None) };
+            let Some(c) = translated(c, direction.map(|d| d * v0)) else { return Ok(None) };
+            let doc = ExtrusionDoc { curve: Box::new(c), direction: direction.map(|d| d * dv).to_vec() };
+            (SurfaceDocument::Extrusion(doc), span_v(b))
         }
         _ => return Ok(None),
+    }))
+}
+
+/// Pieces with a straight segment wherever one does not start where the one before it ends
+/// (cyclically): a degenerate edge at a pole, which STEP writers leave out, is a point in
+/// space but a segment of the parameter plane.
+fn bridge_gaps(parts: Vec<NurbsCurve<2>>) -> Result<Vec<NurbsCurve<2>>> {
+    let start = |c: &NurbsCurve<2>| c.control_points()[0];
+    let end = |c: &NurbsCurve<2>| c.control_points()[c.control_points().len() - 1];
+    let scale = parts.iter().flat_map(|c| c.control_points()).fold(1.0_f64, |m, q| m.max(q.amax()));
+    let n = parts.len();
+    let mut out = Vec::with_capacity(n + 2);
+    for k in 0..n {
+        let (a, b) = (end(&parts[k]), start(&parts[(k + 1) % n]));
+        out.push(parts[k].clone());
+        if (b - a).norm() > GAP_TOLERANCE * scale {
+            let line = NurbsCurve::new(1, vec![0.0, 0.0, 1.0, 1.0], vec![a, b], vec![1.0, 1.0])
+                .map_err(|e| StepError::plain(format!("loop: {e}")))?;
+            out.push(line);
+        }
+    }
+    Ok(out)
+}
+
+/// Relative distance in the parameter plane below which consecutive loop pieces meet.
+const GAP_TOLERANCE: f64 = 1e-9;
+
+/// Most seam uses in one loop whose sides are chosen by trying every combination.
+const MAX_SEAM_USES: usize = 10;
+
+/// Each use of a seam edge runs along one of its two pcurves, and a loop that uses one
+/// seam edge twice runs once along each: of the choices of sides that respect this, the
+/// one that leaves the smallest total gap between consecutive pieces (cyclically). A loop
+/// around a pole has a gap where the degenerate edge at the pole was left out, but the
+/// right sides still leave the smallest. Every combination is tried (at most
+/// 2^[`MAX_SEAM_USES`]; beyond that the first pcurves stay).
+fn choose_seam_sides(parts: &mut [NurbsCurve<2>], twins: Vec<Option<(u64, NurbsCurve<2>)>>) {
+    let seams: Vec<usize> = (0..parts.len()).filter(|&k| twins[k].is_some()).collect();
+    if seams.is_empty() || seams.len() > MAX_SEAM_USES {
+        return;
+    }
+    let edge = |k: usize| twins[k].as_ref().map(|t| t.0);
+    let start = |c: &NurbsCurve<2>| c.control_points()[0];
+    let end = |c: &NurbsCurve<2>| c.control_points()[c.control_points().len() - 1];
+    let twin_taken = |bit: usize, mask: usize| mask >> bit & 1 == 1;
+    let pick = |k: usize, mask: usize| -> &NurbsCurve<2> {
+        match seams.iter().position(|&s| s == k) {
+            Some(bit) if twin_taken(bit, mask) => &twins[k].as_ref().expect("a seam").1,
+            _ => &parts[k],
+        }
     };
+    // Two uses of one edge take different sides.
+    let respects_pairs = |mask: usize| {
+        seams.iter().enumerate().all(|(a, &i)| {
+            seams
+                .iter()
+                .enumerate()
+                .skip(a + 1)
+                .all(|(b, &j)| edge(i) != edge(j) || twin_taken(a, mask) != twin_taken(b, mask))
+        })
+    };
+    let n = parts.len();
+    let gap =
+        |mask: usize| -> f64 { (0..n).map(|k| (start(pick((k + 1) % n, mask)) - end(pick(k, mask))).norm()).sum() };
+    let best = (0..1usize << seams.len())
+        .filter(|&m| respects_pairs(m))
+        .min_by(|&a, &b| gap(a).total_cmp(&gap(b)))
+        .unwrap_or(0);
+    let chosen: Vec<NurbsCurve<2>> = (0..n).map(|k| pick(k, best).clone()).collect();
+    parts.clone_from_slice(&chosen);
+}
+
+/// A face as a `trimmed` document.
+fn face_doc(f: &Face) -> Result<Option<SurfaceDocument>> {
+    let Some((surface, map)) = face_surface(f)? else { return Ok(None) };
     let mut outer = None;
     let mut holes = Vec::new();
     for (i, l) in f.loops.iter().enumerate() {
-        let Some(doc) = join_loop(l, map.as_ref())? else { return Ok(None) };
+        let Some(doc) = join_loop(l, &f.seam_twins[i], map.as_ref())? else { return Ok(None) };
         if Some(i) == f.outer || (f.outer.is_none() && i == 0) {
             outer = Some(Box::new(doc));
         } else {

@@ -1,0 +1,245 @@
+"""STEP files that OpenCASCADE writes come back into splinekit with the same geometry.
+
+OCP builds shapes — a B-spline curve and surface, rational ones (a NURBS circle, a NURBS
+sphere patch), a surface of revolution, a surface of linear extrusion, a trimmed face (a
+plate with a round hole), a box — and writes each with STEPControl_Writer. splinekit
+converts every file to a JSON document (`splinekit convert F.step -o F.json`, which must
+succeed with no unknown entity dropped silently), then evaluates each imported object at
+parameters spread over OpenCASCADE's bounds of the matching edge or face. Every OCC edge
+and face must be matched by one imported object whose points agree within 1e-9 of the
+shape's size; trimmed faces must also agree with OCC's face classifier on which of the
+sampled parameters lie inside the face.
+
+usage: ocp_writes.py PATH/TO/splinekit WORKDIR
+Prints one line per shape and 'N passed, M failed'; exit 1 on any failure.
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Surface
+from OCP.BRepAlgoAPI import BRepAlgoAPI_Cut
+from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace
+from OCP.BRepClass import BRepClass_FaceClassifier
+from OCP.BRepPrimAPI import BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCylinder
+from OCP.BRepTools import BRepTools
+from OCP.GC import GC_MakeCircle
+from OCP.Geom import Geom_SphericalSurface, Geom_SurfaceOfLinearExtrusion, Geom_SurfaceOfRevolution
+from OCP.GeomAPI import GeomAPI_PointsToBSpline, GeomAPI_PointsToBSplineSurface
+from OCP.GeomConvert import GeomConvert
+from OCP.Geom import Geom_RectangularTrimmedSurface
+from OCP.IFSelect import IFSelect_RetDone
+from OCP.STEPControl import STEPControl_AsIs, STEPControl_Writer
+from OCP.OCP.collections import Array1_gp_Pnt as TColgp_Array1OfPnt, Array2_gp_Pnt as TColgp_Array2OfPnt
+from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_IN, TopAbs_OUT
+from OCP.TopExp import TopExp_Explorer
+from OCP.TopoDS import TopoDS
+from OCP.gp import gp_Ax1, gp_Ax2, gp_Ax3, gp_Dir, gp_Pnt, gp_Pnt2d
+
+SAMPLES = 12
+
+
+def bspline_curve():
+    pts = TColgp_Array1OfPnt(1, 7)
+    for i in range(7):
+        pts.SetValue(i + 1, gp_Pnt(i, math.sin(i), 0.3 * i * i))
+    return GeomAPI_PointsToBSpline(pts).Curve()
+
+
+def bspline_surface():
+    net = TColgp_Array2OfPnt(1, 5, 1, 6)
+    for i in range(5):
+        for j in range(6):
+            net.SetValue(i + 1, j + 1, gp_Pnt(i, j, math.sin(i) * math.cos(j)))
+    return GeomAPI_PointsToBSplineSurface(net).Surface()
+
+
+def shapes():
+    """(name, TopoDS shape) pairs."""
+    circle = GC_MakeCircle(gp_Ax2(gp_Pnt(1, 2, 3), gp_Dir(0, 0.6, 0.8)), 2.5).Value()
+    nurbs_circle = GeomConvert.CurveToBSplineCurve_s(circle)
+    sphere = Geom_SphericalSurface(gp_Ax3(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 2.0)
+    patch = GeomConvert.SurfaceToBSplineSurface_s(Geom_RectangularTrimmedSurface(sphere, 0.2, 1.4, -0.5, 0.7))
+    profile = bspline_curve()
+    revolution = Geom_SurfaceOfRevolution(profile, gp_Ax1(gp_Pnt(0, 0, -1), gp_Dir(0, 0, 1)))
+    extrusion = Geom_SurfaceOfLinearExtrusion(profile, gp_Dir(0.2, 0.3, 1.0))
+    plate = BRepPrimAPI_MakeBox(4.0, 3.0, 0.5).Shape()
+    hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(2, 1.5, -1), gp_Dir(0, 0, 1)), 0.8, 3.0).Shape()
+    return [
+        ("bspline_curve", BRepBuilderAPI_MakeEdge(bspline_curve()).Edge()),
+        ("nurbs_circle", BRepBuilderAPI_MakeEdge(nurbs_circle).Edge()),
+        ("bspline_surface", BRepBuilderAPI_MakeFace(bspline_surface(), 1e-7).Face()),
+        ("nurbs_sphere_patch", BRepBuilderAPI_MakeFace(patch, 1e-7).Face()),
+        ("revolution", BRepBuilderAPI_MakeFace(revolution, 0.0, 2.0 * math.pi, 0.0, 1.0, 1e-7).Face()),
+        ("extrusion", BRepBuilderAPI_MakeFace(extrusion, 0.0, 1.0, -1.0, 2.0, 1e-7).Face()),
+        ("plate_with_hole", BRepAlgoAPI_Cut(plate, hole).Shape()),
+        ("box", BRepPrimAPI_MakeBox(gp_Pnt(-1, -2, 0.5), 1.0, 2.0, 3.0).Shape()),
+    ]
+
+
+def write(shape, path):
+    w = STEPControl_Writer()
+    w.Transfer(shape, STEPControl_AsIs)
+    if w.Write(path) != IFSelect_RetDone:
+        raise RuntimeError(f"OCC could not write {path}")
+
+
+def run(binary, args, stdin=None):
+    r = subprocess.run([binary] + args, capture_output=True, text=True, input=stdin)
+    if r.returncode != 0:
+        raise RuntimeError(f"splinekit {' '.join(args[:1])}: {r.stderr.strip()}")
+    return r
+
+
+def imported_objects(binary, step, out):
+    r = run(binary, ["convert", step, "-o", out])
+    doc = json.load(open(out))
+    shapes = [o["shape"] for o in doc["objects"]] if doc.get("type") == "scene" else [doc]
+    return shapes, r.stderr
+
+
+def occ_edges(shape):
+    e = TopExp_Explorer(shape, TopAbs_EDGE)
+    while e.More():
+        yield TopoDS.Edge(e.Current())
+        e.Next()
+
+
+def occ_faces(shape):
+    e = TopExp_Explorer(shape, TopAbs_FACE)
+    while e.More():
+        yield TopoDS.Face(e.Current())
+        e.Next()
+
+
+def edge_samples(edge):
+    c = BRepAdaptor_Curve(edge)
+    a, b = c.FirstParameter(), c.LastParameter()
+    ts = [a + (b - a) * (k + 0.5) / SAMPLES for k in range(SAMPLES)]
+    return ts, [tuple(c.Value(t).Coord()) for t in ts]
+
+
+def face_samples(face):
+    s = BRepAdaptor_Surface(face)
+    u0, u1, v0, v1 = BRepTools.UVBounds_s(face)
+    uv = [(u0 + (u1 - u0) * (i + 0.5) / SAMPLES, v0 + (v1 - v0) * (j + 0.5) / SAMPLES)
+          for i in range(SAMPLES) for j in range(SAMPLES)]
+    points = [tuple(s.Value(u, v).Coord()) for u, v in uv]
+    classifier = BRepClass_FaceClassifier()
+    inside = []
+    for u, v in uv:
+        classifier.Perform(face, gp_Pnt2d(u, v), 1e-9)
+        state = classifier.State()
+        inside.append(True if state == TopAbs_IN else False if state == TopAbs_OUT else None)
+    return uv, points, inside
+
+
+def evaluate(binary, doc, params):
+    at = ",".join(f"{p[0]!r}:{p[1]!r}" if isinstance(p, tuple) else repr(p) for p in params)
+    r = run(binary, ["eval", "-", "--at", at], stdin=json.dumps(doc))
+    return json.loads(r.stdout)
+
+
+def size_of(points):
+    return max(1e-300, math.dist([min(p[k] for p in points) for k in range(3)], [max(p[k] for p in points) for k in range(3)]))
+
+
+def pad3(p):
+    return tuple(p) + (0.0,) * (3 - len(p))
+
+
+def project(binary, workdir, doc, points):
+    """splinekit's nearest points of `doc` to `points`: ((u, v), distance) each."""
+    path = os.path.join(workdir, "points.json")
+    json.dump([list(p) for p in points], open(path, "w"))
+    r = run(binary, ["project", "-", "--points", path], stdin=json.dumps(doc))
+    return [((q["nearest"]["u"], q["nearest"]["v"]), q["nearest"]["distance"]) for q in json.loads(r.stdout)["projections"]]
+
+
+CURVE_TYPES = ("bezier", "rational_bezier", "bspline", "nurbs", "line", "circle", "ellipse")
+
+
+def match_curve(binary, docs, used, params, points):
+    """The unused curve document whose points at OCC's parameters are nearest (splinekit
+    keeps the parameters of splines and lines)."""
+    best = (math.inf, None, None)
+    for i, doc in enumerate(docs):
+        if i in used or doc["type"] not in CURVE_TYPES:
+            continue
+        got = evaluate(binary, doc, params)
+        worst = max(math.dist(pad3(q), p) for q, p in zip(got["points"], points))
+        best = min(best, (worst, i, None), key=lambda b: b[0])
+    return best
+
+
+def match_face(binary, workdir, docs, used, points, inside):
+    """The unused surface document nearest to OCC's points inside the face, with the
+    number of points whose inside/outside it disagrees on. Planes, cylinders and
+    extrusions come back reparametrised, so points are compared through splinekit's
+    projection: every point OCC finds inside the face must lie on the document and inside
+    its trim; every point OCC finds outside but that lies on the document's surface must be
+    outside its trim."""
+    best = (math.inf, math.inf, None)
+    limit = 1e-9 * size_of(points)
+    for i, doc in enumerate(docs):
+        if i in used or doc["type"] in CURVE_TYPES:
+            continue
+        found = project(binary, workdir, doc, points)
+        got = evaluate(binary, doc, [q for q, _ in found])
+        flags = got.get("inside", [True] * len(found))
+        worst = max((d for (_, d), occ in zip(found, inside) if occ), default=math.inf)
+        wrong = sum(1 for (_, d), occ, ours in zip(found, inside, flags)
+                    if occ is not None and (occ or d <= limit) and occ != ours)
+        best = min(best, (worst, wrong, i))
+    return best
+
+
+def judge(binary, workdir, name, shape):
+    step = os.path.join(workdir, f"{name}.step")
+    write(shape, step)
+    docs, notes = imported_objects(binary, step, os.path.join(workdir, f"{name}.json"))
+    used, results = set(), []
+    faces = list(occ_faces(shape))
+    # Faces first; edges only of shapes without faces (a face's edges are its loops).
+    items = [("face", f) for f in faces] or [("curve", e) for e in occ_edges(shape)]
+    if len(docs) != len(items):
+        return [(False, f"{name}: splinekit imported {len(docs)} objects for OCC's {len(items)} ({notes.strip()})")]
+    for kind, item in items:
+        if kind == "curve":
+            params, points = edge_samples(item)
+            worst, index, _ = match_curve(binary, docs, used, params, points)
+            wrong, note = 0, ""
+        else:
+            _, points, inside = face_samples(item)
+            worst, wrong, index = match_face(binary, workdir, docs, used, points, inside)
+            note = f", inside/outside disagreements {wrong} of {len(points)}"
+        limit = 1e-9 * size_of(points)
+        if index is None:
+            results.append((False, f"{name}: no imported object matches an OCC {kind}"))
+            continue
+        used.add(index)
+        results.append((worst <= limit and wrong == 0, f"{name}: {docs[index]['type']} vs OCC {kind}, {len(points)} "
+                        f"points, max distance {worst:.2e} (limit {limit:.2e}){note}"))
+    return results
+
+
+def main(binary, workdir):
+    os.makedirs(workdir, exist_ok=True)
+    passed = failed = 0
+    for name, shape in shapes():
+        try:
+            results = judge(binary, workdir, name, shape)
+        except RuntimeError as e:
+            results = [(False, f"{name}: {e}")]
+        for ok, line in results:
+            print(("ok   " if ok else "FAIL ") + line)
+            passed += ok
+            failed += not ok
+    print(f"{passed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1], sys.argv[2]))
