@@ -358,9 +358,15 @@ fn gallery_writes_every_figure_and_an_index() {
     }
     assert!(png >= 18 && gif >= 4, "{png} PNG, {gif} GIF");
     let links: Vec<&str> = index.split("<a href=\"").skip(1).map(|s| s.split('"').next().unwrap()).collect();
-    assert_eq!(links.len(), png + gif);
-    for l in links {
+    let (gltf, step): (Vec<&str>, Vec<&str>) = links.iter().partition(|l| l.ends_with(".glb"));
+    assert_eq!(gltf.len(), png + gif);
+    for l in gltf {
         assert!(std::fs::read(dir.join(l)).unwrap().starts_with(b"glTF"), "{l}");
+    }
+    // The exact figures (B-spline polygon, Bézier surface, NURBS torus, …) offer STEP files.
+    assert!(step.len() >= 3, "{step:?}");
+    for l in step {
+        assert!(l.ends_with(".step") && std::fs::read(dir.join(l)).unwrap().starts_with(b"ISO-10303-21;"), "{l}");
     }
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -27,6 +27,9 @@ struct Entry {
     file: String,
     /// A glTF export, if any.
     gltf: Option<String>,
+    /// A STEP file of the exact geometry, for the figures whose every object has an exact
+    /// STEP form.
+    step: Option<String>,
     caption: String,
 }
 
@@ -82,7 +85,7 @@ fn plots(folder: &Folder) -> Result<Vec<Entry>> {
         .iter()
         .map(|f| {
             folder.write(f.file, f.svg.as_bytes())?;
-            Ok(Entry { file: f.file.to_string(), gltf: None, caption: f.caption.to_string() })
+            Ok(Entry { file: f.file.to_string(), gltf: None, step: None, caption: f.caption.to_string() })
         })
         .collect()
 }
@@ -103,16 +106,32 @@ fn rendered(folder: &Folder, renderer: &Renderer) -> Result<Vec<Entry>> {
     let mut rendered = Vec::new();
     for (name, doc, caption) in &docs {
         let file = render_scene(folder, renderer, name, doc, &bar)?;
-        rendered.push(Entry { file, gltf: Some(format!("{name}.glb")), caption: caption.to_string() });
+        let step = exact_step(folder, name, doc)?;
+        rendered.push(Entry { file, gltf: Some(format!("{name}.glb")), step, caption: caption.to_string() });
         bar.inc(1);
     }
     for (stem, caption, img, glb) in subdivision::figures(renderer)? {
         folder.write(&format!("{stem}.png"), &img.to_png())?;
         folder.write(&format!("{stem}.glb"), &glb)?;
-        rendered.push(Entry { file: format!("{stem}.png"), gltf: Some(format!("{stem}.glb")), caption });
+        rendered.push(Entry { file: format!("{stem}.png"), gltf: Some(format!("{stem}.glb")), step: None, caption });
     }
     bar.finish_and_clear();
     Ok(rendered)
+}
+
+/// Writes `name.step` when every object of the scene has an exact STEP form (splines,
+/// conics, quadrics, exact sweeps, polynomial blending splines); returns its file name.
+fn exact_step(folder: &Folder, name: &str, doc: &SceneDocument) -> Result<Option<String>> {
+    if !doc.objects.iter().all(|o| splinekit_step::documents::exports_exactly(&o.shape)) {
+        return Ok(None);
+    }
+    let header = splinekit_step::part21::writer::HeaderInfo { name: name.to_string(), ..Default::default() };
+    let scene = splinekit_scene::SceneOrShape::Scene(doc.clone());
+    let (text, _) = splinekit_step::documents::export_document(&scene, name, 1e-6, &header)
+        .map_err(|e| anyhow!("{name}.step: {e}"))?;
+    let file = format!("{name}.step");
+    folder.write(&file, text.as_bytes())?;
+    Ok(Some(file))
 }
 
 /// Writes one scene as `name.png` (or `name.gif`, counting frames on `bar`) and
@@ -157,12 +176,16 @@ fn index_html(rendered: &[Entry], plots: &[Entry]) -> String {
          figure{margin:0}img{width:100%;border:1px solid #ddd}figcaption{font-size:0.9em;color:#333}</style></head>\n\
          <body><h1>splinekit gallery</h1><p>Every figure is computed and drawn by splinekit: shaded scenes \
          rendered offscreen with wgpu (the scene documents are in <code>examples/scenes/</code>), animations \
-         as GIF, each with a glTF export, and plots as SVG.</p>\n",
+         as GIF, each with a glTF export (and a STEP file of the exact geometry where every object has an \
+         exact STEP form), and plots as SVG.</p>\n",
     );
     for (title, entries) in [("Scenes and animations", rendered), ("Plots", plots)] {
         html.push_str(&format!("<h2>{title}</h2><div class=\"grid\">\n"));
         for e in entries {
-            let link = e.gltf.as_ref().map(|g| format!(" <a href=\"{g}\">glTF</a>")).unwrap_or_default();
+            let mut link = e.gltf.as_ref().map(|g| format!(" <a href=\"{g}\">glTF</a>")).unwrap_or_default();
+            if let Some(step) = &e.step {
+                link.push_str(&format!(" <a href=\"{step}\">STEP</a>"));
+            }
             html.push_str(&format!(
                 "<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}{link}</figcaption></figure>\n",
                 e.file, e.file, e.caption

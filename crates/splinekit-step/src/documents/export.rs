@@ -334,8 +334,160 @@ fn profile(doc: &CurveDocument, relative_tolerance: f64) -> Result<(Curve, Form,
     Ok((c, e.form, e.max_deviation))
 }
 
+/// The exact STEP surface of a spline, Bézier, plane or quadric document and the map of
+/// its parameters; `None` for the kinds without one of their own.
+fn elementary_surface(doc: &SurfaceDocument) -> Result<Option<(Surface, ParamMap)>> {
+    let id = ParamMap::IDENTITY;
+    let clamped_bezier = |n: usize| [vec![0.0; n], vec![1.0; n]].concat();
+    Ok(Some(match doc {
+        SurfaceDocument::BsplineSurface(d) => {
+            let degrees = (d.degree_u, d.degree_v);
+            let periodic = (d.periodic_u, d.periodic_v);
+            let net = spline_surface(degrees, &d.knots_u, &d.knots_v, &d.control_points, None, periodic)?;
+            (Surface::Spline(net), id)
+        }
+        SurfaceDocument::NurbsSurface(d) => {
+            let (degrees, periodic, weights) =
+                ((d.degree_u, d.degree_v), (d.periodic_u, d.periodic_v), Some(d.weights.as_slice()));
+            let net = spline_surface(degrees, &d.knots_u, &d.knots_v, &d.control_points, weights, periodic)?;
+            (Surface::Spline(net), id)
+        }
+        SurfaceDocument::BezierSurface(d) => {
+            let (nu, nv) = (d.control_points.len(), d.control_points.first().map_or(0, Vec::len));
+            let (ku, kv) = (clamped_bezier(nu), clamped_bezier(nv));
+            let net = spline_surface((nu - 1, nv - 1), &ku, &kv, &d.control_points, None, (false, false))?;
+            (Surface::Spline(net), id)
+        }
+        SurfaceDocument::Plane(d) => plane_surface(&d.origin, &d.u_axis, &d.v_axis)?,
+        SurfaceDocument::Cylinder(d) => (
+            trimmed(Surface::Cylinder { axes: Axes::WORLD, radius: d.radius }, (0.0, TAU), (0.0, d.height)),
+            ParamMap { u: (1.0, 0.0), v: (d.height, 0.0) },
+        ),
+        SurfaceDocument::Cone(d) => (cone_surface(d.radius, d.height), id),
+        SurfaceDocument::Sphere(d) => {
+            (trimmed(Surface::Sphere { axes: Axes::WORLD, radius: d.radius }, (0.0, TAU), (-FRAC_PI_2, FRAC_PI_2)), id)
+        }
+        SurfaceDocument::Torus(d) => {
+            let torus =
+                Surface::Torus { axes: Axes::WORLD, major_radius: d.major_radius, minor_radius: d.minor_radius };
+            (trimmed(torus, (0.0, TAU), (0.0, TAU)), id)
+        }
+        _ => return Ok(None),
+    }))
+}
+
+/// A plane o + u U + v V: `PLANE` with u' = |U| u, v' = |V| v when U ⊥ V, else its exact
+/// bilinear B-spline.
+fn plane_surface(origin: &[f64], u_axis: &[f64], v_axis: &[f64]) -> Result<(Surface, ParamMap)> {
+    let (o, u, v) = (p3(origin)?, p3(u_axis)?, p3(v_axis)?);
+    let (o, u, v): (P3, P3, P3) = ([o[0], o[1], o[2]], [u[0], u[1], u[2]], [v[0], v[1], v[2]]);
+    let (lu, lv) = (norm(u), norm(v));
+    let dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    if dot.abs() <= 1e-14 * lu * lv {
+        let x = u.map(|c| c / lu);
+        let z = crate::geometry::cross(u, v).map(|c| c / (lu * lv));
+        let axes = Axes { origin: o, z, x };
+        Ok((trimmed(Surface::Plane(axes), (0.0, lu), (0.0, lv)), ParamMap { u: (lu, 0.0), v: (lv, 0.0) }))
+    } else {
+        let corner = |a: f64, b: f64| (0..3).map(|k| o[k] + a * u[k] + b * v[k]).collect::<Vec<f64>>();
+        let net = vec![vec![corner(0.0, 0.0), corner(0.0, 1.0)], vec![corner(1.0, 0.0), corner(1.0, 1.0)]];
+        let k = vec![0.0, 0.0, 1.0, 1.0];
+        Ok((Surface::Spline(spline_surface((1, 1), &k, &k, &net, None, (false, false))?), ParamMap::IDENTITY))
+    }
+}
+
+/// A cone as the exact revolution of its degree-1 B-spline generatrix, parameters kept:
+/// OpenCASCADE reads CONICAL_SURFACE's v along the generatrix (slant length) where
+/// ISO 10303-42 measures height, so the entity would not round-trip.
+fn cone_surface(radius: f64, height: f64) -> Surface {
+    let generatrix = SplineCurve {
+        degree: 1,
+        knots: vec![0.0, 0.0, 1.0, 1.0],
+        points: vec![vec![radius, 0.0, 0.0], vec![0.0, 0.0, height]],
+        weights: None,
+        closed: false,
+    };
+    let rev = Surface::Revolution { profile: Curve::Spline(generatrix), axis_origin: [0.0; 3], axis: [0.0, 0.0, 1.0] };
+    trimmed(rev, (0.0, TAU), (0.0, 1.0))
+}
+
+/// Revolutions and extrusions: the STEP swept surface of their profile's export (exact when
+/// the profile is), with the profile's form and deviation; `None` for other kinds.
+fn swept_surface(
+    doc: &SurfaceDocument,
+    domain: (Interval, Interval),
+    relative_tolerance: f64,
+) -> Result<Option<(Surface, Form, f64, ParamMap)>> {
+    Ok(Some(match doc {
+        SurfaceDocument::Revolution(d) => {
+            let (c, form, dev) = profile(&d.curve, relative_tolerance)?;
+            let axis = p3(&d.axis)?;
+            let len = norm([axis[0], axis[1], axis[2]]);
+            let o = p3(&d.axis_point)?;
+            let rev = Surface::Revolution {
+                profile: c,
+                axis_origin: [o[0], o[1], o[2]],
+                axis: [axis[0] / len, axis[1] / len, axis[2] / len],
+            };
+            (trimmed(rev, (0.0, d.angle), (domain.1.start, domain.1.end)), form, dev, ParamMap::IDENTITY)
+        }
+        SurfaceDocument::Extrusion(d) => {
+            let (c, form, dev) = profile(&d.curve, relative_tolerance)?;
+            // Unit direction, v' = |direction| v (readers parametrise v by length).
+            let dir = p3(&d.direction)?;
+            let len = norm([dir[0], dir[1], dir[2]]);
+            let ext = Surface::Extrusion { profile: c, direction: [dir[0] / len, dir[1] / len, dir[2] / len] };
+            let map = ParamMap { u: (1.0, 0.0), v: (len, 0.0) };
+            (trimmed(ext, (domain.0.start, domain.0.end), (0.0, len)), form, dev, map)
+        }
+        _ => return Ok(None),
+    }))
+}
+
+/// The degrees (m_u, m_v) of the B-spline a blending-spline surface with Bézier locals
+/// and a polynomial B-function is, and its knots; `None` for other surfaces.
+fn polynomial_blending_surface(doc: &SurfaceDocument) -> Result<Option<((usize, usize), Vec<f64>, Vec<f64>)>> {
+    let SurfaceDocument::BlendingSplineSurface(b) = doc else { return Ok(None) };
+    let local = b.local.as_ref().unwrap_or(&LocalPatchDoc::Bezier { degree: [3, 3] });
+    let (LocalPatchDoc::Bezier { degree }, Some(beta)) = (local, b.bfunction.as_ref().and_then(bfunction_degree))
+    else {
+        return Ok(None);
+    };
+    let built = b.surface::<3>().map_err(|e| plain("document", e))?;
+    let (ku, kv) = built.knots();
+    Ok(Some(((degree[0] + beta, degree[1] + beta), dedup(ku.values()), dedup(kv.values()))))
+}
+
+/// The B-spline form of any other surface: exact for a blending spline with Bézier locals
+/// and a polynomial B-function, else a bicubic Hermite approximation within `tolerance`
+/// (blending splines on their own knots, others on a 4 × 4 start grid).
+fn fitted_surface(
+    doc: &SurfaceDocument,
+    kernel: &dyn KernelSurface<3>,
+    domain: (Interval, Interval),
+    tolerance: f64,
+) -> Result<(Fitted<SplineSurface>, Form)> {
+    if let Some((degrees, bu, bv)) = polynomial_blending_surface(doc)? {
+        return Ok((polynomial_surface(kernel, &bu, &bv, degrees)?, Form::ExactPolynomial { degree: degrees }));
+    }
+    let (bu, bv) = match doc {
+        SurfaceDocument::BlendingSplineSurface(b) => {
+            let built = b.surface::<3>().map_err(|e| plain("document", e))?;
+            let (ku, kv) = built.knots();
+            (dedup(ku.values()), dedup(kv.values()))
+        }
+        _ => (uniform_breaks(domain.0, 4), uniform_breaks(domain.1, 4)),
+    };
+    Ok((hermite_surface(kernel, &bu, &bv, tolerance)?, Form::Approximated))
+}
+
 /// Exports a surface document; `relative_tolerance` scales with the surface's size.
 pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64) -> Result<Exported> {
+    if let SurfaceDocument::Trimmed(_) = doc {
+        return Err(StepError::plain(
+            "type: trimmed surfaces are not exported yet (bounded faces with trimming loops are still to come)",
+        ));
+    }
     let kernel = kernel_surface(doc)?;
     let tolerance = relative_tolerance * surface_size(kernel.as_ref());
     let domain = (kernel.domain_u(), kernel.domain_v());
@@ -347,160 +499,46 @@ pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64
         map,
         domain,
     };
-    let exact = |surface: Surface, map: ParamMap| make(surface, Form::Exact, 0.0, map);
-    let id = ParamMap::IDENTITY;
-    Ok(match doc {
-        SurfaceDocument::BsplineSurface(d) => exact(
-            Surface::Spline(spline_surface(
-                (d.degree_u, d.degree_v),
-                &d.knots_u,
-                &d.knots_v,
-                &d.control_points,
-                None,
-                (d.periodic_u, d.periodic_v),
-            )?),
-            id,
-        ),
-        SurfaceDocument::NurbsSurface(d) => exact(
-            Surface::Spline(spline_surface(
-                (d.degree_u, d.degree_v),
-                &d.knots_u,
-                &d.knots_v,
-                &d.control_points,
-                Some(&d.weights),
-                (d.periodic_u, d.periodic_v),
-            )?),
-            id,
-        ),
-        SurfaceDocument::BezierSurface(d) => {
-            let (nu, nv) = (d.control_points.len(), d.control_points.first().map_or(0, Vec::len));
-            let k = |n: usize| [vec![0.0; n], vec![1.0; n]].concat();
-            exact(
-                Surface::Spline(spline_surface(
-                    (nu - 1, nv - 1),
-                    &k(nu),
-                    &k(nv),
-                    &d.control_points,
-                    None,
-                    (false, false),
-                )?),
-                id,
-            )
-        }
-        SurfaceDocument::Plane(d) => {
-            let (o, u, v) = (p3(&d.origin)?, p3(&d.u_axis)?, p3(&d.v_axis)?);
-            let (o, u, v): (P3, P3, P3) = ([o[0], o[1], o[2]], [u[0], u[1], u[2]], [v[0], v[1], v[2]]);
-            let (lu, lv) = (norm(u), norm(v));
-            let dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-            if dot.abs() <= 1e-14 * lu * lv {
-                let x = u.map(|c| c / lu);
-                let z = crate::geometry::cross(u, v).map(|c| c / (lu * lv));
-                let axes = Axes { origin: o, z, x };
-                exact(trimmed(Surface::Plane(axes), (0.0, lu), (0.0, lv)), ParamMap { u: (lu, 0.0), v: (lv, 0.0) })
-            } else {
-                let corner = |a: f64, b: f64| (0..3).map(|k| o[k] + a * u[k] + b * v[k]).collect::<Vec<f64>>();
-                let net = vec![vec![corner(0.0, 0.0), corner(0.0, 1.0)], vec![corner(1.0, 0.0), corner(1.0, 1.0)]];
-                let k = vec![0.0, 0.0, 1.0, 1.0];
-                exact(Surface::Spline(spline_surface((1, 1), &k, &k, &net, None, (false, false))?), id)
+    if let Some((surface, map)) = elementary_surface(doc)? {
+        return Ok(make(surface, Form::Exact, 0.0, map));
+    }
+    if let Some((surface, form, deviation, map)) = swept_surface(doc, domain, relative_tolerance)? {
+        return Ok(make(surface, form, deviation, map));
+    }
+    let (fitted, form) = fitted_surface(doc, kernel.as_ref(), domain, tolerance)?;
+    Ok(make(Surface::Spline(fitted.spline), form, fitted.max_deviation, ParamMap::IDENTITY))
+}
+
+/// Whether a document leaves exactly (its own STEP entity, or a B-spline equal to it):
+/// what [`export_shape`] would report as [`Form::Exact`] or [`Form::ExactPolynomial`],
+/// decided without fitting anything.
+pub fn exports_exactly(doc: &ShapeDocument) -> bool {
+    match doc {
+        ShapeDocument::Curve(c) => curve_exports_exactly(c),
+        ShapeDocument::Surface(s) => match s {
+            SurfaceDocument::Revolution(d) => curve_exports_exactly(&d.curve),
+            SurfaceDocument::Extrusion(d) => curve_exports_exactly(&d.curve),
+            SurfaceDocument::Trimmed(_) => false,
+            other => {
+                matches!(elementary_surface(other), Ok(Some(_)))
+                    || matches!(polynomial_blending_surface(other), Ok(Some(_)))
             }
-        }
-        SurfaceDocument::Cylinder(d) => exact(
-            trimmed(Surface::Cylinder { axes: Axes::WORLD, radius: d.radius }, (0.0, TAU), (0.0, d.height)),
-            ParamMap { u: (1.0, 0.0), v: (d.height, 0.0) },
-        ),
-        SurfaceDocument::Cone(d) => {
-            // The exact revolution of its degree-1 B-spline generatrix, parameters kept:
-            // OpenCASCADE reads CONICAL_SURFACE's v along the generatrix (slant length)
-            // where ISO 10303-42 measures height, so the entity would not round-trip.
-            let generatrix = SplineCurve {
-                degree: 1,
-                knots: vec![0.0, 0.0, 1.0, 1.0],
-                points: vec![vec![d.radius, 0.0, 0.0], vec![0.0, 0.0, d.height]],
-                weights: None,
-                closed: false,
-            };
-            let rev = Surface::Revolution {
-                profile: Curve::Spline(generatrix),
-                axis_origin: [0.0; 3],
-                axis: [0.0, 0.0, 1.0],
-            };
-            exact(trimmed(rev, (0.0, TAU), (0.0, 1.0)), id)
-        }
-        SurfaceDocument::Sphere(d) => exact(
-            trimmed(Surface::Sphere { axes: Axes::WORLD, radius: d.radius }, (0.0, TAU), (-FRAC_PI_2, FRAC_PI_2)),
-            id,
-        ),
-        SurfaceDocument::Torus(d) => exact(
-            trimmed(
-                Surface::Torus { axes: Axes::WORLD, major_radius: d.major_radius, minor_radius: d.minor_radius },
-                (0.0, TAU),
-                (0.0, TAU),
-            ),
-            id,
-        ),
-        SurfaceDocument::Revolution(d) => {
-            let (c, form, dev) = profile(&d.curve, relative_tolerance)?;
-            let axis = p3(&d.axis)?;
-            let len = norm([axis[0], axis[1], axis[2]]);
-            let o = p3(&d.axis_point)?;
-            let rev = Surface::Revolution {
-                profile: c,
-                axis_origin: [o[0], o[1], o[2]],
-                axis: [axis[0] / len, axis[1] / len, axis[2] / len],
-            };
-            make(trimmed(rev, (0.0, d.angle), (domain.1.start, domain.1.end)), form, dev, id)
-        }
-        SurfaceDocument::Extrusion(d) => {
-            let (c, form, dev) = profile(&d.curve, relative_tolerance)?;
-            // Unit direction, v' = |direction| v (readers parametrise v by length).
-            let dir = p3(&d.direction)?;
-            let len = norm([dir[0], dir[1], dir[2]]);
-            let ext = Surface::Extrusion { profile: c, direction: [dir[0] / len, dir[1] / len, dir[2] / len] };
-            make(
-                trimmed(ext, (domain.0.start, domain.0.end), (0.0, len)),
-                form,
-                dev,
-                ParamMap { u: (1.0, 0.0), v: (len, 0.0) },
-            )
-        }
-        SurfaceDocument::Trimmed(_) => {
-            return Err(StepError::plain(
-                "type: trimmed surfaces are not exported yet (bounded faces with trimming loops are still to come)",
-            ));
-        }
-        other => {
-            let blending_knots = match other {
-                SurfaceDocument::BlendingSplineSurface(b) => {
-                    let built = b.surface::<3>().map_err(|e| plain("document", e))?;
-                    let (ku, kv) = built.knots();
-                    Some((dedup(ku.values()), dedup(kv.values())))
-                }
-                _ => None,
-            };
-            let polynomial = match other {
-                SurfaceDocument::BlendingSplineSurface(b) => match (
-                    b.local.as_ref().unwrap_or(&LocalPatchDoc::Bezier { degree: [3, 3] }),
-                    b.bfunction.as_ref().and_then(bfunction_degree),
-                ) {
-                    (LocalPatchDoc::Bezier { degree }, Some(beta)) => Some((degree[0] + beta, degree[1] + beta)),
-                    _ => None,
-                },
-                _ => None,
-            };
-            let (fitted, form): (Fitted<SplineSurface>, Form) = match polynomial {
-                Some(m) => {
-                    let (bu, bv) = blending_knots.expect("a blending surface");
-                    (polynomial_surface(kernel.as_ref(), &bu, &bv, m)?, Form::ExactPolynomial { degree: m })
-                }
-                None => {
-                    let (bu, bv) =
-                        blending_knots.unwrap_or_else(|| (uniform_breaks(domain.0, 4), uniform_breaks(domain.1, 4)));
-                    (hermite_surface(kernel.as_ref(), &bu, &bv, tolerance)?, Form::Approximated)
-                }
-            };
-            make(Surface::Spline(fitted.spline), form, fitted.max_deviation, id)
-        }
-    })
+        },
+    }
+}
+
+fn curve_exports_exactly(doc: &CurveDocument) -> bool {
+    match doc {
+        CurveDocument::Bspline(_)
+        | CurveDocument::Nurbs(_)
+        | CurveDocument::Bezier(_)
+        | CurveDocument::RationalBezier(_)
+        | CurveDocument::Line(_)
+        | CurveDocument::Circle(_)
+        | CurveDocument::Ellipse(_) => true,
+        CurveDocument::BlendingSpline(b) => blending_polynomial_degree(b).is_some(),
+        _ => false,
+    }
 }
 
 fn dedup(v: &[f64]) -> Vec<f64> {

@@ -3,7 +3,9 @@
 
 pub mod export;
 
-pub use export::{Exported, Form, ParamMap, Sample, export_curve, export_shape, export_surface, samples};
+pub use export::{
+    Exported, Form, ParamMap, Sample, export_curve, export_shape, export_surface, exports_exactly, samples,
+};
 
 use splinekit_scene::{SceneOrShape, ShapeDocument};
 
