@@ -444,9 +444,16 @@ fn swept_surface(
     }))
 }
 
-/// The degrees (m_u, m_v) of the B-spline a blending-spline surface with Bézier locals
-/// and a polynomial B-function is, and its knots; `None` for other surfaces.
-fn polynomial_blending_surface(doc: &SurfaceDocument) -> Result<Option<((usize, usize), Vec<f64>, Vec<f64>)>> {
+/// The B-spline a blending-spline surface with Bézier locals and a polynomial B-function is:
+/// its degrees (m_u, m_v) and its distinct knots in u and v.
+struct PolynomialForm {
+    degrees: (usize, usize),
+    breaks_u: Vec<f64>,
+    breaks_v: Vec<f64>,
+}
+
+/// The [`PolynomialForm`] of a blending-spline surface; `None` for other surfaces.
+fn polynomial_blending_surface(doc: &SurfaceDocument) -> Result<Option<PolynomialForm>> {
     let SurfaceDocument::BlendingSplineSurface(b) = doc else { return Ok(None) };
     let local = b.local.as_ref().unwrap_or(&LocalPatchDoc::Bezier { degree: [3, 3] });
     let (LocalPatchDoc::Bezier { degree }, Some(beta)) = (local, b.bfunction.as_ref().and_then(bfunction_degree))
@@ -455,7 +462,11 @@ fn polynomial_blending_surface(doc: &SurfaceDocument) -> Result<Option<((usize, 
     };
     let built = b.surface::<3>().map_err(|e| plain("document", e))?;
     let (ku, kv) = built.knots();
-    Ok(Some(((degree[0] + beta, degree[1] + beta), dedup(ku.values()), dedup(kv.values()))))
+    Ok(Some(PolynomialForm {
+        degrees: (degree[0] + beta, degree[1] + beta),
+        breaks_u: dedup(ku.values()),
+        breaks_v: dedup(kv.values()),
+    }))
 }
 
 /// The B-spline form of any other surface: exact for a blending spline with Bézier locals
@@ -467,8 +478,9 @@ fn fitted_surface(
     domain: (Interval, Interval),
     tolerance: f64,
 ) -> Result<(Fitted<SplineSurface>, Form)> {
-    if let Some((degrees, bu, bv)) = polynomial_blending_surface(doc)? {
-        return Ok((polynomial_surface(kernel, &bu, &bv, degrees)?, Form::ExactPolynomial { degree: degrees }));
+    if let Some(f) = polynomial_blending_surface(doc)? {
+        let fitted = polynomial_surface(kernel, &f.breaks_u, &f.breaks_v, f.degrees)?;
+        return Ok((fitted, Form::ExactPolynomial { degree: f.degrees }));
     }
     let (bu, bv) = match doc {
         SurfaceDocument::BlendingSplineSurface(b) => {
