@@ -7,11 +7,12 @@ runs=${1:-10000000}
 seconds=${2:-1200}
 mkdir -p logs
 export RUSTC_BOOTSTRAP=1
-cargo fuzz build -O
+sanitizer=${FUZZ_SANITIZER:-address}
+cargo fuzz build -O -s "$sanitizer"
 for target in document evaluate obj_subdivision mesh_writers; do
     mkdir -p "corpus/$target"
-    cargo fuzz run -O "$target" "corpus/$target" "seeds/$target" -- \
+    cargo fuzz run -O -s "$sanitizer" "$target" "corpus/$target" "seeds/$target" -- \
         -runs="$runs" -max_total_time="$seconds" -max_len=8192 -rss_limit_mb=2048 -timeout=20 \
-        -print_final_stats=1 > "logs/$target.log" 2>&1 || { echo "$target failed: see fuzz/logs/$target.log"; exit 1; }
+        -print_final_stats=1 > "logs/$target.log" 2>&1 || { echo "$target failed (fuzz/logs/$target.log):"; tail -n 40 "logs/$target.log"; exit 1; }
     grep -E "stat::number_of_executed_units|Done" "logs/$target.log" | tail -2
 done
