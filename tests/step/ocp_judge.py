@@ -21,6 +21,8 @@ from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE
 from OCP.TopExp import TopExp_Explorer
 from OCP.TopoDS import TopoDS, TopoDS_Iterator
 
+from verdicts import tally
+
 
 def transferred(path):
     """Reader, model, transient process; fails on read or transfer errors."""
@@ -82,18 +84,7 @@ def judge(path, report_path):
 
 
 def main(args):
-    passed = failed = 0
-    for path, report in zip(args[::2], args[1::2]):
-        try:
-            results = judge(path, report)
-        except RuntimeError as e:
-            results = [(False, str(e))]
-        for ok, line in results:
-            print(("ok   " if ok else "FAIL ") + line)
-            passed += ok
-            failed += not ok
-    print(f"{passed} passed, {failed} failed")
-    return 1 if failed else 0
+    return tally(("", lambda path=path, report=report: judge(path, report)) for path, report in zip(args[::2], args[1::2]))
 
 
 if __name__ == "__main__":

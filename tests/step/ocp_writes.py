@@ -38,6 +38,8 @@ from OCP.TopExp import TopExp_Explorer
 from OCP.TopoDS import TopoDS
 from OCP.gp import gp_Ax1, gp_Ax2, gp_Ax3, gp_Dir, gp_Pnt, gp_Pnt2d
 
+from verdicts import tally
+
 SAMPLES = 12
 
 
@@ -227,18 +229,7 @@ def judge(binary, workdir, name, shape):
 
 def main(binary, workdir):
     os.makedirs(workdir, exist_ok=True)
-    passed = failed = 0
-    for name, shape in shapes():
-        try:
-            results = judge(binary, workdir, name, shape)
-        except RuntimeError as e:
-            results = [(False, f"{name}: {e}")]
-        for ok, line in results:
-            print(("ok   " if ok else "FAIL ") + line)
-            passed += ok
-            failed += not ok
-    print(f"{passed} passed, {failed} failed")
-    return 1 if failed else 0
+    return tally((name, lambda name=name, shape=shape: judge(binary, workdir, name, shape)) for name, shape in shapes())
 
 
 if __name__ == "__main__":
