@@ -92,47 +92,8 @@ impl SvgFigure {
     /// The SVG document; refuses points whose drawing coordinates are not finite (NaN,
     /// infinite, or so far apart that the picture's scale overflows), naming the item.
     pub fn render(&self) -> Result<String, ExportError> {
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        let mut grow = |p: &[f64; 2]| {
-            for i in 0..2 {
-                if p[i].is_finite() {
-                    lo[i] = lo[i].min(p[i]);
-                    hi[i] = hi[i].max(p[i]);
-                }
-            }
-        };
-        for item in &self.items {
-            match item {
-                Item::Path { pts, .. } | Item::Dots { pts, .. } => pts.iter().for_each(&mut grow),
-                Item::Label { at, .. } => grow(at),
-            }
-        }
-        if !lo[0].is_finite() {
-            lo = [0.0, 0.0];
-            hi = [1.0, 1.0];
-        }
-        let top = if self.title.is_empty() { 0.0 } else { 28.0 };
-        let margin = 20.0;
-        let (w, h) = (self.width - 2.0 * margin, self.height - 2.0 * margin - top);
-        let span = [(hi[0] - lo[0]).max(1e-12), (hi[1] - lo[1]).max(1e-12)];
-        let scale = (w / span[0]).min(h / span[1]);
-        let ox = margin + (w - span[0] * scale) / 2.0;
-        let oy = margin + top + (h - span[1] * scale) / 2.0;
-        let px = |p: &[f64; 2]| [ox + (p[0] - lo[0]) * scale, oy + (hi[1] - p[1]) * scale];
-        for (k, item) in self.items.iter().enumerate() {
-            let pts = match item {
-                Item::Path { pts, .. } | Item::Dots { pts, .. } => pts.as_slice(),
-                Item::Label { at, .. } => std::slice::from_ref(at),
-            };
-            for (i, p) in pts.iter().enumerate() {
-                let q = px(p);
-                for (c, &x) in q.iter().enumerate() {
-                    check_value(x, Precision::Double, "SVG", || {
-                        format!("items[{k}] point {i} ({:?}) drawn at [{c}]", p)
-                    })?;
-                }
-            }
-        }
+        let view = self.viewport();
+        self.check_drawable(&view)?;
         let mut s = String::new();
         let _ = writeln!(
             s,
@@ -149,44 +110,111 @@ impl SvgFigure {
             );
         }
         for item in &self.items {
-            match item {
-                Item::Path { pts, closed, stroke, width, dash } => {
-                    let mut d = String::new();
-                    for (i, p) in pts.iter().enumerate() {
-                        let q = px(p);
-                        let _ = write!(d, "{}{:.2},{:.2} ", if i == 0 { "M" } else { "L" }, q[0], q[1]);
-                    }
-                    if *closed {
-                        d.push('Z');
-                    }
-                    let dash = dash.as_ref().map(|d| format!(r#" stroke-dasharray="{d}""#)).unwrap_or_default();
-                    let _ = writeln!(
-                        s,
-                        r#"<path d="{}" fill="none" stroke="{stroke}" stroke-width="{width}" stroke-linejoin="round"{dash}/>"#,
-                        d.trim_end()
-                    );
-                }
-                Item::Dots { pts, radius, fill } => {
-                    for p in pts {
-                        let q = px(p);
-                        let _ =
-                            writeln!(s, r#"<circle cx="{:.2}" cy="{:.2}" r="{radius}" fill="{fill}"/>"#, q[0], q[1]);
-                    }
-                }
-                Item::Label { at, text, colour } => {
-                    let q = px(at);
-                    let _ = writeln!(
-                        s,
-                        r#"<text x="{:.2}" y="{:.2}" font-family="sans-serif" font-size="13" fill="{colour}">{}</text>"#,
-                        q[0] + 6.0,
-                        q[1] - 6.0,
-                        escape(text)
-                    );
-                }
-            }
+            write_item(&mut s, item, &view);
         }
         s.push_str("</svg>\n");
         Ok(s)
+    }
+
+    /// The map from projected points to the picture: their finite bounding box fitted into
+    /// the page below the title, with a margin, keeping the aspect ratio.
+    fn viewport(&self) -> Viewport {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in self.items.iter().flat_map(Item::points) {
+            for i in 0..2 {
+                if p[i].is_finite() {
+                    lo[i] = lo[i].min(p[i]);
+                    hi[i] = hi[i].max(p[i]);
+                }
+            }
+        }
+        if !lo[0].is_finite() {
+            lo = [0.0, 0.0];
+            hi = [1.0, 1.0];
+        }
+        let top = if self.title.is_empty() { 0.0 } else { 28.0 };
+        let margin = 20.0;
+        let (w, h) = (self.width - 2.0 * margin, self.height - 2.0 * margin - top);
+        let span = [(hi[0] - lo[0]).max(1e-12), (hi[1] - lo[1]).max(1e-12)];
+        let scale = (w / span[0]).min(h / span[1]);
+        let origin = [margin + (w - span[0] * scale) / 2.0, margin + top + (h - span[1] * scale) / 2.0];
+        Viewport { origin, scale, left: lo[0], top: hi[1] }
+    }
+
+    /// Refuses an item point whose picture coordinates are not finite.
+    fn check_drawable(&self, view: &Viewport) -> Result<(), ExportError> {
+        for (k, item) in self.items.iter().enumerate() {
+            for (i, p) in item.points().iter().enumerate() {
+                for (c, &x) in view.map(p).iter().enumerate() {
+                    check_value(x, Precision::Double, "SVG", || {
+                        format!("items[{k}] point {i} ({:?}) drawn at [{c}]", p)
+                    })?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Item {
+    /// The projected points the item draws (a label: its anchor).
+    fn points(&self) -> &[[f64; 2]] {
+        match self {
+            Item::Path { pts, .. } | Item::Dots { pts, .. } => pts.as_slice(),
+            Item::Label { at, .. } => std::slice::from_ref(at),
+        }
+    }
+}
+
+/// Projected points → picture coordinates: origin + scale · (x − left, top − y).
+struct Viewport {
+    origin: [f64; 2],
+    scale: f64,
+    left: f64,
+    top: f64,
+}
+
+impl Viewport {
+    fn map(&self, p: &[f64; 2]) -> [f64; 2] {
+        [self.origin[0] + (p[0] - self.left) * self.scale, self.origin[1] + (self.top - p[1]) * self.scale]
+    }
+}
+
+/// One item as SVG elements.
+fn write_item(s: &mut String, item: &Item, view: &Viewport) {
+    match item {
+        Item::Path { pts, closed, stroke, width, dash } => {
+            let mut d = String::new();
+            for (i, p) in pts.iter().enumerate() {
+                let q = view.map(p);
+                let _ = write!(d, "{}{:.2},{:.2} ", if i == 0 { "M" } else { "L" }, q[0], q[1]);
+            }
+            if *closed {
+                d.push('Z');
+            }
+            let dash = dash.as_ref().map(|d| format!(r#" stroke-dasharray="{d}""#)).unwrap_or_default();
+            let _ = writeln!(
+                s,
+                r#"<path d="{}" fill="none" stroke="{stroke}" stroke-width="{width}" stroke-linejoin="round"{dash}/>"#,
+                d.trim_end()
+            );
+        }
+        Item::Dots { pts, radius, fill } => {
+            for p in pts {
+                let q = view.map(p);
+                let _ = writeln!(s, r#"<circle cx="{:.2}" cy="{:.2}" r="{radius}" fill="{fill}"/>"#, q[0], q[1]);
+            }
+        }
+        Item::Label { at, text, colour } => {
+            let q = view.map(at);
+            let _ = writeln!(
+                s,
+                r#"<text x="{:.2}" y="{:.2}" font-family="sans-serif" font-size="13" fill="{colour}">{}</text>"#,
+                q[0] + 6.0,
+                q[1] - 6.0,
+                escape(text)
+            );
+        }
     }
 }
 
