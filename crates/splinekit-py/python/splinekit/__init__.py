@@ -1,0 +1,53 @@
+"""splinekit: curves and surfaces from numpy.
+
+Bézier, rational Bézier, B-spline, NURBS, Hermite and Catmull–Rom curves, B-spline,
+NURBS and Bézier surfaces, least-squares fitting and interpolation, and every shape and
+scene document of the ``splinekit`` command line (docs/format.md), evaluated by the
+splinekit kernel (Rust). Arrays in, float64 C-contiguous arrays out; bad input raises
+``ValueError`` with the command line's one-line message.
+"""
+
+from ._bfunction import BFunction, bfunction
+from ._splinekit import (
+    BSpline,
+    BSplineSurface,
+    Bezier,
+    BezierSurface,
+    CatmullRom,
+    Curve,
+    FitReport,
+    Hermite,
+    Mesh,
+    NURBS,
+    NURBSSurface,
+    RationalBezier,
+    Scene,
+    Surface,
+    fit,
+    interpolate,
+    load,
+    render,
+)
+
+__all__ = [
+    "BFunction",
+    "BSpline",
+    "BSplineSurface",
+    "Bezier",
+    "BezierSurface",
+    "CatmullRom",
+    "Curve",
+    "FitReport",
+    "Hermite",
+    "Mesh",
+    "NURBS",
+    "NURBSSurface",
+    "RationalBezier",
+    "Scene",
+    "Surface",
+    "bfunction",
+    "fit",
+    "interpolate",
+    "load",
+    "render",
+]

@@ -1,0 +1,198 @@
+//! `splinekit.Curve`: any curve of a shape document, evaluated from numpy.
+//!
+//! A curve object holds its document (the JSON the command line reads, so `to_dict`
+//! round-trips and operations reuse the document functions of the CLI) and the kernel
+//! curve built from it, of the dimension its points ask for.
+
+use numpy::PyArrayDyn;
+use pyo3::prelude::*;
+use splinekit::Interval;
+use splinekit::curve::Curve;
+use splinekit_scene::{AnyCurve, CurveDocument, Curves, DimensionVisitor};
+
+use crate::arrays::{Numbers, as_points_mut, check_finite, filled_rows};
+use crate::errors::{OrValueError, value_error};
+
+/// Highest derivative order one call may ask for (as `splinekit eval --derivatives`).
+pub const MAX_DERIVATIVES: usize = 64;
+
+/// A parametric curve c: [a, b] → ℝᴰ of any kind a shape document describes.
+///
+/// Call it: ``c(t)`` is the point c(t) for a number t (shape (D,)) or the points at N
+/// parameters (shape (N, D)); ``c(t, nu)`` is the derivative c^(nu)(t) with respect to
+/// the curve's own parameter. Open curves refuse parameters outside their domain
+/// [a, b]; closed (periodic) curves wrap them around.
+#[pyclass(subclass, frozen, module = "splinekit", name = "Curve")]
+pub struct PyCurve {
+    pub(crate) doc: CurveDocument,
+    pub(crate) curve: AnyCurve,
+    pub(crate) domain: Interval,
+    pub(crate) closed: bool,
+}
+
+/// Domain and closedness of a curve of any dimension.
+struct Shape;
+
+impl DimensionVisitor<Curves> for Shape {
+    type Output = (Interval, bool);
+    fn visit<const D: usize>(self, c: &dyn Curve<D>) -> (Interval, bool) {
+        (c.domain(), c.is_closed())
+    }
+}
+
+/// c(t_i), c'(t_i), …, c^(order)(t_i) for every parameter, written into `out`
+/// (`out[(i·(order+1) + k)·D + j]`).
+struct EvalInto<'a> {
+    params: &'a [f64],
+    order: usize,
+    out: &'a mut [f64],
+}
+
+impl DimensionVisitor<Curves> for EvalInto<'_> {
+    type Output = ();
+    fn visit<const D: usize>(self, c: &dyn Curve<D>) {
+        c.eval_many(self.params, self.order, as_points_mut::<D>(self.out));
+    }
+}
+
+impl PyCurve {
+    /// Builds the kernel curve of `doc`; its errors are the command line's.
+    pub fn new(doc: CurveDocument) -> PyResult<Self> {
+        let curve = doc.build().or_value_error()?;
+        let (domain, closed) = curve.visit(Shape);
+        Ok(PyCurve { doc, curve, domain, closed })
+    }
+
+    /// The dimension D of the points.
+    pub fn dimension(&self) -> usize {
+        self.curve.dimension()
+    }
+
+    /// Refuses non-finite parameters and, on open curves, parameters outside the domain
+    /// (with the slack of `splinekit eval --at`).
+    pub fn check_params(&self, field: &str, params: &[f64]) -> PyResult<()> {
+        check_finite(field, params)?;
+        if self.closed {
+            return Ok(());
+        }
+        let d = self.domain;
+        let slack = 1e-12 * d.length().max(d.start.abs()).max(d.end.abs());
+        match params.iter().find(|&&t| t < d.start - slack || t > d.end + slack) {
+            Some(t) => Err(value_error(format!(
+                "{field}: parameter {t} is outside the domain [{}, {}] of this open curve",
+                d.start, d.end
+            ))),
+            None => Ok(()),
+        }
+    }
+
+    /// Values and derivatives up to `order` at `params`, shaped (N, order+1, D)
+    /// (scalar: (order+1, D)), the GIL released while the kernel works.
+    pub fn evaluate<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        order: usize,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        check_order("order", order)?;
+        let numbers = Numbers::new(t)?;
+        let params = numbers.list("t")?;
+        self.check_params("t", params)?;
+        let (n, d) = (params.len(), self.dimension());
+        let shape: Vec<usize> = if numbers.is_scalar() { vec![order + 1, d] } else { vec![n, order + 1, d] };
+        let curve = &self.curve;
+        filled_rows(py, &shape, n, (order + 1) * d, |rows, out| {
+            curve.visit(EvalInto { params: &params[rows], order, out })
+        })
+    }
+}
+
+/// Refuses derivative orders above [`MAX_DERIVATIVES`].
+pub fn check_order(field: &str, order: usize) -> PyResult<()> {
+    if order > MAX_DERIVATIVES {
+        return Err(value_error(format!("{field}: {order} is more than the limit of {MAX_DERIVATIVES}")));
+    }
+    Ok(())
+}
+
+#[pymethods]
+impl PyCurve {
+    /// c^(nu)(t): for a number t an array of shape (D,), for N parameters (N, D).
+    ///
+    /// nu = 0 gives the points, nu = k the k-th derivative dᵏc/dtᵏ. Splines evaluate a
+    /// sorted batch span by span (the knot span is found once per span, then the p + 1
+    /// non-zero basis functions or the span's Bézier form are used).
+    #[pyo3(signature = (t, nu = 0))]
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        nu: usize,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        check_order("nu", nu)?;
+        let numbers = Numbers::new(t)?;
+        let params = numbers.list("t")?;
+        self.check_params("t", params)?;
+        let (n, d) = (params.len(), self.dimension());
+        let shape: Vec<usize> = if numbers.is_scalar() { vec![d] } else { vec![n, d] };
+        let curve = &self.curve;
+        filled_rows(py, &shape, n, d, |rows, out| {
+            let params = &params[rows];
+            if nu == 0 {
+                return curve.visit(EvalInto { params, order: 0, out });
+            }
+            // All orders up to nu, then the nu-th of each block.
+            let mut all = vec![0.0; params.len() * (nu + 1) * d];
+            curve.visit(EvalInto { params, order: nu, out: &mut all });
+            for (o, block) in out.chunks_exact_mut(d).zip(all.chunks_exact((nu + 1) * d)) {
+                o.copy_from_slice(&block[nu * d..]);
+            }
+        })
+    }
+
+    /// c(t), c'(t), …, c^(order)(t): shape (N, order + 1, D) for N parameters, (order + 1, D)
+    /// for a number; ``derivatives(t, k)[i, j]`` is dʲc/dtʲ at t[i].
+    fn derivatives<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        order: usize,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.evaluate(py, t, order)
+    }
+
+    /// The parameter domain (a, b).
+    #[getter]
+    fn domain(&self) -> (f64, f64) {
+        (self.domain.start, self.domain.end)
+    }
+
+    /// Whether the curve is closed (periodic): c(a) = c(b), continuing smoothly.
+    #[getter]
+    fn closed(&self) -> bool {
+        self.closed
+    }
+
+    /// The dimension D of the curve's points.
+    #[getter(dimension)]
+    fn dimension_getter(&self) -> usize {
+        self.dimension()
+    }
+
+    /// The document's ``type`` (``"bspline"``, ``"circle"``, …).
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.doc.type_name()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "<splinekit {} curve in {}-D on [{}, {}]{}>",
+            self.doc.type_name(),
+            self.dimension(),
+            self.domain.start,
+            self.domain.end,
+            if self.closed { ", closed" } else { "" }
+        )
+    }
+}

@@ -1,0 +1,255 @@
+//! `splinekit.fit` and `splinekit.interpolate`: B-splines from sampled points, by the
+//! kernel functions `splinekit fit` and `splinekit interpolate` call.
+
+use numpy::PyArray1;
+use pyo3::prelude::*;
+use splinekit::Point;
+use splinekit::fit::{
+    self as kfit, Fit, FitOptions, FitWithKnotsOptions, InterpolationOptions, KnotPlacement, Parametrization,
+};
+use splinekit_scene::refine::bspline_doc;
+
+use crate::arrays::{Numbers, as_points, check_finite};
+use crate::curve::PyCurve;
+use crate::curve_kinds::wrap;
+use crate::dimension::by_dimension;
+use crate::errors::{OrValueError, value_error};
+
+/// Largest degree accepted for fitting and interpolation (as the command line).
+const MAX_DEGREE: usize = 64;
+
+/// How well a least-squares fit matches its data, as ``splinekit fit --report`` prints:
+/// ``rms_error`` = √(Σ|c(tᵢ) − Qᵢ|²/m), ``max_error`` = maxᵢ |c(tᵢ) − Qᵢ|, and
+/// ``condition_estimate`` = max|R_kk|/min|R_kk| of the QR factor (a lower estimate of the
+/// collocation matrix's condition number); ``params`` are the data parameters tᵢ.
+#[pyclass(frozen, module = "splinekit", name = "FitReport")]
+pub struct FitReport {
+    /// √(Σ|c(tᵢ) − Qᵢ|²/m).
+    #[pyo3(get)]
+    rms_error: f64,
+    /// maxᵢ |c(tᵢ) − Qᵢ|.
+    #[pyo3(get)]
+    max_error: f64,
+    /// max|R_kk|/min|R_kk| of the QR factor.
+    #[pyo3(get)]
+    condition_estimate: f64,
+    params: Vec<f64>,
+}
+
+#[pymethods]
+impl FitReport {
+    /// The data parameters tᵢ, shape (m,).
+    #[getter]
+    fn params<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_slice(py, &self.params)
+    }
+    fn __str__(&self) -> String {
+        format!(
+            "fit: rms error {:.6e}, max error {:.6e}, condition estimate {:.3e}",
+            self.rms_error, self.max_error, self.condition_estimate
+        )
+    }
+    fn __repr__(&self) -> String {
+        format!("<FitReport {}>", self.__str__())
+    }
+}
+
+/// A method name or an array: `params` and `knots` take either.
+#[derive(FromPyObject)]
+pub enum Choice<'py> {
+    /// `"chord"`, `"averaged"`, …
+    Name(String),
+    /// Explicit numbers.
+    Values(Bound<'py, PyAny>),
+}
+
+fn parametrization(name: &str) -> PyResult<Parametrization> {
+    Ok(match name {
+        "uniform" => Parametrization::Uniform,
+        "chord" => Parametrization::ChordLength,
+        "centripetal" => Parametrization::Centripetal,
+        other => {
+            return Err(value_error(format!(
+                "params: expected \"uniform\", \"chord\", \"centripetal\" or an array of parameters, got \"{other}\""
+            )));
+        }
+    })
+}
+
+fn placement(name: &str) -> PyResult<KnotPlacement> {
+    Ok(match name {
+        "uniform" => KnotPlacement::Uniform,
+        "averaged" => KnotPlacement::Averaged,
+        other => {
+            return Err(value_error(format!(
+                "knots: expected \"uniform\", \"averaged\" or an array of knots, got \"{other}\""
+            )));
+        }
+    })
+}
+
+fn check_degree(p: usize) -> PyResult<()> {
+    if p == 0 || p > MAX_DEGREE {
+        return Err(value_error(format!("degree: must be between 1 and {MAX_DEGREE}, got {p}")));
+    }
+    Ok(())
+}
+
+/// Owned numbers of a 1-D argument, checked finite.
+fn numbers_of(field: &str, ob: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+    let n = Numbers::new(ob)?;
+    let v = n.list(field)?.to_vec();
+    check_finite(field, &v)?;
+    Ok(v)
+}
+
+/// Everything `fit` was asked for, read from Python.
+struct FitRequest {
+    degree: usize,
+    control_points: Option<usize>,
+    params: Result<Parametrization, Vec<f64>>,
+    knots: Result<KnotPlacement, Vec<f64>>,
+    closed: bool,
+    weights: Option<Vec<f64>>,
+    fix_ends: bool,
+}
+
+impl FitRequest {
+    /// The fit of `points` (the kernel's `fit`, or `fit_with_knots` when parameters or
+    /// knots are given as numbers).
+    fn run<const D: usize>(self, points: &[Point<D>]) -> splinekit::Result<Fit<D>> {
+        let p = self.degree;
+        let count_from_knots = |k: &Vec<f64>| k.len().saturating_sub(p + 1);
+        let n = match (&self.knots, self.control_points) {
+            (_, Some(n)) => n,
+            (Err(k), None) => count_from_knots(k),
+            (Ok(_), None) => {
+                return Err(splinekit::Error::invalid(
+                    "n_control_points",
+                    "give a number of control points or an array of knots",
+                ));
+            }
+        };
+        if let (Ok(params), Ok(knots)) = (&self.params, &self.knots) {
+            let o = FitOptions {
+                params: *params,
+                knots: *knots,
+                closed: self.closed,
+                interpolate_ends: self.fix_ends,
+                weights: self.weights,
+                ..FitOptions::new(p, n)
+            };
+            return kfit::fit(points, &o);
+        }
+        let params = match self.params {
+            Ok(method) => kfit::parametrize(points, method, self.closed)?,
+            Err(values) => values,
+        };
+        let knots = match self.knots {
+            Ok(placement) if self.closed => kfit::periodic_knots(&params, p, n, placement),
+            Ok(placement) => kfit::fit_knots(&params, p, n, placement),
+            Err(k) if self.control_points.is_some_and(|n| n != count_from_knots(&k)) => {
+                return Err(splinekit::Error::invalid(
+                    "n_control_points",
+                    format!(
+                        "{n} does not match the {} knots of degree {p}, which give {} control points",
+                        k.len(),
+                        count_from_knots(&k)
+                    ),
+                ));
+            }
+            Err(k) => k,
+        };
+        let o = FitWithKnotsOptions {
+            closed: self.closed,
+            interpolate_ends: self.fix_ends,
+            weights: self.weights,
+            ..FitWithKnotsOptions::new(p, knots)
+        };
+        kfit::fit_with_knots(points, &params, &o)
+    }
+}
+
+/// Least-squares B-spline c minimising Σᵢ (wᵢ |c(tᵢ) − Qᵢ|)² over its control points, by
+/// banded Givens QR (the problem of scipy's ``make_lsq_spline``).
+///
+/// ``points`` (m, D); ``degree`` p; ``n_control_points`` n (p + 1 ≤ n ≤ m). ``params``:
+/// ``"uniform"`` (tᵢ = i/(m − 1)), ``"chord"`` (accumulated chord length) or
+/// ``"centripetal"`` on [0, 1], or an array of m parameters. ``knots``: ``"averaged"``
+/// (every knot span holds data), ``"uniform"``, or an array of n + p + 1 knots (then n may
+/// be omitted). ``closed`` fits a periodic curve; ``weights`` (m,) ≥ 0 multiply the
+/// residuals; ``fix_ends`` makes the curve start and end at the first and last points.
+/// Returns a ``BSpline`` whose ``fit_report`` holds the errors.
+#[pyfunction]
+#[pyo3(signature = (points, degree, n_control_points = None, params = Choice::Name("chord".into()), knots = Choice::Name("averaged".into()), closed = false, weights = None, fix_ends = false))]
+#[allow(clippy::too_many_arguments)]
+pub fn fit<'py>(
+    py: Python<'py>,
+    points: &Bound<'py, PyAny>,
+    degree: usize,
+    n_control_points: Option<usize>,
+    params: Choice<'py>,
+    knots: Choice<'py>,
+    closed: bool,
+    weights: Option<&Bound<'py, PyAny>>,
+    fix_ends: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    check_degree(degree)?;
+    let params = match params {
+        Choice::Name(n) => Ok(parametrization(&n)?),
+        Choice::Values(v) => Err(numbers_of("params", &v)?),
+    };
+    let knots = match knots {
+        Choice::Name(n) => Ok(placement(&n)?),
+        Choice::Values(v) => Err(numbers_of("knots", &v)?),
+    };
+    let weights = weights.map(|w| numbers_of("weights", w)).transpose()?;
+    let request = FitRequest { degree, control_points: n_control_points, params, knots, closed, weights, fix_ends };
+    let data = Numbers::new(points)?;
+    let (_, d) = data.rows("points")?;
+    let values = data.values();
+    let (doc, report) = by_dimension!(d, "points", D => {
+        let f = py.detach(|| request.run(as_points::<D>(values))).or_value_error()?;
+        let report = FitReport { rms_error: f.rms_error, max_error: f.max_error, condition_estimate: f.condition_estimate, params: f.params };
+        Ok::<_, PyErr>((bspline_doc(&f.curve), report))
+    })?;
+    wrap(py, PyCurve::new(doc)?, Some(Py::new(py, report)?))
+}
+
+/// The B-spline of degree p through every point Qᵢ at its parameter tᵢ (global
+/// interpolation, *The NURBS Book* §9.2; knots by averaging the parameters so the
+/// collocation matrix is non-singular). ``params`` as in ``fit``; ``closed`` interpolates
+/// a periodic curve; ``end_derivatives=(d0, d1)`` prescribes c'(0) and c'(1).
+#[pyfunction]
+#[pyo3(signature = (points, degree, params = "chord", closed = false, end_derivatives = None))]
+pub fn interpolate<'py>(
+    py: Python<'py>,
+    points: &Bound<'py, PyAny>,
+    degree: usize,
+    params: &str,
+    closed: bool,
+    end_derivatives: Option<(Bound<'py, PyAny>, Bound<'py, PyAny>)>,
+) -> PyResult<Bound<'py, PyAny>> {
+    check_degree(degree)?;
+    let method = parametrization(params)?;
+    let ends = end_derivatives
+        .map(|(a, b)| Ok::<_, PyErr>((numbers_of("end_derivatives[0]", &a)?, numbers_of("end_derivatives[1]", &b)?)))
+        .transpose()?;
+    let data = Numbers::new(points)?;
+    let (_, d) = data.rows("points")?;
+    let values = data.values();
+    let doc = by_dimension!(d, "points", D => {
+        let mut o = InterpolationOptions::<D>::new(degree);
+        o.params = method;
+        o.closed = closed;
+        if let Some((a, b)) = &ends {
+            if a.len() != D || b.len() != D {
+                return Err(value_error(format!("end_derivatives: expected {D} coordinates like the points, got {} and {}", a.len(), b.len())));
+            }
+            o.end_derivatives = Some((Point::<D>::from_column_slice(a), Point::<D>::from_column_slice(b)));
+        }
+        let r = py.detach(|| kfit::interpolate(as_points::<D>(values), &o)).or_value_error()?;
+        Ok::<_, PyErr>(bspline_doc(&r.curve))
+    })?;
+    wrap(py, PyCurve::new(doc)?, None)
+}

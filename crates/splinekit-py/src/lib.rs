@@ -1,0 +1,50 @@
+//! # splinekit for Python
+//!
+//! The extension module `splinekit._splinekit` (re-exported by the `splinekit` package):
+//! curves and surfaces of every kind the shape documents describe, evaluated from and into
+//! numpy arrays by the splinekit kernel, fitting and interpolation, documents in and out.
+//! Every error is a `ValueError` with the command line's one-line message; batch work runs
+//! with the GIL released.
+
+mod arrays;
+mod blending;
+mod curve;
+mod curve_kinds;
+mod curve_queries;
+mod dimension;
+mod documents;
+mod errors;
+mod fitting;
+mod json_value;
+mod knot_ops;
+mod mesh;
+mod render;
+mod surface;
+mod surface_kinds;
+
+use pyo3::prelude::*;
+
+/// The extension module.
+#[pymodule]
+fn _splinekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<curve::PyCurve>()?;
+    m.add_class::<curve_kinds::PyBSpline>()?;
+    m.add_class::<curve_kinds::PyNurbs>()?;
+    m.add_class::<curve_kinds::PyBezier>()?;
+    m.add_class::<curve_kinds::PyRationalBezier>()?;
+    m.add_class::<curve_kinds::PyHermite>()?;
+    m.add_class::<curve_kinds::PyCatmullRom>()?;
+    m.add_class::<surface::PySurface>()?;
+    m.add_class::<surface_kinds::PyBSplineSurface>()?;
+    m.add_class::<surface_kinds::PyNurbsSurface>()?;
+    m.add_class::<surface_kinds::PyBezierSurface>()?;
+    m.add_class::<documents::PyScene>()?;
+    m.add_class::<fitting::FitReport>()?;
+    m.add_class::<mesh::PyMesh>()?;
+    m.add_function(wrap_pyfunction!(fitting::fit, m)?)?;
+    m.add_function(wrap_pyfunction!(fitting::interpolate, m)?)?;
+    m.add_function(wrap_pyfunction!(documents::load, m)?)?;
+    m.add_function(wrap_pyfunction!(render::render, m)?)?;
+    m.add("HAS_RENDER", cfg!(feature = "render"))?;
+    Ok(())
+}

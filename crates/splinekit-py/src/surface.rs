@@ -1,0 +1,337 @@
+//! `splinekit.Surface`: any surface of a shape document, evaluated from numpy on grids
+//! (as scipy's ``RectBivariateSpline``) or at paired parameters.
+
+use numpy::PyArrayDyn;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use splinekit::Interval;
+use splinekit::surface::{Surface, unit_normal};
+use splinekit_scene::{AnySurface, DimensionVisitor, SurfaceDocument, Surfaces};
+
+use crate::arrays::{Numbers, as_points_mut, check_finite, filled};
+use crate::errors::{OrValueError, value_error};
+
+/// Highest total order of partials one call may ask for (as ``splinekit eval``).
+pub const MAX_SURFACE_DERIVATIVES: usize = 16;
+
+/// A parametric surface S: [a, b] × [c, d] → ℝᴰ of any kind a shape document describes.
+///
+/// ``s(u, v)`` evaluates on the grid u × v: u of shape (Nu,) and v (Nv,) give (Nu, Nv, D);
+/// ``s(u, v, grid=False)`` pairs u[i] with v[i] and gives (N, D). Open directions refuse
+/// parameters outside the domain; closed ones wrap them around.
+#[pyclass(subclass, frozen, module = "splinekit", name = "Surface")]
+pub struct PySurface {
+    pub(crate) doc: SurfaceDocument,
+    pub(crate) surface: AnySurface,
+    domain: [Interval; 2],
+    closed: [bool; 2],
+}
+
+/// Domains and closedness of a surface of any dimension.
+struct Shape;
+
+impl DimensionVisitor<Surfaces> for Shape {
+    type Output = ([Interval; 2], [bool; 2]);
+    fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Self::Output {
+        ([s.domain_u(), s.domain_v()], [s.is_closed_u(), s.is_closed_v()])
+    }
+}
+
+/// The partials ∂^{i+j}S/∂uⁱ∂vʲ, i, j ≤ k, on a grid (`eval_grid`'s layout) or at pairs.
+struct Partials<'a> {
+    us: &'a [f64],
+    vs: &'a [f64],
+    grid: bool,
+    k: usize,
+    out: &'a mut [f64],
+}
+
+impl DimensionVisitor<Surfaces> for Partials<'_> {
+    type Output = ();
+    fn visit<const D: usize>(self, s: &dyn Surface<D>) {
+        let out = as_points_mut::<D>(self.out);
+        if self.grid {
+            return s.eval_grid(self.us, self.vs, self.k, self.k, out);
+        }
+        let w = (self.k + 1) * (self.k + 1);
+        for (i, (&u, &v)) in self.us.iter().zip(self.vs).enumerate() {
+            s.eval_partials(u, v, self.k, self.k, &mut out[i * w..(i + 1) * w]);
+        }
+    }
+}
+
+/// Points and unit normals N = S_u × S_v / |S_u × S_v| (zero where the surface is not
+/// regular, and outside 3-D) on a grid or at pairs.
+struct WithNormals<'a> {
+    us: &'a [f64],
+    vs: &'a [f64],
+    grid: bool,
+    out: &'a mut [f64],
+}
+
+impl DimensionVisitor<Surfaces> for WithNormals<'_> {
+    type Output = ();
+    fn visit<const D: usize>(self, s: &dyn Surface<D>) {
+        let sites = if self.grid { self.us.len() * self.vs.len() } else { self.us.len() };
+        let (points, normals) = as_points_mut::<D>(self.out).split_at_mut(sites);
+        if self.grid {
+            return s.eval_grid_with_normals(self.us, self.vs, points, normals);
+        }
+        let mut o = [splinekit::Point::<D>::zeros(); 4];
+        for (i, (&u, &v)) in self.us.iter().zip(self.vs).enumerate() {
+            s.eval_partials(u, v, 1, 1, &mut o);
+            points[i] = o[0];
+            normals[i] = unit_normal(&o[2], &o[1]).unwrap_or_else(splinekit::Point::<D>::zeros);
+        }
+    }
+}
+
+/// The parameters of one call: u and v values, their output shape, grid or paired.
+struct Request<'py> {
+    u: Numbers<'py>,
+    v: Numbers<'py>,
+    grid: bool,
+}
+
+impl<'py> Request<'py> {
+    fn us(&self) -> &[f64] {
+        self.u.values()
+    }
+    fn vs(&self) -> &[f64] {
+        self.v.values()
+    }
+    /// Evaluation sites: Nu·Nv on a grid, N paired.
+    fn count(&self) -> usize {
+        if self.grid { self.us().len() * self.vs().len() } else { self.us().len() }
+    }
+    /// The leading output shape: (Nu, Nv) on a grid of arrays, (N,) paired, () for two
+    /// numbers.
+    fn shape(&self) -> Vec<usize> {
+        match (self.u.is_scalar() && self.v.is_scalar(), self.grid) {
+            (true, _) => vec![],
+            (false, true) => vec![self.us().len(), self.vs().len()],
+            (false, false) => vec![self.us().len()],
+        }
+    }
+}
+
+impl PySurface {
+    /// Builds the kernel surface of `doc`; its errors are the command line's.
+    pub fn new(doc: SurfaceDocument) -> PyResult<Self> {
+        let surface = doc.build().or_value_error()?;
+        let (domain, closed) = surface.visit(Shape);
+        Ok(PySurface { doc, surface, domain, closed })
+    }
+
+    fn dimension(&self) -> usize {
+        self.surface.dimension()
+    }
+
+    fn request<'py>(&self, u: &Bound<'py, PyAny>, v: &Bound<'py, PyAny>, grid: bool) -> PyResult<Request<'py>> {
+        let r = Request { u: Numbers::new(u)?, v: Numbers::new(v)?, grid };
+        for (field, values, axis) in [("u", r.u.list("u")?, 0), ("v", r.v.list("v")?, 1)] {
+            self.check_params(field, values, axis)?;
+        }
+        if !grid && r.us().len() != r.vs().len() {
+            return Err(value_error(format!(
+                "v: with grid=False u and v are paired and need the same length, got {} and {}",
+                r.us().len(),
+                r.vs().len()
+            )));
+        }
+        Ok(r)
+    }
+
+    fn check_params(&self, field: &str, values: &[f64], axis: usize) -> PyResult<()> {
+        check_finite(field, values)?;
+        if self.closed[axis] {
+            return Ok(());
+        }
+        let d = self.domain[axis];
+        let slack = 1e-12 * d.length().max(d.start.abs()).max(d.end.abs());
+        match values.iter().find(|&&t| t < d.start - slack || t > d.end + slack) {
+            Some(t) => Err(value_error(format!(
+                "{field}: parameter {t} is outside the domain [{}, {}] of this open direction",
+                d.start, d.end
+            ))),
+            None => Ok(()),
+        }
+    }
+
+    /// All partials with i, j ≤ k, shaped (sites…, (k+1)², D).
+    fn partial_block<'py>(&self, py: Python<'py>, r: &Request<'py>, k: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let (us, vs, grid) = (r.us(), r.vs(), r.grid);
+        let shape = [r.count(), (k + 1) * (k + 1), self.dimension()];
+        let surface = &self.surface;
+        filled(py, &shape, |out| surface.visit(Partials { us, vs, grid, k, out }))
+    }
+
+    /// Reshapes (sites, D) blocks to the request's leading shape.
+    fn shaped<'py>(&self, r: &Request<'py>, a: Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        let mut shape = r.shape();
+        shape.push(self.dimension());
+        let np = a.py().import("numpy")?;
+        np.call_method1("ascontiguousarray", (a.call_method1("reshape", (shape,))?,))
+    }
+}
+
+#[pymethods]
+impl PySurface {
+    /// S(u, v): on the grid u × v (Nu, Nv, D), or paired (N, D) with ``grid=False``; two
+    /// numbers give (D,). Tensor-product splines evaluate each u- and v-basis once.
+    #[pyo3(signature = (u, v, grid = true))]
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        grid: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let r = self.request(u, v, grid)?;
+        let block = self.partial_block(py, &r, 0)?;
+        self.shaped(&r, block.into_any())
+    }
+
+    /// The partials ∂^{i+j}S/∂uⁱ∂vʲ of total order 1 … ``order``, as a dict keyed by ``"u"``,
+    /// ``"v"``, ``"uu"``, ``"uv"``, ``"vv"``, … (the keys of ``splinekit eval``), each shaped
+    /// like ``s(u, v, grid)``.
+    #[pyo3(signature = (u, v, order = 1, grid = true))]
+    fn partials<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        order: usize,
+        grid: bool,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        if order > MAX_SURFACE_DERIVATIVES {
+            return Err(value_error(format!(
+                "order: {order} is more than the limit of {MAX_SURFACE_DERIVATIVES} for surfaces"
+            )));
+        }
+        let r = self.request(u, v, grid)?;
+        let block = self.partial_block(py, &r, order)?;
+        let dict = PyDict::new(py);
+        for total in 1..=order {
+            for i in (0..=total).rev() {
+                let j = total - i;
+                let key = format!("{}{}", "u".repeat(i), "v".repeat(j));
+                let slice = (pyo3::types::PySlice::full(py), i * (order + 1) + j);
+                dict.set_item(key, self.shaped(&r, block.get_item(slice)?)?)?;
+            }
+        }
+        Ok(dict)
+    }
+
+    /// Unit normals N = S_u × S_v / |S_u × S_v|, shaped like ``s(u, v, grid)`` (3-D
+    /// surfaces; zero where S_u × S_v = 0, e.g. at poles).
+    #[pyo3(signature = (u, v, grid = true))]
+    fn normals<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        grid: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        Ok(self.points_and_normals(py, u, v, grid)?.1)
+    }
+
+    /// ``(points, normals)`` in one pass (S, S_u and S_v per site, the basis once per row
+    /// and column on grids): what shading needs.
+    #[pyo3(signature = (u, v, grid = true))]
+    fn points_and_normals<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        grid: bool,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+        let r = self.request(u, v, grid)?;
+        let (us, vs) = (r.us(), r.vs());
+        let surface = &self.surface;
+        let both =
+            filled(py, &[2, r.count(), self.dimension()], |out| surface.visit(WithNormals { us, vs, grid, out }))?;
+        Ok((self.shaped(&r, both.get_item(0)?)?, self.shaped(&r, both.get_item(1)?)?))
+    }
+
+    /// The point of the surface nearest to `p`: ``(u, v, S(u, v), distance)``, the distance
+    /// within `accuracy` of the true minimum.
+    #[pyo3(signature = (p, accuracy = 1e-12))]
+    fn closest_point<'py>(
+        &self,
+        py: Python<'py>,
+        p: &Bound<'py, PyAny>,
+        accuracy: f64,
+    ) -> PyResult<(f64, f64, Bound<'py, PyAny>, f64)> {
+        let numbers = Numbers::new(p)?;
+        let query = numbers.list("p")?;
+        if query.len() != self.dimension() || numbers.is_scalar() {
+            return Err(value_error(format!(
+                "p: expected {} coordinates like the surface's points, got {}",
+                self.dimension(),
+                numbers.values().len()
+            )));
+        }
+        let surface = &self.surface;
+        let (u, v, point, distance) =
+            py.detach(|| surface.visit(NearestOnSurface { query, accuracy })).or_value_error()?;
+        Ok((u, v, numpy::PyArray1::from_vec(py, point).into_any(), distance))
+    }
+
+    /// The u domain (a, b).
+    #[getter]
+    fn domain_u(&self) -> (f64, f64) {
+        (self.domain[0].start, self.domain[0].end)
+    }
+    /// The v domain (c, d).
+    #[getter]
+    fn domain_v(&self) -> (f64, f64) {
+        (self.domain[1].start, self.domain[1].end)
+    }
+    /// Whether the surface closes up (periodically) in u.
+    #[getter]
+    fn closed_u(&self) -> bool {
+        self.closed[0]
+    }
+    /// Whether the surface closes up (periodically) in v.
+    #[getter]
+    fn closed_v(&self) -> bool {
+        self.closed[1]
+    }
+    /// The dimension D of the surface's points.
+    #[getter(dimension)]
+    fn dimension_getter(&self) -> usize {
+        self.dimension()
+    }
+    /// The document's ``type``.
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.doc.type_name()
+    }
+    fn __repr__(&self) -> String {
+        let [u, v] = self.domain;
+        format!(
+            "<splinekit {} surface in {}-D on [{}, {}] × [{}, {}]>",
+            self.doc.type_name(),
+            self.dimension(),
+            u.start,
+            u.end,
+            v.start,
+            v.end
+        )
+    }
+}
+
+/// The nearest point to a query point: (u, v, S(u, v), distance).
+struct NearestOnSurface<'a> {
+    query: &'a [f64],
+    accuracy: f64,
+}
+
+impl DimensionVisitor<Surfaces> for NearestOnSurface<'_> {
+    type Output = splinekit::Result<(f64, f64, Vec<f64>, f64)>;
+    fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Self::Output {
+        let near = s.closest_point(&splinekit::Point::<D>::from_column_slice(self.query), self.accuracy)?;
+        Ok((near.u, near.v, near.point.iter().copied().collect(), near.distance))
+    }
+}

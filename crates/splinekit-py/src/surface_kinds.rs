@@ -1,0 +1,208 @@
+//! The surface kinds with their own constructors and properties: `BSplineSurface`,
+//! `NURBSSurface`, `BezierSurface` (control nets of shape (nu, nv, D), the first index
+//! along u), each parsed as its shape document.
+
+use numpy::{PyArray1, PyArrayDyn, PyArrayMethods};
+use pyo3::prelude::*;
+use splinekit_scene::SurfaceDocument;
+
+use crate::curve_kinds::document;
+use crate::errors::{OrValueError, value_error};
+use crate::surface::PySurface;
+
+/// Knots in u and in v.
+type KnotPair<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>);
+
+fn base(doc: serde_json::Value) -> PyResult<PyClassInitializer<PySurface>> {
+    let doc = SurfaceDocument::from_value(doc).or_value_error()?;
+    Ok(PyClassInitializer::from(PySurface::new(doc)?))
+}
+
+fn flag<'py>(py: Python<'py>, b: bool) -> PyResult<Bound<'py, PyAny>> {
+    Ok(b.into_pyobject(py)?.to_owned().into_any())
+}
+
+/// The net and knots of a control-net document.
+struct NetFields<'a> {
+    control_points: &'a [Vec<Vec<f64>>],
+    knots: Option<(&'a [f64], &'a [f64])>,
+    weights: Option<&'a [Vec<f64>]>,
+    degrees: (usize, usize),
+}
+
+fn net_fields(doc: &SurfaceDocument) -> Option<NetFields<'_>> {
+    Some(match doc {
+        SurfaceDocument::BsplineSurface(d) => NetFields {
+            control_points: &d.control_points,
+            knots: Some((&d.knots_u, &d.knots_v)),
+            weights: None,
+            degrees: (d.degree_u, d.degree_v),
+        },
+        SurfaceDocument::NurbsSurface(d) => NetFields {
+            control_points: &d.control_points,
+            knots: Some((&d.knots_u, &d.knots_v)),
+            weights: Some(&d.weights),
+            degrees: (d.degree_u, d.degree_v),
+        },
+        SurfaceDocument::BezierSurface(d) => {
+            let rows = d.control_points.len();
+            let cols = d.control_points.first().map_or(0, Vec::len);
+            NetFields {
+                control_points: &d.control_points,
+                knots: None,
+                weights: None,
+                degrees: (rows.saturating_sub(1), cols.saturating_sub(1)),
+            }
+        }
+        _ => return None,
+    })
+}
+
+impl PySurface {
+    fn net(&self, name: &str) -> PyResult<NetFields<'_>> {
+        net_fields(&self.doc).ok_or_else(|| {
+            pyo3::exceptions::PyAttributeError::new_err(format!("a {} surface has no {name}", self.doc.type_name()))
+        })
+    }
+}
+
+#[pymethods]
+impl PySurface {
+    /// The control net P_ij, shape (nu, nv, D).
+    #[getter]
+    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let net = self.net("control_points")?.control_points;
+        let (nu, nv, d) = (net.len(), net[0].len(), net[0][0].len());
+        let flat: Vec<f64> = net.iter().flatten().flatten().copied().collect();
+        PyArray1::from_vec(py, flat).reshape(vec![nu, nv, d]).map_err(value_error)
+    }
+    /// The knots in u and in v.
+    #[getter]
+    fn knots<'py>(&self, py: Python<'py>) -> PyResult<KnotPair<'py>> {
+        let (u, v) = self
+            .net("knots")?
+            .knots
+            .ok_or_else(|| pyo3::exceptions::PyAttributeError::new_err("a Bézier surface has no knots"))?;
+        Ok((PyArray1::from_slice(py, u), PyArray1::from_slice(py, v)))
+    }
+    /// The weights w_ij, shape (nu, nv) (1 for non-rational nets).
+    #[getter]
+    fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let net = self.net("weights")?;
+        let (nu, nv) = (net.control_points.len(), net.control_points[0].len());
+        let flat: Vec<f64> = match net.weights {
+            Some(w) => w.iter().flatten().copied().collect(),
+            None => vec![1.0; nu * nv],
+        };
+        PyArray1::from_vec(py, flat).reshape(vec![nu, nv]).map_err(value_error)
+    }
+    /// The degrees (p, q) in u and v.
+    #[getter]
+    fn degrees(&self) -> PyResult<(usize, usize)> {
+        Ok(self.net("degrees")?.degrees)
+    }
+}
+
+/// Tensor-product B-spline surface S(u, v) = Σᵢ Σⱼ N_{i,p}(u) N_{j,q}(v) P_ij.
+#[pyclass(extends = PySurface, frozen, module = "splinekit", name = "BSplineSurface")]
+pub struct PyBSplineSurface;
+
+#[pymethods]
+impl PyBSplineSurface {
+    #[new]
+    #[pyo3(signature = (knots_u, knots_v, control_points, degree_u, degree_v, periodic_u = false, periodic_v = false))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        knots_u: &Bound<'_, PyAny>,
+        knots_v: &Bound<'_, PyAny>,
+        control_points: &Bound<'_, PyAny>,
+        degree_u: &Bound<'_, PyAny>,
+        degree_v: &Bound<'_, PyAny>,
+        periodic_u: bool,
+        periodic_v: bool,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let py = knots_u.py();
+        let (pu, pv) = (flag(py, periodic_u)?, flag(py, periodic_v)?);
+        let doc = document(
+            "bspline_surface",
+            &[
+                ("degree_u", Some(degree_u)),
+                ("degree_v", Some(degree_v)),
+                ("knots_u", Some(knots_u)),
+                ("knots_v", Some(knots_v)),
+                ("control_points", Some(control_points)),
+                ("periodic_u", Some(&pu)),
+                ("periodic_v", Some(&pv)),
+            ],
+        )?;
+        Ok(base(doc)?.add_subclass(PyBSplineSurface))
+    }
+}
+
+/// NURBS surface S(u, v) = Σ N_{i,p}(u) N_{j,q}(v) w_ij P_ij / Σ N_{i,p}(u) N_{j,q}(v) w_ij.
+#[pyclass(extends = PySurface, frozen, module = "splinekit", name = "NURBSSurface")]
+pub struct PyNurbsSurface;
+
+#[pymethods]
+impl PyNurbsSurface {
+    #[new]
+    #[pyo3(signature = (knots_u, knots_v, control_points, weights, degree_u, degree_v, periodic_u = false, periodic_v = false))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        knots_u: &Bound<'_, PyAny>,
+        knots_v: &Bound<'_, PyAny>,
+        control_points: &Bound<'_, PyAny>,
+        weights: &Bound<'_, PyAny>,
+        degree_u: &Bound<'_, PyAny>,
+        degree_v: &Bound<'_, PyAny>,
+        periodic_u: bool,
+        periodic_v: bool,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let py = knots_u.py();
+        let (pu, pv) = (flag(py, periodic_u)?, flag(py, periodic_v)?);
+        let doc = document(
+            "nurbs_surface",
+            &[
+                ("degree_u", Some(degree_u)),
+                ("degree_v", Some(degree_v)),
+                ("knots_u", Some(knots_u)),
+                ("knots_v", Some(knots_v)),
+                ("control_points", Some(control_points)),
+                ("weights", Some(weights)),
+                ("periodic_u", Some(&pu)),
+                ("periodic_v", Some(&pv)),
+            ],
+        )?;
+        Ok(base(doc)?.add_subclass(PyNurbsSurface))
+    }
+}
+
+/// Tensor-product Bézier surface S(u, v) = Σ B_{i,n}(u) B_{j,m}(v) P_ij on [0, 1]².
+#[pyclass(extends = PySurface, frozen, module = "splinekit", name = "BezierSurface")]
+pub struct PyBezierSurface;
+
+#[pymethods]
+impl PyBezierSurface {
+    #[new]
+    fn new(control_points: &Bound<'_, PyAny>) -> PyResult<PyClassInitializer<Self>> {
+        Ok(base(document("bezier_surface", &[("control_points", Some(control_points))])?)?
+            .add_subclass(PyBezierSurface))
+    }
+}
+
+/// The Python object of a surface document: its kind's class, else a plain `Surface`.
+pub fn surface_object(py: Python<'_>, doc: SurfaceDocument) -> PyResult<Bound<'_, PyAny>> {
+    let kind = match &doc {
+        SurfaceDocument::BsplineSurface(_) => 1,
+        SurfaceDocument::NurbsSurface(_) => 2,
+        SurfaceDocument::BezierSurface(_) => 3,
+        _ => 0,
+    };
+    let init = PyClassInitializer::from(PySurface::new(doc)?);
+    Ok(match kind {
+        1 => Bound::new(py, init.add_subclass(PyBSplineSurface))?.into_any(),
+        2 => Bound::new(py, init.add_subclass(PyNurbsSurface))?.into_any(),
+        3 => Bound::new(py, init.add_subclass(PyBezierSurface))?.into_any(),
+        _ => Bound::new(py, init)?.into_any(),
+    })
+}

@@ -1,0 +1,49 @@
+"""The type stubs describe the module as it is, and every public item has a docstring."""
+
+import ast
+import inspect
+import pathlib
+
+import splinekit as sk
+from splinekit import _splinekit
+
+STUBS = pathlib.Path(sk.__file__).with_name("_splinekit.pyi")
+
+
+def stub_names():
+    tree = ast.parse(STUBS.read_text())
+    classes, functions = {}, set()
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            classes[node.name] = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
+        elif isinstance(node, ast.FunctionDef):
+            functions.add(node.name)
+    return classes, functions
+
+
+def public(cls):
+    own = {k for k, v in vars(cls).items() if not k.startswith("_") or k == "__call__"}
+    return own
+
+
+def test_stubs_match_the_module():
+    classes, functions = stub_names()
+    runtime = {n for n in dir(_splinekit) if not n.startswith("_")}
+    runtime_classes = {n for n in runtime if inspect.isclass(getattr(_splinekit, n))}
+    assert runtime_classes == set(classes)
+    assert {n for n in runtime if callable(getattr(_splinekit, n))} - runtime_classes == functions
+    for name, methods in classes.items():
+        cls = getattr(_splinekit, name)
+        assert public(cls) <= methods | {"__init__"}, (name, public(cls) - methods)
+        documented = {m for m in methods if m != "__init__"}
+        assert documented <= set(dir(cls)), (name, documented - set(dir(cls)))
+
+
+def test_every_public_item_has_a_docstring():
+    for name in sk.__all__:
+        item = getattr(sk, name)
+        assert inspect.getdoc(item), name
+        if inspect.isclass(item):
+            for attr, value in vars(item).items():
+                if not attr.startswith("_"):
+                    assert inspect.getdoc(value), f"{name}.{attr}"

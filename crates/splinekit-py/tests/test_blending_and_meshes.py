@@ -1,0 +1,138 @@
+"""B-functions, blending splines (frames, animation, local pieces) and meshes."""
+
+import pathlib
+
+import numpy as np
+import pytest
+
+import splinekit as sk
+
+ROOT = pathlib.Path(__file__).resolve().parents[3]
+HEART = {
+    "type": "blending_spline",
+    "model": {"type": "heart"},
+    "local_curves": 8,
+    "local": {"type": "bezier", "degree": 3},
+    "bfunction": {"type": "erbs"},
+}
+
+
+def test_bfunctions():
+    smooth = sk.bfunction("polynomial", smoothness=1)
+    t = np.linspace(0, 1, 11)
+    np.testing.assert_allclose(smooth(t), 3 * t**2 - 2 * t**3, atol=1e-15)
+    np.testing.assert_allclose(smooth(t, 1), 6 * t - 6 * t**2, atol=1e-14)
+    assert isinstance(smooth(0.5), float)
+    erbs = sk.bfunction()
+    assert erbs(0.0) == 0.0 and erbs(1.0) == 1.0 and abs(erbs(0.5) - 0.5) < 1e-15
+    h = 1e-5
+    assert abs(erbs(0.3, 1) - (erbs(0.3 + h) - erbs(0.3 - h)) / (2 * h)) < 1e-8
+    skewed = sk.bfunction("erbs", **{"lambda": 0.3})
+    assert skewed(0.3) < 0.5
+    trig = sk.bfunction("trigonometric")
+    np.testing.assert_allclose(trig(t), t - np.sin(2 * np.pi * t) / (2 * np.pi), atol=1e-15)
+    with pytest.raises(ValueError, match=r"^bfunction"):
+        sk.bfunction("erbs", alpha=-1)
+    with pytest.raises(ValueError, match=r"^bfunction\.type: "):
+        sk.bfunction("sigmoid")
+
+
+def test_set_transform_moves_only_its_local_curve():
+    c = sk.load(HEART)
+    a, b = c.domain
+    t = np.linspace(a, b, 400, endpoint=False)
+    moved = c.set_transform(2, translate=[0, 0, 1])
+    assert moved.to_dict()["transforms"] == {"2": {"translate": [0, 0, 1]}}
+    assert c.to_dict().get("transforms") is None  # the original is unchanged
+    dz = moved(t)[:, 2] - c(t)[:, 2]
+    support = c.local_pieces()[2]["support"]
+    inside = (t > support[0]) & (t < support[1])
+    assert np.all(dz[inside] > 0) and np.all(np.abs(dz[~inside]) < 1e-12)
+    centre = c.local_pieces()[2]["origin"]
+    turned = c.set_transform(2, rotate={"axis": [0, 0, 1], "angle": 0.5}, scale=2.0)
+    assert turned.to_dict()["transforms"]["2"] == {"rotate": {"axis": [0, 0, 1], "angle": 0.5}, "scale": 2.0}
+    assert len(centre) == 3
+    with pytest.raises(ValueError, match=r"^transforms\[2\]\.translate: expected 3 coordinates, got 2$"):
+        c.set_transform(2, translate=[0, 1])
+    with pytest.raises(ValueError, match=r"^type: set_transform works on blending_spline curves, not heart$"):
+        sk.load({"type": "heart"}).set_transform(0, scale=2.0)
+
+
+def test_local_pieces_reproduce_the_spline_at_the_knots():
+    c = sk.load(HEART)
+    pieces = c.local_pieces(samples=9)
+    assert len(pieces) == 8
+    for p in pieces:
+        assert p["points"].shape == (9, 3)
+        lo, hi = p["support"]
+        np.testing.assert_allclose(p["points"][4], c((lo + hi) / 2 % c.domain[1]), atol=1e-9)
+
+
+def test_at_time_poses_the_animation():
+    beating = sk.load(ROOT / "examples" / "shapes" / "beating_heart.json")
+    rest = beating(np.pi)
+    posed = beating.at_time(0.25)
+    np.testing.assert_allclose(posed(np.pi), [0.0, -18.5, 0.0], atol=1e-9)
+    assert not np.allclose(rest, posed(np.pi))
+
+
+def test_surface_tessellation_and_saving(tmp_path):
+    sphere = sk.load({"type": "sphere"})
+    mesh = sphere.tessellate(density=16)
+    assert mesh.vertices.shape[1] == 3 and mesh.faces.shape[1] == 3
+    assert mesh.faces.dtype == np.int32 and mesh.faces.max() < len(mesh.vertices)
+    np.testing.assert_allclose(np.linalg.norm(mesh.vertices, axis=1), 1.0, atol=1e-14)
+    np.testing.assert_allclose(np.linalg.norm(mesh.normals, axis=1), 1.0, atol=1e-12)
+    assert mesh.uv.shape == (len(mesh.vertices), 2) and mesh.uv.min() >= 0 and mesh.uv.max() <= 1
+    a, b, c = (mesh.vertices[mesh.faces[:, k]] for k in range(3))
+    volume = np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6
+    assert abs(volume / (4 / 3 * np.pi) - 1) < 0.05  # 16 × 16 cells: 3.5 % short
+    for ext in ("obj", "stl", "stla", "ply", "gltf", "glb"):
+        path = tmp_path / f"sphere.{ext}"
+        mesh.save(path)
+        assert path.stat().st_size > 100
+    assert (tmp_path / "sphere.obj").read_text().count("\nf ") == len(mesh.faces)
+    with pytest.raises(ValueError, match=r"^path: meshes are written as .obj, .stl, .stla, .ply, .gltf or .glb, not"):
+        mesh.save(tmp_path / "sphere.svg")
+    fine = sphere.tessellate(tolerance=1e-3)
+    assert len(fine.faces) > len(mesh.faces)
+    with pytest.raises(ValueError, match=r"^density: between 1 and 2048 cells per direction, got 0$"):
+        sphere.tessellate(density=0)
+
+
+def test_curve_polylines():
+    circle = sk.load({"type": "circle"})
+    line = circle.tessellate(density=16)
+    assert line.shape == (16, 3)
+    np.testing.assert_allclose(np.linalg.norm(line, axis=1), 1.0, atol=1e-15)
+    adaptive = circle.tessellate(tolerance=1e-4)
+    angle = 2 * np.arccos(1 - 1e-4)
+    assert len(adaptive) >= 2 * np.pi / angle
+    c = sk.BSpline([0, 0, 1, 1], [[0, 0], [1, 1]], 1)
+    assert c.tessellate(density=4).shape == (5, 2)
+
+
+def test_blending_surface_pieces_and_frames():
+    torus = sk.load(ROOT / "examples" / "shapes" / "animated_torus.json")
+    pieces = torus.local_pieces(samples=3)
+    assert pieces and pieces[0]["points"].shape == (3, 3, 3) and pieces[0]["index"] == (0, 0)
+    moved = torus.set_transform((0, 0), translate=[0, 0, 0.5])
+    assert "0,0" in moved.to_dict()["transforms"]
+    assert isinstance(torus.at_time(0.5), sk.Surface)
+
+
+def test_render_writes_a_png_or_says_why_not(tmp_path):
+    path = tmp_path / "torus.png"
+    torus = sk.load({"type": "torus"})
+    with pytest.raises(ValueError, match=r"^path: render writes .png files, not"):
+        sk.render(torus, tmp_path / "torus.jpg")
+    if not sk._splinekit.HAS_RENDER:
+        with pytest.raises(RuntimeError, match=r"^render: this build of splinekit has no renderer"):
+            sk.render(torus, path)
+        return
+    try:
+        sk.render(torus, path, size=(64, 48))
+    except RuntimeError as e:  # no graphics adapter on this machine: the message says so
+        assert str(e).startswith("render: no graphics adapter found")
+        return
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -1,0 +1,142 @@
+"""Every error path raises ValueError with the command line's one-line message."""
+
+import json
+import os
+import pathlib
+import subprocess
+
+import numpy as np
+import pytest
+
+import splinekit as sk
+
+ROOT = pathlib.Path(__file__).resolve().parents[3]
+CLI = pathlib.Path(os.environ.get("SPLINEKIT_CLI", ROOT / "target" / "debug" / "splinekit"))
+
+QUAD = dict(knots=[0, 0, 0, 1, 2, 2, 2], control_points=[[0, 0], [1, 2], [3, 2], [4, 0]], degree=2)
+
+BAD_DOCUMENTS = [
+    {"type": "bspline", "degree": 3, "knots": [0] * 4 + [1] * 7, "control_points": [[0, 0]] * 8},
+    {"type": "bspline", "degree": 2, "knots": [0, 0, 0, 2, 1, 1, 1], "control_points": [[0, 0]] * 4},
+    {"type": "nurbs", "degree": 1, "knots": [0, 0, 1, 1], "control_points": [[0, 0], [1, 1]], "weights": [1, -1]},
+    {"type": "bezier", "control_points": [[0, 0], [1, 2, 3]]},
+    {"type": "bezier", "control_points": []},
+    {"type": "bezier", "control_points": [[0, 0]], "colour": "red"},
+    {"type": "spline"},
+    {"type": "circle", "radius": -1},
+    {"type": "bspline_surface", "degree_u": 1, "degree_v": 1, "knots_u": [0, 0, 1, 1], "knots_v": [0, 1, 1], "control_points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]},
+    {"type": "blend", "first": {"type": "line", "from": [0, 0, 0], "to": [1, 0, 0]}, "second": {"type": "bezier", "control_points": [[0, 0], [1, 1, 1]]}, "overlap": 0.5, "bfunction": {"type": "erbs"}},
+]
+
+
+def cli_message(doc, tmp_path):
+    path = tmp_path / "bad.json"
+    path.write_text(json.dumps(doc))
+    at = "0:0" if doc["type"].endswith("surface") else "0"
+    r = subprocess.run([str(CLI), "eval", str(path), "--at", at], capture_output=True, text=True)
+    assert r.returncode == 2, r.stderr
+    line = r.stderr.strip()
+    assert line.startswith("error: ") and "\n" not in line
+    return line[len("error: "):]
+
+
+@pytest.mark.skipif(not CLI.exists(), reason="the splinekit binary is not built (cargo build -p splinekit-cli)")
+@pytest.mark.parametrize("doc", BAD_DOCUMENTS, ids=lambda d: d["type"])
+def test_load_raises_the_cli_message(doc, tmp_path):
+    with pytest.raises(ValueError) as e:
+        sk.load(doc)
+    assert str(e.value) == cli_message(doc, tmp_path)
+
+
+def test_constructor_messages_name_the_field_and_numbers():
+    with pytest.raises(ValueError, match=r"^knots: expected 7 values for 4 control points of degree 2, got 6$"):
+        sk.BSpline([0, 0, 1, 2, 2, 2], QUAD["control_points"], 2)
+    with pytest.raises(ValueError, match=r"^weights: weight 1 is -1, but weights must be > 0$"):
+        sk.NURBS([0, 0, 1, 1], [[0, 0], [1, 1]], [1, -1], 1)
+    with pytest.raises(ValueError, match=r"^control_points\[1\]\[0\]: value is not finite \(NaN\)$"):
+        sk.Bezier([[0, 0], [np.nan, 1]])
+    with pytest.raises(ValueError, match=r"^degree: "):
+        sk.BSpline(QUAD["knots"], QUAD["control_points"], -1)
+    with pytest.raises(ValueError, match=r"^control_points\[1\]: expected 2 coordinates like the first point, got 3$"):
+        sk.Bezier([[0, 0], [1, 2, 3]])
+    with pytest.raises(ValueError, match=r"points of dimension 5 are not supported"):
+        sk.Bezier(np.zeros((3, 5)))
+    with pytest.raises(ValueError, match=r"^knots_v: "):
+        sk.BSplineSurface([0, 0, 1, 1], [0, 1, 1], np.zeros((2, 2, 3)), 1, 1)
+
+
+def test_evaluation_errors():
+    c = sk.BSpline(**QUAD)
+    with pytest.raises(ValueError, match=r"^t: parameter 2.5 is outside the domain \[0, 2\] of this open curve$"):
+        c([0.5, 2.5])
+    with pytest.raises(ValueError, match=r"^t\[1\]: value is not finite \(NaN\)$"):
+        c([0.5, np.nan])
+    with pytest.raises(ValueError, match=r"^t: expected a number or a 1-D array, got an array of shape \[2, 2\]$"):
+        c(np.zeros((2, 2)))
+    with pytest.raises(ValueError, match=r"^order: 65 is more than the limit of 64$"):
+        c.derivatives(0.5, 65)
+    with pytest.raises(ValueError, match=r"^p: expected 2 coordinates like the curve's points, got 3$"):
+        c.closest_point([1, 2, 3])
+    with pytest.raises(ValueError, match=r"^tolerance: must be finite and > 0, got 0$"):
+        c.length(0.0)
+    with pytest.raises(ValueError, match=r"^t: parameter 3 is outside"):
+        c.split(3.0)
+    with pytest.raises(ValueError, match=r"^tolerance: must be finite and ≥ 0, got -1$"):
+        c.remove_knot(1.0, -1.0)
+    with pytest.raises(ValueError, match=r"^type: refine works on bezier, rational_bezier, bspline and nurbs documents, not heart$"):
+        sk.load({"type": "heart"}).insert_knot(0.5)
+    with pytest.raises(ValueError, match=r"^type: this works on bezier, rational_bezier, bspline and nurbs curves, not circle$"):
+        sk.load({"type": "circle"}).to_bezier()
+
+
+def test_surface_errors():
+    s = sk.BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
+    with pytest.raises(ValueError, match=r"^v: parameter 2 is outside the domain \[0, 1\] of this open direction$"):
+        s([0.5], [2.0])
+    with pytest.raises(ValueError, match=r"^v: with grid=False u and v are paired and need the same length, got 2 and 3$"):
+        s([0, 1], [0, 0.5, 1], grid=False)
+    with pytest.raises(ValueError, match=r"^order: 17 is more than the limit of 16 for surfaces$"):
+        s.partials(0.5, 0.5, order=17)
+    with pytest.raises(ValueError, match=r"^p: expected 3 coordinates"):
+        s.closest_point([0, 0])
+
+
+def test_fit_errors():
+    pts = np.random.default_rng(0).normal(size=(50, 2))
+    with pytest.raises(ValueError, match=r"^degree: must be between 1 and 64, got 0$"):
+        sk.fit(pts, 0, 10)
+    with pytest.raises(ValueError, match=r"^control_points: degree 3 needs at least 4 control points, got 2$"):
+        sk.fit(pts, 3, 2)
+    with pytest.raises(ValueError, match=r"^control_points: 60 control points need at least 60 data points, got 50$"):
+        sk.fit(pts, 3, 60)
+    with pytest.raises(ValueError, match=r'^params: expected "uniform", "chord", "centripetal" or an array of parameters, got "arc"$'):
+        sk.fit(pts, 3, 10, params="arc")
+    with pytest.raises(ValueError, match=r'^knots: expected "uniform", "averaged" or an array of knots, got "even"$'):
+        sk.fit(pts, 3, 10, knots="even")
+    with pytest.raises(ValueError, match=r"^n_control_points: give a number of control points or an array of knots$"):
+        sk.fit(pts, 3)
+    with pytest.raises(ValueError, match=r"^params: expected 50 values, one per point, got 3$"):
+        sk.fit(pts, 3, params=[0, 0.5, 1], knots=[0, 0, 0, 0, 1, 1, 1, 1])
+    with pytest.raises(ValueError, match=r"^n_control_points: 5 does not match the 8 knots of degree 3, which give 4 control points$"):
+        sk.fit(pts, 3, 5, params=np.linspace(0, 1, 50), knots=[0, 0, 0, 0, 1, 1, 1, 1])
+    with pytest.raises(ValueError, match=r"^points: expected an array of points of shape \(n, d\), got shape \[50\]$"):
+        sk.fit(pts[:, 0], 3, 10)
+    with pytest.raises(ValueError, match=r"^weights\[0\]: value is not finite \(inf\)$"):
+        sk.fit(pts, 3, 10, weights=np.full(50, np.inf))
+    with pytest.raises(ValueError, match=r"^end_derivatives: expected 2 coordinates like the points, got 3 and 2$"):
+        sk.interpolate(pts, 3, end_derivatives=([1, 0, 0], [1, 0]))
+
+
+def test_load_errors():
+    with pytest.raises(ValueError, match=r"^document: cannot read 'no/such/file.json': "):
+        sk.load("no/such/file.json")
+    with pytest.raises(ValueError, match=r"^document: invalid JSON: "):
+        sk.load("{not json")
+    with pytest.raises(ValueError, match=r'^type: missing \(every shape document needs a "type"\)$'):
+        sk.load({})
+    with pytest.raises(ValueError, match=r"^control_points\[0\]\[1\]: value is not finite \(inf\)$"):
+        sk.load({"type": "bezier", "control_points": [[0, float("inf")]]})
+    with pytest.raises(ValueError, match=r"^objects: a scene needs at least one object$"):
+        sk.load({"type": "scene", "objects": []})
+    with pytest.raises(ValueError, match=r"cannot be written as JSON"):
+        sk.load({"type": "bezier", "control_points": object()})
