@@ -19,7 +19,7 @@ from OCP.OCP.collections import Array1_double, Array1_gp_Pnt, Array1_gp_Pnt2d, A
 from OCP.Geom import Geom_BSplineCurve, Geom_BSplineSurface
 from OCP.Geom2d import Geom2d_BSplineCurve
 from OCP.Geom2dAPI import Geom2dAPI_InterCurveCurve
-from OCP.GeomAPI import GeomAPI_ProjectPointOnCurve, GeomAPI_ProjectPointOnSurf
+from OCP.GeomAPI import GeomAPI_IntCS, GeomAPI_ProjectPointOnCurve, GeomAPI_ProjectPointOnSurf
 
 TOLERANCE = 1e-9
 failures = []
@@ -51,9 +51,10 @@ def bicubic_surface(n=8):
     return doc, Geom_BSplineSurface(poles, knots, knots, mults, mults, 3, 3)
 
 
-def cubic_curve(n=12):
-    """A wiggly cubic B-spline in space."""
-    pts = [[float(i), math.sin(1.3 * i) * 2.0, math.cos(0.7 * i)] for i in range(n)]
+def cubic_curve(n=12, pts=None):
+    """A wiggly cubic B-spline in space (or through the given control points)."""
+    pts = pts or [[float(i), math.sin(1.3 * i) * 2.0, math.cos(0.7 * i)] for i in range(n)]
+    n = len(pts)
     full, knots, mults = clamped_knots(n, 3)
     doc = {"type": "bspline", "degree": 3, "knots": full, "control_points": pts}
     poles = Array1_gp_Pnt(1, n)
@@ -185,12 +186,43 @@ def intersect_curves(binary):
         failures.append(f"intersection at {p} found by splinekit only")
 
 
+def match_points(name, ours, theirs, elapsed, ocp, distance=1e-7):
+    """Fails on every point found by one side only (within `distance`)."""
+    near = lambda p, q: math.dist(p, q) <= distance
+    missed = [p for p in theirs if not any(near(p, q) for q in ours)]
+    extra = [p for p in ours if not any(near(p, q) for q in theirs)]
+    print(f"{name}: splinekit {len(ours)} points, OpenCASCADE {len(theirs)}; "
+          f"found only by OpenCASCADE: {len(missed)}, only by splinekit: {len(extra)}")
+    print(f"  time: splinekit CLI {elapsed:.3f} s (process included), OpenCASCADE {ocp * 1e3:.2f} ms")
+    failures.extend(f"{name}: {p} found by OpenCASCADE only" for p in missed)
+    failures.extend(f"{name}: {p} found by splinekit only" for p in extra)
+
+
+def intersect_curve_surface(binary):
+    """A cubic B-spline zigzagging through the wavy bicubic patch, and the wiggly curve."""
+    sdoc, surface = bicubic_surface()
+    zigzag = [[0.5 + 0.55 * i, 3.5 + 2.0 * math.sin(0.8 * i), 1.6 * (-1) ** i] for i in range(12)]
+    for label, (cdoc, curve) in [("zigzag", cubic_curve(pts=zigzag)), ("wiggly", cubic_curve())]:
+        with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+            json.dump(sdoc, f)
+        ours, elapsed = splinekit(binary, cdoc, "intersect", f.name)
+        ours = [p["point"] for p in ours["points"]]
+        start = time.perf_counter()
+        inter = GeomAPI_IntCS(curve, surface)
+        theirs = [[inter.Point(i).X(), inter.Point(i).Y(), inter.Point(i).Z()] for i in range(1, inter.NbPoints() + 1)]
+        ocp = time.perf_counter() - start
+        if inter.NbSegments() > 0:
+            failures.append(f"curve-surface {label}: OpenCASCADE reports {inter.NbSegments()} segments")
+        match_points(f"intersect a {label} cubic B-spline with the bicubic 8×8 surface", ours, theirs, elapsed, ocp)
+
+
 def main():
     binary = sys.argv[1]
     count = int(sys.argv[sys.argv.index("--points") + 1]) if "--points" in sys.argv else 2500
     project_surface(binary, count)
     project_curve(binary, count)
     intersect_curves(binary)
+    intersect_curve_surface(binary)
     if failures:
         print("\n".join(["FAILED:"] + failures))
         sys.exit(1)

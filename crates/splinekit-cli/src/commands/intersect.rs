@@ -1,12 +1,16 @@
 //! `splinekit intersect`: where two curves meet (crossings, tangential contacts and
-//! overlapping stretches), or where one curve crosses itself.
+//! overlapping stretches), where one curve crosses itself, or where a curve meets a
+//! surface.
 
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use serde_json::{Value, json};
 use splinekit::curve::Curve;
-use splinekit::query::{CurveIntersections, IntersectionKind, intersect_curves, self_intersections};
-use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, ShapeDocument};
+use splinekit::query::{
+    CurveIntersections, CurveSurfaceIntersection, IntersectionKind, intersect_curve_surface, intersect_curves,
+    self_intersections,
+};
+use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, ShapeDocument, SurfaceDocument};
 
 use crate::input::{parse_numbers, read_shape};
 use crate::output::{check_finite, write_json};
@@ -25,13 +29,38 @@ pub struct IntersectArgs {
     pub output: Option<String>,
 }
 
-fn curve_document(path: &str, name: &str) -> Result<CurveDocument> {
-    match read_shape(path)? {
-        ShapeDocument::Curve(c) => Ok(c),
-        ShapeDocument::Surface(_) => {
-            bail!("{name}: surfaces are not supported by intersect yet (curve–curve and self-intersections only)")
+fn kind_name(kind: IntersectionKind) -> &'static str {
+    match kind {
+        IntersectionKind::Crossing => "crossing",
+        IntersectionKind::Tangent => "tangent",
+    }
+}
+
+/// A curve–surface answer: `params` are [t, u, v].
+fn curve_surface_json(r: &[CurveSurfaceIntersection]) -> Value {
+    let points: Vec<Value> = r
+        .iter()
+        .map(|p| json!({"params": [p.t, p.u, p.v], "point": [p.point.x, p.point.y, p.point.z], "kind": kind_name(p.kind)}))
+        .collect();
+    json!({"points": points, "overlaps": [], "curves": []})
+}
+
+/// Builds a 3-D curve and surface, `name_c` and `name_s` naming them in errors.
+fn curve_and_surface(
+    c: &CurveDocument,
+    s: &SurfaceDocument,
+    (name_c, name_s): (&str, &str),
+    tolerance: f64,
+) -> Result<Value> {
+    for (name, dim) in [(name_c, c.dimension()), (name_s, s.dimension())] {
+        let dim = dim.map_err(|e| anyhow!("{name}: {e}"))?;
+        if dim != 3 {
+            bail!("{name}: a curve and a surface intersect in 3-D only, this shape is {dim}-D");
         }
     }
+    let curve = c.build_in::<3>().map_err(|e| anyhow!("{name_c}: {e}"))?;
+    let surface = s.build_in::<3>().map_err(|e| anyhow!("{name_s}: {e}"))?;
+    Ok(curve_surface_json(&intersect_curve_surface(curve.as_ref(), surface.as_ref(), tolerance)?))
 }
 
 fn to_json<const D: usize>(r: &CurveIntersections<D>) -> Value {
@@ -39,11 +68,7 @@ fn to_json<const D: usize>(r: &CurveIntersections<D>) -> Value {
         .points
         .iter()
         .map(|p| {
-            let kind = match p.kind {
-                IntersectionKind::Crossing => "crossing",
-                IntersectionKind::Tangent => "tangent",
-            };
-            json!({"params": [p.t_a, p.t_b], "point": p.point.iter().collect::<Vec<_>>(), "kind": kind})
+            json!({"params": [p.t_a, p.t_b], "point": p.point.iter().collect::<Vec<_>>(), "kind": kind_name(p.kind)})
         })
         .collect();
     let overlaps: Vec<Value> =
@@ -76,10 +101,24 @@ pub fn run(args: &IntersectArgs) -> Result<()> {
         [t] if t > 0.0 => t,
         _ => bail!("--tolerance: expected one number > 0, got '{}'", args.tolerance),
     };
-    let a = curve_document(&args.a, "A")?;
-    let b = args.b.as_deref().map(|p| curve_document(p, "B")).transpose()?;
-    let curve = a.build().map_err(|e| anyhow!("A: {e}"))?;
-    let value = curve.visit(Intersect { b: b.as_ref(), tolerance })?;
+    let a = read_shape(&args.a)?;
+    let b = args.b.as_deref().map(read_shape).transpose()?;
+    let value = match (&a, &b) {
+        (ShapeDocument::Curve(a), None) => {
+            a.build().map_err(|e| anyhow!("A: {e}"))?.visit(Intersect { b: None, tolerance })?
+        }
+        (ShapeDocument::Curve(a), Some(ShapeDocument::Curve(b))) => {
+            a.build().map_err(|e| anyhow!("A: {e}"))?.visit(Intersect { b: Some(b), tolerance })?
+        }
+        (ShapeDocument::Curve(c), Some(ShapeDocument::Surface(s))) => curve_and_surface(c, s, ("A", "B"), tolerance)?,
+        (ShapeDocument::Surface(s), Some(ShapeDocument::Curve(c))) => curve_and_surface(c, s, ("B", "A"), tolerance)?,
+        (ShapeDocument::Surface(_), None) => {
+            bail!("B: a surface needs a second shape (self-intersections of surfaces are not computed)")
+        }
+        (ShapeDocument::Surface(_), Some(ShapeDocument::Surface(_))) => {
+            bail!("B: surface–surface intersection is not supported by intersect yet (curves and curve–surface only)")
+        }
+    };
     check_finite(&value, "result")?;
     write_json(&value, args.output.as_deref())
 }

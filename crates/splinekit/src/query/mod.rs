@@ -1,5 +1,5 @@
 //! Geometric queries: projection of points onto curves and surfaces (point inversion),
-//! intersections of curves, arc length as a parameter.
+//! intersections of curves with curves and with surfaces, arc length as a parameter.
 //!
 //! Every query searches a cover of the shape by cubic Hermite pieces (curves,
 //! [`curve_cover`]) or bicubic Hermite patches (surfaces, [`surface_cover`]) whose
@@ -14,6 +14,8 @@ pub mod best_first;
 pub mod bounds;
 pub mod curve_cover;
 pub mod curve_intersection;
+pub mod curve_surface;
+pub mod normal_cone;
 pub mod project_curve;
 pub mod project_surface;
 pub mod slope;
@@ -26,5 +28,6 @@ pub use bounds::Aabb;
 pub use curve_intersection::{
     CurveIntersection, CurveIntersections, CurveOverlap, IntersectionKind, intersect_curves, self_intersections,
 };
+pub use curve_surface::{CurveSurfaceIntersection, intersect_curve_surface};
 pub use project_curve::{CurveProjector, Nearest};
 pub use project_surface::{NearestOnSurface, SurfaceProjector};
