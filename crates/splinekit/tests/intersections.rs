@@ -106,3 +106,87 @@ fn a_helix_about_x_crosses_a_cylinder_about_z_at_every_root() {
         assert!((helix.point(p.t) - cylinder.point(p.u, p.v)).norm() < 1e-9);
     }
 }
+
+use splinekit::curve::{CircleFrame, NurbsCurve};
+use splinekit::query::{IntersectionBranch, intersect_surfaces};
+use splinekit::surface::derived::Extrusion;
+use splinekit::surface::model::{Plane, Torus};
+
+/// Checks that every point of every branch lies on both surfaces within `tol`, and that
+/// its parameters name it.
+fn on_both<A: Surface<3>, B: Surface<3>>(a: &A, b: &B, branches: &[IntersectionBranch], tol: f64) {
+    for br in branches {
+        assert_eq!(br.points.len(), br.params_a.len());
+        for ((p, pa), pb) in br.points.iter().zip(&br.params_a).zip(&br.params_b) {
+            assert!((a.point(pa[0], pa[1]) - p).norm() <= tol, "{p:?} is not on A");
+            assert!((b.point(pb[0], pb[1]) - p).norm() <= tol, "{p:?} is not on B");
+        }
+    }
+}
+
+#[test]
+fn a_plane_cuts_a_sphere_in_one_closed_circle() {
+    let sphere = Sphere::new(1.5).unwrap();
+    let plane = Plane::new(p3(-3.0, -3.0, 0.5), p3(6.0, 0.0, 0.0), p3(0.0, 6.0, 0.0)).unwrap();
+    let r = intersect_surfaces(&plane, &sphere, 1e-10, 1e-4).unwrap();
+    assert_eq!(r.len(), 1, "{} branches", r.len());
+    assert!(r[0].closed && r[0].early_stop.is_none() && r[0].points.len() > 20);
+    on_both(&plane, &sphere, &r, 1e-10);
+    let radius = 2.0f64.sqrt();
+    for p in &r[0].points {
+        assert!(((p.x * p.x + p.y * p.y).sqrt() - radius).abs() < 1e-9 && (p.z - 0.5).abs() < 1e-10, "{p:?}");
+    }
+    // The polyline's chords stay within the chord error of the circle: sagitta = l²/(8ρ).
+    for w in r[0].points.windows(2) {
+        assert!((w[1] - w[0]).norm_squared() / (8.0 * radius) <= 1e-4 * 1.01);
+    }
+}
+
+#[test]
+fn a_thin_cylinder_pierces_a_wide_one_in_two_loops() {
+    let wide = Cylinder::new(1.0, 3.0).unwrap();
+    let frame =
+        CircleFrame { center: p3(-2.0, 0.0, 1.5), x_axis: p3(0.0, 1.0, 0.0), y_axis: p3(0.0, 0.0, 1.0), radius: 0.7 };
+    let thin = Extrusion::new(Box::new(NurbsCurve::circle(&frame).unwrap()), p3(4.0, 0.0, 0.0)).unwrap();
+    let r = intersect_surfaces(&wide, &thin, 1e-10, 1e-4).unwrap();
+    assert_eq!(r.len(), 2, "{r:?}");
+    on_both(&wide, &thin, &r, 1e-10);
+    for br in &r {
+        assert!(
+            br.closed && br.early_stop.is_none(),
+            "{:?} {} {:?} {:?}",
+            br.early_stop,
+            br.closed,
+            br.params_b.first(),
+            br.params_b.last()
+        );
+        for p in &br.points {
+            assert!(
+                (p.x * p.x + p.y * p.y - 1.0).abs() < 1e-9 && (p.y * p.y + (p.z - 1.5).powi(2) - 0.49).abs() < 1e-9
+            );
+        }
+    }
+    assert!(r[0].points[0].x * r[1].points[0].x < 0.0, "one loop on each side");
+}
+
+#[test]
+fn the_bitangent_plane_cuts_a_torus_in_two_villarceau_circles() {
+    let (big, small) = (3.0, 1.0);
+    let torus = Torus::new(big, small).unwrap();
+    let slope = small / (big * big - small * small).sqrt();
+    let plane = Plane::new(p3(-5.0, -5.0, -5.0 * slope), p3(10.0, 0.0, 10.0 * slope), p3(0.0, 10.0, 0.0)).unwrap();
+    let r = intersect_surfaces(&plane, &torus, 1e-10, 1e-4).unwrap();
+    on_both(&plane, &torus, &r, 1e-10);
+    // Two circles of radius R about (0, ±r, 0) in the plane; they cross where the plane
+    // touches the torus, where marching stops.
+    let mut length = 0.0;
+    for br in &r {
+        for p in &br.points {
+            let d = |c: f64| (p - p3(0.0, c, 0.0)).norm() - big;
+            assert!(d(small).abs().min(d(-small).abs()) < 1e-9, "{p:?} is on neither circle");
+        }
+        length += br.points.windows(2).map(|w| (w[1] - w[0]).norm()).sum::<f64>();
+    }
+    let full = 2.0 * 2.0 * std::f64::consts::PI * big;
+    assert!(length > 0.98 * full && length < 1.001 * full, "traced {length} of {full}");
+}

@@ -7,8 +7,8 @@ use clap::Args;
 use serde_json::{Value, json};
 use splinekit::curve::Curve;
 use splinekit::query::{
-    CurveIntersections, CurveSurfaceIntersection, IntersectionKind, intersect_curve_surface, intersect_curves,
-    self_intersections,
+    CurveIntersections, CurveSurfaceIntersection, EarlyStop, IntersectionBranch, IntersectionKind,
+    intersect_curve_surface, intersect_curves, intersect_surfaces, self_intersections,
 };
 use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, ShapeDocument, SurfaceDocument};
 
@@ -24,6 +24,9 @@ pub struct IntersectArgs {
     /// Distance below which the shapes count as meeting (> 0).
     #[arg(long, default_value = "1e-9", allow_hyphen_values = true)]
     pub tolerance: String,
+    /// Chord error of the polylines of surface–surface intersection curves (> 0).
+    #[arg(long, default_value = "1e-4", allow_hyphen_values = true)]
+    pub chord: String,
     /// Write the JSON here instead of standard output.
     #[arg(short, long)]
     pub output: Option<String>,
@@ -43,6 +46,44 @@ fn curve_surface_json(r: &[CurveSurfaceIntersection]) -> Value {
         .map(|p| json!({"params": [p.t, p.u, p.v], "point": [p.point.x, p.point.y, p.point.z], "kind": kind_name(p.kind)}))
         .collect();
     json!({"points": points, "overlaps": [], "curves": []})
+}
+
+/// The JSON of intersection branches: `{points, params_a, params_b, closed, early_stop}`.
+pub fn branches_json(branches: &[IntersectionBranch]) -> Vec<Value> {
+    branches
+        .iter()
+        .map(|b| {
+            let stop = b.early_stop.map(|s| match s {
+                EarlyStop::Tangential => "tangential",
+                EarlyStop::StepLimit => "step_limit",
+                EarlyStop::PointLimit => "point_limit",
+            });
+            let points: Vec<[f64; 3]> = b.points.iter().map(|p| [p.x, p.y, p.z]).collect();
+            json!({"points": points, "params_a": b.params_a, "params_b": b.params_b, "closed": b.closed, "early_stop": stop})
+        })
+        .collect()
+}
+
+/// Parses a positive number given to `flag`.
+pub fn positive(flag: &str, text: &str) -> Result<f64> {
+    match parse_numbers(flag, text)?[..] {
+        [t] if t > 0.0 => Ok(t),
+        _ => bail!("{flag}: expected one number > 0, got '{text}'"),
+    }
+}
+
+/// Builds two 3-D surfaces and intersects them.
+fn two_surfaces(a: &SurfaceDocument, b: &SurfaceDocument, tolerance: f64, chord: f64) -> Result<Value> {
+    for (name, dim) in [("A", a.dimension()), ("B", b.dimension())] {
+        let dim = dim.map_err(|e| anyhow!("{name}: {e}"))?;
+        if dim != 3 {
+            bail!("{name}: surfaces intersect in 3-D only, this surface is {dim}-D");
+        }
+    }
+    let sa = a.build_in::<3>().map_err(|e| anyhow!("A: {e}"))?;
+    let sb = b.build_in::<3>().map_err(|e| anyhow!("B: {e}"))?;
+    let branches = intersect_surfaces(sa.as_ref(), sb.as_ref(), tolerance, chord)?;
+    Ok(json!({"points": [], "overlaps": [], "curves": branches_json(&branches)}))
 }
 
 /// Builds a 3-D curve and surface, `name_c` and `name_s` naming them in errors.
@@ -97,10 +138,8 @@ impl DimensionVisitor<Curves> for Intersect<'_> {
 }
 
 pub fn run(args: &IntersectArgs) -> Result<()> {
-    let tolerance = match parse_numbers("--tolerance", &args.tolerance)?[..] {
-        [t] if t > 0.0 => t,
-        _ => bail!("--tolerance: expected one number > 0, got '{}'", args.tolerance),
-    };
+    let tolerance = positive("--tolerance", &args.tolerance)?;
+    let chord = positive("--chord", &args.chord)?;
     let a = read_shape(&args.a)?;
     let b = args.b.as_deref().map(read_shape).transpose()?;
     let value = match (&a, &b) {
@@ -115,9 +154,7 @@ pub fn run(args: &IntersectArgs) -> Result<()> {
         (ShapeDocument::Surface(_), None) => {
             bail!("B: a surface needs a second shape (self-intersections of surfaces are not computed)")
         }
-        (ShapeDocument::Surface(_), Some(ShapeDocument::Surface(_))) => {
-            bail!("B: surface–surface intersection is not supported by intersect yet (curves and curve–surface only)")
-        }
+        (ShapeDocument::Surface(a), Some(ShapeDocument::Surface(b))) => two_surfaces(a, b, tolerance, chord)?,
     };
     check_finite(&value, "result")?;
     write_json(&value, args.output.as_deref())

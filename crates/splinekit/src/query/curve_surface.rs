@@ -63,12 +63,26 @@ where
     C: Curve<3> + ?Sized,
     S: Surface<3> + ?Sized,
 {
+    intersect_with_limit(curve, surface, tolerance, MAX_PAIRS)
+}
+
+/// [`intersect_curve_surface`] that gives up after `max_pairs` pairs (an error).
+pub fn intersect_with_limit<C, S>(
+    curve: &C,
+    surface: &S,
+    tolerance: f64,
+    max_pairs: usize,
+) -> Result<Vec<CurveSurfaceIntersection>>
+where
+    C: Curve<3> + ?Sized,
+    S: Surface<3> + ?Sized,
+{
     if !(tolerance > 0.0 && tolerance.is_finite()) {
         return Err(Error::invalid("tolerance", format!("must be finite and > 0, got {tolerance}")));
     }
     let (cc, sc) = (CurveCover::new(curve), SurfaceCover::new(surface));
     let size = cover_diagonal(&cc, &sc);
-    let mut search = Search { curve, surface, tolerance, size, found: Vec::new() };
+    let mut search = Search { curve, surface, tolerance, size, max_pairs, found: Vec::new() };
     let mut pairs = Vec::new();
     for n in &cc.nodes[..cc.roots] {
         for m in &sc.nodes[..sc.roots] {
@@ -96,6 +110,7 @@ struct Search<'c, C: ?Sized, S: ?Sized> {
     surface: &'c S,
     tolerance: f64,
     size: f64,
+    max_pairs: usize,
     found: Vec<CurveSurfaceIntersection>,
 }
 
@@ -112,11 +127,12 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
         let mut examined = 0usize;
         while let Some((pc, ps)) = pairs.pop() {
             examined += 1;
-            if examined > MAX_PAIRS {
+            if examined > self.max_pairs {
+                let limit = self.max_pairs;
                 return Err(Error::numerical(
                     "curve-surface intersection",
                     format!(
-                        "more than {MAX_PAIRS} pairs of pieces (does the curve run inside the surface?); try a larger tolerance"
+                        "more than {limit} pairs of pieces (does the curve run inside the surface?); try a larger tolerance"
                     ),
                 ));
             }

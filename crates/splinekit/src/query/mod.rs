@@ -15,11 +15,13 @@ pub mod bounds;
 pub mod curve_cover;
 pub mod curve_intersection;
 pub mod curve_surface;
+pub mod march;
 pub mod normal_cone;
 pub mod project_curve;
 pub mod project_surface;
 pub mod slope;
 pub mod surface_cover;
+pub mod surface_intersection;
 pub mod surface_slope;
 pub mod tangent_cone;
 
@@ -31,3 +33,4 @@ pub use curve_intersection::{
 pub use curve_surface::{CurveSurfaceIntersection, intersect_curve_surface};
 pub use project_curve::{CurveProjector, Nearest};
 pub use project_surface::{NearestOnSurface, SurfaceProjector};
+pub use surface_intersection::{EarlyStop, IntersectionBranch, intersect_surfaces};
