@@ -10,6 +10,7 @@ use splinekit::query::{
     CurveIntersections, CurveSurfaceIntersection, EarlyStop, IntersectionBranch, IntersectionKind,
     intersect_curve_surface, intersect_curves, intersect_surfaces, self_intersections,
 };
+use splinekit_scene::refine::bspline_doc;
 use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, ShapeDocument, SurfaceDocument};
 
 use crate::input::{parse_numbers, read_shape};
@@ -48,8 +49,9 @@ fn curve_surface_json(r: &[CurveSurfaceIntersection]) -> Value {
     json!({"points": points, "overlaps": [], "curves": []})
 }
 
-/// The JSON of intersection branches: `{points, params_a, params_b, closed, early_stop}`.
-pub fn branches_json(branches: &[IntersectionBranch]) -> Vec<Value> {
+/// The JSON of intersection branches: `{points, params_a, params_b, closed, early_stop,
+/// bspline, fit_error}`, the B-spline fitted within `fit` of the points where it can be.
+pub fn branches_json(branches: &[IntersectionBranch], fit: f64) -> Result<Vec<Value>> {
     branches
         .iter()
         .map(|b| {
@@ -59,7 +61,15 @@ pub fn branches_json(branches: &[IntersectionBranch]) -> Vec<Value> {
                 EarlyStop::PointLimit => "point_limit",
             });
             let points: Vec<[f64; 3]> = b.points.iter().map(|p| [p.x, p.y, p.z]).collect();
-            json!({"points": points, "params_a": b.params_a, "params_b": b.params_b, "closed": b.closed, "early_stop": stop})
+            let (bspline, error) = match b.points.len() {
+                0 | 1 => (Value::Null, Value::Null),
+                _ => {
+                    let f = b.fit_bspline(fit)?;
+                    (serde_json::to_value(bspline_doc(&f.curve))?, json!(f.max_error))
+                }
+            };
+            Ok(json!({"points": points, "params_a": b.params_a, "params_b": b.params_b, "closed": b.closed,
+                "early_stop": stop, "bspline": bspline, "fit_error": error}))
         })
         .collect()
 }
@@ -74,6 +84,7 @@ pub fn positive(flag: &str, text: &str) -> Result<f64> {
 
 /// Builds two 3-D surfaces and intersects them.
 fn two_surfaces(a: &SurfaceDocument, b: &SurfaceDocument, tolerance: f64, chord: f64) -> Result<Value> {
+    let fit = chord;
     for (name, dim) in [("A", a.dimension()), ("B", b.dimension())] {
         let dim = dim.map_err(|e| anyhow!("{name}: {e}"))?;
         if dim != 3 {
@@ -83,7 +94,7 @@ fn two_surfaces(a: &SurfaceDocument, b: &SurfaceDocument, tolerance: f64, chord:
     let sa = a.build_in::<3>().map_err(|e| anyhow!("A: {e}"))?;
     let sb = b.build_in::<3>().map_err(|e| anyhow!("B: {e}"))?;
     let branches = intersect_surfaces(sa.as_ref(), sb.as_ref(), tolerance, chord)?;
-    Ok(json!({"points": [], "overlaps": [], "curves": branches_json(&branches)}))
+    Ok(json!({"points": [], "overlaps": [], "curves": branches_json(&branches, fit)?}))
 }
 
 /// Builds a 3-D curve and surface, `name_c` and `name_s` naming them in errors.

@@ -15,7 +15,7 @@ use crate::output::{check_finite, write_json};
 use splinekit_scene::ShapeDocument;
 
 /// Most planes one call may cut with.
-pub const MAX_LEVELS: usize = 1000;
+pub const MAX_LEVELS: usize = 100;
 
 #[derive(Args, Debug)]
 pub struct SectionArgs {
@@ -100,7 +100,7 @@ pub fn run(args: &SectionArgs) -> Result<()> {
     for h in cuts {
         let plane = big_plane(&o, &n, h, &centre, size)?;
         let branches = intersect_surfaces(surface.as_ref(), &plane, tolerance, chord)?;
-        let curves: Vec<serde_json::Value> = branches_json(&branches)
+        let curves: Vec<serde_json::Value> = branches_json(&branches, chord)?
             .into_iter()
             .map(|mut c| {
                 if let Some(m) = c.as_object_mut() {

@@ -12,6 +12,7 @@ pub mod arc_length;
 pub mod bernstein_product;
 pub mod best_first;
 pub mod bounds;
+pub mod branch_fit;
 pub mod curve_cover;
 pub mod curve_intersection;
 pub mod curve_surface;
