@@ -190,3 +190,14 @@ fn the_bitangent_plane_cuts_a_torus_in_two_villarceau_circles() {
     let full = 2.0 * 2.0 * std::f64::consts::PI * big;
     assert!(length > 0.98 * full && length < 1.001 * full, "traced {length} of {full}");
 }
+
+#[test]
+fn coincident_shapes_are_refused_quickly() {
+    let cylinder = Cylinder::new(1.0, 1.0).unwrap();
+    let helix = splinekit::curve::model::Helix::new(1.0, 0.2, 2.0).unwrap();
+    let e = intersect_curve_surface(&helix, &cylinder, 1e-9).unwrap_err().to_string();
+    assert!(e.contains("runs inside the surface"), "{e}");
+    let torus = Torus::new(3.0, 1.0).unwrap();
+    let e = intersect_surfaces(&torus, &torus, 1e-9, 1e-4).unwrap_err().to_string();
+    assert!(e.contains("coincide over a region"), "{e}");
+}

@@ -21,7 +21,8 @@
 //! below it the point is a tangent contact. Points closer than the tolerance (tangent
 //! contacts: the tangent resolution) with nearby parameters are one. A curve that runs
 //! inside the surface along a stretch has no isolated intersections: the search ends with
-//! an error after [`MAX_PAIRS`] pairs.
+//! an error when three points of a piece (longer than 100 tolerances, inside a larger
+//! patch) lie on the patch within the tolerance, and after [`MAX_PAIRS`] pairs at most.
 
 use crate::Point;
 use crate::curve::{Curve, Interval};
@@ -145,6 +146,12 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
                 continue;
             }
             let (dx, dy) = (x.bounds.diagonal(), y.bounds.diagonal());
+            if dx > 100.0 * self.tolerance && dx <= dy && self.lies_in(x.interval(), y.u(), y.v()) {
+                return Err(Error::numerical(
+                    "curve-surface intersection",
+                    format!("the curve runs inside the surface (at least for t in [{}, {}])", x.start.t, x.end.t),
+                ));
+            }
             let narrow = x.interval().length() <= wt && y.u().length() <= wu && y.v().length() <= wv;
             if (dx <= tiny && dy <= tiny) || narrow {
                 self.newton(boxes, true);
@@ -202,6 +209,28 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
         let kind = if cosine > TANGENT_SINE { IntersectionKind::Crossing } else { IntersectionKind::Tangent };
         self.found.push(CurveSurfaceIntersection { t: x[0], u: x[1], v: x[2], point: (jet.c + jet.s) * 0.5, kind });
         true
+    }
+
+    /// Whether c(t) at the quarter points of `it` lies within the tolerance of S over
+    /// `iu` × `iv` (Gauss–Newton for the nearest point from the patch's centre, clamped).
+    fn lies_in(&self, it: Interval, iu: Interval, iv: Interval) -> bool {
+        [0.25, 0.5, 0.75].iter().all(|&s| {
+            let p = self.curve.point(it.lerp(s));
+            let (mut u, mut v) = (iu.lerp(0.5), iv.lerp(0.5));
+            let mut o = [Point::<3>::zeros(); 4];
+            for _ in 0..MAX_NEWTON_ITERATIONS {
+                self.surface.eval_partials(u, v, 1, 1, &mut o);
+                let (r, su, sv) = (p - o[0], o[2], o[1]);
+                let (a, b, c) = (su.dot(&su), su.dot(&sv), sv.dot(&sv));
+                let det = a * c - b * b;
+                if !(det.is_finite() && det > 0.0) {
+                    break;
+                }
+                let (gu, gv) = (su.dot(&r), sv.dot(&r));
+                (u, v) = (iu.clamp(u + (c * gu - b * gv) / det), iv.clamp(v + (a * gv - b * gu) / det));
+            }
+            (self.surface.point(u, v) - p).norm() <= self.tolerance
+        })
     }
 
     /// Sorts by t and merges duplicates (a crossing wins over a contact).

@@ -29,7 +29,7 @@ pub const SEED_LINES: usize = 8;
 
 /// The most pairs of pieces the seeding of one isocurve examines: an isocurve that lies in
 /// the other surface gives up there (the isocurves across it seed that branch).
-pub const SEED_PAIRS: usize = 20_000;
+pub const SEED_PAIRS: usize = 5_000;
 
 /// The most points on one branch.
 pub const MAX_POINTS: usize = 200_000;
@@ -108,31 +108,39 @@ fn lines(domain: Interval, closed: bool) -> Vec<f64> {
     (0..n).map(|k| domain.lerp(k as f64 / denom)).collect()
 }
 
-/// Seeds from the isocurves of each surface against the other.
+/// Seeds from the isocurves of each surface against the other, u- and v-lines in turn.
+/// Isocurves of both directions of one surface that lie in the other (their search gives
+/// up) mean the surfaces coincide over a region: an error.
 fn seeds<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(m: &Marcher<'_, A, B>) -> Result<Vec<MarchPoint>> {
     let mut out = Vec::new();
     let zero = Point::<3>::zeros();
     for first in [true, false] {
-        for dir in [Direction::U, Direction::V] {
-            let (fixed, closed) = match (first, dir) {
-                (true, Direction::U) => (m.a.domain_u(), m.a.is_closed_u()),
-                (true, Direction::V) => (m.a.domain_v(), m.a.is_closed_v()),
-                (false, Direction::U) => (m.b.domain_u(), m.b.is_closed_u()),
-                (false, Direction::V) => (m.b.domain_v(), m.b.is_closed_v()),
+        let (du, dv) = if first { (m.a.domain_u(), m.a.domain_v()) } else { (m.b.domain_u(), m.b.domain_v()) };
+        let (cu, cv) =
+            if first { (m.a.is_closed_u(), m.a.is_closed_v()) } else { (m.b.is_closed_u(), m.b.is_closed_v()) };
+        let (lu, lv) = (lines(du, cu), lines(dv, cv));
+        let mut lost = [false; 2];
+        for (k, dir) in (0..SEED_LINES).flat_map(|k| [(k, Direction::U), (k, Direction::V)]) {
+            let value = if dir == Direction::U { lu[k] } else { lv[k] };
+            let hits = if first {
+                intersect_with_limit(&IsoCurve::new(m.a, dir, value), m.b, m.tolerance, SEED_PAIRS)
+            } else {
+                intersect_with_limit(&IsoCurve::new(m.b, dir, value), m.a, m.tolerance, SEED_PAIRS)
             };
-            for value in lines(fixed, closed) {
-                let hits = if first {
-                    intersect_with_limit(&IsoCurve::new(m.a, dir, value), m.b, m.tolerance, SEED_PAIRS)
-                } else {
-                    intersect_with_limit(&IsoCurve::new(m.b, dir, value), m.a, m.tolerance, SEED_PAIRS)
-                };
-                // An isocurve lying in the other surface gives no isolated seeds.
-                let Ok(hits) = hits else { continue };
-                for h in hits {
-                    let on = if dir == Direction::U { [value, h.t] } else { [h.t, value] };
-                    let x = if first { [on[0], on[1], h.u, h.v] } else { [h.u, h.v, on[0], on[1]] };
-                    out.extend(m.point(x, &zero));
+            let Ok(hits) = hits else {
+                lost[(dir == Direction::V) as usize] = true;
+                if lost[0] && lost[1] {
+                    return Err(Error::numerical(
+                        "surface intersection",
+                        "the surfaces coincide over a region (isocurves of both directions of one lie in the other)",
+                    ));
                 }
+                continue;
+            };
+            for h in hits {
+                let on = if dir == Direction::U { [value, h.t] } else { [h.t, value] };
+                let x = if first { [on[0], on[1], h.u, h.v] } else { [h.u, h.v, on[0], on[1]] };
+                out.extend(m.point(x, &zero));
             }
         }
     }
