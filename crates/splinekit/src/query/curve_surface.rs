@@ -21,14 +21,16 @@
 //! below it the point is a tangent contact. Points closer than the tolerance (tangent
 //! contacts: the tangent resolution) with nearby parameters are one. A curve that runs
 //! inside the surface along a stretch has no isolated intersections: the search ends with
-//! an error when three points of a piece (longer than 100 tolerances, inside a larger
-//! patch) lie on the patch within the tolerance, and after [`MAX_PAIRS`] pairs at most.
+//! an error when three points of a piece (longer than 1000 tolerances and
+//! [`MIN_OVERLAP`] of the shapes' size, so that a tangential contact's neighbourhood does
+//! not count, inside a larger patch) lie on the patch within the tolerance, and after
+//! [`MAX_PAIRS`] pairs at most.
 
 use crate::Point;
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result};
 use crate::query::curve_cover::{CurveCover, SearchPiece};
-use crate::query::curve_intersection::{IntersectionKind, TANGENT_RESOLUTION, TANGENT_SINE};
+use crate::query::curve_intersection::{IntersectionKind, MIN_OVERLAP, TANGENT_RESOLUTION, TANGENT_SINE};
 use crate::query::normal_cone::{normal_cone, transversal};
 use crate::query::project_curve::MIN_WIDTH;
 use crate::query::surface_cover::{SearchPatch, SurfaceCover};
@@ -146,7 +148,10 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
                 continue;
             }
             let (dx, dy) = (x.bounds.diagonal(), y.bounds.diagonal());
-            if dx > 100.0 * self.tolerance && dx <= dy && self.lies_in(x.interval(), y.u(), y.v()) {
+            if dx > (1000.0 * self.tolerance).max(MIN_OVERLAP * self.size)
+                && dx <= dy
+                && self.lies_in(x.interval(), y.u(), y.v())
+            {
                 return Err(Error::numerical(
                     "curve-surface intersection",
                     format!("the curve runs inside the surface (at least for t in [{}, {}])", x.start.t, x.end.t),
