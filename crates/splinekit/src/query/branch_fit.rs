@@ -5,6 +5,7 @@
 //! repeated last one), with 8 control points, doubled until the largest distance from a
 //! point to its fitted image is within the tolerance or the control points would reach half
 //! the points (then the fit with most control points is returned, its error stated).
+//! Consecutive points closer than 10⁻¹² of the coordinates' size count once.
 
 use crate::Point;
 use crate::error::{Error, Result};
@@ -19,8 +20,18 @@ impl IntersectionBranch {
         if !(tolerance > 0.0 && tolerance.is_finite()) {
             return Err(Error::invalid("tolerance", format!("must be finite and > 0, got {tolerance}")));
         }
-        let pts: &[Point<3>] =
+        let all: &[Point<3>] =
             if self.closed && self.points.len() > 1 { &self.points[..self.points.len() - 1] } else { &self.points };
+        // Consecutive points that coincide (a step ending on a boundary it started on) would
+        // get equal chord-length parameters: keep one of them.
+        let scale = all.iter().fold(0.0f64, |m, p| m.max(p.amax())).max(f64::MIN_POSITIVE);
+        let mut pts: Vec<Point<3>> = Vec::with_capacity(all.len());
+        for p in all {
+            if pts.last().is_none_or(|q: &Point<3>| (p - q).norm() > 1e-12 * scale) {
+                pts.push(*p);
+            }
+        }
+        let pts = &pts[..];
         if pts.len() < 2 {
             return Err(Error::invalid("points", format!("a branch needs 2 points to fit, has {}", pts.len())));
         }
