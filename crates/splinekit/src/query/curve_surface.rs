@@ -9,7 +9,7 @@
 //! precision; if it does not converge there the pair is split like any other. Other pairs
 //! are split, the one with the larger box first, until both boxes are smaller than
 //! `max(tolerance, TANGENT_RESOLUTION · size)` or narrower than
-//! [`MIN_WIDTH`](crate::query::project_curve::MIN_WIDTH) of the domains: there Gauss–Newton
+//! [`MIN_WIDTH`] of the domains: there Gauss–Newton
 //! from the pair's centre over the whole domains finds the nearest point pair, recorded
 //! when it is within the tolerance.
 //!

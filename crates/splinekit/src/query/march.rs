@@ -113,7 +113,7 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
     }
 
     /// Newton's method from x on S_a = S_b and the fourth equation: (S_a − q)·T = 0, or
-    /// x[k] = value for `hold = Some((k, value))`. The parameters where the surfaces agree
+    /// `x[k] = value` for `hold = Some((k, value))`. The parameters where the surfaces agree
     /// within the tolerance, or `None`.
     pub fn correct(&self, mut x: [f64; 4], q: &Point<3>, t: &Point<3>, hold: Option<(usize, f64)>) -> Option<[f64; 4]> {
         for _ in 0..MAX_NEWTON_ITERATIONS {
