@@ -14,12 +14,13 @@ import sys
 import tempfile
 import time
 
-from OCP.gp import gp_Pnt, gp_Pnt2d
+from OCP.gp import gp_Ax3, gp_Dir, gp_Pnt, gp_Pnt2d
 from OCP.OCP.collections import Array1_double, Array1_gp_Pnt, Array1_gp_Pnt2d, Array1_int, Array2_gp_Pnt
-from OCP.Geom import Geom_BSplineCurve, Geom_BSplineSurface
+from OCP.Geom import (Geom_BSplineCurve, Geom_BSplineSurface, Geom_CylindricalSurface, Geom_Plane,
+                      Geom_ToroidalSurface)
 from OCP.Geom2d import Geom2d_BSplineCurve
 from OCP.Geom2dAPI import Geom2dAPI_InterCurveCurve
-from OCP.GeomAPI import GeomAPI_ProjectPointOnCurve, GeomAPI_ProjectPointOnSurf
+from OCP.GeomAPI import GeomAPI_IntCS, GeomAPI_IntSS, GeomAPI_ProjectPointOnCurve, GeomAPI_ProjectPointOnSurf
 
 TOLERANCE = 1e-9
 failures = []
@@ -51,9 +52,10 @@ def bicubic_surface(n=8):
     return doc, Geom_BSplineSurface(poles, knots, knots, mults, mults, 3, 3)
 
 
-def cubic_curve(n=12):
-    """A wiggly cubic B-spline in space."""
-    pts = [[float(i), math.sin(1.3 * i) * 2.0, math.cos(0.7 * i)] for i in range(n)]
+def cubic_curve(n=12, pts=None):
+    """A wiggly cubic B-spline in space (or through the given control points)."""
+    pts = pts or [[float(i), math.sin(1.3 * i) * 2.0, math.cos(0.7 * i)] for i in range(n)]
+    n = len(pts)
     full, knots, mults = clamped_knots(n, 3)
     doc = {"type": "bspline", "degree": 3, "knots": full, "control_points": pts}
     poles = Array1_gp_Pnt(1, n)
@@ -185,12 +187,103 @@ def intersect_curves(binary):
         failures.append(f"intersection at {p} found by splinekit only")
 
 
+def match_points(name, ours, theirs, elapsed, ocp, distance=1e-7):
+    """Fails on every point found by one side only (within `distance`)."""
+    near = lambda p, q: math.dist(p, q) <= distance
+    missed = [p for p in theirs if not any(near(p, q) for q in ours)]
+    extra = [p for p in ours if not any(near(p, q) for q in theirs)]
+    print(f"{name}: splinekit {len(ours)} points, OpenCASCADE {len(theirs)}; "
+          f"found only by OpenCASCADE: {len(missed)}, only by splinekit: {len(extra)}")
+    print(f"  time: splinekit CLI {elapsed:.3f} s (process included), OpenCASCADE {ocp * 1e3:.2f} ms")
+    failures.extend(f"{name}: {p} found by OpenCASCADE only" for p in missed)
+    failures.extend(f"{name}: {p} found by splinekit only" for p in extra)
+
+
+def intersect_curve_surface(binary):
+    """A cubic B-spline zigzagging through the wavy bicubic patch, and the wiggly curve."""
+    sdoc, surface = bicubic_surface()
+    zigzag = [[0.5 + 0.55 * i, 3.5 + 2.0 * math.sin(0.8 * i), 1.6 * (-1) ** i] for i in range(12)]
+    for label, (cdoc, curve) in [("zigzag", cubic_curve(pts=zigzag)), ("wiggly", cubic_curve())]:
+        with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+            json.dump(sdoc, f)
+        ours, elapsed = splinekit(binary, cdoc, "intersect", f.name)
+        ours = [p["point"] for p in ours["points"]]
+        start = time.perf_counter()
+        inter = GeomAPI_IntCS(curve, surface)
+        theirs = [[inter.Point(i).X(), inter.Point(i).Y(), inter.Point(i).Z()] for i in range(1, inter.NbPoints() + 1)]
+        ocp = time.perf_counter() - start
+        if inter.NbSegments() > 0:
+            failures.append(f"curve-surface {label}: OpenCASCADE reports {inter.NbSegments()} segments")
+        match_points(f"intersect a {label} cubic B-spline with the bicubic 8×8 surface", ours, theirs, elapsed, ocp)
+
+
+def polyline_distance(p, polylines):
+    """The distance from p to the nearest segment of any polyline."""
+    best = math.inf
+    for line in polylines:
+        for a, b in zip(line, line[1:]):
+            d = [bi - ai for ai, bi in zip(a, b)]
+            dd = sum(x * x for x in d)
+            s = 0.0 if dd == 0 else max(0.0, min(1.0, sum((pi - ai) * di for pi, ai, di in zip(p, a, d)) / dd))
+            best = min(best, math.dist(p, [ai + s * di for ai, di in zip(a, d)]))
+    return best
+
+
+def compare_curves(name, ours, inter, elapsed, ocp, reach):
+    """ours: splinekit branches; inter: a done GeomAPI_IntSS. Every sample of OpenCASCADE's
+    lines must lie within `reach` of splinekit's polylines and every splinekit point within
+    `reach` of OpenCASCADE's lines (sampled densely)."""
+    theirs = []
+    for i in range(1, inter.NbLines() + 1):
+        line = inter.Line(i)
+        t0, t1 = line.FirstParameter(), line.LastParameter()
+        pts = [line.Value(t0 + (t1 - t0) * k / 2000) for k in range(2001)]
+        theirs.append([[q.X(), q.Y(), q.Z()] for q in pts])
+    polylines = [c["points"] for c in ours]
+    far_theirs = max((polyline_distance(p, polylines) for line in theirs for p in line[::20]), default=0.0)
+    far_ours = max((polyline_distance(p, theirs) for c in polylines for p in c[::10]), default=0.0)
+    stops = [c["early_stop"] for c in ours if c["early_stop"]]
+    print(f"{name}: splinekit {len(ours)} branches ({sum(c['closed'] for c in ours)} closed, early stops {stops}), "
+          f"OpenCASCADE {inter.NbLines()} lines; farthest OpenCASCADE sample from splinekit {far_theirs:.2e}, "
+          f"farthest splinekit point from OpenCASCADE {far_ours:.2e}")
+    print(f"  time: splinekit CLI {elapsed:.3f} s (process included), OpenCASCADE {ocp * 1e3:.2f} ms")
+    if far_theirs > reach:
+        failures.append(f"{name}: OpenCASCADE's curve passes {far_theirs:.2e} from splinekit's")
+    if far_ours > reach:
+        failures.append(f"{name}: splinekit's curve passes {far_ours:.2e} from OpenCASCADE's")
+
+
+def intersect_surfaces(binary):
+    """A torus (R 3, r 1) and a cylinder of radius 0.5 about x = 3 through its tube (two
+    loops); the wavy bicubic patch cut by the plane z = 0.2."""
+    torus = {"type": "torus", "major_radius": 3.0, "minor_radius": 1.0}
+    cylinder = {"type": "revolution", "curve": {"type": "line", "from": [3.5, 0, -2], "to": [3.5, 0, 2]},
+                "axis_point": [3, 0, 0], "axis": [0, 0, 1]}
+    z = gp_Dir(0, 0, 1)
+    occ_torus = Geom_ToroidalSurface(gp_Ax3(gp_Pnt(0, 0, 0), z), 3.0, 1.0)
+    occ_cylinder = Geom_CylindricalSurface(gp_Ax3(gp_Pnt(3, 0, 0), z), 0.5)
+    sdoc, bicubic = bicubic_surface()
+    plane = {"type": "plane", "origin": [-10, -10, 0.2], "u_axis": [30, 0, 0], "v_axis": [0, 30, 0]}
+    occ_plane = Geom_Plane(gp_Pnt(0, 0, 0.2), z)
+    for name, (da, db), (oa, ob) in [("torus–cylinder", (torus, cylinder), (occ_torus, occ_cylinder)),
+                                     ("bicubic 8×8 patch–plane z = 0.2", (sdoc, plane), (bicubic, occ_plane))]:
+        with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+            json.dump(db, f)
+        ours, elapsed = splinekit(binary, da, "intersect", f.name, "--chord", "1e-5")
+        start = time.perf_counter()
+        inter = GeomAPI_IntSS(oa, ob, 1e-7)
+        ocp = time.perf_counter() - start
+        compare_curves(f"intersect {name}", ours["curves"], inter, elapsed, ocp, 1e-4)
+
+
 def main():
     binary = sys.argv[1]
     count = int(sys.argv[sys.argv.index("--points") + 1]) if "--points" in sys.argv else 2500
     project_surface(binary, count)
     project_curve(binary, count)
     intersect_curves(binary)
+    intersect_curve_surface(binary)
+    intersect_surfaces(binary)
     if failures:
         print("\n".join(["FAILED:"] + failures))
         sys.exit(1)

@@ -44,10 +44,13 @@ enum Command {
     Fit(commands::fit::FitArgs),
     /// B-spline through every point (global interpolation).
     Interpolate(commands::fit::InterpolateArgs),
-    /// Where two curves cross, touch or overlap, or where one crosses itself.
+    /// Where two curves cross, touch or overlap, where one crosses itself, where a curve
+    /// meets a surface, or the intersection curves of two surfaces.
     Intersect(commands::intersect::IntersectArgs),
     /// Nearest point of a curve or surface to given points, or every local minimum.
     Project(commands::project::ProjectArgs),
+    /// Plane sections (contours) of a surface.
+    Section(commands::section::SectionArgs),
     /// Knot insertion, degree elevation or knot removal; the curve stays the same.
     Refine(commands::refine::RefineArgs),
     /// Subdivision curves: Chaikin, Lane–Riesenfeld, 4-point.
@@ -117,6 +120,7 @@ fn main() {
         Command::Intersect(a) => commands::intersect::run(a),
         Command::Project(a) => commands::project::run(a),
         Command::Refine(a) => commands::refine::run(a),
+        Command::Section(a) => commands::section::run(a),
         Command::Subdivide(a) => commands::subdivide::run(a),
         Command::SubdivideSurface(a) => commands::subdivide_surface::run(a),
         Command::Tessellate(a) => commands::tessellate::run(a),

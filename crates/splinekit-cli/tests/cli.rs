@@ -800,10 +800,55 @@ fn intersect_reports_crossings_tangents_overlaps_and_self_intersections() {
     let v = ok_json(&["intersect", &looped], "");
     assert_eq!(v["points"].as_array().unwrap().len(), 1, "{v}");
     let sphere = write("sphere.json", r#"{"type":"sphere","radius":1}"#);
-    assert_bad(&["intersect", &a, &sphere], "", "B: surfaces are not supported");
+    assert_bad(&["intersect", &a, &sphere], "", "A: a curve and a surface intersect in 3-D only, this shape is 2-D");
     let helix = write("helix.json", r#"{"type":"helix"}"#);
     assert_bad(&["intersect", &a, &helix], "", "B: the curves must have the same dimension");
     assert_bad(&["intersect", &a, &line, "--tolerance", "0"], "", "--tolerance");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn intersect_and_section_cut_surfaces() {
+    let dir = std::env::temp_dir().join(format!("splinekit-intersect-surfaces-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let sphere = write("sphere.json", r#"{"type":"sphere","radius":2}"#);
+    let line = write("line.json", r#"{"type":"line","from":[-3,0.5,0.3],"to":[3,0.5,0.3]}"#);
+    for args in [[&line, &sphere], [&sphere, &line]] {
+        let v = ok_json(&["intersect", args[0], args[1]], "");
+        let points = v["points"].as_array().unwrap();
+        assert_eq!(points.len(), 2, "{v}");
+        for p in points {
+            let x = floats(&p["point"]);
+            assert!((x[0].abs() - 3.66f64.sqrt()).abs() < 1e-12 && floats(&p["params"]).len() == 3, "{v}");
+        }
+    }
+    let torus = write("torus.json", r#"{"type":"torus"}"#);
+    let cylinder = write("cylinder.json", r#"{"type":"cylinder","radius":3,"height":2}"#);
+    let v = ok_json(&["intersect", &torus, &cylinder], "");
+    let curves = v["curves"].as_array().unwrap();
+    assert_eq!(curves.len(), 1, "{v}");
+    assert_eq!(curves[0]["closed"], true);
+    for p in curves[0]["points"].as_array().unwrap() {
+        let x = floats(p);
+        assert!(((x[0] * x[0] + x[1] * x[1]).sqrt() - 3.0).abs() < 1e-9 && (x[2] - 1.0).abs() < 1e-9, "{p}");
+    }
+    let v = ok_json(&["section", &sphere, "--plane", "0,0,1/0,0,1"], "");
+    let curves = v["sections"][0]["curves"].as_array().unwrap();
+    assert_eq!(curves.len(), 1, "{v}");
+    for p in curves[0]["points"].as_array().unwrap() {
+        let x = floats(p);
+        assert!(((x[0] * x[0] + x[1] * x[1]).sqrt() - 3f64.sqrt()).abs() < 1e-9 && (x[2] - 1.0).abs() < 1e-9);
+    }
+    assert_bad(&["section", &sphere, "--plane", "0,0,1/0,0,0"], "", "--plane: the normal must be");
+    assert_bad(&["section", &sphere, "--plane", "0,0,1"], "", "--plane");
+    assert_bad(&["section", &sphere, "--plane", "0,0,0/0,0,1", "--levels", "0"], "", "--levels");
+    assert_bad(&["section", &line, "--plane", "0,0,0/0,0,1"], "", "SURFACE");
+    assert_bad(&["intersect", &torus, &cylinder, "--chord", "0"], "", "--chord");
     std::fs::remove_dir_all(&dir).ok();
 }
 

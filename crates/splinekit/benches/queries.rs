@@ -1,12 +1,16 @@
 //! Geometric queries: 10⁴ projections onto a bicubic surface, all intersections of two
-//! cubic B-spline curves with 100 control points each (the shapes of bench/ocp/queries.py,
-//! which times OpenCASCADE on the same work).
+//! cubic B-spline curves with 100 control points each, the intersection curve of a torus
+//! and a cylinder through its tube (the shapes of bench/ocp/queries.py, which times
+//! OpenCASCADE on the same work).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use splinekit::Point;
 use splinekit::curve::BSplineCurve;
-use splinekit::query::{SurfaceProjector, intersect_curves};
+use splinekit::curve::model::Line;
+use splinekit::query::{SurfaceProjector, intersect_curves, intersect_surfaces};
 use splinekit::surface::BSplineSurface;
+use splinekit::surface::derived::RevolvedSurface;
+use splinekit::surface::model::Torus;
 use std::hint::black_box;
 
 fn bicubic() -> BSplineSurface<3> {
@@ -52,6 +56,13 @@ fn bench(c: &mut Criterion) {
     let (ca, cb) = wavy_curves();
     g.bench_function("all intersections of two cubic B-splines, 100 control points each", |b| {
         b.iter(|| intersect_curves(black_box(&ca), black_box(&cb), 1e-9).unwrap().points.len())
+    });
+    let torus = Torus::new(3.0, 1.0).unwrap();
+    let line = Line::new(Point::<3>::new(3.5, 0.0, -2.0), Point::<3>::new(3.5, 0.0, 2.0)).unwrap();
+    let axis = (Point::<3>::new(3.0, 0.0, 0.0), Point::<3>::new(0.0, 0.0, 1.0));
+    let cylinder = RevolvedSurface::new(Box::new(line), axis.0, axis.1, std::f64::consts::TAU).unwrap();
+    g.bench_function("torus-cylinder intersection curve (two loops, chord 1e-5)", |b| {
+        b.iter(|| intersect_surfaces(black_box(&torus), black_box(&cylinder), 1e-9, 1e-5).unwrap().len())
     });
     g.finish();
 }

@@ -1,12 +1,17 @@
 //! `splinekit intersect`: where two curves meet (crossings, tangential contacts and
-//! overlapping stretches), or where one curve crosses itself.
+//! overlapping stretches), where one curve crosses itself, or where a curve meets a
+//! surface.
 
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use serde_json::{Value, json};
 use splinekit::curve::Curve;
-use splinekit::query::{CurveIntersections, IntersectionKind, intersect_curves, self_intersections};
-use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, ShapeDocument};
+use splinekit::query::{
+    CurveIntersections, CurveSurfaceIntersection, EarlyStop, IntersectionBranch, IntersectionKind,
+    intersect_curve_surface, intersect_curves, intersect_surfaces, self_intersections,
+};
+use splinekit_scene::refine::bspline_doc;
+use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, ShapeDocument, SurfaceDocument};
 
 use crate::input::{parse_numbers, read_shape};
 use crate::output::{check_finite, write_json};
@@ -20,18 +25,94 @@ pub struct IntersectArgs {
     /// Distance below which the shapes count as meeting (> 0).
     #[arg(long, default_value = "1e-9", allow_hyphen_values = true)]
     pub tolerance: String,
+    /// Chord error of the polylines of surface–surface intersection curves (> 0).
+    #[arg(long, default_value = "1e-4", allow_hyphen_values = true)]
+    pub chord: String,
     /// Write the JSON here instead of standard output.
     #[arg(short, long)]
     pub output: Option<String>,
 }
 
-fn curve_document(path: &str, name: &str) -> Result<CurveDocument> {
-    match read_shape(path)? {
-        ShapeDocument::Curve(c) => Ok(c),
-        ShapeDocument::Surface(_) => {
-            bail!("{name}: surfaces are not supported by intersect yet (curve–curve and self-intersections only)")
+fn kind_name(kind: IntersectionKind) -> &'static str {
+    match kind {
+        IntersectionKind::Crossing => "crossing",
+        IntersectionKind::Tangent => "tangent",
+    }
+}
+
+/// A curve–surface answer: `params` are [t, u, v].
+fn curve_surface_json(r: &[CurveSurfaceIntersection]) -> Value {
+    let points: Vec<Value> = r
+        .iter()
+        .map(|p| json!({"params": [p.t, p.u, p.v], "point": [p.point.x, p.point.y, p.point.z], "kind": kind_name(p.kind)}))
+        .collect();
+    json!({"points": points, "overlaps": [], "curves": []})
+}
+
+/// The JSON of intersection branches: `{points, params_a, params_b, closed, early_stop,
+/// bspline, fit_error}`, the B-spline fitted within `fit` of the points where it can be.
+pub fn branches_json(branches: &[IntersectionBranch], fit: f64) -> Result<Vec<Value>> {
+    branches
+        .iter()
+        .map(|b| {
+            let stop = b.early_stop.map(|s| match s {
+                EarlyStop::Tangential => "tangential",
+                EarlyStop::StepLimit => "step_limit",
+                EarlyStop::PointLimit => "point_limit",
+            });
+            let points: Vec<[f64; 3]> = b.points.iter().map(|p| [p.x, p.y, p.z]).collect();
+            let (bspline, error) = match b.points.len() {
+                0 | 1 => (Value::Null, Value::Null),
+                _ => {
+                    let f = b.fit_bspline(fit)?;
+                    (serde_json::to_value(bspline_doc(&f.curve))?, json!(f.max_error))
+                }
+            };
+            Ok(json!({"points": points, "params_a": b.params_a, "params_b": b.params_b, "closed": b.closed,
+                "early_stop": stop, "bspline": bspline, "fit_error": error}))
+        })
+        .collect()
+}
+
+/// Parses a positive number given to `flag`.
+pub fn positive(flag: &str, text: &str) -> Result<f64> {
+    match parse_numbers(flag, text)?[..] {
+        [t] if t > 0.0 => Ok(t),
+        _ => bail!("{flag}: expected one number > 0, got '{text}'"),
+    }
+}
+
+/// Builds two 3-D surfaces and intersects them.
+fn two_surfaces(a: &SurfaceDocument, b: &SurfaceDocument, tolerance: f64, chord: f64) -> Result<Value> {
+    let fit = chord;
+    for (name, dim) in [("A", a.dimension()), ("B", b.dimension())] {
+        let dim = dim.map_err(|e| anyhow!("{name}: {e}"))?;
+        if dim != 3 {
+            bail!("{name}: surfaces intersect in 3-D only, this surface is {dim}-D");
         }
     }
+    let sa = a.build_in::<3>().map_err(|e| anyhow!("A: {e}"))?;
+    let sb = b.build_in::<3>().map_err(|e| anyhow!("B: {e}"))?;
+    let branches = intersect_surfaces(sa.as_ref(), sb.as_ref(), tolerance, chord)?;
+    Ok(json!({"points": [], "overlaps": [], "curves": branches_json(&branches, fit)?}))
+}
+
+/// Builds a 3-D curve and surface, `name_c` and `name_s` naming them in errors.
+fn curve_and_surface(
+    c: &CurveDocument,
+    s: &SurfaceDocument,
+    (name_c, name_s): (&str, &str),
+    tolerance: f64,
+) -> Result<Value> {
+    for (name, dim) in [(name_c, c.dimension()), (name_s, s.dimension())] {
+        let dim = dim.map_err(|e| anyhow!("{name}: {e}"))?;
+        if dim != 3 {
+            bail!("{name}: a curve and a surface intersect in 3-D only, this shape is {dim}-D");
+        }
+    }
+    let curve = c.build_in::<3>().map_err(|e| anyhow!("{name_c}: {e}"))?;
+    let surface = s.build_in::<3>().map_err(|e| anyhow!("{name_s}: {e}"))?;
+    Ok(curve_surface_json(&intersect_curve_surface(curve.as_ref(), surface.as_ref(), tolerance)?))
 }
 
 fn to_json<const D: usize>(r: &CurveIntersections<D>) -> Value {
@@ -39,11 +120,7 @@ fn to_json<const D: usize>(r: &CurveIntersections<D>) -> Value {
         .points
         .iter()
         .map(|p| {
-            let kind = match p.kind {
-                IntersectionKind::Crossing => "crossing",
-                IntersectionKind::Tangent => "tangent",
-            };
-            json!({"params": [p.t_a, p.t_b], "point": p.point.iter().collect::<Vec<_>>(), "kind": kind})
+            json!({"params": [p.t_a, p.t_b], "point": p.point.iter().collect::<Vec<_>>(), "kind": kind_name(p.kind)})
         })
         .collect();
     let overlaps: Vec<Value> =
@@ -72,14 +149,24 @@ impl DimensionVisitor<Curves> for Intersect<'_> {
 }
 
 pub fn run(args: &IntersectArgs) -> Result<()> {
-    let tolerance = match parse_numbers("--tolerance", &args.tolerance)?[..] {
-        [t] if t > 0.0 => t,
-        _ => bail!("--tolerance: expected one number > 0, got '{}'", args.tolerance),
+    let tolerance = positive("--tolerance", &args.tolerance)?;
+    let chord = positive("--chord", &args.chord)?;
+    let a = read_shape(&args.a)?;
+    let b = args.b.as_deref().map(read_shape).transpose()?;
+    let value = match (&a, &b) {
+        (ShapeDocument::Curve(a), None) => {
+            a.build().map_err(|e| anyhow!("A: {e}"))?.visit(Intersect { b: None, tolerance })?
+        }
+        (ShapeDocument::Curve(a), Some(ShapeDocument::Curve(b))) => {
+            a.build().map_err(|e| anyhow!("A: {e}"))?.visit(Intersect { b: Some(b), tolerance })?
+        }
+        (ShapeDocument::Curve(c), Some(ShapeDocument::Surface(s))) => curve_and_surface(c, s, ("A", "B"), tolerance)?,
+        (ShapeDocument::Surface(s), Some(ShapeDocument::Curve(c))) => curve_and_surface(c, s, ("B", "A"), tolerance)?,
+        (ShapeDocument::Surface(_), None) => {
+            bail!("B: a surface needs a second shape (self-intersections of surfaces are not computed)")
+        }
+        (ShapeDocument::Surface(a), Some(ShapeDocument::Surface(b))) => two_surfaces(a, b, tolerance, chord)?,
     };
-    let a = curve_document(&args.a, "A")?;
-    let b = args.b.as_deref().map(|p| curve_document(p, "B")).transpose()?;
-    let curve = a.build().map_err(|e| anyhow!("A: {e}"))?;
-    let value = curve.visit(Intersect { b: b.as_ref(), tolerance })?;
     check_finite(&value, "result")?;
     write_json(&value, args.output.as_deref())
 }

@@ -9,6 +9,7 @@ pub mod intersect;
 pub mod project;
 pub mod refine;
 pub mod render;
+pub mod section;
 pub mod subdivide;
 pub mod subdivide_surface;
 pub mod tessellate;

@@ -1,5 +1,5 @@
 //! Geometric queries: projection of points onto curves and surfaces (point inversion),
-//! intersections of curves, arc length as a parameter.
+//! intersections of curves with curves and with surfaces, arc length as a parameter.
 //!
 //! Every query searches a cover of the shape by cubic Hermite pieces (curves,
 //! [`curve_cover`]) or bicubic Hermite patches (surfaces, [`surface_cover`]) whose
@@ -12,12 +12,17 @@ pub mod arc_length;
 pub mod bernstein_product;
 pub mod best_first;
 pub mod bounds;
+pub mod branch_fit;
 pub mod curve_cover;
 pub mod curve_intersection;
+pub mod curve_surface;
+pub mod march;
+pub mod normal_cone;
 pub mod project_curve;
 pub mod project_surface;
 pub mod slope;
 pub mod surface_cover;
+pub mod surface_intersection;
 pub mod surface_slope;
 pub mod tangent_cone;
 
@@ -26,5 +31,7 @@ pub use bounds::Aabb;
 pub use curve_intersection::{
     CurveIntersection, CurveIntersections, CurveOverlap, IntersectionKind, intersect_curves, self_intersections,
 };
+pub use curve_surface::{CurveSurfaceIntersection, intersect_curve_surface};
 pub use project_curve::{CurveProjector, Nearest};
 pub use project_surface::{NearestOnSurface, SurfaceProjector};
+pub use surface_intersection::{EarlyStop, IntersectionBranch, intersect_surfaces};

@@ -24,15 +24,22 @@ impl<const D: usize> TangentCone<D> {
     pub fn of(piece: &CurvePiece<D>) -> Self {
         let b = &piece.control;
         let legs = [(b[1] - b[0]) * 3.0, (b[2] - b[1]) * 3.0, (b[3] - b[2]) * 3.0];
+        Self::of_legs(&legs, piece.slope_radius)
+    }
+
+    /// The cone holding every vector w + e with w in the convex cone of `legs` and
+    /// |e| ≤ `slack`: the cone of the legs' directions widened by asin(slack / shortest leg)
+    /// (π when a leg is shorter than `slack` or the legs cancel).
+    pub fn of_legs(legs: &[Point<D>], slack: f64) -> Self {
         let all = TangentCone { axis: Point::<D>::zeros(), half_angle: std::f64::consts::PI };
         let shortest = legs.iter().map(|l| l.norm()).fold(f64::INFINITY, f64::min);
         let chord = legs.iter().fold(Point::<D>::zeros(), |s, l| s + l / l.norm().max(f64::MIN_POSITIVE));
-        if shortest <= piece.slope_radius || chord.norm() == 0.0 {
+        if legs.is_empty() || shortest <= slack || chord.norm() == 0.0 {
             return all;
         }
         let axis = chord.normalize();
         let spread = legs.iter().map(|l| angle(&axis, &l.normalize())).fold(0.0f64, f64::max);
-        let widen = (piece.slope_radius / shortest).min(1.0).asin();
+        let widen = (slack / shortest).min(1.0).asin();
         TangentCone { axis, half_angle: (spread + widen).min(std::f64::consts::PI) }
     }
 
@@ -64,6 +71,6 @@ impl<const D: usize> TangentCone<D> {
 }
 
 /// The angle between two unit vectors, accurate for small angles.
-fn angle<const D: usize>(a: &Point<D>, b: &Point<D>) -> f64 {
+pub fn angle<const D: usize>(a: &Point<D>, b: &Point<D>) -> f64 {
     2.0 * ((a - b).norm() / 2.0).min(1.0).asin()
 }

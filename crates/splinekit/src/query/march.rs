@@ -1,0 +1,221 @@
+//! One step of marching along the intersection curve of two surfaces in 3-D.
+//!
+//! The state is x = (u_a, v_a, u_b, v_b) with S_a(u_a, v_a) = S_b(u_b, v_b). The curve's
+//! tangent is T = N_a × N_b (normalised, oriented like the previous one). A step of length
+//! h predicts the parameters by the least-squares solutions of J_a δ_a = h·T and
+//! J_b δ_b = h·T (J = [S_u, S_v]), then corrects by Newton's method on the four equations
+//! S_a − S_b = 0, (S_a − q)·T = 0 with q = P + h·T (the plane through the predicted point
+//! normal to the tangent), or with a parameter held on the domain boundary the step crosses.
+//! The step is accepted when the tangent turns by θ with h·θ/8 ≤ `chord` (the sagitta of a
+//! circular arc of chord h turning by θ) and θ ≤ [`MAX_TURN`]; otherwise it is halved,
+//! at most [`MAX_HALVINGS`] times.
+
+use crate::Point;
+use crate::curve::Interval;
+use crate::surface::Surface;
+use nalgebra::{Matrix2, Matrix4, Vector2, Vector4};
+
+/// The largest angle (radians) the tangent may turn in one step.
+pub const MAX_TURN: f64 = 0.2;
+
+/// How often one step may be halved before marching stops.
+pub const MAX_HALVINGS: usize = 40;
+
+/// Newton iterations of one correction.
+const MAX_NEWTON_ITERATIONS: usize = 20;
+
+/// Sine of the angle between the normals below which the surfaces count as tangent.
+pub const TANGENT_NORMAL_SINE: f64 = 1e-8;
+
+/// A point of the intersection curve: parameters on both surfaces, the point, the tangent.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MarchPoint {
+    /// (u_a, v_a, u_b, v_b).
+    pub x: [f64; 4],
+    /// S_a(u_a, v_a).
+    pub point: Point<3>,
+    /// Unit tangent N_a × N_b.
+    pub tangent: Point<3>,
+}
+
+/// How a step ended.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum StepEnd {
+    /// A point inside both domains, and the step length to try next.
+    Inside(MarchPoint, f64),
+    /// A point on a domain boundary: the branch leaves there.
+    Boundary(MarchPoint),
+    /// The normals became parallel (the surfaces touch).
+    Tangential,
+    /// No step length down to the halving limit was accepted.
+    StepLimit,
+}
+
+/// The two surfaces, their domains and closedness, and the tolerances.
+pub struct Marcher<'s, A: ?Sized, B: ?Sized> {
+    /// First surface.
+    pub a: &'s A,
+    /// Second surface.
+    pub b: &'s B,
+    /// Distance within which S_a and S_b must agree at every point.
+    pub tolerance: f64,
+    /// Chord error allowed between the polyline and the curve.
+    pub chord: f64,
+    /// The longest step.
+    pub max_step: f64,
+}
+
+/// S, S_u, S_v of both surfaces.
+struct Frames {
+    a: [Point<3>; 3],
+    b: [Point<3>; 3],
+}
+
+impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
+    fn domains(&self) -> [(Interval, bool); 4] {
+        [
+            (self.a.domain_u(), self.a.is_closed_u()),
+            (self.a.domain_v(), self.a.is_closed_v()),
+            (self.b.domain_u(), self.b.is_closed_u()),
+            (self.b.domain_v(), self.b.is_closed_v()),
+        ]
+    }
+
+    /// x with closed parameters wrapped into their domains.
+    pub fn wrap(&self, x: [f64; 4]) -> [f64; 4] {
+        let d = self.domains();
+        std::array::from_fn(|k| {
+            let (i, closed) = d[k];
+            if closed && i.length() > 0.0 { i.start + (x[k] - i.start).rem_euclid(i.length()) } else { x[k] }
+        })
+    }
+
+    fn frames(&self, x: &[f64; 4]) -> Frames {
+        let (mut oa, mut ob) = ([Point::<3>::zeros(); 4], [Point::<3>::zeros(); 4]);
+        self.a.eval_partials(x[0], x[1], 1, 1, &mut oa);
+        self.b.eval_partials(x[2], x[3], 1, 1, &mut ob);
+        Frames { a: [oa[0], oa[2], oa[1]], b: [ob[0], ob[2], ob[1]] }
+    }
+
+    /// The point at x with its unit tangent oriented along `along` (any sign when zero);
+    /// `None` where the normals are parallel.
+    pub fn point(&self, x: [f64; 4], along: &Point<3>) -> Option<MarchPoint> {
+        let f = self.frames(&x);
+        let (na, nb) = (f.a[1].cross(&f.a[2]), f.b[1].cross(&f.b[2]));
+        let t = na.cross(&nb);
+        let scale = na.norm() * nb.norm();
+        if t.norm().is_nan() || t.norm() <= TANGENT_NORMAL_SINE * scale {
+            return None;
+        }
+        let t = t.normalize();
+        let tangent = if t.dot(along) < 0.0 { -t } else { t };
+        Some(MarchPoint { x, point: f.a[0], tangent })
+    }
+
+    /// Newton's method from x on S_a = S_b and the fourth equation: (S_a − q)·T = 0, or
+    /// `x[k] = value` for `hold = Some((k, value))`. The parameters where the surfaces agree
+    /// within the tolerance, or `None`.
+    pub fn correct(&self, mut x: [f64; 4], q: &Point<3>, t: &Point<3>, hold: Option<(usize, f64)>) -> Option<[f64; 4]> {
+        for _ in 0..MAX_NEWTON_ITERATIONS {
+            x = self.wrap(x);
+            let f = self.frames(&x);
+            let g = f.a[0] - f.b[0];
+            let mut j = Matrix4::<f64>::zeros();
+            for r in 0..3 {
+                j[(r, 0)] = f.a[1][r];
+                j[(r, 1)] = f.a[2][r];
+                j[(r, 2)] = -f.b[1][r];
+                j[(r, 3)] = -f.b[2][r];
+            }
+            let last = match hold {
+                Some((k, value)) => {
+                    j[(3, k)] = 1.0;
+                    x[k] - value
+                }
+                None => {
+                    j[(3, 0)] = t.dot(&f.a[1]);
+                    j[(3, 1)] = t.dot(&f.a[2]);
+                    (f.a[0] - q).dot(t)
+                }
+            };
+            let step = j.lu().solve(&Vector4::new(g.x, g.y, g.z, last))?;
+            let size = step.amax();
+            for k in 0..4 {
+                x[k] -= step[k];
+            }
+            if !size.is_finite() {
+                return None;
+            }
+            if size <= 1e-14 * (1.0 + x.iter().fold(0.0f64, |m, v| m.max(v.abs()))) {
+                break;
+            }
+        }
+        let x = self.wrap(x);
+        let f = self.frames(&x);
+        ((f.a[0] - f.b[0]).norm() <= self.tolerance).then_some(x)
+    }
+
+    /// The parameter increments that move both surfaces by the vector `d` (least squares).
+    fn predict(&self, x: &[f64; 4], d: &Point<3>) -> Option<[f64; 4]> {
+        let f = self.frames(x);
+        let solve = |fr: &[Point<3>; 3]| -> Option<Vector2<f64>> {
+            let m = Matrix2::new(fr[1].dot(&fr[1]), fr[1].dot(&fr[2]), fr[1].dot(&fr[2]), fr[2].dot(&fr[2]));
+            m.lu().solve(&Vector2::new(fr[1].dot(d), fr[2].dot(d)))
+        };
+        let (da, db) = (solve(&f.a)?, solve(&f.b)?);
+        Some([x[0] + da[0], x[1] + da[1], x[2] + db[0], x[3] + db[1]])
+    }
+
+    /// The first open parameter the predicted step leaves its domain by, as the fraction of
+    /// the step that reaches the boundary and the (index, boundary value).
+    fn exit(&self, from: &[f64; 4], to: &[f64; 4]) -> Option<(f64, usize, f64)> {
+        let mut best: Option<(f64, usize, f64)> = None;
+        for (k, (i, closed)) in self.domains().into_iter().enumerate() {
+            if closed || (to[k] >= i.start && to[k] <= i.end) {
+                continue;
+            }
+            let bound = if to[k] < i.start { i.start } else { i.end };
+            let s = ((bound - from[k]) / (to[k] - from[k])).clamp(0.0, 1.0);
+            if best.is_none_or(|b| s < b.0) {
+                best = Some((s, k, bound));
+            }
+        }
+        best
+    }
+
+    /// One step of length about h from `p` (see the module documentation).
+    pub fn step(&self, p: &MarchPoint, mut h: f64) -> StepEnd {
+        for _ in 0..MAX_HALVINGS {
+            let Some(mut to) = self.predict(&p.x, &(p.tangent * h)) else { return StepEnd::StepLimit };
+            let unwrapped = p.x;
+            let exit = self.exit(&unwrapped, &to);
+            let mut len = h;
+            if let Some((s, _, _)) = exit {
+                len = h * s;
+                to = std::array::from_fn(|k| unwrapped[k] + (to[k] - unwrapped[k]) * s);
+            }
+            let q = p.point + p.tangent * len;
+            let corrected = self.correct(to, &q, &p.tangent, exit.map(|(_, k, v)| (k, v)));
+            let next = corrected.and_then(|x| self.point(x, &p.tangent));
+            let Some(next) = next else {
+                if corrected.is_some() {
+                    return StepEnd::Tangential;
+                }
+                h *= 0.5;
+                continue;
+            };
+            let turn = 2.0 * ((next.tangent - p.tangent).norm() / 2.0).min(1.0).asin();
+            let forward = (next.point - p.point).dot(&p.tangent) > 0.0 || len == 0.0;
+            if turn > MAX_TURN || len * turn / 8.0 > self.chord || !forward {
+                h *= 0.5;
+                continue;
+            }
+            if exit.is_some() {
+                return StepEnd::Boundary(next);
+            }
+            let grow = if len * turn / 8.0 < 0.25 * self.chord { (1.5 * h).min(self.max_step) } else { h };
+            return StepEnd::Inside(next, grow);
+        }
+        StepEnd::StepLimit
+    }
+}

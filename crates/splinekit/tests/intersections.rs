@@ -1,0 +1,203 @@
+//! Curve–surface (and surface–surface) intersections against closed forms: every reported
+//! point lies on both shapes, and every root of an independent one-variable equation is
+//! found.
+
+mod common;
+use common::*;
+use splinekit::Point;
+use splinekit::basis::Side;
+use splinekit::curve::model::Line;
+use splinekit::curve::{Curve, Interval};
+use splinekit::query::{IntersectionKind, intersect_curve_surface};
+use splinekit::surface::Surface;
+use splinekit::surface::model::{Cylinder, Sphere};
+
+/// A helix about the x axis: (a·t − l, r cos t, r sin t), t ∈ [0, 6π].
+struct XHelix {
+    a: f64,
+    l: f64,
+    r: f64,
+}
+
+impl Curve<3> for XHelix {
+    fn domain(&self) -> Interval {
+        Interval::new(0.0, 6.0 * std::f64::consts::PI)
+    }
+    fn eval_side(&self, t: f64, _side: Side, out: &mut [Point<3>]) {
+        for (k, o) in out.iter_mut().enumerate() {
+            let x = match k {
+                0 => self.a * t - self.l,
+                1 => self.a,
+                _ => 0.0,
+            };
+            // The k-th derivative of cos t is cos(t + kπ/2).
+            let phase = t + k as f64 * std::f64::consts::FRAC_PI_2;
+            *o = p3(x, self.r * phase.cos(), self.r * phase.sin());
+        }
+    }
+}
+
+/// Roots of g on [a, b] by sampling and bisection.
+fn roots(g: impl Fn(f64) -> f64, a: f64, b: f64, n: usize) -> Vec<f64> {
+    let mut out = Vec::new();
+    for i in 0..n {
+        let (mut lo, mut hi) = (a + (b - a) * i as f64 / n as f64, a + (b - a) * (i + 1) as f64 / n as f64);
+        if g(lo).signum() == g(hi).signum() {
+            continue;
+        }
+        for _ in 0..200 {
+            let m = 0.5 * (lo + hi);
+            if g(m).signum() == g(lo).signum() { lo = m } else { hi = m }
+        }
+        out.push(0.5 * (lo + hi));
+    }
+    out
+}
+
+#[test]
+fn lines_pierce_a_sphere_where_the_quadratic_says() {
+    let sphere = Sphere::new(1.5).unwrap();
+    for k in 0..12 {
+        let f = k as f64;
+        let from = p3(-3.0 + 0.1 * f, -2.0 + 0.3 * (f * 1.7).sin(), 0.2 * f - 1.0);
+        let to = p3(2.5, 2.0 * (f * 0.9).cos(), 1.0 - 0.15 * f);
+        let line = Line::new(from, to).unwrap();
+        let d = to - from;
+        // |from + t d|² = r²: a t² + b t + c = 0.
+        let (a, b, c) = (d.dot(&d), 2.0 * from.dot(&d), from.dot(&from) - 2.25);
+        let disc = b * b - 4.0 * a * c;
+        let expected: Vec<f64> = if disc > 0.0 {
+            [(-b - disc.sqrt()) / (2.0 * a), (-b + disc.sqrt()) / (2.0 * a)]
+                .into_iter()
+                .filter(|t| (0.0..=1.0).contains(t))
+                .collect()
+        } else {
+            vec![]
+        };
+        let found = intersect_curve_surface(&line, &sphere, 1e-9).unwrap();
+        assert_eq!(found.len(), expected.len(), "line {k}: {found:?} vs {expected:?}");
+        for (p, t) in found.iter().zip(&expected) {
+            assert!((p.t - t).abs() < 1e-12, "line {k}: t {} vs {t}", p.t);
+            assert!((line.point(p.t) - sphere.point(p.u, p.v)).norm() < 1e-9);
+            assert_eq!(p.kind, IntersectionKind::Crossing);
+        }
+    }
+}
+
+#[test]
+fn a_helix_about_x_crosses_a_cylinder_about_z_at_every_root() {
+    let (rho, h) = (0.9, 2.0);
+    let cylinder = Cylinder::new(rho, h).unwrap();
+    let helix = XHelix { a: 0.05, l: 0.47, r: 1.0 };
+    let found = intersect_curve_surface(&helix, &cylinder, 1e-9).unwrap();
+    // On the cylinder's side: x² + y² = ρ² with 0 ≤ z ≤ h.
+    let g = |t: f64| {
+        let p = helix.point(t);
+        p.x * p.x + p.y * p.y - rho * rho
+    };
+    let expected: Vec<f64> = roots(g, 0.0, 6.0 * std::f64::consts::PI, 4000)
+        .into_iter()
+        .filter(|&t| (0.0..=h).contains(&helix.point(t).z))
+        .collect();
+    assert!(expected.len() >= 4, "the test needs crossings: {expected:?}");
+    assert_eq!(found.len(), expected.len(), "{found:?} vs {expected:?}");
+    for (p, t) in found.iter().zip(&expected) {
+        assert!((p.t - t).abs() < 1e-10, "t {} vs {t}", p.t);
+        assert!((helix.point(p.t) - cylinder.point(p.u, p.v)).norm() < 1e-9);
+    }
+}
+
+use splinekit::curve::{CircleFrame, NurbsCurve};
+use splinekit::query::{IntersectionBranch, intersect_surfaces};
+use splinekit::surface::derived::Extrusion;
+use splinekit::surface::model::{Plane, Torus};
+
+/// Checks that every point of every branch lies on both surfaces within `tol`, and that
+/// its parameters name it.
+fn on_both<A: Surface<3>, B: Surface<3>>(a: &A, b: &B, branches: &[IntersectionBranch], tol: f64) {
+    for br in branches {
+        assert_eq!(br.points.len(), br.params_a.len());
+        for ((p, pa), pb) in br.points.iter().zip(&br.params_a).zip(&br.params_b) {
+            assert!((a.point(pa[0], pa[1]) - p).norm() <= tol, "{p:?} is not on A");
+            assert!((b.point(pb[0], pb[1]) - p).norm() <= tol, "{p:?} is not on B");
+        }
+    }
+}
+
+#[test]
+fn a_plane_cuts_a_sphere_in_one_closed_circle() {
+    let sphere = Sphere::new(1.5).unwrap();
+    let plane = Plane::new(p3(-3.0, -3.0, 0.5), p3(6.0, 0.0, 0.0), p3(0.0, 6.0, 0.0)).unwrap();
+    let r = intersect_surfaces(&plane, &sphere, 1e-10, 1e-4).unwrap();
+    assert_eq!(r.len(), 1, "{} branches", r.len());
+    assert!(r[0].closed && r[0].early_stop.is_none() && r[0].points.len() > 20);
+    on_both(&plane, &sphere, &r, 1e-10);
+    let radius = 2.0f64.sqrt();
+    for p in &r[0].points {
+        assert!(((p.x * p.x + p.y * p.y).sqrt() - radius).abs() < 1e-9 && (p.z - 0.5).abs() < 1e-10, "{p:?}");
+    }
+    // The polyline's chords stay within the chord error of the circle: sagitta = l²/(8ρ).
+    for w in r[0].points.windows(2) {
+        assert!((w[1] - w[0]).norm_squared() / (8.0 * radius) <= 1e-4 * 1.01);
+    }
+}
+
+#[test]
+fn a_thin_cylinder_pierces_a_wide_one_in_two_loops() {
+    let wide = Cylinder::new(1.0, 3.0).unwrap();
+    let frame =
+        CircleFrame { center: p3(-2.0, 0.0, 1.5), x_axis: p3(0.0, 1.0, 0.0), y_axis: p3(0.0, 0.0, 1.0), radius: 0.7 };
+    let thin = Extrusion::new(Box::new(NurbsCurve::circle(&frame).unwrap()), p3(4.0, 0.0, 0.0)).unwrap();
+    let r = intersect_surfaces(&wide, &thin, 1e-10, 1e-4).unwrap();
+    assert_eq!(r.len(), 2, "{r:?}");
+    on_both(&wide, &thin, &r, 1e-10);
+    for br in &r {
+        assert!(
+            br.closed && br.early_stop.is_none(),
+            "{:?} {} {:?} {:?}",
+            br.early_stop,
+            br.closed,
+            br.params_b.first(),
+            br.params_b.last()
+        );
+        for p in &br.points {
+            assert!(
+                (p.x * p.x + p.y * p.y - 1.0).abs() < 1e-9 && (p.y * p.y + (p.z - 1.5).powi(2) - 0.49).abs() < 1e-9
+            );
+        }
+    }
+    assert!(r[0].points[0].x * r[1].points[0].x < 0.0, "one loop on each side");
+}
+
+#[test]
+fn the_bitangent_plane_cuts_a_torus_in_two_villarceau_circles() {
+    let (big, small) = (3.0, 1.0);
+    let torus = Torus::new(big, small).unwrap();
+    let slope = small / (big * big - small * small).sqrt();
+    let plane = Plane::new(p3(-5.0, -5.0, -5.0 * slope), p3(10.0, 0.0, 10.0 * slope), p3(0.0, 10.0, 0.0)).unwrap();
+    let r = intersect_surfaces(&plane, &torus, 1e-10, 1e-4).unwrap();
+    on_both(&plane, &torus, &r, 1e-10);
+    // Two circles of radius R about (0, ±r, 0) in the plane; they cross where the plane
+    // touches the torus, where marching stops.
+    let mut length = 0.0;
+    for br in &r {
+        for p in &br.points {
+            let d = |c: f64| (p - p3(0.0, c, 0.0)).norm() - big;
+            assert!(d(small).abs().min(d(-small).abs()) < 1e-9, "{p:?} is on neither circle");
+        }
+        length += br.points.windows(2).map(|w| (w[1] - w[0]).norm()).sum::<f64>();
+    }
+    let full = 2.0 * 2.0 * std::f64::consts::PI * big;
+    assert!(length > 0.98 * full && length < 1.001 * full, "traced {length} of {full}");
+}
+
+#[test]
+fn coincident_shapes_are_refused_quickly() {
+    let cylinder = Cylinder::new(1.0, 1.0).unwrap();
+    let helix = splinekit::curve::model::Helix::new(1.0, 0.2, 2.0).unwrap();
+    let e = intersect_curve_surface(&helix, &cylinder, 1e-9).unwrap_err().to_string();
+    assert!(e.contains("runs inside the surface"), "{e}");
+    let torus = Torus::new(3.0, 1.0).unwrap();
+    let e = intersect_surfaces(&torus, &torus, 1e-9, 1e-4).unwrap_err().to_string();
+    assert!(e.contains("coincide over a region"), "{e}");
+}
