@@ -148,7 +148,13 @@ fn axes(bounds: ([f32; 3], [f32; 3]), out: &mut RenderScene) {
 /// The scene's camera, or one fitted to the bounds (from the top for plane figures).
 fn camera(scene: &SceneDocument, bounds: ([f32; 3], [f32; 3]), flat: bool, aspect: f32) -> Camera {
     match &scene.camera {
-        Some(CameraDoc::LookAt { eye, target, up, fov }) => Camera::Perspective {
+        Some(CameraDoc::LookAt { eye, target, up, half_height: Some(h), .. }) => Camera::Orthographic {
+            eye: eye.map(|x| x as f32),
+            target: target.map(|x| x as f32),
+            up: up.map(|x| x as f32),
+            half_height: *h as f32,
+        },
+        Some(CameraDoc::LookAt { eye, target, up, fov, half_height: None }) => Camera::Perspective {
             eye: eye.map(|x| x as f32),
             target: target.map(|x| x as f32),
             up: up.map(|x| x as f32),
@@ -214,7 +220,7 @@ fn control_net(net: &[Vec<Vec<f64>>], out: &mut RenderScene) {
     }
 }
 
-/// The local curves of a blending spline in their own colours, with their origins.
+/// The local curves of a blending spline in their own colours, with their (moved) origins.
 fn local_curves(d: &BlendingSplineDoc, style: &StyleDoc, out: &mut RenderScene) -> Result<(), DocumentError> {
     macro_rules! draw {
         ($dim:literal) => {{
@@ -236,7 +242,9 @@ fn local_curves(d: &BlendingSplineDoc, style: &StyleDoc, out: &mut RenderScene) 
                     color: local_color(k, n),
                     width: style.line_width * 0.6,
                 });
-                out.points.push(PointItem { position: f32x3(to3(&c.origin(k))), color: local_color(k, n), size: 7.0 });
+                // The frame origin where the local's transform moved it.
+                let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
+                out.points.push(PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 });
             }
         }};
     }
