@@ -14,6 +14,8 @@
 //!   as the format applies it (scale, rotate, translate about the origin,
 //!   [`transform_edit`]).
 //! - Ctrl+S writes an ordinary scene document with the view's camera.
+//! - [`live`] keeps a blending spline sampled and on the GPU, re-evaluating and uploading
+//!   only the ranges a moved piece affects (benchmarked in `benches/live.rs`).
 //!
 //! Everything but [`app`] and [`gpu`] runs without a window and is unit-tested.
 
@@ -28,6 +30,7 @@ pub mod gpu;
 pub mod handles;
 pub mod history;
 pub mod keys;
+pub mod live;
 pub mod options;
 pub mod panels;
 pub mod report;

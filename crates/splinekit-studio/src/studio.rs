@@ -12,9 +12,16 @@ use crate::clock::Clock;
 use crate::document;
 use crate::edit::{Edit, EditError};
 use crate::gesture::{Gesture, GestureKind};
-use crate::handles::{Handle, handles};
+use crate::handles::{Handle, HandleKind, handles};
 use crate::history::History;
 use crate::view_camera::{Projector, ViewCamera};
+
+/// The scene as last composed, and what it was composed from.
+struct Composed {
+    scene: SceneDocument,
+    time: Option<f64>,
+    composed: RenderScene,
+}
 
 /// How close (pixels) the cursor must be to a handle to grab it.
 pub const PICK_RADIUS: f64 = 10.0;
@@ -49,6 +56,8 @@ pub struct Studio {
     pub field_error: Option<(String, String)>,
     /// The bounds of the scene as last drawn.
     pub bounds: Option<([f32; 3], [f32; 3])>,
+    /// The last composition.
+    cache: Option<Composed>,
 }
 
 impl Studio {
@@ -69,6 +78,7 @@ impl Studio {
             handles: Vec::new(),
             field_error: None,
             bounds: None,
+            cache: None,
         }
     }
 
@@ -142,7 +152,7 @@ impl Studio {
     /// the hovered and selected handles drawn larger.
     pub fn render_scene(&mut self, size: (u32, u32), overlays: bool) -> Result<RenderScene, String> {
         let aspect = size.0.max(1) as f32 / size.1.max(1) as f32;
-        let mut rs = compose(&self.scene, self.time(), aspect).map_err(|e| e.to_string())?;
+        let mut rs = self.composed(aspect)?;
         let camera = self.camera.get_or_insert_with(|| {
             ViewCamera::new(rs.camera.unwrap_or_else(|| {
                 splinekit_render::Camera::fit(rs.bounds().unwrap_or(([-1.0; 3], [1.0; 3])), 0.9, 0.5, aspect)
@@ -150,8 +160,12 @@ impl Studio {
         });
         rs.camera = Some(camera.camera);
         self.bounds = rs.bounds();
-        self.handles = handles(&self.scene, self.time()).map_err(|e| e.to_string())?;
         if overlays {
+            // Patch origins and control points, which the renderer does not mark.
+            for h in self.handles.iter().filter(|h| !matches!(h.kind, HandleKind::LocalCurve(_))) {
+                let position = h.position.map(|x| x as f32);
+                rs.points.push(PointItem { position, color: [0.15, 0.15, 0.15, 1.0], size: 7.0 });
+            }
             for (h, color, size) in
                 [(&self.selected, [1.0, 0.55, 0.0, 1.0], 14.0), (&self.hovered, [1.0, 0.85, 0.1, 1.0], 12.0)]
             {
@@ -162,6 +176,34 @@ impl Studio {
             }
         }
         Ok(rs)
+    }
+
+    /// The scene composed at the current time, with its visible handles; recomposed only
+    /// when the document or the time changed since the last frame (hovering and orbiting
+    /// reuse it).
+    fn composed(&mut self, aspect: f32) -> Result<RenderScene, String> {
+        let time = self.time();
+        if let Some(c) = &self.cache
+            && c.scene == self.scene
+            && c.time == time
+        {
+            return Ok(c.composed.clone());
+        }
+        let composed = compose(&self.scene, time, aspect).map_err(|e| e.to_string())?;
+        self.handles = self.visible_handles()?;
+        self.cache = Some(Composed { scene: self.scene.clone(), time, composed: composed.clone() });
+        Ok(composed)
+    }
+
+    /// The handles the view shows and picks: local pieces of objects drawn with
+    /// `local_pieces`, control points of objects drawn with `control_net`.
+    fn visible_handles(&self) -> Result<Vec<Handle>, String> {
+        let all = handles(&self.scene, self.time()).map_err(|e| e.to_string())?;
+        let shown = |h: &Handle| {
+            let style = &self.scene.objects[h.object].style;
+            if h.kind.is_local() { style.local_pieces } else { style.control_net }
+        };
+        Ok(all.into_iter().filter(shown).collect())
     }
 
     /// Frames the selected handle (a box a quarter of the scene's size around it), else
@@ -220,7 +262,8 @@ impl Studio {
         self.gesture = None;
         self.history.close();
         if let Some(sel) = &self.selected {
-            self.selected = handles(&self.scene, self.time())
+            self.selected = self
+                .visible_handles()
                 .ok()
                 .and_then(|hs| hs.into_iter().find(|h| h.object == sel.object && h.kind == sel.kind));
         }

@@ -106,6 +106,12 @@ fn mouse(
         }
     }
     if response.drag_stopped() {
+        // The button may come up in a frame with more motion: finish where it was released.
+        if studio.gesture.is_some()
+            && let Some(p) = ui.input(|i| i.pointer.latest_pos())
+        {
+            studio.drag_to(projector, to_px(p));
+        }
         studio.end_drag();
     }
     if response.clicked() {
