@@ -14,9 +14,9 @@ pub fn animation_panel(ui: &mut egui::Ui, studio: &mut Studio) {
         if ui.button(label).clicked() {
             studio.clock.playing = !studio.clock.playing;
         }
-        ui.label("speed");
-        ui.add(egui::DragValue::new(&mut studio.clock.speed).range(0.0..=10.0).speed(0.02));
-        ui.label("time");
-        ui.add(egui::Slider::new(&mut studio.clock.time, 0.0..=duration).suffix(" s"));
+        let speed = ui.label("speed");
+        ui.add(egui::DragValue::new(&mut studio.clock.speed).range(0.0..=10.0).speed(0.02)).labelled_by(speed.id);
+        let time = ui.label("time");
+        ui.add(egui::Slider::new(&mut studio.clock.time, 0.0..=duration).suffix(" s")).labelled_by(time.id);
     });
 }

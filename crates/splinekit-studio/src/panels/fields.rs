@@ -39,8 +39,8 @@ pub fn toggle(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointer: &s
 pub fn count(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointer: &str, label: &str, default: u64) {
     let mut n = read(studio, object, pointer).and_then(|v| v.as_u64()).unwrap_or(default);
     let changed = ui.horizontal(|ui| {
-        ui.label(label);
-        ui.add(egui::DragValue::new(&mut n).range(0..=4096).speed(0.1)).changed()
+        let name = ui.label(label);
+        ui.add(egui::DragValue::new(&mut n).range(0..=4096).speed(0.1)).labelled_by(name.id).changed()
     });
     if changed.inner {
         write(studio, object, pointer, Some(n.into()));
@@ -52,8 +52,8 @@ pub fn count(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointer: &st
 pub fn number(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointer: &str, label: &str, default: f64) {
     let mut x = read(studio, object, pointer).and_then(|v| v.as_f64()).unwrap_or(default);
     let changed = ui.horizontal(|ui| {
-        ui.label(label);
-        ui.add(egui::DragValue::new(&mut x).speed(0.01)).changed()
+        let name = ui.label(label);
+        ui.add(egui::DragValue::new(&mut x).speed(0.01)).labelled_by(name.id).changed()
     });
     if changed.inner {
         write(studio, object, pointer, Some(x.into()));

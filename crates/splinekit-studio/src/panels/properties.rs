@@ -1,10 +1,13 @@
 //! Properties of the selected object, applied at once: style toggles, sample density and
 //! line width; the degree of B-splines and NURBS; for blending splines the number of local
-//! pieces, the degree of Bézier locals, open/closed and the B-function with its parameters
+//! pieces, their kind (Bézier of a degree, sub-curve/surface, arc), knot spacing,
+//! open/closed and the B-function with its parameters
 //! (and a plot of B and B′); the numbers of the selected handle for exact entry.
 
 use serde_json::{Value, json};
+use splinekit::curve::Curve;
 use splinekit_scene::bfunctions::BFunctionDoc;
+use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument};
 
 use super::fields::{count, error_label, number, read, toggle, write};
 use super::plot::bfunction_plot;
@@ -56,34 +59,91 @@ fn style(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
 fn blending_curve(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
     if read(studio, object, "/shape/model").is_some() {
         count(ui, studio, object, "/shape/local_curves", "local curves", 10);
-        local_degree(ui, studio, object);
+        local_kind(ui, studio, object, false);
     }
-    toggle(ui, studio, object, "/shape/closed", "closed", true);
+    let closed = is_closed(studio, object);
+    toggle(ui, studio, object, "/shape/closed", "closed", closed);
     bfunction(ui, studio, object);
 }
 
 fn blending_surface(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
     count(ui, studio, object, "/shape/local_surfaces/0", "patches in u", 4);
     count(ui, studio, object, "/shape/local_surfaces/1", "patches in v", 4);
-    local_degree(ui, studio, object);
+    local_kind(ui, studio, object, true);
+    toggle(ui, studio, object, "/shape/closed_u", "closed in u", true);
+    toggle(ui, studio, object, "/shape/closed_v", "closed in v", true);
     bfunction(ui, studio, object);
 }
 
-/// The degree of Bézier locals (made from the model).
-fn local_degree(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
-    let local = read(studio, object, "/shape/local");
-    let bezier = local.as_ref().is_none_or(|l| l.get("type").and_then(Value::as_str) == Some("bezier"));
-    if bezier {
-        let current = local.as_ref().and_then(|l| l.get("degree")).and_then(Value::as_u64).unwrap_or(3);
-        let mut d = current;
-        let changed = ui.horizontal(|ui| {
-            ui.label("Bézier locals of degree");
-            ui.add(egui::DragValue::new(&mut d).range(1..=12).speed(0.1)).changed()
-        });
-        if changed.inner && d != current {
-            write(studio, object, "/shape/local", Some(json!({"type": "bezier", "degree": d})));
+/// The kind of locals made from the model (Bézier of a degree, the model itself, arcs for
+/// curves) and, for curves, the knot spacing.
+fn local_kind(ui: &mut egui::Ui, studio: &mut Studio, object: usize, surface: bool) {
+    let local = read(studio, object, "/shape/local").unwrap_or_else(|| json!({"type": "bezier"}));
+    let kind = local.get("type").and_then(Value::as_str).unwrap_or("bezier").to_string();
+    let kinds: &[&str] = if surface { &["bezier", "sub_surface"] } else { &["bezier", "sub_curve", "arc"] };
+    let mut chosen = kind.clone();
+    egui::ComboBox::from_label("locals").selected_text(&chosen).show_ui(ui, |ui| {
+        for k in kinds {
+            ui.selectable_value(&mut chosen, k.to_string(), *k);
         }
-        error_label(ui, studio, "/shape/local");
+    });
+    if chosen != kind {
+        write(studio, object, "/shape/local", Some(json!({"type": chosen})));
+    }
+    error_label(ui, studio, "/shape/local");
+    if kind == "bezier" {
+        bezier_degree(ui, studio, object, &local, surface);
+    }
+    if !surface {
+        let spacing = read(studio, object, "/shape/knot_spacing").and_then(|v| v.as_str().map(String::from));
+        let current = spacing.unwrap_or_else(|| "uniform".into());
+        let mut chosen = current.clone();
+        egui::ComboBox::from_label("knots").selected_text(&chosen).show_ui(ui, |ui| {
+            for k in ["uniform", "chord_length"] {
+                ui.selectable_value(&mut chosen, k.to_string(), k);
+            }
+        });
+        if chosen != current {
+            write(studio, object, "/shape/knot_spacing", Some(chosen.into()));
+        }
+        error_label(ui, studio, "/shape/knot_spacing");
+    }
+}
+
+/// Whether the object's curve is closed as built (the default of `closed`: the model's).
+fn is_closed(studio: &Studio, object: usize) -> bool {
+    struct Closed;
+    impl DimensionVisitor<Curves> for Closed {
+        type Output = bool;
+        fn visit<const D: usize>(self, c: &dyn Curve<D>) -> bool {
+            c.is_closed()
+        }
+    }
+    match &studio.scene.objects[object].shape {
+        ShapeDocument::Curve(c) => c.build().is_ok_and(|c| c.visit(Closed)),
+        ShapeDocument::Surface(_) => false,
+    }
+}
+
+/// The degree of Bézier locals (d, or [d_u, d_v] for patches), written as the whole
+/// `local` object so that a document without one gets `"type": "bezier"` too.
+fn bezier_degree(ui: &mut egui::Ui, studio: &mut Studio, object: usize, local: &Value, surface: bool) {
+    let degree = local.get("degree");
+    let mut d: Vec<u64> = if surface {
+        degree.and_then(|d| serde_json::from_value(d.clone()).ok()).unwrap_or_else(|| vec![3, 3])
+    } else {
+        vec![degree.and_then(Value::as_u64).unwrap_or(3)]
+    };
+    let mut changed = false;
+    ui.horizontal(|ui| {
+        let name = ui.label("Bézier degree");
+        for x in d.iter_mut() {
+            changed |= ui.add(egui::DragValue::new(x).range(1..=12).speed(0.1)).labelled_by(name.id).changed();
+        }
+    });
+    if changed {
+        let degree = if surface { json!(d) } else { json!(d[0]) };
+        write(studio, object, "/shape/local", Some(json!({"type": "bezier", "degree": degree})));
     }
 }
 
@@ -133,10 +193,10 @@ fn selected_handle(ui: &mut egui::Ui, studio: &mut Studio) {
     let mut values: Vec<f64> =
         read(studio, h.object, &coords).and_then(|v| serde_json::from_value(v).ok()).unwrap_or_else(|| vec![0.0; n]);
     let mut changed = false;
-    ui.label(if h.kind.is_local() { "translate" } else { "point" });
+    let name = ui.label(if h.kind.is_local() { "translate" } else { "point" });
     ui.horizontal_wrapped(|ui| {
         for x in values.iter_mut() {
-            changed |= ui.add(egui::DragValue::new(x).speed(0.01).max_decimals(3)).changed();
+            changed |= ui.add(egui::DragValue::new(x).speed(0.01).max_decimals(3)).labelled_by(name.id).changed();
         }
     });
     if changed {
