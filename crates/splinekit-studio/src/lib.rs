@@ -15,7 +15,7 @@
 //!   [`transform_edit`]).
 //! - Ctrl+S writes an ordinary scene document with the view's camera.
 //! - [`live`] keeps a blending spline sampled and on the GPU, re-evaluating and uploading
-//!   only the ranges a moved piece affects (benchmarked in `benches/live.rs`).
+//!   only the ranges a moved piece affects (benchmarked in `benches/live.rs`, `--features bench`).
 //!
 //! Everything but [`app`] and [`gpu`] runs without a window and is unit-tested.
 

@@ -10,7 +10,7 @@ pub fn animation_panel(ui: &mut egui::Ui, studio: &mut Studio) {
             ui.label("no animation in this scene");
             return;
         }
-        let label = if studio.clock.playing { "⏸ pause" } else { "▶ play" };
+        let label = if studio.clock.playing { "Pause" } else { "Play" };
         if ui.button(label).clicked() {
             studio.clock.playing = !studio.clock.playing;
         }
