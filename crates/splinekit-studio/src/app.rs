@@ -15,7 +15,7 @@ use winit::window::{Window, WindowId};
 use crate::gpu::Gpu;
 use crate::keys::{Command, shortcuts};
 use crate::options::Options;
-use crate::panels::{MenuAction, SIDE_WIDTH, animation_panel, menu_bar, objects_panel, properties_panel};
+use crate::panels::{FileFields, MenuAction, SIDE_WIDTH, animation_panel, menu_bar, objects_panel, properties_panel};
 use crate::report::handle_report;
 use crate::studio::Studio;
 use crate::view_camera::Projector;
@@ -37,7 +37,7 @@ pub struct App {
     overlay: bool,
     timings: (f64, f64),
     last_frame: Instant,
-    open_path: String,
+    files: FileFields,
     last_report: String,
     /// Close after the frame being drawn.
     quitting: bool,
@@ -50,7 +50,8 @@ pub struct App {
 impl App {
     /// The window on `studio`, not yet open.
     pub fn new(studio: Studio, options: Options) -> Self {
-        let open_path = studio.path.as_ref().map(|p| p.display().to_string()).unwrap_or_default();
+        let open = studio.path.as_ref().map(|p| p.display().to_string()).unwrap_or_default();
+        let files = FileFields { open, export: "shape.obj".into() };
         App {
             studio,
             options,
@@ -64,7 +65,7 @@ impl App {
             overlay: false,
             timings: (0.0, 0.0),
             last_frame: Instant::now(),
-            open_path,
+            files,
             last_report: String::new(),
             window_image: None,
             quitting: false,
@@ -143,7 +144,7 @@ impl App {
     fn panels(&mut self, ui: &mut egui::Ui) -> Vec<Command> {
         let mut out: Vec<Command> = shortcuts(ui.ctx());
         egui::Panel::top("menu").show(ui, |ui| {
-            if let Some(a) = menu_bar(ui, &mut self.open_path, &mut self.overlay) {
+            if let Some(a) = menu_bar(ui, &mut self.files, &mut self.overlay) {
                 out.push(Command::Menu(a));
             }
         });
@@ -228,6 +229,7 @@ impl App {
         match command {
             Command::Menu(MenuAction::Open(path)) => studio.open(PathBuf::from(path)),
             Command::Menu(MenuAction::Save) => studio.save(),
+            Command::Menu(MenuAction::Export(path)) => studio.export_selected(&PathBuf::from(path)),
             Command::Menu(MenuAction::Undo) => studio.undo(),
             Command::Menu(MenuAction::Redo) => studio.redo(),
             Command::Menu(MenuAction::Look(v)) => studio.camera.iter_mut().for_each(|c| c.look_from(v)),

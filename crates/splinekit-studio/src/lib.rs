@@ -25,6 +25,7 @@ pub mod app;
 pub mod clock;
 pub mod document;
 pub mod edit;
+pub mod export;
 pub mod gesture;
 pub mod gpu;
 pub mod handles;

@@ -147,6 +147,18 @@ impl Studio {
         self.path = Some(path);
     }
 
+    /// Writes the selected object as a mesh file (format by extension, see [`crate::export`]).
+    pub fn export_selected(&mut self, path: &std::path::Path) {
+        let Some(object) = self.selected_object.and_then(|i| self.scene.objects.get(i)) else {
+            self.message = Some("export: select an object first".into());
+            return;
+        };
+        let written = crate::export::export(object, self.time(), path).and_then(|bytes| {
+            std::fs::write(path, bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
+        });
+        self.message = Some(written.map_or_else(|e| e, |()| format!("exported {}", path.display())));
+    }
+
     /// The scene as the 3-D view draws it at `size` pixels: composed as `splinekit render`
     /// composes it, with the view camera (fitted on the first frame); with `overlays`,
     /// the hovered and selected handles drawn larger.

@@ -10,6 +10,8 @@ pub enum MenuAction {
     Open(String),
     /// Save (Ctrl+S).
     Save,
+    /// Export the selected object to this mesh file.
+    Export(String),
     /// Undo (Ctrl+Z).
     Undo,
     /// Redo (Ctrl+Shift+Z).
@@ -26,16 +28,30 @@ pub enum MenuAction {
     Quit,
 }
 
-/// The menu bar; `open_path` is the text of File → Open's path field, `overlay` the
-/// frame-time overlay toggle.
-pub fn menu_bar(ui: &mut egui::Ui, open_path: &mut String, overlay: &mut bool) -> Option<MenuAction> {
+/// The text fields of the File menu.
+#[derive(Debug, Clone, Default)]
+pub struct FileFields {
+    /// File → Open's path.
+    pub open: String,
+    /// File → Export's path (its extension picks the format).
+    pub export: String,
+}
+
+/// The menu bar; `files` holds File's path fields, `overlay` the frame-time overlay toggle.
+pub fn menu_bar(ui: &mut egui::Ui, files: &mut FileFields, overlay: &mut bool) -> Option<MenuAction> {
     let mut action = None;
     egui::MenuBar::new().ui(ui, |ui| {
         ui.menu_button("File", |ui| {
             ui.label("Open a scene or shape document:");
-            let field = ui.text_edit_singleline(open_path);
+            let field = ui.text_edit_singleline(&mut files.open);
             if ui.button("Open").clicked() || field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
-                action = Some(MenuAction::Open(open_path.clone()));
+                action = Some(MenuAction::Open(files.open.clone()));
+            }
+            ui.separator();
+            ui.label("Export the selected object (.obj .stl .stla .ply .gltf .glb):");
+            ui.text_edit_singleline(&mut files.export);
+            if ui.button("Export").clicked() {
+                action = Some(MenuAction::Export(files.export.clone()));
             }
             ui.separator();
             for (label, a) in [

@@ -11,7 +11,7 @@ mod plot;
 mod properties;
 
 pub use animation::animation_panel;
-pub use menu::{MenuAction, menu_bar};
+pub use menu::{FileFields, MenuAction, menu_bar};
 pub use objects::objects_panel;
 pub use properties::properties_panel;
 
