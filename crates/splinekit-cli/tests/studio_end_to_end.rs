@@ -43,6 +43,20 @@ fn wait_for_json(path: &Path, ready: impl Fn(&Value) -> bool, what: &str) -> Val
     }
 }
 
+/// The handle report once the layout has settled (the same for half a second).
+fn settled_report(path: &Path) -> Value {
+    let has_handles = |v: &Value| v["handles"].as_array().is_some_and(|h| !h.is_empty());
+    let mut last = wait_for_json(path, has_handles, "handles");
+    loop {
+        std::thread::sleep(Duration::from_millis(500));
+        let now = wait_for_json(path, has_handles, "handles");
+        if now == last {
+            return now;
+        }
+        last = now;
+    }
+}
+
 /// The window pixel position of local curve `k` in a handle report.
 fn handle(report: &Value, k: usize) -> (f64, f64) {
     let h = report["handles"]
@@ -84,8 +98,7 @@ fn drag_and_save(dir: &Path, doc: &Path) -> ((f64, f64), (f64, f64)) {
     let path = |name: &str| dir.join(name).to_str().expect("a UTF-8 path").to_string();
     let (view, whole) = (path("window.png"), path("studio.png"));
     let child = studio(doc, dir, "before.json", &["--screenshot", &view, "--window-screenshot", &whole]);
-    let report =
-        wait_for_json(&dir.join("before.json"), |v| v["handles"].as_array().is_some_and(|h| !h.is_empty()), "handles");
+    let report = settled_report(&dir.join("before.json"));
     let window = xdotool(&["search", "--sync", "--name", "splinekit studio"]);
     let window = window.lines().next().expect("a window").to_string();
     // No window manager under Xvfb: give the window the keyboard.
