@@ -48,6 +48,10 @@ pub struct StyleDoc {
     /// Hide the shape itself (e.g. to show only its control net or local pieces).
     #[serde(default)]
     pub hidden: bool,
+    /// Turn the colour's hue once per run of the animation clock (the seed's HSV colour
+    /// cycling of the beating heart); without a time, the colour as given.
+    #[serde(default, skip_serializing_if = "crate::defaults::is_false")]
+    pub color_cycle: bool,
 }
 
 impl StyleDoc {
@@ -84,6 +88,7 @@ impl Default for StyleDoc {
             color_map: None,
             density: None,
             hidden: false,
+            color_cycle: false,
         }
     }
 }

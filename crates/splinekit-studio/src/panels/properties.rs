@@ -45,6 +45,7 @@ fn style(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
     toggle(ui, studio, object, "/control_net", "control polygon / net", false);
     toggle(ui, studio, object, "/local_pieces", "local curves / patches", false);
     toggle(ui, studio, object, "/wireframe", "parameter lines", false);
+    toggle(ui, studio, object, "/color_cycle", "colour cycling (animation)", false);
     let density = read(studio, object, "/density").and_then(|v| v.as_u64());
     let mut adaptive = density.is_none();
     if ui.checkbox(&mut adaptive, "adaptive sampling").changed() {
