@@ -5,7 +5,9 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use splinekit::Point;
+use splinekit::curve::CurveSamples;
 use splinekit::frame::Affine;
+use splinekit::surface::SurfaceGridSamples;
 use splinekit_scene::{Decoration, ShapeDocument};
 use splinekit_studio::live::{LiveCurve, LiveSurface};
 
@@ -45,5 +47,36 @@ fn bench(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, bench);
+/// The kernel's part alone: set the frame and refresh the samples, no packing or upload.
+fn kernel_only(c: &mut Criterion) {
+    let torus = shape(r#"{"type":"blending_spline_surface","model":{"type":"torus"},"local_surfaces":[8,8]}"#);
+    let ShapeDocument::Surface(s) = &torus else { panic!("a surface") };
+    let Decoration::LocalPatches(d) = s.decoration() else { panic!("a blending-spline surface") };
+    let mut surface = d.surface::<3>().expect("builds");
+    let mut samples = SurfaceGridSamples::uniform(&surface, 256, 256).expect("samples");
+    let mut lift = 0.0;
+    c.bench_function("torus 8x8 bicubic, 256x256 with normals: move one patch, refresh only", |b| {
+        b.iter(|| {
+            lift = if lift == 0.0 { 0.3 } else { 0.0 };
+            let rects = surface.set_transform(3, 4, Affine::translation(Point::<3>::new(0.0, 0.0, lift)));
+            samples.refresh(&surface, &rects)
+        })
+    });
+    let heart = shape(
+        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":10,"local":{"type":"bezier","degree":2}}"#,
+    );
+    let ShapeDocument::Curve(cd) = &heart else { panic!("a curve") };
+    let Decoration::LocalCurves(d) = cd.decoration() else { panic!("a blending spline") };
+    let mut curve = d.curve::<3>().expect("builds");
+    let mut samples = CurveSamples::uniform(&curve, 2000, 0).expect("samples");
+    c.bench_function("heart, 10 quadratic locals, 2000 samples: move one local, refresh only", |b| {
+        b.iter(|| {
+            lift = if lift == 0.0 { 0.5 } else { 0.0 };
+            let ranges = curve.set_transform(2, Affine::translation(Point::<3>::new(lift, 0.0, 0.0)));
+            samples.refresh(&curve, &ranges)
+        })
+    });
+}
+
+criterion_group!(benches, bench, kernel_only);
 criterion_main!(benches);

@@ -39,6 +39,8 @@ pub struct App {
     last_frame: Instant,
     files: FileFields,
     last_report: String,
+    /// Each frame's work (panels, scene, present) and scene drawing time in ms.
+    frame_log: Vec<(f64, f64)>,
     /// Close after the frame being drawn.
     quitting: bool,
     /// The whole window as last painted (with `--window-screenshot`).
@@ -69,6 +71,7 @@ impl App {
             last_report: String::new(),
             window_image: None,
             quitting: false,
+            frame_log: Vec::new(),
             error: None,
         }
     }
@@ -119,6 +122,7 @@ impl App {
             }
         }
         self.timings = (self.last_frame.elapsed().as_secs_f64() * 1e3, scene_ms);
+        self.frame_log.push((start.elapsed().as_secs_f64() * 1e3, scene_ms));
         self.last_frame = start;
         self.after_frame(event_loop, &window, repaint_now);
     }
@@ -212,13 +216,20 @@ impl App {
         Ok(path)
     }
 
-    /// On closing: `--screenshot` (the 3-D view) and `--window-screenshot` (the window).
+    /// On closing: `--screenshot` (the 3-D view), `--window-screenshot` (the window) and
+    /// `--report-frame-times`.
     fn final_screenshots(&mut self) -> Result<(), String> {
         if self.options.screenshot.is_some() {
             self.screenshot()?;
         }
         if let (Some(path), Some(image)) = (&self.options.window_screenshot, &self.window_image) {
             image.save_png(path).map_err(|e| format!("--window-screenshot: cannot write {}: {e}", path.display()))?;
+        }
+        if let Some(path) = &self.options.report_frame_times {
+            let (work, scene): (Vec<f64>, Vec<f64>) = self.frame_log.iter().copied().unzip();
+            let text = serde_json::json!({"work_ms": work, "scene_ms": scene}).to_string();
+            std::fs::write(path, text)
+                .map_err(|e| format!("--report-frame-times: cannot write {}: {e}", path.display()))?;
         }
         Ok(())
     }

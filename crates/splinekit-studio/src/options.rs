@@ -17,6 +17,9 @@ pub struct Options {
     pub window_screenshot: Option<PathBuf>,
     /// The window's inner size in pixels (default: the scene's size plus the panels).
     pub window_size: Option<(u32, u32)>,
+    /// Write each frame's time (ms: whole frame's work, of it the 3-D view's composition and
+    /// drawing) as JSON here when closing.
+    pub report_frame_times: Option<PathBuf>,
     /// Write the handles' window pixel positions here as JSON after every frame that moves
     /// them (for end-to-end tests that drive the mouse).
     pub report_handles: Option<PathBuf>,

@@ -27,6 +27,9 @@ pub struct ViewArgs {
     /// Write the handles' window pixel positions as JSON to this file.
     #[arg(long)]
     pub report_handles: Option<String>,
+    /// Write each frame's time in milliseconds as JSON to this file when closing.
+    #[arg(long)]
+    pub report_frame_times: Option<String>,
 }
 
 pub fn run(args: &ViewArgs) -> Result<()> {
@@ -60,6 +63,7 @@ pub fn run(args: &ViewArgs) -> Result<()> {
         window_screenshot: args.window_screenshot.as_ref().map(PathBuf::from),
         window_size,
         report_handles: args.report_handles.as_ref().map(PathBuf::from),
+        report_frame_times: args.report_frame_times.as_ref().map(PathBuf::from),
     };
     splinekit_studio::run(options).map_err(|e| anyhow!(e))
 }
