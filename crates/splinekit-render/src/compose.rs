@@ -48,6 +48,10 @@ pub fn compose(scene: &SceneDocument, time: Option<f64>, aspect: f32) -> Result<
             .color
             .as_ref()
             .map_or(PALETTE[i % PALETTE.len()], |c| [c[0], c[1], c[2], *c.get(3).unwrap_or(&1.0)]);
+        let color = match time {
+            Some(t) if obj.style.color_cycle => hue_turned(color, (t / scene.animation.duration) as f32),
+            _ => color,
+        };
         flat &= object(obj, &format!("objects[{i}].shape"), time, color, &mut out)?;
         for p in &obj.points {
             out.points.push(PointItem { position: f32x3(*p), color, size: 8.0 });
@@ -148,7 +152,13 @@ fn axes(bounds: ([f32; 3], [f32; 3]), out: &mut RenderScene) {
 /// The scene's camera, or one fitted to the bounds (from the top for plane figures).
 fn camera(scene: &SceneDocument, bounds: ([f32; 3], [f32; 3]), flat: bool, aspect: f32) -> Camera {
     match &scene.camera {
-        Some(CameraDoc::LookAt { eye, target, up, fov }) => Camera::Perspective {
+        Some(CameraDoc::LookAt { eye, target, up, half_height: Some(h), .. }) => Camera::Orthographic {
+            eye: eye.map(|x| x as f32),
+            target: target.map(|x| x as f32),
+            up: up.map(|x| x as f32),
+            half_height: *h as f32,
+        },
+        Some(CameraDoc::LookAt { eye, target, up, fov, half_height: None }) => Camera::Perspective {
             eye: eye.map(|x| x as f32),
             target: target.map(|x| x as f32),
             up: up.map(|x| x as f32),
@@ -214,7 +224,7 @@ fn control_net(net: &[Vec<Vec<f64>>], out: &mut RenderScene) {
     }
 }
 
-/// The local curves of a blending spline in their own colours, with their origins.
+/// The local curves of a blending spline in their own colours, with their (moved) origins.
 fn local_curves(d: &BlendingSplineDoc, style: &StyleDoc, out: &mut RenderScene) -> Result<(), DocumentError> {
     macro_rules! draw {
         ($dim:literal) => {{
@@ -236,7 +246,9 @@ fn local_curves(d: &BlendingSplineDoc, style: &StyleDoc, out: &mut RenderScene) 
                     color: local_color(k, n),
                     width: style.line_width * 0.6,
                 });
-                out.points.push(PointItem { position: f32x3(to3(&c.origin(k))), color: local_color(k, n), size: 7.0 });
+                // The frame origin where the local's transform moved it.
+                let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
+                out.points.push(PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 });
             }
         }};
     }
@@ -356,6 +368,34 @@ impl DimensionVisitor<Surfaces> for SurfaceMesh<'_> {
     }
 }
 
+/// The colour with its HSV hue turned by `turns` full turns (saturation, value and alpha
+/// kept).
+fn hue_turned(c: [f32; 4], turns: f32) -> [f32; 4] {
+    let (max, min) = (c[0].max(c[1]).max(c[2]), c[0].min(c[1]).min(c[2]));
+    let chroma = max - min;
+    if chroma <= 0.0 {
+        return c;
+    }
+    let sector = if max == c[0] {
+        ((c[1] - c[2]) / chroma).rem_euclid(6.0)
+    } else if max == c[1] {
+        (c[2] - c[0]) / chroma + 2.0
+    } else {
+        (c[0] - c[1]) / chroma + 4.0
+    };
+    let h = (sector + 6.0 * turns).rem_euclid(6.0);
+    let x = chroma * (1.0 - (h % 2.0 - 1.0).abs());
+    let (r, g, b) = match h as u32 {
+        0 => (chroma, x, 0.0),
+        1 => (x, chroma, 0.0),
+        2 => (0.0, chroma, x),
+        3 => (0.0, x, chroma),
+        4 => (x, 0.0, chroma),
+        _ => (chroma, 0.0, x),
+    };
+    [r + min, g + min, b + min, c[3]]
+}
+
 /// Blue (−1) – white (0) – red (+1).
 fn diverging(x: f32) -> [f32; 4] {
     let x = x.clamp(-1.0, 1.0);
@@ -375,4 +415,19 @@ fn sequential(x: f32) -> [f32; 4] {
     let t = f - i as f32;
     let (a, b) = (stops[i], stops[i + 1]);
     [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t, 1.0]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::hue_turned;
+
+    #[test]
+    fn a_third_of_a_turn_takes_red_to_green_and_a_whole_turn_back() {
+        let red = [0.9, 0.1, 0.1, 1.0];
+        let g = hue_turned(red, 1.0 / 3.0);
+        assert!((g[0] - 0.1).abs() < 1e-5 && (g[1] - 0.9).abs() < 1e-5 && (g[2] - 0.1).abs() < 1e-5, "{g:?}");
+        let back = hue_turned(red, 1.0);
+        assert!(back.iter().zip(red).all(|(a, b)| (a - b).abs() < 1e-5), "{back:?}");
+        assert_eq!(hue_turned([0.5, 0.5, 0.5, 1.0], 0.3), [0.5, 0.5, 0.5, 1.0], "greys have no hue");
+    }
 }

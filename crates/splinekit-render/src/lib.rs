@@ -19,5 +19,5 @@ pub use camera::Camera;
 pub use compose::compose;
 pub use gltf_export::scene_to_gltf;
 pub use image::{Image, write_gif};
-pub use renderer::{RenderError, Renderer};
+pub use renderer::{RenderError, RenderTarget, Renderer};
 pub use scene::{LineItem, MeshItem, PointItem, RenderScene};

@@ -3,7 +3,6 @@
 
 use wgpu::util::DeviceExt;
 
-use crate::camera::Camera;
 use crate::image::Image;
 use crate::scene::{RenderScene, srgb_to_linear};
 
@@ -59,15 +58,29 @@ struct Geometry {
     points: Option<(wgpu::Buffer, u32)>,
 }
 
-/// The frame's textures: multisampled colour and depth, the resolved image, and the
-/// buffer it is copied into for reading (rows padded to 256 bytes).
-struct Targets {
+/// The textures a frame is drawn into: multisampled colour and depth, the resolved image
+/// (sRGB; a window can copy it into an `Rgba8Unorm` texture to show the bytes), and the
+/// buffer it is copied into for reading (rows padded to 256 bytes). Made by
+/// [`Renderer::target`]; reused frame after frame while the size stays.
+pub struct RenderTarget {
     size: wgpu::Extent3d,
     msaa: wgpu::Texture,
     depth: wgpu::Texture,
     resolved: wgpu::Texture,
     readback: wgpu::Buffer,
     padded_row: u32,
+}
+
+impl RenderTarget {
+    /// Width and height in pixels.
+    pub fn size(&self) -> (u32, u32) {
+        (self.size.width, self.size.height)
+    }
+
+    /// The resolved image: `Rgba8UnormSrgb`, usable as a copy source and texture binding.
+    pub fn resolved(&self) -> &wgpu::Texture {
+        &self.resolved
+    }
 }
 
 fn linear(c: [f32; 4]) -> [f32; 4] {
@@ -105,21 +118,7 @@ impl Renderer {
             .request_device(&wgpu::DeviceDescriptor::default())
             .await
             .map_err(|e| RenderError::Device(e.to_string()))?;
-        let bind_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: None,
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX | wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            }],
-        });
-        let pipelines = Pipelines::new(&device, &bind_layout);
-        Ok(Renderer { device, queue, pipelines, bind_layout, adapter_name })
+        Ok(Self::from_device(device, queue, adapter_name))
     }
 
     /// The adapter in use, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (Gl)".
@@ -127,14 +126,37 @@ impl Renderer {
         &self.adapter_name
     }
 
-    /// Renders the scene into a `width` × `height` image: uploads the scene's uniforms and
-    /// geometry, draws it into multisampled targets, and reads the resolved image back.
+    /// A renderer on a device made elsewhere (e.g. by a window that presents to a surface
+    /// of the same adapter); `adapter_name` describes it.
+    pub fn from_device(device: wgpu::Device, queue: wgpu::Queue, adapter_name: String) -> Self {
+        let bind_layout = bind_layout(&device);
+        let pipelines = Pipelines::new(&device, &bind_layout);
+        Renderer { device, queue, pipelines, bind_layout, adapter_name }
+    }
+
+    /// The device the renderer draws with.
+    pub fn device(&self) -> &wgpu::Device {
+        &self.device
+    }
+
+    /// The queue the renderer submits to.
+    pub fn queue(&self) -> &wgpu::Queue {
+        &self.queue
+    }
+
+    /// Renders the scene into a `width` × `height` image: [`Self::target`], [`Self::draw`],
+    /// [`Self::read`].
     pub fn render(&self, scene: &RenderScene, width: u32, height: u32) -> Result<Image, RenderError> {
-        if !(1..=MAX_SIDE).contains(&width) || !(1..=MAX_SIDE).contains(&height) {
-            return Err(RenderError::Invalid(format!(
-                "--size: each side must be between 1 and {MAX_SIDE} pixels, got {width}x{height}"
-            )));
-        }
+        let targets = self.target(width, height)?;
+        self.draw(scene, &targets);
+        self.read(&targets)
+    }
+
+    /// Draws the scene into the target: uploads the scene's uniforms and geometry and runs
+    /// one render pass into the multisampled textures, resolved into
+    /// [`RenderTarget::resolved`].
+    pub fn draw(&self, scene: &RenderScene, targets: &RenderTarget) {
+        let (width, height) = targets.size();
         let uniform = self.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: None,
             contents: bytes(&globals(scene, width, height)),
@@ -146,9 +168,14 @@ impl Renderer {
             entries: &[wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() }],
         });
         let geometry = self.upload(scene);
-        let targets = self.targets(width, height);
         let mut encoder = self.device.create_command_encoder(&Default::default());
-        self.draw(&mut encoder, &targets, &bind, &geometry, scene);
+        self.pass(&mut encoder, targets, &bind, &geometry, scene);
+        self.queue.submit([encoder.finish()]);
+    }
+
+    /// Copies the target's resolved image to the CPU.
+    pub fn read(&self, targets: &RenderTarget) -> Result<Image, RenderError> {
+        let mut encoder = self.device.create_command_encoder(&Default::default());
         encoder.copy_texture_to_buffer(
             wgpu::TexelCopyTextureInfo {
                 texture: &targets.resolved,
@@ -161,13 +188,13 @@ impl Renderer {
                 layout: wgpu::TexelCopyBufferLayout {
                     offset: 0,
                     bytes_per_row: Some(targets.padded_row),
-                    rows_per_image: Some(height),
+                    rows_per_image: Some(targets.size.height),
                 },
             },
             targets.size,
         );
         self.queue.submit([encoder.finish()]);
-        self.read_back(&targets)
+        self.read_back(targets)
     }
 
     /// Uploads the meshes, the lines as instanced segments and the points as instanced
@@ -219,8 +246,14 @@ impl Renderer {
         Geometry { meshes, lines: instances(&segments, 12), points: instances(&points, 8) }
     }
 
-    /// The textures and read-back buffer of a `width` × `height` frame.
-    fn targets(&self, width: u32, height: u32) -> Targets {
+    /// The textures and read-back buffer of a `width` × `height` frame; each side in
+    /// 1..=[`MAX_SIDE`].
+    pub fn target(&self, width: u32, height: u32) -> Result<RenderTarget, RenderError> {
+        if !(1..=MAX_SIDE).contains(&width) || !(1..=MAX_SIDE).contains(&height) {
+            return Err(RenderError::Invalid(format!(
+                "--size: each side must be between 1 and {MAX_SIDE} pixels, got {width}x{height}"
+            )));
+        }
         let size = wgpu::Extent3d { width, height, depth_or_array_layers: 1 };
         let texture = |samples: u32, format: wgpu::TextureFormat, usage: wgpu::TextureUsages| {
             self.device.create_texture(&wgpu::TextureDescriptor {
@@ -235,11 +268,14 @@ impl Renderer {
             })
         };
         let padded_row = (4 * width).div_ceil(256) * 256;
-        Targets {
+        let shown = wgpu::TextureUsages::RENDER_ATTACHMENT
+            | wgpu::TextureUsages::COPY_SRC
+            | wgpu::TextureUsages::TEXTURE_BINDING;
+        Ok(RenderTarget {
             size,
             msaa: texture(SAMPLES, COLOR_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT),
             depth: texture(SAMPLES, DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT),
-            resolved: texture(1, COLOR_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC),
+            resolved: texture(1, COLOR_FORMAT, shown),
             readback: self.device.create_buffer(&wgpu::BufferDescriptor {
                 label: None,
                 size: padded_row as u64 * height as u64,
@@ -247,14 +283,14 @@ impl Renderer {
                 mapped_at_creation: false,
             }),
             padded_row,
-        }
+        })
     }
 
     /// One render pass: clear to the background, then meshes, lines and points.
-    fn draw(
+    fn pass(
         &self,
         encoder: &mut wgpu::CommandEncoder,
-        targets: &Targets,
+        targets: &RenderTarget,
         bind: &wgpu::BindGroup,
         geometry: &Geometry,
         scene: &RenderScene,
@@ -309,7 +345,7 @@ impl Renderer {
     }
 
     /// Waits for the frame and copies the resolved image out of the padded read-back buffer.
-    fn read_back(&self, targets: &Targets) -> Result<Image, RenderError> {
+    fn read_back(&self, targets: &RenderTarget) -> Result<Image, RenderError> {
         let (width, height) = (targets.size.width, targets.size.height);
         let slice = targets.readback.slice(..);
         let (tx, rx) = std::sync::mpsc::channel();
@@ -332,22 +368,27 @@ impl Renderer {
     }
 }
 
+/// The layout of the one uniform block, seen by vertex and fragment stages.
+fn bind_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: None,
+        entries: &[wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::VERTEX | wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        }],
+    })
+}
+
 /// The uniform block: view-projection matrix, eye, viewport, lights and ambient light (see
 /// `shaders.wgsl`), with the camera fitted to the scene when it has none.
 fn globals(scene: &RenderScene, width: u32, height: u32) -> [f32; 36] {
-    let aspect = width as f32 / height as f32;
-    let bounds = scene.bounds().unwrap_or(([-1.0; 3], [1.0; 3]));
-    let camera = scene.camera.unwrap_or_else(|| Camera::fit(bounds, 0.9, 0.5, aspect));
-    let (lo, hi) = bounds;
-    let centre = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0, (lo[2] + hi[2]) / 2.0];
-    let eye = camera.eye();
-    let to_centre = ((eye[0] - centre[0]).powi(2) + (eye[1] - centre[1]).powi(2) + (eye[2] - centre[2]).powi(2)).sqrt();
-    let radius = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2) + (hi[2] - lo[2]).powi(2)).sqrt() / 2.0;
-    let target = match camera {
-        Camera::Perspective { target, .. } | Camera::Orthographic { target, .. } => target,
-    };
-    let to_target = ((eye[0] - target[0]).powi(2) + (eye[1] - target[1]).powi(2) + (eye[2] - target[2]).powi(2)).sqrt();
-    let view_proj = camera.view_projection(aspect, radius + (to_centre - to_target).abs());
+    let (view_proj, eye) = scene.view_projection(width, height);
     let mut globals = [0.0f32; 36];
     for c in 0..4 {
         globals[4 * c..4 * c + 4].copy_from_slice(&view_proj[c]);

@@ -80,6 +80,26 @@ impl Default for RenderScene {
 }
 
 impl RenderScene {
+    /// The camera's projection × view matrix (column-major) for a `width` × `height`
+    /// image, with the depth range fitted to the scene's bounding sphere, and the eye
+    /// position: what the renderer draws with, and what picking projects with.
+    pub fn view_projection(&self, width: u32, height: u32) -> ([[f32; 4]; 4], [f32; 3]) {
+        let aspect = width as f32 / height as f32;
+        let bounds = self.bounds().unwrap_or(([-1.0; 3], [1.0; 3]));
+        let camera = self.camera.unwrap_or_else(|| Camera::fit(bounds, 0.9, 0.5, aspect));
+        let (lo, hi) = bounds;
+        let centre = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0, (lo[2] + hi[2]) / 2.0];
+        let eye = camera.eye();
+        let distance =
+            |p: [f32; 3]| ((eye[0] - p[0]).powi(2) + (eye[1] - p[1]).powi(2) + (eye[2] - p[2]).powi(2)).sqrt();
+        let radius = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2) + (hi[2] - lo[2]).powi(2)).sqrt() / 2.0;
+        let target = match camera {
+            Camera::Perspective { target, .. } | Camera::Orthographic { target, .. } => target,
+        };
+        let depth_radius = radius + (distance(centre) - distance(target)).abs();
+        (camera.view_projection(aspect, depth_radius), eye)
+    }
+
     /// The axis-aligned bounds of everything in the scene; `None` when empty.
     pub fn bounds(&self) -> Option<([f32; 3], [f32; 3])> {
         let all = self

@@ -48,6 +48,10 @@ pub struct StyleDoc {
     /// Hide the shape itself (e.g. to show only its control net or local pieces).
     #[serde(default)]
     pub hidden: bool,
+    /// Turn the colour's hue once per run of the animation clock (the seed's HSV colour
+    /// cycling of the beating heart); without a time, the colour as given.
+    #[serde(default, skip_serializing_if = "crate::defaults::is_false")]
+    pub color_cycle: bool,
 }
 
 impl StyleDoc {
@@ -84,6 +88,7 @@ impl Default for StyleDoc {
             color_map: None,
             density: None,
             hidden: false,
+            color_cycle: false,
         }
     }
 }
@@ -112,7 +117,7 @@ pub struct SceneObject {
 
 impl SceneObject {
     /// Parses an object: its `shape`, its `points`, and the other fields as its style.
-    fn parse(value: Value) -> Result<Self> {
+    pub fn from_value(value: Value) -> Result<Self> {
         let Value::Object(mut style) = value else {
             return Err(DocumentError::new("", format!("expected an object with a \"shape\", got {}", kind(&value))));
         };
@@ -138,9 +143,28 @@ impl SceneObject {
     }
 }
 
+impl SceneObject {
+    /// `{"shape": {…}, …style…, "points": […]}`, as [`SceneObject`] parses it.
+    pub fn to_value(&self) -> Value {
+        let mut doc = match serde_json::to_value(&self.style) {
+            Ok(Value::Object(m)) => m,
+            _ => serde_json::Map::new(),
+        };
+        let shape = match &self.shape {
+            ShapeDocument::Curve(c) => c.to_value(),
+            ShapeDocument::Surface(s) => s.to_value(),
+        };
+        doc.insert("shape".into(), shape);
+        if !self.points.is_empty() {
+            doc.insert("points".into(), serde_json::json!(self.points));
+        }
+        Value::Object(doc)
+    }
+}
+
 impl<'de> Deserialize<'de> for SceneObject {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
-        nested(deserializer, SceneObject::parse)
+        nested(deserializer, SceneObject::from_value)
     }
 }
 
@@ -160,6 +184,9 @@ pub enum CameraDoc {
         /// Vertical field of view in degrees (default 30).
         #[serde(default = "thirty")]
         fov: f64,
+        /// Orthographic instead: half the visible height in world units (`fov` unused).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        half_height: Option<f64>,
     },
     /// Fitted to the scene, from a direction in degrees (`top: true`: orthographic from +z).
     Orbit {
@@ -331,13 +358,18 @@ impl SceneDocument {
                 format!("duration must be in (0, 600] seconds and fps in (0, 100], got {} and {}", a.duration, a.fps),
             ));
         }
-        if let Some(CameraDoc::LookAt { eye, target, up, fov }) = &self.camera {
+        if let Some(CameraDoc::LookAt { eye, target, up, fov, half_height }) = &self.camera {
             let finite = eye.iter().chain(target).chain(up).all(|x| x.is_finite());
             if !finite || eye == target || !(*fov > 1.0 && *fov < 170.0) {
                 return Err(DocumentError::new(
                     "camera",
                     "eye, target and up must be finite, eye ≠ target, fov in (1, 170) degrees",
                 ));
+            }
+            if let Some(h) = half_height
+                && !(h.is_finite() && *h > 0.0)
+            {
+                return Err(DocumentError::new("camera.half_height", format!("must be finite and > 0, got {h}")));
             }
         }
         Ok(())
@@ -356,6 +388,28 @@ impl SceneDocument {
         }
     }
 
+    /// The scene as a JSON document that [`SceneDocument::from_value`] reads back to an
+    /// equal scene: each object's shape under `shape`, its style fields and `points` beside it.
+    pub fn to_value(&self) -> Value {
+        let objects: Vec<Value> = self.objects.iter().map(SceneObject::to_value).collect();
+        let mut doc = serde_json::Map::new();
+        doc.insert("type".into(), "scene".into());
+        doc.insert("objects".into(), objects.into());
+        if let Some(c) = &self.camera {
+            doc.insert("camera".into(), serde_json::to_value(c).unwrap_or(Value::Null));
+        }
+        if !self.lights.is_empty() {
+            doc.insert("lights".into(), serde_json::to_value(&self.lights).unwrap_or(Value::Null));
+        }
+        doc.insert("background".into(), serde_json::json!(self.background));
+        doc.insert("size".into(), serde_json::json!(self.size));
+        if self.axes {
+            doc.insert("axes".into(), true.into());
+        }
+        doc.insert("animation".into(), serde_json::to_value(&self.animation).unwrap_or(Value::Null));
+        Value::Object(doc)
+    }
+
     /// Whether any object carries an animation.
     pub fn is_animated(&self) -> bool {
         self.objects.iter().any(|o| {
@@ -365,6 +419,23 @@ impl SceneDocument {
             };
             contains_key(&v, "animation")
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_gallery_scene_reads_back_from_its_own_json() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/scenes");
+        for entry in std::fs::read_dir(dir).expect("the gallery") {
+            let path = entry.expect("an entry").path();
+            let text = std::fs::read_to_string(&path).expect("readable");
+            let scene = SceneOrShape::from_json(&text).expect("a valid scene").into_scene();
+            let again = SceneDocument::from_value(scene.to_value()).expect("its JSON parses");
+            assert_eq!(again, scene, "{}", path.display());
+        }
     }
 }
 

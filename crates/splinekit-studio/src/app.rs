@@ -1,0 +1,307 @@
+//! The window: winit events in, egui panels and the 3-D view out. Each redraw runs the
+//! panels (which edit the [`Studio`]), composes and draws the scene into the view's
+//! target, paints egui over the window surface and presents it.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::Instant;
+
+use winit::application::ApplicationHandler;
+use winit::dpi::PhysicalSize;
+use winit::event::WindowEvent;
+use winit::event_loop::ActiveEventLoop;
+use winit::window::{Window, WindowId};
+
+use crate::gpu::Gpu;
+use crate::keys::{Command, shortcuts};
+use crate::options::Options;
+use crate::panels::{FileFields, MenuAction, SIDE_WIDTH, animation_panel, menu_bar, objects_panel, properties_panel};
+use crate::report::handle_report;
+use crate::studio::Studio;
+use crate::view_camera::Projector;
+use crate::viewport::{ViewFrame, ViewInput, view};
+
+/// The running window.
+pub struct App {
+    /// The studio's state.
+    pub studio: Studio,
+    options: Options,
+    window: Option<Arc<Window>>,
+    gpu: Option<Gpu>,
+    egui: egui::Context,
+    egui_state: Option<egui_winit::State>,
+    projector: Option<Projector>,
+    view: ViewFrame,
+    frames: usize,
+    /// Frame-time overlay on, and the last frame's timings (ms): whole frame, scene.
+    overlay: bool,
+    timings: (f64, f64),
+    last_frame: Instant,
+    files: FileFields,
+    last_report: String,
+    /// Each frame's work (panels, scene, present) and scene drawing time in ms.
+    frame_log: Vec<(f64, f64)>,
+    /// Close after the frame being drawn.
+    quitting: bool,
+    /// The whole window as last painted (with `--window-screenshot`).
+    window_image: Option<splinekit_render::Image>,
+    /// The first error that ended the event loop.
+    pub error: Option<String>,
+}
+
+impl App {
+    /// The window on `studio`, not yet open.
+    pub fn new(studio: Studio, options: Options) -> Self {
+        let open = studio.path.as_ref().map(|p| p.display().to_string()).unwrap_or_default();
+        let files = FileFields { open, export: "shape.obj".into() };
+        App {
+            studio,
+            options,
+            window: None,
+            gpu: None,
+            egui: egui::Context::default(),
+            egui_state: None,
+            projector: None,
+            view: ViewFrame::default(),
+            frames: 0,
+            overlay: false,
+            timings: (0.0, 0.0),
+            last_frame: Instant::now(),
+            files,
+            last_report: String::new(),
+            window_image: None,
+            quitting: false,
+            frame_log: Vec::new(),
+            error: None,
+        }
+    }
+
+    fn fail(&mut self, event_loop: &ActiveEventLoop, e: impl ToString) {
+        self.error.get_or_insert(e.to_string());
+        event_loop.exit();
+    }
+
+    /// The inner size: `--window-size`, else the scene's size plus the side panels.
+    fn initial_size(&self) -> PhysicalSize<u32> {
+        let (w, h) = self
+            .options
+            .window_size
+            .unwrap_or((self.studio.scene.size[0] + 2 * SIDE_WIDTH as u32 + 30, self.studio.scene.size[1] + 90));
+        PhysicalSize::new(w, h)
+    }
+
+    /// One frame: panels, scene, present; then the scripted exits and the handle report.
+    fn redraw(&mut self, event_loop: &ActiveEventLoop) {
+        let (Some(window), Some(_)) = (self.window.clone(), self.gpu.as_ref()) else { return };
+        let start = Instant::now();
+        self.studio.clock.tick(self.studio.scene.animation.duration);
+        let raw = match self.egui_state.as_mut() {
+            Some(s) => s.take_egui_input(&window),
+            None => return,
+        };
+        let mut commands = Vec::new();
+        let output = self.egui.clone().run_ui(raw, |ui| commands.extend(self.panels(ui)));
+        if let Some(s) = self.egui_state.as_mut() {
+            s.handle_platform_output(&window, output.platform_output.clone());
+        }
+        for c in commands {
+            self.command(c);
+        }
+        let scene_start = Instant::now();
+        if let Err(e) = self.draw_view() {
+            self.studio.message = Some(e);
+        }
+        let scene_ms = scene_start.elapsed().as_secs_f64() * 1e3;
+        let ppp = self.egui.pixels_per_point();
+        let repaint_now = output.viewport_output.values().any(|v| v.repaint_delay.is_zero());
+        let capture = self.options.window_screenshot.is_some();
+        if let Some(gpu) = self.gpu.as_mut() {
+            match gpu.present(&self.egui, output, ppp, capture) {
+                Ok(image) => self.window_image = image.or(self.window_image.take()),
+                Err(e) => return self.fail(event_loop, e),
+            }
+        }
+        self.timings = (self.last_frame.elapsed().as_secs_f64() * 1e3, scene_ms);
+        self.frame_log.push((start.elapsed().as_secs_f64() * 1e3, scene_ms));
+        self.last_frame = start;
+        self.after_frame(event_loop, &window, repaint_now);
+    }
+
+    /// Counts the frame, writes the handle report, and closes after `--frames`.
+    fn after_frame(&mut self, event_loop: &ActiveEventLoop, window: &Window, repaint_now: bool) {
+        self.frames += 1;
+        self.write_report();
+        if self.quitting || self.options.frames.is_some_and(|n| self.frames >= n) {
+            if let Err(e) = self.final_screenshots() {
+                self.error.get_or_insert(e);
+            }
+            event_loop.exit();
+            return;
+        }
+        let playing = self.studio.clock.playing && self.studio.scene.is_animated();
+        if playing || repaint_now || self.options.frames.is_some() || self.overlay || self.projector.is_none() {
+            window.request_redraw();
+        }
+    }
+
+    /// The panels around the view; returns the commands asked for by menu and keys.
+    fn panels(&mut self, ui: &mut egui::Ui) -> Vec<Command> {
+        let mut out: Vec<Command> = shortcuts(ui.ctx());
+        egui::Panel::top("menu").show(ui, |ui| {
+            if let Some(a) = menu_bar(ui, &mut self.files, &mut self.overlay) {
+                out.push(Command::Menu(a));
+            }
+        });
+        egui::Panel::bottom("status").exact_size(56.0).resizable(false).show(ui, |ui| {
+            animation_panel(ui, &mut self.studio);
+            let text = self.studio.message.clone().unwrap_or_else(|| "ready".into());
+            ui.label(text);
+        });
+        egui::Panel::left("objects").exact_size(SIDE_WIDTH).resizable(false).show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| objects_panel(ui, &mut self.studio));
+        });
+        egui::Panel::right("properties").exact_size(SIDE_WIDTH).resizable(false).show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| properties_panel(ui, &mut self.studio));
+        });
+        egui::CentralPanel::no_frame().show(ui, |ui| {
+            if let Some(e) = self.studio.load_error.clone() {
+                ui.colored_label(egui::Color32::from_rgb(200, 40, 40), format!("Cannot open the document:\n{e}"));
+                if ui.button("Dismiss").clicked() {
+                    self.studio.load_error = None;
+                }
+                return;
+            }
+            let overlay =
+                self.overlay.then(|| format!("frame {:.1} ms  scene {:.1} ms", self.timings.0, self.timings.1));
+            let texture = self.gpu.as_ref().and_then(Gpu::view_texture);
+            let input = ViewInput { texture, projector: self.projector.as_ref(), overlay };
+            self.view = view(ui, &mut self.studio, input);
+        });
+        out
+    }
+
+    /// Composes and draws the scene into the view at the view's size.
+    fn draw_view(&mut self) -> Result<(), String> {
+        let Some(gpu) = self.gpu.as_mut() else { return Ok(()) };
+        let size = (self.view.rect_px[2].max(1), self.view.rect_px[3].max(1));
+        let rs = self.studio.render_scene(size, true)?;
+        self.projector = Some(Projector::new(&rs, size));
+        gpu.draw_view(&rs, size).map_err(|e| e.to_string())?;
+        Ok(())
+    }
+
+    /// Writes `--report-handles` when the handles' positions changed.
+    fn write_report(&mut self) {
+        let (Some(path), Some(projector)) = (&self.options.report_handles, &self.projector) else { return };
+        let r = self.view.rect_px;
+        let text = handle_report(&self.studio.handles, projector, [r[0], r[1]], [r[2], r[3]]).to_string();
+        if text != self.last_report {
+            // Written whole to a temporary file, then renamed: a reader never sees half.
+            let tmp = path.with_extension("tmp");
+            if std::fs::write(&tmp, &text).and_then(|()| std::fs::rename(&tmp, path)).is_ok() {
+                self.last_report = text;
+            }
+        }
+    }
+
+    /// Saves the 3-D view (drawn without the hover and selection highlights) as PNG.
+    fn screenshot(&mut self) -> Result<PathBuf, String> {
+        let path = self.options.screenshot.clone().unwrap_or_else(|| PathBuf::from("studio-screenshot.png"));
+        let Some(gpu) = self.gpu.as_mut() else { return Err("no window".into()) };
+        let size = (self.view.rect_px[2].max(1), self.view.rect_px[3].max(1));
+        let rs = self.studio.render_scene(size, false)?;
+        gpu.draw_view(&rs, size).map_err(|e| e.to_string())?;
+        let image = gpu.read_view().map_err(|e| e.to_string())?.ok_or("nothing drawn yet")?;
+        image.save_png(&path).map_err(|e| format!("--screenshot: cannot write {}: {e}", path.display()))?;
+        Ok(path)
+    }
+
+    /// On closing: `--screenshot` (the 3-D view), `--window-screenshot` (the window) and
+    /// `--report-frame-times`.
+    fn final_screenshots(&mut self) -> Result<(), String> {
+        if self.options.screenshot.is_some() {
+            self.screenshot()?;
+        }
+        if let (Some(path), Some(image)) = (&self.options.window_screenshot, &self.window_image) {
+            image.save_png(path).map_err(|e| format!("--window-screenshot: cannot write {}: {e}", path.display()))?;
+        }
+        if let Some(path) = &self.options.report_frame_times {
+            let (work, scene): (Vec<f64>, Vec<f64>) = self.frame_log.iter().copied().unzip();
+            let text = serde_json::json!({"work_ms": work, "scene_ms": scene}).to_string();
+            std::fs::write(path, text)
+                .map_err(|e| format!("--report-frame-times: cannot write {}: {e}", path.display()))?;
+        }
+        Ok(())
+    }
+
+    /// Carries out a command of the menu or the keyboard.
+    fn command(&mut self, command: Command) {
+        let studio = &mut self.studio;
+        match command {
+            Command::Menu(MenuAction::Open(path)) => studio.open(PathBuf::from(path)),
+            Command::Menu(MenuAction::Save) => studio.save(),
+            Command::Menu(MenuAction::Export(path)) => studio.export_selected(&PathBuf::from(path)),
+            Command::Menu(MenuAction::Undo) => studio.undo(),
+            Command::Menu(MenuAction::Redo) => studio.redo(),
+            Command::Menu(MenuAction::Look(v)) => studio.camera.iter_mut().for_each(|c| c.look_from(v)),
+            Command::Menu(MenuAction::Home) => studio.camera.iter_mut().for_each(|c| c.camera = c.home),
+            Command::Menu(MenuAction::Frame) => studio.frame_selection(),
+            Command::Menu(MenuAction::Screenshot) => {
+                let done = self.screenshot();
+                self.studio.message = Some(done.map_or_else(|e| e, |p| format!("screenshot {}", p.display())));
+            }
+            // Closed after this frame is painted, so that its screenshots show it.
+            Command::Menu(MenuAction::Quit) | Command::Quit => self.quitting = true,
+            Command::TogglePlay => studio.clock.playing = !studio.clock.playing,
+        }
+    }
+}
+
+impl ApplicationHandler for App {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.window.is_some() {
+            return;
+        }
+        let attrs = Window::default_attributes().with_title("splinekit studio").with_inner_size(self.initial_size());
+        let window = match event_loop.create_window(attrs) {
+            Ok(w) => Arc::new(w),
+            Err(e) => return self.fail(event_loop, format!("view: cannot open a window: {e}")),
+        };
+        match Gpu::new(window.clone(), event_loop.owned_display_handle()) {
+            Ok(gpu) => self.gpu = Some(gpu),
+            Err(e) => return self.fail(event_loop, e),
+        }
+        let id = egui::ViewportId::ROOT;
+        let scale = Some(window.scale_factor() as f32);
+        self.egui_state = Some(egui_winit::State::new(self.egui.clone(), id, &window, scale, None, None));
+        window.request_redraw();
+        self.window = Some(window);
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
+        let Some(window) = self.window.clone() else { return };
+        let response = self.egui_state.as_mut().map(|s| s.on_window_event(&window, &event));
+        match event {
+            WindowEvent::CloseRequested => {
+                self.quitting = true;
+                window.request_redraw();
+            }
+            WindowEvent::Resized(size) => {
+                if let Some(gpu) = self.gpu.as_mut() {
+                    gpu.resize(size.width, size.height);
+                }
+                window.request_redraw();
+            }
+            WindowEvent::DroppedFile(path) => {
+                self.studio.open(path);
+                window.request_redraw();
+            }
+            WindowEvent::RedrawRequested => self.redraw(event_loop),
+            _ => {
+                if response.is_some_and(|r| r.repaint) {
+                    window.request_redraw();
+                }
+            }
+        }
+    }
+}

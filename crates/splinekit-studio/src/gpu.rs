@@ -1,0 +1,271 @@
+//! The window's graphics: one wgpu device for the window surface, the scene renderer and
+//! egui. The 3-D view is drawn by [`splinekit_render::Renderer::draw`] into its own
+//! target (the same pipelines, 4× MSAA and sRGB image as `splinekit render`), copied into
+//! an `Rgba8Unorm` texture that egui shows (egui samples gamma-space bytes; GL has no
+//! sRGB-reinterpreting views), and read back from the target for screenshots.
+
+use std::sync::Arc;
+
+use splinekit_render::{Image, RenderScene, RenderTarget, Renderer};
+use winit::event_loop::OwnedDisplayHandle;
+use winit::window::Window;
+
+/// Why the window's graphics could not start.
+#[derive(Debug, thiserror::Error)]
+#[error("view: {0}")]
+pub struct GpuError(pub String);
+
+/// The surface, the renderers and the 3-D view's target.
+pub struct Gpu {
+    surface: wgpu::Surface<'static>,
+    config: wgpu::SurfaceConfiguration,
+    /// The scene renderer (owns the device and queue).
+    pub renderer: Renderer,
+    egui: egui_wgpu::Renderer,
+    view: Option<View>,
+}
+
+/// The 3-D view's target, the `Rgba8Unorm` copy egui samples, and its egui id.
+struct View {
+    target: RenderTarget,
+    shown: wgpu::Texture,
+    id: egui::TextureId,
+}
+
+impl Gpu {
+    /// Graphics for `window` on the first adapter that can present to it (Vulkan or GL;
+    /// GL on Mesa's llvmpipe without a GPU).
+    pub fn new(window: Arc<Window>, display: OwnedDisplayHandle) -> Result<Self, GpuError> {
+        let mut desc = wgpu::InstanceDescriptor::new_with_display_handle(Box::new(display));
+        desc.backends = wgpu::Backends::VULKAN | wgpu::Backends::GL;
+        desc.flags = wgpu::InstanceFlags::empty();
+        let instance = wgpu::Instance::new(desc);
+        let size = window.inner_size();
+        let surface = instance.create_surface(window).map_err(|e| GpuError(e.to_string()))?;
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            compatible_surface: Some(&surface),
+            force_fallback_adapter: false,
+            apply_limit_buckets: false,
+        }))
+        .map_err(|e| GpuError(format!("no graphics adapter can draw into the window ({e})")))?;
+        let name = format!("{} ({:?})", adapter.get_info().name, adapter.get_info().backend);
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))
+            .map_err(|e| GpuError(e.to_string()))?;
+        let mut config = surface
+            .get_default_config(&adapter, size.width.max(1), size.height.max(1))
+            .ok_or_else(|| GpuError("the window surface is not supported by the adapter".into()))?;
+        // egui blends in gamma space: a non-sRGB format of the surface's family.
+        config.format = config.format.remove_srgb_suffix();
+        config.present_mode = wgpu::PresentMode::AutoVsync;
+        surface.configure(&device, &config);
+        let egui = egui_wgpu::Renderer::new(&device, config.format, egui_wgpu::RendererOptions::default());
+        Ok(Gpu { surface, config, renderer: Renderer::from_device(device, queue, name), egui, view: None })
+    }
+
+    /// Follows a window resize.
+    pub fn resize(&mut self, width: u32, height: u32) {
+        if width > 0 && height > 0 && (width, height) != (self.config.width, self.config.height) {
+            self.config.width = width;
+            self.config.height = height;
+            self.surface.configure(self.renderer.device(), &self.config);
+        }
+    }
+
+    /// Draws the scene into the 3-D view's target (resized to `size`), copies it to the
+    /// texture egui shows, and returns that texture's id.
+    pub fn draw_view(&mut self, scene: &RenderScene, size: (u32, u32)) -> Result<egui::TextureId, GpuError> {
+        let max = splinekit_render::renderer::MAX_SIDE;
+        let size = (size.0.clamp(1, max), size.1.clamp(1, max));
+        if self.view.as_ref().is_none_or(|v| v.target.size() != size) {
+            self.view = Some(self.new_view(size)?);
+        }
+        let v = self.view.as_ref().expect("made above");
+        self.renderer.draw(scene, &v.target);
+        let mut encoder = self.renderer.device().create_command_encoder(&Default::default());
+        encoder.copy_texture_to_texture(
+            v.target.resolved().as_image_copy(),
+            v.shown.as_image_copy(),
+            wgpu::Extent3d { width: size.0, height: size.1, depth_or_array_layers: 1 },
+        );
+        self.renderer.queue().submit([encoder.finish()]);
+        Ok(v.id)
+    }
+
+    /// A view of `size` pixels, re-using the egui texture id of the last one.
+    fn new_view(&mut self, size: (u32, u32)) -> Result<View, GpuError> {
+        let target = self.renderer.target(size.0, size.1).map_err(|e| GpuError(e.to_string()))?;
+        let device = self.renderer.device();
+        let shown = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("3-D view"),
+            size: wgpu::Extent3d { width: size.0, height: size.1, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: wgpu::TextureFormat::Rgba8Unorm,
+            usage: wgpu::TextureUsages::COPY_DST | wgpu::TextureUsages::TEXTURE_BINDING,
+            view_formats: &[],
+        });
+        let view = shown.create_view(&Default::default());
+        let id = match &self.view {
+            Some(old) => {
+                self.egui.update_egui_texture_from_wgpu_texture(device, &view, wgpu::FilterMode::Nearest, old.id);
+                old.id
+            }
+            None => self.egui.register_native_texture(device, &view, wgpu::FilterMode::Nearest),
+        };
+        Ok(View { target, shown, id })
+    }
+
+    /// The texture of the 3-D view, once drawn.
+    pub fn view_texture(&self) -> Option<egui::TextureId> {
+        self.view.as_ref().map(|v| v.id)
+    }
+
+    /// Reads the 3-D view's last image back.
+    pub fn read_view(&self) -> Result<Option<Image>, GpuError> {
+        self.view.as_ref().map(|v| self.renderer.read(&v.target)).transpose().map_err(|e| GpuError(e.to_string()))
+    }
+
+    /// Paints egui's output over a clear window and presents it (texture changes are
+    /// applied even when the surface has no frame to give); with `capture`, returns the
+    /// whole window's image too.
+    pub fn present(
+        &mut self,
+        ctx: &egui::Context,
+        mut output: egui::FullOutput,
+        pixels_per_point: f32,
+        capture: bool,
+    ) -> Result<Option<Image>, GpuError> {
+        let (device, queue) = (self.renderer.device(), self.renderer.queue());
+        for (id, deltas) in output.textures_delta.set.drain() {
+            for delta in deltas {
+                self.egui.update_texture(device, queue, id, &delta);
+            }
+        }
+        let freed: Vec<egui::TextureId> = output.textures_delta.free.drain().collect();
+        let shapes = std::mem::take(&mut output.shapes);
+        let image = match self.frame() {
+            Some(frame) => self.paint(ctx, shapes, pixels_per_point, frame, capture)?,
+            None => None,
+        };
+        for id in &freed {
+            self.egui.free_texture(id);
+        }
+        Ok(image)
+    }
+
+    /// The surface's next texture; `None` (after reconfiguring if outdated) when there is
+    /// none this time.
+    fn frame(&self) -> Option<wgpu::SurfaceTexture> {
+        match self.surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(f) | wgpu::CurrentSurfaceTexture::Suboptimal(f) => Some(f),
+            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+                self.surface.configure(self.renderer.device(), &self.config);
+                None
+            }
+            _ => None,
+        }
+    }
+
+    /// Tessellates and paints egui's shapes into `frame` and presents it; with
+    /// `capture`, also into an offscreen texture that is read back (the whole window).
+    fn paint(
+        &mut self,
+        ctx: &egui::Context,
+        shapes: Vec<egui::epaint::ClippedShape>,
+        pixels_per_point: f32,
+        frame: wgpu::SurfaceTexture,
+        capture: bool,
+    ) -> Result<Option<Image>, GpuError> {
+        let jobs = ctx.tessellate(shapes, pixels_per_point);
+        let screen =
+            egui_wgpu::ScreenDescriptor { size_in_pixels: [self.config.width, self.config.height], pixels_per_point };
+        let view = frame.texture.create_view(&Default::default());
+        self.paint_into(&view, &jobs, &screen);
+        self.renderer.queue().present(frame);
+        if !capture {
+            return Ok(None);
+        }
+        let (w, h) = (self.config.width, self.config.height);
+        let texture = self.renderer.device().create_texture(&wgpu::TextureDescriptor {
+            label: Some("window capture"),
+            size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: self.config.format,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        });
+        self.paint_into(&texture.create_view(&Default::default()), &jobs, &screen);
+        read_texture(&self.renderer, &texture, self.config.format).map(Some)
+    }
+
+    /// One egui pass into `view`.
+    fn paint_into(
+        &mut self,
+        view: &wgpu::TextureView,
+        jobs: &[egui::ClippedPrimitive],
+        screen: &egui_wgpu::ScreenDescriptor,
+    ) {
+        let (device, queue) = (self.renderer.device(), self.renderer.queue());
+        let mut encoder = device.create_command_encoder(&Default::default());
+        let extra = self.egui.update_buffers(device, queue, &mut encoder, jobs, screen);
+        {
+            let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("egui"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                depth_stencil_attachment: None,
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            self.egui.render(&mut pass.forget_lifetime(), jobs, screen);
+        }
+        queue.submit(extra.into_iter().chain([encoder.finish()]));
+    }
+}
+
+/// Copies an RGBA or BGRA texture to the CPU as RGBA.
+fn read_texture(renderer: &Renderer, texture: &wgpu::Texture, format: wgpu::TextureFormat) -> Result<Image, GpuError> {
+    let (w, h) = (texture.width(), texture.height());
+    let padded = (4 * w).div_ceil(256) * 256;
+    let device = renderer.device();
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: u64::from(padded) * u64::from(h),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    encoder.copy_texture_to_buffer(
+        texture.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(padded), rows_per_image: Some(h) },
+        },
+        wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
+    );
+    renderer.queue().submit([encoder.finish()]);
+    let slice = buffer.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |_| {});
+    device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| GpuError(e.to_string()))?;
+    let data = slice.get_mapped_range().map_err(|e| GpuError(format!("{e:?}")))?;
+    let bgra = matches!(format, wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb);
+    let mut rgba = Vec::with_capacity((4 * w * h) as usize);
+    for row in 0..h as usize {
+        for px in data[row * padded as usize..row * padded as usize + 4 * w as usize].chunks_exact(4) {
+            rgba.extend_from_slice(&if bgra { [px[2], px[1], px[0], 255] } else { [px[0], px[1], px[2], 255] });
+        }
+    }
+    Ok(Image { width: w, height: h, rgba })
+}

@@ -1,0 +1,62 @@
+//! # splinekit-studio
+//!
+//! The interactive editor behind `splinekit view`: a winit window presenting through wgpu,
+//! egui panels (egui-winit, egui-wgpu) around a 3-D view drawn by the same
+//! [`splinekit_render::Renderer`] as `splinekit render` (same pipelines, MSAA, colours
+//! and cameras, so a screenshot of the view equals a render of the saved document).
+//!
+//! - Edits are commands on the scene document ([`edit::Edit`]): each sets one JSON value of
+//!   one object and is kept only if the object still parses and builds; [`history::History`]
+//!   undoes and redoes them, a drag being one step.
+//! - Handles ([`handles`]) sit at the moved origins o_k + t_k of blending-spline local
+//!   pieces and at control points; picking projects them with the renderer's view–projection
+//!   matrix ([`view_camera::Projector`]). Moving a local piece edits its `transforms` entry
+//!   as the format applies it (scale, rotate, translate about the origin,
+//!   [`transform_edit`]).
+//! - Ctrl+S writes an ordinary scene document with the view's camera.
+//! - [`live`] keeps a blending spline sampled and on the GPU, re-evaluating and uploading
+//!   only the ranges a moved piece affects (benchmarked in `benches/live.rs`, `--features bench`).
+//!
+//! Everything but [`app`] and [`gpu`] runs without a window and is unit-tested.
+
+#![warn(missing_docs)]
+
+pub mod app;
+pub mod clock;
+pub mod document;
+pub mod edit;
+pub mod export;
+pub mod gesture;
+pub mod gpu;
+pub mod handles;
+pub mod history;
+pub mod keys;
+pub mod live;
+pub mod options;
+pub mod panels;
+pub mod report;
+pub mod studio;
+pub mod transform_edit;
+pub mod view_camera;
+pub mod viewport;
+
+pub use options::Options;
+
+use winit::event_loop::{ControlFlow, EventLoop};
+
+/// Opens the studio window on the options' document and runs until it closes. Errors:
+/// the document does not parse (its field named), there is no display, or no adapter.
+pub fn run(options: Options) -> Result<(), String> {
+    let scene = match (&options.path, &options.text) {
+        (Some(p), _) => document::read(p)?,
+        (None, Some(text)) => document::parse(text)?,
+        (None, None) => document::parse(document::STARTER)?,
+    };
+    let event_loop = EventLoop::new().map_err(|e| {
+        format!("view: cannot open a window ({e}); it needs a display (X11: set DISPLAY, or run under xvfb-run)")
+    })?;
+    event_loop.set_control_flow(ControlFlow::Wait);
+    let mut app = app::App::new(studio::Studio::new(scene, options.path.clone()), options);
+    event_loop.run_app(&mut app).map_err(|e| format!("view: {e}"))?;
+    app.error.map_or(Ok(()), Err)
+}

@@ -1,0 +1,22 @@
+//! The Animation panel: play/pause, speed and a time slider over the scene's duration.
+
+use crate::studio::Studio;
+
+/// The Animation panel (one row).
+pub fn animation_panel(ui: &mut egui::Ui, studio: &mut Studio) {
+    let duration = studio.scene.animation.duration;
+    ui.horizontal(|ui| {
+        if !studio.scene.is_animated() {
+            ui.label("no animation in this scene");
+            return;
+        }
+        let label = if studio.clock.playing { "Pause" } else { "Play" };
+        if ui.button(label).clicked() {
+            studio.clock.playing = !studio.clock.playing;
+        }
+        let speed = ui.label("speed");
+        ui.add(egui::DragValue::new(&mut studio.clock.speed).range(0.0..=10.0).speed(0.02)).labelled_by(speed.id);
+        let time = ui.label("time");
+        ui.add(egui::Slider::new(&mut studio.clock.time, 0.0..=duration).suffix(" s")).labelled_by(time.id);
+    });
+}

@@ -1,0 +1,62 @@
+//! Field widgets bound to a JSON pointer of the selected object's document: a change is
+//! one edit; a refused change shows the library's message under the field.
+
+use serde_json::Value;
+
+use crate::edit::Edit;
+use crate::studio::Studio;
+
+/// The value at `pointer` of object `object`'s document.
+pub fn read(studio: &Studio, object: usize, pointer: &str) -> Option<Value> {
+    studio.scene.objects.get(object)?.to_value().pointer(pointer).cloned()
+}
+
+/// Sets the value at `pointer`; on refusal remembers the message for that field.
+pub fn write(studio: &mut Studio, object: usize, pointer: &str, value: Option<Value>) {
+    let ok = studio.edit(Edit::Set { object, pointer: pointer.into(), value }, false);
+    studio.field_error = if ok { None } else { studio.message.clone().map(|m| (pointer.to_string(), m)) };
+}
+
+/// The message under a field, when its last change was refused.
+pub fn error_label(ui: &mut egui::Ui, studio: &Studio, pointer: &str) {
+    if let Some((p, m)) = &studio.field_error
+        && p == pointer
+    {
+        ui.colored_label(egui::Color32::from_rgb(200, 40, 40), m);
+    }
+}
+
+/// A checkbox for a boolean field (missing: `default`).
+pub fn toggle(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointer: &str, label: &str, default: bool) {
+    let mut on = read(studio, object, pointer).and_then(|v| v.as_bool()).unwrap_or(default);
+    if ui.checkbox(&mut on, label).changed() {
+        write(studio, object, pointer, Some(on.into()));
+    }
+    error_label(ui, studio, pointer);
+}
+
+/// A whole-number field; the value is applied when it changes.
+pub fn count(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointer: &str, label: &str, default: u64) {
+    let mut n = read(studio, object, pointer).and_then(|v| v.as_u64()).unwrap_or(default);
+    let changed = ui.horizontal(|ui| {
+        let name = ui.label(label);
+        ui.add(egui::DragValue::new(&mut n).range(0..=4096).speed(0.1)).labelled_by(name.id).changed()
+    });
+    if changed.inner {
+        write(studio, object, pointer, Some(n.into()));
+    }
+    error_label(ui, studio, pointer);
+}
+
+/// A real-number field.
+pub fn number(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointer: &str, label: &str, default: f64) {
+    let mut x = read(studio, object, pointer).and_then(|v| v.as_f64()).unwrap_or(default);
+    let changed = ui.horizontal(|ui| {
+        let name = ui.label(label);
+        ui.add(egui::DragValue::new(&mut x).speed(0.01)).labelled_by(name.id).changed()
+    });
+    if changed.inner {
+        write(studio, object, pointer, Some(x.into()));
+    }
+    error_label(ui, studio, pointer);
+}

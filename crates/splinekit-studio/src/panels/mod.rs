@@ -1,0 +1,19 @@
+//! The egui panels around the 3-D view: the menu bar, Objects, Properties, Animation and
+//! the status line. Each panel reads the document as JSON and changes it only through
+//! [`crate::edit::Edit`]s, so every change can be undone and a refused value leaves the
+//! document as it was, its message next to the field.
+
+mod animation;
+mod fields;
+mod menu;
+mod objects;
+mod plot;
+mod properties;
+
+pub use animation::animation_panel;
+pub use menu::{FileFields, MenuAction, menu_bar};
+pub use objects::objects_panel;
+pub use properties::properties_panel;
+
+/// Width of the side panels in points (fixed, so the 3-D view's place is predictable).
+pub const SIDE_WIDTH: f32 = 230.0;

@@ -1,0 +1,96 @@
+//! The Objects panel: the scene's objects with visibility and selection; add a shape of
+//! any kind of the format (its example document), a blending spline of any model curve or
+//! surface; duplicate and delete.
+
+use serde_json::json;
+use splinekit_scene::scenes::SceneObject;
+use splinekit_scene::{CurveDocument, SurfaceDocument};
+
+use super::fields::{read, write};
+use crate::edit::Edit;
+use crate::studio::Studio;
+
+/// The Objects panel.
+pub fn objects_panel(ui: &mut egui::Ui, studio: &mut Studio) {
+    ui.heading("Objects");
+    for i in 0..studio.scene.objects.len() {
+        let ty = read(studio, i, "/shape/type").and_then(|v| v.as_str().map(String::from)).unwrap_or_default();
+        ui.horizontal(|ui| {
+            let hidden = read(studio, i, "/hidden").and_then(|v| v.as_bool()).unwrap_or(false);
+            let mut visible = !hidden;
+            if ui.checkbox(&mut visible, "").on_hover_text("visible").changed() {
+                write(studio, i, "/hidden", Some((!visible).into()));
+            }
+            if ui.selectable_label(studio.selected_object == Some(i), format!("{i}: {ty}")).clicked() {
+                studio.selected_object = Some(i);
+                studio.selected = None;
+            }
+        });
+    }
+    ui.horizontal(|ui| {
+        let selected = studio.selected_object.filter(|&i| i < studio.scene.objects.len());
+        if ui.add_enabled(selected.is_some(), egui::Button::new("Duplicate")).clicked()
+            && let Some(i) = selected
+        {
+            let object = Box::new(studio.scene.objects[i].clone());
+            if studio.edit(Edit::Insert { index: i + 1, object }, false) {
+                studio.selected_object = Some(i + 1);
+            }
+        }
+        if ui.add_enabled(selected.is_some(), egui::Button::new("Delete")).clicked()
+            && let Some(i) = selected
+            && studio.edit(Edit::Remove { index: i }, false)
+        {
+            studio.selected_object = None;
+            studio.selected = None;
+        }
+    });
+    add_menu(ui, studio);
+}
+
+/// "Add": every curve and surface kind with its example, and blending splines of models.
+fn add_menu(ui: &mut egui::Ui, studio: &mut Studio) {
+    ui.menu_button("Add…", |ui| {
+        ui.menu_button("Curve", |ui| {
+            for c in CurveDocument::examples() {
+                if ui.button(c.type_name()).clicked() {
+                    add(studio, c.to_value());
+                }
+            }
+        });
+        ui.menu_button("Surface", |ui| {
+            for s in SurfaceDocument::examples() {
+                if ui.button(s.type_name()).clicked() {
+                    add(studio, s.to_value());
+                }
+            }
+        });
+        ui.menu_button("Blending spline of", |ui| {
+            for m in ["heart", "circle", "helix", "rose", "trefoil"] {
+                if ui.button(m).clicked() {
+                    add(studio, json!({"type": "blending_spline", "model": {"type": m}, "local_curves": 8}));
+                }
+            }
+            for m in ["torus", "sphere", "cylinder", "plane"] {
+                if ui.button(format!("{m} (surface)")).clicked() {
+                    let shape =
+                        json!({"type": "blending_spline_surface", "model": {"type": m}, "local_surfaces": [4, 4]});
+                    add(studio, shape);
+                }
+            }
+        });
+    });
+}
+
+fn add(studio: &mut Studio, shape: serde_json::Value) {
+    let object = json!({"shape": shape, "local_pieces": true, "control_net": true});
+    match SceneObject::from_value(object) {
+        Ok(object) => {
+            let index = studio.scene.objects.len();
+            if studio.edit(Edit::Insert { index, object: Box::new(object) }, false) {
+                studio.selected_object = Some(index);
+            }
+        }
+        Err(e) => studio.message = Some(e.to_string()),
+    }
+}

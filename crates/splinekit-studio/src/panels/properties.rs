@@ -1,0 +1,207 @@
+//! Properties of the selected object, applied at once: style toggles, sample density and
+//! line width; the degree of B-splines and NURBS; for blending splines the number of local
+//! pieces, their kind (Bézier of a degree, sub-curve/surface, arc), knot spacing,
+//! open/closed and the B-function with its parameters
+//! (and a plot of B and B′); the numbers of the selected handle for exact entry.
+
+use serde_json::{Value, json};
+use splinekit::curve::Curve;
+use splinekit_scene::bfunctions::BFunctionDoc;
+use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument};
+
+use super::fields::{count, error_label, number, read, toggle, write};
+use super::plot::bfunction_plot;
+use crate::studio::Studio;
+
+/// The B-functions of the format with their default parameters.
+const BFUNCTIONS: [&str; 7] = ["erbs", "polynomial", "trigonometric", "half_cosine", "rational", "beta", "linear"];
+
+/// The Properties panel.
+pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
+    ui.set_max_width(super::SIDE_WIDTH - 16.0);
+    ui.heading("Properties");
+    let Some(object) = studio.selected_object.filter(|&i| i < studio.scene.objects.len()) else {
+        ui.label("Select an object or a handle.");
+        return;
+    };
+    let ty = read(studio, object, "/shape/type").and_then(|v| v.as_str().map(String::from)).unwrap_or_default();
+    ui.label(format!("objects[{object}]: {ty}"));
+    ui.separator();
+    style(ui, studio, object);
+    ui.separator();
+    match ty.as_str() {
+        "bspline" | "nurbs" | "bspline_surface" | "nurbs_surface" => {
+            count(ui, studio, object, "/shape/degree", "degree", 3);
+        }
+        "blending_spline" => blending_curve(ui, studio, object),
+        "blending_spline_surface" => blending_surface(ui, studio, object),
+        _ => {}
+    }
+    selected_handle(ui, studio);
+}
+
+fn style(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
+    toggle(ui, studio, object, "/hidden", "hide the shape", false);
+    toggle(ui, studio, object, "/control_net", "control polygon / net", false);
+    toggle(ui, studio, object, "/local_pieces", "local curves / patches", false);
+    toggle(ui, studio, object, "/wireframe", "parameter lines", false);
+    toggle(ui, studio, object, "/color_cycle", "colour cycling (animation)", false);
+    let density = read(studio, object, "/density").and_then(|v| v.as_u64());
+    let mut adaptive = density.is_none();
+    if ui.checkbox(&mut adaptive, "adaptive sampling").changed() {
+        write(studio, object, "/density", if adaptive { None } else { Some(64.into()) });
+    }
+    if !adaptive {
+        count(ui, studio, object, "/density", "density", 64);
+    }
+    number(ui, studio, object, "/line_width", "line width", 2.5);
+}
+
+fn blending_curve(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
+    if read(studio, object, "/shape/model").is_some() {
+        count(ui, studio, object, "/shape/local_curves", "local curves", 10);
+        local_kind(ui, studio, object, false);
+    }
+    let closed = is_closed(studio, object);
+    toggle(ui, studio, object, "/shape/closed", "closed", closed);
+    bfunction(ui, studio, object);
+}
+
+fn blending_surface(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
+    count(ui, studio, object, "/shape/local_surfaces/0", "patches in u", 4);
+    count(ui, studio, object, "/shape/local_surfaces/1", "patches in v", 4);
+    local_kind(ui, studio, object, true);
+    toggle(ui, studio, object, "/shape/closed_u", "closed in u", true);
+    toggle(ui, studio, object, "/shape/closed_v", "closed in v", true);
+    bfunction(ui, studio, object);
+}
+
+/// The kind of locals made from the model (Bézier of a degree, the model itself, arcs for
+/// curves) and, for curves, the knot spacing.
+fn local_kind(ui: &mut egui::Ui, studio: &mut Studio, object: usize, surface: bool) {
+    let local = read(studio, object, "/shape/local").unwrap_or_else(|| json!({"type": "bezier"}));
+    let kind = local.get("type").and_then(Value::as_str).unwrap_or("bezier").to_string();
+    let kinds: &[&str] = if surface { &["bezier", "sub_surface"] } else { &["bezier", "sub_curve", "arc"] };
+    let mut chosen = kind.clone();
+    egui::ComboBox::from_label("locals").selected_text(&chosen).show_ui(ui, |ui| {
+        for k in kinds {
+            ui.selectable_value(&mut chosen, k.to_string(), *k);
+        }
+    });
+    if chosen != kind {
+        write(studio, object, "/shape/local", Some(json!({"type": chosen})));
+    }
+    error_label(ui, studio, "/shape/local");
+    if kind == "bezier" {
+        bezier_degree(ui, studio, object, &local, surface);
+    }
+    if !surface {
+        let spacing = read(studio, object, "/shape/knot_spacing").and_then(|v| v.as_str().map(String::from));
+        let current = spacing.unwrap_or_else(|| "uniform".into());
+        let mut chosen = current.clone();
+        egui::ComboBox::from_label("knots").selected_text(&chosen).show_ui(ui, |ui| {
+            for k in ["uniform", "chord_length"] {
+                ui.selectable_value(&mut chosen, k.to_string(), k);
+            }
+        });
+        if chosen != current {
+            write(studio, object, "/shape/knot_spacing", Some(chosen.into()));
+        }
+        error_label(ui, studio, "/shape/knot_spacing");
+    }
+}
+
+/// Whether the object's curve is closed as built (the default of `closed`: the model's).
+fn is_closed(studio: &Studio, object: usize) -> bool {
+    struct Closed;
+    impl DimensionVisitor<Curves> for Closed {
+        type Output = bool;
+        fn visit<const D: usize>(self, c: &dyn Curve<D>) -> bool {
+            c.is_closed()
+        }
+    }
+    match &studio.scene.objects[object].shape {
+        ShapeDocument::Curve(c) => c.build().is_ok_and(|c| c.visit(Closed)),
+        ShapeDocument::Surface(_) => false,
+    }
+}
+
+/// The degree of Bézier locals (d, or [d_u, d_v] for patches), written as the whole
+/// `local` object so that a document without one gets `"type": "bezier"` too.
+fn bezier_degree(ui: &mut egui::Ui, studio: &mut Studio, object: usize, local: &Value, surface: bool) {
+    let degree = local.get("degree");
+    let mut d: Vec<u64> = if surface {
+        degree.and_then(|d| serde_json::from_value(d.clone()).ok()).unwrap_or_else(|| vec![3, 3])
+    } else {
+        vec![degree.and_then(Value::as_u64).unwrap_or(3)]
+    };
+    let mut changed = false;
+    ui.horizontal(|ui| {
+        let name = ui.label("Bézier degree");
+        for x in d.iter_mut() {
+            changed |= ui.add(egui::DragValue::new(x).range(1..=12).speed(0.1)).labelled_by(name.id).changed();
+        }
+    });
+    if changed {
+        let degree = if surface { json!(d) } else { json!(d[0]) };
+        write(studio, object, "/shape/local", Some(json!({"type": "bezier", "degree": degree})));
+    }
+}
+
+/// The B-function kind, its parameters and the plot.
+fn bfunction(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
+    let value = read(studio, object, "/shape/bfunction").unwrap_or_else(|| json!({"type": "erbs"}));
+    let kind = value.get("type").and_then(Value::as_str).unwrap_or("erbs").to_string();
+    let mut chosen = kind.clone();
+    egui::ComboBox::from_label("B-function").selected_text(&chosen).show_ui(ui, |ui| {
+        for b in BFUNCTIONS {
+            ui.selectable_value(&mut chosen, b.to_string(), b);
+        }
+    });
+    if chosen != kind {
+        write(studio, object, "/shape/bfunction", Some(json!({"type": chosen})));
+    }
+    error_label(ui, studio, "/shape/bfunction");
+    let params: &[(&str, f64)] = match kind.as_str() {
+        "erbs" => &[("alpha", 1.0), ("beta", 1.0), ("gamma", 1.0), ("lambda", 0.5)],
+        _ => &[],
+    };
+    for (name, default) in params {
+        number(ui, studio, object, &format!("/shape/bfunction/{name}"), name, *default);
+    }
+    if kind == "polynomial" {
+        count(ui, studio, object, "/shape/bfunction/smoothness", "smoothness", 1);
+    }
+    if let Some(b) = read(studio, object, "/shape/bfunction")
+        .or_else(|| Some(json!({"type": "erbs"})))
+        .and_then(|v| BFunctionDoc::from_value(v).ok())
+        .and_then(|d| d.build().ok())
+    {
+        ui.label("B (text colour) and B' (orange):");
+        bfunction_plot(ui, &b, egui::vec2(200.0, 90.0));
+    }
+}
+
+/// The selected handle's value for exact entry (translation of a local piece, or the
+/// coordinates of a control point).
+fn selected_handle(ui: &mut egui::Ui, studio: &mut Studio) {
+    let Some(h) = studio.selected.clone() else { return };
+    ui.separator();
+    ui.label(format!("selected: {}", h.kind.field()));
+    let pointer = h.kind.pointer();
+    let coords = if h.kind.is_local() { format!("{pointer}/translate") } else { pointer.clone() };
+    let n = h.dimension;
+    let mut values: Vec<f64> =
+        read(studio, h.object, &coords).and_then(|v| serde_json::from_value(v).ok()).unwrap_or_else(|| vec![0.0; n]);
+    let mut changed = false;
+    let name = ui.label(if h.kind.is_local() { "translate" } else { "point" });
+    ui.horizontal_wrapped(|ui| {
+        for x in values.iter_mut() {
+            changed |= ui.add(egui::DragValue::new(x).speed(0.01).max_decimals(3)).labelled_by(name.id).changed();
+        }
+    });
+    if changed {
+        write(studio, h.object, &coords, Some(values.into()));
+    }
+    error_label(ui, studio, &coords);
+}

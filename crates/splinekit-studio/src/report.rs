@@ -1,0 +1,30 @@
+//! The handle report (`--report-handles FILE`): each handle's object, kind, index, world
+//! position and pixel position in the window (physical pixels from the window's top-left
+//! corner), for a script that moves the mouse onto one.
+
+use serde_json::{Value, json};
+
+use crate::handles::{Handle, HandleKind};
+use crate::view_camera::Projector;
+
+/// The report of `handles` drawn by `projector` in a view whose top-left corner is at
+/// `origin` window pixels.
+pub fn handle_report(handles: &[Handle], projector: &Projector, origin: [u32; 2], view_size: [u32; 2]) -> Value {
+    let list: Vec<Value> = handles
+        .iter()
+        .filter_map(|h| {
+            let (p, _) = projector.project(h.position)?;
+            let (kind, index) = match h.kind {
+                HandleKind::LocalCurve(k) => ("local_curve", json!(k)),
+                HandleKind::LocalPatch(k, l) => ("local_patch", json!([k, l])),
+                HandleKind::ControlPoint(i, _) => ("control_point", json!(i)),
+                HandleKind::NetPoint(i, j) => ("net_point", json!([i, j])),
+            };
+            Some(json!({
+                "object": h.object, "kind": kind, "index": index, "world": h.position,
+                "x": p[0] + f64::from(origin[0]), "y": p[1] + f64::from(origin[1]),
+            }))
+        })
+        .collect();
+    json!({"view": {"left": origin[0], "top": origin[1], "width": view_size[0], "height": view_size[1]}, "handles": list})
+}

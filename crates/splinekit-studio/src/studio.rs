@@ -1,0 +1,283 @@
+//! The studio's state without a window: the document and its history, the view camera,
+//! selection and hover, the drag in progress, the clock; and what the 3-D view draws
+//! (the document composed by the renderer's [`compose`], with the view's camera and the
+//! handles highlighted). Everything here is testable headless.
+
+use std::path::PathBuf;
+
+use splinekit_render::{PointItem, RenderScene, compose};
+use splinekit_scene::scenes::SceneDocument;
+
+use crate::clock::Clock;
+use crate::document;
+use crate::edit::{Edit, EditError};
+use crate::gesture::{Gesture, GestureKind};
+use crate::handles::{Handle, HandleKind, handles};
+use crate::history::History;
+use crate::view_camera::{Projector, ViewCamera};
+
+/// The scene as last composed, and what it was composed from.
+struct Composed {
+    scene: SceneDocument,
+    time: Option<f64>,
+    composed: RenderScene,
+}
+
+/// How close (pixels) the cursor must be to a handle to grab it.
+pub const PICK_RADIUS: f64 = 10.0;
+
+/// The studio's state.
+pub struct Studio {
+    /// The document being edited.
+    pub scene: SceneDocument,
+    /// The file it came from.
+    pub path: Option<PathBuf>,
+    /// Undo and redo.
+    pub history: History,
+    /// The camera of the 3-D view (`None` until the first frame fits one).
+    pub camera: Option<ViewCamera>,
+    /// The selected object.
+    pub selected_object: Option<usize>,
+    /// The selected handle.
+    pub selected: Option<Handle>,
+    /// The handle under the cursor.
+    pub hovered: Option<Handle>,
+    /// The drag in progress.
+    pub gesture: Option<Gesture>,
+    /// The animation clock.
+    pub clock: Clock,
+    /// The last message for the status line (an edit refused, a file saved, …).
+    pub message: Option<String>,
+    /// A document that failed to open: its error, shown instead of the view.
+    pub load_error: Option<String>,
+    /// The handles as last drawn.
+    pub handles: Vec<Handle>,
+    /// The field (JSON pointer) whose last change was refused, and the message.
+    pub field_error: Option<(String, String)>,
+    /// The bounds of the scene as last drawn.
+    pub bounds: Option<([f32; 3], [f32; 3])>,
+    /// The last composition.
+    cache: Option<Composed>,
+}
+
+impl Studio {
+    /// The studio on a document.
+    pub fn new(scene: SceneDocument, path: Option<PathBuf>) -> Self {
+        Studio {
+            scene,
+            path,
+            history: History::default(),
+            camera: None,
+            selected_object: None,
+            selected: None,
+            hovered: None,
+            gesture: None,
+            clock: Clock::new(),
+            message: None,
+            load_error: None,
+            handles: Vec::new(),
+            field_error: None,
+            bounds: None,
+            cache: None,
+        }
+    }
+
+    /// Opens another document; a document that does not parse leaves the current one and
+    /// shows its error.
+    pub fn open(&mut self, path: PathBuf) {
+        match document::read(&path) {
+            Ok(scene) => {
+                *self = Studio::new(scene, Some(path));
+            }
+            Err(e) => self.load_error = Some(e),
+        }
+    }
+
+    /// The time the scene is posed at (`None` when it has no animation).
+    pub fn time(&self) -> Option<f64> {
+        self.scene.is_animated().then_some(self.clock.time)
+    }
+
+    /// Applies an edit through the history; a refused edit leaves its message.
+    pub fn edit(&mut self, edit: Edit, merge: bool) -> bool {
+        match self.history.apply(&mut self.scene, edit, merge) {
+            Ok(()) => {
+                self.message = None;
+                true
+            }
+            Err(e) => {
+                self.message = Some(e.to_string());
+                false
+            }
+        }
+    }
+
+    /// Undoes the last edit.
+    pub fn undo(&mut self) {
+        let done = self.history.undo(&mut self.scene);
+        self.report(done, "nothing to undo");
+    }
+
+    /// Redoes the last undone edit.
+    pub fn redo(&mut self) {
+        let done = self.history.redo(&mut self.scene);
+        self.report(done, "nothing to redo");
+    }
+
+    fn report(&mut self, done: Result<bool, EditError>, nothing: &str) {
+        self.message = match done {
+            Ok(true) => None,
+            Ok(false) => Some(nothing.into()),
+            Err(e) => Some(e.to_string()),
+        };
+    }
+
+    /// Saves to the file opened (or `studio.json`), with the view's camera, so that
+    /// `splinekit render` of the file shows what the view shows.
+    pub fn save(&mut self) {
+        let path = document::save_path(self.path.as_deref());
+        let mut scene = self.scene.clone();
+        if let Some(c) = &self.camera {
+            scene.camera = Some(c.to_doc());
+        }
+        self.message = Some(match document::write(&scene, &path) {
+            Ok(()) => format!("saved {}", path.display()),
+            Err(e) => e,
+        });
+        self.path = Some(path);
+    }
+
+    /// Writes the selected object as a mesh file (format by extension, see [`crate::export`]).
+    pub fn export_selected(&mut self, path: &std::path::Path) {
+        let Some(object) = self.selected_object.and_then(|i| self.scene.objects.get(i)) else {
+            self.message = Some("export: select an object first".into());
+            return;
+        };
+        let written = crate::export::export(object, self.time(), path).and_then(|bytes| {
+            std::fs::write(path, bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
+        });
+        self.message = Some(written.map_or_else(|e| e, |()| format!("exported {}", path.display())));
+    }
+
+    /// The scene as the 3-D view draws it at `size` pixels: composed as `splinekit render`
+    /// composes it, with the view camera (fitted on the first frame); with `overlays`,
+    /// the hovered and selected handles drawn larger.
+    pub fn render_scene(&mut self, size: (u32, u32), overlays: bool) -> Result<RenderScene, String> {
+        let aspect = size.0.max(1) as f32 / size.1.max(1) as f32;
+        let mut rs = self.composed(aspect)?;
+        let camera = self.camera.get_or_insert_with(|| {
+            ViewCamera::new(rs.camera.unwrap_or_else(|| {
+                splinekit_render::Camera::fit(rs.bounds().unwrap_or(([-1.0; 3], [1.0; 3])), 0.9, 0.5, aspect)
+            }))
+        });
+        rs.camera = Some(camera.camera);
+        self.bounds = rs.bounds();
+        if overlays {
+            // Patch origins and control points, which the renderer does not mark.
+            for h in self.handles.iter().filter(|h| !matches!(h.kind, HandleKind::LocalCurve(_))) {
+                let position = h.position.map(|x| x as f32);
+                rs.points.push(PointItem { position, color: [0.15, 0.15, 0.15, 1.0], size: 7.0 });
+            }
+            for (h, color, size) in
+                [(&self.selected, [1.0, 0.55, 0.0, 1.0], 14.0), (&self.hovered, [1.0, 0.85, 0.1, 1.0], 12.0)]
+            {
+                if let Some(h) = h {
+                    let position = h.position.map(|x| x as f32);
+                    rs.points.push(PointItem { position, color, size });
+                }
+            }
+        }
+        Ok(rs)
+    }
+
+    /// The scene composed at the current time, with its visible handles; recomposed only
+    /// when the document or the time changed since the last frame (hovering and orbiting
+    /// reuse it).
+    fn composed(&mut self, aspect: f32) -> Result<RenderScene, String> {
+        let time = self.time();
+        if let Some(c) = &self.cache
+            && c.scene == self.scene
+            && c.time == time
+        {
+            return Ok(c.composed.clone());
+        }
+        let composed = compose(&self.scene, time, aspect).map_err(|e| e.to_string())?;
+        self.handles = self.visible_handles()?;
+        self.cache = Some(Composed { scene: self.scene.clone(), time, composed: composed.clone() });
+        Ok(composed)
+    }
+
+    /// The handles the view shows and picks: local pieces of objects drawn with
+    /// `local_pieces`, control points of objects drawn with `control_net`.
+    fn visible_handles(&self) -> Result<Vec<Handle>, String> {
+        let all = handles(&self.scene, self.time()).map_err(|e| e.to_string())?;
+        let shown = |h: &Handle| {
+            let style = &self.scene.objects[h.object].style;
+            if h.kind.is_local() { style.local_pieces } else { style.control_net }
+        };
+        Ok(all.into_iter().filter(shown).collect())
+    }
+
+    /// Frames the selected handle (a box a quarter of the scene's size around it), else
+    /// the whole scene.
+    pub fn frame_selection(&mut self) {
+        let Some((lo, hi)) = self.bounds else { return };
+        let bounds = match &self.selected {
+            Some(h) => {
+                let r = (0..3).map(|k| hi[k] - lo[k]).fold(0.0f32, f32::max) / 8.0;
+                let p = h.position.map(|x| x as f32);
+                (p.map(|x| x - r), p.map(|x| x + r))
+            }
+            None => (lo, hi),
+        };
+        if let Some(c) = self.camera.as_mut() {
+            c.frame(bounds);
+        }
+    }
+
+    /// The handle within [`PICK_RADIUS`] pixels of `mouse`, the nearest first.
+    pub fn pick(&self, projector: &Projector, mouse: [f64; 2]) -> Option<Handle> {
+        let mut best: Option<(f64, &Handle)> = None;
+        for h in &self.handles {
+            if let Some((p, _)) = projector.project(h.position) {
+                let d = (p[0] - mouse[0]).hypot(p[1] - mouse[1]);
+                if d <= PICK_RADIUS && best.is_none_or(|(b, _)| d < b) {
+                    best = Some((d, h));
+                }
+            }
+        }
+        best.map(|(_, h)| h.clone())
+    }
+
+    /// Starts dragging the handle under `mouse`; `false` when there is none.
+    pub fn begin_drag(&mut self, projector: &Projector, mouse: [f64; 2], kind: GestureKind) -> bool {
+        let Some(h) = self.pick(projector, mouse) else { return false };
+        self.selected_object = Some(h.object);
+        self.gesture = Gesture::start(&self.scene, projector, &h, kind, mouse);
+        self.selected = Some(h);
+        self.gesture.is_some()
+    }
+
+    /// Moves the drag to `mouse`: one edit, merged with the drag's earlier ones.
+    pub fn drag_to(&mut self, projector: &Projector, mouse: [f64; 2]) {
+        let Some(g) = &self.gesture else { return };
+        match g.edit_at(projector, mouse) {
+            Ok(edit) => {
+                self.edit(edit, true);
+            }
+            Err(e) => self.message = Some(e.to_string()),
+        }
+    }
+
+    /// Ends the drag (one undo step).
+    pub fn end_drag(&mut self) {
+        self.gesture = None;
+        self.history.close();
+        if let Some(sel) = &self.selected {
+            self.selected = self
+                .visible_handles()
+                .ok()
+                .and_then(|hs| hs.into_iter().find(|h| h.object == sel.object && h.kind == sel.kind));
+        }
+    }
+}

@@ -1,0 +1,183 @@
+//! Edits as commands on the scene document, without a window (issue 11): each edit changes
+//! exactly what a document would say, undo restores the document exactly, and a value the
+//! library refuses leaves the document as it was, with the library's message.
+
+use serde_json::json;
+use splinekit::Point;
+use splinekit::curve::Curve;
+use splinekit_render::{Camera, RenderScene};
+use splinekit_scene::scenes::SceneDocument;
+use splinekit_scene::{Decoration, ShapeDocument};
+use splinekit_studio::edit::Edit;
+use splinekit_studio::gesture::{Gesture, GestureKind};
+use splinekit_studio::handles::{HandleKind, handles};
+use splinekit_studio::history::History;
+use splinekit_studio::studio::Studio;
+use splinekit_studio::view_camera::Projector;
+
+fn scene(text: &str) -> SceneDocument {
+    splinekit_studio::document::parse(text).expect("a valid scene")
+}
+
+fn heart() -> SceneDocument {
+    scene(
+        &std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/scenes/heart_local_curves.json"))
+            .expect("the example"),
+    )
+}
+
+fn curve(s: &SceneDocument) -> splinekit::blend::BlendingSplineCurve<3> {
+    let ShapeDocument::Curve(c) = &s.objects[0].shape else { panic!("a curve") };
+    let Decoration::LocalCurves(b) = c.decoration() else { panic!("a blending spline") };
+    b.curve::<3>().expect("builds")
+}
+
+fn set(pointer: &str, value: serde_json::Value) -> Edit {
+    Edit::Set { object: 0, pointer: pointer.into(), value: Some(value) }
+}
+
+#[test]
+fn moving_a_local_curve_edits_its_transform_as_a_document_would_and_undo_restores_it() {
+    let original = heart();
+    let mut doc = original.clone();
+    let mut history = History::default();
+    history.apply(&mut doc, set("/shape/transforms/3", json!({"translate": [0.5, -1.0, 0.0]})), false).expect("valid");
+    // The same as the document written by hand.
+    let mut by_hand = original.to_value();
+    by_hand["objects"][0]["shape"]["transforms"] = json!({"3": {"translate": [0.5, -1.0, 0.0]}});
+    assert_eq!(doc, SceneDocument::from_value(by_hand).expect("valid"));
+    // The curve moved on local 3's support only.
+    let (before, after) = (curve(&original), curve(&doc));
+    let support = after.local_support(3);
+    assert!(
+        (after.point(after.centre(3)) - before.point(after.centre(3)) - Point::<3>::new(0.5, -1.0, 0.0)).norm() < 1e-12
+    );
+    for i in 0..=400 {
+        let t = after.domain().lerp(i as f64 / 400.0);
+        if !(support.start < t && t < support.end) {
+            assert_eq!(after.point(t), before.point(t), "t = {t}");
+        }
+    }
+    assert!(history.undo(&mut doc).expect("undoable"));
+    assert_eq!(doc, original);
+    assert!(history.redo(&mut doc).expect("redoable"));
+    assert_eq!(curve(&doc).point(after.centre(3)), after.point(after.centre(3)));
+}
+
+#[test]
+fn a_refused_value_leaves_the_document_and_names_the_field() {
+    let original = scene(
+        r#"{"type":"scene","objects":[{"shape":{"type":"bspline","degree":2,"knots":[0,0,0,1,1,1],
+        "control_points":[[0,0],[1,1],[2,0]]}}]}"#,
+    );
+    let mut doc = original.clone();
+    let mut history = History::default();
+    let e = history.apply(&mut doc, set("/shape/degree", json!(5)), false).expect_err("degree above the points");
+    assert!(e.to_string().contains("degree"), "{e}");
+    assert_eq!(doc, original);
+    let e = history.apply(&mut doc, set("/density", json!(0)), false).expect_err("no samples");
+    assert!(e.to_string().contains("density"), "{e}");
+    let mut heart = heart();
+    let e = history.apply(&mut heart, set("/shape/local_curves", json!(1)), false).expect_err("one local");
+    assert!(e.to_string().contains("local_curves"), "{e}");
+    let e =
+        history.apply(&mut heart, set("/shape/bfunction", json!({"type": "erbs", "alpha": -1})), false).expect_err("α");
+    assert!(e.to_string().contains("bfunction"), "{e}");
+    assert_eq!(heart, self::heart());
+    assert!(!history.can_undo(), "refused edits are not steps");
+}
+
+#[test]
+fn properties_change_at_once_and_undo_one_by_one() {
+    let original = heart();
+    let mut doc = original.clone();
+    let mut h = History::default();
+    for (pointer, value) in [
+        ("/shape/bfunction", json!({"type": "trigonometric"})),
+        ("/shape/local_curves", json!(12)),
+        ("/shape/local", json!({"type": "bezier", "degree": 3})),
+        ("/density", json!(300)),
+        ("/control_net", json!(true)),
+    ] {
+        h.apply(&mut doc, set(pointer, value.clone()), false).expect(pointer);
+        assert_eq!(doc.objects[0].to_value().pointer(pointer), Some(&value));
+    }
+    assert_eq!(curve(&doc).local_count(), 12);
+    for _ in 0..5 {
+        assert!(h.undo(&mut doc).expect("undo"));
+    }
+    assert_eq!(doc, original);
+    assert!(!h.undo(&mut doc).expect("nothing left"));
+}
+
+#[test]
+fn a_control_point_moves_and_objects_are_added_duplicated_and_deleted() {
+    let mut doc =
+        scene(r#"{"type":"scene","objects":[{"shape":{"type":"bezier","control_points":[[0,0],[1,2],[3,0]]}}]}"#);
+    let mut h = History::default();
+    h.apply(&mut doc, set("/shape/control_points/1", json!([1.5, 2.5])), false).expect("valid");
+    let hs = handles(&doc, None).expect("handles");
+    assert_eq!(hs[1].kind, HandleKind::ControlPoint(1, "control_points"));
+    assert_eq!(hs[1].position, [1.5, 2.5, 0.0]);
+    let copy = Box::new(doc.objects[0].clone());
+    h.apply(&mut doc, Edit::Insert { index: 1, object: copy }, false).expect("duplicate");
+    assert_eq!(doc.objects.len(), 2);
+    h.apply(&mut doc, Edit::Remove { index: 0 }, false).expect("delete");
+    let e = h.apply(&mut doc, Edit::Remove { index: 0 }, false).expect_err("the last object");
+    assert!(e.to_string().contains("objects"), "{e}");
+    h.undo(&mut doc).expect("undo delete");
+    h.undo(&mut doc).expect("undo duplicate");
+    assert_eq!(doc.objects.len(), 1);
+}
+
+/// A top view of the heart at 600×600 pixels, as the studio draws it.
+fn studio_on_heart() -> (Studio, Projector) {
+    let mut studio = Studio::new(heart(), None);
+    let rs: RenderScene = studio.render_scene((600, 600), false).expect("composes");
+    assert!(matches!(rs.camera, Some(Camera::Orthographic { .. })), "the heart is seen from the top");
+    (studio, Projector::new(&rs, (600, 600)))
+}
+
+#[test]
+fn a_drag_on_a_handle_follows_the_mouse_and_is_one_undo_step() {
+    let (mut studio, projector) = studio_on_heart();
+    let h = studio.handles.iter().find(|h| h.kind == HandleKind::LocalCurve(4)).expect("local 4").clone();
+    let (p, _) = projector.project(h.position).expect("in view");
+    assert!(
+        studio.begin_drag(&projector, [p[0] + 3.0, p[1] - 2.0], GestureKind::Move(None)),
+        "picked within the radius"
+    );
+    for k in 1..=10 {
+        studio.drag_to(&projector, [p[0] + 3.0 + 4.0 * k as f64, p[1] - 2.0 + 2.0 * k as f64]);
+    }
+    studio.end_drag();
+    let moved = studio.selected.clone().expect("still selected");
+    let (q, _) = projector.project(moved.position).expect("in view");
+    assert!((q[0] - (p[0] + 40.0)).abs() < 1e-6 && (q[1] - (p[1] + 20.0)).abs() < 1e-6, "{q:?} from {p:?}");
+    studio.undo();
+    assert_eq!(studio.scene, heart(), "the whole drag is one step");
+}
+
+#[test]
+fn rotating_and_scaling_by_hand_compose_with_the_transform() {
+    let (studio, projector) = studio_on_heart();
+    let h = studio.handles.iter().find(|h| h.kind == HandleKind::LocalCurve(1)).expect("local 1").clone();
+    let (p, _) = projector.project(h.position).expect("in view");
+    let rotate =
+        Gesture::start(&studio.scene, &projector, &h, GestureKind::Rotate, [p[0] + 50.0, p[1]]).expect("starts");
+    // A quarter turn counter-clockwise on screen (y down: from +x to −y).
+    let Edit::Set { value: Some(v), .. } = rotate.edit_at(&projector, [p[0], p[1] - 50.0]).expect("an edit") else {
+        panic!("a set")
+    };
+    let angle = v["rotate"]["angle"].as_f64().expect("an angle");
+    let axis = &v["rotate"]["axis"];
+    assert!(
+        (angle - std::f64::consts::FRAC_PI_2).abs() < 1e-9 && (axis[2].as_f64().expect("z") - 1.0).abs() < 1e-9,
+        "{v}"
+    );
+    let scale = Gesture::start(&studio.scene, &projector, &h, GestureKind::Scale, [p[0] + 20.0, p[1]]).expect("starts");
+    let Edit::Set { value: Some(v), .. } = scale.edit_at(&projector, [p[0] + 50.0, p[1]]).expect("an edit") else {
+        panic!("a set")
+    };
+    assert!((v["scale"].as_f64().expect("a factor") - 2.5).abs() < 1e-12, "{v}");
+}

@@ -1,0 +1,64 @@
+//! The panels driven through egui's own test harness (egui_kittest): clicks on the
+//! Properties and Objects panels become edits of the document, undoable like any other.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use splinekit_scene::ShapeDocument;
+use splinekit_studio::panels::{objects_panel, properties_panel};
+use splinekit_studio::studio::Studio;
+
+fn heart() -> Studio {
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/scenes/heart_local_curves.json"))
+            .expect("the example");
+    let mut studio = Studio::new(splinekit_studio::document::parse(&text).expect("valid"), None);
+    studio.selected_object = Some(0);
+    studio
+}
+
+fn bfunction(studio: &Studio) -> String {
+    let ShapeDocument::Curve(c) = &studio.scene.objects[0].shape else { panic!("a curve") };
+    c.to_value()["bfunction"]["type"].as_str().unwrap_or("erbs (default)").to_string()
+}
+
+#[test]
+fn properties_toggle_styles_and_switch_the_bfunction_and_back() {
+    let mut h = Harness::new_ui_state(|ui, s: &mut Studio| properties_panel(ui, s), heart());
+    h.run();
+    h.get_by_label("control polygon / net").click();
+    h.run();
+    assert!(h.state().scene.objects[0].style.control_net);
+    assert_eq!(bfunction(h.state()), "erbs (default)");
+    h.get_by_label("B-function").click();
+    h.run();
+    h.get_by_label("trigonometric").click();
+    h.run();
+    assert_eq!(bfunction(h.state()), "trigonometric");
+    // The ERBS parameters are gone from the panel; undo brings ERBS back.
+    assert!(h.query_by_label("alpha").is_none());
+    h.state_mut().undo();
+    h.run();
+    assert_eq!(bfunction(h.state()), "erbs (default)");
+    assert!(h.query_by_label("alpha").is_some());
+}
+
+#[test]
+fn objects_are_duplicated_and_deleted_from_the_panel() {
+    let mut h = Harness::new_ui_state(|ui, s: &mut Studio| objects_panel(ui, s), heart());
+    h.run();
+    h.get_by_label("Duplicate").click();
+    h.run();
+    assert_eq!(h.state().scene.objects.len(), 2);
+    assert_eq!(h.state().selected_object, Some(1));
+    h.get_by_label("Delete").click();
+    h.run();
+    assert_eq!(h.state().scene.objects.len(), 1);
+    // The last object cannot go: the library's message, the document unchanged.
+    h.state_mut().selected_object = Some(0);
+    h.run();
+    h.get_by_label("Delete").click();
+    h.run();
+    assert_eq!(h.state().scene.objects.len(), 1);
+    let message = h.state().message.clone().unwrap_or_default();
+    assert!(message.contains("objects"), "{message}");
+}
