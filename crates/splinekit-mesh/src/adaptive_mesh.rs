@@ -4,7 +4,7 @@
 //! ([`crate::boundary_gluing`]); trimmed surfaces hand the quad-tree's vertices to the
 //! constrained triangulation that follows their trimming loops ([`crate::trimmed_mesh`]).
 
-use std::collections::{HashMap, HashSet};
+use foldhash::{HashMap, HashMapExt, HashSet};
 
 use splinekit::surface::{Surface, unit_normal};
 use splinekit::{Error, Point, Result};

@@ -12,7 +12,7 @@
 //! Closedness is judged after merging vertices with bitwise-equal positions, because meshes
 //! that store (u, v) keep both sides of a seam as separate vertices at the same place.
 
-use std::collections::HashMap;
+use foldhash::{HashMap, HashMapExt};
 
 use splinekit::{Error, Result};
 
@@ -42,10 +42,15 @@ pub(crate) fn finish(mesh: &mut TriangleMesh, field: &str) -> Result<()> {
 fn collapse_single_precision_edges(mesh: &mut TriangleMesh) {
     let Some((lo, hi)) = mesh.bounds() else { return };
     let extent = (0..3).map(|k| 0.5 * hi[k] - 0.5 * lo[k]).fold(0.0, f64::max);
-    let single = |i: u32| {
-        let p = mesh.positions[i as usize].map(|x| x as f32);
-        p.iter().all(|x| x.is_finite()).then(|| p.map(f32::to_bits))
-    };
+    let singles: Vec<Option<[u32; 3]>> = mesh
+        .positions
+        .iter()
+        .map(|p| {
+            let p = p.map(|x| x as f32);
+            p.iter().all(|x| x.is_finite()).then(|| p.map(f32::to_bits))
+        })
+        .collect();
+    let single = |i: u32| singles[i as usize];
     let short = |a: u32, b: u32| {
         let (p, q) = (mesh.positions[a as usize], mesh.positions[b as usize]);
         (0..3).all(|k| (p[k] - q[k]).abs() <= 1e-6 * extent)

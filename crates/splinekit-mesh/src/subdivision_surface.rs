@@ -17,7 +17,7 @@
 //! (the corner points around it).
 //! Boundary edges and vertices make no faces, so the surface pulls away from open borders.
 
-use std::collections::HashMap;
+use foldhash::{HashMap, HashMapExt};
 
 use crate::export::representable::{ExportError, Precision, check_vectors, one_line};
 
@@ -208,7 +208,7 @@ impl PolygonMesh {
                 directed.insert((face[k], face[(k + 1) % face.len()]), f);
             }
         }
-        let mut done = std::collections::HashSet::new();
+        let mut done = foldhash::HashSet::default();
         for (&(a, b), &f) in &directed {
             if let Some(&g) = directed.get(&(b, a))
                 && done.insert(edge(a, b))
@@ -218,7 +218,7 @@ impl PolygonMesh {
         }
         // Vertex faces: around each interior vertex (none of its edges on the boundary), in
         // the order of its faces.
-        let mut on_boundary = std::collections::HashSet::new();
+        let mut on_boundary = foldhash::HashSet::default();
         for (e, fs) in &ef {
             if fs.len() == 1 {
                 on_boundary.extend([e.0, e.1]);

@@ -65,7 +65,7 @@ impl TriangleMesh {
         if self.normals.len() != self.positions.len() {
             self.normals = vec![[0.0; 3]; self.positions.len()];
         }
-        let mut same_place: std::collections::HashMap<[u64; 3], usize> = std::collections::HashMap::new();
+        let mut same_place: foldhash::HashMap<[u64; 3], usize> = foldhash::HashMap::default();
         let place: Vec<usize> = (0..self.positions.len())
             .map(|i| *same_place.entry(self.positions[i].map(f64::to_bits)).or_insert(i))
             .collect();
@@ -110,7 +110,7 @@ impl TriangleMesh {
     }
     /// Edges used by exactly one triangle (the boundary; empty for a closed surface).
     pub fn boundary_edges(&self) -> Vec<[u32; 2]> {
-        let mut count = std::collections::HashMap::new();
+        let mut count = foldhash::HashMap::default();
         for t in &self.triangles {
             for k in 0..3 {
                 let (a, b) = (t[k], t[(k + 1) % 3]);

@@ -5,7 +5,7 @@
 //! curves instead of a staircase of cells. Points on the sides of the domain are glued
 //! like those of untrimmed meshes ([`crate::boundary_gluing`]).
 
-use std::collections::HashMap;
+use foldhash::{HashMap, HashMapExt};
 
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 use splinekit::surface::{Surface, TrimLoops, unit_normal};
