@@ -489,11 +489,19 @@ impl Reader<'_> {
                 }
                 let same_sense = boolean(param(&edge, 4)?)?;
                 let (space, pcurves) = self.pcurves_on(reference(param(&edge, 3)?)?, surface_id)?;
-                let (t0, t1) = (parameter_on(&space, ends[0])?, parameter_on(&space, ends[1])?);
-                let (lo, mut hi) = if same_sense { (t0, t1) } else { (t1, t0) };
-                if hi <= lo && matches!(space, Curve::Circle { .. } | Curve::Ellipse { .. }) {
-                    hi += std::f64::consts::TAU;
-                }
+                let one_vertex = reference(param(&edge, 1)?)? == reference(param(&edge, 2)?)?;
+                let (lo, hi) = match &space {
+                    // A closed spline edge (one vertex) runs over the whole curve.
+                    Curve::Spline(s) if one_vertex => (s.knots[s.degree], s.knots[s.knots.len() - 1 - s.degree]),
+                    _ => {
+                        let (t0, t1) = (parameter_on(&space, ends[0])?, parameter_on(&space, ends[1])?);
+                        let (lo, mut hi) = if same_sense { (t0, t1) } else { (t1, t0) };
+                        if hi <= lo && matches!(space, Curve::Circle { .. } | Curve::Ellipse { .. }) {
+                            hi += std::f64::consts::TAU;
+                        }
+                        (lo, hi)
+                    }
+                };
                 let trim = |c: &Curve| Curve::Trimmed { basis: Box::new(c.clone()), start: lo, end: hi };
                 pieces.push((trim(&pcurves[0]), pcurves.get(1).map(|c| (edge_id, trim(c))), oriented == same_sense));
             }

@@ -306,7 +306,7 @@ fn spline_surface(
     Ok(SplineSurface { degrees: (p, q), knots_u: ku, knots_v: kv, points: pts, weights: w, closed: (pu, pv) })
 }
 
-fn kernel_surface(doc: &SurfaceDocument) -> Result<Box<dyn KernelSurface<3>>> {
+pub(crate) fn kernel_surface(doc: &SurfaceDocument) -> Result<Box<dyn KernelSurface<3>>> {
     match doc.dimension().map_err(|e| plain("document", e))? {
         3 => doc.build_in::<3>().map_err(|e| plain("document", e)),
         d => Err(StepError::plain(format!("document: STEP surfaces are 3-D, got a {d}-D surface"))),
@@ -495,10 +495,8 @@ fn fitted_surface(
 
 /// Exports a surface document; `relative_tolerance` scales with the surface's size.
 pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64) -> Result<Exported> {
-    if let SurfaceDocument::Trimmed(_) = doc {
-        return Err(StepError::plain(
-            "type: trimmed surfaces are not exported yet (bounded faces with trimming loops are still to come)",
-        ));
+    if let SurfaceDocument::Trimmed(t) = doc {
+        return super::faces::export_trimmed(t, name, relative_tolerance);
     }
     let kernel = kernel_surface(doc)?;
     let tolerance = relative_tolerance * surface_size(kernel.as_ref());
@@ -527,15 +525,21 @@ pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64
 pub fn exports_exactly(doc: &ShapeDocument) -> bool {
     match doc {
         ShapeDocument::Curve(c) => curve_exports_exactly(c),
-        ShapeDocument::Surface(s) => match s {
-            SurfaceDocument::Revolution(d) => curve_exports_exactly(&d.curve),
-            SurfaceDocument::Extrusion(d) => curve_exports_exactly(&d.curve),
-            SurfaceDocument::Trimmed(_) => false,
-            other => {
-                matches!(elementary_surface(other), Ok(Some(_)))
-                    || matches!(polynomial_blending_surface(other), Ok(Some(_)))
-            }
-        },
+        ShapeDocument::Surface(s) => surface_exports_exactly(s),
+    }
+}
+
+fn surface_exports_exactly(doc: &SurfaceDocument) -> bool {
+    match doc {
+        SurfaceDocument::Revolution(d) => curve_exports_exactly(&d.curve),
+        SurfaceDocument::Extrusion(d) => curve_exports_exactly(&d.curve),
+        SurfaceDocument::Trimmed(t) => {
+            super::faces::trimmed_exports_exactly(t, surface_exports_exactly(&t.surface), curve_exports_exactly)
+        }
+        other => {
+            matches!(elementary_surface(other), Ok(Some(_)))
+                || matches!(polynomial_blending_surface(other), Ok(Some(_)))
+        }
     }
 }
 

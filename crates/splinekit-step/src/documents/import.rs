@@ -52,8 +52,7 @@ pub fn import_items(file: &StepFile) -> Result<ImportedDocuments> {
         };
         match (converted, geometry) {
             (Some(doc), Some(geometry)) => out.items.push((Item { name, geometry }, doc)),
-            // Faces travel as their `trimmed` documents; STEP → STEP writes their surfaces
-            // (face export is still to come).
+            // Faces travel as their `trimmed` documents, and STEP → STEP writes those.
             (Some(doc), None) => out.items.push((face_item(&name, &doc)?, doc)),
             (None, _) => *skipped.entry(format!("{label} (no document form)")).or_default() += 1,
         }
@@ -82,10 +81,10 @@ fn what(g: &GeometryOrFace) -> String {
     }
 }
 
-/// A face's STEP item for STEP → STEP: its document's surface, exported.
+/// A face's STEP item for STEP → STEP: its `trimmed` document, exported as a face.
 fn face_item(name: &str, doc: &ShapeDocument) -> Result<Item> {
-    let ShapeDocument::Surface(SurfaceDocument::Trimmed(t)) = doc else { unreachable!("faces are trimmed") };
-    Ok(crate::documents::export_surface(&t.surface, name, 1e-6)?.item)
+    let ShapeDocument::Surface(s) = doc else { unreachable!("faces are trimmed surfaces") };
+    Ok(crate::documents::export_surface(s, name, 1e-6)?.item)
 }
 
 fn v3(p: P3) -> Vec<f64> {
