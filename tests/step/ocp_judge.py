@@ -4,23 +4,26 @@ For each STEP file given with its `splinekit convert --report` JSON: OCP's
 STEPControl_Reader must read it and transfer every root with no failed entity; then
 each named item's transferred geometry is evaluated at the report's STEP parameters and
 compared with splinekit's points there: within 1e-9 (relative to the object's size) for
-exact forms, within the reported tolerance (plus 1e-9) for approximations.
+exact forms, within the reported tolerance (plus 1e-9) for approximations. Faces (trimmed
+documents) are also checked for validity, area and inside/outside (face_checks.py).
 
 usage: ocp_judge.py FILE.step REPORT.json [FILE.step REPORT.json ...]
 Prints one line per item and 'N passed, M failed' at the end; exit 1 on any failure.
 """
 import json
 import math
+import os
 import sys
 
 from OCP.BRep import BRep_Tool
 from OCP.BRepAdaptor import BRepAdaptor_Curve
 from OCP.IFSelect import IFSelect_RetDone
 from OCP.STEPControl import STEPControl_Reader
-from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE
+from OCP.TopAbs import TopAbs_COMPOUND, TopAbs_EDGE, TopAbs_FACE, TopAbs_SHELL
 from OCP.TopExp import TopExp_Explorer
 from OCP.TopoDS import TopoDS, TopoDS_Iterator
 
+from face_checks import check_face
 from verdicts import tally
 
 
@@ -42,7 +45,7 @@ def transferred(path):
 
 def evaluator(shape, kind):
     """A function (u, v) -> point of the one face or edge of a transferred item."""
-    if kind == "surface":
+    if kind in ("surface", "face"):
         e = TopExp_Explorer(shape, TopAbs_FACE)
         surf = BRep_Tool.Surface_s(TopoDS.Face(e.Current()))
         return lambda u, v: surf.Value(u, v)
@@ -51,20 +54,34 @@ def evaluator(shape, kind):
     return lambda t, _v: curve.Value(t)
 
 
+def items_of(shape):
+    """The transferred items: the elements of the (nested) compounds, in order."""
+    if shape.ShapeType() != TopAbs_COMPOUND:
+        return [shape]
+    out = []
+    it = TopoDS_Iterator(shape)
+    while it.More():
+        out.extend(items_of(it.Value()))
+        it.Next()
+    return out
+
+
 def judge(path, report_path):
     report = json.load(open(report_path))
     reader, _, _ = transferred(path)
-    # The geometric set's elements transfer in order, one sub-shape each.
-    shapes = []
-    it = TopoDS_Iterator(reader.OneShape())
-    while it.More():
-        shapes.append(it.Value())
-        it.Next()
-    if len(shapes) == 1 and len(report["items"]) == 1:
-        pass
-    elif len(shapes) != len(report["items"]):
-        return [(False, f"{path}: {len(shapes)} shapes transferred for {len(report['items'])} items")]
-    named = {item["name"]: shape for item, shape in zip(report["items"], shapes)}
+    stem = os.path.basename(path).rsplit(".", 1)[0]
+    # The geometric set's elements transfer in order, one sub-shape each (surfaces as
+    # faces); faces of trimmed documents come as the shells of the surface model, in order.
+    shapes = items_of(reader.OneShape())
+    is_face = lambda s: s.ShapeType() == TopAbs_SHELL
+    faces = [s for s in shapes if is_face(s)]
+    others = [s for s in shapes if not is_face(s)]
+    face_items = [i for i in report["items"] if i["kind"] == "face"]
+    other_items = [i for i in report["items"] if i["kind"] != "face"]
+    if len(faces) != len(face_items) or len(others) != len(other_items):
+        return [(False, f"{path}: {len(faces)} faces and {len(others)} other shapes transferred for "
+                 f"{len(face_items)} faces and {len(other_items)} other items")]
+    named = {item["name"]: shape for item, shape in zip(face_items + other_items, faces + others)}
     results = []
     for item in report["items"]:
         pts = item["points"]
@@ -80,6 +97,9 @@ def judge(path, report_path):
             worst = max(worst, math.dist((q.X(), q.Y(), q.Z()), p))
         ok = worst <= limit
         results.append((ok, f"{path}: {item['name']} ({item['form']}): {len(pts)} parameters, max |OCC − splinekit| = {worst:.2e} (limit {limit:.2e})"))
+        if item["kind"] == "face":
+            e = TopExp_Explorer(named[item["name"]], TopAbs_FACE)
+            results.extend(check_face(stem, item, TopoDS.Face(e.Current())))
     return results
 
 

@@ -8,7 +8,10 @@ succeed with no unknown entity dropped silently), then evaluates each imported o
 parameters spread over OpenCASCADE's bounds of the matching edge or face. Every OCC edge
 and face must be matched by one imported object whose points agree within 1e-9 of the
 shape's size; trimmed faces must also agree with OCC's face classifier on which of the
-sampled parameters lie inside the face.
+sampled parameters lie inside the face, and the faces of AREA_CHECKED have OCC's area
+(BRepGProp) within 1e-3 of splinekit's (its imported document's trimmed region
+integrated with splinekit's own |S_u × S_v|; 400 rows are accurate to a few 1e-4 where a
+loop has a vertical tangent).
 
 usage: ocp_writes.py PATH/TO/splinekit WORKDIR
 Prints one line per shape and 'N passed, M failed'; exit 1 on any failure.
@@ -23,7 +26,10 @@ from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Surface
 from OCP.BRepAlgoAPI import BRepAlgoAPI_Cut
 from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace
 from OCP.BRepClass import BRepClass_FaceClassifier
-from OCP.BRepPrimAPI import BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCylinder
+from OCP.BRepPrimAPI import (BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCone, BRepPrimAPI_MakeCylinder, BRepPrimAPI_MakeSphere,
+                             BRepPrimAPI_MakeTorus)
+from OCP.BRepGProp import BRepGProp
+from OCP.GProp import GProp_GProps
 from OCP.BRepTools import BRepTools
 from OCP.GC import GC_MakeCircle
 from OCP.Geom import Geom_SphericalSurface, Geom_SurfaceOfLinearExtrusion, Geom_SurfaceOfRevolution
@@ -38,6 +44,7 @@ from OCP.TopExp import TopExp_Explorer
 from OCP.TopoDS import TopoDS
 from OCP.gp import gp_Ax1, gp_Ax2, gp_Ax3, gp_Dir, gp_Pnt, gp_Pnt2d
 
+from face_checks import region_area
 from verdicts import tally
 
 SAMPLES = 12
@@ -78,7 +85,22 @@ def shapes():
         ("extrusion", BRepBuilderAPI_MakeFace(extrusion, 0.0, 1.0, -1.0, 2.0, 1e-7).Face()),
         ("plate_with_hole", BRepAlgoAPI_Cut(plate, hole).Shape()),
         ("box", BRepPrimAPI_MakeBox(gp_Pnt(-1, -2, 0.5), 1.0, 2.0, 3.0).Shape()),
+        # Quadrics in a tilted placement, whole and in part (faces trimmed by angles; the
+        # whole sphere is one face bounded by a vertex loop).
+        ("sphere", BRepPrimAPI_MakeSphere(PLACEMENT, 1.5).Shape()),
+        ("sphere_part", BRepPrimAPI_MakeSphere(PLACEMENT, 1.5, -0.4, 1.0, 4.0).Shape()),
+        ("cone", BRepPrimAPI_MakeCone(PLACEMENT, 2.0, 0.5, 3.0, 5.0).Shape()),
+        ("cone_to_apex", BRepPrimAPI_MakeCone(PLACEMENT, 1.2, 0.0, 2.0).Shape()),
+        ("torus", BRepPrimAPI_MakeTorus(PLACEMENT, 3.0, 1.0).Shape()),
+        ("torus_part", BRepPrimAPI_MakeTorus(PLACEMENT, 3.0, 1.0, 0.3, 2.0, 4.5).Shape()),
     ]
+
+
+# The shapes whose faces' areas are compared (OCC's BRepGProp against splinekit's
+# integration of its imported document).
+AREA_CHECKED = ("sphere", "sphere_part", "cone", "cone_to_apex", "torus", "torus_part", "plate_with_hole")
+
+PLACEMENT = gp_Ax2(gp_Pnt(1, -2, 0.5), gp_Dir(0, 0.6, 0.8), gp_Dir(1, 0, 0))
 
 
 def write(shape, path):
@@ -198,6 +220,46 @@ def match_face(binary, workdir, docs, used, points, inside):
     return best
 
 
+def run_json(binary, args, doc):
+    return json.loads(run(binary, args, stdin=json.dumps(doc)).stdout)
+
+
+def splinekit_area(binary, doc):
+    """The area of an imported surface document by splinekit's own evaluation: its
+    trimmed region (the loops, 2048 points each by `splinekit eval`, inside the domain's
+    rectangle when there is no outer loop) integrated by face_checks.region_area, with
+    |S_u × S_v| from `splinekit eval --derivatives 1` (in batches of 2000 parameters)."""
+    surface = doc["surface"] if doc["type"] == "trimmed" else doc
+    loops = []
+    if doc["type"] == "trimmed":
+        for l in ([doc["outer"]] if "outer" in doc else []) + doc.get("holes", []):
+            pts = run_json(binary, ["eval", "-", "--samples", "2049"], l)["points"][:-1]
+            loops.append([tuple(p) for p in pts])
+    if doc["type"] != "trimmed" or "outer" not in doc:
+        corners = run_json(binary, ["eval", "-", "--grid", "2,2"], surface)["params"]
+        (u0, v0), (u1, v1) = corners[0], corners[-1]
+        loops.insert(0, [(u0, v0), (u1, v0), (u1, v1), (u0, v1)])
+
+    def jacobians(nodes):
+        out = []
+        for k in range(0, len(nodes), 2000):
+            batch = nodes[k:k + 2000]
+            at = ",".join(f"{u!r}:{v!r}" for u, v in batch)
+            got = run_json(binary, ["eval", "-", "--at", at, "--derivatives", "1"], surface)["partials"]
+            for a, b in zip(got["u"], got["v"]):
+                c = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+                out.append(math.sqrt(sum(x * x for x in c)))
+        return out
+
+    return region_area(jacobians, loops, rows=400)
+
+
+def occ_area(face):
+    props = GProp_GProps()
+    BRepGProp.SurfaceProperties_s(face, props, 1e-10)
+    return props.Mass()
+
+
 def judge(binary, workdir, name, shape):
     step = os.path.join(workdir, f"{name}.step")
     write(shape, step)
@@ -217,6 +279,11 @@ def judge(binary, workdir, name, shape):
             _, points, inside = face_samples(item)
             worst, wrong, index = match_face(binary, workdir, docs, used, points, inside)
             note = f", inside/outside disagreements {wrong} of {len(points)}"
+            if index is not None and name in AREA_CHECKED:
+                occ, ours = occ_area(item), splinekit_area(binary, docs[index])
+                rel = abs(occ - ours) / occ
+                note += f", area OCC {occ:.8g} splinekit {ours:.8g} (rel {rel:.1e}, limit 1e-3)"
+                wrong += rel > 1e-3
         limit = 1e-9 * size_of(points)
         if index is None:
             results.append((False, f"{name}: no imported object matches an OCC {kind}"))

@@ -8,6 +8,7 @@
 
 mod from_curves;
 mod nets;
+mod placed;
 mod trimmed;
 
 use serde_json::Value;
@@ -18,6 +19,7 @@ use splinekit::surface::model::{
 pub use crate::blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, RuledDoc, SweepDoc};
 pub use nets::{BSplineSurfaceDoc, BezierSurfaceDoc, NurbsSurfaceDoc};
+pub use placed::PlacedDoc;
 pub use trimmed::TrimmedDoc;
 
 use crate::dimension::Surfaces;
@@ -71,6 +73,8 @@ document_kinds! {
         Sweep(SweepDoc) = "sweep",
         /// Trimmed surface.
         Trimmed(TrimmedDoc) = "trimmed",
+        /// A surface moved rigidly into a frame.
+        Placed(PlacedDoc) = "placed",
         /// Blending-spline surface.
         BlendingSplineSurface(BlendingSplineSurfaceDoc) = "blending_spline_surface",
     }

@@ -2,10 +2,13 @@
 //! `STEPControl_Reader`) accept and transfer: header, application protocol, one product
 //! with its definition and shape, millimetre/radian units with an uncertainty, and a
 //! `GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION` holding one `GEOMETRIC_SET` of
-//! every item, each named after its object. Every item is bounded (B-splines, trimmed
-//! curves, rectangular trimmed surfaces), as geometric sets require.
+//! every curve and surface, each named after its object, and faces (trimmed surfaces) in
+//! the open shells of a `MANIFOLD_SURFACE_SHAPE_REPRESENTATION`. Every set item is bounded
+//! (B-splines, trimmed curves, rectangular trimmed surfaces), as geometric sets require.
 
-use crate::geometry::{Axes, Curve, Geometry, Item, P3, SplineCurve, SplineSurface, Surface, knot_multiplicities};
+use crate::geometry::{
+    Axes, Curve, FaceGeometry, Geometry, Item, P3, SplineCurve, SplineSurface, Surface, knot_multiplicities,
+};
 use crate::part21::writer::{HeaderInfo, Part21Writer};
 use crate::part21::{Param, Record};
 
@@ -37,12 +40,14 @@ fn rec(name: &str, params: Vec<Param>) -> Record {
 /// Writes geometry entities into a [`Part21Writer`].
 pub struct GeometryWriter<'a> {
     w: &'a mut Part21Writer,
+    /// The parameter-plane context of pcurves, written with the first one.
+    parameter_context: Option<u64>,
 }
 
 impl<'a> GeometryWriter<'a> {
     /// Writes into `w`.
     pub fn new(w: &'a mut Part21Writer) -> Self {
-        GeometryWriter { w }
+        GeometryWriter { w, parameter_context: None }
     }
 
     fn point(&mut self, p: &[f64]) -> u64 {
@@ -198,6 +203,60 @@ impl<'a> GeometryWriter<'a> {
     }
 }
 
+impl GeometryWriter<'_> {
+    /// The 2-D `PARAMETRIC_REPRESENTATION_CONTEXT` of pcurves (one per file).
+    fn parameter_context(&mut self) -> u64 {
+        if let Some(id) = self.parameter_context {
+            return id;
+        }
+        let id = self.w.add_complex(vec![
+            rec("GEOMETRIC_REPRESENTATION_CONTEXT", vec![Param::Integer(2)]),
+            rec("PARAMETRIC_REPRESENTATION_CONTEXT", vec![]),
+            rec("REPRESENTATION_CONTEXT", vec![s("2D SPACE"), s("")]),
+        ]);
+        self.parameter_context = Some(id);
+        id
+    }
+
+    /// Writes a face named `name` (`ADVANCED_FACE` with its bounds, edges, vertices, 3-D
+    /// curves and pcurves); returns its `#id`.
+    pub fn face(&mut self, f: &FaceGeometry, name: &str) -> u64 {
+        let surface = self.surface(&f.surface, "");
+        let vertices: Vec<u64> = f
+            .vertices
+            .iter()
+            .map(|p| {
+                let pt = self.point(p);
+                self.w.add("VERTEX_POINT", vec![s(""), r(pt)])
+            })
+            .collect();
+        let ctx = self.parameter_context();
+        let mut bounds = Vec::with_capacity(f.loops.len());
+        for l in &f.loops {
+            let mut oriented = Vec::with_capacity(l.edges.len());
+            for edge in &l.edges {
+                let c3 = self.curve(&edge.curve, "");
+                let c2 = self.curve(&edge.pcurve, "");
+                let rep = self.w.add("DEFINITIONAL_REPRESENTATION", vec![s(""), Param::List(vec![r(c2)]), r(ctx)]);
+                let pcurve = self.w.add("PCURVE", vec![s(""), r(surface), r(rep)]);
+                let geometry =
+                    self.w.add("SURFACE_CURVE", vec![s(""), r(c3), Param::List(vec![r(pcurve)]), e("PCURVE_S1")]);
+                let ec = self.w.add(
+                    "EDGE_CURVE",
+                    vec![s(""), r(vertices[edge.start]), r(vertices[edge.end]), r(geometry), flag(true)],
+                );
+                oriented.push(r(self
+                    .w
+                    .add("ORIENTED_EDGE", vec![s(""), Param::Derived, Param::Derived, r(ec), flag(true)])));
+            }
+            let lp = self.w.add("EDGE_LOOP", vec![s(""), Param::List(oriented)]);
+            let kind = if l.outer { "FACE_OUTER_BOUND" } else { "FACE_BOUND" };
+            bounds.push(r(self.w.add(kind, vec![s(""), r(lp), flag(l.orientation)])));
+        }
+        self.w.add("ADVANCED_FACE", vec![s(name), Param::List(bounds), r(surface), flag(true)])
+    }
+}
+
 /// The ids of the shared context entities.
 struct Context {
     geometric_context: u64,
@@ -251,25 +310,42 @@ fn write_context(w: &mut Part21Writer, product_name: &str) -> Context {
     Context { geometric_context, product_shape }
 }
 
-/// The complete file text of `items` (one product named `product_name`).
+/// The complete file text of `items` (one product named `product_name`): curves and
+/// surfaces in a geometric set of a `GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION`,
+/// faces each in an `OPEN_SHELL` of one `SHELL_BASED_SURFACE_MODEL` of a
+/// `MANIFOLD_SURFACE_SHAPE_REPRESENTATION`, both representations of the product's shape.
 pub fn write_step(items: &[Item], product_name: &str, header: &HeaderInfo) -> String {
     let mut w = Part21Writer::new(header);
     let ctx = write_context(&mut w, product_name);
-    let mut ids = Vec::with_capacity(items.len());
+    let (mut ids, mut shells) = (Vec::with_capacity(items.len()), Vec::new());
     {
         let mut g = GeometryWriter::new(&mut w);
         for item in items {
-            ids.push(r(match &item.geometry {
-                Geometry::Curve(c) => g.curve(c, &item.name),
-                Geometry::Surface(sf) => g.surface(sf, &item.name),
-            }));
+            match &item.geometry {
+                Geometry::Curve(c) => ids.push(r(g.curve(c, &item.name))),
+                Geometry::Surface(sf) => ids.push(r(g.surface(sf, &item.name))),
+                Geometry::Face(f) => {
+                    let face = g.face(f, &item.name);
+                    shells.push(r(g.w.add("OPEN_SHELL", vec![s(&item.name), Param::List(vec![r(face)])])));
+                }
+            }
         }
     }
-    let set = w.add("GEOMETRIC_SET", vec![s(product_name), Param::List(ids)]);
-    let rep = w.add(
-        "GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION",
-        vec![s(product_name), Param::List(vec![r(set)]), r(ctx.geometric_context)],
-    );
-    w.add("SHAPE_DEFINITION_REPRESENTATION", vec![r(ctx.product_shape), r(rep)]);
+    if !ids.is_empty() || shells.is_empty() {
+        let set = w.add("GEOMETRIC_SET", vec![s(product_name), Param::List(ids)]);
+        let rep = w.add(
+            "GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION",
+            vec![s(product_name), Param::List(vec![r(set)]), r(ctx.geometric_context)],
+        );
+        w.add("SHAPE_DEFINITION_REPRESENTATION", vec![r(ctx.product_shape), r(rep)]);
+    }
+    if !shells.is_empty() {
+        let model = w.add("SHELL_BASED_SURFACE_MODEL", vec![s(product_name), Param::List(shells)]);
+        let rep = w.add(
+            "MANIFOLD_SURFACE_SHAPE_REPRESENTATION",
+            vec![s(product_name), Param::List(vec![r(model)]), r(ctx.geometric_context)],
+        );
+        w.add("SHAPE_DEFINITION_REPRESENTATION", vec![r(ctx.product_shape), r(rep)]);
+    }
     w.finish()
 }

@@ -189,13 +189,53 @@ pub enum Surface {
     },
 }
 
-/// A curve or a surface.
+/// An edge of a face: a 3-D curve between two vertices and the same curve in the face
+/// surface's (u, v) parameters (`PCURVE`), both over one parameter interval (the 3-D curve
+/// runs from `start` to `end` as the parameter increases).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FaceEdge {
+    /// Index of the start vertex in [`FaceGeometry::vertices`].
+    pub start: usize,
+    /// Index of the end vertex (equal to `start` for a closed edge).
+    pub end: usize,
+    /// The 3-D curve.
+    pub curve: Curve,
+    /// The 2-D curve in the surface's parameter plane, same parameter as `curve`.
+    pub pcurve: Curve,
+}
+
+/// One bound of a face: edges end to end, each used forwards, forming a closed loop.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FaceLoop {
+    /// `FACE_OUTER_BOUND` (else `FACE_BOUND`, a hole).
+    pub outer: bool,
+    /// The bound's orientation flag: `true` when the edges as written already run with the
+    /// face's material on their left in (u, v) (outer counter-clockwise, holes clockwise).
+    pub orientation: bool,
+    /// The edges in order.
+    pub edges: Vec<FaceEdge>,
+}
+
+/// `ADVANCED_FACE`: a region of a surface bounded by loops of edges.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FaceGeometry {
+    /// The face's surface (an unbounded or B-spline surface, never rectangular trimmed).
+    pub surface: Surface,
+    /// Vertex points shared by the edges.
+    pub vertices: Vec<P3>,
+    /// The bounds.
+    pub loops: Vec<FaceLoop>,
+}
+
+/// A curve, a surface or a bounded face.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Geometry {
     /// A curve.
     Curve(Curve),
     /// A surface.
     Surface(Surface),
+    /// A face (written in a shell of a surface model).
+    Face(FaceGeometry),
 }
 
 /// One named object of a STEP file.

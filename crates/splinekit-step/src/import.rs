@@ -468,11 +468,18 @@ impl Reader<'_> {
         let mut outer = None;
         for bound in refs(param(inst, 1)?)? {
             let b = self.get(bound)?;
+            let forward = boolean(param(&b, 2)?)?;
+            let lp = self.get(reference(param(&b, 1)?)?)?;
+            if lp.records[0].name == "VERTEX_LOOP" {
+                // A bound that is one point (a pole of a sphere's face): in (u, v) it is the
+                // pole's line, which the loops' gap bridging supplies.
+                let vertex = self.get(reference(param(&lp, 1)?)?)?;
+                self.get(reference(param(&vertex, 1)?)?)?;
+                continue;
+            }
             if b.records[0].name == "FACE_OUTER_BOUND" {
                 outer = Some(loops.len());
             }
-            let forward = boolean(param(&b, 2)?)?;
-            let lp = self.get(reference(param(&b, 1)?)?)?;
             if lp.records[0].name != "EDGE_LOOP" {
                 return Err(Unsupported::Type(format!("face bound {}", lp.records[0].name)));
             }
@@ -489,12 +496,32 @@ impl Reader<'_> {
                 }
                 let same_sense = boolean(param(&edge, 4)?)?;
                 let (space, pcurves) = self.pcurves_on(reference(param(&edge, 3)?)?, surface_id)?;
-                let (t0, t1) = (parameter_on(&space, ends[0])?, parameter_on(&space, ends[1])?);
-                let (lo, mut hi) = if same_sense { (t0, t1) } else { (t1, t0) };
-                if hi <= lo && matches!(space, Curve::Circle { .. } | Curve::Ellipse { .. }) {
-                    hi += std::f64::consts::TAU;
-                }
-                let trim = |c: &Curve| Curve::Trimmed { basis: Box::new(c.clone()), start: lo, end: hi };
+                let one_vertex = reference(param(&edge, 1)?)? == reference(param(&edge, 2)?)?;
+                let (lo, hi) = match &space {
+                    // A closed spline edge (one vertex) runs over the whole curve.
+                    Curve::Spline(s) if one_vertex => (s.knots[s.degree], s.knots[s.knots.len() - 1 - s.degree]),
+                    _ => {
+                        let (t0, t1) = (parameter_on(&space, ends[0])?, parameter_on(&space, ends[1])?);
+                        let (lo, mut hi) = if same_sense { (t0, t1) } else { (t1, t0) };
+                        if hi <= lo && matches!(space, Curve::Circle { .. } | Curve::Ellipse { .. }) {
+                            hi += std::f64::consts::TAU;
+                        }
+                        (lo, hi)
+                    }
+                };
+                // A generatrix of a cone: its 3-D line runs by length, its pcurve (a unit
+                // line along v, as OpenCASCADE writes it) by the height v = t cos α.
+                let generatrix_scale = match (&surface, &space) {
+                    (Surface::Cone { semi_angle, .. }, Curve::Line { .. }) => semi_angle.cos(),
+                    _ => 1.0,
+                };
+                let trim = |c: &Curve| {
+                    let scale = match c {
+                        Curve::Line { direction, .. } if direction[0] == 0.0 => generatrix_scale,
+                        _ => 1.0,
+                    };
+                    Curve::Trimmed { basis: Box::new(c.clone()), start: lo * scale, end: hi * scale }
+                };
                 pieces.push((trim(&pcurves[0]), pcurves.get(1).map(|c| (edge_id, trim(c))), oriented == same_sense));
             }
             if !forward {

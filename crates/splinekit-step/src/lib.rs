@@ -16,3 +16,4 @@ pub mod export;
 pub mod geometry;
 pub mod import;
 pub mod kernel;
+pub mod placement;

@@ -30,3 +30,26 @@ fn spline_documents_come_back_exactly() {
         assert_eq!(round_trip(json), original, "{json}");
     }
 }
+
+/// A sphere and a torus in a placement leave as SPHERICAL_SURFACE / TOROIDAL_SURFACE with
+/// their AXIS2_PLACEMENT_3D and come back as the same `placed` documents (the reference
+/// direction made orthogonal to the axis, as the placement reads it).
+#[test]
+fn placed_spheres_and_tori_come_back_placed() {
+    for (json, ty) in [
+        (
+            r#"{"type":"placed","surface":{"type":"sphere","radius":1.5},"origin":[1,-2,0.5],"axis":[0,0.6,0.8],"ref_direction":[1,0,0]}"#,
+            "SPHERICAL_SURFACE",
+        ),
+        (
+            r#"{"type":"placed","surface":{"type":"torus","major_radius":3,"minor_radius":1},"origin":[0,1,2],"axis":[0,0,1],"ref_direction":[0,1,0]}"#,
+            "TOROIDAL_SURFACE",
+        ),
+    ] {
+        let doc = SceneOrShape::from_json(json).unwrap();
+        let (text, _) = export_document(&doc, "t", 1e-6, &HeaderInfo::default()).unwrap();
+        assert!(text.contains(&format!("={ty}(")), "{text}");
+        let SceneOrShape::Shape(original) = doc else { panic!() };
+        assert_eq!(round_trip(json), original, "{json}");
+    }
+}

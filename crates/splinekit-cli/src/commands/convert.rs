@@ -5,7 +5,8 @@
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use serde_json::{Value, json};
-use splinekit_scene::{SceneOrShape, ShapeDocument};
+use splinekit_scene::{SceneOrShape, ShapeDocument, SurfaceDocument};
+use splinekit_step::documents::faces::loop_samples;
 use splinekit_step::documents::{Exported, Form, export_document, import_items, samples};
 use splinekit_step::export::write_step;
 use splinekit_step::part21::StepFile;
@@ -25,7 +26,8 @@ pub struct ConvertArgs {
     #[arg(long, default_value_t = 1e-6)]
     pub tolerance: f64,
     /// Also write a JSON report: per object its form, measured deviation, parameter map and
-    /// 128 samples (parameters and splinekit's points), for checking the file elsewhere.
+    /// 128 samples (parameters and splinekit's points), and for trimmed surfaces their loops
+    /// in the STEP surface's parameters, for checking the file elsewhere.
     #[arg(long)]
     pub report: Option<String>,
 }
@@ -115,16 +117,29 @@ fn json_to_step(args: &ConvertArgs) -> Result<()> {
         for (shape, e) in shapes.iter().zip(&exported) {
             let count = if matches!(shape, ShapeDocument::Curve(_)) { 128 } else { 12 };
             let s = samples(shape, e, count).map_err(|e| anyhow!("{e}"))?;
-            items.push(json!({
+            let kind = match shape {
+                ShapeDocument::Curve(_) => "curve",
+                ShapeDocument::Surface(SurfaceDocument::Trimmed(_)) => "face",
+                ShapeDocument::Surface(_) => "surface",
+            };
+            let mut item = json!({
                 "name": e.item.name,
-                "kind": if matches!(shape, ShapeDocument::Curve(_)) { "curve" } else { "surface" },
+                "kind": kind,
                 "form": match e.form { Form::Exact => "exact", Form::ExactPolynomial { .. } => "exact_polynomial", Form::Approximated => "approximated" },
                 "max_deviation": e.max_deviation,
                 "tolerance": e.tolerance,
                 "params": s.iter().map(|s| [s.param.0, s.param.1]).collect::<Vec<_>>(),
                 "step_params": s.iter().map(|s| [s.step_param.0, s.step_param.1]).collect::<Vec<_>>(),
                 "points": s.iter().map(|s| s.point).collect::<Vec<_>>(),
-            }));
+                "map": { "u": [e.map.u.0, e.map.u.1], "v": [e.map.v.0, e.map.v.1] },
+            });
+            if let ShapeDocument::Surface(SurfaceDocument::Trimmed(t)) = shape {
+                let loops = loop_samples(t, &e.map, 2048).map_err(|e| anyhow!("{e}"))?;
+                item["loops"] =
+                    json!(loops.iter().map(|l| l.iter().map(|p| [p.0, p.1]).collect::<Vec<_>>()).collect::<Vec<_>>());
+                item["has_outer"] = json!(t.outer.is_some());
+            }
+            items.push(item);
         }
         let report = json!({ "items": items });
         std::fs::write(path, serde_json::to_string(&report)?)

@@ -7,7 +7,8 @@
 //! `LINE` trimmed by length (t' = |to − from| t), an extrusion has a unit direction
 //! (v' = |direction| v); a plane with orthogonal axes U, V is `PLANE` with u' = |U| u,
 //! v' = |V| v (a plane with skew axes is its exact bilinear B-spline instead);
-//! a cylinder of height h has v' = h v. A cone is the exact `SURFACE_OF_REVOLUTION` of its
+//! a cylinder of height h has v' = h v. A `placed` document is its surface's export moved
+//! rigidly into the placement (see [`crate::placement`]). A cone is the exact `SURFACE_OF_REVOLUTION` of its
 //! straight generatrix (parameters kept). 2-D documents lie in the plane z = 0.
 
 use splinekit::Point;
@@ -24,6 +25,8 @@ use crate::approximate::{
 };
 use crate::error::{Result, StepError};
 use crate::geometry::{Axes, Curve, Geometry, Item, P3, SplineCurve, SplineSurface, Surface, norm};
+use crate::placement::Placement;
+use splinekit_scene::surfaces::PlacedDoc;
 
 /// u' = a·u + b per direction: the STEP parameter of the document's parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -306,7 +309,7 @@ fn spline_surface(
     Ok(SplineSurface { degrees: (p, q), knots_u: ku, knots_v: kv, points: pts, weights: w, closed: (pu, pv) })
 }
 
-fn kernel_surface(doc: &SurfaceDocument) -> Result<Box<dyn KernelSurface<3>>> {
+pub(crate) fn kernel_surface(doc: &SurfaceDocument) -> Result<Box<dyn KernelSurface<3>>> {
     match doc.dimension().map_err(|e| plain("document", e))? {
         3 => doc.build_in::<3>().map_err(|e| plain("document", e)),
         d => Err(StepError::plain(format!("document: STEP surfaces are 3-D, got a {d}-D surface"))),
@@ -495,12 +498,13 @@ fn fitted_surface(
 
 /// Exports a surface document; `relative_tolerance` scales with the surface's size.
 pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64) -> Result<Exported> {
-    if let SurfaceDocument::Trimmed(_) = doc {
-        return Err(StepError::plain(
-            "type: trimmed surfaces are not exported yet (bounded faces with trimming loops are still to come)",
-        ));
+    if let SurfaceDocument::Trimmed(t) = doc {
+        return super::faces::export_trimmed(t, name, relative_tolerance);
     }
     let kernel = kernel_surface(doc)?;
+    if let SurfaceDocument::Placed(p) = doc {
+        return placed_surface(p, name, relative_tolerance);
+    }
     let tolerance = relative_tolerance * surface_size(kernel.as_ref());
     let domain = (kernel.domain_u(), kernel.domain_v());
     let make = |surface: Surface, form: Form, max_deviation: f64, map: ParamMap| Exported {
@@ -521,21 +525,43 @@ pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64
     Ok(make(Surface::Spline(fitted.spline), form, fitted.max_deviation, ParamMap::IDENTITY))
 }
 
+/// A `placed` document: its surface's export carried rigidly into the placement (same
+/// form, deviation and parameter map; the document has been built, so its frame is valid).
+fn placed_surface(doc: &PlacedDoc, name: &str, relative_tolerance: f64) -> Result<Exported> {
+    let within = |e: StepError| StepError::plain(format!("surface: {}", e.message));
+    let inner = export_surface(&doc.surface, name, relative_tolerance).map_err(within)?;
+    let Geometry::Surface(s) = &inner.item.geometry else {
+        return Err(StepError::plain("surface: a trimmed surface cannot be placed (place its surface instead)"));
+    };
+    let placement = Placement::of_frame(&doc.origin, &doc.axis, &doc.ref_direction)?;
+    let item = Item { name: name.to_string(), geometry: Geometry::Surface(placement.surface(s)) };
+    Ok(Exported { item, ..inner })
+}
+
 /// Whether a document leaves exactly (its own STEP entity, or a B-spline equal to it):
 /// what [`export_shape`] would report as [`Form::Exact`] or [`Form::ExactPolynomial`],
 /// decided without fitting anything.
 pub fn exports_exactly(doc: &ShapeDocument) -> bool {
     match doc {
         ShapeDocument::Curve(c) => curve_exports_exactly(c),
-        ShapeDocument::Surface(s) => match s {
-            SurfaceDocument::Revolution(d) => curve_exports_exactly(&d.curve),
-            SurfaceDocument::Extrusion(d) => curve_exports_exactly(&d.curve),
-            SurfaceDocument::Trimmed(_) => false,
-            other => {
-                matches!(elementary_surface(other), Ok(Some(_)))
-                    || matches!(polynomial_blending_surface(other), Ok(Some(_)))
-            }
-        },
+        ShapeDocument::Surface(s) => surface_exports_exactly(s),
+    }
+}
+
+fn surface_exports_exactly(doc: &SurfaceDocument) -> bool {
+    match doc {
+        SurfaceDocument::Revolution(d) => curve_exports_exactly(&d.curve),
+        SurfaceDocument::Extrusion(d) => curve_exports_exactly(&d.curve),
+        SurfaceDocument::Trimmed(t) => {
+            super::faces::trimmed_exports_exactly(t, surface_exports_exactly(&t.surface), curve_exports_exactly)
+        }
+        SurfaceDocument::Placed(p) => {
+            !matches!(*p.surface, SurfaceDocument::Trimmed(_)) && surface_exports_exactly(&p.surface)
+        }
+        other => {
+            matches!(elementary_surface(other), Ok(Some(_)))
+                || matches!(polynomial_blending_surface(other), Ok(Some(_)))
+        }
     }
 }
 

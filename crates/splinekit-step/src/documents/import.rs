@@ -4,16 +4,17 @@
 //! their parametrisation up to an affine map per direction; circles and ellipses at the
 //! world frame stay `circle`/`ellipse`, elsewhere they become exact rational arcs (same
 //! points, rational parametrisation); quadrics at the world frame with the export's
-//! ranges stay model surfaces, elsewhere they become exact revolutions. Faces on planes,
-//! splines, cylinders, revolutions and extrusions become `trimmed` documents whose loops
-//! are their pcurves joined into one exact B-spline (NURBS) loop each.
+//! ranges stay model surfaces, placed spheres and tori over their whole domain become
+//! `placed` ones, others exact revolutions. Faces on planes, splines, cylinders, cones,
+//! spheres, tori, revolutions and extrusions become `trimmed` documents whose loops are
+//! their pcurves joined into one exact B-spline (NURBS) loop each.
 
 use splinekit::Point;
 use splinekit::curve::{CircleFrame, Curve as KernelCurve, NurbsCurve};
 use splinekit_scene::curves::{BSplineDoc, CircleDoc, EllipseDoc, LineDoc, NurbsDoc};
 use splinekit_scene::surfaces::{
-    BSplineSurfaceDoc, CylinderDoc, ExtrusionDoc, NurbsSurfaceDoc, PlaneDoc, RevolutionDoc, SphereDoc, TorusDoc,
-    TrimmedDoc,
+    BSplineSurfaceDoc, CylinderDoc, ExtrusionDoc, NurbsSurfaceDoc, PlacedDoc, PlaneDoc, RevolutionDoc, SphereDoc,
+    TorusDoc, TrimmedDoc,
 };
 use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
 use std::f64::consts::{FRAC_PI_2, TAU};
@@ -52,8 +53,7 @@ pub fn import_items(file: &StepFile) -> Result<ImportedDocuments> {
         };
         match (converted, geometry) {
             (Some(doc), Some(geometry)) => out.items.push((Item { name, geometry }, doc)),
-            // Faces travel as their `trimmed` documents; STEP → STEP writes their surfaces
-            // (face export is still to come).
+            // Faces travel as their `trimmed` documents, and STEP → STEP writes those.
             (Some(doc), None) => out.items.push((face_item(&name, &doc)?, doc)),
             (None, _) => *skipped.entry(format!("{label} (no document form)")).or_default() += 1,
         }
@@ -82,10 +82,10 @@ fn what(g: &GeometryOrFace) -> String {
     }
 }
 
-/// A face's STEP item for STEP → STEP: its document's surface, exported.
+/// A face's STEP item for STEP → STEP: its `trimmed` document, exported as a face.
 fn face_item(name: &str, doc: &ShapeDocument) -> Result<Item> {
-    let ShapeDocument::Surface(SurfaceDocument::Trimmed(t)) = doc else { unreachable!("faces are trimmed") };
-    Ok(crate::documents::export_surface(&t.surface, name, 1e-6)?.item)
+    let ShapeDocument::Surface(s) = doc else { unreachable!("faces are trimmed surfaces") };
+    Ok(crate::documents::export_surface(s, name, 1e-6)?.item)
 }
 
 fn v3(p: P3) -> Vec<f64> {
@@ -289,8 +289,19 @@ fn revolution(axes: &Axes, profile: CurveDocument, angle: f64) -> SurfaceDocumen
     })
 }
 
+/// A model surface (sphere, torus: the parametrisation of STEP's) in a placement.
+fn placed(axes: &Axes, surface: SurfaceDocument) -> SurfaceDocument {
+    SurfaceDocument::Placed(PlacedDoc {
+        surface: Box::new(surface),
+        origin: v3(axes.origin),
+        axis: v3(axes.z),
+        ref_direction: v3(axes.x),
+    })
+}
+
 /// A bounded quadric as a document: the model surface when it sits where the export puts
-/// it, else an exact revolution of its profile (line or arc) starting at u₀.
+/// it, a placed sphere or torus over its whole domain, else an exact revolution of its
+/// profile (line or arc) starting at u₀.
 fn quadric_doc(basis: &Surface, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> Result<Option<SurfaceDocument>> {
     let full = u0 == 0.0 && u1 == TAU;
     Ok(Some(match basis {
@@ -302,6 +313,12 @@ fn quadric_doc(basis: &Surface, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> R
         }
         Surface::Torus { axes, major_radius, minor_radius } if is_world(axes) && full && (v0, v1) == (0.0, TAU) => {
             SurfaceDocument::Torus(TorusDoc { major_radius: *major_radius, minor_radius: *minor_radius })
+        }
+        Surface::Sphere { axes, radius } if full && (v0, v1) == (-FRAC_PI_2, FRAC_PI_2) => {
+            placed(axes, SurfaceDocument::Sphere(SphereDoc { radius: *radius }))
+        }
+        Surface::Torus { axes, major_radius, minor_radius } if full && (v0, v1) == (0.0, TAU) => {
+            placed(axes, SurfaceDocument::Torus(TorusDoc { major_radius: *major_radius, minor_radius: *minor_radius }))
         }
         Surface::Cylinder { axes, radius } | Surface::Cone { axes, radius, .. } => {
             let slope = if let Surface::Cone { semi_angle, .. } = basis { semi_angle.tan() } else { 0.0 };
@@ -502,11 +519,11 @@ fn translated(doc: CurveDocument, offset: P3) -> Option<CurveDocument> {
 /// A face's surface as a document and the map of its (u, v) onto the document's.
 type FaceSurface = (SurfaceDocument, Box<dyn Fn(Point<2>) -> Point<2>>);
 
-/// The document of a face's surface: splines and revolutions keep their parameters; a
-/// plane spans the loops' box (loops map onto [0, 1]²); a cylinder is the exact revolution
-/// of a line and an extrusion its profile moved to the loops' lowest v, both spanning the
-/// loops' v range (v maps onto [0, 1]). `None` for other surfaces (cones, spheres, tori:
-/// no document with their parametrisation and placement).
+/// The document of a face's surface: splines and revolutions keep their parameters, and so
+/// do spheres and tori (`placed` model surfaces, whose parametrisation is STEP's); a plane
+/// spans the loops' box (loops map onto [0, 1]²); a cylinder or cone is the exact
+/// revolution of its generatrix and an extrusion its profile moved to the loops' lowest v,
+/// both spanning the loops' v range (v maps onto [0, 1]). `None` for other surfaces.
 fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
     let identity = |q: Point<2>| q;
     let span_v = |(lo, hi): (Point<2>, Point<2>)| {
@@ -525,9 +542,21 @@ fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
             let doc = RevolutionDoc { curve: Box::new(c), axis_point: v3(*axis_origin), axis: v3(*axis), angle: TAU };
             (SurfaceDocument::Revolution(doc), Box::new(identity))
         }
-        Surface::Cylinder { axes, radius } => {
+        Surface::Sphere { axes, radius } => {
+            (placed(axes, SurfaceDocument::Sphere(SphereDoc { radius: *radius })), Box::new(identity))
+        }
+        Surface::Torus { axes, major_radius, minor_radius } => {
+            let torus = TorusDoc { major_radius: *major_radius, minor_radius: *minor_radius };
+            (placed(axes, SurfaceDocument::Torus(torus)), Box::new(identity))
+        }
+        Surface::Cylinder { axes, radius } | Surface::Cone { axes, radius, .. } => {
             let Some(b) = loops_box(f)? else { return Ok(None) };
-            let line = LineDoc { from: v3(axes.at(*radius, 0.0, b.0[1])), to: v3(axes.at(*radius, 0.0, b.1[1])) };
+            // The generatrix at u = 0: o + (r + v tan α) x + v z, v the height (ISO
+            // 10303-42's CONICAL_SURFACE, in which OpenCASCADE writes its pcurves; α = 0
+            // for the cylinder).
+            let slope = if let Surface::Cone { semi_angle, .. } = &f.surface { semi_angle.tan() } else { 0.0 };
+            let at = |v: f64| v3(axes.at(radius + v * slope, 0.0, v));
+            let line = LineDoc { from: at(b.0[1]), to: at(b.1[1]) };
             let doc = RevolutionDoc {
                 curve: Box::new(CurveDocument::Line(line)),
                 axis_point: v3(axes.origin),
@@ -617,9 +646,40 @@ fn choose_seam_sides(parts: &mut [NurbsCurve<2>], twins: Vec<Option<(u64, NurbsC
     parts.clone_from_slice(&chosen);
 }
 
-/// A face as a `trimmed` document.
+/// The map of a face's (u, v) followed by the shift of a whole number of turns that brings
+/// its loops' lowest u (and v, around a torus' tube) into [0, 2π) where the document's
+/// angle is periodic: STEP writers place faces at any angle (OpenCASCADE's cones run over
+/// u ∈ [−α, 0]), the documents' domains start at 0. Loops across the seam stay as they are.
+fn into_domain(f: &Face, map: Box<dyn Fn(Point<2>) -> Point<2>>) -> Result<Box<dyn Fn(Point<2>) -> Point<2>>> {
+    let periodic = match &f.surface {
+        Surface::Torus { .. } => (true, true),
+        Surface::Sphere { .. } | Surface::Cylinder { .. } | Surface::Cone { .. } | Surface::Revolution { .. } => {
+            (true, false)
+        }
+        _ => (false, false),
+    };
+    let Some((lo, _)) = loops_box(f)? else { return Ok(map) };
+    let low = map(lo);
+    let turns = |x: f64, on: bool| if on { -((x + 1e-9) / TAU).floor() * TAU } else { 0.0 };
+    let shift = Point::<2>::new(turns(low[0], periodic.0), turns(low[1], periodic.1));
+    if shift == Point::<2>::zeros() {
+        return Ok(map);
+    }
+    Ok(Box::new(move |q| map(q) + shift))
+}
+
+/// A face as a `trimmed` document; a face without edge loops (a whole sphere, bounded by
+/// a vertex loop at a pole) or bounded by seams alone (a whole torus) as its surface's
+/// document.
 fn face_doc(f: &Face) -> Result<Option<SurfaceDocument>> {
     let Some((surface, map)) = face_surface(f)? else { return Ok(None) };
+    // No edge loop, or one made of seam edges only (a whole torus: its two seams, each
+    // used both ways): the face is the whole domain.
+    let only_seams = f.loops.len() == 1 && f.seam_twins[0].iter().all(Option::is_some);
+    if f.loops.is_empty() || only_seams {
+        return Ok(Some(surface));
+    }
+    let map = into_domain(f, map)?;
     let mut outer = None;
     let mut holes = Vec::new();
     for (i, l) in f.loops.iter().enumerate() {

@@ -2,6 +2,7 @@
 //! and scene documents, import of STEP items as shape documents.
 
 pub mod export;
+pub mod faces;
 
 pub use export::{
     Exported, Form, ParamMap, Sample, export_curve, export_shape, export_surface, exports_exactly, samples,

@@ -10,6 +10,7 @@ pub mod model;
 pub mod nurbs_surface;
 #[cfg(feature = "parallel")]
 pub mod parallel;
+pub mod placed;
 pub mod revolution;
 pub mod samples;
 pub mod surface_ops;
@@ -21,6 +22,7 @@ pub use bezier_surface::BezierSurface;
 pub use bspline_surface::BSplineSurface;
 pub use iso_curve::{Direction, IsoCurve};
 pub use nurbs_surface::NurbsSurface;
+pub use placed::PlacedSurface;
 pub use samples::SurfaceGridSamples;
 pub use traits::{Curvatures, FundamentalForms, Surface, TrimLoops, unit_normal};
 pub use trimmed::TrimmedSurface;

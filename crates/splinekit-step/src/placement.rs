@@ -1,0 +1,125 @@
+//! Rigid motions of STEP geometry: a curve or surface carried into a placement (the frame
+//! of an `AXIS2_PLACEMENT_3D`), parameters kept. Points map by p ↦ o + p₁x + p₂y + p₃z,
+//! directions by d ↦ d₁x + d₂y + d₃z; placements compose (their origin is a point, their
+//! axes directions), so every entity stays the same kind and keeps its parametrisation.
+
+use crate::error::{Result, StepError};
+use crate::geometry::{Axes, Curve, P3, SplineCurve, SplineSurface, Surface, dot, norm};
+
+/// The frame as a map of points and directions.
+#[derive(Debug, Clone, Copy)]
+pub struct Placement(pub Axes);
+
+impl Placement {
+    /// The frame of a document's `origin`, `axis` and `ref_direction`: z = axis/|axis|, x the
+    /// part of `ref_direction` orthogonal to z, normalised (errors name the field).
+    pub fn of_frame(origin: &[f64], axis: &[f64], ref_direction: &[f64]) -> Result<Placement> {
+        let three = |field: &str, v: &[f64]| -> Result<P3> {
+            match v {
+                [a, b, c] if v.iter().all(|x| x.is_finite()) => Ok([*a, *b, *c]),
+                _ => Err(StepError::plain(format!("{field}: expected 3 finite coordinates, got {v:?}"))),
+            }
+        };
+        let unit = |field: &str, v: P3| -> Result<P3> {
+            let n = norm(v);
+            if n > 0.0 {
+                Ok(v.map(|c| c / n))
+            } else {
+                Err(StepError::plain(format!("{field}: must be a non-zero vector not along the axis, got {v:?}")))
+            }
+        };
+        let z = unit("axis", three("axis", axis)?)?;
+        let d = unit("ref_direction", three("ref_direction", ref_direction)?)?;
+        let along = dot(d, z);
+        let x = unit("ref_direction", std::array::from_fn(|k| d[k] - along * z[k]))?;
+        Ok(Placement(Axes { origin: three("origin", origin)?, z, x }))
+    }
+
+    /// d₁x + d₂y + d₃z.
+    pub fn direction(&self, d: P3) -> P3 {
+        let (x, y, z) = (self.0.x, self.0.y(), self.0.z);
+        std::array::from_fn(|k| d[0] * x[k] + d[1] * y[k] + d[2] * z[k])
+    }
+
+    /// o + p₁x + p₂y + p₃z.
+    pub fn point(&self, p: P3) -> P3 {
+        let d = self.direction(p);
+        std::array::from_fn(|k| self.0.origin[k] + d[k])
+    }
+
+    fn point_vec(&self, p: &[f64]) -> Vec<f64> {
+        self.point([p[0], p.get(1).copied().unwrap_or(0.0), p.get(2).copied().unwrap_or(0.0)]).to_vec()
+    }
+
+    fn axes(&self, a: &Axes) -> Axes {
+        Axes { origin: self.point(a.origin), z: self.direction(a.z), x: self.direction(a.x) }
+    }
+
+    /// The curve moved into the placement.
+    pub fn curve(&self, c: &Curve) -> Curve {
+        match c {
+            Curve::Line { origin, direction } => Curve::Line {
+                origin: self.point_vec(origin),
+                direction: self
+                    .direction([
+                        direction[0],
+                        direction.get(1).copied().unwrap_or(0.0),
+                        direction.get(2).copied().unwrap_or(0.0),
+                    ])
+                    .to_vec(),
+            },
+            Curve::Circle { axes, radius } => Curve::Circle { axes: self.axes(axes), radius: *radius },
+            Curve::Ellipse { axes, a, b } => Curve::Ellipse { axes: self.axes(axes), a: *a, b: *b },
+            Curve::Spline(s) => {
+                Curve::Spline(SplineCurve { points: s.points.iter().map(|p| self.point_vec(p)).collect(), ..s.clone() })
+            }
+            Curve::Trimmed { basis, start, end } => {
+                Curve::Trimmed { basis: Box::new(self.curve(basis)), start: *start, end: *end }
+            }
+        }
+    }
+
+    /// The surface moved into the placement.
+    pub fn surface(&self, s: &Surface) -> Surface {
+        match s {
+            Surface::Plane(a) => Surface::Plane(self.axes(a)),
+            Surface::Cylinder { axes, radius } => Surface::Cylinder { axes: self.axes(axes), radius: *radius },
+            Surface::Cone { axes, radius, semi_angle } => {
+                Surface::Cone { axes: self.axes(axes), radius: *radius, semi_angle: *semi_angle }
+            }
+            Surface::Sphere { axes, radius } => Surface::Sphere { axes: self.axes(axes), radius: *radius },
+            Surface::Torus { axes, major_radius, minor_radius } => {
+                Surface::Torus { axes: self.axes(axes), major_radius: *major_radius, minor_radius: *minor_radius }
+            }
+            Surface::Spline(b) => Surface::Spline(SplineSurface {
+                points: b.points.iter().map(|row| row.iter().map(|p| self.point_vec(p)).collect()).collect(),
+                ..b.clone()
+            }),
+            Surface::Revolution { profile, axis_origin, axis } => Surface::Revolution {
+                profile: self.curve(profile),
+                axis_origin: self.point(*axis_origin),
+                axis: self.direction(*axis),
+            },
+            Surface::Extrusion { profile, direction } => {
+                Surface::Extrusion { profile: self.curve(profile), direction: self.direction(*direction) }
+            }
+            Surface::Trimmed { basis, u, v } => Surface::Trimmed { basis: Box::new(self.surface(basis)), u: *u, v: *v },
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn placements_compose_with_the_frames_they_move() {
+        let p = Placement(Axes { origin: [1.0, 2.0, 3.0], z: [0.0, 1.0, 0.0], x: [0.0, 0.0, 1.0] });
+        // y = z × x = (1, 0, 0).
+        assert_eq!(p.point([1.0, 2.0, 3.0]), [1.0 + 2.0, 2.0 + 3.0, 3.0 + 1.0]);
+        let Surface::Sphere { axes, .. } = p.surface(&Surface::Sphere { axes: Axes::WORLD, radius: 1.0 }) else {
+            unreachable!()
+        };
+        assert_eq!(axes, p.0);
+    }
+}
