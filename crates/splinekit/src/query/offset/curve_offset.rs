@@ -1,0 +1,314 @@
+//! The offset of a plane curve at signed distance d: the points at distance |d| from the
+//! curve on its right-hand side (d > 0) or left-hand side (d < 0), as B-spline pieces.
+//!
+//! Method:
+//! 1. The raw offset o(t) = c(t) + d·n(t) ([`RawOffset`]) is approximated over the whole
+//!    domain by cubic Hermite pieces refined until the error is within the tolerance
+//!    ([`fit_raw_offset`]); the factor 1 + dκ is sampled on every piece on the way.
+//! 2. Cusps: where 1 + dκ changes sign between two samples, the root is bisected to full
+//!    precision (o′ = (1 + dκ)c′ vanishes there and the offset turns back).
+//! 3. Self-intersections: the raw offset is cut at its cusps into regular arcs, each
+//!    approximated on its own; crossings of every arc with itself
+//!    ([`self_intersections`]) and of every two arcs whose boxes meet ([`intersect_curves`])
+//!    are found on the approximations (tolerance 10⁻² of the offset's).
+//! 4. Trimming: the domain is cut at the cusps and at both parameters of every crossing;
+//!    a stretch whose points at ¼, ½ and ¾ of it are all at distance ≥ |d| − tolerance from
+//!    the curve (by projection, [`CurveProjector`]) belongs to the true offset, the others
+//!    (the swallowtails behind cusps, loops, the parts nearer to another stretch of the
+//!    curve) are dropped. Each point of the raw offset is at distance |d| from its own foot
+//!    c(t), so it is on the true offset exactly when no other point of the curve is nearer;
+//!    that can only change at a crossing of the raw offset with itself or at a cusp.
+//! 5. Kept stretches that meet at a crossing parameter (not at a cusp) are joined, across
+//!    the seam for a closed curve, and each is approximated again on exactly its
+//!    parameters; a closed curve whose raw offset needs no trimming gives one periodic
+//!    B-spline.
+//!
+//! The pieces are parametrised by the curve's own parameter t (their domains are the kept
+//! stretches of t, running past the end of a closed curve's domain for a piece across its
+//! seam). Open curves get no arcs around their ends: the pieces are parts of the raw offset.
+//! An offset that collapses to a point (a circle of radius r at d = −r) or is trimmed away
+//! entirely (deeper inside a closed convex curve than its inradius) has no pieces.
+
+use crate::Point;
+use crate::basis::Side;
+use crate::curve::{BSplineCurve, Curve, Interval};
+use crate::error::{Error, Result};
+use crate::query::bounds::Aabb;
+use crate::query::offset::check_arguments;
+use crate::query::offset::hermite_fit::{HermiteFit, fit_raw_offset};
+use crate::query::offset::planar_frame::{InPlane, PlanarFrame};
+use crate::query::offset::raw_curve::RawOffset;
+use crate::query::{CurveProjector, intersect_curves, self_intersections};
+
+/// The most cusps a raw offset may have.
+pub const MAX_CUSPS: usize = 1000;
+
+/// The raw offset counts as collapsed to a point where |1 + dκ| stays below this.
+const COLLAPSED: f64 = 1e-9;
+
+/// Crossings are located with this fraction of the offset's tolerance.
+const CROSSING_TOLERANCE: f64 = 1e-2;
+
+/// Arcs are searched for crossings without this fraction of them next to a cusp, where
+/// the tangent of their approximation vanishes (crossings nearer to a cusp are not found).
+pub const CUSP_GAP: f64 = 1e-6;
+
+/// Two arcs meeting at a cusp are compared without this fraction of each next to it.
+pub const CUSP_MARGIN: f64 = 0.02;
+
+/// Bisection steps for one cusp.
+const CUSP_ITERATIONS: usize = 200;
+
+/// One piece of an offset: a cubic B-spline within the tolerance of the exact offset.
+#[derive(Debug, Clone)]
+pub struct OffsetPiece<const D: usize> {
+    /// The piece, on the parameters `params` of the curve.
+    pub curve: BSplineCurve<D>,
+    /// The stretch of the curve's parameter it offsets.
+    pub params: Interval,
+    /// The largest error measured against the exact offset, max |B(t) − o(t)|.
+    pub max_error: f64,
+}
+
+/// The offset of a curve: its pieces after trimming, and what was trimmed.
+#[derive(Debug, Clone)]
+pub struct CurveOffset<const D: usize> {
+    /// The pieces in increasing parameter order (empty when nothing is left).
+    pub pieces: Vec<OffsetPiece<D>>,
+    /// The largest error of any piece.
+    pub max_error: f64,
+    /// Parameters of the curve where the raw offset has a cusp (1 + dκ = 0).
+    pub cusps: Vec<f64>,
+    /// Parameter pairs (t_a < t_b) where the raw offset crosses itself.
+    pub crossings: Vec<(f64, f64)>,
+}
+
+/// The offset of `curve` at signed distance `distance` within `tolerance` (> 0) of the
+/// exact offset (see the module documentation). 2-D curves are offset in their plane
+/// (`normal` absent or +z); a 3-D curve needs `normal`, the normal direction V of the plane
+/// it lies in (within the tolerance), and is offset along T × V/|V|. d > 0 is the
+/// right-hand side (outwards for a counter-clockwise curve).
+///
+/// ```
+/// use splinekit::Point;
+/// use splinekit::curve::{Curve, model::Circle};
+/// use splinekit::query::offset_curve;
+/// // The circle of radius 2 (in the plane z = 0) at distance 0.5: the circle of radius 2.5.
+/// let c = Circle::new(2.0).unwrap();
+/// let off = offset_curve(&c, 0.5, Some(Point::<3>::z()), 1e-7).unwrap();
+/// assert_eq!(off.pieces.len(), 1);
+/// let piece = &off.pieces[0].curve;
+/// assert!(piece.is_closed() && off.max_error <= 1e-7);
+/// assert!((piece.point(1.0).norm() - 2.5).abs() < 1e-7);
+/// ```
+pub fn offset_curve<const D: usize, C: Curve<D> + ?Sized>(
+    curve: &C,
+    distance: f64,
+    normal: Option<Point<3>>,
+    tolerance: f64,
+) -> Result<CurveOffset<D>> {
+    check_arguments(distance, tolerance)?;
+    let frame = PlanarFrame::of(curve, normal, tolerance)?;
+    let plane = InPlane { curve, frame };
+    let raw = RawOffset { curve: &plane, distance };
+    let dom = plane.domain();
+    let closed = plane.is_closed();
+    let whole = fit_raw_offset(&raw, dom, tolerance, closed)?;
+    if whole.factors.iter().all(|(_, f)| f.abs() <= COLLAPSED) {
+        return Ok(CurveOffset {
+            pieces: Vec::new(),
+            max_error: whole.max_error,
+            cusps: Vec::new(),
+            crossings: Vec::new(),
+        });
+    }
+    let cusps = find_cusps(&raw, &whole)?;
+    let arcs = arcs_between(&cusps, dom, closed);
+    let crossings = crossings(&raw, &arcs, &whole, tolerance)?;
+    let mut splits: Vec<f64> = cusps.clone();
+    for &(a, b) in &crossings {
+        splits.push(wrap(a, dom, closed));
+        splits.push(wrap(b, dom, closed));
+    }
+    splits.sort_by(f64::total_cmp);
+    splits.dedup_by(|b, a| (*b - *a).abs() <= 1e-12 * dom.length());
+    let projector = CurveProjector::new(&plane);
+    let mut kept: Vec<(Interval, bool)> = Vec::new();
+    for stretch in arcs_between(&splits, dom, closed) {
+        let keep = [0.25, 0.5, 0.75].into_iter().try_fold(true, |keep, s| -> Result<bool> {
+            let p = raw.at(stretch.lerp(s), Side::Right).map(|r| r.point);
+            let Some(p) = p else { return Ok(false) };
+            Ok(keep && projector.nearest(&p, 0.0)?.distance >= distance.abs() - tolerance)
+        })?;
+        kept.push((stretch, keep));
+    }
+    let stretches = join_kept(&kept, &cusps, dom, closed);
+    let mut pieces = Vec::with_capacity(stretches.len());
+    for s in stretches {
+        if closed && splits.is_empty() {
+            pieces.push(piece_of(&whole, s, &frame)?);
+            continue;
+        }
+        let periodic = closed && (s.length() - dom.length()).abs() <= 1e-12 * dom.length();
+        pieces.push(piece_of(&fit_raw_offset(&raw, s, tolerance, periodic)?, s, &frame)?);
+    }
+    let max_error = pieces.iter().fold(0.0f64, |m, p| m.max(p.max_error));
+    Ok(CurveOffset { pieces, max_error, cusps, crossings })
+}
+
+/// A parameter wrapped into the domain of a closed curve.
+fn wrap(t: f64, dom: Interval, closed: bool) -> f64 {
+    if closed { dom.wrap(t) } else { t }
+}
+
+/// Roots of 1 + dκ where it changes sign between consecutive samples, by bisection.
+fn find_cusps<C: Curve<2> + ?Sized>(raw: &RawOffset<'_, C>, fit: &HermiteFit) -> Result<Vec<f64>> {
+    let mut cusps = Vec::new();
+    for w in fit.factors.windows(2) {
+        let ((mut a, fa), (mut b, fb)) = (w[0], w[1]);
+        if fa * fb >= 0.0 || fa.abs().max(fb.abs()) <= COLLAPSED || b <= a {
+            continue;
+        }
+        for _ in 0..CUSP_ITERATIONS {
+            let m = 0.5 * (a + b);
+            if m <= a || m >= b {
+                break;
+            }
+            let fm = raw.at(m, Side::Right).map_or(0.0, |s| s.factor);
+            if fm == 0.0 {
+                (a, b) = (m, m);
+                break;
+            }
+            if (fm > 0.0) == (fa > 0.0) { a = m } else { b = m }
+        }
+        cusps.push(0.5 * (a + b));
+        if cusps.len() > MAX_CUSPS {
+            return Err(Error::invalid(
+                "distance",
+                format!(
+                    "the raw offset at d = {} has more than {MAX_CUSPS} cusps (d is near a radius of curvature along a stretch of the curve)",
+                    raw.distance
+                ),
+            ));
+        }
+    }
+    Ok(cusps)
+}
+
+/// The stretches of the domain between consecutive cut parameters (increasing); for a
+/// closed curve the last runs across the seam to the first cut plus one period.
+fn arcs_between(cuts: &[f64], dom: Interval, closed: bool) -> Vec<Interval> {
+    let inner: Vec<f64> = cuts.iter().copied().filter(|&t| t > dom.start && t < dom.end).collect();
+    if closed && !inner.is_empty() {
+        let n = inner.len();
+        let mut arcs: Vec<Interval> = inner.windows(2).map(|w| Interval::new(w[0], w[1])).collect();
+        arcs.push(Interval::new(inner[n - 1], inner[0] + dom.length()));
+        return arcs;
+    }
+    let mut ends = vec![dom.start];
+    ends.extend(inner);
+    ends.push(dom.end);
+    ends.windows(2).map(|w| Interval::new(w[0], w[1])).collect()
+}
+
+/// Every crossing of the raw offset with itself, as parameter pairs t_a < t_b: found on
+/// the approximations of its regular arcs (the whole fit when there are no cusps). Two
+/// arcs that meet at a cusp stay within any tolerance of each other near it (their
+/// distance grows like the cube of the parameter distance), so they are compared without
+/// the [`CUSP_MARGIN`] of each next to the cusp they share.
+fn crossings<C: Curve<2> + ?Sized>(
+    raw: &RawOffset<'_, C>,
+    arcs: &[Interval],
+    whole: &HermiteFit,
+    tolerance: f64,
+) -> Result<Vec<(f64, f64)>> {
+    let itol = CROSSING_TOLERANCE * tolerance;
+    let mut pairs = Vec::new();
+    let mut add = |found: &crate::query::CurveIntersections<2>| {
+        pairs.extend(found.points.iter().map(|p| (p.t_a, p.t_b)));
+        pairs.extend(found.overlaps.iter().flat_map(|o| [(o.a.start, o.b.0), (o.a.end, o.b.1)]));
+    };
+    if arcs.len() == 1 {
+        add(&self_intersections(&whole.curve, itol)?);
+        return Ok(ordered(pairs));
+    }
+    let fit = |a: Interval| fit_raw_offset(raw, a, tolerance, false).map(|f| f.curve);
+    // Every arc here ends at cusps (or at the ends of an open curve's domain).
+    let dom = raw.curve.domain();
+    let inside = |a: &Interval| {
+        let m = CUSP_GAP * a.length();
+        let start = if !raw.curve.is_closed() && a.start == dom.start { a.start } else { a.start + m };
+        let end = if !raw.curve.is_closed() && a.end == dom.end { a.end } else { a.end - m };
+        Interval::new(start, end)
+    };
+    let arcs: Vec<Interval> = arcs.iter().map(inside).collect();
+    let fits: Vec<BSplineCurve<2>> = arcs.iter().map(|a| fit(*a)).collect::<Result<_>>()?;
+    let boxes: Vec<Aabb<2>> = fits.iter().map(|f| Aabb::around(f.control_points(), itol)).collect();
+    let n = arcs.len();
+    let closed_ring = raw.curve.is_closed();
+    for i in 0..n {
+        add(&self_intersections(&fits[i], itol)?);
+        for j in i + 1..n {
+            if !boxes[i].overlaps(&boxes[j], 0.0) {
+                continue;
+            }
+            // Arcs i and j share the cusp between them (or the one at the seam).
+            let next = j == i + 1;
+            let across = closed_ring && i == 0 && j == n - 1;
+            if next || across {
+                let (a, b) = (arcs[i], arcs[j]);
+                let (ma, mb) = (CUSP_MARGIN * a.length(), CUSP_MARGIN * b.length());
+                let cut = |x: bool, m: f64| if x { m } else { 0.0 };
+                let a = Interval::new(a.start + cut(across, ma), a.end - cut(next, ma));
+                let b = Interval::new(b.start + cut(next, mb), b.end - cut(across, mb));
+                add(&intersect_curves(&fit(a)?, &fit(b)?, itol)?);
+            } else {
+                add(&intersect_curves(&fits[i], &fits[j], itol)?);
+            }
+        }
+    }
+    Ok(ordered(pairs))
+}
+
+/// Parameter pairs with the smaller first.
+fn ordered(pairs: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
+    pairs.into_iter().map(|(a, b)| if a <= b { (a, b) } else { (b, a) }).collect()
+}
+
+/// Consecutive kept stretches joined where they meet at a crossing (not at a cusp), across
+/// the seam of a closed curve too.
+fn join_kept(kept: &[(Interval, bool)], cusps: &[f64], dom: Interval, closed: bool) -> Vec<Interval> {
+    let at_cusp = |t: f64| cusps.iter().any(|&c| (wrap(t, dom, closed) - c).abs() <= 1e-12 * dom.length());
+    let mut out: Vec<Interval> = Vec::new();
+    let mut open_run = false;
+    for &(s, keep) in kept {
+        if !keep {
+            open_run = false;
+            continue;
+        }
+        match out.last_mut() {
+            Some(last) if open_run && !at_cusp(s.start) => last.end = s.end,
+            _ => out.push(s),
+        }
+        open_run = true;
+    }
+    let wraps = closed && kept.len() > 1 && kept[0].1 && kept[kept.len() - 1].1 && !at_cusp(kept[0].0.start);
+    if wraps && out.len() > 1 {
+        let first = out.remove(0);
+        let last = out.last_mut().expect("two stretches");
+        last.end = first.end + dom.length();
+    }
+    out
+}
+
+/// A fitted stretch mapped from plane coordinates into ℝᴰ.
+fn piece_of<const D: usize>(fit: &HermiteFit, params: Interval, frame: &PlanarFrame<D>) -> Result<OffsetPiece<D>> {
+    let c = &fit.curve;
+    let control: Vec<Point<D>> = c.control_points().iter().map(|q| frame.from_plane(q)).collect();
+    let curve = if c.is_periodic() {
+        BSplineCurve::new_periodic(3, c.knots().to_vec(), control)?
+    } else {
+        BSplineCurve::new(3, c.knots().to_vec(), control)?
+    };
+    Ok(OffsetPiece { curve, params, max_error: fit.max_error })
+}
