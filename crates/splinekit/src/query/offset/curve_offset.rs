@@ -26,6 +26,10 @@
 //! The pieces are parametrised by the curve's own parameter t (their domains are the kept
 //! stretches of t, running past the end of a closed curve's domain for a piece across its
 //! seam). Open curves get no arcs around their ends: the pieces are parts of the raw offset.
+//! Where the curve's own tangent vanishes at an end of its domain (the seam of the heart
+//! curve, a cusp of the curve where the normal flips), that end is moved inwards by
+//! [`SINGULAR_END`] of the domain and a closed curve is offset as an open one; such a point
+//! inside the domain is an error naming its parameter.
 //! An offset that collapses to a point (a circle of radius r at d = −r) or is trimmed away
 //! entirely (deeper inside a closed convex curve than its inradius) has no pieces.
 
@@ -55,6 +59,23 @@ pub const CUSP_GAP: f64 = 1e-6;
 
 /// Two arcs meeting at a cusp are compared without this fraction of each next to it.
 pub const CUSP_MARGIN: f64 = 0.02;
+
+/// Ends of the domain where the curve's tangent vanishes are moved inwards by this
+/// fraction of the domain.
+pub const SINGULAR_END: f64 = 1e-9;
+
+/// The raw offset jumps at a breakpoint (a corner of the curve) when its one-sided limits
+/// are farther apart than this fraction of |d|.
+const CORNER_JUMP: f64 = 1e-9;
+
+/// Speed samples per span between breakpoints, searched for points where c′ vanishes.
+const SPEED_SAMPLES: usize = 64;
+
+/// A local minimum of the speed below this fraction of the mean speed is a singular point.
+const SINGULAR_SPEED: f64 = 1e-7;
+
+/// Golden-section steps refining a minimum of the speed.
+const GOLDEN_STEPS: usize = 80;
 
 /// Bisection steps for one cusp.
 const CUSP_ITERATIONS: usize = 200;
@@ -109,32 +130,41 @@ pub fn offset_curve<const D: usize, C: Curve<D> + ?Sized>(
 ) -> Result<CurveOffset<D>> {
     check_arguments(distance, tolerance)?;
     let frame = PlanarFrame::of(curve, normal, tolerance)?;
-    let plane = InPlane { curve, frame };
+    let plane = without_singular_ends(InPlane::new(curve, frame), distance)?;
+    let corners = corners(&plane, distance);
+    // A curve with corners is offset as an open one, section by section.
+    let plane = InPlane { closed: plane.closed && corners.is_empty(), ..plane };
     let raw = RawOffset { curve: &plane, distance };
     let dom = plane.domain();
     let closed = plane.is_closed();
-    let whole = fit_raw_offset(&raw, dom, tolerance, closed)?;
-    if whole.factors.iter().all(|(_, f)| f.abs() <= COLLAPSED) {
-        return Ok(CurveOffset {
-            pieces: Vec::new(),
-            max_error: whole.max_error,
-            cusps: Vec::new(),
-            crossings: Vec::new(),
-        });
+    let clip = |a: Interval| clip_at_corners(a, &corners, dom);
+    let sections: Vec<Interval> =
+        arcs_between(&corners.iter().map(|c| c.0).collect::<Vec<_>>(), dom, false).into_iter().map(clip).collect();
+    let fits: Vec<HermiteFit> =
+        sections.iter().map(|s| fit_raw_offset(&raw, *s, tolerance, closed)).collect::<Result<_>>()?;
+    if fits.iter().flat_map(|f| &f.factors).all(|(_, f)| f.abs() <= COLLAPSED) {
+        let max_error = fits.iter().fold(0.0f64, |m, f| m.max(f.max_error));
+        return Ok(CurveOffset { pieces: Vec::new(), max_error, cusps: Vec::new(), crossings: Vec::new() });
     }
-    let cusps = find_cusps(&raw, &whole)?;
-    let arcs = arcs_between(&cusps, dom, closed);
-    let crossings = crossings(&raw, &arcs, &whole, tolerance)?;
-    let mut splits: Vec<f64> = cusps.clone();
+    let mut cusps = Vec::new();
+    for f in &fits {
+        cusps.extend(find_cusps(&raw, f)?);
+    }
+    let mut cuts: Vec<f64> = cusps.iter().copied().chain(corners.iter().map(|c| c.0)).collect();
+    cuts.sort_by(f64::total_cmp);
+    let arcs: Vec<Interval> = arcs_between(&cuts, dom, closed).into_iter().map(clip).collect();
+    let crossings = crossings(&raw, &arcs, &fits[0], &cusps, tolerance)?;
+    let mut splits: Vec<f64> = cuts.clone();
     for &(a, b) in &crossings {
         splits.push(wrap(a, dom, closed));
         splits.push(wrap(b, dom, closed));
     }
     splits.sort_by(f64::total_cmp);
     splits.dedup_by(|b, a| (*b - *a).abs() <= 1e-12 * dom.length());
+    let whole = &fits[0];
     let projector = CurveProjector::new(&plane);
     let mut kept: Vec<(Interval, bool)> = Vec::new();
-    for stretch in arcs_between(&splits, dom, closed) {
+    for stretch in arcs_between(&splits, dom, closed).into_iter().map(clip) {
         let keep = [0.25, 0.5, 0.75].into_iter().try_fold(true, |keep, s| -> Result<bool> {
             let p = raw.at(stretch.lerp(s), Side::Right).map(|r| r.point);
             let Some(p) = p else { return Ok(false) };
@@ -142,11 +172,12 @@ pub fn offset_curve<const D: usize, C: Curve<D> + ?Sized>(
         })?;
         kept.push((stretch, keep));
     }
-    let stretches = join_kept(&kept, &cusps, dom, closed);
+    let breaks: Vec<f64> = cuts.clone();
+    let stretches = join_kept(&kept, &breaks, dom, closed);
     let mut pieces = Vec::with_capacity(stretches.len());
     for s in stretches {
         if closed && splits.is_empty() {
-            pieces.push(piece_of(&whole, s, &frame)?);
+            pieces.push(piece_of(whole, s, &frame)?);
             continue;
         }
         let periodic = closed && (s.length() - dom.length()).abs() <= 1e-12 * dom.length();
@@ -154,6 +185,85 @@ pub fn offset_curve<const D: usize, C: Curve<D> + ?Sized>(
     }
     let max_error = pieces.iter().fold(0.0f64, |m, p| m.max(p.max_error));
     Ok(CurveOffset { pieces, max_error, cusps, crossings })
+}
+
+/// The curve without the ends of its domain where c′ = 0 (the seam of the heart, a cusp of
+/// the curve itself: the normal flips there and the raw offset jumps), each moved
+/// [`SINGULAR_END`] of the domain inwards; a closed curve is then open.
+fn without_singular_ends<'c, const D: usize, C: Curve<D> + ?Sized>(
+    mut plane: InPlane<'c, D, C>,
+    distance: f64,
+) -> Result<InPlane<'c, D, C>> {
+    let raw = RawOffset { curve: &plane, distance };
+    let dom = plane.domain;
+    let eps = SINGULAR_END * dom.length();
+    let (bad_start, bad_end) = (raw.at(dom.start, Side::Right).is_none(), raw.at(dom.end, Side::Left).is_none());
+    if bad_start || bad_end {
+        let start = if bad_start { dom.start + eps } else { dom.start };
+        let end = if bad_end { dom.end - eps } else { dom.end };
+        plane.domain = Interval::new(start, end);
+        plane.closed = false;
+    }
+    Ok(plane)
+}
+
+/// Whether t is one of `params` (to 10⁻⁶ of the domain; wrapped for a closed curve).
+fn is_at(params: &[f64], t: f64, dom: Interval, closed: bool) -> bool {
+    params.iter().any(|&c| (wrap(t, dom, closed) - c).abs() <= 1e-6 * dom.length())
+}
+
+/// Parameters inside the domain where the raw offset jumps: the curve's tangent vanishes
+/// (true: at a local minimum of the speed |c′| below [`SINGULAR_SPEED`] of its mean,
+/// sampled at [`SPEED_SAMPLES`] points per span between breakpoints and refined by golden
+/// section) or turns by a corner at a breakpoint (false).
+fn corners<const D: usize, C: Curve<D> + ?Sized>(plane: &InPlane<'_, D, C>, distance: f64) -> Vec<(f64, bool)> {
+    let raw = RawOffset { curve: plane, distance };
+    let dom = plane.domain();
+    let mut out = Vec::new();
+    for t in plane.breakpoints().into_iter().filter(|&t| t > dom.start && t < dom.end) {
+        match (raw.at(t, Side::Left), raw.at(t, Side::Right)) {
+            (Some(l), Some(r)) if (l.point - r.point).norm() <= CORNER_JUMP * distance.abs() => {}
+            (Some(_), Some(_)) => out.push((t, false)),
+            _ => out.push((t, true)),
+        }
+    }
+    let speed = |t: f64| plane.derivative(t, 1).norm();
+    let breaks = plane.breakpoints();
+    let mut samples: Vec<(f64, f64)> = Vec::new();
+    for w in breaks.windows(2) {
+        let span = Interval::new(w[0], w[1]);
+        for k in 1..SPEED_SAMPLES {
+            let t = span.lerp(k as f64 / SPEED_SAMPLES as f64);
+            samples.push((t, speed(t)));
+        }
+    }
+    let mean = samples.iter().map(|s| s.1).sum::<f64>() / samples.len().max(1) as f64;
+    for w in samples.windows(3) {
+        if !(w[1].1 <= w[0].1 && w[1].1 <= w[2].1) {
+            continue;
+        }
+        let (mut lo, mut hi) = (w[0].0, w[2].0);
+        for _ in 0..GOLDEN_STEPS {
+            let (m1, m2) = (lo + 0.382 * (hi - lo), lo + 0.618 * (hi - lo));
+            if speed(m1) < speed(m2) { hi = m2 } else { lo = m1 }
+        }
+        let t = 0.5 * (lo + hi);
+        let t = if speed(w[1].0) <= speed(t) { w[1].0 } else { t };
+        if speed(t) <= SINGULAR_SPEED * mean && !out.iter().any(|c| (c.0 - t).abs() <= 1e-9 * dom.length()) {
+            out.push((t, true));
+        }
+    }
+    out.sort_by(|a, b| a.0.total_cmp(&b.0));
+    out
+}
+
+/// A stretch with its ends at singular corners moved [`SINGULAR_END`] of the domain inwards.
+fn clip_at_corners(a: Interval, corners: &[(f64, bool)], dom: Interval) -> Interval {
+    let eps = SINGULAR_END * dom.length();
+    let singular = |t: f64| corners.iter().any(|&(c, s)| s && (c - t).abs() <= 1e-12 * dom.length());
+    let start = if singular(a.start) { a.start + eps } else { a.start };
+    let end = if singular(a.end) { a.end - eps } else { a.end };
+    Interval::new(start, end)
 }
 
 /// A parameter wrapped into the domain of a closed curve.
@@ -220,6 +330,7 @@ fn crossings<C: Curve<2> + ?Sized>(
     raw: &RawOffset<'_, C>,
     arcs: &[Interval],
     whole: &HermiteFit,
+    cusps: &[f64],
     tolerance: f64,
 ) -> Result<Vec<(f64, f64)>> {
     let itol = CROSSING_TOLERANCE * tolerance;
@@ -233,19 +344,20 @@ fn crossings<C: Curve<2> + ?Sized>(
         return Ok(ordered(pairs));
     }
     let fit = |a: Interval| fit_raw_offset(raw, a, tolerance, false).map(|f| f.curve);
-    // Every arc here ends at cusps (or at the ends of an open curve's domain).
-    let dom = raw.curve.domain();
+    // Arcs end at cusps, corners of the curve or the ends of an open curve's domain.
+    let (dom, closed) = (raw.curve.domain(), raw.curve.is_closed());
+    let at_cusp = |t: f64| is_at(cusps, t, dom, closed);
     let inside = |a: &Interval| {
         let m = CUSP_GAP * a.length();
-        let start = if !raw.curve.is_closed() && a.start == dom.start { a.start } else { a.start + m };
-        let end = if !raw.curve.is_closed() && a.end == dom.end { a.end } else { a.end - m };
+        let start = if at_cusp(a.start) { a.start + m } else { a.start };
+        let end = if at_cusp(a.end) { a.end - m } else { a.end };
         Interval::new(start, end)
     };
     let arcs: Vec<Interval> = arcs.iter().map(inside).collect();
     let fits: Vec<BSplineCurve<2>> = arcs.iter().map(|a| fit(*a)).collect::<Result<_>>()?;
     let boxes: Vec<Aabb<2>> = fits.iter().map(|f| Aabb::around(f.control_points(), itol)).collect();
     let n = arcs.len();
-    let closed_ring = raw.curve.is_closed();
+    let closed_ring = closed;
     for i in 0..n {
         add(&self_intersections(&fits[i], itol)?);
         for j in i + 1..n {
@@ -253,8 +365,8 @@ fn crossings<C: Curve<2> + ?Sized>(
                 continue;
             }
             // Arcs i and j share the cusp between them (or the one at the seam).
-            let next = j == i + 1;
-            let across = closed_ring && i == 0 && j == n - 1;
+            let next = j == i + 1 && at_cusp(arcs[i].end);
+            let across = closed_ring && i == 0 && j == n - 1 && at_cusp(arcs[0].start);
             if next || across {
                 let (a, b) = (arcs[i], arcs[j]);
                 let (ma, mb) = (CUSP_MARGIN * a.length(), CUSP_MARGIN * b.length());
@@ -277,8 +389,8 @@ fn ordered(pairs: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
 
 /// Consecutive kept stretches joined where they meet at a crossing (not at a cusp), across
 /// the seam of a closed curve too.
-fn join_kept(kept: &[(Interval, bool)], cusps: &[f64], dom: Interval, closed: bool) -> Vec<Interval> {
-    let at_cusp = |t: f64| cusps.iter().any(|&c| (wrap(t, dom, closed) - c).abs() <= 1e-12 * dom.length());
+fn join_kept(kept: &[(Interval, bool)], breaks: &[f64], dom: Interval, closed: bool) -> Vec<Interval> {
+    let at_cusp = |t: f64| is_at(breaks, t, dom, closed);
     let mut out: Vec<Interval> = Vec::new();
     let mut open_run = false;
     for &(s, keep) in kept {

@@ -5,7 +5,7 @@
 //! o(t₀), o′(t₀), o(t₁), o′(t₁) ([`HermiteCurve`], exact values and derivatives of the raw
 //! offset, [`RawOffset`]) is compared with the exact offset at s = k/8, k = 1 … 7; a piece
 //! whose largest error is above half the tolerance is halved, at most down to
-//! [`MIN_WIDTH`] of the interval and [`MAX_PIECES`] pieces.
+//! [`MIN_WIDTH`] of the interval and [`MAX_PIECES`] pieces (and four per span of the curve).
 //!
 //! Accuracy: H − o vanishes with its derivative at both ends, so on a piece short enough
 //! that o⁗ is nearly constant, H − o ≈ K·s²(1 − s)² with K = −h⁴ o⁗/24, whose largest
@@ -29,8 +29,8 @@ use crate::query::offset::raw_curve::{RawOffset, RawSample};
 /// The fewest pieces an interval is cut into.
 pub const MIN_PIECES: usize = 8;
 
-/// The most pieces one approximation may have.
-pub const MAX_PIECES: usize = 200_000;
+/// The most pieces one approximation may have, besides four per span of the curve.
+pub const MAX_PIECES: usize = 10_000;
 
 /// Pieces are not halved below this fraction of the interval.
 pub const MIN_WIDTH: f64 = 1e-12;
@@ -83,6 +83,7 @@ pub fn fit_raw_offset<C: Curve<2> + ?Sized>(
     let min_width = MIN_WIDTH * interval.length();
     let mut cuts = initial_cuts(raw.curve, interval);
     cuts.dedup_by(|b, a| *b - *a <= min_width);
+    let max_pieces = MAX_PIECES + 4 * cuts.len();
     let mut stack: Vec<Piece> = Vec::with_capacity(cuts.len());
     for w in cuts.windows(2).rev() {
         stack.push(Piece { start: sample(raw, w[0], Side::Right)?, end: sample(raw, w[1], Side::Left)? });
@@ -130,11 +131,11 @@ pub fn fit_raw_offset<C: Curve<2> + ?Sized>(
             done.push((piece, *h.segment(0)));
             continue;
         }
-        if done.len() + stack.len() + 2 > MAX_PIECES {
+        if done.len() + stack.len() + 2 > max_pieces {
             return Err(Error::numerical(
                 "tolerance",
                 format!(
-                    "more than {MAX_PIECES} pieces to approximate the offset within {tolerance:e}; try a larger tolerance"
+                    "more than {max_pieces} pieces to approximate the offset within {tolerance:e}; try a larger tolerance"
                 ),
             ));
         }

@@ -119,23 +119,39 @@ fn lift<const D: usize>(v: &Point<3>) -> Point<D> {
     p
 }
 
-/// A curve of ℝᴰ seen in the plane coordinates of a [`PlanarFrame`].
+/// A curve of ℝᴰ seen in the plane coordinates of a [`PlanarFrame`], on its domain or a
+/// part of it (then open).
 pub struct InPlane<'c, const D: usize, C: ?Sized> {
     /// The curve.
     pub curve: &'c C,
     /// The plane.
     pub frame: PlanarFrame<D>,
+    /// The parameters used.
+    pub domain: Interval,
+    /// Whether the curve is used as closed (its whole domain, periodic).
+    pub closed: bool,
+}
+
+impl<'c, const D: usize, C: Curve<D> + ?Sized> InPlane<'c, D, C> {
+    /// The whole curve in the plane of `frame`.
+    pub fn new(curve: &'c C, frame: PlanarFrame<D>) -> Self {
+        InPlane { curve, frame, domain: curve.domain(), closed: curve.is_closed() }
+    }
 }
 
 impl<const D: usize, C: Curve<D> + ?Sized> Curve<2> for InPlane<'_, D, C> {
     fn domain(&self) -> Interval {
-        self.curve.domain()
+        self.domain
     }
     fn is_closed(&self) -> bool {
-        self.curve.is_closed()
+        self.closed
     }
     fn breakpoints(&self) -> Vec<f64> {
-        self.curve.breakpoints()
+        let d = self.domain;
+        let mut b: Vec<f64> = self.curve.breakpoints().into_iter().filter(|&t| t > d.start && t < d.end).collect();
+        b.insert(0, d.start);
+        b.push(d.end);
+        b
     }
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<2>]) {
         let mut full: smallvec::SmallVec<[Point<D>; 4]> = smallvec::smallvec![Point::<D>::zeros(); out.len()];
