@@ -186,3 +186,21 @@ fn a_cone_apex_has_no_offset() {
     let e = offset_surface(&Sphere::new(1.0).unwrap(), f64::INFINITY, 1e-4).unwrap_err().to_string();
     assert!(e.starts_with("distance:"), "{e}");
 }
+
+#[test]
+fn the_heart_is_offset_piecewise_between_its_corners() {
+    // The heart curve's tangent vanishes at its top (the seam) and its bottom: the normal
+    // flips there, so the offset is cut at both; every point kept is at distance |d|.
+    let heart = splinekit::curve::model::Heart::new(1.0).unwrap();
+    let projector = CurveProjector::new(&heart);
+    for d in [0.8, -0.8] {
+        let off = offset_curve(&heart, d, Some(Point::<3>::z()), 1e-6).unwrap();
+        assert!(off.pieces.len() >= 2 && off.max_error <= 1e-6, "d = {d}: {} pieces", off.pieces.len());
+        for piece in &off.pieces {
+            for t in params(&piece.curve).step_by(4) {
+                let near = projector.nearest(&piece.curve.point(t), 0.0).unwrap();
+                assert!((near.distance - 0.8).abs() <= 1e-6, "d = {d}: distance {} at t = {t}", near.distance);
+            }
+        }
+    }
+}

@@ -11,7 +11,9 @@
 //!    approximated on its own; crossings of every arc with itself
 //!    ([`self_intersections`]) and of every two arcs whose boxes meet ([`intersect_curves`])
 //!    are found on the approximations (tolerance 10⁻² of the offset's).
-//! 4. Trimming: the domain is cut at the cusps and at both parameters of every crossing;
+//! 4. Trimming: the domain is cut at the cusps, at both parameters of every crossing and
+//!    (open curves, curves with corners) where the raw offset crosses the circle of radius
+//!    |d| about an end or a corner of the curve;
 //!    a stretch whose points at ¼, ½ and ¾ of it are all at distance ≥ |d| − tolerance from
 //!    the curve (by projection, [`CurveProjector`]) belongs to the true offset, the others
 //!    (the swallowtails behind cusps, loops, the parts nearer to another stretch of the
@@ -76,6 +78,9 @@ const SINGULAR_SPEED: f64 = 1e-7;
 
 /// Golden-section steps refining a minimum of the speed.
 const GOLDEN_STEPS: usize = 80;
+
+/// Newton steps polishing one crossing.
+const POLISH_STEPS: usize = 30;
 
 /// Bisection steps for one cusp.
 const CUSP_ITERATIONS: usize = 200;
@@ -153,11 +158,15 @@ pub fn offset_curve<const D: usize, C: Curve<D> + ?Sized>(
     let mut cuts: Vec<f64> = cusps.iter().copied().chain(corners.iter().map(|c| c.0)).collect();
     cuts.sort_by(f64::total_cmp);
     let arcs: Vec<Interval> = arcs_between(&cuts, dom, closed).into_iter().map(clip).collect();
-    let crossings = crossings(&raw, &arcs, &fits[0], &cusps, tolerance)?;
+    let crossings: Vec<(f64, f64)> =
+        crossings(&raw, &arcs, &fits[0], &cusps, tolerance)?.into_iter().map(|c| polish(&raw, c, dom)).collect();
     let mut splits: Vec<f64> = cuts.clone();
     for &(a, b) in &crossings {
         splits.push(wrap(a, dom, closed));
         splits.push(wrap(b, dom, closed));
+    }
+    if !closed {
+        splits.extend(end_circles(&raw, &fits, &corners, dom));
     }
     splits.sort_by(f64::total_cmp);
     splits.dedup_by(|b, a| (*b - *a).abs() <= 1e-12 * dom.length());
@@ -380,6 +389,76 @@ fn crossings<C: Curve<2> + ?Sized>(
         }
     }
     Ok(ordered(pairs))
+}
+
+/// Where the raw offset crosses a circle of radius |d| about an end or a corner of the
+/// curve: beyond such a point the offset is nearer to that end or corner than |d| and is
+/// trimmed (the arc about the end itself is not added). Found as sign changes of
+/// |o(t) − P| − |d| at the fits' samples, bisected.
+fn end_circles<C: Curve<2> + ?Sized>(
+    raw: &RawOffset<'_, C>,
+    fits: &[HermiteFit],
+    corners: &[(f64, bool)],
+    dom: Interval,
+) -> Vec<f64> {
+    let mut centres = vec![raw.curve.point(dom.start), raw.curve.point(dom.end)];
+    centres.extend(corners.iter().map(|c| raw.curve.point(c.0)));
+    let r = raw.distance.abs();
+    let mut out = Vec::new();
+    for centre in &centres {
+        let g = |t: f64| raw.at(t, Side::Right).map(|s| (s.point - centre).norm() - r);
+        for fit in fits {
+            for w in fit.factors.windows(2) {
+                let (mut a, mut b) = (w[0].0, w[1].0);
+                let (Some(ga), Some(gb)) = (g(a), g(b)) else { continue };
+                if ga * gb >= 0.0 || b <= a {
+                    continue;
+                }
+                for _ in 0..CUSP_ITERATIONS {
+                    let m = 0.5 * (a + b);
+                    if m <= a || m >= b {
+                        break;
+                    }
+                    match g(m) {
+                        Some(gm) if (gm > 0.0) == (ga > 0.0) => a = m,
+                        Some(_) => b = m,
+                        None => break,
+                    }
+                }
+                out.push(0.5 * (a + b));
+            }
+        }
+    }
+    out
+}
+
+/// A crossing found on the approximations, polished by Newton's method on the exact raw
+/// offset: o(a) − o(b) = 0 with the Jacobian [o′(a), −o′(b)] (a shallow crossing, as where
+/// the offsets of the two sides of a corner meet, is located to the tolerance divided by
+/// the sine of its angle on the approximations, to rounding here). Steps that would leave
+/// the neighbourhood of the start (10⁻³ of the domain) keep the start.
+fn polish<C: Curve<2> + ?Sized>(raw: &RawOffset<'_, C>, start: (f64, f64), dom: Interval) -> (f64, f64) {
+    let (mut a, mut b) = start;
+    for _ in 0..POLISH_STEPS {
+        let (Some(p), Some(q)) = (raw.at(a, Side::Right), raw.at(b, Side::Right)) else { return start };
+        let f = p.point - q.point;
+        let (j0, j1) = (p.derivative, -q.derivative);
+        let det = j0.x * j1.y - j1.x * j0.y;
+        if det.abs() <= f64::MIN_POSITIVE || !det.is_finite() {
+            break;
+        }
+        let da = (f.x * j1.y - j1.x * f.y) / det;
+        let db = (j0.x * f.y - f.x * j0.y) / det;
+        (a, b) = (a - da, b - db);
+        if da.abs().max(db.abs()) <= 4.0 * f64::EPSILON * dom.length() {
+            break;
+        }
+    }
+    let far = 1e-3 * dom.length();
+    if (a - start.0).abs() > far || (b - start.1).abs() > far || !a.is_finite() || !b.is_finite() {
+        return start;
+    }
+    if a <= b { (a, b) } else { (b, a) }
 }
 
 /// Parameter pairs with the smaller first.
