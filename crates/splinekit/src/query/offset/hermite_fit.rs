@@ -24,6 +24,7 @@ use crate::Point;
 use crate::basis::Side;
 use crate::curve::{BSplineCurve, Curve, HermiteCurve, Interval};
 use crate::error::{Error, Result};
+use crate::query::offset::check_resolvable;
 use crate::query::offset::raw_curve::{RawOffset, RawSample};
 
 /// The fewest pieces an interval is cut into.
@@ -37,10 +38,6 @@ pub const MIN_WIDTH: f64 = 1e-12;
 
 /// Samples per piece at which the error is measured (s = k/8, k = 1 … 7).
 const SAMPLES: usize = 8;
-
-/// The smallest tolerance, relative to the size of the offset's coordinates: below it the
-/// error measured is rounding.
-pub const MIN_RELATIVE_TOLERANCE: f64 = 1e-13;
 
 /// Relative difference of one-sided derivatives below which a node is smooth (C¹).
 const SMOOTH_RELATIVE: f64 = 1e-9;
@@ -89,15 +86,7 @@ pub fn fit_raw_offset<C: Curve<2> + ?Sized>(
         stack.push(Piece { start: sample(raw, w[0], Side::Right)?, end: sample(raw, w[1], Side::Left)? });
     }
     let scale = stack.iter().fold(0.0f64, |m, p| m.max(p.start.point.amax()).max(p.end.point.amax()));
-    if tolerance < MIN_RELATIVE_TOLERANCE * scale || !scale.is_finite() {
-        return Err(Error::invalid(
-            "tolerance",
-            format!(
-                "{tolerance:e} is below what double precision resolves on an offset with coordinates up to {scale:e} (at least {:e})",
-                MIN_RELATIVE_TOLERANCE * scale
-            ),
-        ));
-    }
+    check_resolvable(tolerance, scale)?;
     let mut done: Vec<(Piece, [Point<2>; 4])> = Vec::new();
     let mut factors = Vec::new();
     let mut max_error = 0.0f64;

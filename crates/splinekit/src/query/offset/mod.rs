@@ -30,3 +30,21 @@ pub(crate) fn check_arguments(distance: f64, tolerance: f64) -> Result<()> {
     }
     Ok(())
 }
+
+/// The smallest tolerance, relative to the size of the offset's coordinates: below it the
+/// error measured is rounding.
+pub const MIN_RELATIVE_TOLERANCE: f64 = 1e-13;
+
+/// Refuses a tolerance below what double precision resolves on coordinates up to `scale`.
+pub(crate) fn check_resolvable(tolerance: f64, scale: f64) -> Result<()> {
+    if tolerance < MIN_RELATIVE_TOLERANCE * scale || !scale.is_finite() {
+        return Err(Error::invalid(
+            "tolerance",
+            format!(
+                "{tolerance:e} is below what double precision resolves on an offset with coordinates up to {scale:e} (at least {:e})",
+                MIN_RELATIVE_TOLERANCE * scale
+            ),
+        ));
+    }
+    Ok(())
+}

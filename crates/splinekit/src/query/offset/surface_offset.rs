@@ -27,8 +27,7 @@ use crate::Point;
 use crate::curve::Interval;
 use crate::error::{Error, Result};
 use crate::fit::interpolate_surface_on_knots;
-use crate::query::offset::check_arguments;
-use crate::query::offset::hermite_fit::MIN_RELATIVE_TOLERANCE;
+use crate::query::offset::{check_arguments, check_resolvable};
 use crate::surface::{BSplineSurface, Surface, unit_normal};
 
 /// The most grid points (m_u · m_v) one surface offset may interpolate.
@@ -199,15 +198,7 @@ pub fn offset_surface<S: Surface<3> + ?Sized>(surface: &S, distance: f64, tolera
         let flat: Vec<Point<3>> = samples.points.iter().flatten().copied().collect();
         let size = crate::query::Aabb::around(&flat, 0.0).diagonal().max(f64::MIN_POSITIVE);
         let scale = flat.iter().fold(0.0f64, |m, p| m.max(p.amax()));
-        if tolerance < MIN_RELATIVE_TOLERANCE * scale || !scale.is_finite() {
-            return Err(Error::invalid(
-                "tolerance",
-                format!(
-                    "{tolerance:e} is below what double precision resolves on an offset with coordinates up to {scale:e} (at least {:e})",
-                    MIN_RELATIVE_TOLERANCE * scale
-                ),
-            ));
-        }
+        check_resolvable(tolerance, scale)?;
         check_singular(&samples.singular, size)?;
         check_folds(surface, distance, &us, &vs)?;
         let b = interpolate_surface_on_knots(&samples.points, (3, 3), (&us, &ku), (&vs, &kv))?;
