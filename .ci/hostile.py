@@ -426,6 +426,25 @@ case("intersect two cubics", ["intersect", cubic, doc_file("cubic2.json", {"type
                               "knots": [0, 0, 0, 0, 1, 1, 1, 1], "control_points": [[0, 1], [1, -1], [3, 2], [4, -1]]})], OK)
 case("intersect a curve with itself (overlap)", ["intersect", cubic, cubic], OK)
 case("intersect --tolerance 0", ["intersect", cubic, cubic, "--tolerance", "0"], REFUSED, "--tolerance")
+case("offset a circle", ["offset", circle, "--distance", "0.5"], OK)
+case("offset the heart", ["offset", heart, "--distance", "0.3"], OK)
+case("offset a sphere", ["offset", sphere, "--distance", "-0.5", "--tolerance", "1e-4"], OK)
+case("offset --distance 0", ["offset", cubic, "--distance", "0"], OK)
+for d in ("nan", "inf", "-inf", "1e300", "1e400"):
+    case(f"offset --distance {d}", ["offset", circle, f"--distance={d}"], REFUSED, "--")
+for t in ("0", "-1", "nan", "1e-300"):
+    case(f"offset --tolerance {t}", ["offset", circle, "--distance", "1", f"--tolerance={t}"], REFUSED, "--tolerance")
+case("offset a sphere --tolerance 1e-12", ["offset", sphere, "--distance", "1", "--tolerance", "1e-12"], EITHER, "--tolerance")
+wavy = doc_file("wavy500.json", {"type": "bspline", "degree": 3, "knots": [0] * 3 + list(range(498)) + [497] * 3,
+                                 "control_points": [[i * 0.1, 0.3 * math.sin(i * 0.7)] for i in range(500)]})
+case("offset a wavy bspline --tolerance 1e-11", ["offset", wavy, "--distance", "0.01", "--tolerance", "1e-11"], EITHER,
+     "--tolerance")
+case("offset a wavy bspline past its curvature (112 cusps)", ["offset", wavy, "--distance", "0.2"], OK)
+case("offset a cone through its apex", ["offset", doc_file("cone.json", {"type": "cone"}), "--distance", "0.1"], REFUSED,
+     "apex")
+case("offset a sphere through its centre", ["offset", sphere, "--distance", "-3"], REFUSED, "--distance")
+case("offset a helix", ["offset", doc_file("helix.json", {"type": "helix"}), "--distance", "0.1"], REFUSED, "--normal")
+case("offset --normal 0,0,0", ["offset", circle, "--distance", "0.1", "--normal", "0,0,0"], REFUSED, "--normal")
 case("convert a B-spline to STEP", ["convert", cubic, "-o", out("cubic.step")], OK, output=out("cubic.step"))
 case("convert a sphere to STEP", ["convert", sphere, "-o", out("sphere.step")], OK, output=out("sphere.step"))
 bad_step = doc_file("bad.step", "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=CARTESIAN_POINT('',(0.,0.,#9));\nENDSEC;\n"

@@ -18,8 +18,9 @@ from OCP.gp import gp_Ax3, gp_Dir, gp_Pnt, gp_Pnt2d
 from OCP.OCP.collections import Array1_double, Array1_gp_Pnt, Array1_gp_Pnt2d, Array1_int, Array2_gp_Pnt
 from OCP.Geom import (Geom_BSplineCurve, Geom_BSplineSurface, Geom_CylindricalSurface, Geom_Plane,
                       Geom_ToroidalSurface)
-from OCP.Geom2d import Geom2d_BSplineCurve
-from OCP.Geom2dAPI import Geom2dAPI_InterCurveCurve
+from OCP.Geom import Geom_OffsetSurface
+from OCP.Geom2d import Geom2d_BSplineCurve, Geom2d_OffsetCurve
+from OCP.Geom2dAPI import Geom2dAPI_InterCurveCurve, Geom2dAPI_ProjectPointOnCurve
 from OCP.GeomAPI import GeomAPI_IntCS, GeomAPI_IntSS, GeomAPI_ProjectPointOnCurve, GeomAPI_ProjectPointOnSurf
 
 TOLERANCE = 1e-9
@@ -276,6 +277,69 @@ def intersect_surfaces(binary):
         compare_curves(f"intersect {name}", ours["curves"], inter, elapsed, ocp, 1e-4)
 
 
+def offset_pieces(binary, doc, distance, tolerance):
+    """splinekit's offset pieces (bspline documents) and the time it took."""
+    out, elapsed = splinekit(binary, doc, "offset", "--distance", repr(distance), "--tolerance", repr(tolerance))
+    return ([o["shape"] for o in out["objects"]] if out["type"] == "scene" else [out]), elapsed
+
+
+def offset_curves(binary, count):
+    """Offsets of a 2-D cubic: without cusps at the same parameters as Geom2d_OffsetCurve; past
+    the curvature radius (cusps trimmed) by the distance of every point from the curve
+    (Geom2dAPI_ProjectPointOnCurve)."""
+    tol = 1e-6
+    (doc, curve), _ = wavy_curves()
+    for d in (0.02, -0.02):
+        pieces, elapsed = offset_pieces(binary, doc, d, tol)
+        if len(pieces) != 1:
+            failures.append(f"offset of the wavy cubic at {d}: {len(pieces)} pieces, expected 1")
+            continue
+        ours, _ = splinekit(binary, pieces[0], "eval", "--samples", str(count))
+        start = time.perf_counter()
+        occ = Geom2d_OffsetCurve(curve, d)
+        theirs = [occ.Value(t) for t in ours["params"]]
+        ocp = time.perf_counter() - start
+        worst = max(math.hypot(p[0] - q.X(), p[1] - q.Y()) for p, q in zip(ours["points"], theirs))
+        print(f"offset of a 2-D cubic (100 control points) at d = {d}: largest distance from Geom2d_OffsetCurve at "
+              f"{len(theirs)} parameters {worst:.2e} (tolerance {tol:g}); splinekit CLI {elapsed:.3f} s")
+        if worst > tol:
+            failures.append(f"offset at {d}: {worst:.3e} from Geom2d_OffsetCurve")
+    for d in (0.4, -0.4):
+        pieces, elapsed = offset_pieces(binary, doc, d, tol)
+        worst, n = 0.0, 0
+        for piece in pieces:
+            ours, _ = splinekit(binary, piece, "eval", "--samples", str(max(10, count // len(pieces))))
+            for p in ours["points"]:
+                proj = Geom2dAPI_ProjectPointOnCurve(gp_Pnt2d(*p), curve)
+                ends = [curve.Value(curve.FirstParameter()), curve.Value(curve.LastParameter())]
+                near = min(([proj.LowerDistance()] if proj.NbPoints() > 0 else []) +
+                           [e.Distance(gp_Pnt2d(*p)) for e in ends])
+                worst, n = max(worst, abs(near - abs(d))), n + 1
+        print(f"offset of a 2-D cubic at d = {d} (cusps trimmed, {len(pieces)} pieces): {n} points, distance from "
+              f"the curve (GeomAPI projection) off |d| by at most {worst:.2e}; splinekit CLI {elapsed:.3f} s")
+        if worst > tol:
+            failures.append(f"trimmed offset at {d}: a point {worst:.3e} off |d|")
+
+
+def offset_surfaces(binary, count):
+    """The offset of the wavy bicubic patch against Geom_OffsetSurface at a grid of parameters."""
+    tol = 1e-5
+    doc, surface = bicubic_surface()
+    for d in (0.2, -0.2):
+        out, elapsed = splinekit(binary, doc, "offset", "--distance", repr(d), "--tolerance", repr(tol))
+        side = max(2, int(round(count ** 0.5)))
+        ours, _ = splinekit(binary, out, "eval", "--grid", f"{side},{side}")
+        start = time.perf_counter()
+        occ = Geom_OffsetSurface(surface, d)
+        theirs = [occ.Value(u, v) for u, v in ours["params"]]
+        ocp = time.perf_counter() - start
+        worst = max(math.dist(p, (q.X(), q.Y(), q.Z())) for p, q in zip(ours["points"], theirs))
+        print(f"offset of a bicubic patch at d = {d}: largest distance from Geom_OffsetSurface at {len(theirs)} "
+              f"parameters {worst:.2e} (tolerance {tol:g}); splinekit CLI {elapsed:.3f} s")
+        if worst > tol:
+            failures.append(f"surface offset at {d}: {worst:.3e} from Geom_OffsetSurface")
+
+
 def main():
     binary = sys.argv[1]
     count = int(sys.argv[sys.argv.index("--points") + 1]) if "--points" in sys.argv else 2500
@@ -284,6 +348,8 @@ def main():
     intersect_curves(binary)
     intersect_curve_surface(binary)
     intersect_surfaces(binary)
+    offset_curves(binary, count)
+    offset_surfaces(binary, count)
     if failures:
         print("\n".join(["FAILED:"] + failures))
         sys.exit(1)

@@ -47,6 +47,9 @@ enum Command {
     /// Where two curves cross, touch or overlap, where one crosses itself, where a curve
     /// meets a surface, or the intersection curves of two surfaces.
     Intersect(commands::intersect::IntersectArgs),
+    /// Offset of a plane curve or a surface at a signed distance, as B-splines within a
+    /// tolerance (cusps and self-intersections of a curve's offset trimmed).
+    Offset(commands::offset::OffsetArgs),
     /// Nearest point of a curve or surface to given points, or every local minimum.
     Project(commands::project::ProjectArgs),
     /// Plane sections (contours) of a surface.
@@ -118,6 +121,7 @@ fn main() {
         Command::Fit(a) => commands::fit::run_fit(a),
         Command::Interpolate(a) => commands::fit::run_interpolate(a),
         Command::Intersect(a) => commands::intersect::run(a),
+        Command::Offset(a) => commands::offset::run(a),
         Command::Project(a) => commands::project::run(a),
         Command::Refine(a) => commands::refine::run(a),
         Command::Section(a) => commands::section::run(a),

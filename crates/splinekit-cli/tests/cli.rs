@@ -853,6 +853,36 @@ fn intersect_and_section_cut_surfaces() {
 }
 
 #[test]
+fn offset_prints_bspline_documents_and_a_scene_of_pieces() {
+    // A circle of radius 2 at distance 0.5: one closed B-spline on the circle of radius 2.5.
+    let v = ok_json(&["offset", "-", "--distance", "0.5", "--tolerance", "1e-8"], r#"{"type":"circle","radius":2}"#);
+    assert_eq!(v["type"], "bspline", "{v}");
+    assert_eq!(v["periodic"], true, "{v}");
+    let text = v.to_string();
+    let e = ok_json(&["eval", "-", "--samples", "50"], &text);
+    for p in e["points"].as_array().unwrap() {
+        assert!((floats(p).iter().map(|x| x * x).sum::<f64>().sqrt() - 2.5).abs() < 1e-8, "{p}");
+    }
+    // An ellipse's inner offset past its smallest radius of curvature: two trimmed pieces.
+    let v = ok_json(&["offset", "-", "--distance", "-0.6"], r#"{"type":"ellipse","a":3,"b":1}"#);
+    assert_eq!(v["type"], "scene", "{v}");
+    assert_eq!(v["objects"].as_array().unwrap().len(), 2, "{v}");
+    // A sphere's offset is a B-spline surface on the sphere of radius 2.5.
+    let v = ok_json(&["offset", "-", "--distance", "0.5", "--tolerance", "1e-4"], r#"{"type":"sphere","radius":2}"#);
+    assert_eq!(v["type"], "bspline_surface", "{v}");
+    let e = ok_json(&["eval", "-", "--grid", "7,7"], &v.to_string());
+    for p in e["points"].as_array().unwrap() {
+        assert!((floats(p).iter().map(|x| x * x).sum::<f64>().sqrt() - 2.5).abs() < 1e-4, "{p}");
+    }
+    let circle = r#"{"type":"circle","radius":2}"#;
+    assert_bad(&["offset", "-", "--distance", "nan"], circle, "--distance");
+    assert_bad(&["offset", "-", "--distance", "1", "--tolerance", "0"], circle, "--tolerance");
+    assert_bad(&["offset", "-", "--distance", "1", "--normal", "0,0"], circle, "--normal");
+    assert_bad(&["offset", "-", "--distance", "0.1"], r#"{"type":"cone"}"#, "apex");
+    assert_bad(&["offset", "-", "--distance", "0.1", "--normal", "1,0,0"], r#"{"type":"sphere"}"#, "--normal");
+}
+
+#[test]
 fn eval_samples_at_equal_arc_length() {
     // The quarter points of an ellipse by length are its vertices, by symmetry.
     let v = ok_json(&["eval", "-", "--samples", "5", "--arc-length"], r#"{"type":"ellipse","a":2,"b":1}"#);

@@ -2,6 +2,7 @@
 //! glTF exports, and plots (SVG) — into a folder with an index page.
 
 mod figures;
+mod queries;
 mod scenes;
 mod subdivision;
 
@@ -81,6 +82,7 @@ fn plots(folder: &Folder) -> Result<Vec<Entry>> {
     ];
     plots.extend(figures::model_curves()?);
     plots.extend(figures::blending()?);
+    plots.extend([queries::crossings()?, queries::heart_offsets()?, queries::contours()?]);
     plots
         .iter()
         .map(|f| {

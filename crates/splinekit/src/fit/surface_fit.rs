@@ -118,28 +118,48 @@ pub fn interpolate_surface<const D: usize>(
     }
     let vparams = grid_params(grid, params)?;
     let uparams = grid_params(&transpose(grid), params)?;
-    let interp = |pts: &[Point<D>], t: &[f64], deg: usize| -> Result<crate::curve::BSplineCurve<D>> {
-        // Interpolate at the shared parameters: fit the square system on averaged knots.
-        let mut knots = vec![0.0; deg + 1];
-        for j in 1..pts.len() - deg {
-            knots.push(t[j..j + deg].iter().sum::<f64>() / deg as f64);
-        }
-        knots.extend(vec![1.0; deg + 1]);
-        Ok(fit_with_knots(pts, t, &FitWithKnotsOptions::new(deg, knots))?.curve)
-    };
+    let (ku, kv) = (averaged_knots(&uparams, p), averaged_knots(&vparams, q));
+    interpolate_surface_on_knots(grid, degrees, (&uparams, &ku), (&vparams, &kv))
+}
+
+/// Clamped knots on [0, 1] for interpolation at parameters `t` (one control point per
+/// parameter): the interior knots are averages of `deg` consecutive parameters (de Boor).
+fn averaged_knots(t: &[f64], deg: usize) -> Vec<f64> {
+    let mut knots = vec![0.0; deg + 1];
+    for j in 1..t.len() - deg {
+        knots.push(t[j..j + deg].iter().sum::<f64>() / deg as f64);
+    }
+    knots.extend(vec![1.0; deg + 1]);
+    knots
+}
+
+/// B-spline surface interpolating every grid point (`grid[a][b]` at (`u.0[a]`, `v.0[b]`)) on
+/// the given knots (`u.1`, `v.1`; one control point per grid line each way, and the
+/// parameters must satisfy the Schoenberg–Whitney conditions): every row is interpolated
+/// in v, then every column of the result in u (the square systems of [`fit_with_knots`]).
+pub fn interpolate_surface_on_knots<const D: usize>(
+    grid: &[Vec<Point<D>>],
+    degrees: (usize, usize),
+    u: (&[f64], &[f64]),
+    v: (&[f64], &[f64]),
+) -> Result<BSplineSurface<D>> {
+    let (mu, mv) = check_grid(grid)?;
+    let (p, q) = degrees;
+    if u.0.len() != mu || v.0.len() != mv {
+        return Err(Error::invalid(
+            "params",
+            format!("a {mu} × {mv} grid needs {mu} × {mv} parameters, got {} × {}", u.0.len(), v.0.len()),
+        ));
+    }
     let mut mid = Vec::with_capacity(mu);
-    let mut kv = Vec::new();
     for row in grid {
-        let c = interp(row, &vparams, q)?;
-        kv = c.knots().to_vec();
-        mid.push(c.control_points().to_vec());
+        mid.push(fit_with_knots(row, v.0, &FitWithKnotsOptions::new(q, v.1.to_vec()))?.curve.control_points().to_vec());
     }
     let mut cols = Vec::with_capacity(mv);
-    let mut ku = Vec::new();
     for col in transpose(&mid) {
-        let c = interp(&col, &uparams, p)?;
-        ku = c.knots().to_vec();
-        cols.push(c.control_points().to_vec());
+        cols.push(
+            fit_with_knots(&col, u.0, &FitWithKnotsOptions::new(p, u.1.to_vec()))?.curve.control_points().to_vec(),
+        );
     }
-    BSplineSurface::new((p, q), ku, kv, transpose(&cols), (false, false))
+    BSplineSurface::new((p, q), u.1.to_vec(), v.1.to_vec(), transpose(&cols), (false, false))
 }

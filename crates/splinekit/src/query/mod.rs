@@ -1,5 +1,6 @@
 //! Geometric queries: projection of points onto curves and surfaces (point inversion),
-//! intersections of curves with curves and with surfaces, arc length as a parameter.
+//! intersections of curves with curves and with surfaces, offsets of curves and surfaces,
+//! arc length as a parameter.
 //!
 //! Every query searches a cover of the shape by cubic Hermite pieces (curves,
 //! [`curve_cover`]) or bicubic Hermite patches (surfaces, [`surface_cover`]) whose
@@ -18,6 +19,7 @@ pub mod curve_intersection;
 pub mod curve_surface;
 pub mod march;
 pub mod normal_cone;
+pub mod offset;
 pub mod project_curve;
 pub mod project_surface;
 pub mod slope;
@@ -32,6 +34,7 @@ pub use curve_intersection::{
     CurveIntersection, CurveIntersections, CurveOverlap, IntersectionKind, intersect_curves, self_intersections,
 };
 pub use curve_surface::{CurveSurfaceIntersection, intersect_curve_surface};
+pub use offset::{CurveOffset, OffsetPiece, SurfaceOffset, offset_curve, offset_surface};
 pub use project_curve::{CurveProjector, Nearest};
 pub use project_surface::{NearestOnSurface, SurfaceProjector};
 pub use surface_intersection::{EarlyStop, IntersectionBranch, intersect_surfaces};
