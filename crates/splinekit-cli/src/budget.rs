@@ -68,31 +68,12 @@ pub fn output(numbers: f64) -> Cost {
     Cost::new(numbers * 8.0, numbers * FORMAT_WORK_PER_NUMBER)
 }
 
-/// Bytes of one vertex of a triangle mesh held for output: position, normal and (u, v)
-/// in f64, their f32 copies, and the samples they came from.
-pub const MESH_VERTEX_BYTES: f64 = 160.0;
-/// Bytes of one vertex written as text (OBJ/PLY lines) or binary (STL, glTF).
-pub const MESH_VERTEX_OUTPUT_BYTES: f64 = 120.0;
-/// Work of one mesh vertex besides evaluating the surface: normals, welding, writing.
-pub const MESH_VERTEX_WORK: f64 = 400.0;
-/// Bytes of one cell of an adaptive quad-tree: its leaf, its cached samples and the
-/// vertex and two triangles it becomes.
-pub const ADAPTIVE_CELL_BYTES: f64 = 600.0;
-
-/// A regular mesh of n × n cells of a shape whose points cost `eval`: (n + 1)² vertices
-/// (each a point and its partials), held and written.
-pub fn regular_mesh(n: usize, eval: f64) -> Cost {
-    let vertices = (n as f64 + 1.0).powi(2);
-    Cost::new(vertices * (MESH_VERTEX_BYTES + MESH_VERTEX_OUTPUT_BYTES), vertices * (4.0 * eval + MESH_VERTEX_WORK))
-}
+pub use splinekit_scene::budget::regular_mesh;
 
 /// The most cells an adaptive mesh of a shape (built at `shape`) may have within the
-/// budget: its memory and its work (about five samples of the surface per cell).
+/// budget of this run (see [`Budget::adaptive_cells`]).
 pub fn adaptive_cells(shape: &ShapeCost) -> usize {
-    let b = current();
-    let by_memory = (b.max_bytes - shape.build.bytes) / ADAPTIVE_CELL_BYTES;
-    let by_work = (b.max_work - shape.build.work) / (5.0 * 4.0 * shape.eval + MESH_VERTEX_WORK);
-    by_memory.min(by_work).max(1.0) as usize
+    current().adaptive_cells(shape)
 }
 
 /// The cost of composing one frame of a scene (every object's document checked on its

@@ -1,19 +1,20 @@
 //! Blending splines from Python: the affine frames of their local pieces, their animation
 //! clock, and the local pieces themselves. A blending spline c(t) = Σₖ B∘wₖ(t) ℓₖ(t)
 //! blends local curves ℓₖ (surfaces: patches) with a B-function; each piece carries an
-//! affine frame about its interpolation point. Objects are immutable: these methods return
-//! a new object built from the changed document.
+//! affine frame about its interpolation point. `set_transform` changes the object in place
+//! (its document and the curve or surface built from it); `at_time` returns a new object.
 
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use splinekit::Point;
+use splinekit_scene::budget::{Cost, F64, ShapeCost};
 use splinekit_scene::transforms::TransformDoc;
-use splinekit_scene::{CurveDocument, SurfaceDocument};
+use splinekit_scene::{CurveDocument, SurfaceDocument, with_dimension};
 
+use crate::budget;
 use crate::curve::PyCurve;
 use crate::curve_kinds::{curve_object, document};
-use crate::dimension::by_dimension;
 use crate::errors::{OrValueError, value_error};
 use crate::surface::PySurface;
 use crate::surface_kinds::surface_object;
@@ -45,9 +46,11 @@ fn as_array<'py>(py: Python<'py>, values: Vec<f64>, shape: Vec<usize>) -> PyResu
 fn local_curves<'py, const D: usize>(
     py: Python<'py>,
     doc: &splinekit_scene::curves::BlendingSplineDoc,
+    cost: &ShapeCost,
     samples: usize,
 ) -> PyResult<Bound<'py, PyList>> {
     let c = doc.curve::<D>().or_value_error()?;
+    check_pieces::<D>(cost, c.local_count(), samples)?;
     let list = PyList::empty(py);
     let mut v = [Point::<D>::zeros(); 1];
     for k in 0..c.local_count() {
@@ -72,10 +75,12 @@ fn local_curves<'py, const D: usize>(
 fn local_patches<'py, const D: usize>(
     py: Python<'py>,
     doc: &splinekit_scene::surfaces::BlendingSplineSurfaceDoc,
+    cost: &ShapeCost,
     samples: usize,
 ) -> PyResult<Bound<'py, PyList>> {
     let s = doc.surface::<D>().or_value_error()?;
     let (nu, nv) = s.local_count();
+    check_pieces::<D>(cost, nu * nv, samples * samples)?;
     let list = PyList::empty(py);
     let mut v = [Point::<D>::zeros(); 1];
     let at = |i: usize| i as f64 / (samples - 1) as f64;
@@ -96,6 +101,14 @@ fn local_patches<'py, const D: usize>(
     Ok(list)
 }
 
+/// Refuses `pieces` local pieces of `points` sampled points each in `D` coordinates over
+/// the budget (the points held and evaluated), naming `samples`.
+fn check_pieces<const D: usize>(cost: &ShapeCost, pieces: usize, points: usize) -> PyResult<()> {
+    let n = pieces as f64 * points as f64;
+    let request = Cost::new(n * D as f64 * F64, cost.evaluations(n, 0));
+    budget::check_request("samples", &format!("{pieces} local pieces of {points} points"), cost, request)
+}
+
 fn check_samples(samples: usize) -> PyResult<()> {
     if !(2..=10_000).contains(&samples) {
         return Err(value_error(format!("samples: need 2 to 10000 samples per piece, got {samples}")));
@@ -105,26 +118,28 @@ fn check_samples(samples: usize) -> PyResult<()> {
 
 #[pymethods]
 impl PyCurve {
-    /// A copy with the affine frame of local curve `k` set: ``translate`` (D numbers),
+    /// Sets the affine frame of local curve `k`, in place: ``translate`` (D numbers),
     /// ``rotate`` (``{"axis": [..], "angle": radians, "pivot": [..]}``), ``scale`` (a
-    /// number), applied in the local curve's own frame about its interpolation point.
+    /// number), applied in the local curve's own frame about its interpolation point and
+    /// replacing the frame it had. On an error the curve is left as it was.
     #[pyo3(signature = (k, translate = None, rotate = None, scale = None))]
-    fn set_transform<'py>(
-        &self,
-        py: Python<'py>,
+    fn set_transform(
+        &mut self,
         k: usize,
-        translate: Option<&Bound<'py, PyAny>>,
-        rotate: Option<&Bound<'py, PyAny>>,
-        scale: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let CurveDocument::BlendingSpline(mut d) = self.doc.clone() else {
+        translate: Option<&Bound<'_, PyAny>>,
+        rotate: Option<&Bound<'_, PyAny>>,
+        scale: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<()> {
+        let CurveDocument::BlendingSpline(d) = &self.doc else {
             return Err(value_error(format!(
                 "type: set_transform works on blending_spline curves, not {}",
                 self.doc.type_name()
             )));
         };
+        let mut d = d.clone();
         put(&mut d.transforms, k, transform(translate, rotate, scale)?);
-        curve_object(py, CurveDocument::BlendingSpline(d))
+        *self = PyCurve::new(CurveDocument::BlendingSpline(d))?;
+        Ok(())
     }
 
     /// A copy posed at time `t` (seconds) by the document's animation tracks, as
@@ -150,31 +165,32 @@ impl PyCurve {
                 self.doc.type_name()
             )));
         };
-        by_dimension!(self.dimension(), "control_points", D => local_curves::<D>(py, d, samples))
+        with_dimension!(self.dimension(), "control_points", D => local_curves::<D>(py, d, &self.doc.cost(), samples), or value_error)
     }
 }
 
 #[pymethods]
 impl PySurface {
-    /// A copy with the affine frame of local patch ``k = (i, j)`` set (see
+    /// Sets the affine frame of local patch ``k = (i, j)``, in place (see
     /// ``Curve.set_transform``).
     #[pyo3(signature = (k, translate = None, rotate = None, scale = None))]
-    fn set_transform<'py>(
-        &self,
-        py: Python<'py>,
+    fn set_transform(
+        &mut self,
         k: (usize, usize),
-        translate: Option<&Bound<'py, PyAny>>,
-        rotate: Option<&Bound<'py, PyAny>>,
-        scale: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let SurfaceDocument::BlendingSplineSurface(mut d) = self.doc.clone() else {
+        translate: Option<&Bound<'_, PyAny>>,
+        rotate: Option<&Bound<'_, PyAny>>,
+        scale: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<()> {
+        let SurfaceDocument::BlendingSplineSurface(d) = &self.doc else {
             return Err(value_error(format!(
                 "type: set_transform works on blending_spline_surface surfaces, not {}",
                 self.doc.type_name()
             )));
         };
+        let mut d = d.clone();
         put(&mut d.transforms, k, transform(translate, rotate, scale)?);
-        surface_object(py, SurfaceDocument::BlendingSplineSurface(d))
+        *self = PySurface::new(SurfaceDocument::BlendingSplineSurface(d))?;
+        Ok(())
     }
 
     /// A copy posed at time `t` (seconds) by the document's animation tracks.
@@ -198,6 +214,6 @@ impl PySurface {
                 self.doc.type_name()
             )));
         };
-        by_dimension!(self.surface.dimension(), "control_points", D => local_patches::<D>(py, d, samples))
+        with_dimension!(self.surface.dimension(), "control_points", D => local_patches::<D>(py, d, &self.doc.cost(), samples), or value_error)
     }
 }

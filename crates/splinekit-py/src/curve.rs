@@ -10,7 +10,7 @@ use splinekit::Interval;
 use splinekit::curve::Curve;
 use splinekit_scene::{AnyCurve, CurveDocument, Curves, DimensionVisitor};
 
-use crate::arrays::{Numbers, as_points_mut, check_finite, filled_rows};
+use crate::arrays::{Numbers, as_points_mut, check_params, filled_rows};
 use crate::errors::{OrValueError, value_error};
 
 /// Highest derivative order one call may ask for (as `splinekit eval --derivatives`).
@@ -22,7 +22,7 @@ pub const MAX_DERIVATIVES: usize = 64;
 /// parameters (shape (N, D)); ``c(t, nu)`` is the derivative c^(nu)(t) with respect to
 /// the curve's own parameter. Open curves refuse parameters outside their domain
 /// [a, b]; closed (periodic) curves wrap them around.
-#[pyclass(subclass, frozen, module = "splinekit", name = "Curve")]
+#[pyclass(subclass, module = "splinekit", name = "Curve")]
 pub struct PyCurve {
     pub(crate) doc: CurveDocument,
     pub(crate) curve: AnyCurve,
@@ -71,38 +71,39 @@ impl PyCurve {
     /// Refuses non-finite parameters and, on open curves, parameters outside the domain
     /// (with the slack of `splinekit eval --at`).
     pub fn check_params(&self, field: &str, params: &[f64]) -> PyResult<()> {
-        check_finite(field, params)?;
-        if self.closed {
-            return Ok(());
-        }
-        let d = self.domain;
-        let slack = 1e-12 * d.length().max(d.start.abs()).max(d.end.abs());
-        match params.iter().find(|&&t| t < d.start - slack || t > d.end + slack) {
-            Some(t) => Err(value_error(format!(
-                "{field}: parameter {t} is outside the domain [{}, {}] of this open curve",
-                d.start, d.end
-            ))),
-            None => Ok(()),
-        }
+        check_params(field, params, (!self.closed).then_some(self.domain), "curve")
     }
 
-    /// Values and derivatives up to `order` at `params`, shaped (N, order+1, D)
-    /// (scalar: (order+1, D)), the GIL released while the kernel works.
-    pub fn evaluate<'py>(
+    /// The derivatives of `order` at the parameters `t` (all orders 0 … `order` when `all`):
+    /// shaped (N, D) (`all`: (N, order + 1, D)), without N for a number, written straight
+    /// into the new array chunk by chunk with the GIL released. `field` names the order.
+    fn evaluate<'py>(
         &self,
         py: Python<'py>,
         t: &Bound<'py, PyAny>,
-        order: usize,
+        (field, order): (&str, usize),
+        all: bool,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        check_order("order", order)?;
+        check_order(field, order)?;
         let numbers = Numbers::new(t)?;
         let params = numbers.list("t")?;
         self.check_params("t", params)?;
         let (n, d) = (params.len(), self.dimension());
-        let shape: Vec<usize> = if numbers.is_scalar() { vec![order + 1, d] } else { vec![n, order + 1, d] };
+        let mut shape: Vec<usize> = if numbers.is_scalar() { vec![] } else { vec![n] };
+        shape.extend(if all { vec![order + 1, d] } else { vec![d] });
+        let row = if all { (order + 1) * d } else { d };
         let curve = &self.curve;
-        filled_rows(py, &shape, n, (order + 1) * d, |rows, out| {
-            curve.visit(EvalInto { params: &params[rows], order, out })
+        filled_rows(py, &shape, n, row, |rows, out| {
+            let params = &params[rows];
+            if all || order == 0 {
+                return curve.visit(EvalInto { params, order, out });
+            }
+            // All orders up to `order`, then the last of each block.
+            let mut blocks = vec![0.0; params.len() * (order + 1) * d];
+            curve.visit(EvalInto { params, order, out: &mut blocks });
+            for (o, block) in out.chunks_exact_mut(d).zip(blocks.chunks_exact((order + 1) * d)) {
+                o.copy_from_slice(&block[order * d..]);
+            }
         })
     }
 }
@@ -129,25 +130,7 @@ impl PyCurve {
         t: &Bound<'py, PyAny>,
         nu: usize,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        check_order("nu", nu)?;
-        let numbers = Numbers::new(t)?;
-        let params = numbers.list("t")?;
-        self.check_params("t", params)?;
-        let (n, d) = (params.len(), self.dimension());
-        let shape: Vec<usize> = if numbers.is_scalar() { vec![d] } else { vec![n, d] };
-        let curve = &self.curve;
-        filled_rows(py, &shape, n, d, |rows, out| {
-            let params = &params[rows];
-            if nu == 0 {
-                return curve.visit(EvalInto { params, order: 0, out });
-            }
-            // All orders up to nu, then the nu-th of each block.
-            let mut all = vec![0.0; params.len() * (nu + 1) * d];
-            curve.visit(EvalInto { params, order: nu, out: &mut all });
-            for (o, block) in out.chunks_exact_mut(d).zip(all.chunks_exact((nu + 1) * d)) {
-                o.copy_from_slice(&block[nu * d..]);
-            }
-        })
+        self.evaluate(py, t, ("nu", nu), false)
     }
 
     /// c(t), c'(t), …, c^(order)(t): shape (N, order + 1, D) for N parameters, (order + 1, D)
@@ -158,7 +141,7 @@ impl PyCurve {
         t: &Bound<'py, PyAny>,
         order: usize,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.evaluate(py, t, order)
+        self.evaluate(py, t, ("order", order), true)
     }
 
     /// The parameter domain (a, b).

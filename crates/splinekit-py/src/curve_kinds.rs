@@ -114,7 +114,7 @@ fn no_field(doc: &CurveDocument, name: &str) -> PyErr {
 /// B-spline curve c(t) = Σᵢ N_{i,p}(t) Pᵢ on [t_p, t_n], n control points, n + p + 1
 /// knots (scipy's ``BSpline(t, c, k)`` order). ``periodic=True`` makes it closed: the
 /// control points wrap around and the knots must repeat their spacing with period n.
-#[pyclass(extends = PyCurve, frozen, module = "splinekit", name = "BSpline")]
+#[pyclass(extends = PyCurve, module = "splinekit", name = "BSpline")]
 pub struct PyBSpline {
     pub(crate) report: Option<Py<FitReport>>,
 }
@@ -151,7 +151,7 @@ impl PyBSpline {
 }
 
 /// NURBS curve C(t) = Σ N_{i,p}(t) wᵢ Pᵢ / Σ N_{i,p}(t) wᵢ with weights wᵢ > 0.
-#[pyclass(extends = PyCurve, frozen, module = "splinekit", name = "NURBS")]
+#[pyclass(extends = PyCurve, module = "splinekit", name = "NURBS")]
 pub struct PyNurbs;
 
 #[pymethods]
@@ -182,7 +182,7 @@ impl PyNurbs {
 
 /// Bézier curve c(t) = Σᵢ B_{i,n}(t) Pᵢ on [0, 1], Bernstein polynomials
 /// B_{i,n}(t) = C(n, i) tⁱ (1 − t)ⁿ⁻ⁱ (evaluated by de Casteljau).
-#[pyclass(extends = PyCurve, frozen, module = "splinekit", name = "Bezier")]
+#[pyclass(extends = PyCurve, module = "splinekit", name = "Bezier")]
 pub struct PyBezier;
 
 #[pymethods]
@@ -195,7 +195,7 @@ impl PyBezier {
 
 /// Rational Bézier curve c(t) = Σ B_{i,n}(t) wᵢ Pᵢ / Σ B_{i,n}(t) wᵢ on [0, 1] (conics
 /// exactly: a quadratic with middle weight cos(θ/2) is a circular arc of sweep θ).
-#[pyclass(extends = PyCurve, frozen, module = "splinekit", name = "RationalBezier")]
+#[pyclass(extends = PyCurve, module = "splinekit", name = "RationalBezier")]
 pub struct PyRationalBezier;
 
 #[pymethods]
@@ -210,7 +210,7 @@ impl PyRationalBezier {
 /// Piecewise cubic Hermite spline through ``points`` with first derivatives ``tangents``
 /// at the parameters ``params`` (default 0, 1, …, m − 1): on [tᵢ, tᵢ₊₁] with h = tᵢ₊₁ − tᵢ
 /// and s = (t − tᵢ)/h, c = h₀₀(s)Pᵢ + h h₁₀(s)Tᵢ + h₀₁(s)Pᵢ₊₁ + h h₁₁(s)Tᵢ₊₁.
-#[pyclass(extends = PyCurve, frozen, module = "splinekit", name = "Hermite")]
+#[pyclass(extends = PyCurve, module = "splinekit", name = "Hermite")]
 pub struct PyHermite;
 
 #[pymethods]
@@ -229,7 +229,7 @@ impl PyHermite {
 
 /// Catmull–Rom spline through ``points``: α = 0 uniform, ½ centripetal, 1 chordal
 /// parameters (Barry–Goldman pyramid); ``closed=True`` joins the last point to the first.
-#[pyclass(extends = PyCurve, frozen, module = "splinekit", name = "CatmullRom")]
+#[pyclass(extends = PyCurve, module = "splinekit", name = "CatmullRom")]
 pub struct PyCatmullRom;
 
 #[pymethods]

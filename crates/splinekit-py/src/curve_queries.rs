@@ -90,14 +90,7 @@ impl PyCurve {
         accuracy: f64,
     ) -> PyResult<(f64, Bound<'py, PyAny>, f64)> {
         let numbers = Numbers::new(p)?;
-        let query = numbers.list("p")?;
-        if query.len() != self.dimension() || numbers.is_scalar() {
-            return Err(value_error(format!(
-                "p: expected {} coordinates like the curve's points, got {}",
-                self.dimension(),
-                numbers.values().len()
-            )));
-        }
+        let query = numbers.point("p", self.dimension(), "curve")?;
         let curve = &self.curve;
         let (t, point, distance) = py.detach(|| curve.visit(Nearest { query, accuracy })).or_value_error()?;
         Ok((t, numpy::PyArray1::from_vec(py, point).into_any(), distance))

@@ -62,10 +62,10 @@ pub fn any_document(ob: &Bound<'_, PyAny>) -> PyResult<Value> {
         return Ok(scene.get().value.clone());
     }
     if let Ok(curve) = ob.cast::<PyCurve>() {
-        return Ok(curve.get().doc.to_value());
+        return Ok(curve.borrow().doc.to_value());
     }
     if let Ok(surface) = ob.cast::<PySurface>() {
-        return Ok(surface.get().doc.to_value());
+        return Ok(surface.borrow().doc.to_value());
     }
     document_value(ob)
 }

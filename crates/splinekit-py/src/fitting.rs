@@ -8,11 +8,11 @@ use splinekit::fit::{
     self as kfit, Fit, FitOptions, FitWithKnotsOptions, InterpolationOptions, KnotPlacement, Parametrization,
 };
 use splinekit_scene::refine::bspline_doc;
+use splinekit_scene::with_dimension;
 
 use crate::arrays::{Numbers, as_points, check_finite};
 use crate::curve::PyCurve;
 use crate::curve_kinds::wrap;
-use crate::dimension::by_dimension;
 use crate::errors::{OrValueError, value_error};
 
 /// Largest degree accepted for fitting and interpolation (as the command line).
@@ -93,6 +93,17 @@ fn check_degree(p: usize) -> PyResult<()> {
         return Err(value_error(format!("degree: must be between 1 and {MAX_DEGREE}, got {p}")));
     }
     Ok(())
+}
+
+/// A fit's error, its field named as the Python argument: the kernel's `control_points`
+/// is `n_control_points` here (as the command line names it `--control-points`), the
+/// rest of the line unchanged.
+fn fit_error(e: splinekit::Error) -> PyErr {
+    let message = e.to_string();
+    match message.strip_prefix("control_points:") {
+        Some(rest) => value_error(format!("n_control_points:{rest}")),
+        None => value_error(message),
+    }
 }
 
 /// Owned numbers of a 1-D argument, checked finite.
@@ -208,11 +219,11 @@ pub fn fit<'py>(
     let data = Numbers::new(points)?;
     let (_, d) = data.rows("points")?;
     let values = data.values();
-    let (doc, report) = by_dimension!(d, "points", D => {
-        let f = py.detach(|| request.run(as_points::<D>(values))).or_value_error()?;
+    let (doc, report) = with_dimension!(d, "points", D => {
+        let f = py.detach(|| request.run(as_points::<D>(values))).map_err(fit_error)?;
         let report = FitReport { rms_error: f.rms_error, max_error: f.max_error, condition_estimate: f.condition_estimate, params: f.params };
         Ok::<_, PyErr>((bspline_doc(&f.curve), report))
-    })?;
+    }, or value_error)?;
     wrap(py, PyCurve::new(doc)?, Some(Py::new(py, report)?))
 }
 
@@ -238,7 +249,7 @@ pub fn interpolate<'py>(
     let data = Numbers::new(points)?;
     let (_, d) = data.rows("points")?;
     let values = data.values();
-    let doc = by_dimension!(d, "points", D => {
+    let doc = with_dimension!(d, "points", D => {
         let mut o = InterpolationOptions::<D>::new(degree);
         o.params = method;
         o.closed = closed;
@@ -250,6 +261,6 @@ pub fn interpolate<'py>(
         }
         let r = py.detach(|| kfit::interpolate(as_points::<D>(values), &o)).or_value_error()?;
         Ok::<_, PyErr>(bspline_doc(&r.curve))
-    })?;
+    }, or value_error)?;
     wrap(py, PyCurve::new(doc)?, None)
 }

@@ -6,14 +6,13 @@
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 use splinekit::curve::{BSplineCurve, BezierCurve, NurbsCurve, RationalBezierCurve};
-use splinekit_scene::CurveDocument;
 use splinekit_scene::curves::{BezierDoc, RationalBezierDoc};
 use splinekit_scene::points::{from_points, to_points};
 use splinekit_scene::refine::{Refinement, bspline_doc, nurbs_doc, refine};
+use splinekit_scene::{CurveDocument, with_dimension};
 
 use crate::curve::PyCurve;
 use crate::curve_kinds::curve_object;
-use crate::dimension::by_dimension;
 use crate::errors::{OrValueError, value_error};
 
 /// Most knots one insertion may add (as ``splinekit refine``).
@@ -132,14 +131,16 @@ impl PyCurve {
     /// multiplicity). A closed curve is cut open at t instead: ``(open_curve, None)``.
     fn split<'py>(&self, py: Python<'py>, t: f64) -> PyResult<(Bound<'py, PyAny>, Option<Bound<'py, PyAny>>)> {
         self.check_params("t", &[t])?;
-        let (left, right) = by_dimension!(self.dimension(), "control_points", D => split_docs::<D>(&self.doc, t))?;
+        let (left, right) =
+            with_dimension!(self.dimension(), "control_points", D => split_docs::<D>(&self.doc, t), or value_error)?;
         Ok((curve_object(py, left)?, right.map(|r| curve_object(py, r)).transpose()?))
     }
 
     /// The Bézier (rational Bézier) segments of the curve in order, each on [0, 1]
     /// (every interior knot raised to multiplicity p).
     fn to_bezier<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
-        let docs = by_dimension!(self.dimension(), "control_points", D => bezier_docs::<D>(&self.doc))?;
+        let docs =
+            with_dimension!(self.dimension(), "control_points", D => bezier_docs::<D>(&self.doc), or value_error)?;
         let objects = docs.into_iter().map(|d| curve_object(py, d)).collect::<PyResult<Vec<_>>>()?;
         PyList::new(py, objects)
     }

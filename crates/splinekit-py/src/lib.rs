@@ -8,10 +8,10 @@
 
 mod arrays;
 mod blending;
+mod budget;
 mod curve;
 mod curve_kinds;
 mod curve_queries;
-mod dimension;
 mod documents;
 mod errors;
 mod fitting;

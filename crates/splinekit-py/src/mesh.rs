@@ -9,8 +9,10 @@ use splinekit::surface::Surface;
 use splinekit_mesh::export::{GltfGeometry, GltfScene, obj, ply, stl};
 use splinekit_mesh::surface_mesh::{adaptive_with_limit, regular};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, TriangleMesh};
+use splinekit_scene::budget::{polyline, regular_mesh};
 use splinekit_scene::{Curves, DimensionVisitor, Surfaces};
 
+use crate::budget;
 use crate::curve::PyCurve;
 use crate::errors::{OrValueError, value_error};
 use crate::surface::PySurface;
@@ -117,8 +119,9 @@ impl DimensionVisitor<Curves> for CurvePoints {
 }
 
 /// The triangle mesh of a surface: `density` cells per direction, or adaptive to the
-/// chord height `tolerance`, or a regular 64 × 64 grid.
-struct SurfaceTriangles(Option<usize>, Option<f64>);
+/// chord height `tolerance` with at most the given number of cells, or a regular 64 × 64
+/// grid.
+struct SurfaceTriangles(Option<usize>, Option<f64>, usize);
 
 impl DimensionVisitor<Surfaces> for SurfaceTriangles {
     type Output = splinekit::Result<TriangleMesh>;
@@ -132,7 +135,7 @@ impl DimensionVisitor<Surfaces> for SurfaceTriangles {
             (Some(n), _) => regular(s, n, n, options),
             (None, Some(t)) => {
                 let tolerance = AdaptiveTolerance { chord_height: t, normal_angle: 0.2, max_depth: 10 };
-                adaptive_with_limit(s, (8, 8), tolerance, options, MAX_ADAPTIVE_CELLS)
+                adaptive_with_limit(s, (8, 8), tolerance, options, self.2)
             }
             (None, None) => regular(s, 64, 64, options),
         }
@@ -151,6 +154,11 @@ impl PyCurve {
         density: Option<usize>,
         tolerance: Option<f64>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let cost = self.doc.cost();
+        let points = density.map_or(MAX_CURVE_POINTS, |n| n.min(MAX_CURVE_POINTS)) as f64 + 1.0;
+        let field = if density.is_some() { "density" } else { "tolerance" };
+        let what = format!("a polyline of up to {points} points");
+        budget::check_request(field, &what, &cost, polyline(points, cost.eval))?;
         let curve = &self.curve;
         let (flat, d) = py.detach(|| curve.visit(CurvePoints(density, tolerance))).or_value_error()?;
         let n = flat.len() / d;
@@ -165,8 +173,17 @@ impl PySurface {
     /// height ``tolerance`` (crack-free), or 64 × 64 cells.
     #[pyo3(signature = (density = None, tolerance = None))]
     fn tessellate(&self, py: Python<'_>, density: Option<usize>, tolerance: Option<f64>) -> PyResult<PyMesh> {
+        let cost = self.doc.cost();
+        let mut cells = MAX_ADAPTIVE_CELLS;
+        if density.is_some() || tolerance.is_none() {
+            let n = density.unwrap_or(64).min(MAX_DENSITY);
+            let what = format!("a mesh of {n}×{n} cells");
+            budget::check_request("density", &what, &cost, regular_mesh(n, cost.eval))?;
+        } else {
+            cells = cells.min(budget::current()?.adaptive_cells(&cost));
+        }
         let surface = &self.surface;
-        let mesh = py.detach(|| surface.visit(SurfaceTriangles(density, tolerance))).or_value_error()?;
+        let mesh = py.detach(|| surface.visit(SurfaceTriangles(density, tolerance, cells))).or_value_error()?;
         Ok(PyMesh { mesh })
     }
 }

@@ -6,9 +6,11 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use splinekit::Interval;
 use splinekit::surface::{Surface, unit_normal};
+use splinekit_scene::budget::{Cost, F64};
 use splinekit_scene::{AnySurface, DimensionVisitor, SurfaceDocument, Surfaces};
 
-use crate::arrays::{Numbers, as_points_mut, check_finite, filled};
+use crate::arrays::{Numbers, as_points_mut, check_params, filled};
+use crate::budget;
 use crate::errors::{OrValueError, value_error};
 
 /// Highest total order of partials one call may ask for (as ``splinekit eval``).
@@ -19,7 +21,7 @@ pub const MAX_SURFACE_DERIVATIVES: usize = 16;
 /// ``s(u, v)`` evaluates on the grid u × v: u of shape (Nu,) and v (Nv,) give (Nu, Nv, D);
 /// ``s(u, v, grid=False)`` pairs u[i] with v[i] and gives (N, D). Open directions refuse
 /// parameters outside the domain; closed ones wrap them around.
-#[pyclass(subclass, frozen, module = "splinekit", name = "Surface")]
+#[pyclass(subclass, module = "splinekit", name = "Surface")]
 pub struct PySurface {
     pub(crate) doc: SurfaceDocument,
     pub(crate) surface: AnySurface,
@@ -130,7 +132,7 @@ impl PySurface {
     fn request<'py>(&self, u: &Bound<'py, PyAny>, v: &Bound<'py, PyAny>, grid: bool) -> PyResult<Request<'py>> {
         let r = Request { u: Numbers::new(u)?, v: Numbers::new(v)?, grid };
         for (field, values, axis) in [("u", r.u.list("u")?, 0), ("v", r.v.list("v")?, 1)] {
-            self.check_params(field, values, axis)?;
+            check_params(field, values, (!self.closed[axis]).then_some(self.domain[axis]), "direction")?;
         }
         if !grid && r.us().len() != r.vs().len() {
             return Err(value_error(format!(
@@ -142,24 +144,29 @@ impl PySurface {
         Ok(r)
     }
 
-    fn check_params(&self, field: &str, values: &[f64], axis: usize) -> PyResult<()> {
-        check_finite(field, values)?;
-        if self.closed[axis] {
-            return Ok(());
-        }
-        let d = self.domain[axis];
-        let slack = 1e-12 * d.length().max(d.start.abs()).max(d.end.abs());
-        match values.iter().find(|&&t| t < d.start - slack || t > d.end + slack) {
-            Some(t) => Err(value_error(format!(
-                "{field}: parameter {t} is outside the domain [{}, {}] of this open direction",
-                d.start, d.end
-            ))),
-            None => Ok(()),
-        }
+    /// Refuses a request over the budget: the partials up to order k in each direction
+    /// evaluated at every site and `values` points per site held (the budget of
+    /// `splinekit eval --grid`, without the formatting).
+    fn check_budget(&self, r: &Request<'_>, k: usize, values: usize) -> PyResult<()> {
+        let cost = self.doc.cost();
+        let (n, block) = (r.count() as f64, ((k + 1) * (k + 1)) as f64);
+        let held = n * values as f64 * self.dimension() as f64 * F64;
+        let request = Cost::new(held, cost.evaluations(n, (k + 1) * (k + 1) - 1));
+        let (field, sites) = match r.grid {
+            true => ("grid", format!("a grid of {}×{} points", r.us().len(), r.vs().len())),
+            false => ("u", format!("{} points", r.count())),
+        };
+        let what = format!(
+            "{sites} with partials up to order {k} ({:.1e} operations each, driven by {})",
+            cost.eval * block,
+            cost.field
+        );
+        budget::check_request(field, &what, &cost, request)
     }
 
     /// All partials with i, j ≤ k, shaped (sites…, (k+1)², D).
     fn partial_block<'py>(&self, py: Python<'py>, r: &Request<'py>, k: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.check_budget(r, k, (k + 1) * (k + 1))?;
         let (us, vs, grid) = (r.us(), r.vs(), r.grid);
         let shape = [r.count(), (k + 1) * (k + 1), self.dimension()];
         let surface = &self.surface;
@@ -247,6 +254,7 @@ impl PySurface {
         grid: bool,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
         let r = self.request(u, v, grid)?;
+        self.check_budget(&r, 1, 2)?;
         let (us, vs) = (r.us(), r.vs());
         let surface = &self.surface;
         let both =
@@ -264,14 +272,7 @@ impl PySurface {
         accuracy: f64,
     ) -> PyResult<(f64, f64, Bound<'py, PyAny>, f64)> {
         let numbers = Numbers::new(p)?;
-        let query = numbers.list("p")?;
-        if query.len() != self.dimension() || numbers.is_scalar() {
-            return Err(value_error(format!(
-                "p: expected {} coordinates like the surface's points, got {}",
-                self.dimension(),
-                numbers.values().len()
-            )));
-        }
+        let query = numbers.point("p", self.dimension(), "surface")?;
         let surface = &self.surface;
         let (u, v, point, distance) =
             py.detach(|| surface.visit(NearestOnSurface { query, accuracy })).or_value_error()?;

@@ -103,8 +103,40 @@ impl PySurface {
     }
 }
 
+/// The arguments of a tensor-product spline net (B-spline or NURBS), by field name.
+struct SplineNet<'a, 'py> {
+    knots_u: &'a Bound<'py, PyAny>,
+    knots_v: &'a Bound<'py, PyAny>,
+    control_points: &'a Bound<'py, PyAny>,
+    weights: Option<&'a Bound<'py, PyAny>>,
+    degree_u: &'a Bound<'py, PyAny>,
+    degree_v: &'a Bound<'py, PyAny>,
+    periodic: (bool, bool),
+}
+
+impl SplineNet<'_, '_> {
+    /// The base object of the net's document of type `ty`.
+    fn base(&self, ty: &str) -> PyResult<PyClassInitializer<PySurface>> {
+        let py = self.knots_u.py();
+        let (pu, pv) = (flag(py, self.periodic.0)?, flag(py, self.periodic.1)?);
+        base(document(
+            ty,
+            &[
+                ("degree_u", Some(self.degree_u)),
+                ("degree_v", Some(self.degree_v)),
+                ("knots_u", Some(self.knots_u)),
+                ("knots_v", Some(self.knots_v)),
+                ("control_points", Some(self.control_points)),
+                ("weights", self.weights),
+                ("periodic_u", Some(&pu)),
+                ("periodic_v", Some(&pv)),
+            ],
+        )?)
+    }
+}
+
 /// Tensor-product B-spline surface S(u, v) = Σᵢ Σⱼ N_{i,p}(u) N_{j,q}(v) P_ij.
-#[pyclass(extends = PySurface, frozen, module = "splinekit", name = "BSplineSurface")]
+#[pyclass(extends = PySurface, module = "splinekit", name = "BSplineSurface")]
 pub struct PyBSplineSurface;
 
 #[pymethods]
@@ -121,26 +153,21 @@ impl PyBSplineSurface {
         periodic_u: bool,
         periodic_v: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let py = knots_u.py();
-        let (pu, pv) = (flag(py, periodic_u)?, flag(py, periodic_v)?);
-        let doc = document(
-            "bspline_surface",
-            &[
-                ("degree_u", Some(degree_u)),
-                ("degree_v", Some(degree_v)),
-                ("knots_u", Some(knots_u)),
-                ("knots_v", Some(knots_v)),
-                ("control_points", Some(control_points)),
-                ("periodic_u", Some(&pu)),
-                ("periodic_v", Some(&pv)),
-            ],
-        )?;
-        Ok(base(doc)?.add_subclass(PyBSplineSurface))
+        let net = SplineNet {
+            knots_u,
+            knots_v,
+            control_points,
+            weights: None,
+            degree_u,
+            degree_v,
+            periodic: (periodic_u, periodic_v),
+        };
+        Ok(net.base("bspline_surface")?.add_subclass(PyBSplineSurface))
     }
 }
 
 /// NURBS surface S(u, v) = Σ N_{i,p}(u) N_{j,q}(v) w_ij P_ij / Σ N_{i,p}(u) N_{j,q}(v) w_ij.
-#[pyclass(extends = PySurface, frozen, module = "splinekit", name = "NURBSSurface")]
+#[pyclass(extends = PySurface, module = "splinekit", name = "NURBSSurface")]
 pub struct PyNurbsSurface;
 
 #[pymethods]
@@ -158,27 +185,22 @@ impl PyNurbsSurface {
         periodic_u: bool,
         periodic_v: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let py = knots_u.py();
-        let (pu, pv) = (flag(py, periodic_u)?, flag(py, periodic_v)?);
-        let doc = document(
-            "nurbs_surface",
-            &[
-                ("degree_u", Some(degree_u)),
-                ("degree_v", Some(degree_v)),
-                ("knots_u", Some(knots_u)),
-                ("knots_v", Some(knots_v)),
-                ("control_points", Some(control_points)),
-                ("weights", Some(weights)),
-                ("periodic_u", Some(&pu)),
-                ("periodic_v", Some(&pv)),
-            ],
-        )?;
-        Ok(base(doc)?.add_subclass(PyNurbsSurface))
+        let weights = Some(weights);
+        let net = SplineNet {
+            knots_u,
+            knots_v,
+            control_points,
+            weights,
+            degree_u,
+            degree_v,
+            periodic: (periodic_u, periodic_v),
+        };
+        Ok(net.base("nurbs_surface")?.add_subclass(PyNurbsSurface))
     }
 }
 
 /// Tensor-product Bézier surface S(u, v) = Σ B_{i,n}(u) B_{j,m}(v) P_ij on [0, 1]².
-#[pyclass(extends = PySurface, frozen, module = "splinekit", name = "BezierSurface")]
+#[pyclass(extends = PySurface, module = "splinekit", name = "BezierSurface")]
 pub struct PyBezierSurface;
 
 #[pymethods]

@@ -37,25 +37,38 @@ def test_bfunctions():
         sk.bfunction("sigmoid")
 
 
-def test_set_transform_moves_only_its_local_curve():
+def test_set_transform_moves_only_its_local_curve_in_place():
     c = sk.load(HEART)
     a, b = c.domain
     t = np.linspace(a, b, 400, endpoint=False)
-    moved = c.set_transform(2, translate=[0, 0, 1])
-    assert moved.to_dict()["transforms"] == {"2": {"translate": [0, 0, 1]}}
-    assert c.to_dict().get("transforms") is None  # the original is unchanged
-    dz = moved(t)[:, 2] - c(t)[:, 2]
+    before = c(t)
     support = c.local_pieces()[2]["support"]
+    centre = c.local_pieces()[2]["origin"]
+    assert c.set_transform(2, translate=[0, 0, 1]) is None  # changes c itself, as list.sort does
+    assert c.to_dict()["transforms"] == {"2": {"translate": [0, 0, 1]}}
+    dz = c(t)[:, 2] - before[:, 2]
     inside = (t > support[0]) & (t < support[1])
     assert np.all(dz[inside] > 0) and np.all(np.abs(dz[~inside]) < 1e-12)
-    centre = c.local_pieces()[2]["origin"]
-    turned = c.set_transform(2, rotate={"axis": [0, 0, 1], "angle": 0.5}, scale=2.0)
-    assert turned.to_dict()["transforms"]["2"] == {"rotate": {"axis": [0, 0, 1], "angle": 0.5}, "scale": 2.0}
+    # A second call replaces the frame of that piece; other pieces keep theirs.
+    c.set_transform(5, scale=0.5)
+    c.set_transform(2, rotate={"axis": [0, 0, 1], "angle": 0.5}, scale=2.0)
+    assert c.to_dict()["transforms"] == {"5": {"scale": 0.5}, "2": {"rotate": {"axis": [0, 0, 1], "angle": 0.5}, "scale": 2.0}}
+    assert sk.load(c.to_json()).to_dict() == c.to_dict()
     assert len(centre) == 3
+    # A refused frame leaves the curve as it was.
+    kept = c.to_dict()
     with pytest.raises(ValueError, match=r"^transforms\[2\]\.translate: expected 3 coordinates, got 2$"):
         c.set_transform(2, translate=[0, 1])
+    assert c.to_dict() == kept
     with pytest.raises(ValueError, match=r"^type: set_transform works on blending_spline curves, not heart$"):
         sk.load({"type": "heart"}).set_transform(0, scale=2.0)
+
+
+def test_set_transform_is_seen_by_every_reference():
+    c = sk.load(HEART)
+    same = c
+    c.set_transform(0, translate=[1, 0, 0])
+    assert same.to_dict()["transforms"] == {"0": {"translate": [1, 0, 0]}}
 
 
 def test_local_pieces_reproduce_the_spline_at_the_knots():
@@ -116,9 +129,16 @@ def test_blending_surface_pieces_and_frames():
     torus = sk.load(ROOT / "examples" / "shapes" / "animated_torus.json")
     pieces = torus.local_pieces(samples=3)
     assert pieces and pieces[0]["points"].shape == (3, 3, 3) and pieces[0]["index"] == (0, 0)
-    moved = torus.set_transform((0, 0), translate=[0, 0, 0.5])
-    assert "0,0" in moved.to_dict()["transforms"]
-    assert isinstance(torus.at_time(0.5), sk.Surface)
+    u = np.linspace(*torus.domain_u, 7)
+    v = np.linspace(*torus.domain_v, 5)
+    before = torus(u, v)
+    assert torus.set_transform((0, 0), translate=[0, 0, 0.5]) is None
+    assert "0,0" in torus.to_dict()["transforms"]
+    moved = torus(u, v)
+    assert not np.allclose(moved, before)
+    posed = torus.at_time(0.5)  # a new object; the original keeps its pose
+    assert isinstance(posed, sk.Surface) and posed is not torus
+    np.testing.assert_array_equal(torus(u, v), moved)
 
 
 def test_render_writes_a_png_or_says_why_not(tmp_path):

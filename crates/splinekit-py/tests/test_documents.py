@@ -2,7 +2,9 @@
 through to_dict / to_json, and evaluates the same after the round trip."""
 
 import json
+import os
 import pathlib
+import subprocess
 
 import numpy as np
 import pytest
@@ -74,3 +76,65 @@ def test_a_model_curve_is_fitted_through_its_samples():
     points = circle(np.linspace(a, b, 200, endpoint=False))
     c = sk.fit(points, 3, 16, closed=True)
     assert c.fit_report.max_error < 1e-3
+
+
+# Decimals that a fast but inexact float parser gets one ulp wrong, the extremes of the
+# doubles, and random doubles of every magnitude a document may hold (up to ±1e150).
+HARD_DECIMALS = [0.1, 2.675, 1e-7, 5e-324, 2.2250738585072014e-308, 2.225073858507201e-308, 9007199254740993.0,
+                 0.30000000000000004, 1.0000000000000002, 123456789.12345679, 8.98846567431158e-150, 1e150]
+
+
+def decimals_document():
+    rng = np.random.default_rng(12)
+    mantissas = rng.uniform(1.0, 10.0, 400)
+    exponents = rng.integers(-320, 150, 400).astype(float)
+    values = HARD_DECIMALS + [float(m * 10.0**e) for m, e in zip(mantissas, exponents) if 0 < m * 10.0**e <= 1e150]
+    values += values[: len(values) % 2]
+    points = [values[i : i + 2] for i in range(0, len(values), 2)]
+    n = len(points)
+    knots = [0.0] + [float(i) for i in range(n)] + [float(n - 1)]
+    return {"type": "bspline", "degree": 1, "knots": knots, "control_points": points}
+
+
+def bits(values):
+    return np.asarray(values, dtype=np.float64).view(np.uint64)
+
+
+def test_decimals_come_back_bit_exact_through_load_and_to_json(tmp_path):
+    doc = decimals_document()
+    text = json.dumps(doc)  # Python writes the shortest decimal that reads back exactly
+    path = tmp_path / "decimals.json"
+    path.write_text(text)
+    for source in (text, str(path), path):
+        obj = sk.load(source)
+        np.testing.assert_array_equal(bits(obj.control_points), bits(doc["control_points"]))
+        back = json.loads(obj.to_json())
+        np.testing.assert_array_equal(bits(back["control_points"]), bits(doc["control_points"]))
+        assert sk.load(obj.to_json()).to_json() == obj.to_json()
+    assert json.loads(sk.load(text).to_json())["control_points"] == doc["control_points"]
+
+
+def test_the_largest_double_is_refused_with_its_exact_digits(tmp_path):
+    with pytest.raises(ValueError, match=r"^control_points\[0\]\[0\]: 1\.7976931348623157e308 is beyond ±1e150, "):
+        sk.load('{"type": "bezier", "control_points": [[1.7976931348623157e308, 0], [1, 1]]}')
+
+
+CLI = pathlib.Path(os.environ.get("SPLINEKIT_CLI", ROOT / "target" / "debug" / "splinekit"))
+
+
+@pytest.mark.skipif(not CLI.exists(), reason="the splinekit binary is not built (cargo build -p splinekit-cli)")
+def test_the_cli_reads_and_writes_the_same_decimals_bit_exact(tmp_path):
+    doc = decimals_document()
+    path = tmp_path / "decimals.json"
+    path.write_text(json.dumps(doc))
+    n = len(doc["control_points"])
+    # A degree-1 B-spline passes through its control points at its knots exactly.
+    at = ",".join(str(i) for i in range(n))
+    r = subprocess.run([str(CLI), "eval", str(path), "--at", at], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    np.testing.assert_array_equal(bits(json.loads(r.stdout)["points"]), bits(doc["control_points"]))
+    # Through Python and back through the CLI: the same points again.
+    again = tmp_path / "again.json"
+    again.write_text(sk.load(path).to_json())
+    r2 = subprocess.run([str(CLI), "eval", str(again), "--at", at], capture_output=True, text=True)
+    assert r2.stdout == r.stdout

@@ -105,9 +105,9 @@ def test_fit_errors():
     pts = np.random.default_rng(0).normal(size=(50, 2))
     with pytest.raises(ValueError, match=r"^degree: must be between 1 and 64, got 0$"):
         sk.fit(pts, 0, 10)
-    with pytest.raises(ValueError, match=r"^control_points: degree 3 needs at least 4 control points, got 2$"):
+    with pytest.raises(ValueError, match=r"^n_control_points: degree 3 needs at least 4 control points, got 2$"):
         sk.fit(pts, 3, 2)
-    with pytest.raises(ValueError, match=r"^control_points: 60 control points need at least 60 data points, got 50$"):
+    with pytest.raises(ValueError, match=r"^n_control_points: 60 control points need at least 60 data points, got 50$"):
         sk.fit(pts, 3, 60)
     with pytest.raises(ValueError, match=r'^params: expected "uniform", "chord", "centripetal" or an array of parameters, got "arc"$'):
         sk.fit(pts, 3, 10, params="arc")
@@ -140,3 +140,27 @@ def test_load_errors():
         sk.load({"type": "scene", "objects": []})
     with pytest.raises(ValueError, match=r"cannot be written as JSON"):
         sk.load({"type": "bezier", "control_points": object()})
+
+
+# The command line's flag for each argument of fit() / interpolate() its messages name.
+FIT_FLAGS = {"n_control_points": "--control-points", "degree": "--degree"}
+
+
+@pytest.mark.skipif(not CLI.exists(), reason="the splinekit binary is not built (cargo build -p splinekit-cli)")
+@pytest.mark.parametrize(
+    "degree, n, closed",
+    [(0, 10, False), (65, 10, False), (3, 2, False), (3, 60, False), (3, 3, True), (2, 51, True)],
+)
+def test_fit_errors_are_the_cli_lines_with_the_argument_named(degree, n, closed, tmp_path):
+    pts = np.random.default_rng(0).normal(size=(50, 2))
+    path = tmp_path / "points.csv"
+    np.savetxt(path, pts, delimiter=",", fmt="%.17g")
+    args = [str(CLI), "fit", str(path), "--degree", str(degree), "--control-points", str(n)] + (["--closed"] if closed else [])
+    r = subprocess.run(args, capture_output=True, text=True)
+    assert r.returncode == 2 and r.stderr.startswith("error: "), r.stderr
+    flag, cli_rest = r.stderr.strip()[len("error: "):].split(": ", 1)
+    with pytest.raises(ValueError) as e:
+        sk.fit(pts, degree, n, closed=closed)
+    field, rest = str(e.value).split(": ", 1)
+    assert "\n" not in str(e.value)
+    assert FIT_FLAGS[field] == flag and rest == cli_rest

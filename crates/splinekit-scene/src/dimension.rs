@@ -17,10 +17,15 @@ use crate::error::{DocumentError, Result};
 pub const MAX_DIMENSION: usize = 4;
 
 /// Runs `$body` with `const $d: usize` bound to the run-time dimension `$dim` (1 … 4);
-/// other dimensions are an error naming `$field`.
+/// other dimensions are an error naming `$field`: `Err(From::from(DocumentError))`, or
+/// with `, or $err` at the end `Err($err(DocumentError))` (for error types that cannot
+/// implement `From<DocumentError>`, such as the Python bindings' `PyErr`).
 #[macro_export]
 macro_rules! with_dimension {
     ($dim:expr, $field:expr, $d:ident => $body:expr) => {
+        $crate::with_dimension!($dim, $field, $d => $body, or ::core::convert::From::from)
+    };
+    ($dim:expr, $field:expr, $d:ident => $body:expr, or $err:path) => {
         match $dim {
             1 => {
                 const $d: usize = 1;
@@ -38,7 +43,7 @@ macro_rules! with_dimension {
                 const $d: usize = 4;
                 $body
             }
-            other => Err(::core::convert::From::from($crate::dimension::unsupported($field, other))),
+            other => Err($err($crate::dimension::unsupported($field, other))),
         }
     };
 }

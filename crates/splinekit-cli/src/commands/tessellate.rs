@@ -9,7 +9,7 @@ use splinekit::surface::Surface;
 use splinekit_mesh::export::{ExportError, GltfGeometry, GltfScene, obj, ply, stl};
 use splinekit_mesh::surface_mesh::{adaptive_with_limit, regular, to3};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, Projection, SvgFigure, TriangleMesh};
-use splinekit_scene::budget::{Cost, ShapeCost};
+use splinekit_scene::budget::ShapeCost;
 use splinekit_scene::{Curves, DimensionVisitor, SceneOrShape, ShapeDocument, Surfaces};
 
 #[derive(Args, Debug)]
@@ -183,7 +183,7 @@ fn check_request(doc: &ShapeDocument, args: &TessellateArgs, cost: &ShapeCost) -
     match doc {
         ShapeDocument::Curve(_) => {
             let points = args.density.map_or(MAX_CURVE_POINTS, |n| n.min(MAX_CURVE_POINTS)) as f64 + 1.0;
-            let request = Cost::new(points * 160.0, points * (4.0 * cost.eval + 300.0));
+            let request = splinekit_scene::budget::polyline(points, cost.eval);
             crate::budget::check_request(flag, &format!("a polyline of up to {points} points"), cost, request)
         }
         ShapeDocument::Surface(_) if args.tolerance.is_none() => {

@@ -126,32 +126,68 @@ impl<T: Coefficient> BezierSpans<T> {
         map: impl Fn(f64) -> f64,
     ) {
         let p = W - 1;
-        let n = self.frames.len() + p;
         let w = order + 1;
-        let mut span = p;
-        let mut lo = knots[p];
-        let mut hi = knots[p + 1];
-        let mut b: [T; W] = self.points[..W].try_into().expect("W points");
-        let mut frame = self.frames[0];
+        let mut at = SpanCursor::<W, T>::first(self, knots);
+        if order == 0 {
+            // Points only: a loop without the derivative differences, so that the span's
+            // points can stay in registers.
+            for (&t, o) in params.iter().zip(out.iter_mut()) {
+                let t = map(t);
+                at.locate(self, knots, p, t);
+                *o = bernstein_sum::<W, T>(&at.points, (t - at.frame.0) * at.frame.1);
+            }
+            return;
+        }
         for (&t, o) in params.iter().zip(out.chunks_exact_mut(w)) {
             let t = map(t);
-            if !(t >= lo && (t < hi || span + 1 == n)) {
-                span = crate::basis::advance_span(knots, p, n, span, t);
-                lo = knots[span];
-                hi = knots[span + 1];
-                let j = span - p;
-                b = self.points[j * W..(j + 1) * W].try_into().expect("W points");
-                frame = self.frames[j];
-            }
-            eval_fixed::<W, T>(&b, (t - frame.0) * frame.1, frame.1, o);
+            at.locate(self, knots, p, t);
+            eval_fixed::<W, T>(&at.points, (t - at.frame.0) * at.frame.1, at.frame.1, o);
         }
     }
 }
 
+/// The span of the last parameter of a sorted batch: its index, knot interval, Bézier
+/// points and frame.
+struct SpanCursor<const W: usize, T> {
+    span: usize,
+    lo: f64,
+    hi: f64,
+    points: [T; W],
+    frame: (f64, f64),
+}
+
+impl<const W: usize, T: Coefficient> SpanCursor<W, T> {
+    /// The first span.
+    #[inline(always)]
+    fn first(spans: &BezierSpans<T>, knots: &[f64]) -> Self {
+        let p = W - 1;
+        SpanCursor {
+            span: p,
+            lo: knots[p],
+            hi: knots[p + 1],
+            points: spans.points[..W].try_into().expect("W points"),
+            frame: spans.frames[0],
+        }
+    }
+
+    /// Moves to the span of `t` (a monotone walk from the current one when t is past it).
+    #[inline(always)]
+    fn locate(&mut self, spans: &BezierSpans<T>, knots: &[f64], p: usize, t: f64) {
+        let n = spans.frames.len() + p;
+        if !(t >= self.lo && (t < self.hi || self.span + 1 == n)) {
+            self.span = crate::basis::advance_span(knots, p, n, self.span, t);
+            self.lo = knots[self.span];
+            self.hi = knots[self.span + 1];
+            let j = self.span - p;
+            self.points = spans.points[j * W..(j + 1) * W].try_into().expect("W points");
+            self.frame = spans.frames[j];
+        }
+    }
+}
+
+/// The powers uᵏ and (1 − u)ᵏ, k < W.
 #[inline(always)]
-fn eval_fixed<const W: usize, T: Coefficient>(b: &[T], u: f64, inv_h: f64, out: &mut [T]) {
-    let p = W - 1;
-    let b: &[T; W] = b.try_into().expect("p + 1 points per span");
+fn powers<const W: usize>(u: f64) -> ([f64; W], [f64; W]) {
     let s = 1.0 - u;
     let mut up = [1.0f64; W];
     let mut sp = [1.0f64; W];
@@ -159,11 +195,32 @@ fn eval_fixed<const W: usize, T: Coefficient>(b: &[T], u: f64, inv_h: f64, out: 
         up[k] = up[k - 1] * u;
         sp[k] = sp[k - 1] * s;
     }
+    (up, sp)
+}
+
+/// The Bernstein sum Σ_{i ≤ q} C(q,i) uⁱ (1−u)^{q−i} b_i from the powers of u and 1 − u.
+#[inline(always)]
+fn bernstein<const W: usize, T: Coefficient>(b: &[T; W], up: &[f64; W], sp: &[f64; W], q: usize) -> T {
     let mut acc = T::zero();
-    for k in 0..W {
-        acc += b[k] * (BINOMIAL[p][k] * up[k] * sp[p - k]);
+    for i in 0..=q {
+        acc += b[i] * (BINOMIAL[q][i] * up[i] * sp[q - i]);
     }
-    out[0] = acc;
+    acc
+}
+
+/// c(u) = Σ_k C(p,k) uᵏ (1−u)^{p−k} b_k, p = W − 1.
+#[inline(always)]
+fn bernstein_sum<const W: usize, T: Coefficient>(b: &[T; W], u: f64) -> T {
+    let (up, sp) = powers::<W>(u);
+    bernstein(b, &up, &sp, W - 1)
+}
+
+#[inline(always)]
+fn eval_fixed<const W: usize, T: Coefficient>(b: &[T], u: f64, inv_h: f64, out: &mut [T]) {
+    let p = W - 1;
+    let b: &[T; W] = b.try_into().expect("p + 1 points per span");
+    let (up, sp) = powers::<W>(u);
+    out[0] = bernstein(b, &up, &sp, p);
     if out.len() == 1 {
         return;
     }
@@ -178,11 +235,6 @@ fn eval_fixed<const W: usize, T: Coefficient>(b: &[T], u: f64, inv_h: f64, out: 
             d[i] = d[i + 1] - d[i];
         }
         scale *= (p - k + 1) as f64 * inv_h;
-        let q = p - k;
-        let mut acc = T::zero();
-        for i in 0..=q {
-            acc += d[i] * (BINOMIAL[q][i] * up[i] * sp[q - i]);
-        }
-        out[k] = acc * scale;
+        out[k] = bernstein(&d, &up, &sp, p - k) * scale;
     }
 }
