@@ -26,8 +26,14 @@ const DRAG: (f64, f64) = (-60.0, 45.0);
 /// One window at a time: the tests share the display, the mouse and the keyboard.
 static DISPLAY: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
-fn display() -> std::sync::MutexGuard<'static, ()> {
-    DISPLAY.lock().unwrap_or_else(|e| e.into_inner())
+/// The display (one test at a time), a fresh temporary directory named after the test,
+/// and the heart example.
+fn setup(name: &str) -> (std::sync::MutexGuard<'static, ()>, PathBuf, PathBuf) {
+    let display = DISPLAY.lock().unwrap_or_else(|e| e.into_inner());
+    let dir = std::env::temp_dir().join(format!("splinekit-studio-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    let original = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/heart_local_curves.json");
+    (display, dir, original)
 }
 
 fn xdotool(args: &[&str]) -> String {
@@ -194,10 +200,7 @@ fn check_screenshot(dir: &Path, saved: &Path, view: &Value) {
 #[test]
 #[ignore = "needs an X display and xdotool; .ci/run runs it under Xvfb"]
 fn a_dragged_local_curve_is_saved_and_renders_as_the_window_shows_it() {
-    let _display = display();
-    let dir = std::env::temp_dir().join(format!("splinekit-studio-e2e-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("a temporary directory");
-    let original = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/heart_local_curves.json");
+    let (_display, dir, original) = setup("e2e");
     let doc = dir.join("heart.json");
     std::fs::copy(&original, &doc).expect("copied");
     let (from, to) = drag_and_save(&dir, &doc);
@@ -242,10 +245,7 @@ fn a_dragged_local_curve_is_saved_and_renders_as_the_window_shows_it() {
 #[test]
 #[ignore = "needs an X display and xdotool; .ci/run runs it under Xvfb"]
 fn a_local_rotating_about_a_pivot_is_rotated_by_hand() {
-    let _display = display();
-    let dir = std::env::temp_dir().join(format!("splinekit-studio-e2e-pivot-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("a temporary directory");
-    let original = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/heart_local_curves.json");
+    let (_display, dir, original) = setup("e2e-pivot");
     let mut scene: Value =
         serde_json::from_str(&std::fs::read_to_string(&original).expect("the example")).expect("JSON");
     let pivoted = serde_json::json!({"rotate": {"axis": [0, 0, 1], "angle": 0.3, "pivot": [0, 0, 0]}});
