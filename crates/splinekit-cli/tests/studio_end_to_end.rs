@@ -23,6 +23,19 @@ const WINDOW: &str = "1100x750";
 const LOCAL: usize = 2;
 const DRAG: (f64, f64) = (-60.0, 45.0);
 
+/// One window at a time: the tests share the display, the mouse and the keyboard.
+static DISPLAY: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+/// The display (one test at a time), a fresh temporary directory named after the test,
+/// and the heart example.
+fn setup(name: &str) -> (std::sync::MutexGuard<'static, ()>, PathBuf, PathBuf) {
+    let display = DISPLAY.lock().unwrap_or_else(|e| e.into_inner());
+    let dir = std::env::temp_dir().join(format!("splinekit-studio-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    let original = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/heart_local_curves.json");
+    (display, dir, original)
+}
+
 fn xdotool(args: &[&str]) -> String {
     let out = Command::new("xdotool").args(args).output().expect("xdotool is installed (.ci/install-graphics.sh)");
     assert!(out.status.success(), "xdotool {args:?}: {}", String::from_utf8_lossy(&out.stderr));
@@ -92,19 +105,29 @@ fn wait(mut child: Child, what: &str) {
     }
 }
 
+/// Window pixel coordinates as xdotool takes them.
+fn at((x, y): (f64, f64)) -> [String; 2] {
+    [format!("{}", x.round()), format!("{}", y.round())]
+}
+
+/// The settled handle report of the studio just started, and its window, focused.
+fn focused_window(report: &Path) -> (Value, String) {
+    let report = settled_report(report);
+    let window = xdotool(&["search", "--sync", "--name", "splinekit studio"]);
+    let window = window.lines().next().expect("a window").to_string();
+    // No window manager under Xvfb: give the window the keyboard.
+    xdotool(&["windowfocus", "--sync", &window]);
+    (report, window)
+}
+
 /// Moves the mouse onto local `LOCAL`'s handle, drags it by `DRAG` and saves; returns
 /// where the handle was and where the mouse let go.
 fn drag_and_save(dir: &Path, doc: &Path) -> ((f64, f64), (f64, f64)) {
     let path = |name: &str| dir.join(name).to_str().expect("a UTF-8 path").to_string();
     let (view, whole) = (path("window.png"), path("studio.png"));
     let child = studio(doc, dir, "before.json", &["--screenshot", &view, "--window-screenshot", &whole]);
-    let report = settled_report(&dir.join("before.json"));
-    let window = xdotool(&["search", "--sync", "--name", "splinekit studio"]);
-    let window = window.lines().next().expect("a window").to_string();
-    // No window manager under Xvfb: give the window the keyboard.
-    xdotool(&["windowfocus", "--sync", &window]);
+    let (report, window) = focused_window(&dir.join("before.json"));
     let from = handle(&report, LOCAL);
-    let at = |(x, y): (f64, f64)| [format!("{}", x.round()), format!("{}", y.round())];
     let [x, y] = at(from);
     xdotool(&["mousemove", "--window", &window, &x, &y]);
     std::thread::sleep(Duration::from_millis(400));
@@ -177,9 +200,7 @@ fn check_screenshot(dir: &Path, saved: &Path, view: &Value) {
 #[test]
 #[ignore = "needs an X display and xdotool; .ci/run runs it under Xvfb"]
 fn a_dragged_local_curve_is_saved_and_renders_as_the_window_shows_it() {
-    let dir = std::env::temp_dir().join(format!("splinekit-studio-e2e-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("a temporary directory");
-    let original = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/heart_local_curves.json");
+    let (_display, dir, original) = setup("e2e");
     let doc = dir.join("heart.json");
     std::fs::copy(&original, &doc).expect("copied");
     let (from, to) = drag_and_save(&dir, &doc);
@@ -214,5 +235,57 @@ fn a_dragged_local_curve_is_saved_and_renders_as_the_window_shows_it() {
             std::fs::copy(dir.join(f), Path::new(&out).join(f)).ok();
         }
     }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Holding R, a person drags around the handle of a local whose transform turns about a
+/// pivot: the rotation is applied (it was refused before), the pivot stays, the handle
+/// (the moved origin) stays where it was, and the curve changes inside that local's
+/// support only.
+#[test]
+#[ignore = "needs an X display and xdotool; .ci/run runs it under Xvfb"]
+fn a_local_rotating_about_a_pivot_is_rotated_by_hand() {
+    let (_display, dir, original) = setup("e2e-pivot");
+    let mut scene: Value =
+        serde_json::from_str(&std::fs::read_to_string(&original).expect("the example")).expect("JSON");
+    let pivoted = serde_json::json!({"rotate": {"axis": [0, 0, 1], "angle": 0.3, "pivot": [0, 0, 0]}});
+    scene["objects"][0]["shape"]["transforms"] = serde_json::json!({ LOCAL.to_string(): pivoted });
+    let (start, doc) = (dir.join("start.json"), dir.join("pivot.json"));
+    std::fs::write(&start, scene.to_string()).expect("written");
+    std::fs::write(&doc, scene.to_string()).expect("written");
+    let child = studio(&doc, &dir, "before.json", &[]);
+    let (report, window) = focused_window(&dir.join("before.json"));
+    let from = handle(&report, LOCAL);
+    // Grab 8 pixels right of the handle and sweep a quarter turn around it, R held.
+    let around = |a: f64| (from.0 + 8.0 * a.cos(), from.1 + 8.0 * a.sin());
+    let [x, y] = at(around(0.0));
+    xdotool(&["mousemove", "--window", &window, &x, &y]);
+    std::thread::sleep(Duration::from_millis(400));
+    xdotool(&["keydown", "r"]);
+    std::thread::sleep(Duration::from_millis(200));
+    xdotool(&["mousedown", "1"]);
+    for step in 1..=10 {
+        let [x, y] = at(around(std::f64::consts::FRAC_PI_2 * step as f64 / 10.0));
+        xdotool(&["mousemove", "--window", &window, &x, &y]);
+        std::thread::sleep(Duration::from_millis(80));
+    }
+    std::thread::sleep(Duration::from_millis(300));
+    xdotool(&["mouseup", "1"]);
+    xdotool(&["keyup", "r"]);
+    std::thread::sleep(Duration::from_millis(300));
+    xdotool(&["key", "ctrl+s"]);
+    let rotated = |v: &Value| v["objects"][0]["shape"]["transforms"][LOCAL.to_string()]["rotate"]["angle"] != 0.3;
+    let saved = wait_for_json(&doc, rotated, "the saved document");
+    xdotool(&["key", "ctrl+q"]);
+    wait(child, "the studio");
+    let rotate = &saved["objects"][0]["shape"]["transforms"][LOCAL.to_string()]["rotate"];
+    assert_eq!(rotate["pivot"], serde_json::json!([0.0, 0.0, 0.0]), "the pivot stays: {rotate}");
+    let child = studio(&doc, &dir, "after.json", &["--frames", "3"]);
+    wait(child, "the studio on the saved document");
+    let after: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("after.json")).expect("report")).expect("JSON");
+    let now = handle(&after, LOCAL);
+    assert!((now.0 - from.0).abs() < 0.5 && (now.1 - from.1).abs() < 0.5, "the handle moved: {from:?} → {now:?}");
+    check_support(&start, &doc);
     std::fs::remove_dir_all(&dir).ok();
 }

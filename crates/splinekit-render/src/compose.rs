@@ -37,6 +37,22 @@ fn f32x3(p: [f64; 3]) -> [f32; 3] {
 
 /// The scene posed at `time` (seconds; `None`: the rest pose) for an image of this aspect.
 pub fn compose(scene: &SceneDocument, time: Option<f64>, aspect: f32) -> Result<RenderScene, DocumentError> {
+    compose_with(scene, time, aspect, &|_| None)
+}
+
+/// A 3-D surface standing in for an object's shape (see [`compose_with`]).
+pub type SurfaceFor<'a> = dyn Fn(usize) -> Option<&'a (dyn Surface<3> + 'static)> + 'a;
+
+/// [`compose`], with the surface of object i meshed from `surfaces(i)` when that gives one
+/// instead of built from its document (decorations still come from the document). A caller
+/// keeping a surface evaluated as the document would build it (the studio's live refresh,
+/// which re-evaluates only what an edit changed) gets the same scene.
+pub fn compose_with<'a>(
+    scene: &SceneDocument,
+    time: Option<f64>,
+    aspect: f32,
+    surfaces: &SurfaceFor<'a>,
+) -> Result<RenderScene, DocumentError> {
     let mut out = RenderScene {
         background: [scene.background[0], scene.background[1], scene.background[2], 1.0],
         ..Default::default()
@@ -52,7 +68,7 @@ pub fn compose(scene: &SceneDocument, time: Option<f64>, aspect: f32) -> Result<
             Some(t) if obj.style.color_cycle => hue_turned(color, (t / scene.animation.duration) as f32),
             _ => color,
         };
-        flat &= object(obj, &format!("objects[{i}].shape"), time, color, &mut out)?;
+        flat &= object(obj, &format!("objects[{i}].shape"), time, color, surfaces(i), &mut out)?;
         for p in &obj.points {
             out.points.push(PointItem { position: f32x3(*p), color, size: 8.0 });
         }
@@ -78,12 +94,14 @@ pub fn compose(scene: &SceneDocument, time: Option<f64>, aspect: f32) -> Result<
 /// Adds one object's shape, posed at `time`, with its decoration (local pieces and
 /// control polygons under a curve, control nets and local patches over a surface);
 /// returns whether it is a plane figure (a curve of at most two dimensions). Errors in
-/// the document are reported within the object's `field`.
+/// the document are reported within the object's `field`. A surface given in `given` is
+/// meshed instead of the one the document builds.
 fn object(
     obj: &SceneObject,
     field: &str,
     time: Option<f64>,
     color: [f32; 4],
+    given: Option<&(dyn Surface<3> + 'static)>,
     out: &mut RenderScene,
 ) -> Result<bool, DocumentError> {
     let mut shape = obj.shape.clone();
@@ -101,9 +119,15 @@ fn object(
             Ok(curve.dimension() <= 2)
         }
         ShapeDocument::Surface(s) => {
-            let surface = s.build().map_err(within)?;
-            if !obj.style.hidden {
-                surface.visit(SurfaceMesh { obj, color, out: &mut *out })?;
+            if let Some(given) = given {
+                if !obj.style.hidden {
+                    SurfaceMesh { obj, color, out: &mut *out }.visit::<3>(given)?;
+                }
+            } else {
+                let surface = s.build().map_err(within)?;
+                if !obj.style.hidden {
+                    surface.visit(SurfaceMesh { obj, color, out: &mut *out })?;
+                }
             }
             decorate(s.decoration(), &obj.style, out).map_err(within)?;
             Ok(false)

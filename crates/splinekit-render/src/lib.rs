@@ -16,7 +16,7 @@ pub mod renderer;
 pub mod scene;
 
 pub use camera::Camera;
-pub use compose::compose;
+pub use compose::{SurfaceFor, compose, compose_with};
 pub use gltf_export::scene_to_gltf;
 pub use image::{Image, write_gif};
 pub use renderer::{RenderError, RenderTarget, Renderer};

@@ -1,15 +1,21 @@
 //! Live re-evaluation after moving one local piece (issue 11's aims, one core): one patch
 //! of the 8×8 bicubic blending-spline torus sampled 256×256 with normals (< 2 ms incl.
 //! upload), one local curve of the heart (< 0.2 ms). "Upload" is `Queue::write_buffer` of
-//! the changed rows plus a submit; the GPU copy itself runs asynchronously.
+//! the changed rows plus a submit; the GPU copy itself runs asynchronously. And the
+//! window's work after a drag step on the torus at density 256: the edit and the scene's
+//! composition with the live refresh ([`splinekit_studio::live_surfaces`]) against the
+//! composition afresh it replaced.
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use serde_json::json;
 use splinekit::Point;
 use splinekit::curve::CurveSamples;
 use splinekit::frame::Affine;
 use splinekit::surface::SurfaceGridSamples;
 use splinekit_scene::{Decoration, ShapeDocument};
+use splinekit_studio::edit::Edit;
 use splinekit_studio::live::{LiveCurve, LiveSurface};
+use splinekit_studio::studio::Studio;
 
 fn shape(text: &str) -> ShapeDocument {
     ShapeDocument::from_json(text).expect("a valid shape")
@@ -78,5 +84,36 @@ fn kernel_only(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, bench, kernel_only);
+/// The window's composition after one drag step (the edit applied through the history):
+/// live refresh against composing afresh.
+fn window(c: &mut Criterion) {
+    let text = r#"{"type": "scene", "objects": [{"shape": {"type": "blending_spline_surface",
+        "model": {"type": "torus"}, "local_surfaces": [8, 8]}, "density": 256}]}"#;
+    let mut studio = Studio::new(splinekit_studio::document::parse(text).expect("valid"), None);
+    let size = (1000, 700);
+    studio.render_scene(size, false).expect("composes");
+    let mut lift = 0.0;
+    let mut step = |studio: &mut Studio| {
+        lift = if lift == 0.0 { 0.3 } else { 0.0 };
+        let value = json!({"translate": [0.0, 0.0, lift]});
+        studio.edit(Edit::Set { object: 0, pointer: "/shape/transforms/3,4".into(), value: Some(value) }, false);
+    };
+    let mut group = c.benchmark_group("window");
+    group.sample_size(20);
+    group.bench_function("torus 8x8 bicubic, density 256: drag step + compose, live refresh", |b| {
+        b.iter(|| {
+            step(&mut studio);
+            studio.render_scene(size, false).expect("composes")
+        })
+    });
+    group.bench_function("torus 8x8 bicubic, density 256: drag step + compose afresh", |b| {
+        b.iter(|| {
+            step(&mut studio);
+            splinekit_render::compose(&studio.scene, None, 1000.0 / 700.0).expect("composes")
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench, kernel_only, window);
 criterion_main!(benches);

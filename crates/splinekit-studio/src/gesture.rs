@@ -80,7 +80,7 @@ impl Gesture {
                 let d = projector.view_direction();
                 let axis = [-d[0], -d[1], -d[2]];
                 let angle = if dim == 2 { angle * axis[2].signum() } else { angle };
-                to_json(&rotated(t, &field, axis, angle, dim)?)
+                to_json(&rotated(t, &field, axis, angle, dim, self.handle.origin)?)
             }
             (Start::Transform(t), GestureKind::Scale) => {
                 let dist = |m: [f64; 2]| (m[0] - self.handle_px[0]).hypot(m[1] - self.handle_px[1]);

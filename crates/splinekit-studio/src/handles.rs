@@ -31,6 +31,9 @@ pub struct Handle {
     pub kind: HandleKind,
     /// World position (z = 0 for plane shapes).
     pub position: [f64; 3],
+    /// The local piece's origin o before its transform (where the transform's centred
+    /// coordinates start); for control points the point itself.
+    pub origin: [f64; 3],
     /// Number of coordinates of the shape (2 or 3).
     pub dimension: usize,
 }
@@ -78,18 +81,20 @@ pub fn handles(scene: &SceneDocument, time: Option<f64>) -> Result<Vec<Handle>, 
             }
             ShapeDocument::Surface(s) => (s.decoration(), "control_points"),
         };
-        let mut push = |kind, p: &[f64], dimension| out.push(Handle { object, kind, position: to3(p), dimension });
+        let mut push = |kind, p: &[f64], o: &[f64], dimension| {
+            out.push(Handle { object, kind, position: to3(p), origin: to3(o), dimension })
+        };
         match decoration {
             Decoration::None => {}
             Decoration::ControlPolygon { points, .. } => {
                 for (i, p) in points.iter().enumerate() {
-                    push(HandleKind::ControlPoint(i, field), p, p.len().min(3));
+                    push(HandleKind::ControlPoint(i, field), p, p, p.len().min(3));
                 }
             }
             Decoration::ControlNet(net) => {
                 for (i, row) in net.iter().enumerate() {
                     for (j, p) in row.iter().enumerate() {
-                        push(HandleKind::NetPoint(i, j), p, p.len().min(3));
+                        push(HandleKind::NetPoint(i, j), p, p, p.len().min(3));
                     }
                 }
             }
@@ -105,14 +110,17 @@ fn to3(p: &[f64]) -> [f64; 3] {
 }
 
 /// The moved origins o_k + t_k of a blending-spline curve's locals.
-fn local_curves(d: &BlendingSplineDoc, push: &mut impl FnMut(HandleKind, &[f64], usize)) -> Result<(), DocumentError> {
+fn local_curves(
+    d: &BlendingSplineDoc,
+    push: &mut impl FnMut(HandleKind, &[f64], &[f64], usize),
+) -> Result<(), DocumentError> {
     macro_rules! origins {
         ($dim:literal) => {{
             let c = d.curve::<$dim>()?;
             for k in 0..c.local_count() {
                 let o = c.origin(k);
                 let moved = c.transform(k).apply_point_about(&o, &o);
-                push(HandleKind::LocalCurve(k), moved.as_slice(), $dim);
+                push(HandleKind::LocalCurve(k), moved.as_slice(), o.as_slice(), $dim);
             }
         }};
     }
@@ -129,7 +137,7 @@ fn local_curves(d: &BlendingSplineDoc, push: &mut impl FnMut(HandleKind, &[f64],
 /// The moved origins of a blending-spline surface's patches.
 fn local_patches(
     d: &BlendingSplineSurfaceDoc,
-    push: &mut impl FnMut(HandleKind, &[f64], usize),
+    push: &mut impl FnMut(HandleKind, &[f64], &[f64], usize),
 ) -> Result<(), DocumentError> {
     let s = d.surface::<3>()?;
     let (nu, nv) = s.local_count();
@@ -137,7 +145,7 @@ fn local_patches(
         for l in 0..nv {
             let o = s.origin(k, l);
             let moved = s.transform(k, l).apply_point_about(&o, &o);
-            push(HandleKind::LocalPatch(k, l), moved.as_slice(), 3);
+            push(HandleKind::LocalPatch(k, l), moved.as_slice(), o.as_slice(), 3);
         }
     }
     Ok(())

@@ -14,8 +14,10 @@
 //!   as the format applies it (scale, rotate, translate about the origin,
 //!   [`transform_edit`]).
 //! - Ctrl+S writes an ordinary scene document with the view's camera.
-//! - [`live`] keeps a blending spline sampled and on the GPU, re-evaluating and uploading
-//!   only the ranges a moved piece affects (benchmarked in `benches/live.rs`, `--features bench`).
+//! - [`live_surfaces`] keeps the window's blending-spline surfaces evaluated: after a frame
+//!   moves only the rectangles it affects are re-evaluated before the scene is composed;
+//!   [`live`] keeps a blending spline sampled and on the GPU the same way, uploading only
+//!   the changed rows (both benchmarked in `benches/live.rs`, `--features bench`).
 //!
 //! Everything but [`app`] and [`gpu`] runs without a window and is unit-tested.
 
@@ -32,6 +34,7 @@ pub mod handles;
 pub mod history;
 pub mod keys;
 pub mod live;
+pub mod live_surfaces;
 pub mod options;
 pub mod panels;
 pub mod report;

@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use splinekit_render::{PointItem, RenderScene, compose};
+use splinekit_render::{PointItem, RenderScene, compose_with};
 use splinekit_scene::scenes::SceneDocument;
 
 use crate::clock::Clock;
@@ -14,6 +14,7 @@ use crate::edit::{Edit, EditError};
 use crate::gesture::{Gesture, GestureKind};
 use crate::handles::{Handle, HandleKind, handles};
 use crate::history::History;
+use crate::live_surfaces::LiveSurfaces;
 use crate::view_camera::{Projector, ViewCamera};
 
 /// The scene as last composed, and what it was composed from.
@@ -58,6 +59,8 @@ pub struct Studio {
     pub bounds: Option<([f32; 3], [f32; 3])>,
     /// The last composition.
     cache: Option<Composed>,
+    /// The blending-spline surfaces kept evaluated between compositions.
+    pub live: LiveSurfaces,
 }
 
 impl Studio {
@@ -79,6 +82,7 @@ impl Studio {
             field_error: None,
             bounds: None,
             cache: None,
+            live: LiveSurfaces::default(),
         }
     }
 
@@ -192,7 +196,8 @@ impl Studio {
 
     /// The scene composed at the current time, with its visible handles; recomposed only
     /// when the document or the time changed since the last frame (hovering and orbiting
-    /// reuse it).
+    /// reuse it), blending-spline surfaces re-evaluated only where their frames changed
+    /// ([`LiveSurfaces`]).
     fn composed(&mut self, aspect: f32) -> Result<RenderScene, String> {
         let time = self.time();
         if let Some(c) = &self.cache
@@ -201,7 +206,9 @@ impl Studio {
         {
             return Ok(c.composed.clone());
         }
-        let composed = compose(&self.scene, time, aspect).map_err(|e| e.to_string())?;
+        self.live.update(&self.scene, time);
+        let live = &self.live;
+        let composed = compose_with(&self.scene, time, aspect, &|i| live.surface(i)).map_err(|e| e.to_string())?;
         self.handles = self.visible_handles()?;
         self.cache = Some(Composed { scene: self.scene.clone(), time, composed: composed.clone() });
         Ok(composed)

@@ -62,3 +62,28 @@ fn objects_are_duplicated_and_deleted_from_the_panel() {
     let message = h.state().message.clone().unwrap_or_default();
     assert!(message.contains("objects"), "{message}");
 }
+
+#[test]
+fn the_knot_style_switches_at_once_and_undoes_in_one_step() {
+    let text = r#"{"type": "bspline", "degree": 2, "knots": [0, 0, 0, 1, 2, 2, 2],
+        "control_points": [[0, 0], [1, 1], [2, 0], [3, 1]]}"#;
+    let mut studio = Studio::new(splinekit_studio::document::parse(text).expect("valid"), None);
+    studio.selected_object = Some(0);
+    let mut h = Harness::new_ui_state(|ui, s: &mut Studio| properties_panel(ui, s), studio);
+    h.run();
+    let shape = |s: &Studio| s.scene.objects[0].to_value()["shape"].clone();
+    h.get_by_label("knots").click();
+    h.run();
+    h.get_by_label("periodic").click();
+    h.run();
+    assert_eq!(shape(h.state())["periodic"], serde_json::json!(true));
+    assert_eq!(shape(h.state())["knots"].as_array().map(Vec::len), Some(7));
+    h.get_by_label("knots").click();
+    h.run();
+    h.get_by_label("clamped").click();
+    h.run();
+    assert!(shape(h.state()).get("periodic").is_none());
+    h.state_mut().undo();
+    h.run();
+    assert_eq!(shape(h.state())["periodic"], serde_json::json!(true));
+}

@@ -5,6 +5,7 @@
 
 mod animation;
 mod fields;
+pub mod knots;
 mod menu;
 mod objects;
 mod plot;

@@ -1,5 +1,6 @@
 //! Properties of the selected object, applied at once: style toggles, sample density and
-//! line width; the degree of B-splines and NURBS; for blending splines the number of local
+//! line width; the degree and knot style (clamped, uniform, periodic) of B-splines and
+//! NURBS, curves and nets; for blending splines the number of local
 //! pieces, their kind (Bézier of a degree, sub-curve/surface, arc), knot spacing,
 //! open/closed and the B-function with its parameters
 //! (and a plot of B and B′); the numbers of the selected handle for exact entry.
@@ -10,6 +11,7 @@ use splinekit_scene::bfunctions::BFunctionDoc;
 use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument};
 
 use super::fields::{count, error_label, number, read, toggle, write};
+use super::knots::{CURVE, NET_U, NET_V, knot_style};
 use super::plot::bfunction_plot;
 use crate::studio::Studio;
 
@@ -30,8 +32,15 @@ pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
     style(ui, studio, object);
     ui.separator();
     match ty.as_str() {
-        "bspline" | "nurbs" | "bspline_surface" | "nurbs_surface" => {
+        "bspline" | "nurbs" => {
             count(ui, studio, object, "/shape/degree", "degree", 3);
+            knot_style(ui, studio, object, CURVE, "knots");
+        }
+        "bspline_surface" | "nurbs_surface" => {
+            count(ui, studio, object, "/shape/degree_u", "degree u", 3);
+            count(ui, studio, object, "/shape/degree_v", "degree v", 3);
+            knot_style(ui, studio, object, NET_U, "knots u");
+            knot_style(ui, studio, object, NET_V, "knots v");
         }
         "blending_spline" => blending_curve(ui, studio, object),
         "blending_spline_surface" => blending_surface(ui, studio, object),
