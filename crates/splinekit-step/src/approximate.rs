@@ -240,6 +240,11 @@ fn spline_surface_data(s: &BSplineSurface<3>) -> SplineSurface {
 /// max |spline − model| over the cells (4 × 4 samples per cell, then a finer 9 × 9 look
 /// around the worst one).
 fn surface_deviation(model: &dyn Surface<3>, spline: &BSplineSurface<3>, bu: &[f64], bv: &[f64]) -> f64 {
+    worst_deviation(model, spline, bu, bv).0
+}
+
+/// [`surface_deviation`] with the (u, v) where it is reached.
+fn worst_deviation(model: &dyn Surface<3>, spline: &BSplineSurface<3>, bu: &[f64], bv: &[f64]) -> (f64, (f64, f64)) {
     let dev = |u: f64, v: f64| (spline.point(u, v) - model.point(u, v)).norm();
     let (mut worst, mut at) = (0.0, (bu[0], bv[0], 0.0, 0.0));
     for wu in bu.windows(2) {
@@ -257,14 +262,24 @@ fn surface_deviation(model: &dyn Surface<3>, spline: &BSplineSurface<3>, bu: &[f
         }
     }
     let (u0, v0, hu, hv) = at;
+    let mut place = (u0, v0);
     for i in -4..=4 {
         for j in -4..=4 {
             let u = (u0 + hu * i as f64 / 4.0).clamp(bu[0], bu[bu.len() - 1]);
             let v = (v0 + hv * j as f64 / 4.0).clamp(bv[0], bv[bv.len() - 1]);
-            worst = worst.max(dev(u, v));
+            let d = dev(u, v);
+            if d > worst {
+                (worst, place) = (d, (u, v));
+            }
         }
     }
-    worst
+    (worst, place)
+}
+
+/// Marks the interval of `breaks` that holds `t` (the last one for the right end).
+fn mark_interval(breaks: &[f64], t: f64, marked: &mut [bool]) {
+    let k = breaks[1..breaks.len() - 1].partition_point(|&b| b <= t);
+    marked[k] = true;
 }
 
 /// The exact B-spline form of a surface that is a polynomial of bidegree ≤ (m_u, m_v) on
@@ -377,11 +392,17 @@ pub fn hermite_surface(
         let spline = assemble_surface(&bu, &bv, (5, 5), &cells)?;
         let devs = cell_deviations(model, &spline, &bu, &bv);
         let mut worst = devs.iter().copied().fold(0.0, f64::max);
+        // Where the cells' coarse samples all pass but the finer look does not, the cell
+        // holding the finer look's worst point is the one to bisect (else the grid would
+        // not change and the loop would never end).
+        let mut missed = None;
         if worst <= tolerance {
-            worst = surface_deviation(model, &spline, &bu, &bv);
+            let (fine, at) = worst_deviation(model, &spline, &bu, &bv);
+            worst = fine;
             if worst <= tolerance {
                 return Ok(Fitted { spline: spline_surface_data(&spline), max_deviation: worst });
             }
+            missed = Some(at);
         }
         if bu.len().max(bv.len()) > MAX_CELLS {
             return Err(StepError::plain(format!(
@@ -389,8 +410,12 @@ pub fn hermite_surface(
             )));
         }
         let nv = bv.len() - 1;
-        let bad_u: Vec<bool> = (0..bu.len() - 1).map(|a| (0..nv).any(|b| devs[a * nv + b] > tolerance)).collect();
-        let bad_v: Vec<bool> = (0..nv).map(|b| (0..bu.len() - 1).any(|a| devs[a * nv + b] > tolerance)).collect();
+        let mut bad_u: Vec<bool> = (0..bu.len() - 1).map(|a| (0..nv).any(|b| devs[a * nv + b] > tolerance)).collect();
+        let mut bad_v: Vec<bool> = (0..nv).map(|b| (0..bu.len() - 1).any(|a| devs[a * nv + b] > tolerance)).collect();
+        if let Some((u, v)) = missed {
+            mark_interval(&bu, u, &mut bad_u);
+            mark_interval(&bv, v, &mut bad_v);
+        }
         bu = bisect(&bu, &bad_u);
         bv = bisect(&bv, &bad_v);
     }
@@ -416,8 +441,63 @@ pub fn uniform_breaks(d: splinekit::curve::Interval, n: usize) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use splinekit::curve::Interval;
     use splinekit::curve::model::Heart;
     use splinekit::surface::model::Torus;
+
+    /// z = h·g(u)·g(v), g(x) = exp(−(x − c)²/w²): a bump narrow enough to hide between the
+    /// corners and the 3 × 3 samples of the first cell, so only the finer look sees it.
+    struct Bump;
+    impl Bump {
+        const C: f64 = 0.375;
+        const W: f64 = 0.02;
+        /// g, g′, g″ at x.
+        fn g(x: f64) -> [f64; 3] {
+            let (d, w2) = (x - Self::C, Self::W * Self::W);
+            let g = (-d * d / w2).exp();
+            [g, -2.0 * d / w2 * g, (4.0 * d * d / (w2 * w2) - 2.0 / w2) * g]
+        }
+    }
+    impl Surface<3> for Bump {
+        fn domain_u(&self) -> Interval {
+            Interval::new(0.0, 1.0)
+        }
+        fn domain_v(&self) -> Interval {
+            Interval::new(0.0, 1.0)
+        }
+        fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<3>]) {
+            let (gu, gv) = (Self::g(u), Self::g(v));
+            for i in 0..=du {
+                for j in 0..=dv {
+                    let x = if (i, j) == (0, 0) {
+                        u
+                    } else if (i, j) == (1, 0) {
+                        1.0
+                    } else {
+                        0.0
+                    };
+                    let y = if (i, j) == (0, 0) {
+                        v
+                    } else if (i, j) == (0, 1) {
+                        1.0
+                    } else {
+                        0.0
+                    };
+                    let z = if i <= 2 && j <= 2 { 0.01 * gu[i] * gv[j] } else { f64::NAN };
+                    out[i * (dv + 1) + j] = Point::<3>::from([x, y, z]);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_bump_only_the_finer_look_sees_is_refined_not_looped_over() {
+        // Before, the cells' coarse samples passed, the finer look failed, no interval was
+        // marked and the grid never changed: the export hung.
+        let f = hermite_surface(&Bump, &[0.0, 1.0], &[0.0, 1.0], 1e-5).unwrap();
+        assert!(f.max_deviation <= 1e-5, "{}", f.max_deviation);
+        assert!(f.spline.knots_u.len() > 8, "the bump was not refined: {:?}", f.spline.knots_u);
+    }
 
     #[test]
     fn taylor_bezier_reproduces_a_cubic() {
