@@ -318,6 +318,10 @@ case("fit points near the magnitude limit", ["fit", huge_pts, "--degree", "3", "
 same = doc_file("same_pts.json", [[1e149, 1e149]] * 10)
 case("fit coincident points", ["fit", same, "--degree", "3", "--control-points", "5"], REFUSED, "points")
 case("fit a model curve --samples 10⁶", ["fit", circle, "--degree", "3", "--control-points", "100", "--samples", "1000000"], OK)
+case("fit 10⁵ points over --max-work", ["fit", path, "--degree", "3", "--control-points", "8", "--max-work", "1e6"],
+     REFUSED, "POINTS")
+case("fit a model curve --samples 10⁶ over --max-work", ["fit", circle, "--degree", "3", "--control-points", "100",
+                                                        "--samples", "1000000", "--max-work", "1e6"], REFUSED, "--samples")
 case("fit a model curve --samples 10¹²", ["fit", circle, "--degree", "3", "--control-points", "100", "--samples", "1e12"],
      REFUSED, "--samples")
 

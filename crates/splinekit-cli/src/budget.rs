@@ -76,66 +76,15 @@ pub fn adaptive_cells(shape: &ShapeCost) -> usize {
     current().adaptive_cells(shape)
 }
 
-/// The cost of composing one frame of a scene (every object's document checked on its
-/// own first, named `objects[i].shape.…`): surfaces as meshes of their style's density
-/// (default 64), curves as polylines of their density (default: adaptive, up to 200 000
-/// points).
+/// The cost of composing one frame of a scene (see [`Budget::scene_frame`]).
 pub fn scene_frame(scene: &splinekit_scene::SceneDocument) -> Result<Cost> {
-    let mut total = Cost::ZERO;
-    for (i, object) in scene.objects.iter().enumerate() {
-        let cost = object.shape.cost();
-        current().check_shape(&cost).map_err(|e| e.within(&format!("objects[{i}].shape")))?;
-        let drawn = match &object.shape {
-            splinekit_scene::ShapeDocument::Surface(_) => regular_mesh(object.style.density.unwrap_or(64), cost.eval),
-            splinekit_scene::ShapeDocument::Curve(_) => {
-                let points = object.style.density.map_or(200_000.0, |n| n as f64 + 1.0);
-                Cost::new(points * 64.0, points * (3.0 * cost.eval + 100.0))
-            }
-        };
-        total = total + cost.build + drawn;
-    }
-    Ok(total)
+    Ok(current().scene_frame(scene)?)
 }
 
-/// Bytes the renderer holds per pixel of an image: 4× multisampled colour and depth,
-/// the resolved image, its read-back copy and the image kept.
-pub const RENDER_BYTES_PER_PIXEL: f64 = 4.0 * 4.0 + 4.0 * 4.0 + 4.0 + 4.0 + 4.0;
-/// Work of one pixel of a software render (rasterising, resolving, encoding).
-pub const RENDER_WORK_PER_PIXEL: f64 = 200.0;
-/// The largest buffer the renderer's device accepts (wgpu's default limit, 256 MiB): the
-/// read-back of one image must fit it.
-pub const MAX_RENDER_BUFFER: f64 = 256.0 * 1024.0 * 1024.0;
-
 /// Refuses `frames` renders of a scene at `size` that would not fit the budget or the
-/// renderer's buffers, naming `objects` (the scene's meshes and polylines too large),
-/// `--size` (the image too large) or `flag` (too many frames);
-/// every rendered frame is kept until the file is written (GIF frames: one byte a pixel
-/// after quantisation, counted at four).
+/// renderer's buffers (see [`Budget::check_render`]), naming `objects`, `--size` or
+/// `flag` (too many frames).
 pub fn check_render(scene: &splinekit_scene::SceneDocument, size: (u32, u32), frames: usize, flag: &str) -> Result<()> {
-    let pixels = size.0 as f64 * size.1 as f64;
-    let row = (size.0 as f64 * 4.0 / 256.0).ceil() * 256.0;
-    if row * size.1 as f64 > MAX_RENDER_BUFFER {
-        anyhow::bail!(
-            "--size: a {}x{} image needs a read-back buffer of {}, more than the renderer's limit of {} (at most about 8000x8000 pixels)",
-            size.0,
-            size.1,
-            Bytes(row * size.1 as f64),
-            Bytes(MAX_RENDER_BUFFER)
-        );
-    }
-    let frame = scene_frame(scene)?;
-    let drawing = format!("drawing {} objects", scene.objects.len());
-    current().check("objects", &drawing, frame)?;
-    let image = Cost::new(pixels * RENDER_BYTES_PER_PIXEL, pixels * RENDER_WORK_PER_PIXEL);
-    let rendering = format!("rendering {}x{}", size.0, size.1);
-    current().check("--size", &rendering, image)?;
-    // Each fits alone: the larger part of the two is the one to blame.
-    let one = image + frame;
-    let b = current();
-    let share = |c: Cost| (c.bytes / b.max_bytes).max(c.work / b.max_work);
-    let blamed = if share(frame) > share(image) { "objects" } else { "--size" };
-    b.check(blamed, &format!("{drawing}, {rendering}"), one)?;
-    let n = frames as f64;
-    let all = Cost::new(one.bytes + n * pixels * 4.0, n * one.work);
-    Ok(current().check(flag, &format!("{frames} frames of {}x{}", size.0, size.1), all)?)
+    let fields = splinekit_scene::budget::RenderFields { size: "--size", frames: flag };
+    Ok(current().check_render(scene, size, frames, fields)?)
 }

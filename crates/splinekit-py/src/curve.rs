@@ -10,7 +10,10 @@ use splinekit::Interval;
 use splinekit::curve::Curve;
 use splinekit_scene::{AnyCurve, CurveDocument, Curves, DimensionVisitor};
 
+use splinekit_scene::budget::{Cost, F64};
+
 use crate::arrays::{Numbers, as_points_mut, check_params, filled_rows};
+use crate::budget;
 use crate::errors::{OrValueError, value_error};
 
 /// Highest derivative order one call may ask for (as `splinekit eval --derivatives`).
@@ -74,6 +77,17 @@ impl PyCurve {
         check_params(field, params, (!self.closed).then_some(self.domain), "curve")
     }
 
+    /// Refuses evaluating derivatives up to `order` at `n` parameters and holding `row`
+    /// numbers for each over the budget (`splinekit eval`'s, without the formatting),
+    /// naming `field` (the order) when derivatives are asked for, else `t`.
+    fn check_budget(&self, n: usize, row: usize, (field, order): (&str, usize)) -> PyResult<()> {
+        let cost = self.doc.cost();
+        let n = n as f64;
+        let request = Cost::new(n * row as f64 * F64, cost.evaluations(n, order));
+        let what = format!("{n} parameters with derivatives up to order {order}");
+        budget::check_request(if order > 0 { field } else { "t" }, &what, &cost, request)
+    }
+
     /// The derivatives of `order` at the parameters `t` (all orders 0 … `order` when `all`):
     /// shaped (N, D) (`all`: (N, order + 1, D)), without N for a number, written straight
     /// into the new array chunk by chunk with the GIL released. `field` names the order.
@@ -89,6 +103,7 @@ impl PyCurve {
         let params = numbers.list("t")?;
         self.check_params("t", params)?;
         let (n, d) = (params.len(), self.dimension());
+        self.check_budget(n, if all { (order + 1) * d } else { d }, (field, order))?;
         let mut shape: Vec<usize> = if numbers.is_scalar() { vec![] } else { vec![n] };
         shape.extend(if all { vec![order + 1, d] } else { vec![d] });
         let row = if all { (order + 1) * d } else { d };

@@ -106,6 +106,24 @@ fn fit_error(e: splinekit::Error) -> PyErr {
     }
 }
 
+/// Refuses a fit of `m` points of dimension `d` whose least-squares solve would not fit
+/// the budget (see [`splinekit_scene::budget::least_squares_fit`]). More control points
+/// than points are left to the fit, which refuses them before allocating.
+fn check_fit_budget(request: &FitRequest, m: usize, d: usize) -> PyResult<()> {
+    let n = match (&request.control_points, &request.knots) {
+        (Some(n), _) => *n,
+        (None, Err(knots)) => knots.len().saturating_sub(request.degree + 1),
+        (None, Ok(_)) => return Ok(()),
+    };
+    if n > m {
+        return Ok(());
+    }
+    let p = request.degree;
+    let cost = splinekit_scene::budget::least_squares_fit(m as f64, n as f64, p, d);
+    let what = format!("a degree-{p} fit of {m} points with {n} control points");
+    crate::budget::current()?.check("points", &what, cost).or_value_error()
+}
+
 /// Owned numbers of a 1-D argument, checked finite.
 fn numbers_of(field: &str, ob: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
     let n = Numbers::new(ob)?;
@@ -217,7 +235,8 @@ pub fn fit<'py>(
     let weights = weights.map(|w| numbers_of("weights", w)).transpose()?;
     let request = FitRequest { degree, control_points: n_control_points, params, knots, closed, weights, fix_ends };
     let data = Numbers::new(points)?;
-    let (_, d) = data.rows("points")?;
+    let (m, d) = data.rows("points")?;
+    check_fit_budget(&request, m, d)?;
     let values = data.values();
     let (doc, report) = with_dimension!(d, "points", D => {
         let f = py.detach(|| request.run(as_points::<D>(values))).map_err(fit_error)?;

@@ -53,6 +53,8 @@ fn draw(
     }
     let text = serde_json::to_string(&value).map_err(value_error)?;
     let scene = SceneOrShape::from_json(&text).or_value_error()?.into_scene();
+    let fields = splinekit_scene::budget::RenderFields { size: "size", frames: "size" };
+    crate::budget::current()?.check_render(&scene, size, 1, fields).or_value_error()?;
     let png = py.detach(|| -> PyResult<Vec<u8>> {
         let renderer = Renderer::new().map_err(|e| PyRuntimeError::new_err(format!("render: {e}")))?;
         let rs = compose(&scene, time, size.0 as f32 / size.1 as f32).or_value_error()?;

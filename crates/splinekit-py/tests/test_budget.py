@@ -95,3 +95,42 @@ def test_a_malformed_limit_is_named(monkeypatch):
     monkeypatch.setenv("SPLINEKIT_MAX_MEMORY", "lots")
     with pytest.raises(ValueError, match=r"^SPLINEKIT_MAX_MEMORY: expected bytes like 4G, 512M or 2e9, got 'lots'$"):
         sk.load({"type": "sphere"}).tessellate(density=4)
+
+
+def test_curve_points_and_derivatives_are_budgeted(monkeypatch):
+    c = sk.BSpline([0, 0, 0, 0, 1, 1, 1, 1], np.eye(4, 3), 3)
+    t = np.linspace(0, 1, 100_000)
+    monkeypatch.setenv("SPLINEKIT_MAX_MEMORY", "1M")
+    with pytest.raises(ValueError, match=r"^order: 100000 parameters with derivatives up to order 64 would need about 156\.0 MB of memory, " + LIMIT):
+        c.derivatives(t, 64)
+    with pytest.raises(ValueError, match=r"^nu: 100000 parameters with derivatives up to order 2 would need about 2\.4 MB of memory, " + LIMIT):
+        c(t, nu=2)
+    with pytest.raises(ValueError, match=r"^t: 100000 parameters with derivatives up to order 0 would need about 2\.4 MB"):
+        c(t)
+    assert c.derivatives(t[:1000], 2).shape == (1000, 3, 3)
+    monkeypatch.delenv("SPLINEKIT_MAX_MEMORY")
+    monkeypatch.setenv("SPLINEKIT_MAX_WORK", "1e6")
+    with pytest.raises(ValueError, match=r"^order: 100000 parameters with derivatives up to order 64 would need about .* operations, more than the limit of 1\.0e6 "):
+        c.derivatives(t, 64)
+
+
+def test_a_fit_is_budgeted_before_it_solves(monkeypatch):
+    x = np.linspace(0, 1, 20_000)
+    points = np.column_stack([x, np.sin(6 * x)])
+    monkeypatch.setenv("SPLINEKIT_MAX_WORK", "1e5")
+    with pytest.raises(ValueError, match=r"^points: a degree-3 fit of 20000 points with 50 control points would need about .* operations, more than the limit of 1\.0e5 "):
+        sk.fit(points, 3, 50)
+    with pytest.raises(ValueError, match=r"^n_control_points: 30000 control points need at least 30000 data points, got 20000$"):
+        sk.fit(points, 3, 30_000)  # the fit's own check comes first: nothing is allocated
+    assert sk.fit(points[:500], 3, 50).fit_report.max_error < 1e-3
+
+
+def test_a_render_is_budgeted_before_any_adapter_is_asked(monkeypatch, tmp_path):
+    if not sk._splinekit.HAS_RENDER:
+        pytest.skip("built without the render feature")
+    dense = {"type": "scene", "objects": [{"shape": {"type": "sphere"}, "density": 2048}]}
+    monkeypatch.setenv("SPLINEKIT_MAX_MEMORY", "100M")
+    with pytest.raises(ValueError, match=r"^objects: drawing 1 objects would need about 1\.2 GB of memory, more than the limit of 104\.9 MB"):
+        sk.render(dense, tmp_path / "dense.png")
+    with pytest.raises(ValueError, match=r"^size: rendering 4000x3000 would need about 528\.0 MB of memory, more than the limit of 104\.9 MB"):
+        sk.render({"type": "circle"}, tmp_path / "c.png", size=(4000, 3000))

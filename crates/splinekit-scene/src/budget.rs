@@ -17,6 +17,12 @@ use std::fmt;
 
 use crate::error::{DocumentError, Result};
 
+mod render;
+
+pub use render::{
+    MAX_DRAWN_CURVE_POINTS, MAX_RENDER_BUFFER, RENDER_BYTES_PER_PIXEL, RENDER_WORK_PER_PIXEL, RenderFields,
+};
+
 /// Memory in bytes and work in operations.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Cost {
@@ -173,6 +179,19 @@ pub fn regular_mesh(n: usize, eval: f64) -> Cost {
 /// derivatives for the adaptive refinement, and its copy for output.
 pub fn polyline(points: f64, eval: f64) -> Cost {
     Cost::new(points * 160.0, points * (4.0 * eval + 300.0))
+}
+
+/// A least-squares fit of `points` data points of `dimension` coordinates by a B-spline of
+/// `degree` p with `control_points` n (the kernel's banded QR, `splinekit::fit`): the
+/// data, its parameters, sort order and fitted values held (≈ 2D + 3 numbers a point)
+/// and the band of R with its right-hand sides (2p + 2 + D numbers a control point); per
+/// point the basis ((p + 1)²) and the Givens rotations of its p + 1 entries across a row
+/// of R and its right-hand sides (3 (p + 1)(p + 1 + D)).
+pub fn least_squares_fit(points: f64, control_points: f64, degree: usize, dimension: usize) -> Cost {
+    let (p, d) = (degree.min(MAX_DEGREE + 1) as f64, dimension as f64);
+    let bytes = points * (2.0 * d + 3.0) * F64 + control_points * (2.0 * p + 2.0 + d) * F64;
+    let per_point = (p + 1.0) * (p + 1.0) + 3.0 * (p + 1.0) * (p + 1.0 + d);
+    Cost::new(bytes, points * per_point)
 }
 
 /// The limits a request must stay within.

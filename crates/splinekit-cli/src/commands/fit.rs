@@ -117,6 +117,18 @@ fn check_degree(p: usize) -> Result<()> {
     Ok(())
 }
 
+/// Refuses a fit of `points` data points (given by `field`) whose least-squares solve
+/// would not fit the budget (see [`splinekit_scene::budget::least_squares_fit`]).
+fn check_fit_budget(field: &str, points: usize, args: &FitArgs, dimension: usize) -> Result<()> {
+    let (n, p) = (args.control_points, args.degree);
+    let cost = splinekit_scene::budget::least_squares_fit(points as f64, n as f64, p, dimension);
+    if n > points {
+        return Ok(()); // the fit refuses it before allocating, with a message that says so
+    }
+    let what = format!("a degree-{p} fit of {points} points with {n} control points");
+    Ok(crate::budget::current().check(field, &what, cost)?)
+}
+
 pub fn run_fit(args: &FitArgs) -> Result<()> {
     check_degree(args.degree)?;
     let text = read_text(&args.points, "POINTS")?;
@@ -127,6 +139,7 @@ pub fn run_fit(args: &FitArgs) -> Result<()> {
     }
     let pts = parse_points(&text)?;
     let dim = pts[0].len();
+    check_fit_budget("POINTS", pts.len(), args, dim)?;
     let doc = with_dimension!(dim, "points", D => {
         let points = to_points::<D>(&pts);
         let mut o = FitOptions::new(args.degree, args.control_points);
@@ -155,6 +168,7 @@ fn run_fit_model(args: &FitArgs, doc: &Value) -> Result<()> {
         bail!("POINTS: fit takes points or a model curve, not a surface document");
     };
     let curve = model.build()?;
+    check_fit_budget("--samples", args.samples, args, curve.dimension())?;
     let closed = args.closed;
     struct FitModel<'a>(&'a FitArgs, bool);
     impl DimensionVisitor<Curves> for FitModel<'_> {
