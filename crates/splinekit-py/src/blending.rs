@@ -109,6 +109,20 @@ fn check_pieces<const D: usize>(cost: &ShapeCost, pieces: usize, points: usize) 
     budget::check_request("samples", &format!("{pieces} local pieces of {points} points"), cost, request)
 }
 
+/// The error for a blending-spline `method` called on a shape of another type.
+fn only_on(method: &str, kinds: &str, type_name: &str) -> PyErr {
+    value_error(format!("type: {method} works on {kinds}, not {type_name}"))
+}
+
+/// Refuses a time that is not finite.
+fn check_time(t: f64) -> PyResult<()> {
+    if !t.is_finite() {
+        return Err(value_error(format!("t: must be finite, got {t}")));
+    }
+    Ok(())
+}
+
+/// Refuses sample counts per piece outside 2 ..= 10 000.
 fn check_samples(samples: usize) -> PyResult<()> {
     if !(2..=10_000).contains(&samples) {
         return Err(value_error(format!("samples: need 2 to 10000 samples per piece, got {samples}")));
@@ -131,10 +145,7 @@ impl PyCurve {
         scale: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<()> {
         let CurveDocument::BlendingSpline(d) = &self.doc else {
-            return Err(value_error(format!(
-                "type: set_transform works on blending_spline curves, not {}",
-                self.doc.type_name()
-            )));
+            return Err(only_on("set_transform", "blending_spline curves", self.doc.type_name()));
         };
         let mut d = d.clone();
         put(&mut d.transforms, k, transform(translate, rotate, scale)?);
@@ -145,9 +156,7 @@ impl PyCurve {
     /// A copy posed at time `t` (seconds) by the document's animation tracks, as
     /// ``splinekit eval --time``; shapes without animation are unchanged.
     fn at_time<'py>(&self, py: Python<'py>, t: f64) -> PyResult<Bound<'py, PyAny>> {
-        if !t.is_finite() {
-            return Err(value_error(format!("t: must be finite, got {t}")));
-        }
+        check_time(t)?;
         let mut doc = self.doc.clone();
         doc.set_time(t);
         curve_object(py, doc)
@@ -160,10 +169,7 @@ impl PyCurve {
     fn local_pieces<'py>(&self, py: Python<'py>, samples: usize) -> PyResult<Bound<'py, PyList>> {
         check_samples(samples)?;
         let CurveDocument::BlendingSpline(d) = &self.doc else {
-            return Err(value_error(format!(
-                "type: local_pieces works on blending_spline curves, not {}",
-                self.doc.type_name()
-            )));
+            return Err(only_on("local_pieces", "blending_spline curves", self.doc.type_name()));
         };
         with_dimension!(self.dimension(), "control_points", D => local_curves::<D>(py, d, &self.doc.cost(), samples), or value_error)
     }
@@ -182,10 +188,7 @@ impl PySurface {
         scale: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<()> {
         let SurfaceDocument::BlendingSplineSurface(d) = &self.doc else {
-            return Err(value_error(format!(
-                "type: set_transform works on blending_spline_surface surfaces, not {}",
-                self.doc.type_name()
-            )));
+            return Err(only_on("set_transform", "blending_spline_surface surfaces", self.doc.type_name()));
         };
         let mut d = d.clone();
         put(&mut d.transforms, k, transform(translate, rotate, scale)?);
@@ -195,9 +198,7 @@ impl PySurface {
 
     /// A copy posed at time `t` (seconds) by the document's animation tracks.
     fn at_time<'py>(&self, py: Python<'py>, t: f64) -> PyResult<Bound<'py, PyAny>> {
-        if !t.is_finite() {
-            return Err(value_error(format!("t: must be finite, got {t}")));
-        }
+        check_time(t)?;
         let mut doc = self.doc.clone();
         doc.set_time(t);
         surface_object(py, doc)
@@ -209,10 +210,7 @@ impl PySurface {
     fn local_pieces<'py>(&self, py: Python<'py>, samples: usize) -> PyResult<Bound<'py, PyList>> {
         check_samples(samples)?;
         let SurfaceDocument::BlendingSplineSurface(d) = &self.doc else {
-            return Err(value_error(format!(
-                "type: local_pieces works on blending_spline_surface surfaces, not {}",
-                self.doc.type_name()
-            )));
+            return Err(only_on("local_pieces", "blending_spline_surface surfaces", self.doc.type_name()));
         };
         with_dimension!(self.surface.dimension(), "control_points", D => local_patches::<D>(py, d, &self.doc.cost(), samples), or value_error)
     }
