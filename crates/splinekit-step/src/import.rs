@@ -197,6 +197,12 @@ fn reference(p: &Param) -> Result<u64> {
     }
 }
 
+/// The parameters of an instance's first record from index `from` on (none when it has
+/// fewer).
+fn tail(inst: &Instance, from: usize) -> Vec<Param> {
+    inst.records[0].params.get(from..).map_or_else(Vec::new, <[Param]>::to_vec)
+}
+
 fn refs(p: &Param) -> Result<Vec<u64>> {
     match p {
         Param::List(items) => items.iter().map(reference).collect(),
@@ -212,8 +218,39 @@ fn boolean(p: &Param) -> Result<bool> {
     }
 }
 
+/// A point or direction of 1 to 3 coordinates as three (missing ones are 0).
 fn to3(v: &[f64]) -> P3 {
-    [v[0], v[1], v.get(2).copied().unwrap_or(0.0)]
+    std::array::from_fn(|k| v.get(k).copied().unwrap_or(0.0))
+}
+
+/// Highest degree of a B-spline read from a file (as `splinekit_scene::budget::MAX_DEGREE`).
+const MAX_SPLINE_DEGREE: usize = 1024;
+
+/// The full knot vector of a B-spline of `degree` with `points` control points in one
+/// direction (`what`), from its distinct values and multiplicities, checked before it is
+/// expanded: 1 ≤ degree ≤ [`MAX_SPLINE_DEGREE`], as many multiplicities as values, and
+/// multiplicities summing to points + degree + 1 (so a file cannot ask for more knots
+/// than it has control points for).
+fn checked_knots(what: &str, degree: usize, points: usize, values: &[f64], mults: &[usize]) -> Result<Vec<f64>> {
+    if !(1..=MAX_SPLINE_DEGREE).contains(&degree) {
+        return Err(StepError::plain(format!("{what}: degree must be 1 to {MAX_SPLINE_DEGREE}, got {degree}")));
+    }
+    if values.len() != mults.len() {
+        return Err(StepError::plain(format!(
+            "{what}: {} knot values but {} multiplicities",
+            values.len(),
+            mults.len()
+        )));
+    }
+    let total = mults.iter().try_fold(0usize, |sum, &m| sum.checked_add(m));
+    let needed = points + degree + 1;
+    if points <= degree || total != Some(needed) {
+        let total = total.map_or("more than any machine holds".to_string(), |t| t.to_string());
+        return Err(StepError::plain(format!(
+            "{what}: {points} control points of degree {degree} need {needed} knots (and more than {degree} points), the multiplicities give {total}"
+        )));
+    }
+    Ok(expand_knots(values, mults))
 }
 
 fn unit(v: P3) -> Result<P3> {
@@ -310,7 +347,7 @@ impl Reader<'_> {
     fn spline_curve(&mut self, inst: &Instance) -> Conv<SplineCurve> {
         let (curve, knots) = match inst.record("B_SPLINE_CURVE") {
             Some(c) => (c.params.clone(), inst.record("B_SPLINE_CURVE_WITH_KNOTS").map(|k| k.params.clone())),
-            None => (inst.records[0].params[1..].to_vec(), Some(inst.records[0].params[6..].to_vec())),
+            None => (tail(inst, 1), Some(tail(inst, 6))),
         };
         let knots = knots.ok_or_else(|| Unsupported::Type(inst.type_name()))?;
         if curve.len() < 5 || knots.len() < 2 {
@@ -323,8 +360,24 @@ impl Reader<'_> {
             other => return Err(bad("knot multiplicities", other).into()),
         };
         let values = reals(&knots[1])?;
-        let weights = inst.record("RATIONAL_B_SPLINE_CURVE").map(|r| reals(&r.params[0])).transpose()?;
-        Ok(SplineCurve { degree, knots: expand_knots(&values, &mults), points, weights, closed: boolean(&curve[3])? })
+        let knots = checked_knots("B-spline curve", degree, points.len(), &values, &mults)?;
+        let weights = match inst.record("RATIONAL_B_SPLINE_CURVE") {
+            Some(r) => {
+                Some(reals(r.params.first().ok_or_else(|| StepError::plain("rational curve: missing weights"))?)?)
+            }
+            None => None,
+        };
+        if let Some(w) = &weights
+            && w.len() != points.len()
+        {
+            return Err(StepError::plain(format!(
+                "rational curve: {} weights for {} control points",
+                w.len(),
+                points.len()
+            ))
+            .into());
+        }
+        Ok(SplineCurve { degree, knots, points, weights, closed: boolean(&curve[3])? })
     }
 
     fn curve(&mut self, id: u64) -> Conv<Curve> {
@@ -373,7 +426,7 @@ impl Reader<'_> {
     fn spline_surface(&mut self, inst: &Instance) -> Conv<SplineSurface> {
         let (surf, knots) = match inst.record("B_SPLINE_SURFACE") {
             Some(s) => (s.params.clone(), inst.record("B_SPLINE_SURFACE_WITH_KNOTS").map(|k| k.params.clone())),
-            None => (inst.records[0].params[1..].to_vec(), Some(inst.records[0].params[8..].to_vec())),
+            None => (tail(inst, 1), Some(tail(inst, 8))),
         };
         let knots = knots.ok_or_else(|| Unsupported::Type(inst.type_name()))?;
         if surf.len() < 7 || knots.len() < 4 {
@@ -395,17 +448,33 @@ impl Reader<'_> {
             }
         };
         let (mu, mv, ku, kv) = (ints(&knots[0])?, ints(&knots[1])?, reals(&knots[2])?, reals(&knots[3])?);
-        let weights = match inst.record("RATIONAL_B_SPLINE_SURFACE") {
-            Some(r) => match &r.params[0] {
-                Param::List(rows) => Some(rows.iter().map(reals).collect::<Result<Vec<_>>>()?),
-                other => return Err(bad("rows of weights", other).into()),
-            },
+        let weights = match inst.record("RATIONAL_B_SPLINE_SURFACE").map(|r| r.params.first()) {
+            Some(Some(Param::List(rows))) => Some(rows.iter().map(reals).collect::<Result<Vec<_>>>()?),
+            Some(Some(other)) => return Err(bad("rows of weights", other).into()),
+            Some(None) => return Err(StepError::plain("rational surface: missing weights").into()),
             None => None,
         };
+        let columns = points.first().map_or(0, Vec::len);
+        if let Some(i) = points.iter().position(|row| row.len() != columns) {
+            return Err(StepError::plain(format!(
+                "B-spline surface: row {i} of the control net has {} points, row 0 has {columns}",
+                points[i].len()
+            ))
+            .into());
+        }
+        if let Some(w) = &weights
+            && (w.len() != points.len() || w.iter().any(|row| row.len() != columns))
+        {
+            return Err(StepError::plain(format!(
+                "rational surface: the weights are not a {}×{columns} net like the control points",
+                points.len()
+            ))
+            .into());
+        }
         Ok(SplineSurface {
             degrees,
-            knots_u: expand_knots(&ku, &mu),
-            knots_v: expand_knots(&kv, &mv),
+            knots_u: checked_knots("B-spline surface (u)", degrees.0, points.len(), &ku, &mu)?,
+            knots_v: checked_knots("B-spline surface (v)", degrees.1, columns, &kv, &mv)?,
             points,
             weights,
             closed: (boolean(&surf[4])?, boolean(&surf[5])?),
