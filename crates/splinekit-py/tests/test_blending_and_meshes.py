@@ -44,7 +44,10 @@ def test_set_transform_moves_only_its_local_curve_in_place():
     before = c(t)
     support = c.local_pieces()[2]["support"]
     centre = c.local_pieces()[2]["origin"]
+    knot = (support[0] + support[1]) / 2  # uniform knots: the local's own knot is mid-support
+    assert np.allclose(centre, c(knot), atol=1e-12)  # the curve passes through the local's origin there
     assert c.set_transform(2, translate=[0, 0, 1]) is None  # changes c itself, as list.sort does
+    assert np.allclose(c(knot), np.asarray(centre) + [0, 0, 1], atol=1e-12)  # only local 2 counts at its knot
     assert c.to_dict()["transforms"] == {"2": {"translate": [0, 0, 1]}}
     dz = c(t)[:, 2] - before[:, 2]
     inside = (t > support[0]) & (t < support[1])
@@ -54,7 +57,6 @@ def test_set_transform_moves_only_its_local_curve_in_place():
     c.set_transform(2, rotate={"axis": [0, 0, 1], "angle": 0.5}, scale=2.0)
     assert c.to_dict()["transforms"] == {"5": {"scale": 0.5}, "2": {"rotate": {"axis": [0, 0, 1], "angle": 0.5}, "scale": 2.0}}
     assert sk.load(c.to_json()).to_dict() == c.to_dict()
-    assert len(centre) == 3
     # A refused frame leaves the curve as it was.
     kept = c.to_dict()
     with pytest.raises(ValueError, match=r"^transforms\[2\]\.translate: expected 3 coordinates, got 2$"):
