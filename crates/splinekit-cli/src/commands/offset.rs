@@ -6,7 +6,7 @@ use clap::Args;
 use serde_json::{Value, json};
 use splinekit::Point;
 use splinekit::curve::Curve;
-use splinekit::query::offset::hermite_fit::MAX_PIECES;
+use splinekit::query::offset::hermite_fit::MAX_TOTAL_PIECES;
 use splinekit::query::offset::surface_offset::MAX_GRID_POINTS;
 use splinekit::query::{offset_curve, offset_surface};
 use splinekit_scene::budget::Cost;
@@ -98,10 +98,10 @@ pub fn run(args: &OffsetArgs) -> Result<()> {
     budget::check_shape(&cost)?;
     let value = match doc {
         ShapeDocument::Curve(c) => {
-            // At most MAX_PIECES pieces of 8 samples (each a point and two derivatives), for
-            // the whole raw offset, its arcs and its kept stretches.
-            let work = 3.0 * MAX_PIECES as f64 * 8.0 * 3.0 * cost.eval;
-            let request = Cost::new(3.0 * MAX_PIECES as f64 * 200.0, work);
+            // At most MAX_TOTAL_PIECES pieces of 8 samples (each a point and two derivatives)
+            // over all the approximations of the offset, all of them held at the most.
+            let work = MAX_TOTAL_PIECES as f64 * 8.0 * 3.0 * cost.eval;
+            let request = Cost::new(MAX_TOTAL_PIECES as f64 * 200.0, work);
             budget::check_request("--tolerance", "the offset's refinement", &cost, request)?;
             c.build()?.visit(OffsetCurve { distance, tolerance, normal })?
         }

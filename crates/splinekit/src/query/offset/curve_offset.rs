@@ -82,8 +82,8 @@ const GOLDEN_STEPS: usize = 80;
 /// Newton steps polishing one crossing.
 const POLISH_STEPS: usize = 30;
 
-/// Bisection steps for one cusp.
-const CUSP_ITERATIONS: usize = 200;
+/// Bisection steps for one root (a cusp, or where the offset crosses an end circle).
+const BISECTION_STEPS: usize = 200;
 
 /// One piece of an offset: a cubic B-spline within the tolerance of the exact offset.
 #[derive(Debug, Clone)]
@@ -139,7 +139,7 @@ pub fn offset_curve<const D: usize, C: Curve<D> + ?Sized>(
     let corners = corners(&plane, distance);
     // A curve with corners is offset as an open one, section by section.
     let plane = InPlane { closed: plane.closed && corners.is_empty(), ..plane };
-    let raw = RawOffset { curve: &plane, distance };
+    let raw = RawOffset::new(&plane, distance);
     let dom = plane.domain();
     let closed = plane.is_closed();
     let clip = |a: Interval| clip_at_corners(a, &corners, dom);
@@ -153,7 +153,7 @@ pub fn offset_curve<const D: usize, C: Curve<D> + ?Sized>(
     }
     let mut cusps = Vec::new();
     for f in &fits {
-        cusps.extend(find_cusps(&raw, f)?);
+        find_cusps(&raw, f, &mut cusps)?;
     }
     let mut cuts: Vec<f64> = cusps.iter().copied().chain(corners.iter().map(|c| c.0)).collect();
     cuts.sort_by(f64::total_cmp);
@@ -181,8 +181,7 @@ pub fn offset_curve<const D: usize, C: Curve<D> + ?Sized>(
         })?;
         kept.push((stretch, keep));
     }
-    let breaks: Vec<f64> = cuts.clone();
-    let stretches = join_kept(&kept, &breaks, dom, closed);
+    let stretches = join_kept(&kept, &cuts, dom, closed);
     let mut pieces = Vec::with_capacity(stretches.len());
     for s in stretches {
         if closed && splits.is_empty() {
@@ -203,7 +202,7 @@ fn without_singular_ends<'c, const D: usize, C: Curve<D> + ?Sized>(
     mut plane: InPlane<'c, D, C>,
     distance: f64,
 ) -> Result<InPlane<'c, D, C>> {
-    let raw = RawOffset { curve: &plane, distance };
+    let raw = RawOffset::new(&plane, distance);
     let dom = plane.domain;
     let eps = SINGULAR_END * dom.length();
     let (bad_start, bad_end) = (raw.at(dom.start, Side::Right).is_none(), raw.at(dom.end, Side::Left).is_none());
@@ -226,7 +225,7 @@ fn is_at(params: &[f64], t: f64, dom: Interval, closed: bool) -> bool {
 /// sampled at [`SPEED_SAMPLES`] points per span between breakpoints and refined by golden
 /// section) or turns by a corner at a breakpoint (false).
 fn corners<const D: usize, C: Curve<D> + ?Sized>(plane: &InPlane<'_, D, C>, distance: f64) -> Vec<(f64, bool)> {
-    let raw = RawOffset { curve: plane, distance };
+    let raw = RawOffset::new(plane, distance);
     let dom = plane.domain();
     let mut out = Vec::new();
     for t in plane.breakpoints().into_iter().filter(|&t| t > dom.start && t < dom.end) {
@@ -280,27 +279,15 @@ fn wrap(t: f64, dom: Interval, closed: bool) -> f64 {
     if closed { dom.wrap(t) } else { t }
 }
 
-/// Roots of 1 + dκ where it changes sign between consecutive samples, by bisection.
-fn find_cusps<C: Curve<2> + ?Sized>(raw: &RawOffset<'_, C>, fit: &HermiteFit) -> Result<Vec<f64>> {
-    let mut cusps = Vec::new();
+/// Roots of 1 + dκ where it changes sign between consecutive samples of `fit`, by
+/// bisection, added to `cusps` (at most [`MAX_CUSPS`] over the whole offset).
+fn find_cusps<C: Curve<2> + ?Sized>(raw: &RawOffset<'_, C>, fit: &HermiteFit, cusps: &mut Vec<f64>) -> Result<()> {
     for w in fit.factors.windows(2) {
-        let ((mut a, fa), (mut b, fb)) = (w[0], w[1]);
+        let ((a, fa), (b, fb)) = (w[0], w[1]);
         if fa * fb >= 0.0 || fa.abs().max(fb.abs()) <= COLLAPSED || b <= a {
             continue;
         }
-        for _ in 0..CUSP_ITERATIONS {
-            let m = 0.5 * (a + b);
-            if m <= a || m >= b {
-                break;
-            }
-            let fm = raw.at(m, Side::Right).map_or(0.0, |s| s.factor);
-            if fm == 0.0 {
-                (a, b) = (m, m);
-                break;
-            }
-            if (fm > 0.0) == (fa > 0.0) { a = m } else { b = m }
-        }
-        cusps.push(0.5 * (a + b));
+        cusps.push(bisect_sign_change(|t| Some(raw.at(t, Side::Right).map_or(0.0, |s| s.factor)), (a, b), fa));
         if cusps.len() > MAX_CUSPS {
             return Err(Error::invalid(
                 "distance",
@@ -311,7 +298,27 @@ fn find_cusps<C: Curve<2> + ?Sized>(raw: &RawOffset<'_, C>, fit: &HermiteFit) ->
             ));
         }
     }
-    Ok(cusps)
+    Ok(())
+}
+
+/// A root of `g` in [a, b] where g(a) = `ga` and g(b) have opposite signs, by bisection
+/// to the resolution of the doubles ([`BISECTION_STEPS`] at most); an exact zero ends it,
+/// and so does a parameter where `g` has no value (the root is then the middle of what is
+/// left).
+fn bisect_sign_change(g: impl Fn(f64) -> Option<f64>, (mut a, mut b): (f64, f64), ga: f64) -> f64 {
+    for _ in 0..BISECTION_STEPS {
+        let m = 0.5 * (a + b);
+        if m <= a || m >= b {
+            break;
+        }
+        match g(m) {
+            Some(0.0) => return m,
+            Some(gm) if (gm > 0.0) == (ga > 0.0) => a = m,
+            Some(_) => b = m,
+            None => break,
+        }
+    }
+    0.5 * (a + b)
 }
 
 /// The stretches of the domain between consecutive cut parameters (increasing); for a
@@ -366,7 +373,6 @@ fn crossings<C: Curve<2> + ?Sized>(
     let fits: Vec<BSplineCurve<2>> = arcs.iter().map(|a| fit(*a)).collect::<Result<_>>()?;
     let boxes: Vec<Aabb<2>> = fits.iter().map(|f| Aabb::around(f.control_points(), itol)).collect();
     let n = arcs.len();
-    let closed_ring = closed;
     for i in 0..n {
         add(&self_intersections(&fits[i], itol)?);
         for j in i + 1..n {
@@ -375,7 +381,7 @@ fn crossings<C: Curve<2> + ?Sized>(
             }
             // Arcs i and j share the cusp between them (or the one at the seam).
             let next = j == i + 1 && at_cusp(arcs[i].end);
-            let across = closed_ring && i == 0 && j == n - 1 && at_cusp(arcs[0].start);
+            let across = closed && i == 0 && j == n - 1 && at_cusp(arcs[0].start);
             if next || across {
                 let (a, b) = (arcs[i], arcs[j]);
                 let (ma, mb) = (CUSP_MARGIN * a.length(), CUSP_MARGIN * b.length());
@@ -409,23 +415,12 @@ fn end_circles<C: Curve<2> + ?Sized>(
         let g = |t: f64| raw.at(t, Side::Right).map(|s| (s.point - centre).norm() - r);
         for fit in fits {
             for w in fit.factors.windows(2) {
-                let (mut a, mut b) = (w[0].0, w[1].0);
+                let (a, b) = (w[0].0, w[1].0);
                 let (Some(ga), Some(gb)) = (g(a), g(b)) else { continue };
                 if ga * gb >= 0.0 || b <= a {
                     continue;
                 }
-                for _ in 0..CUSP_ITERATIONS {
-                    let m = 0.5 * (a + b);
-                    if m <= a || m >= b {
-                        break;
-                    }
-                    match g(m) {
-                        Some(gm) if (gm > 0.0) == (ga > 0.0) => a = m,
-                        Some(_) => b = m,
-                        None => break,
-                    }
-                }
-                out.push(0.5 * (a + b));
+                out.push(bisect_sign_change(g, (a, b), ga));
             }
         }
     }
@@ -466,10 +461,11 @@ fn ordered(pairs: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
     pairs.into_iter().map(|(a, b)| if a <= b { (a, b) } else { (b, a) }).collect()
 }
 
-/// Consecutive kept stretches joined where they meet at a crossing (not at a cusp), across
-/// the seam of a closed curve too.
-fn join_kept(kept: &[(Interval, bool)], breaks: &[f64], dom: Interval, closed: bool) -> Vec<Interval> {
-    let at_cusp = |t: f64| is_at(breaks, t, dom, closed);
+/// Consecutive kept stretches joined where they meet at a crossing (not at one of the
+/// `cuts`, the cusps of the raw offset and the corners of the curve), across the seam of a
+/// closed curve too.
+fn join_kept(kept: &[(Interval, bool)], cuts: &[f64], dom: Interval, closed: bool) -> Vec<Interval> {
+    let at_cusp = |t: f64| is_at(cuts, t, dom, closed);
     let mut out: Vec<Interval> = Vec::new();
     let mut open_run = false;
     for &(s, keep) in kept {

@@ -33,6 +33,12 @@ pub const MIN_PIECES: usize = 8;
 /// The most pieces one approximation may have, besides four per span of the curve.
 pub const MAX_PIECES: usize = 10_000;
 
+/// The most pieces all the approximations of one offset may have together (the whole raw
+/// offset, its arcs between cusps, the pairs of arcs next to each cusp and the kept
+/// stretches), so that an offset with many cusps cannot multiply the work of one
+/// approximation by their number.
+pub const MAX_TOTAL_PIECES: usize = 4 * MAX_PIECES;
+
 /// Pieces are not halved below this fraction of the interval.
 pub const MIN_WIDTH: f64 = 1e-12;
 
@@ -80,7 +86,7 @@ pub fn fit_raw_offset<C: Curve<2> + ?Sized>(
     let min_width = MIN_WIDTH * interval.length();
     let mut cuts = initial_cuts(raw.curve, interval);
     cuts.dedup_by(|b, a| *b - *a <= min_width);
-    let max_pieces = MAX_PIECES + 4 * cuts.len();
+    let max_pieces = (MAX_PIECES + 4 * cuts.len()).min(raw.pieces_left.get());
     let mut stack: Vec<Piece> = Vec::with_capacity(cuts.len());
     for w in cuts.windows(2).rev() {
         stack.push(Piece { start: sample(raw, w[0], Side::Right)?, end: sample(raw, w[1], Side::Left)? });
@@ -121,10 +127,12 @@ pub fn fit_raw_offset<C: Curve<2> + ?Sized>(
             continue;
         }
         if done.len() + stack.len() + 2 > max_pieces {
+            let spent = MAX_TOTAL_PIECES - raw.pieces_left.get();
+            let so_far = if spent > 0 { format!(" (after {spent} in its other parts)") } else { String::new() };
             return Err(Error::numerical(
                 "tolerance",
                 format!(
-                    "more than {max_pieces} pieces to approximate the offset within {tolerance:e}; try a larger tolerance"
+                    "more than {max_pieces} pieces to approximate the offset within {tolerance:e}{so_far}; try a larger tolerance"
                 ),
             ));
         }
@@ -135,6 +143,7 @@ pub fn fit_raw_offset<C: Curve<2> + ?Sized>(
     if let Some((last, _)) = done.last() {
         factors.push((last.end.t, last.end.factor));
     }
+    raw.pieces_left.set(raw.pieces_left.get().saturating_sub(done.len()));
     let nodes: Vec<f64> = done.iter().map(|(p, _)| p.start.t).chain(done.last().map(|(p, _)| p.end.t)).collect();
     let curve = to_bspline(&done, periodic)?;
     Ok(HermiteFit { curve, max_error, nodes, factors })
@@ -200,4 +209,40 @@ fn to_bspline(pieces: &[(Piece, [Point<2>; 4])], periodic: bool) -> Result<BSpli
         return BSplineCurve::new_periodic(3, k, inner);
     }
     BSplineCurve::new(3, knots, control)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::curve::BezierCurve;
+
+    #[test]
+    fn the_allowance_of_pieces_is_shared_by_every_approximation_of_one_offset() {
+        let arch = BezierCurve::new(vec![
+            Point::<2>::new(0.0, 0.0),
+            Point::<2>::new(1.0, 2.0),
+            Point::<2>::new(3.0, -1.0),
+            Point::<2>::new(4.0, 1.0),
+        ])
+        .unwrap();
+        let raw = RawOffset::new(&arch, 0.3);
+        let whole = arch.domain();
+        let first = fit_raw_offset(&raw, whole, 1e-8, false).unwrap();
+        let used = first.nodes.len() - 1;
+        assert_eq!(raw.pieces_left.get(), MAX_TOTAL_PIECES - used);
+        // The same approximation needs the same pieces again; leave fewer.
+        raw.pieces_left.set(used - 1);
+        let e = fit_raw_offset(&raw, whole, 1e-8, false).unwrap_err().to_string();
+        let after = MAX_TOTAL_PIECES - (used - 1);
+        assert!(
+            e.contains(&format!("more than {} pieces", used - 1))
+                && e.contains(&format!("after {after} in its other parts")),
+            "{e}"
+        );
+        // With the allowance restored the same approximation comes back.
+        raw.pieces_left.set(MAX_TOTAL_PIECES);
+        let again = fit_raw_offset(&raw, whole, 1e-8, false).unwrap();
+        assert_eq!(again.nodes, first.nodes);
+        assert!(again.max_error <= 1e-8);
+    }
 }

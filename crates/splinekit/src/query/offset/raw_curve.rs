@@ -12,6 +12,8 @@
 //! side of the offset). A counter-clockwise circle of radius r has κ = 1/r and n pointing
 //! outwards, so its offset is the circle of radius r + d.
 
+use std::cell::Cell;
+
 use crate::Point;
 use crate::basis::Side;
 use crate::curve::Curve;
@@ -35,6 +37,18 @@ pub struct RawOffset<'c, C: ?Sized> {
     pub curve: &'c C,
     /// d.
     pub distance: f64,
+    /// Pieces its approximations may still use, all of them together (the whole offset,
+    /// its arcs between cusps and its kept stretches): see
+    /// [`MAX_TOTAL_PIECES`](crate::query::offset::hermite_fit::MAX_TOTAL_PIECES).
+    pub pieces_left: Cell<usize>,
+}
+
+impl<'c, C: ?Sized> RawOffset<'c, C> {
+    /// The raw offset of `curve` at `distance`, its approximations allowed
+    /// [`MAX_TOTAL_PIECES`](crate::query::offset::hermite_fit::MAX_TOTAL_PIECES) pieces.
+    pub fn new(curve: &'c C, distance: f64) -> Self {
+        RawOffset { curve, distance, pieces_left: Cell::new(crate::query::offset::hermite_fit::MAX_TOTAL_PIECES) }
+    }
 }
 
 impl<C: Curve<2> + ?Sized> RawOffset<'_, C> {
