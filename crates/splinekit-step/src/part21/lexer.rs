@@ -465,7 +465,8 @@ pub fn decode_string(raw: &[u8]) -> std::result::Result<String, String> {
             i += 5;
         } else if rest.starts_with(b"\\X2\\") || rest.starts_with(b"\\X4\\") {
             let width = if rest[2] == b'2' { 4 } else { 8 };
-            let end = find(rest, b"\\X0\\").ok_or("\\X2\\ or \\X4\\ run not ended by \\X0\\")?;
+            // The end marker is looked for after the start marker: in `\X2\X0\` they share a backslash.
+            let end = 4 + find(&rest[4..], b"\\X0\\").ok_or("\\X2\\ or \\X4\\ run not ended by \\X0\\")?;
             let hex = &rest[4..end];
             if hex.len() % width != 0 {
                 return Err(format!(
@@ -590,6 +591,9 @@ mod tests {
         assert_eq!(decode_string(b"\\X4\\0001F600\\X0\\").unwrap(), "😀");
         assert_eq!(decode_string(b"\\S\\i").unwrap(), "é");
         assert!(decode_string(b"\\Q\\").is_err());
+        // Start and end markers sharing a backslash: an empty run, not a slice out of order.
+        assert_eq!(decode_string(b"\\X2\\\\X0\\").unwrap(), "");
+        assert!(decode_string(b"\\X2\\X0\\").is_err());
     }
 
     #[test]
