@@ -194,7 +194,13 @@ impl App {
     fn write_report(&mut self) {
         let (Some(path), Some(projector)) = (&self.options.report_handles, &self.projector) else { return };
         let r = self.view.rect_px;
-        let text = handle_report(&self.studio.handles, projector, [r[0], r[1]], [r[2], r[3]]).to_string();
+        let text = handle_report(
+            &self.studio.shown_handles().cloned().collect::<Vec<_>>(),
+            projector,
+            [r[0], r[1]],
+            [r[2], r[3]],
+        )
+        .to_string();
         if text != self.last_report {
             // Written whole to a temporary file, then renamed: a reader never sees half.
             let tmp = path.with_extension("tmp");

@@ -19,6 +19,8 @@ pub fn handle_report(handles: &[Handle], projector: &Projector, origin: [u32; 2]
                 HandleKind::LocalPatch(k, l) => ("local_patch", json!([k, l])),
                 HandleKind::ControlPoint(i, _) => ("control_point", json!(i)),
                 HandleKind::NetPoint(i, j) => ("net_point", json!([i, j])),
+                HandleKind::LocalCurvePoint(k, i) => ("local_curve_point", json!([k, i])),
+                HandleKind::LocalPatchPoint(k, l, a, b) => ("local_patch_point", json!([k, l, a, b])),
             };
             Some(json!({
                 "object": h.object, "kind": kind, "index": index, "world": h.position,

@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use splinekit_render::{PointItem, RenderScene, compose_with};
+use splinekit_render::{LineItem, PointItem, RenderScene, compose_with};
 use splinekit_scene::scenes::SceneDocument;
 
 use crate::clock::Clock;
@@ -178,7 +178,29 @@ impl Studio {
         self.bounds = rs.bounds();
         if overlays {
             // Patch origins and control points, which the renderer does not mark.
-            for h in self.handles.iter().filter(|h| !matches!(h.kind, HandleKind::LocalCurve(_))) {
+            let selected = self.selected.as_ref();
+            // The control polygon of the selected local Bézier curve (patches: their rows).
+            let polygon: Vec<&Handle> =
+                self.handles.iter().filter(|h| h.kind.point_path().is_some() && h.shown_with(selected)).collect();
+            let mut rows: Vec<Vec<[f32; 3]>> = Vec::new();
+            for h in &polygon {
+                let first = match h.kind {
+                    HandleKind::LocalPatchPoint(_, _, _, b) => b == 0,
+                    _ => rows.is_empty(),
+                };
+                if first {
+                    rows.push(Vec::new());
+                }
+                if let Some(row) = rows.last_mut() {
+                    row.push(h.position.map(|x| x as f32));
+                }
+            }
+            for points in rows {
+                rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
+            }
+            for h in
+                self.handles.iter().filter(|h| !matches!(h.kind, HandleKind::LocalCurve(_)) && h.shown_with(selected))
+            {
                 let position = h.position.map(|x| x as f32);
                 rs.points.push(PointItem { position, color: [0.15, 0.15, 0.15, 1.0], size: 7.0 });
             }
@@ -214,13 +236,14 @@ impl Studio {
         Ok(composed)
     }
 
-    /// The handles the view shows and picks: local pieces of objects drawn with
-    /// `local_pieces`, control points of objects drawn with `control_net`.
+    /// The handles the view may show and pick: local pieces (origins and Bézier control
+    /// points) of objects drawn with `local_pieces`, control points of objects drawn with
+    /// `control_net`.
     fn visible_handles(&self) -> Result<Vec<Handle>, String> {
         let all = handles(&self.scene, self.time()).map_err(|e| e.to_string())?;
         let shown = |h: &Handle| {
             let style = &self.scene.objects[h.object].style;
-            if h.kind.is_local() { style.local_pieces } else { style.control_net }
+            if h.kind.piece().is_some() { style.local_pieces } else { style.control_net }
         };
         Ok(all.into_iter().filter(shown).collect())
     }
@@ -242,10 +265,16 @@ impl Studio {
         }
     }
 
-    /// The handle within [`PICK_RADIUS`] pixels of `mouse`, the nearest first.
+    /// The handles the view shows now: [`Self::handles`] without the control points of
+    /// local Béziers other than the selected local piece's ([`Handle::shown_with`]).
+    pub fn shown_handles(&self) -> impl Iterator<Item = &Handle> {
+        self.handles.iter().filter(|h| h.shown_with(self.selected.as_ref()))
+    }
+
+    /// The shown handle within [`PICK_RADIUS`] pixels of `mouse`, the nearest first.
     pub fn pick(&self, projector: &Projector, mouse: [f64; 2]) -> Option<Handle> {
         let mut best: Option<(f64, &Handle)> = None;
-        for h in &self.handles {
+        for h in self.shown_handles() {
             if let Some((p, _)) = projector.project(h.position) {
                 let d = (p[0] - mouse[0]).hypot(p[1] - mouse[1]);
                 if d <= PICK_RADIUS && best.is_none_or(|(b, _)| d < b) {
@@ -260,7 +289,7 @@ impl Studio {
     pub fn begin_drag(&mut self, projector: &Projector, mouse: [f64; 2], kind: GestureKind) -> bool {
         let Some(h) = self.pick(projector, mouse) else { return false };
         self.selected_object = Some(h.object);
-        self.gesture = Gesture::start(&self.scene, projector, &h, kind, mouse);
+        self.gesture = Gesture::start_at(&self.scene, self.time(), projector, &h, kind, mouse);
         self.selected = Some(h);
         self.gesture.is_some()
     }
