@@ -437,3 +437,66 @@ fn a_dragged_control_point_of_a_local_bezier_is_saved_and_renders_as_the_window_
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The window pixel centre of the panel widget `name` in a report, once it is there.
+fn widget(report: &Value, name: &str) -> Option<(f64, f64)> {
+    let w = report["widgets"].as_array()?.iter().find(|w| w["name"] == name)?;
+    Some((w["x"].as_f64()?, w["y"].as_f64()?))
+}
+
+/// Clicks the widget `name` once the report shows it.
+fn click_widget(report: &Path, window: &str, name: &str) {
+    let v = wait_for_json(report, |v| widget(v, name).is_some(), name);
+    let [x, y] = at(widget(&v, name).expect("shown"));
+    xdotool(&["mousemove", "--window", window, &x, &y]);
+    std::thread::sleep(Duration::from_millis(300));
+    xdotool(&["click", "1"]);
+    std::thread::sleep(Duration::from_millis(300));
+}
+
+/// A person selects a clamped B-spline in Objects, opens the knot style box in Properties,
+/// picks "periodic" and saves: the saved knots are equally spaced over the same range with
+/// `periodic: true`, the control points are as they were, and the window's screenshot
+/// equals `splinekit render` of the saved document.
+#[test]
+#[ignore = "needs an X display and xdotool; .ci/run runs it under Xvfb"]
+fn the_knot_style_is_switched_in_the_window_and_saved() {
+    let (_display, dir, _) = setup("e2e-knots");
+    let doc = dir.join("bspline.json");
+    let points = serde_json::json!([[0.0, 0.0], [1.0, 1.5], [2.0, -0.5], [3.0, 1.0], [4.0, 0.0]]);
+    let shape = serde_json::json!({"type": "bspline", "degree": 2, "knots": [0, 0, 0, 1, 2, 3, 3, 3],
+        "control_points": points});
+    let scene = serde_json::json!({"type": "scene", "objects": [{"shape": shape, "control_net": true}]});
+    std::fs::write(&doc, scene.to_string()).expect("written");
+    let view = dir.join("window.png").to_str().expect("a UTF-8 path").to_string();
+    let child = studio(&doc, &dir, "before.json", &["--screenshot", &view]);
+    let (_, window) = focused_window(&dir.join("before.json"));
+    let report = dir.join("before.json");
+    click_widget(&report, &window, "object 0");
+    click_widget(&report, &window, "knots");
+    click_widget(&report, &window, "knots: periodic");
+    xdotool(&["key", "ctrl+s"]);
+    let saved = wait_for_json(&doc, |v| v["objects"][0]["shape"]["periodic"] == true, "the saved document");
+    xdotool(&["key", "ctrl+q"]);
+    wait(child, "the studio");
+    let shape = &saved["objects"][0]["shape"];
+    let knots: Vec<f64> = serde_json::from_value(shape["knots"].clone()).expect("knots");
+    assert_eq!(knots.len(), 8, "{shape}");
+    assert!(knots[0] == 0.0 && knots[7] == 3.0, "the same range: {knots:?}");
+    for w in knots.windows(2) {
+        assert!((w[1] - w[0] - 3.0 / 7.0).abs() < 1e-12, "equally spaced: {knots:?}");
+    }
+    assert_eq!(shape["control_points"], points, "the control points stay");
+    SceneDocument::from_value(saved.clone()).expect("an ordinary scene document");
+    let child = studio(&doc, &dir, "after.json", &["--frames", "3"]);
+    wait(child, "the studio on the saved document");
+    let after: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("after.json")).expect("report")).expect("JSON");
+    check_screenshot(&dir, &doc, &after["view"]);
+    if let Ok(out) = std::env::var("STUDIO_E2E_KEEP") {
+        for f in ["window.png", "render.png", "bspline.json"] {
+            std::fs::copy(dir.join(f), Path::new(&out).join(format!("knots-{f}"))).ok();
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

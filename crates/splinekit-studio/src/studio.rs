@@ -55,6 +55,10 @@ pub struct Studio {
     pub handles: Vec<Handle>,
     /// The field (JSON pointer) whose last change was refused, and the message.
     pub field_error: Option<(String, String)>,
+    /// Named panel widgets drawn in the last frame and their rectangles (egui points:
+    /// left, top, right, bottom), for the handle report (`object 0`, `knots`,
+    /// `knots: periodic`, …): what a script clicks.
+    pub widgets: Vec<(String, [f32; 4])>,
     /// The bounds of the scene as last drawn.
     pub bounds: Option<([f32; 3], [f32; 3])>,
     /// The last composition.
@@ -80,6 +84,7 @@ impl Studio {
             load_error: None,
             handles: Vec::new(),
             field_error: None,
+            widgets: Vec::new(),
             bounds: None,
             cache: None,
             live: LiveSurfaces::default(),
