@@ -184,23 +184,25 @@ impl Studio {
         if overlays {
             // Patch origins and control points, which the renderer does not mark.
             let selected = self.selected.as_ref();
-            // The control polygon of the selected local Bézier curve (patches: their rows).
-            let polygon: Vec<&Handle> =
-                self.handles.iter().filter(|h| h.kind.point_path().is_some() && h.shown_with(selected)).collect();
+            // The control polygon of the selected local Bézier curve, or the net (rows and
+            // columns) of the selected Bézier patch.
             let mut rows: Vec<Vec<[f32; 3]>> = Vec::new();
-            for h in &polygon {
-                let first = match h.kind {
-                    HandleKind::LocalPatchPoint(_, _, _, b) => b == 0,
-                    _ => rows.is_empty(),
+            let mut columns: Vec<Vec<[f32; 3]>> = Vec::new();
+            for h in self.handles.iter().filter(|h| h.kind.point_path().is_some() && h.shown_with(selected)) {
+                let (a, b) = match h.kind {
+                    HandleKind::LocalPatchPoint(_, _, a, b) => (a, Some(b)),
+                    _ => (0, None),
                 };
-                if first {
-                    rows.push(Vec::new());
-                }
-                if let Some(row) = rows.last_mut() {
-                    row.push(h.position.map(|x| x as f32));
+                let p = h.position.map(|x| x as f32);
+                for (lines, i) in [(&mut rows, Some(a)), (&mut columns, b)] {
+                    let Some(i) = i else { continue };
+                    if lines.len() <= i {
+                        lines.resize(i + 1, Vec::new());
+                    }
+                    lines[i].push(p);
                 }
             }
-            for points in rows {
+            for points in rows.into_iter().chain(columns).filter(|l| l.len() > 1) {
                 rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
             }
             for h in

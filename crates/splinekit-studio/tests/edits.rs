@@ -223,6 +223,11 @@ fn a_control_point_of_a_local_bezier_follows_the_mouse_and_edits_that_local_only
         studio.shown_handles().filter(|h| h.kind.point_path().is_some()).map(|h| h.kind).collect();
     assert_eq!(points, (0..3).map(|i| HandleKind::LocalCurvePoint(4, i)).collect::<Vec<_>>());
     assert_eq!(studio.pick(&projector, px).map(|h| h.kind), Some(HandleKind::LocalCurvePoint(4, 1)));
+    // Drawn with the overlays: the control polygon through the local's world points.
+    let drawn = studio.render_scene((600, 600), true).expect("composes");
+    let polygon: Vec<[f32; 3]> = fitted.iter().map(|p| [p.x as f32, p.y as f32, p.z as f32]).collect();
+    assert!(drawn.lines.iter().any(|l| l.points == polygon), "the control polygon of local 4");
+    assert!(!studio.render_scene((600, 600), false).expect("composes").lines.iter().any(|l| l.points == polygon));
 
     let (from, to) = drag(&mut studio, &projector, HandleKind::LocalCurvePoint(4, 1), [30.0, -20.0]);
     assert!((to[0] - from[0] - 30.0).abs() < 1e-6 && (to[1] - from[1] + 20.0).abs() < 1e-6, "{to:?} from {from:?}");
