@@ -892,3 +892,41 @@ fn eval_samples_at_equal_arc_length() {
     }
     assert_bad(&["eval", "-", "--grid", "3,3", "--arc-length"], r#"{"type":"sphere"}"#, "--samples");
 }
+
+/// `local_control_points` reach every command: at knot c₃ the curve is local 3 alone, the
+/// edited quadratic Bézier at its midpoint, (P₀ + 2P₁ + P₂)/4; bad entries end with one line
+/// naming the field and the numbers.
+#[test]
+fn edited_local_control_points_are_honoured_and_checked_by_the_commands() {
+    let doc = r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":10,
+        "local":{"type":"bezier","degree":2},"local_control_points":{"3":[[10,0,0],[14,-4,2],[12,-8,0]]}}"#;
+    let c3 = 3.0 * std::f64::consts::TAU / 10.0;
+    let v = ok_json(&["eval", "-", "--at", &format!("{c3:?}")], doc);
+    let p = floats(&v["points"][0]);
+    let expected = [(10.0 + 28.0 + 12.0) / 4.0, (0.0 - 8.0 - 8.0) / 4.0, 4.0 / 4.0];
+    for (a, b) in p.iter().zip(expected) {
+        assert!((a - b).abs() < 1e-12, "{p:?} vs {expected:?}");
+    }
+    let dir = std::env::temp_dir().join(format!("splinekit-lcp-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let obj = dir.join("heart.obj");
+    let o = run(&["tessellate", "-", "-o", obj.to_str().unwrap()], doc);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let png = dir.join("never.png");
+    let bad = doc.replace("[[10,0,0],[14,-4,2],[12,-8,0]]", "[[10,0,0],[14,-4],[12,-8,0]]");
+    assert_bad(&["eval", "-", "--samples", "4"], &bad, "local_control_points.3[1]: expected 3 coordinates, got 2");
+    let bad = doc.replace("\"3\":", "\"10\":");
+    assert_bad(
+        &["eval", "-", "--samples", "4"],
+        &bad,
+        "local_control_points.10: local curve 10 does not exist (there are 10)",
+    );
+    let bad = doc.replace("\"bezier\",\"degree\":2", "\"bezier\",\"degree\":3");
+    assert_bad(
+        &["render", "-", "-o", png.to_str().unwrap()],
+        &bad,
+        "local_control_points.3: expected 4 control points for a Bézier local of degree 3, got 3",
+    );
+    assert!(!png.exists(), "nothing written for a bad document");
+    std::fs::remove_dir_all(&dir).ok();
+}

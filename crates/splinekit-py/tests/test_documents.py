@@ -138,3 +138,21 @@ def test_the_cli_reads_and_writes_the_same_decimals_bit_exact(tmp_path):
     again.write_text(sk.load(path).to_json())
     r2 = subprocess.run([str(CLI), "eval", str(again), "--at", at], capture_output=True, text=True)
     assert r2.stdout == r.stdout
+
+
+def test_edited_local_control_points_load_evaluate_and_round_trip():
+    # At knot c3 = 3·2π/10 the blend is local 3 alone: its edited quadratic Bézier at the
+    # midpoint of its support, (P0 + 2 P1 + P2) / 4.
+    points = [[10.0, 0.0, 0.0], [14.0, -4.0, 2.0], [12.0, -8.0, 0.0]]
+    doc = {"type": "blending_spline", "model": {"type": "heart"}, "local_curves": 10,
+           "local": {"type": "bezier", "degree": 2}, "local_control_points": {"3": points}}
+    c = sk.load(doc)
+    p = np.asarray(c(np.array([3 * 2 * np.pi / 10])))[0]
+    np.testing.assert_allclose(p, (np.array(points[0]) + 2 * np.array(points[1]) + np.array(points[2])) / 4, atol=1e-12)
+    assert c.to_dict()["local_control_points"] == {"3": points}
+    plain = sk.load({k: v for k, v in doc.items() if k != "local_control_points"})
+    t = np.linspace(0, 2 * np.pi, 201)
+    outside = (t <= 2 * 2 * np.pi / 10) | (t >= 4 * 2 * np.pi / 10)
+    np.testing.assert_array_equal(np.asarray(c(t))[outside], np.asarray(plain(t))[outside])
+    with pytest.raises(ValueError, match=r"local_control_points\.3: expected 3 control points for a Bézier local of degree 2, got 2"):
+        sk.load({**doc, "local_control_points": {"3": points[:2]}})

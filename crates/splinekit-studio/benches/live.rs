@@ -51,6 +51,26 @@ fn bench(c: &mut Criterion) {
             queue.submit([]);
         })
     });
+    let points = curve.curve.local_bezier_points(2).expect("Bézier locals").to_vec();
+    c.bench_function("heart, 10 quadratic locals, 2000 samples: move one local's control point + upload", |b| {
+        b.iter(|| {
+            lift = if lift == 0.0 { 0.5 } else { 0.0 };
+            let mut p = points.clone();
+            p[1].x += lift;
+            curve.set_local_bezier_points(queue, 2, p).expect("an edit");
+            queue.submit([]);
+        })
+    });
+    let net = surface.surface.bezier_rest_net(3, 4).expect("Bézier patches").0.to_vec();
+    c.bench_function("torus 8x8 bicubic, 256x256 with normals: move one patch's control point + upload", |b| {
+        b.iter(|| {
+            lift = if lift == 0.0 { 0.3 } else { 0.0 };
+            let mut n = net.clone();
+            n[5].z += lift;
+            surface.set_bezier_net(queue, (3, 4), n).expect("an edit");
+            queue.submit([]);
+        })
+    });
 }
 
 /// The kernel's part alone: set the frame and refresh the samples, no packing or upload.

@@ -16,7 +16,7 @@ use crate::gpu::Gpu;
 use crate::keys::{Command, shortcuts};
 use crate::options::Options;
 use crate::panels::{FileFields, MenuAction, SIDE_WIDTH, animation_panel, menu_bar, objects_panel, properties_panel};
-use crate::report::handle_report;
+use crate::report::{handle_report, widget_report};
 use crate::studio::Studio;
 use crate::view_camera::Projector;
 use crate::viewport::{ViewFrame, ViewInput, view};
@@ -100,6 +100,7 @@ impl App {
             None => return,
         };
         let mut commands = Vec::new();
+        self.studio.widgets.clear();
         let output = self.egui.clone().run_ui(raw, |ui| commands.extend(self.panels(ui)));
         if let Some(s) = self.egui_state.as_mut() {
             s.handle_platform_output(&window, output.platform_output.clone());
@@ -194,7 +195,14 @@ impl App {
     fn write_report(&mut self) {
         let (Some(path), Some(projector)) = (&self.options.report_handles, &self.projector) else { return };
         let r = self.view.rect_px;
-        let text = handle_report(&self.studio.handles, projector, [r[0], r[1]], [r[2], r[3]]).to_string();
+        let mut report = handle_report(
+            &self.studio.shown_handles().cloned().collect::<Vec<_>>(),
+            projector,
+            [r[0], r[1]],
+            [r[2], r[3]],
+        );
+        report["widgets"] = widget_report(&self.studio.widgets, self.egui.pixels_per_point());
+        let text = report.to_string();
         if text != self.last_report {
             // Written whole to a temporary file, then renamed: a reader never sees half.
             let tmp = path.with_extension("tmp");

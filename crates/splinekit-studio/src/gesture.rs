@@ -2,14 +2,17 @@
 //! view plane through the handle (the world point under the cursor at the handle's depth),
 //! optionally along one axis; rotating turns about the local origin by the angle the cursor
 //! sweeps around the handle's screen position, about the axis towards the eye; scaling
-//! multiplies by the ratio of the cursor's distances from the handle.
+//! multiplies by the ratio of the cursor's distances from the handle. A control point of a
+//! local Bézier moves in the local's rest frame by the inverse of its frame's linear part
+//! applied to the world displacement, so that its world position o + T(P − o) follows the
+//! mouse (GMlib's `updateCoeffs`).
 
 use serde_json::Value;
 use splinekit_scene::scenes::SceneDocument;
 use splinekit_scene::transforms::TransformDoc;
 
 use crate::edit::{Edit, EditError};
-use crate::handles::{Handle, coordinates_of, transform_of};
+use crate::handles::{Handle, coordinates_of, local_points_of, transform_of};
 use crate::transform_edit::{rotated, scaled, translated};
 use crate::view_camera::Projector;
 
@@ -29,6 +32,13 @@ pub enum GestureKind {
 enum Start {
     Transform(TransformDoc),
     Coordinates(Vec<f64>),
+    /// A local Bézier's rest control points, where the dragged one sits among them, and the
+    /// inverse of the linear part of the local's frame.
+    LocalPoints {
+        rest: Value,
+        path: Vec<usize>,
+        inverse: [[f64; 3]; 3],
+    },
 }
 
 /// A drag in progress.
@@ -54,9 +64,25 @@ impl Gesture {
         kind: GestureKind,
         mouse: [f64; 2],
     ) -> Option<Gesture> {
+        Gesture::start_at(scene, None, projector, handle, kind, mouse)
+    }
+
+    /// [`Gesture::start`] on the scene posed at `time` (a local Bézier's control point
+    /// follows the mouse through the local's frame at that time).
+    pub fn start_at(
+        scene: &SceneDocument,
+        time: Option<f64>,
+        projector: &Projector,
+        handle: &Handle,
+        kind: GestureKind,
+        mouse: [f64; 2],
+    ) -> Option<Gesture> {
         let (handle_px, depth) = projector.project(handle.position)?;
         let start = if handle.kind.is_local() {
             Start::Transform(transform_of(scene, handle))
+        } else if let Some(path) = handle.kind.point_path() {
+            let (rest, inverse) = local_points_of(scene, handle, time)?;
+            Start::LocalPoints { rest, path, inverse }
         } else {
             Start::Coordinates(coordinates_of(scene, handle)?)
         };
@@ -92,6 +118,19 @@ impl Gesture {
                 let moved: Vec<f64> =
                     c.iter().enumerate().map(|(i, x)| x + if i < dim { delta[i] } else { 0.0 }).collect();
                 Value::from(moved)
+            }
+            (Start::LocalPoints { rest, path, inverse }, kind) => {
+                let d = self.delta(projector, mouse, move_axis(kind));
+                let q = inverse.map(|row| row[0] * d[0] + row[1] * d[1] + row[2] * d[2]);
+                let mut value = rest.clone();
+                let point = path.iter().try_fold(&mut value, |v, &i| v.get_mut(i)).and_then(Value::as_array_mut);
+                let Some(point) = point else {
+                    return Err(EditError::Missing(format!("{field}: no such control point")));
+                };
+                for (x, dq) in point.iter_mut().zip(q).take(dim) {
+                    *x = Value::from(x.as_f64().unwrap_or(0.0) + dq);
+                }
+                value
             }
         };
         Ok(Edit::Set { object: self.handle.object, pointer: self.handle.kind.pointer(), value: Some(value) })

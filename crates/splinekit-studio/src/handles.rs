@@ -1,6 +1,9 @@
 //! The handles of a scene: what the mouse can grab. A handle at each local origin of a
 //! blending-spline curve or surface (the frame origin moved by its transform,
-//! o + t), and one at each control point of a Bézier, B-spline or NURBS curve or net.
+//! o + t), one at each control point of a Bézier local curve or patch of a blending spline
+//! (in the world: its frame applied, o + T(P − o); the view shows those of the selected
+//! local piece only, [`Handle::shown_with`]), and one at each control point of a Bézier,
+//! B-spline or NURBS curve or net.
 
 use serde_json::Value;
 use splinekit_scene::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
@@ -20,6 +23,10 @@ pub enum HandleKind {
     ControlPoint(usize, &'static str),
     /// Control point (i, j) of a net.
     NetPoint(usize, usize),
+    /// Control point i of the Bézier local curve k of a blending spline.
+    LocalCurvePoint(usize, usize),
+    /// Control point (a, b) of the Bézier patch (k, l) of a blending-spline surface.
+    LocalPatchPoint(usize, usize, usize, usize),
 }
 
 /// One grabbable point.
@@ -46,6 +53,8 @@ impl HandleKind {
             HandleKind::LocalPatch(k, l) => format!("/shape/transforms/{k},{l}"),
             HandleKind::ControlPoint(i, field) => format!("/shape/{field}/{i}"),
             HandleKind::NetPoint(i, j) => format!("/shape/control_points/{i}/{j}"),
+            HandleKind::LocalCurvePoint(k, _) => format!("/shape/local_control_points/{k}"),
+            HandleKind::LocalPatchPoint(k, l, _, _) => format!("/shape/local_control_points/{k},{l}"),
         }
     }
 
@@ -56,12 +65,46 @@ impl HandleKind {
             HandleKind::LocalPatch(k, l) => format!("transforms[{k},{l}]"),
             HandleKind::ControlPoint(i, field) => format!("{field}[{i}]"),
             HandleKind::NetPoint(i, j) => format!("control_points[{i}][{j}]"),
+            HandleKind::LocalCurvePoint(k, i) => format!("local_control_points.{k}[{i}]"),
+            HandleKind::LocalPatchPoint(k, l, a, b) => format!("local_control_points.{k},{l}[{a}][{b}]"),
+        }
+    }
+
+    /// Where the point sits in the value at [`Self::pointer`] of a local Bézier's
+    /// control-point handle (`[i]`, `[a, b]`); `None` for other handles.
+    pub fn point_path(&self) -> Option<Vec<usize>> {
+        match *self {
+            HandleKind::LocalCurvePoint(_, i) => Some(vec![i]),
+            HandleKind::LocalPatchPoint(_, _, a, b) => Some(vec![a, b]),
+            _ => None,
+        }
+    }
+
+    /// The local piece the handle belongs to (its origin or one of its control points):
+    /// `(k, None)` for local curve k, `(k, Some(l))` for patch (k, l).
+    pub fn piece(&self) -> Option<(usize, Option<usize>)> {
+        match *self {
+            HandleKind::LocalCurve(k) | HandleKind::LocalCurvePoint(k, _) => Some((k, None)),
+            HandleKind::LocalPatch(k, l) | HandleKind::LocalPatchPoint(k, l, _, _) => Some((k, Some(l))),
+            _ => None,
         }
     }
 
     /// Whether the handle moves a local piece's frame (rather than a control point).
     pub fn is_local(&self) -> bool {
         matches!(self, HandleKind::LocalCurve(_) | HandleKind::LocalPatch(..))
+    }
+}
+
+impl Handle {
+    /// Whether the view shows (and picks) this handle while `selected` is selected: a
+    /// local Bézier's control points only when their local piece (its origin or one of
+    /// its control points) is selected; every other handle always.
+    pub fn shown_with(&self, selected: Option<&Handle>) -> bool {
+        if self.kind.point_path().is_none() {
+            return true;
+        }
+        selected.is_some_and(|s| s.object == self.object && s.kind.piece() == self.kind.piece())
     }
 }
 
@@ -121,6 +164,9 @@ fn local_curves(
                 let o = c.origin(k);
                 let moved = c.transform(k).apply_point_about(&o, &o);
                 push(HandleKind::LocalCurve(k), moved.as_slice(), o.as_slice(), $dim);
+                for (i, p) in c.local_bezier_world_points(k).unwrap_or_default().iter().enumerate() {
+                    push(HandleKind::LocalCurvePoint(k, i), p.as_slice(), p.as_slice(), $dim);
+                }
             }
         }};
     }
@@ -146,6 +192,11 @@ fn local_patches(
             let o = s.origin(k, l);
             let moved = s.transform(k, l).apply_point_about(&o, &o);
             push(HandleKind::LocalPatch(k, l), moved.as_slice(), o.as_slice(), 3);
+            if let Some((world, (_, dv))) = s.bezier_net(k, l) {
+                for (j, p) in world.iter().enumerate() {
+                    push(HandleKind::LocalPatchPoint(k, l, j / (dv + 1), j % (dv + 1)), p.as_slice(), p.as_slice(), 3);
+                }
+            }
         }
     }
     Ok(())
@@ -164,4 +215,52 @@ pub fn coordinates_of(scene: &SceneDocument, handle: &Handle) -> Option<Vec<f64>
     let doc = scene.objects.get(handle.object)?.to_value();
     let value: Value = doc.pointer(&handle.kind.pointer())?.clone();
     serde_json::from_value(value).ok()
+}
+
+/// For the handle of a control point of a local Bézier: the local's control points in its
+/// rest frame as the document writes them (its `local_control_points` entry, else the
+/// Hermite-fitted ones), and the inverse of the linear part of the local's frame posed at
+/// `time` (3 × 3, rows; the z row and column of a plane shape's are those of the identity),
+/// which maps a world displacement of the handle to the change of the point in the rest
+/// frame. `None` for other handles or a singular frame.
+pub fn local_points_of(scene: &SceneDocument, handle: &Handle, time: Option<f64>) -> Option<(Value, [[f64; 3]; 3])> {
+    let mut shape = scene.objects.get(handle.object)?.shape.clone();
+    if let Some(t) = time {
+        shape.set_time(t);
+    }
+    macro_rules! curve_points {
+        ($d:expr, $k:expr, $dim:literal) => {{
+            let c = $d.curve::<$dim>().ok()?;
+            let rest: Vec<Vec<f64>> = c.local_bezier_points($k)?.iter().map(|p| p.as_slice().to_vec()).collect();
+            let inv = c.transform($k).linear.try_inverse()?;
+            let mut m = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+            for (i, row) in m.iter_mut().enumerate().take($dim) {
+                for (j, x) in row.iter_mut().enumerate().take($dim) {
+                    *x = inv[(i, j)];
+                }
+            }
+            Some((serde_json::to_value(rest).ok()?, m))
+        }};
+    }
+    let decoration = match &shape {
+        ShapeDocument::Curve(c) => c.decoration(),
+        ShapeDocument::Surface(s) => s.decoration(),
+    };
+    match (decoration, handle.kind) {
+        (Decoration::LocalCurves(d), HandleKind::LocalCurvePoint(k, _)) => match d.dimension().ok()? {
+            2 => curve_points!(d, k, 2),
+            3 => curve_points!(d, k, 3),
+            _ => None,
+        },
+        (Decoration::LocalPatches(d), HandleKind::LocalPatchPoint(k, l, _, _)) => {
+            let s = d.surface::<3>().ok()?;
+            let (net, (_, dv)) = s.bezier_rest_net(k, l)?;
+            let rows: Vec<Vec<Vec<f64>>> =
+                net.chunks(dv + 1).map(|row| row.iter().map(|p| p.as_slice().to_vec()).collect()).collect();
+            let inv = s.transform(k, l).linear.try_inverse()?;
+            let m = [0, 1, 2].map(|i| [0, 1, 2].map(|j| inv[(i, j)]));
+            Some((serde_json::to_value(rows).ok()?, m))
+        }
+        _ => None,
+    }
 }

@@ -1,7 +1,9 @@
 //! Live re-evaluation: a blending-spline surface or curve kept sampled and on the GPU while
-//! its local pieces move. After a frame changes, only the parameter ranges the kernel
-//! reports ([`BlendingSplineSurface::set_transform`] → rectangles,
-//! [`BlendingSplineCurve::set_transform`] → intervals) are re-evaluated
+//! its local pieces move or their Bézier control points are edited. After a frame or a
+//! local's control points change, only the parameter ranges the kernel reports
+//! ([`BlendingSplineSurface::set_transform`], [`BlendingSplineSurface::set_bezier_net`] →
+//! rectangles, [`BlendingSplineCurve::set_transform`],
+//! [`BlendingSplineCurve::set_local_bezier_points`] → intervals) are re-evaluated
 //! ([`SurfaceGridSamples::refresh`], [`CurveSamples::refresh`]), re-packed into the
 //! renderer's vertex layouts (meshes: position, normal, linear colour = 10 × f32; line
 //! segments: two ends, linear colour, width, padding = 12 × f32) and written to the vertex
@@ -71,8 +73,25 @@ impl LiveSurface {
     /// grid rows they cover. Returns the number of samples re-evaluated.
     pub fn set_transform(&mut self, queue: &wgpu::Queue, (k, l): (usize, usize), frame: Affine<3>) -> usize {
         let rects = self.surface.set_transform(k, l, frame);
-        let done = self.samples.refresh(&self.surface, &rects);
-        for rect in &rects {
+        self.refresh(queue, &rects)
+    }
+
+    /// Replaces the net of Bézier patch (k, l) (rest frame, row-major,
+    /// [`BlendingSplineSurface::set_bezier_net`]): re-evaluates the rectangles it affects
+    /// and uploads their rows. Returns the number of samples re-evaluated.
+    pub fn set_bezier_net(
+        &mut self,
+        queue: &wgpu::Queue,
+        (k, l): (usize, usize),
+        net: Vec<Point<3>>,
+    ) -> Result<usize, splinekit::Error> {
+        let rects = self.surface.set_bezier_net(k, l, net)?;
+        Ok(self.refresh(queue, &rects))
+    }
+
+    fn refresh(&mut self, queue: &wgpu::Queue, rects: &[splinekit::ParamRect]) -> usize {
+        let done = self.samples.refresh(&self.surface, rects);
+        for rect in rects {
             let rows = rows_in(self.samples.us(), rect.u);
             self.pack_and_upload(queue, rows);
         }
@@ -147,8 +166,26 @@ impl LiveCurve {
     /// segments touching them. Returns the number of samples re-evaluated.
     pub fn set_transform(&mut self, queue: &wgpu::Queue, k: usize, frame: Affine<3>) -> usize {
         let ranges = self.curve.set_transform(k, frame);
-        let done = self.samples.refresh(&self.curve, &ranges);
-        for r in &ranges {
+        self.refresh(queue, &ranges)
+    }
+
+    /// Replaces the control points of local k's Bézier curve (rest frame,
+    /// [`BlendingSplineCurve::set_local_bezier_points`], GMlib's updateCoeffs): re-evaluates
+    /// the local's support and uploads the segments touching it. Returns the number of
+    /// samples re-evaluated.
+    pub fn set_local_bezier_points(
+        &mut self,
+        queue: &wgpu::Queue,
+        k: usize,
+        points: Vec<Point<3>>,
+    ) -> Result<usize, splinekit::Error> {
+        let ranges = self.curve.set_local_bezier_points(k, points)?;
+        Ok(self.refresh(queue, &ranges))
+    }
+
+    fn refresh(&mut self, queue: &wgpu::Queue, ranges: &[Interval]) -> usize {
+        let done = self.samples.refresh(&self.curve, ranges);
+        for r in ranges {
             let samples = rows_in(self.samples.params(), *r);
             self.pack_and_upload(queue, samples);
         }
@@ -218,5 +255,32 @@ mod tests {
         assert!(done > 0 && done < 400, "refreshed {done} of 1000 samples");
         let fresh = LiveCurve::new(device, queue, live.curve.clone(), 1000, [0.9, 0.2, 0.5, 1.0], 3.0).expect("fresh");
         assert_eq!(live.segments(), fresh.segments());
+
+        // A control point of local 6's Bézier moved (GMlib's updateCoeffs): its support only.
+        let mut points = live.curve.local_bezier_points(6).expect("Bézier locals").to_vec();
+        points[2] += Point::<3>::new(0.7, -0.4, 0.3);
+        let before = live.segments().to_vec();
+        let done = live.set_local_bezier_points(queue, 6, points).expect("an edit");
+        assert!(done > 0 && done < 400, "refreshed {done} of 1000 samples");
+        assert_ne!(live.segments(), &before[..], "the curve changed");
+        let fresh = LiveCurve::new(device, queue, live.curve.clone(), 1000, [0.9, 0.2, 0.5, 1.0], 3.0).expect("fresh");
+        assert_eq!(live.segments(), fresh.segments());
+        let e = live.set_local_bezier_points(queue, 6, vec![Point::<3>::zeros(); 2]).expect_err("too few");
+        assert!(e.to_string().starts_with("local_control_points: expected 4 control points"), "{e}");
+
+        let mut live = LiveSurface::new(device, queue, torus_surface(), (64, 64), [0.5; 4]).expect("live");
+        let mut net = live.surface.bezier_rest_net(2, 5).expect("Bézier patches").0.to_vec();
+        net[6].z += 0.8;
+        let done = live.set_bezier_net(queue, (2, 5), net).expect("an edit");
+        assert!(done > 0 && done < 64 * 64 / 2, "refreshed {done} of {} samples", 64 * 64);
+        let fresh = LiveSurface::new(device, queue, live.surface.clone(), (64, 64), [0.5; 4]).expect("fresh");
+        assert_eq!(live.vertices(), fresh.vertices());
+    }
+
+    fn torus_surface() -> BlendingSplineSurface<3> {
+        let torus = shape(r#"{"type":"blending_spline_surface","model":{"type":"torus"},"local_surfaces":[8,8]}"#);
+        let ShapeDocument::Surface(s) = &torus else { panic!("a surface") };
+        let Decoration::LocalPatches(d) = s.decoration() else { panic!("blending") };
+        d.surface::<3>().expect("builds")
     }
 }

@@ -1,10 +1,11 @@
 //! The window's live refresh of blending-spline surfaces: each visible 3-D
 //! `blending_spline_surface` object keeps its kernel surface and the samples of the grid the
 //! renderer meshes it on ([`SurfaceGridSamples`], made on the first request of that grid).
-//! When the document changes only in patch frames (a drag, an undo of one, the animation's
-//! pose at a new time), the surface built from the new document is kept, and only the
-//! rectangles the kernel reports for the patches whose frame or `transforms` entry changed
-//! ([`BlendingSplineSurface::affected_rects`]) are re-evaluated
+//! When the document changes only in patch frames or edited Bézier nets (a drag of a patch
+//! or of one of its control points, an undo of one, the animation's pose at a new time),
+//! the surface built from the new document is kept, and only the rectangles the kernel
+//! reports for the patches whose frame, `transforms` entry or `local_control_points` entry
+//! changed ([`BlendingSplineSurface::affected_rects`]) are re-evaluated
 //! ([`SurfaceGridSamples::refresh`]), as GMlib does; any other change makes the samples
 //! afresh. (The new surface is kept rather than the frames set on the old one: a patch's
 //! control points in the world are its frame applied to its net, and an identity frame
@@ -19,6 +20,7 @@ use splinekit::blend::BlendingSplineSurface;
 use splinekit::surface::{Curvatures, FundamentalForms, Surface, SurfaceGridSamples, TrimLoops};
 use splinekit::{Interval, Point};
 use splinekit_scene::blending::BlendingSplineSurfaceDoc;
+use splinekit_scene::blending::local_points::PatchControlPoints;
 use splinekit_scene::scenes::SceneDocument;
 use splinekit_scene::transforms::PatchTransforms;
 use splinekit_scene::{Decoration, DocumentKind, ShapeDocument};
@@ -37,6 +39,8 @@ pub struct KeptSurface {
     key: BlendingSplineSurfaceDoc,
     /// The document's `transforms`.
     transforms: PatchTransforms,
+    /// The document's `local_control_points`.
+    nets: PatchControlPoints,
     surface: BlendingSplineSurface<3>,
     samples: Mutex<Option<SurfaceGridSamples<3>>>,
 }
@@ -72,10 +76,10 @@ impl LiveSurfaces {
                 *slot = None;
                 continue;
             };
-            let transforms = doc.transforms.clone();
+            let (transforms, nets) = (doc.transforms.clone(), doc.local_control_points.clone());
             match slot {
-                Some(kept) if kept.key == key => self.last_refreshed += kept.follow(posed, transforms),
-                _ => *slot = Some(KeptSurface { key, transforms, surface: posed, samples: Mutex::new(None) }),
+                Some(kept) if kept.key == key => self.last_refreshed += kept.follow(posed, transforms, nets),
+                _ => *slot = Some(KeptSurface { key, transforms, nets, surface: posed, samples: Mutex::new(None) }),
             }
         }
     }
@@ -86,34 +90,46 @@ impl LiveSurfaces {
     }
 }
 
-/// The document without its frames (`transforms`, `animation` and the time they are posed
-/// at; the model keeps its own time): what must stay the same for frames alone to change.
+/// The document without its frames and edited nets (`transforms`, `local_control_points`,
+/// `animation` and the time they are posed at; the model keeps its own time): what must
+/// stay the same for frames and nets alone to change.
 fn frameless(doc: &BlendingSplineSurfaceDoc) -> BlendingSplineSurfaceDoc {
     let mut key = doc.clone();
     key.transforms.clear();
+    key.local_control_points.clear();
     key.animation.clear();
     key.time = None;
     key
 }
 
 impl KeptSurface {
-    /// Keeps `posed` (built from the document with `transforms`) and refreshes the samples
-    /// in the rectangles of the patches whose frame or transform entry changed; returns the
-    /// number of samples re-evaluated.
-    fn follow(&mut self, posed: BlendingSplineSurface<3>, transforms: PatchTransforms) -> usize {
+    /// Keeps `posed` (built from the document with `transforms` and `nets`) and refreshes
+    /// the samples in the rectangles of the patches whose frame, transform entry or edited
+    /// net changed; returns the number of samples re-evaluated.
+    fn follow(
+        &mut self,
+        posed: BlendingSplineSurface<3>,
+        transforms: PatchTransforms,
+        nets: PatchControlPoints,
+    ) -> usize {
         let (nu, nv) = posed.local_count();
         let entry = |ts: &PatchTransforms, k: usize, l: usize| ts.iter().rev().find(|(i, _)| *i == (k, l)).cloned();
+        let net = |ns: &PatchControlPoints, k: usize, l: usize| ns.iter().rev().find(|(i, _)| *i == (k, l)).cloned();
         let mut rects = Vec::new();
         for k in 0..nu {
             for l in 0..nv {
                 let moved = self.surface.transform(k, l) != posed.transform(k, l);
-                if moved || entry(&self.transforms, k, l) != entry(&transforms, k, l) {
+                if moved
+                    || entry(&self.transforms, k, l) != entry(&transforms, k, l)
+                    || net(&self.nets, k, l) != net(&nets, k, l)
+                {
                     rects.extend(posed.affected_rects(k, l));
                 }
             }
         }
         self.surface = posed;
         self.transforms = transforms;
+        self.nets = nets;
         let samples = self.samples.get_mut().unwrap_or_else(|e| e.into_inner());
         match samples {
             Some(s) if !rects.is_empty() => s.refresh(&self.surface, &rects),

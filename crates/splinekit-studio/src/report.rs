@@ -1,6 +1,7 @@
 //! The handle report (`--report-handles FILE`): each handle's object, kind, index, world
 //! position and pixel position in the window (physical pixels from the window's top-left
-//! corner), for a script that moves the mouse onto one.
+//! corner), for a script that moves the mouse onto one; and the named panel widgets of the
+//! last frame with their centres, for a script that clicks one.
 
 use serde_json::{Value, json};
 
@@ -19,6 +20,8 @@ pub fn handle_report(handles: &[Handle], projector: &Projector, origin: [u32; 2]
                 HandleKind::LocalPatch(k, l) => ("local_patch", json!([k, l])),
                 HandleKind::ControlPoint(i, _) => ("control_point", json!(i)),
                 HandleKind::NetPoint(i, j) => ("net_point", json!([i, j])),
+                HandleKind::LocalCurvePoint(k, i) => ("local_curve_point", json!([k, i])),
+                HandleKind::LocalPatchPoint(k, l, a, b) => ("local_patch_point", json!([k, l, a, b])),
             };
             Some(json!({
                 "object": h.object, "kind": kind, "index": index, "world": h.position,
@@ -27,4 +30,17 @@ pub fn handle_report(handles: &[Handle], projector: &Projector, origin: [u32; 2]
         })
         .collect();
     json!({"view": {"left": origin[0], "top": origin[1], "width": view_size[0], "height": view_size[1]}, "handles": list})
+}
+
+/// The named widgets (rectangles in egui points) as `[{"name", "x", "y"}]`, their centres
+/// in window pixels at `pixels_per_point`.
+pub fn widget_report(widgets: &[(String, [f32; 4])], pixels_per_point: f32) -> Value {
+    let list: Vec<Value> = widgets
+        .iter()
+        .map(|(name, r)| {
+            let (x, y) = (0.5 * (r[0] + r[2]) * pixels_per_point, 0.5 * (r[1] + r[3]) * pixels_per_point);
+            json!({"name": name, "x": x, "y": y})
+        })
+        .collect();
+    Value::Array(list)
 }

@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use splinekit_render::{PointItem, RenderScene, compose_with};
+use splinekit_render::{LineItem, PointItem, RenderScene, compose_with};
 use splinekit_scene::scenes::SceneDocument;
 
 use crate::clock::Clock;
@@ -55,6 +55,10 @@ pub struct Studio {
     pub handles: Vec<Handle>,
     /// The field (JSON pointer) whose last change was refused, and the message.
     pub field_error: Option<(String, String)>,
+    /// Named panel widgets drawn in the last frame and their rectangles (egui points:
+    /// left, top, right, bottom), for the handle report (`object 0`, `knots`,
+    /// `knots: periodic`, …): what a script clicks.
+    pub widgets: Vec<(String, [f32; 4])>,
     /// The bounds of the scene as last drawn.
     pub bounds: Option<([f32; 3], [f32; 3])>,
     /// The last composition.
@@ -80,6 +84,7 @@ impl Studio {
             load_error: None,
             handles: Vec::new(),
             field_error: None,
+            widgets: Vec::new(),
             bounds: None,
             cache: None,
             live: LiveSurfaces::default(),
@@ -178,7 +183,31 @@ impl Studio {
         self.bounds = rs.bounds();
         if overlays {
             // Patch origins and control points, which the renderer does not mark.
-            for h in self.handles.iter().filter(|h| !matches!(h.kind, HandleKind::LocalCurve(_))) {
+            let selected = self.selected.as_ref();
+            // The control polygon of the selected local Bézier curve, or the net (rows and
+            // columns) of the selected Bézier patch.
+            let mut rows: Vec<Vec<[f32; 3]>> = Vec::new();
+            let mut columns: Vec<Vec<[f32; 3]>> = Vec::new();
+            for h in self.handles.iter().filter(|h| h.kind.point_path().is_some() && h.shown_with(selected)) {
+                let (a, b) = match h.kind {
+                    HandleKind::LocalPatchPoint(_, _, a, b) => (a, Some(b)),
+                    _ => (0, None),
+                };
+                let p = h.position.map(|x| x as f32);
+                for (lines, i) in [(&mut rows, Some(a)), (&mut columns, b)] {
+                    let Some(i) = i else { continue };
+                    if lines.len() <= i {
+                        lines.resize(i + 1, Vec::new());
+                    }
+                    lines[i].push(p);
+                }
+            }
+            for points in rows.into_iter().chain(columns).filter(|l| l.len() > 1) {
+                rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
+            }
+            for h in
+                self.handles.iter().filter(|h| !matches!(h.kind, HandleKind::LocalCurve(_)) && h.shown_with(selected))
+            {
                 let position = h.position.map(|x| x as f32);
                 rs.points.push(PointItem { position, color: [0.15, 0.15, 0.15, 1.0], size: 7.0 });
             }
@@ -214,13 +243,14 @@ impl Studio {
         Ok(composed)
     }
 
-    /// The handles the view shows and picks: local pieces of objects drawn with
-    /// `local_pieces`, control points of objects drawn with `control_net`.
+    /// The handles the view may show and pick: local pieces (origins and Bézier control
+    /// points) of objects drawn with `local_pieces`, control points of objects drawn with
+    /// `control_net`.
     fn visible_handles(&self) -> Result<Vec<Handle>, String> {
         let all = handles(&self.scene, self.time()).map_err(|e| e.to_string())?;
         let shown = |h: &Handle| {
             let style = &self.scene.objects[h.object].style;
-            if h.kind.is_local() { style.local_pieces } else { style.control_net }
+            if h.kind.piece().is_some() { style.local_pieces } else { style.control_net }
         };
         Ok(all.into_iter().filter(shown).collect())
     }
@@ -242,10 +272,16 @@ impl Studio {
         }
     }
 
-    /// The handle within [`PICK_RADIUS`] pixels of `mouse`, the nearest first.
+    /// The handles the view shows now: [`Self::handles`] without the control points of
+    /// local Béziers other than the selected local piece's ([`Handle::shown_with`]).
+    pub fn shown_handles(&self) -> impl Iterator<Item = &Handle> {
+        self.handles.iter().filter(|h| h.shown_with(self.selected.as_ref()))
+    }
+
+    /// The shown handle within [`PICK_RADIUS`] pixels of `mouse`, the nearest first.
     pub fn pick(&self, projector: &Projector, mouse: [f64; 2]) -> Option<Handle> {
         let mut best: Option<(f64, &Handle)> = None;
-        for h in &self.handles {
+        for h in self.shown_handles() {
             if let Some((p, _)) = projector.project(h.position) {
                 let d = (p[0] - mouse[0]).hypot(p[1] - mouse[1]);
                 if d <= PICK_RADIUS && best.is_none_or(|(b, _)| d < b) {
@@ -260,7 +296,7 @@ impl Studio {
     pub fn begin_drag(&mut self, projector: &Projector, mouse: [f64; 2], kind: GestureKind) -> bool {
         let Some(h) = self.pick(projector, mouse) else { return false };
         self.selected_object = Some(h.object);
-        self.gesture = Gesture::start(&self.scene, projector, &h, kind, mouse);
+        self.gesture = Gesture::start_at(&self.scene, self.time(), projector, &h, kind, mouse);
         self.selected = Some(h);
         self.gesture.is_some()
     }

@@ -181,3 +181,101 @@ fn rotating_and_scaling_by_hand_compose_with_the_transform() {
     };
     assert!((v["scale"].as_f64().expect("a factor") - 2.5).abs() < 1e-12, "{v}");
 }
+
+/// The world position of a shown handle of `kind`.
+fn shown(studio: &Studio, kind: HandleKind) -> Option<splinekit_studio::handles::Handle> {
+    studio.shown_handles().find(|h| h.kind == kind).cloned()
+}
+
+/// Drags the handle of `kind` by `by` pixels in ten steps; returns its pixel position
+/// before and after.
+fn drag(studio: &mut Studio, projector: &Projector, kind: HandleKind, by: [f64; 2]) -> ([f64; 2], [f64; 2]) {
+    let h = shown(studio, kind).unwrap_or_else(|| panic!("{kind:?} shown"));
+    let (p, _) = projector.project(h.position).expect("in view");
+    assert!(studio.begin_drag(projector, p, GestureKind::Move(None)), "{kind:?} picked");
+    for k in 1..=10 {
+        studio.drag_to(projector, [p[0] + by[0] * k as f64 / 10.0, p[1] + by[1] * k as f64 / 10.0]);
+    }
+    studio.end_drag();
+    let moved = studio.selected.clone().expect("still selected");
+    assert_eq!(moved.kind, kind);
+    (p, projector.project(moved.position).expect("in view").0)
+}
+
+/// A control point of a local Bézier (GMlib's updateCoeffs): shown once its local is
+/// selected, dragged so that its world position follows the mouse, saved as the local's
+/// `local_control_points` entry with the other points as fitted; the curve changes inside
+/// the local's support only; the drag is one undo step.
+#[test]
+fn a_control_point_of_a_local_bezier_follows_the_mouse_and_edits_that_local_only() {
+    let (mut studio, projector) = studio_on_heart();
+    let before = curve(&studio.scene);
+    let fitted = before.local_bezier_points(4).expect("Bézier locals").to_vec();
+    assert_eq!(fitted.len(), 3, "quadratic locals");
+    // Not shown (nor picked) until local 4 is selected; then only local 4's points are.
+    let point = handles(&studio.scene, None).expect("handles");
+    let point = point.iter().find(|h| h.kind == HandleKind::LocalCurvePoint(4, 1)).expect("a handle").clone();
+    assert!(shown(&studio, HandleKind::LocalCurvePoint(4, 1)).is_none());
+    let (px, _) = projector.project(point.position).expect("in view");
+    assert!(studio.pick(&projector, px).is_none_or(|h| h.kind.point_path().is_none()));
+    studio.selected = shown(&studio, HandleKind::LocalCurve(4));
+    let points: Vec<HandleKind> =
+        studio.shown_handles().filter(|h| h.kind.point_path().is_some()).map(|h| h.kind).collect();
+    assert_eq!(points, (0..3).map(|i| HandleKind::LocalCurvePoint(4, i)).collect::<Vec<_>>());
+    assert_eq!(studio.pick(&projector, px).map(|h| h.kind), Some(HandleKind::LocalCurvePoint(4, 1)));
+    // Drawn with the overlays: the control polygon through the local's world points.
+    let drawn = studio.render_scene((600, 600), true).expect("composes");
+    let polygon: Vec<[f32; 3]> = fitted.iter().map(|p| [p.x as f32, p.y as f32, p.z as f32]).collect();
+    assert!(drawn.lines.iter().any(|l| l.points == polygon), "the control polygon of local 4");
+    assert!(!studio.render_scene((600, 600), false).expect("composes").lines.iter().any(|l| l.points == polygon));
+
+    let (from, to) = drag(&mut studio, &projector, HandleKind::LocalCurvePoint(4, 1), [30.0, -20.0]);
+    assert!((to[0] - from[0] - 30.0).abs() < 1e-6 && (to[1] - from[1] + 20.0).abs() < 1e-6, "{to:?} from {from:?}");
+    let doc = studio.scene.objects[0].to_value();
+    let entry: Vec<Vec<f64>> =
+        serde_json::from_value(doc["shape"]["local_control_points"]["4"].clone()).expect("the local's entry");
+    assert_eq!(entry.len(), 3);
+    assert_eq!(entry[0], fitted[0].as_slice(), "the other points stay as fitted");
+    assert_eq!(entry[2], fitted[2].as_slice());
+    assert!(doc["shape"].get("transforms").is_none(), "the frame did not change");
+    let after = curve(&studio.scene);
+    let support = before.local_support(4);
+    let mut changed = 0;
+    for i in 0..=1000 {
+        let t = std::f64::consts::TAU * i as f64 / 1000.0;
+        if t <= support.start || t >= support.end {
+            assert_eq!(before.point(t), after.point(t), "t = {t} is outside local 4's support");
+        } else if before.point(t) != after.point(t) {
+            changed += 1;
+        }
+    }
+    assert!(changed > 50, "{changed}");
+    studio.undo();
+    assert_eq!(studio.scene, heart(), "the whole drag is one step");
+    studio.redo();
+    assert_eq!(curve(&studio.scene).point(support.lerp(0.5)), after.point(support.lerp(0.5)));
+}
+
+/// With the local turned and scaled by its transform, the point is moved in the local's
+/// rest frame by the inverse of the frame, so that its world position still follows the
+/// mouse; moving it along X only keeps its world y and z.
+#[test]
+fn a_local_bezier_point_of_a_turned_and_scaled_local_follows_the_mouse() {
+    let (mut studio, projector) = studio_on_heart();
+    let frame = json!({"rotate": {"axis": [0.0, 0.0, 1.0], "angle": 0.7}, "scale": 1.8, "translate": [0.5, -0.3, 0.0]});
+    assert!(studio.edit(set("/shape/transforms/6", frame.clone()), false));
+    studio.render_scene((600, 600), false).expect("composes");
+    studio.selected = shown(&studio, HandleKind::LocalCurve(6));
+    let (from, to) = drag(&mut studio, &projector, HandleKind::LocalCurvePoint(6, 2), [-25.0, 35.0]);
+    assert!((to[0] - from[0] + 25.0).abs() < 1e-6 && (to[1] - from[1] - 35.0).abs() < 1e-6, "{to:?} from {from:?}");
+    assert_eq!(studio.scene.objects[0].to_value()["shape"]["transforms"]["6"], frame, "the frame is kept");
+    let before = shown(&studio, HandleKind::LocalCurvePoint(6, 0)).expect("shown").position;
+    let h = shown(&studio, HandleKind::LocalCurvePoint(6, 0)).expect("shown");
+    let (p, _) = projector.project(h.position).expect("in view");
+    assert!(studio.begin_drag(&projector, p, GestureKind::Move(Some(0))));
+    studio.drag_to(&projector, [p[0] + 40.0, p[1] + 40.0]);
+    studio.end_drag();
+    let after = studio.selected.clone().expect("selected").position;
+    assert!((after[0] - before[0]).abs() > 0.1, "{after:?} {before:?}");
+    assert!((after[1] - before[1]).abs() < 1e-9 && (after[2] - before[2]).abs() < 1e-9, "{after:?} {before:?}");
+}

@@ -77,3 +77,38 @@ fn the_animated_torus_is_the_fresh_one_at_every_time() {
     // The animated patches' rectangles were refreshed, not whole surfaces made afresh.
     assert!(refreshed > 0, "nothing refreshed");
 }
+
+/// An edited net of a Bézier patch (a dragged control point): only that patch's
+/// rectangles are re-evaluated and the scene is the fresh one.
+#[test]
+fn an_edited_patch_net_refreshes_its_rectangles_only() {
+    let mut s = studio(
+        r#"{"type": "scene", "objects": [{"shape": {"type": "blending_spline_surface",
+            "model": {"type": "torus"}, "local_surfaces": [8, 6], "transforms": {"3,2": {"scale": 1.2}}},
+            "local_pieces": true, "density": 64}]}"#,
+    );
+    assert_fresh(&mut s, "first frame");
+    let splinekit_scene::ShapeDocument::Surface(splinekit_scene::SurfaceDocument::BlendingSplineSurface(d)) =
+        &s.scene.objects[0].shape
+    else {
+        panic!("a blending-spline surface")
+    };
+    let built = d.surface::<3>().expect("builds");
+    let (net, (_, dv)) = built.bezier_rest_net(3, 2).expect("Bézier patches");
+    let mut rows: Vec<Vec<Vec<f64>>> =
+        net.chunks(dv + 1).map(|row| row.iter().map(|p| p.as_slice().to_vec()).collect()).collect();
+    for lift in [0.4, 0.9] {
+        rows[1][2][2] += lift;
+        let value = serde_json::to_value(&rows).expect("json");
+        assert!(s.edit(
+            Edit::Set { object: 0, pointer: "/shape/local_control_points/3,2".into(), value: Some(value) },
+            false
+        ));
+        assert_fresh(&mut s, "lifted");
+        let n = s.live.last_refreshed;
+        assert!(n > 0 && n < 65 * 65 / 4, "refreshed {n} of {} samples", 65 * 65);
+    }
+    s.undo();
+    assert_fresh(&mut s, "undo");
+    assert!(s.live.last_refreshed > 0);
+}

@@ -1,6 +1,8 @@
 //! Blending splines: a closed curve of 10 cubic Bézier locals (ERBS) at 10⁶ parameters
 //! with two derivatives; an 8×8 bicubic torus blending surface on a 256×256 grid with
-//! normals, from scratch and refreshed after moving one patch.
+//! normals, from scratch and refreshed after moving one patch or one control point of a
+//! patch's Bézier net (the studio's drag of a local Bézier point, GMlib's updateCoeffs); the
+//! heart's samples refreshed after moving one control point of a local.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use splinekit::Point;
@@ -58,6 +60,31 @@ fn bench(c: &mut Criterion) {
             angle += 0.01;
             let rects = moved.set_transform(3, 4, Affine::rotation(Point::<3>::new(0.0, 0.0, 1.0), angle).unwrap());
             samples.refresh(&moved, &rects)
+        })
+    });
+    let mut edited = torus.clone();
+    let mut samples = SurfaceGridSamples::uniform(&edited, 256, 256).unwrap();
+    let net = edited.bezier_rest_net(3, 4).unwrap().0.to_vec();
+    let mut lift = 0.0;
+    g.bench_function("torus: move one control point of a patch and refresh", |b| {
+        b.iter(|| {
+            lift = if lift == 0.0 { 0.3 } else { 0.0 };
+            let mut n = net.clone();
+            n[5].z += lift;
+            let rects = edited.set_bezier_net(3, 4, n).unwrap();
+            samples.refresh(&edited, &rects)
+        })
+    });
+    let mut heart = curve.clone();
+    let mut curve_samples = splinekit::curve::CurveSamples::uniform(&heart, 2000, 0).unwrap();
+    let points = heart.local_bezier_points(2).unwrap().to_vec();
+    g.bench_function("heart, 2000 samples: move one control point of a local and refresh", |b| {
+        b.iter(|| {
+            lift = if lift == 0.0 { 0.5 } else { 0.0 };
+            let mut p = points.clone();
+            p[1].x += lift;
+            let ranges = heart.set_local_bezier_points(2, p).unwrap();
+            curve_samples.refresh(&heart, &ranges)
         })
     });
     g.finish();

@@ -10,6 +10,7 @@ use splinekit::curve::Curve;
 
 use super::DEFAULT_BFUNCTION;
 use super::animation::{TrackDoc, tracks};
+use super::local_points::{self, LocalControlPoints};
 use crate::bfunctions::BFunctionDoc;
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
 use crate::curves::{CurveDocument, HeartDoc};
@@ -112,6 +113,10 @@ pub struct BlendingSplineDoc {
     /// Per-local rest transforms, by index.
     #[serde(default, with = "crate::transforms::by_index", skip_serializing_if = "Vec::is_empty")]
     pub transforms: LocalTransforms,
+    /// Edited control points of Bézier locals, by index, in each local's rest frame
+    /// (overriding the Hermite-fitted ones; see [`super::local_points`]).
+    #[serde(default, with = "super::local_points::by_index", skip_serializing_if = "Vec::is_empty")]
+    pub local_control_points: LocalControlPoints,
     /// Animation tracks.
     #[serde(default, deserialize_with = "crate::json::list", skip_serializing_if = "Vec::is_empty")]
     pub animation: Vec<TrackDoc<usize>>,
@@ -178,12 +183,16 @@ impl BlendingSplineDoc {
     /// The kernel curve in dimension D (the document's), posed at [`Self::time`].
     pub fn curve<const D: usize>(&self) -> Result<BlendingSplineCurve<D>> {
         let b = self.bfunction.as_ref().unwrap_or(&DEFAULT_BFUNCTION).build().map_err(|e| e.within("bfunction"))?;
+        let mut bezier_degree = None;
         let mut c = match self.source()? {
             BlendingSource::Model { model, local_curves, local, knot_spacing } => {
                 let model: Arc<dyn Curve<D>> = Arc::from(model.build_in::<D>().map_err(|e| e.within("model"))?);
                 let closed = self.closed.unwrap_or_else(|| model.is_closed());
                 let kind = match local {
-                    LocalDoc::Bezier { degree } => LocalKind::Bezier(*degree),
+                    LocalDoc::Bezier { degree } => {
+                        bezier_degree = Some(*degree);
+                        LocalKind::Bezier(*degree)
+                    }
                     LocalDoc::SubCurve => LocalKind::SubCurve,
                     LocalDoc::Arc => LocalKind::Arc,
                 };
@@ -207,8 +216,36 @@ impl BlendingSplineDoc {
                 )?
             }
         };
+        self.edit_locals(&mut c, bezier_degree)?;
         self.pose(&mut c)?;
         Ok(c)
+    }
+
+    /// Sets the edited control points of `local_control_points` (Bézier locals of
+    /// `degree` only).
+    fn edit_locals<const D: usize>(&self, c: &mut BlendingSplineCurve<D>, degree: Option<usize>) -> Result<()> {
+        if self.local_control_points.is_empty() {
+            return Ok(());
+        }
+        let Some(degree) = degree else {
+            return Err(local_points::not_bezier(match self.local {
+                _ if self.model.is_none() => "explicit local curves",
+                Some(LocalDoc::SubCurve) => "sub-curve locals",
+                _ => "arc locals",
+            }));
+        };
+        let n = c.local_count();
+        for (k, points) in &self.local_control_points {
+            if *k >= n {
+                return Err(DocumentError::new(
+                    format!("{}.{k}", local_points::FIELD),
+                    format!("local curve {k} does not exist (there are {n})"),
+                ));
+            }
+            let points = local_points::curve_points::<D>(*k, points, degree)?;
+            c.set_local_bezier_points(*k, points)?;
+        }
+        Ok(())
     }
 
     /// Applies the rest transforms and, at [`Self::time`], the animation.
@@ -350,6 +387,7 @@ impl DocumentKind for BlendingSplineDoc {
             bfunction: None,
             closed: None,
             transforms: Vec::new(),
+            local_control_points: Vec::new(),
             animation: Vec::new(),
             time: None,
         }

@@ -4,6 +4,7 @@
 
 mod animation;
 mod curve;
+pub mod local_points;
 mod surface;
 
 pub use animation::{MotionDoc, OscillateDoc, PulseDoc, RotateMotionDoc, SwingDoc, TrackDoc};

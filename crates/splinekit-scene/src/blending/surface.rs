@@ -10,6 +10,7 @@ use splinekit::surface::Surface;
 
 use super::DEFAULT_BFUNCTION;
 use super::animation::{TrackDoc, tracks};
+use super::local_points::{self, PatchControlPoints};
 use crate::bfunctions::BFunctionDoc;
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
 use crate::dimension::Surfaces;
@@ -62,6 +63,10 @@ pub struct BlendingSplineSurfaceDoc {
     /// Per-patch rest transforms.
     #[serde(default, with = "crate::transforms::by_pair", skip_serializing_if = "Vec::is_empty")]
     pub transforms: PatchTransforms,
+    /// Edited control nets of Bézier patches, by `"k,l"`, in each patch's rest frame
+    /// (overriding the Hermite-fitted ones; see [`super::local_points`]).
+    #[serde(default, with = "super::local_points::by_pair", skip_serializing_if = "Vec::is_empty")]
+    pub local_control_points: PatchControlPoints,
     /// Animation tracks (`local` is [k, l]).
     #[serde(default, deserialize_with = "crate::json::list", skip_serializing_if = "Vec::is_empty")]
     pub animation: Vec<TrackDoc<(usize, usize)>>,
@@ -87,8 +92,31 @@ impl BlendingSplineSurfaceDoc {
         let options =
             BlendingSurfaceOptions { local: kind, bfunction: b, closed_u: Some(closed.0), closed_v: Some(closed.1) };
         let mut s = BlendingSplineSurface::from_model(model, counts, &options)?;
+        self.edit_patches(&mut s, kind)?;
         self.pose(&mut s)?;
         Ok(s)
+    }
+
+    /// Sets the edited nets of `local_control_points` (Bézier patches only).
+    fn edit_patches<const D: usize>(&self, s: &mut BlendingSplineSurface<D>, kind: PatchKind) -> Result<()> {
+        if self.local_control_points.is_empty() {
+            return Ok(());
+        }
+        let PatchKind::Bezier(du, dv) = kind else {
+            return Err(local_points::not_bezier("sub-surface patches"));
+        };
+        let (nu, nv) = s.local_count();
+        for ((k, l), net) in &self.local_control_points {
+            if *k >= nu || *l >= nv {
+                return Err(DocumentError::new(
+                    format!("{}.{k},{l}", local_points::FIELD),
+                    format!("patch [{k}, {l}] does not exist (there are {nu}×{nv})"),
+                ));
+            }
+            let net = local_points::patch_net::<D>((*k, *l), net, (du, dv))?;
+            s.set_bezier_net(*k, *l, net)?;
+        }
+        Ok(())
     }
 
     /// Applies the rest transforms and, at [`Self::time`], the animation.
@@ -160,6 +188,7 @@ impl DocumentKind for BlendingSplineSurfaceDoc {
             closed_u: None,
             closed_v: None,
             transforms: Vec::new(),
+            local_control_points: Vec::new(),
             animation: Vec::new(),
             time: None,
         }

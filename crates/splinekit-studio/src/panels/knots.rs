@@ -136,11 +136,16 @@ pub fn knot_style(ui: &mut egui::Ui, studio: &mut Studio, object: usize, axis: K
     let periodic = shape.get(axis.periodic).and_then(Value::as_bool).unwrap_or(false);
     let current = style_of(&knots, degree, periodic);
     let mut chosen = current;
-    egui::ComboBox::from_label(label).selected_text(current.map_or("custom", KnotStyle::name)).show_ui(ui, |ui| {
-        for s in KnotStyle::ALL {
-            ui.selectable_value(&mut chosen, Some(s), s.name());
-        }
-    });
+    let mut items = Vec::new();
+    let combo =
+        egui::ComboBox::from_label(label).selected_text(current.map_or("custom", KnotStyle::name)).show_ui(ui, |ui| {
+            for s in KnotStyle::ALL {
+                let item = ui.selectable_value(&mut chosen, Some(s), s.name());
+                items.push((format!("{label}: {}", s.name()), super::rect(&item)));
+            }
+        });
+    studio.widgets.push((label.to_string(), super::rect(&combo.response)));
+    studio.widgets.extend(items);
     let key = format!("/shape/{}", axis.knots);
     if let Some(style) = chosen.filter(|_| chosen != current) {
         let within = format!("objects[{object}].shape");

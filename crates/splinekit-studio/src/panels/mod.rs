@@ -18,3 +18,10 @@ pub use properties::properties_panel;
 
 /// Width of the side panels in points (fixed, so the 3-D view's place is predictable).
 pub const SIDE_WIDTH: f32 = 230.0;
+
+/// A widget's rectangle (egui points: left, top, right, bottom), for
+/// [`Studio::widgets`](crate::studio::Studio::widgets).
+pub(crate) fn rect(response: &egui::Response) -> [f32; 4] {
+    let r = response.rect;
+    [r.left(), r.top(), r.right(), r.bottom()]
+}

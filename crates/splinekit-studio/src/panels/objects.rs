@@ -21,7 +21,9 @@ pub fn objects_panel(ui: &mut egui::Ui, studio: &mut Studio) {
             if ui.checkbox(&mut visible, "").on_hover_text("visible").changed() {
                 write(studio, i, "/hidden", Some((!visible).into()));
             }
-            if ui.selectable_label(studio.selected_object == Some(i), format!("{i}: {ty}")).clicked() {
+            let label = ui.selectable_label(studio.selected_object == Some(i), format!("{i}: {ty}"));
+            studio.widgets.push((format!("object {i}"), super::rect(&label)));
+            if label.clicked() {
                 studio.selected_object = Some(i);
                 studio.selected = None;
             }

@@ -198,6 +198,10 @@ fn selected_handle(ui: &mut egui::Ui, studio: &mut Studio) {
     ui.separator();
     ui.label(format!("selected: {}", h.kind.field()));
     let pointer = h.kind.pointer();
+    if let Some(path) = h.kind.point_path() {
+        local_point(ui, studio, &h, &path, &pointer);
+        return;
+    }
     let coords = if h.kind.is_local() { format!("{pointer}/translate") } else { pointer.clone() };
     let n = h.dimension;
     let mut values: Vec<f64> =
@@ -213,4 +217,24 @@ fn selected_handle(ui: &mut egui::Ui, studio: &mut Studio) {
         write(studio, h.object, &coords, Some(values.into()));
     }
     error_label(ui, studio, &coords);
+}
+
+/// The rest-frame coordinates of a local Bézier's control point for exact entry: a change
+/// writes the local's whole `local_control_points` entry (the other points as they are).
+fn local_point(ui: &mut egui::Ui, studio: &mut Studio, h: &crate::handles::Handle, path: &[usize], pointer: &str) {
+    let Some((mut rest, _)) = crate::handles::local_points_of(&studio.scene, h, studio.time()) else { return };
+    let Some(point) = path.iter().try_fold(&mut rest, |v, &i| v.get_mut(i)) else { return };
+    let mut values: Vec<f64> = serde_json::from_value(point.clone()).unwrap_or_default();
+    let name = ui.label("point (in the local's rest frame)");
+    let mut changed = false;
+    ui.horizontal_wrapped(|ui| {
+        for x in values.iter_mut() {
+            changed |= ui.add(egui::DragValue::new(x).speed(0.01).max_decimals(3)).labelled_by(name.id).changed();
+        }
+    });
+    if changed {
+        *point = values.into();
+        write(studio, h.object, pointer, Some(rest));
+    }
+    error_label(ui, studio, pointer);
 }

@@ -26,7 +26,7 @@ use super::leibniz::blend_derivatives;
 use super::osculating_arc::OsculatingArc;
 use crate::Point;
 use crate::basis::{BFunction, Side};
-use crate::curve::{Curve, Interval, Reparametrized};
+use crate::curve::{BezierCurve, Curve, Interval, Reparametrized};
 use crate::error::{Error, Result};
 use crate::frame::Affine;
 
@@ -317,6 +317,82 @@ impl<const D: usize> BlendingSplineCurve<D> {
     /// The parameter interval [c_{k−1}, c_{k+1}] where local k takes part.
     pub fn local_support(&self, k: usize) -> Interval {
         self.knots.support(k)
+    }
+    /// The control points of local k's Bézier curve in its rest frame (before its
+    /// transform; the coordinates of the model, where the origin is the model's point at
+    /// the knot): the Hermite-fitted ones or those set by
+    /// [`Self::set_local_bezier_points`]. `None` for other kinds of locals.
+    pub fn local_bezier_points(&self, k: usize) -> Option<&[Point<D>]> {
+        match &self.locals.get(k)?.curve {
+            LocalCurve::Bezier { fitted, .. } => Some(fitted.curve().control_points()),
+            LocalCurve::General(_) => None,
+        }
+    }
+    /// The control points of local k's Bézier curve in the world: its frame applied,
+    /// o + T(P_i − o). `None` for other kinds of locals.
+    pub fn local_bezier_world_points(&self, k: usize) -> Option<&[Point<D>]> {
+        match &self.locals.get(k)?.curve {
+            LocalCurve::Bezier { world, .. } => Some(world.curve().control_points()),
+            LocalCurve::General(_) => None,
+        }
+    }
+    /// Replaces the control points of local k's Bézier curve (in its rest frame, as
+    /// [`Self::local_bezier_points`] gives them) by `points`, keeping its support, its
+    /// origin (the frame's centre stays the model's point at the knot) and its frame, as
+    /// GMlib's `PBezierCurve` edits its coefficients; returns the parameter ranges whose
+    /// points changed (the local's support, [`Self::affected_ranges`]). An error when
+    /// local k is not a Bézier curve or `points` are not d + 1 finite points.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use splinekit::Point;
+    /// use splinekit::blend::{BlendingCurveOptions, BlendingSplineCurve};
+    /// use splinekit::curve::Curve;
+    /// use splinekit::curve::model::Circle;
+    /// // Pull the middle control point of local 2 outwards: the curve moves on (c₁, c₃) only.
+    /// let circle = Arc::new(Circle::new(1.0).unwrap());
+    /// let mut c = BlendingSplineCurve::from_model(circle, 8, &BlendingCurveOptions::default()).unwrap();
+    /// let before = c.clone();
+    /// let mut p = c.local_bezier_points(2).unwrap().to_vec();
+    /// p[1] *= 1.5;
+    /// assert_eq!(c.set_local_bezier_points(2, p).unwrap(), vec![c.local_support(2)]);
+    /// assert!((c.point(c.centre(2)) - before.point(c.centre(2))).norm() > 1e-3);
+    /// assert_eq!(c.point(c.centre(4)), before.point(c.centre(4)));
+    /// ```
+    pub fn set_local_bezier_points(&mut self, k: usize, points: Vec<Point<D>>) -> Result<Vec<Interval>> {
+        let n = self.locals.len();
+        let local = self.locals.get_mut(k).ok_or_else(|| {
+            Error::invalid("local_control_points", format!("local curve {k} does not exist (there are {n})"))
+        })?;
+        let LocalCurve::Bezier { fitted, .. } = &local.curve else {
+            return Err(Error::invalid(
+                "local_control_points",
+                format!("local curve {k} is not a Bézier curve (only Bézier locals have control points)"),
+            ));
+        };
+        let d = fitted.curve().degree();
+        if points.len() != d + 1 {
+            return Err(Error::invalid(
+                "local_control_points",
+                format!("expected {} control points for local curve {k} of degree {d}, got {}", d + 1, points.len()),
+            ));
+        }
+        if let Some(i) = points.iter().position(|p| !p.iter().all(|x| x.is_finite())) {
+            return Err(Error::invalid(
+                "local_control_points",
+                format!("control point {i} of local curve {k} is not finite"),
+            ));
+        }
+        let bezier = BezierCurve::new(points)?;
+        let edited = fitted.map_curve(|_| bezier);
+        let transform = local.transform;
+        local.curve = LocalCurve::bezier(edited);
+        if transform != Affine::identity() {
+            local.set_transform(transform);
+        }
+        Ok(self.affected_ranges(k))
     }
     /// Sets the frame of local k (about its origin); returns the parameter ranges whose
     /// points changed ([`Self::affected_ranges`]).

@@ -264,6 +264,62 @@ impl<const D: usize> BlendingSplineSurface<D> {
             PatchShape::Shared(_) => None,
         }
     }
+    /// The control net of a Bézier patch in its rest frame (before its transform; the
+    /// model's coordinates, row-major, u first), with its degrees: the Hermite-fitted net
+    /// or the one set by [`Self::set_bezier_net`]. `None` for sub-surface patches.
+    pub fn bezier_rest_net(&self, k: usize, l: usize) -> Option<(&[Point<D>], (usize, usize))> {
+        match &self.patches.get(self.index(k, l))?.shape {
+            PatchShape::Bezier(p) => Some((&p.net, p.degrees)),
+            PatchShape::Shared(_) => None,
+        }
+    }
+    /// Replaces the net of Bézier patch (k, l) (in its rest frame, row-major, u first, as
+    /// [`Self::bezier_rest_net`] gives it), keeping its support, origin and frame, as
+    /// GMlib's `PBezierSurf` edits its coefficients; returns the rectangles whose points
+    /// changed ([`Self::affected_rects`]). An error when the patch is not a Bézier patch
+    /// or `net` is not (d_u + 1)(d_v + 1) finite points.
+    pub fn set_bezier_net(&mut self, k: usize, l: usize, net: Vec<Point<D>>) -> Result<Vec<ParamRect>> {
+        let (nu, nv) = self.local_count();
+        if k >= nu || l >= nv {
+            return Err(Error::invalid(
+                "local_control_points",
+                format!("patch [{k}, {l}] does not exist (there are {nu}×{nv})"),
+            ));
+        }
+        let i = self.index(k, l);
+        let patch = &mut self.patches[i];
+        let PatchShape::Bezier(p) = &mut patch.shape else {
+            return Err(Error::invalid(
+                "local_control_points",
+                format!("patch [{k}, {l}] is not a Bézier patch (only Bézier patches have control points)"),
+            ));
+        };
+        let (du, dv) = p.degrees;
+        if net.len() != (du + 1) * (dv + 1) {
+            return Err(Error::invalid(
+                "local_control_points",
+                format!(
+                    "expected {}×{} control points for patch [{k}, {l}] of degrees [{du}, {dv}], got {}",
+                    du + 1,
+                    dv + 1,
+                    net.len()
+                ),
+            ));
+        }
+        if let Some(j) = net.iter().position(|q| !q.iter().all(|x| x.is_finite())) {
+            return Err(Error::invalid(
+                "local_control_points",
+                format!("control point [{}, {}] of patch [{k}, {l}] is not finite", j / (dv + 1), j % (dv + 1)),
+            ));
+        }
+        p.world = net.clone();
+        p.net = net;
+        let transform = patch.transform;
+        if transform != Affine::identity() {
+            patch.set_transform(transform);
+        }
+        Ok(self.affected_rects(k, l))
+    }
     /// Sets the frame of patch (k, l) about its origin; returns the parameter rectangles
     /// whose points changed.
     pub fn set_transform(&mut self, k: usize, l: usize, transform: Affine<D>) -> Vec<ParamRect> {
