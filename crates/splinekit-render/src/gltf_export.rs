@@ -8,7 +8,7 @@ use splinekit_scene::DocumentError;
 use splinekit_scene::scenes::SceneDocument;
 
 use crate::compose::compose;
-use crate::scene::srgb_to_linear;
+use crate::scene::srgba_to_linear;
 
 fn f64x3(p: &[f32; 3]) -> [f64; 3] {
     p.map(|x| x as f64)
@@ -21,13 +21,12 @@ pub fn scene_to_gltf(scene: &SceneDocument, frames: usize, fps: f64) -> Result<G
     let first = compose(scene, animated.then_some(0.0), 1.0)?;
     let later: Vec<_> =
         (1..frames.max(1)).map(|k| compose(scene, Some(k as f64 / fps), 1.0)).collect::<Result<_, _>>()?;
-    let linear = |c: [f32; 4]| [srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2]), c[3]];
     let mut out = GltfScene::default();
     for (i, m) in first.meshes.iter().enumerate() {
         let mesh = TriangleMesh {
             positions: m.positions.iter().map(f64x3).collect(),
             normals: m.normals.iter().map(f64x3).collect(),
-            colors: m.colors.iter().map(|&c| linear(c)).collect(),
+            colors: m.colors.iter().copied().map(srgba_to_linear).collect(),
             triangles: m.triangles.clone(),
             ..Default::default()
         };
@@ -46,7 +45,7 @@ pub fn scene_to_gltf(scene: &SceneDocument, frames: usize, fps: f64) -> Result<G
         out.objects.push(GltfObject {
             name: format!("surface {i}"),
             geometry: GltfGeometry::Mesh(mesh),
-            color: linear(m.color),
+            color: srgba_to_linear(m.color),
             frames: frames_out,
         });
     }
@@ -69,7 +68,7 @@ pub fn scene_to_gltf(scene: &SceneDocument, frames: usize, fps: f64) -> Result<G
         out.objects.push(GltfObject {
             name: format!("line {i}"),
             geometry: GltfGeometry::LineStrip(pts),
-            color: linear(l.color),
+            color: srgba_to_linear(l.color),
             frames: frames_out,
         });
     }

@@ -4,7 +4,7 @@
 use wgpu::util::DeviceExt;
 
 use crate::image::Image;
-use crate::scene::{RenderScene, srgb_to_linear};
+use crate::scene::{RenderScene, srgba_to_linear};
 
 /// Why rendering failed.
 #[derive(Debug, thiserror::Error)]
@@ -83,9 +83,12 @@ impl RenderTarget {
     }
 }
 
-fn linear(c: [f32; 4]) -> [f32; 4] {
-    [srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2]), c[3]]
-}
+/// Floats of one mesh vertex in the vertex buffer: position, normal, linear colour.
+pub const MESH_VERTEX_FLOATS: usize = 10;
+/// Floats of one line-segment instance: its two ends, linear colour, width and padding.
+pub const SEGMENT_FLOATS: usize = 12;
+/// Floats of one point instance: position, size, linear colour.
+pub const POINT_FLOATS: usize = 8;
 
 fn bytes<T: Copy>(data: &[T]) -> &[u8] {
     // SAFETY: T is plain f32/u32 data (no padding, no pointers); the slice is read only.
@@ -209,11 +212,11 @@ impl Renderer {
             if m.triangles.is_empty() {
                 continue;
             }
-            let mut v = Vec::with_capacity(m.positions.len() * 10);
+            let mut v = Vec::with_capacity(m.positions.len() * MESH_VERTEX_FLOATS);
             for i in 0..m.positions.len() {
                 v.extend_from_slice(&m.positions[i]);
                 v.extend_from_slice(m.normals.get(i).unwrap_or(&[0.0; 3]));
-                v.extend_from_slice(&linear(*m.colors.get(i).unwrap_or(&m.color)));
+                v.extend_from_slice(&srgba_to_linear(*m.colors.get(i).unwrap_or(&m.color)));
             }
             let flat: Vec<u32> = m.triangles.iter().flatten().copied().collect();
             let (vb, ib) =
@@ -222,7 +225,7 @@ impl Renderer {
         }
         let mut segments: Vec<f32> = Vec::new();
         for l in &scene.lines {
-            let c = linear(l.color);
+            let c = srgba_to_linear(l.color);
             let n = l.points.len();
             let count = if l.closed && n > 2 { n } else { n.saturating_sub(1) };
             for i in 0..count {
@@ -237,13 +240,12 @@ impl Renderer {
         for p in &scene.points {
             points.extend_from_slice(&p.position);
             points.push(p.size);
-            points.extend_from_slice(&linear(p.color));
+            points.extend_from_slice(&srgba_to_linear(p.color));
         }
-        // 12 floats per segment, 8 per point.
         let instances = |data: &[f32], floats: usize| {
             (!data.is_empty()).then(|| (buffer(bytes(data), wgpu::BufferUsages::VERTEX), (data.len() / floats) as u32))
         };
-        Geometry { meshes, lines: instances(&segments, 12), points: instances(&points, 8) }
+        Geometry { meshes, lines: instances(&segments, SEGMENT_FLOATS), points: instances(&points, POINT_FLOATS) }
     }
 
     /// The textures and read-back buffer of a `width` × `height` frame; each side in
@@ -295,7 +297,7 @@ impl Renderer {
         geometry: &Geometry,
         scene: &RenderScene,
     ) {
-        let bg = linear(scene.background);
+        let bg = srgba_to_linear(scene.background);
         let (mv, dv, rv) = (
             targets.msaa.create_view(&Default::default()),
             targets.depth.create_view(&Default::default()),
@@ -423,9 +425,9 @@ impl Pipelines {
         let buffer_layout = |stride: u64, step_mode: wgpu::VertexStepMode, attributes| {
             [Some(wgpu::VertexBufferLayout { array_stride: stride, step_mode, attributes })]
         };
-        let mesh_layout = buffer_layout(40, wgpu::VertexStepMode::Vertex, &mesh_attrs[..]);
-        let line_layout = buffer_layout(48, wgpu::VertexStepMode::Instance, &line_attrs[..]);
-        let point_layout = buffer_layout(32, wgpu::VertexStepMode::Instance, &point_attrs[..]);
+        let mesh_layout = buffer_layout(4 * MESH_VERTEX_FLOATS as u64, wgpu::VertexStepMode::Vertex, &mesh_attrs[..]);
+        let line_layout = buffer_layout(4 * SEGMENT_FLOATS as u64, wgpu::VertexStepMode::Instance, &line_attrs[..]);
+        let point_layout = buffer_layout(4 * POINT_FLOATS as u64, wgpu::VertexStepMode::Instance, &point_attrs[..]);
         Pipelines {
             mesh: pipeline("vs_mesh", "fs_mesh", &mesh_layout, Depth { write: true, test: true }),
             line: pipeline("vs_line", "fs_flat", &line_layout, Depth { write: true, test: true }),

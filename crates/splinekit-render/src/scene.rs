@@ -127,3 +127,8 @@ impl RenderScene {
 pub fn srgb_to_linear(c: f32) -> f32 {
     if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
 }
+
+/// An sRGB colour with alpha → linear colour with the same alpha (what the shaders take).
+pub fn srgba_to_linear(c: [f32; 4]) -> [f32; 4] {
+    [srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2]), c[3]]
+}

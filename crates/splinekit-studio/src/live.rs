@@ -14,14 +14,8 @@ use splinekit::curve::CurveSamples;
 use splinekit::frame::Affine;
 use splinekit::surface::SurfaceGridSamples;
 use splinekit::{Interval, Point};
-use splinekit_render::scene::srgb_to_linear;
-
-const MESH_FLOATS: usize = 10;
-const SEGMENT_FLOATS: usize = 12;
-
-fn linear(c: [f32; 4]) -> [f32; 4] {
-    [srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2]), c[3]]
-}
+use splinekit_render::renderer::{MESH_VERTEX_FLOATS, SEGMENT_FLOATS};
+use splinekit_render::scene::srgba_to_linear;
 
 fn bytes(data: &[f32]) -> Vec<u8> {
     data.iter().flat_map(|x| x.to_le_bytes()).collect()
@@ -59,11 +53,11 @@ impl LiveSurface {
     ) -> Result<Self, splinekit::Error> {
         let samples = SurfaceGridSamples::uniform(&surface, nu, nv)?;
         let mut live = LiveSurface {
-            buffer: vertex_buffer(device, nu * nv * MESH_FLOATS),
+            buffer: vertex_buffer(device, nu * nv * MESH_VERTEX_FLOATS),
             surface,
             samples,
-            color: linear(color),
-            vertices: vec![0.0; nu * nv * MESH_FLOATS],
+            color: srgba_to_linear(color),
+            vertices: vec![0.0; nu * nv * MESH_VERTEX_FLOATS],
         };
         live.pack_and_upload(queue, 0..nu);
         Ok(live)
@@ -108,13 +102,13 @@ impl LiveSurface {
         let nv = self.samples.vs().len();
         let (points, normals) = (self.samples.points(), self.samples.normals());
         for i in rows.start * nv..rows.end * nv {
-            let v = &mut self.vertices[i * MESH_FLOATS..(i + 1) * MESH_FLOATS];
+            let v = &mut self.vertices[i * MESH_VERTEX_FLOATS..(i + 1) * MESH_VERTEX_FLOATS];
             let (p, n) = (&points[i], &normals[i]);
             v[..3].copy_from_slice(&[p.x as f32, p.y as f32, p.z as f32]);
             v[3..6].copy_from_slice(&[n.x as f32, n.y as f32, n.z as f32]);
             v[6..].copy_from_slice(&self.color);
         }
-        let range = rows.start * nv * MESH_FLOATS..rows.end * nv * MESH_FLOATS;
+        let range = rows.start * nv * MESH_VERTEX_FLOATS..rows.end * nv * MESH_VERTEX_FLOATS;
         if !range.is_empty() {
             queue.write_buffer(&self.buffer, (4 * range.start) as u64, &bytes(&self.vertices[range]));
         }
@@ -154,7 +148,7 @@ impl LiveCurve {
             buffer: vertex_buffer(device, count * SEGMENT_FLOATS),
             curve,
             samples,
-            color: linear(color),
+            color: srgba_to_linear(color),
             width,
             segments: vec![0.0; count * SEGMENT_FLOATS],
         };
