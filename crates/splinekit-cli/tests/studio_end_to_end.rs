@@ -59,6 +59,7 @@ fn wait_for_json(path: &Path, ready: impl Fn(&Value) -> bool, what: &str) -> Val
 /// The handle report once the layout has settled (the same for half a second).
 fn settled_report(path: &Path) -> Value {
     let has_handles = |v: &Value| v["handles"].as_array().is_some_and(|h| !h.is_empty());
+    let start = Instant::now();
     let mut last = wait_for_json(path, has_handles, "handles");
     loop {
         std::thread::sleep(Duration::from_millis(500));
@@ -66,6 +67,11 @@ fn settled_report(path: &Path) -> Value {
         if now == last {
             return now;
         }
+        assert!(
+            start.elapsed() < Duration::from_secs(90),
+            "the handle report kept changing for 90 s ({})",
+            path.display()
+        );
         last = now;
     }
 }
