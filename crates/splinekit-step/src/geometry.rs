@@ -135,13 +135,16 @@ pub enum Surface {
         /// Radius.
         radius: f64,
     },
-    /// `CONICAL_SURFACE`: origin + (r + v tan α)(cos u x + sin u y) + v z.
+    /// `CONICAL_SURFACE`: origin + (r + v tan α)(cos u x + sin u y) + v z, v the height
+    /// (ISO 10303-42; pcurves and trims in the file use it). OpenCASCADE parametrises its
+    /// cones along the generatrix, v_occ = v / cos α, and converts trims and pcurves
+    /// when it reads and writes.
     Cone {
         /// Placement.
         axes: Axes,
         /// Radius at v = 0.
         radius: f64,
-        /// Semi-angle α in radians, in (0, π/2).
+        /// Semi-angle α in radians, in (0, π/2) (OpenCASCADE raises smaller ones to 10⁻¹²).
         semi_angle: f64,
     },
     /// `SPHERICAL_SURFACE`: origin + r cos v (cos u x + sin u y) + r sin v z.
