@@ -44,6 +44,16 @@ CLOSED_FORMS = {
         "object 4 (trimmed)": (1.5 * 2.5 * (3.0 * 0.24 - math.pi * 0.01 * 0.6), [(1.5, 0.3), (3.5, 0.5)],
                                [(2.5, 0.4), (0.5, 0.4), (2.0, 0.7)]),
     },
+    # Whole closed surfaces bounded by their seams (no outer loop).
+    "natural_bounds": {
+        "object 1 (trimmed)": (2.0 * math.pi * 2.0 * 3.0, [(1.0, 0.5), (6.0, 0.1)], []),
+        "object 2 (trimmed)": (4.0 * math.pi * 1.5 ** 2, [(1.0, 0.0), (5.0, -1.2)], []),
+        "object 3 (trimmed)": (4.0 * math.pi ** 2 * 3.0 * 1.0, [(1.0, 1.0), (6.0, 6.0)], []),
+        # π r L, L = √(1.5² + 2²) = 2.5
+        "object 4 (trimmed)": (math.pi * 1.5 * 2.5, [(1.0, 0.5), (6.0, 0.1)], []),
+        # the cylinder without a circle of radius 0.2 about (2.5, 0.5)
+        "object 5 (trimmed)": (6.0 * (2.0 * math.pi - math.pi * 0.04), [(1.0, 0.5)], [(2.5, 0.5), (2.6, 0.45)]),
+    },
     "trimmed_surface": {
         "object 1 (trimmed)": (None, [(0.5, 0.2), (0.2, 0.5)], [(0.5, 0.45), (0.02, 0.5)]),
     },
