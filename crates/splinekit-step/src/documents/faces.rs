@@ -219,6 +219,12 @@ fn domain_rectangle(
         }
         edges.push(LoopEdge::Edge(Box::new(e)));
     }
+    if edges.is_empty() {
+        return Err(StepError::plain(format!(
+            "outer: the boundary of the domain [{}, {}] × [{}, {}] is a single point on the surface, no face bound",
+            du.start, du.end, dv.start, dv.end
+        )));
+    }
     Ok(FaceLoop { outer: true, orientation: true, edges })
 }
 
