@@ -680,6 +680,18 @@ fn periodic_angles(s: &Surface) -> (bool, bool) {
     }
 }
 
+/// The periodic angles along which a loop's pieces are aligned by whole turns: those of
+/// surfaces without poles (tori, cylinders). On a sphere, a cone or a revolution a gap of a
+/// whole turn in u is the degenerate edge at a pole or apex, which writers leave out and
+/// the loop bridges.
+fn seam_crossings(s: &Surface) -> (bool, bool) {
+    match s {
+        Surface::Torus { .. } => (true, true),
+        Surface::Cylinder { .. } => (true, false),
+        _ => (false, false),
+    }
+}
+
 /// The map of a face's (u, v) followed by the shift of a whole number of turns that brings
 /// its loops' lowest u (and v, around a torus' tube) into [0, 2π) where the document's
 /// angle is periodic: STEP writers place faces at any angle (OpenCASCADE's cones run over
@@ -711,7 +723,7 @@ fn face_doc(f: &Face) -> Result<Option<SurfaceDocument>> {
     let mut outer = None;
     let mut holes = Vec::new();
     for (i, l) in f.loops.iter().enumerate() {
-        let Some(doc) = join_loop(l, &f.seam_twins[i], map.as_ref(), periodic_angles(&f.surface))? else {
+        let Some(doc) = join_loop(l, &f.seam_twins[i], map.as_ref(), seam_crossings(&f.surface))? else {
             return Ok(None);
         };
         if Some(i) == f.outer || (f.outer.is_none() && i == 0) {
