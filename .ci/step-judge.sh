@@ -13,7 +13,7 @@ rm -rf "$out" && mkdir -p "$out"
 args=()
 # The examples quick to approximate in a debug build (the animated blending surfaces
 # with moved patches take minutes; they pass the same check in release builds).
-for f in tests/step/shapes/{exact_forms,trimmed_faces}.json examples/scenes/{trimmed_surface,bezier_surface,bspline_polygon,nurbs_torus,surface_of_revolution,torus_gaussian_curvature,coons_patch,rose_and_blending_copy,heart_transformed,seashell,mobius,klein_bottle,sweep_trefoil}.json; do
+for f in tests/step/shapes/{exact_forms,trimmed_faces,natural_bounds,seam_faces}.json examples/scenes/{trimmed_surface,bezier_surface,bspline_polygon,nurbs_torus,surface_of_revolution,torus_gaussian_curvature,coons_patch,rose_and_blending_copy,heart_transformed,seashell,mobius,klein_bottle,sweep_trefoil}.json; do
     n=$(basename "$f" .json)
     "$bin" convert "$f" -o "$out/$n.step" --report "$out/$n.report.json" 2>"$out/$n.log"
     args+=("$out/$n.step" "$out/$n.report.json")

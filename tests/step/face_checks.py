@@ -24,6 +24,11 @@ from OCP.GProp import GProp_GProps
 from OCP.TopAbs import TopAbs_IN, TopAbs_OUT
 from OCP.gp import gp_Pnt, gp_Pnt2d, gp_Vec
 
+def bessel_j1(x):
+    """J₁(x) = Σ (−1)^k (x/2)^(2k+1) / (k! (k+1)!), to full precision for |x| ≤ 2."""
+    return sum((-1) ** k * (x / 2) ** (2 * k + 1) / (math.factorial(k) * math.factorial(k + 1)) for k in range(20))
+
+
 # file stem → item name → (closed-form area, document (u, v) inside, document (u, v) outside)
 CLOSED_FORMS = {
     "trimmed_faces": {
@@ -38,6 +43,36 @@ CLOSED_FORMS = {
         # [1, 1.5] × [0, 0.3].
         "object 3 (trimmed)": (2.25 * (2.0 * (math.sin(0.9) + math.sin(0.6)) - 0.5 * math.sin(0.3)),
                                [(0.7, 0.0), (2.0, 0.5)], [(1.25, 0.15), (3.0, 0.0), (1.0, 1.2)]),
+        # Cone r = 1.5, h = 2 ((r (1 − v) cos u, r (1 − v) sin u, h v)): |S_u × S_v| =
+        # r L (1 − v), L = √(r² + h²) = 2.5; [1, 4] × [0.2, 0.6] without a circle of radius
+        # 0.1 about (2.5, 0.4): r L (3 ∫(1 − v) dv − π 0.1² (1 − 0.4)).
+        "object 4 (trimmed)": (1.5 * 2.5 * (3.0 * 0.24 - math.pi * 0.01 * 0.6), [(1.5, 0.3), (3.5, 0.5)],
+                               [(2.5, 0.4), (0.5, 0.4), (2.0, 0.7)]),
+    },
+    # Whole closed surfaces bounded by their seams (no outer loop).
+    "natural_bounds": {
+        "object 1 (trimmed)": (2.0 * math.pi * 2.0 * 3.0, [(1.0, 0.5), (6.0, 0.1)], []),
+        "object 2 (trimmed)": (4.0 * math.pi * 1.5 ** 2, [(1.0, 0.0), (5.0, -1.2)], []),
+        "object 3 (trimmed)": (4.0 * math.pi ** 2 * 3.0 * 1.0, [(1.0, 1.0), (6.0, 6.0)], []),
+        # π r L, L = √(1.5² + 2²) = 2.5
+        "object 4 (trimmed)": (math.pi * 1.5 * 2.5, [(1.0, 0.5), (6.0, 0.1)], []),
+        # the cylinder without a circle of radius 0.2 about (2.5, 0.5)
+        "object 5 (trimmed)": (6.0 * (2.0 * math.pi - math.pi * 0.04), [(1.0, 0.5)], [(2.5, 0.5), (2.6, 0.45)]),
+    },
+    # Loops across seams (tests/step/shapes/seam_faces.json). On the torus (R = 3, r = 1,
+    # |S_u × S_v| = r (R + r cos v)) a disc of radius ρ about (u₀, v₀) has the area
+    # r R π ρ² + r² cos v₀ · 2π ρ J₁(ρ).
+    "seam_faces": {
+        # about (1, 0): across the tube's seam v = 0
+        "object 1 (trimmed)": (3.0 * math.pi * 0.25 + 2.0 * math.pi * 0.5 * bessel_j1(0.5),
+                               [(1.0, 6.1), (1.2, 0.2)], [(1.0, 0.7), (1.0, 5.5)]),
+        # about (0, 2): across the seam u = 0
+        "object 2 (trimmed)": (3.0 * math.pi * 0.25 + math.cos(2.0) * 2.0 * math.pi * 0.5 * bessel_j1(0.5),
+                               [(6.1, 2.0), (0.2, 2.1)], [(5.6, 2.0), (0.0, 2.7)]),
+        # cylinder r = 2, h = 3: [−1, 1] × [0.2, 0.8] without a circle of radius 0.1 about
+        # (0, 0.5), both across the seam u = 0
+        "object 3 (trimmed)": (6.0 * (1.2 - math.pi * 0.01), [(6.0, 0.5), (0.5, 0.3)],
+                               [(0.0, 0.5), (6.2, 0.5), (1.5, 0.5)]),
     },
     "trimmed_surface": {
         "object 1 (trimmed)": (None, [(0.5, 0.2), (0.2, 0.5)], [(0.5, 0.45), (0.02, 0.5)]),
@@ -131,6 +166,24 @@ def region_area(jacobians, loops, rows=4000):
     return sum(w * j for w, j in zip(weights, jacobians(nodes)))
 
 
+def copies(item, u, v):
+    """(u, v) and, along each periodic direction of the surface (the report's periods in
+    STEP parameters), its copies one period to either side: loops may cross a seam."""
+    periods = item.get("periods") or [None, None]
+    shifts = [[0.0] + ([-t, t] if t else []) for t in periods]
+    return [(u + a, v + b) for a in shifts[0] for b in shifts[1]]
+
+
+def inside_somewhere(item, loops, u, v):
+    return any(inside(loops, *c) for c in copies(item, u, v))
+
+
+def occ_inside(item, face, u, v):
+    """OCC's classifier finds (u, v), or a copy of it a period away, IN the face (its
+    pcurves may lie across the seam, where the classifier does not wrap)."""
+    return any(state(face, *c) == TopAbs_IN for c in copies(item, u, v))
+
+
 def state(face, u, v):
     c = BRepClass_FaceClassifier()
     c.Perform(face, gp_Pnt2d(u, v), 1e-9)
@@ -161,17 +214,16 @@ def check_face(stem, item, face):
     wrong, checked = [], 0
     for uv, expected in [(step(p), True) for p in ins] + [(step(p), False) for p in outs]:
         checked += 1
-        if (state(face, *uv) == TopAbs_IN) != expected:
+        if occ_inside(item, face, *uv) != expected:
             wrong.append((uv, expected))
     span = max(max(p[0] for p in item["step_params"]) - min(p[0] for p in item["step_params"]),
                max(p[1] for p in item["step_params"]) - min(p[1] for p in item["step_params"]))
     for uv in map(tuple, item["step_params"]):
-        if distance_to_loops(loops, *uv) < 1e-3 * span:
+        if min(distance_to_loops(loops, *c) for c in copies(item, *uv)) < 1e-3 * span:
             continue
-        expected = inside(loops, *uv)
-        got = state(face, *uv)
+        expected = inside_somewhere(item, loops, *uv)
         checked += 1
-        if got != (TopAbs_IN if expected else TopAbs_OUT):
+        if occ_inside(item, face, *uv) != expected:
             wrong.append((uv, expected))
     out.append((not wrong, f"{stem}: {name}: BRepClass_FaceClassifier agrees with the document's region at "
                 f"{checked - len(wrong)} of {checked} parameters{'' if not wrong else f' (first wrong: {wrong[0]})'}"))

@@ -17,6 +17,7 @@ import sys
 
 from OCP.BRep import BRep_Tool
 from OCP.BRepAdaptor import BRepAdaptor_Curve
+from OCP.Geom import Geom_ConicalSurface, Geom_RectangularTrimmedSurface
 from OCP.IFSelect import IFSelect_RetDone
 from OCP.STEPControl import STEPControl_Reader
 from OCP.TopAbs import TopAbs_COMPOUND, TopAbs_EDGE, TopAbs_FACE, TopAbs_SHELL
@@ -41,6 +42,30 @@ def transferred(path):
     if not tp.CheckList(False).IsEmpty(True):
         raise RuntimeError(f"{path}: failed entities in the transfer")
     return r, ws.Model(), ws.TransferReader()
+
+
+def occ_v_scale(shape, kind):
+    """OpenCASCADE's v per STEP v of an item's surface: 1 / cos α on a cone (OCC's
+    Geom_ConicalSurface runs v along the generatrix where ISO 10303-42's CONICAL_SURFACE,
+    and so the file's trims and pcurves, use the height; StepToGeom converts them), else 1."""
+    if kind not in ("surface", "face"):
+        return 1.0
+    surf = BRep_Tool.Surface_s(TopoDS.Face(TopExp_Explorer(shape, TopAbs_FACE).Current()))
+    while isinstance(surf, Geom_RectangularTrimmedSurface):
+        surf = surf.BasisSurface()
+    return 1.0 / math.cos(surf.SemiAngle()) if isinstance(surf, Geom_ConicalSurface) else 1.0
+
+
+def in_occ_parameters(item, scale):
+    """The report item with its STEP v (samples, loops, map) in OpenCASCADE's."""
+    if scale == 1.0:
+        return item
+    item = dict(item)
+    item["step_params"] = [[u, v * scale] for u, v in item["step_params"]]
+    if "loops" in item:
+        item["loops"] = [[[u, v * scale] for u, v in l] for l in item["loops"]]
+    item["map"] = {"u": item["map"]["u"], "v": [c * scale for c in item["map"]["v"]]}
+    return item
 
 
 def evaluator(shape, kind):
@@ -90,6 +115,7 @@ def judge(path, report_path):
         if item["name"] not in named:
             results.append((False, f"{path}: {item['name']}: no transferred shape of that name"))
             continue
+        item = in_occ_parameters(item, occ_v_scale(named[item["name"]], item["kind"]))
         f = evaluator(named[item["name"]], item["kind"])
         worst = 0.0
         for (u, v), p in zip(item["step_params"], pts):

@@ -93,12 +93,15 @@ def shapes():
         ("cone_to_apex", BRepPrimAPI_MakeCone(PLACEMENT, 1.2, 0.0, 2.0).Shape()),
         ("torus", BRepPrimAPI_MakeTorus(PLACEMENT, 3.0, 1.0).Shape()),
         ("torus_part", BRepPrimAPI_MakeTorus(PLACEMENT, 3.0, 1.0, 0.3, 2.0, 4.5).Shape()),
+        # Around the tube from v = −0.6 to 0.9: the face's loops cross the seam v = 0.
+        ("torus_across_seam", BRepPrimAPI_MakeTorus(PLACEMENT, 3.0, 1.0, -0.6, 0.9, 4.5).Shape()),
     ]
 
 
 # The shapes whose faces' areas are compared (OCC's BRepGProp against splinekit's
 # integration of its imported document).
-AREA_CHECKED = ("sphere", "sphere_part", "cone", "cone_to_apex", "torus", "torus_part", "plate_with_hole")
+AREA_CHECKED = ("sphere", "sphere_part", "cone", "cone_to_apex", "torus", "torus_part", "torus_across_seam",
+                "plate_with_hole")
 
 PLACEMENT = gp_Ax2(gp_Pnt(1, -2, 0.5), gp_Dir(0, 0.6, 0.8), gp_Dir(1, 0, 0))
 

@@ -14,6 +14,8 @@
 //! The deviation max |S(t) − model(t)| is measured on 16 samples per piece (per direction
 //! on surfaces) and refined by golden-section search around the worst sample.
 
+use std::collections::HashMap;
+
 use splinekit::Point;
 use splinekit::basis::Side;
 use splinekit::curve::{BSplineCurve, Curve};
@@ -323,58 +325,112 @@ pub fn polynomial_surface(
     Ok(Fitted { spline: spline_surface_data(&spline), max_deviation })
 }
 
-fn hermite_cell(model: &dyn Surface<3>, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> Vec<Vec<Point<3>>> {
-    let mut corner = [[Point::<3>::zeros(); 9]; 4];
-    for (c, (u, v)) in [(u0, v0), (u0, v1), (u1, v0), (u1, v1)].into_iter().enumerate() {
-        model.eval_partials(u, v, 2, 2, &mut corner[c]);
-    }
-    // Hermite datum (i, j): u-side i / 3, u-order i % 3; v-side j / 3, v-order j % 3.
-    let datum = |i: usize, j: usize| corner[(i / 3) * 2 + j / 3][(i % 3) * 3 + j % 3];
-    let (hu, hv) = (hermite_to_bezier(u1 - u0), hermite_to_bezier(v1 - v0));
-    (0..6)
-        .map(|k| {
-            (0..6)
-                .map(|l| {
-                    let mut p = Point::<3>::zeros();
-                    for i in 0..6 {
-                        for j in 0..6 {
-                            let c = hu[k][i] * hv[l][j];
-                            if c != 0.0 {
-                                p += datum(i, j) * c;
-                            }
-                        }
-                    }
-                    p
-                })
-                .collect()
-        })
-        .collect()
+/// The model's partials ∂^{i+j}S, i, j ≤ 2, at the grid nodes met so far (bisection keeps
+/// every node, so each is evaluated once per export).
+struct NodeCache<'a> {
+    model: &'a dyn Surface<3>,
+    nodes: HashMap<(u64, u64), [Point<3>; 9]>,
 }
 
-/// Per-cell deviations on a break grid (cell (a, b) at `a · (bv.len() − 1) + b`) from 3 × 3
-/// samples each, to decide where to refine; the reported deviation is
-/// [`surface_deviation`]'s.
-fn cell_deviations(model: &dyn Surface<3>, spline: &BSplineSurface<3>, bu: &[f64], bv: &[f64]) -> Vec<f64> {
-    let dev = |u: f64, v: f64| (spline.point(u, v) - model.point(u, v)).norm();
-    let mut out = Vec::with_capacity((bu.len() - 1) * (bv.len() - 1));
-    for wu in bu.windows(2) {
-        for wv in bv.windows(2) {
-            let (hu, hv) = ((wu[1] - wu[0]) / 3.0, (wv[1] - wv[0]) / 3.0);
-            let mut worst: f64 = 0.0;
-            for i in 0..3 {
-                for j in 0..3 {
-                    worst = worst.max(dev(wu[0] + hu * (i as f64 + 0.5), wv[0] + hv * (j as f64 + 0.5)));
-                }
+impl NodeCache<'_> {
+    fn partials(&mut self, u: f64, v: f64) -> [Point<3>; 9] {
+        *self.nodes.entry((u.to_bits(), v.to_bits())).or_insert_with(|| {
+            let mut out = [Point::<3>::zeros(); 9];
+            self.model.eval_partials(u, v, 2, 2, &mut out);
+            out
+        })
+    }
+}
+
+/// The biquintic Bézier net of the Hermite patch on one cell from its corners' partials:
+/// H_u · D · H_vᵀ with D the 6 × 6 Hermite data (each row of H has at most three terms).
+fn hermite_cell(nodes: &mut NodeCache, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> [[Point<3>; 6]; 6] {
+    let corner = [nodes.partials(u0, v0), nodes.partials(u0, v1), nodes.partials(u1, v0), nodes.partials(u1, v1)];
+    // Hermite datum (i, j): u-side i / 3, u-order i % 3; v-side j / 3, v-order j % 3.
+    let datum = |i: usize, j: usize| {
+        let p = corner[(i / 3) * 2 + j / 3][(i % 3) * 3 + j % 3];
+        [p[0], p[1], p[2]]
+    };
+    let (hu, hv) = (hermite_to_bezier(u1 - u0), hermite_to_bezier(v1 - v0));
+    let combine = |row: &[f64; 6], at: &dyn Fn(usize) -> [f64; 3]| {
+        let mut p = [0.0; 3];
+        for (i, &c) in row.iter().enumerate() {
+            if c != 0.0 {
+                let q = at(i);
+                (0..3).for_each(|k| p[k] += c * q[k]);
             }
-            out.push(worst);
+        }
+        p
+    };
+    // T[i][l] = Σ_j D[i][j] H_v[l][j], then P[k][l] = Σ_i H_u[k][i] T[i][l].
+    let t: Vec<[[f64; 3]; 6]> = (0..6).map(|i| std::array::from_fn(|l| combine(&hv[l], &|j| datum(i, j)))).collect();
+    std::array::from_fn(|k| {
+        std::array::from_fn(|l| {
+            let p = combine(&hu[k], &|i| t[i][l]);
+            Point::<3>::new(p[0], p[1], p[2])
+        })
+    })
+}
+
+/// The quintic Bernstein polynomials at s ∈ [0, 1].
+fn bernstein5(s: f64) -> [f64; 6] {
+    let t = 1.0 - s;
+    let (s2, t2) = (s * s, t * t);
+    [t2 * t2 * t, 5.0 * s * t2 * t2, 10.0 * s2 * t2 * t, 10.0 * s2 * s * t2, 5.0 * s2 * s2 * t, s2 * s2 * s]
+}
+
+/// The Bézier patch at (s, t) ∈ [0, 1]².
+fn bezier_point(net: &[[Point<3>; 6]; 6], s: f64, t: f64) -> Point<3> {
+    let (bu, bv) = (bernstein5(s), bernstein5(t));
+    let mut p = [0.0; 3];
+    for (row, cu) in net.iter().zip(bu) {
+        for (c, cv) in row.iter().zip(bv) {
+            let w = cu * cv;
+            p[0] += w * c[0];
+            p[1] += w * c[1];
+            p[2] += w * c[2];
         }
     }
-    out
+    Point::<3>::new(p[0], p[1], p[2])
 }
+
+/// Samples per direction of a cell's deviation check (at the midpoints of equal parts).
+const CELL_SAMPLES: usize = 4;
+
+/// max |patch − model| of one cell at [`CELL_SAMPLES`]² midpoints, and where.
+fn cell_deviation(
+    model: &dyn Surface<3>,
+    net: &[[Point<3>; 6]; 6],
+    (u0, u1): (f64, f64),
+    (v0, v1): (f64, f64),
+) -> (f64, (f64, f64)) {
+    let mut worst = (0.0, (u0, v0));
+    for i in 0..CELL_SAMPLES {
+        for j in 0..CELL_SAMPLES {
+            let (s, t) = ((i as f64 + 0.5) / CELL_SAMPLES as f64, (j as f64 + 0.5) / CELL_SAMPLES as f64);
+            let (u, v) = (u0 + (u1 - u0) * s, v0 + (v1 - v0) * t);
+            let d = (bezier_point(net, s, t) - model.point(u, v)).norm();
+            if d > worst.0 {
+                worst = (d, (u, v));
+            }
+        }
+    }
+    worst
+}
+
+/// A cell's Bézier net and its sampled deviation (with where it is reached).
+type CellFit = ([[Point<3>; 6]; 6], f64, (f64, f64));
 
 /// Biquintic Hermite approximation within `tolerance` (absolute) on a tensor grid of
 /// breaks, starting from `breaks_u` × `breaks_v` (e.g. a blending surface's knots) and
-/// bisecting every u-interval and v-interval that holds a cell above the tolerance.
+/// bisecting the u-intervals and v-intervals of the cells above the tolerance (across the
+/// direction that helps, or both).
+///
+/// A cell's patch depends on its corners alone (C⁰ joins of Bézier patches), so the
+/// model's partials are evaluated once per grid node and each cell's patch and deviation
+/// once per cell: a bisection costs only the cells it creates. A cell's deviation is its
+/// largest at 4 × 4 samples; when every cell passes, a finer look (9 × 9 points around the
+/// worst sample, on the assembled spline) decides, and a failure there bisects that cell.
 pub fn hermite_surface(
     model: &dyn Surface<3>,
     breaks_u: &[f64],
@@ -382,36 +438,73 @@ pub fn hermite_surface(
     tolerance: f64,
 ) -> Result<Fitted<SplineSurface>> {
     let (mut bu, mut bv) = (breaks_u.to_vec(), breaks_v.to_vec());
+    let mut nodes = NodeCache { model, nodes: HashMap::new() };
+    let mut fits: HashMap<[u64; 4], CellFit> = HashMap::new();
+    let mut fit = |nodes: &mut NodeCache, (u0, u1): (f64, f64), (v0, v1): (f64, f64)| -> CellFit {
+        *fits.entry([u0.to_bits(), u1.to_bits(), v0.to_bits(), v1.to_bits()]).or_insert_with(|| {
+            let net = hermite_cell(nodes, (u0, u1), (v0, v1));
+            let (d, at) = cell_deviation(model, &net, (u0, u1), (v0, v1));
+            (net, d, at)
+        })
+    };
     loop {
-        let mut cells = Vec::with_capacity((bu.len() - 1) * (bv.len() - 1));
+        let (nu, nv) = (bu.len() - 1, bv.len() - 1);
+        let mut devs = Vec::with_capacity(nu * nv);
+        let mut worst = (0.0, (bu[0], bv[0]));
         for wu in bu.windows(2) {
             for wv in bv.windows(2) {
-                cells.push(hermite_cell(model, (wu[0], wu[1]), (wv[0], wv[1])));
+                let (_, d, at) = fit(&mut nodes, (wu[0], wu[1]), (wv[0], wv[1]));
+                devs.push(d);
+                if d > worst.0 {
+                    worst = (d, at);
+                }
             }
         }
-        let spline = assemble_surface(&bu, &bv, (5, 5), &cells)?;
-        let devs = cell_deviations(model, &spline, &bu, &bv);
-        let mut worst = devs.iter().copied().fold(0.0, f64::max);
-        // Where the cells' coarse samples all pass but the finer look does not, the cell
-        // holding the finer look's worst point is the one to bisect (else the grid would
-        // not change and the loop would never end).
+        // Where the cells' samples all pass but the finer look does not, the cell holding
+        // the finer look's worst point is the one to bisect (else the grid would not
+        // change and the loop would never end).
         let mut missed = None;
-        if worst <= tolerance {
-            let (fine, at) = worst_deviation(model, &spline, &bu, &bv);
-            worst = fine;
-            if worst <= tolerance {
-                return Ok(Fitted { spline: spline_surface_data(&spline), max_deviation: worst });
+        let mut reached = worst.0;
+        if worst.0 <= tolerance {
+            let cells: Vec<Vec<Vec<Point<3>>>> = bu
+                .windows(2)
+                .flat_map(|wu| bv.windows(2).map(move |wv| (wu, wv)))
+                .map(|(wu, wv)| {
+                    fit(&mut nodes, (wu[0], wu[1]), (wv[0], wv[1])).0.iter().map(|row| row.to_vec()).collect()
+                })
+                .collect();
+            let spline = assemble_surface(&bu, &bv, (5, 5), &cells)?;
+            let (fine, at) = finer_look(model, &spline, &bu, &bv, worst);
+            reached = fine;
+            if fine <= tolerance {
+                return Ok(Fitted { spline: spline_surface_data(&spline), max_deviation: fine });
             }
             missed = Some(at);
         }
         if bu.len().max(bv.len()) > MAX_CELLS {
             return Err(StepError::plain(format!(
-                "tolerance: cannot approximate within {tolerance:e} using {MAX_CELLS} patches per direction (reached {worst:e})"
+                "tolerance: cannot approximate within {tolerance:e} using {MAX_CELLS} patches per direction (reached {reached:e})"
             )));
         }
-        let nv = bv.len() - 1;
-        let mut bad_u: Vec<bool> = (0..bu.len() - 1).map(|a| (0..nv).any(|b| devs[a * nv + b] > tolerance)).collect();
-        let mut bad_v: Vec<bool> = (0..nv).map(|b| (0..bu.len() - 1).any(|a| devs[a * nv + b] > tolerance)).collect();
+        // Each failing cell is bisected across the direction(s) that matter: the halves'
+        // patches across u and across v (from the nodes at the midpoints, which the
+        // bisection needs anyway) are compared with the cell's at its samples, and a
+        // direction whose halves change the patch less than a quarter as much as the
+        // other's is left alone (near a singular edge of the model only the direction
+        // across it converges; bisecting the other would multiply the cells for nothing).
+        let (mut bad_u, mut bad_v) = (vec![false; nu], vec![false; nv]);
+        for a in 0..nu {
+            for b in 0..nv {
+                if devs[a * nv + b] <= tolerance {
+                    continue;
+                }
+                let (u, v) = ((bu[a], bu[a + 1]), (bv[b], bv[b + 1]));
+                let net = fit(&mut nodes, u, v).0;
+                let (change_u, change_v) = split_changes(&mut nodes, &net, u, v);
+                bad_u[a] |= 4.0 * change_u >= change_v;
+                bad_v[b] |= 4.0 * change_v >= change_u;
+            }
+        }
         if let Some((u, v)) = missed {
             mark_interval(&bu, u, &mut bad_u);
             mark_interval(&bv, v, &mut bad_v);
@@ -419,6 +512,59 @@ pub fn hermite_surface(
         bu = bisect(&bu, &bad_u);
         bv = bisect(&bv, &bad_v);
     }
+}
+
+/// How much bisecting a cell across u, and across v, changes its patch: the largest
+/// distance at the cell's samples between its patch and its halves' patches.
+fn split_changes(
+    nodes: &mut NodeCache,
+    net: &[[Point<3>; 6]; 6],
+    (u0, u1): (f64, f64),
+    (v0, v1): (f64, f64),
+) -> (f64, f64) {
+    let (um, vm) = (0.5 * (u0 + u1), 0.5 * (v0 + v1));
+    let halves_u = [hermite_cell(nodes, (u0, um), (v0, v1)), hermite_cell(nodes, (um, u1), (v0, v1))];
+    let halves_v = [hermite_cell(nodes, (u0, u1), (v0, vm)), hermite_cell(nodes, (u0, u1), (vm, v1))];
+    let (mut change_u, mut change_v) = (0.0_f64, 0.0_f64);
+    for i in 0..CELL_SAMPLES {
+        for j in 0..CELL_SAMPLES {
+            let (s, t) = ((i as f64 + 0.5) / CELL_SAMPLES as f64, (j as f64 + 0.5) / CELL_SAMPLES as f64);
+            let p = bezier_point(net, s, t);
+            let half = |x: f64| if x < 0.5 { (0, 2.0 * x) } else { (1, 2.0 * x - 1.0) };
+            let ((ku, su), (kv, tv)) = (half(s), half(t));
+            change_u = change_u.max((bezier_point(&halves_u[ku], su, t) - p).norm());
+            change_v = change_v.max((bezier_point(&halves_v[kv], s, tv) - p).norm());
+        }
+    }
+    (change_u, change_v)
+}
+
+/// The largest deviation at 9 × 9 points around the worst cell sample `(d, (u, v))` of
+/// the cells (a quarter cell apart, in the cells around it), and where.
+fn finer_look(
+    model: &dyn Surface<3>,
+    spline: &BSplineSurface<3>,
+    bu: &[f64],
+    bv: &[f64],
+    (d, (u0, v0)): (f64, (f64, f64)),
+) -> (f64, (f64, f64)) {
+    let width = |b: &[f64], t: f64| {
+        let k = b[1..b.len() - 1].partition_point(|&x| x <= t);
+        (b[k + 1] - b[k]) / CELL_SAMPLES as f64
+    };
+    let (hu, hv) = (width(bu, u0), width(bv, v0));
+    let mut worst = (d, (u0, v0));
+    for i in -4..=4 {
+        for j in -4..=4 {
+            let u = (u0 + hu * i as f64 / 4.0).clamp(bu[0], bu[bu.len() - 1]);
+            let v = (v0 + hv * j as f64 / 4.0).clamp(bv[0], bv[bv.len() - 1]);
+            let d = (spline.point(u, v) - model.point(u, v)).norm();
+            if d > worst.0 {
+                worst = (d, (u, v));
+            }
+        }
+    }
+    worst
 }
 
 /// The breaks with the midpoint of every marked interval added.
@@ -446,10 +592,11 @@ mod tests {
     use splinekit::surface::model::Torus;
 
     /// z = h·g(u)·g(v), g(x) = exp(−(x − c)²/w²): a bump narrow enough to hide between the
-    /// corners and the 3 × 3 samples of the first cell, so only the finer look sees it.
+    /// corners and the 4 × 4 samples of the first cell (at 1/8, 3/8, …), a sixteenth away
+    /// from the nearest, so only the finer look sees it.
     struct Bump;
     impl Bump {
-        const C: f64 = 0.375;
+        const C: f64 = 0.3125;
         const W: f64 = 0.02;
         /// g, g′, g″ at x.
         fn g(x: f64) -> [f64; 3] {

@@ -7,7 +7,7 @@
 //! (B-splines, trimmed curves, rectangular trimmed surfaces), as geometric sets require.
 
 use crate::geometry::{
-    Axes, Curve, FaceGeometry, Geometry, Item, P3, SplineCurve, SplineSurface, Surface, knot_multiplicities,
+    Axes, Curve, FaceGeometry, Geometry, Item, LoopEdge, P3, SplineCurve, SplineSurface, Surface, knot_multiplicities,
 };
 use crate::part21::writer::{HeaderInfo, Part21Writer};
 use crate::part21::{Param, Record};
@@ -234,20 +234,33 @@ impl GeometryWriter<'_> {
         let mut bounds = Vec::with_capacity(f.loops.len());
         for l in &f.loops {
             let mut oriented = Vec::with_capacity(l.edges.len());
-            for edge in &l.edges {
-                let c3 = self.curve(&edge.curve, "");
-                let c2 = self.curve(&edge.pcurve, "");
-                let rep = self.w.add("DEFINITIONAL_REPRESENTATION", vec![s(""), Param::List(vec![r(c2)]), r(ctx)]);
-                let pcurve = self.w.add("PCURVE", vec![s(""), r(surface), r(rep)]);
-                let geometry =
-                    self.w.add("SURFACE_CURVE", vec![s(""), r(c3), Param::List(vec![r(pcurve)]), e("PCURVE_S1")]);
-                let ec = self.w.add(
-                    "EDGE_CURVE",
-                    vec![s(""), r(vertices[edge.start]), r(vertices[edge.end]), r(geometry), flag(true)],
-                );
+            let mut written = Vec::with_capacity(l.edges.len());
+            for use_ in &l.edges {
+                let (ec, forward) = match use_ {
+                    LoopEdge::Edge(edge) => {
+                        let c3 = self.curve(&edge.curve, "");
+                        let mut pcurves = Vec::with_capacity(2);
+                        for pc in std::iter::once(&edge.pcurve).chain(&edge.seam) {
+                            let c2 = self.curve(pc, "");
+                            let rep = self
+                                .w
+                                .add("DEFINITIONAL_REPRESENTATION", vec![s(""), Param::List(vec![r(c2)]), r(ctx)]);
+                            pcurves.push(r(self.w.add("PCURVE", vec![s(""), r(surface), r(rep)])));
+                        }
+                        let kind = if edge.seam.is_some() { "SEAM_CURVE" } else { "SURFACE_CURVE" };
+                        let geometry = self.w.add(kind, vec![s(""), r(c3), Param::List(pcurves), e("PCURVE_S1")]);
+                        let ec = self.w.add(
+                            "EDGE_CURVE",
+                            vec![s(""), r(vertices[edge.start]), r(vertices[edge.end]), r(geometry), flag(true)],
+                        );
+                        (ec, true)
+                    }
+                    LoopEdge::Again(k) => (written[*k], false),
+                };
+                written.push(ec);
                 oriented.push(r(self
                     .w
-                    .add("ORIENTED_EDGE", vec![s(""), Param::Derived, Param::Derived, r(ec), flag(true)])));
+                    .add("ORIENTED_EDGE", vec![s(""), Param::Derived, Param::Derived, r(ec), flag(forward)])));
             }
             let lp = self.w.add("EDGE_LOOP", vec![s(""), Param::List(oriented)]);
             let kind = if l.outer { "FACE_OUTER_BOUND" } else { "FACE_BOUND" };

@@ -135,13 +135,16 @@ pub enum Surface {
         /// Radius.
         radius: f64,
     },
-    /// `CONICAL_SURFACE`: origin + (r + v tan α)(cos u x + sin u y) + v z.
+    /// `CONICAL_SURFACE`: origin + (r + v tan α)(cos u x + sin u y) + v z, v the height
+    /// (ISO 10303-42; pcurves and trims in the file use it). OpenCASCADE parametrises its
+    /// cones along the generatrix, v_occ = v / cos α, and converts trims and pcurves
+    /// when it reads and writes.
     Cone {
         /// Placement.
         axes: Axes,
         /// Radius at v = 0.
         radius: f64,
-        /// Semi-angle α in radians, in (0, π/2).
+        /// Semi-angle α in radians, in (0, π/2) (OpenCASCADE raises smaller ones to 10⁻¹²).
         semi_angle: f64,
     },
     /// `SPHERICAL_SURFACE`: origin + r cos v (cos u x + sin u y) + r sin v z.
@@ -202,9 +205,22 @@ pub struct FaceEdge {
     pub curve: Curve,
     /// The 2-D curve in the surface's parameter plane, same parameter as `curve`.
     pub pcurve: Curve,
+    /// For a seam of a closed surface (`SEAM_CURVE`): the edge's other pcurve, on the far
+    /// side of the periodic domain, same parameter; the loop uses the edge again reversed
+    /// ([`LoopEdge::Again`]) along it.
+    pub seam: Option<Curve>,
 }
 
-/// One bound of a face: edges end to end, each used forwards, forming a closed loop.
+/// One use of an edge in a loop.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LoopEdge {
+    /// An edge used forwards (from its start to its end vertex).
+    Edge(Box<FaceEdge>),
+    /// The loop's edge at this index (a seam) used again, reversed, along its second pcurve.
+    Again(usize),
+}
+
+/// One bound of a face: edges end to end forming a closed loop.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FaceLoop {
     /// `FACE_OUTER_BOUND` (else `FACE_BOUND`, a hole).
@@ -213,7 +229,7 @@ pub struct FaceLoop {
     /// face's material on their left in (u, v) (outer counter-clockwise, holes clockwise).
     pub orientation: bool,
     /// The edges in order.
-    pub edges: Vec<FaceEdge>,
+    pub edges: Vec<LoopEdge>,
 }
 
 /// `ADVANCED_FACE`: a region of a surface bounded by loops of edges.

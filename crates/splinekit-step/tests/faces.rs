@@ -95,10 +95,33 @@ fn bounds_carry_the_orientation_that_puts_the_material_on_the_left() {
     assert!(lines_with(&text, "GEOMETRIC_SET").is_empty());
 }
 
+/// Closed surfaces without an outer loop leave bounded by their natural bounds, as CAD
+/// systems write whole surfaces: seams (`SEAM_CURVE`, one edge used both ways) where the
+/// domain closes, no edge where a side is one point. (OpenCASCADE finds these faces valid
+/// with the closed-form areas: tests/step/shapes/natural_bounds.json.)
 #[test]
-fn a_closed_surface_without_an_outer_loop_is_refused_naming_the_field() {
-    let json = r#"{"type":"trimmed","surface":{"type":"cylinder"},"holes":[{"type":"circle","radius":0.1}]}"#;
-    let doc = SceneOrShape::from_json(json).unwrap();
-    let e = export_document(&doc, "t", 1e-6, &HeaderInfo::default()).unwrap_err().to_string();
-    assert!(e.contains("outer") && e.contains("6.28"), "{e}");
+fn closed_surfaces_without_an_outer_loop_are_bounded_by_seams() {
+    // (surface, edge curves, seam curves, oriented edges, vertices)
+    for (surface, edges, seams, uses, vertices) in [
+        // bottom circle, seam, top circle; the seam used up and down
+        (r#"{"type":"cylinder"}"#, 3, 1, 4, 2),
+        // one meridian between the poles, used up and down; the poles have no edge
+        (r#"{"type":"sphere"}"#, 1, 1, 2, 2),
+        // two seams on one vertex, each used both ways
+        (r#"{"type":"torus"}"#, 2, 2, 4, 1),
+        // the base circle and the seam up to the apex and back
+        (r#"{"type":"cone","radius":1,"height":2}"#, 2, 1, 3, 2),
+    ] {
+        let text = export(&format!(r#"{{"type":"trimmed","surface":{surface}}}"#));
+        let count = |entity: &str| lines_with(&text, entity).len();
+        assert_eq!(
+            (count("EDGE_CURVE"), count("SEAM_CURVE"), count("ORIENTED_EDGE"), count("VERTEX_POINT")),
+            (edges, seams, uses, vertices),
+            "{surface}"
+        );
+        // A seam's two uses: the same edge forwards and backwards.
+        let seam_edges: Vec<&str> = lines_with(&text, "ORIENTED_EDGE");
+        let forwards = seam_edges.iter().filter(|l| l.ends_with(",.T.);")).count();
+        assert_eq!(forwards, edges, "{surface}: every edge used forwards once");
+    }
 }

@@ -53,3 +53,31 @@ fn placed_spheres_and_tori_come_back_placed() {
         assert_eq!(round_trip(json), original, "{json}");
     }
 }
+
+/// A cone leaves as CONICAL_SURFACE (not the revolution of its generatrix) and comes back
+/// as a surface on the same cone: every point of the imported document at a grid of its
+/// parameters satisfies √(x² + y²) = r (1 − z/h), 0 ≤ z ≤ h, and the grid reaches the base
+/// and the apex. (OpenCASCADE evaluates the exported entity at the document's parameters
+/// in tests/step/ocp_judge.py.)
+#[test]
+fn cones_leave_as_conical_surfaces_on_the_same_cone() {
+    let (r, h) = (1.5, 2.0);
+    let json = format!(r#"{{"type":"cone","radius":{r},"height":{h}}}"#);
+    let doc = SceneOrShape::from_json(&json).unwrap();
+    let (text, _) = export_document(&doc, "t", 1e-6, &HeaderInfo::default()).unwrap();
+    assert!(text.contains("=CONICAL_SURFACE("), "{text}");
+    assert!(!text.contains("SURFACE_OF_REVOLUTION"), "{text}");
+    let ShapeDocument::Surface(back) = round_trip(&json) else { panic!("not a surface") };
+    let s = back.build_in::<3>().unwrap();
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    let (mut lowest, mut highest) = (f64::INFINITY, f64::NEG_INFINITY);
+    for i in 0..=20 {
+        for j in 0..=20 {
+            let p = s.point(du.lerp(i as f64 / 20.0), dv.lerp(j as f64 / 20.0));
+            let off = (p[0].hypot(p[1]) - r * (1.0 - p[2] / h)).abs();
+            assert!(off < 1e-12 && (-1e-12..=h + 1e-12).contains(&p[2]), "{p:?} is {off:e} off the cone");
+            (lowest, highest) = (lowest.min(p[2]), highest.max(p[2]));
+        }
+    }
+    assert!(lowest.abs() < 1e-12 && (highest - h).abs() < 1e-12, "z over [{lowest}, {highest}]");
+}

@@ -138,6 +138,14 @@ fn json_to_step(args: &ConvertArgs) -> Result<()> {
                 item["loops"] =
                     json!(loops.iter().map(|l| l.iter().map(|p| [p.0, p.1]).collect::<Vec<_>>()).collect::<Vec<_>>());
                 item["has_outer"] = json!(t.outer.is_some());
+                // The periods of a closed surface in STEP parameters: loops may cross its
+                // seams, and a point is inside when a copy one period away is.
+                let surface = t.surface.build_in::<3>().map_err(|e| anyhow!("{e}"))?;
+                let period = |closed: bool, scale: f64, length: f64| closed.then_some((scale * length).abs());
+                item["periods"] = json!([
+                    period(surface.is_closed_u(), e.map.u.0, surface.domain_u().length()),
+                    period(surface.is_closed_v(), e.map.v.0, surface.domain_v().length()),
+                ]);
             }
             items.push(item);
         }

@@ -8,8 +8,9 @@
 //! (v' = |direction| v); a plane with orthogonal axes U, V is `PLANE` with u' = |U| u,
 //! v' = |V| v (a plane with skew axes is its exact bilinear B-spline instead);
 //! a cylinder of height h has v' = h v. A `placed` document is its surface's export moved
-//! rigidly into the placement (see [`crate::placement`]). A cone is the exact `SURFACE_OF_REVOLUTION` of its
-//! straight generatrix (parameters kept). 2-D documents lie in the plane z = 0.
+//! rigidly into the placement (see [`crate::placement`]). A cone of radius r and height h
+//! is `CONICAL_SURFACE` placed at its base with its axis down, u' = 2π − u, v' = −h v (see
+//! `cone_surface`). 2-D documents lie in the plane z = 0.
 
 use splinekit::Point;
 use splinekit::basis::Side;
@@ -366,7 +367,7 @@ fn elementary_surface(doc: &SurfaceDocument) -> Result<Option<(Surface, ParamMap
             trimmed(Surface::Cylinder { axes: Axes::WORLD, radius: d.radius }, (0.0, TAU), (0.0, d.height)),
             ParamMap { u: (1.0, 0.0), v: (d.height, 0.0) },
         ),
-        SurfaceDocument::Cone(d) => (cone_surface(d.radius, d.height), id),
+        SurfaceDocument::Cone(d) => cone_surface(d.radius, d.height),
         SurfaceDocument::Sphere(d) => {
             (trimmed(Surface::Sphere { axes: Axes::WORLD, radius: d.radius }, (0.0, TAU), (-FRAC_PI_2, FRAC_PI_2)), id)
         }
@@ -399,19 +400,15 @@ fn plane_surface(origin: &[f64], u_axis: &[f64], v_axis: &[f64]) -> Result<(Surf
     }
 }
 
-/// A cone as the exact revolution of its degree-1 B-spline generatrix, parameters kept:
-/// OpenCASCADE reads CONICAL_SURFACE's v along the generatrix (slant length) where
-/// ISO 10303-42 measures height, so the entity would not round-trip.
-fn cone_surface(radius: f64, height: f64) -> Surface {
-    let generatrix = SplineCurve {
-        degree: 1,
-        knots: vec![0.0, 0.0, 1.0, 1.0],
-        points: vec![vec![radius, 0.0, 0.0], vec![0.0, 0.0, height]],
-        weights: None,
-        closed: false,
-    };
-    let rev = Surface::Revolution { profile: Curve::Spline(generatrix), axis_origin: [0.0; 3], axis: [0.0, 0.0, 1.0] };
-    trimmed(rev, (0.0, TAU), (0.0, 1.0))
+/// A cone (r (1 − v) cos u, r (1 − v) sin u, h v) as `CONICAL_SURFACE` of radius r and
+/// semi-angle α = atan(r/h) > 0 (OpenCASCADE raises a negative one to 10⁻¹²), so that the
+/// radius grows along its axis: the placement at the base with z = −Z, x = X, y = −Y,
+/// where the point at u′, v′ (v′ the height along z, ISO 10303-42's parameter) is the
+/// document's at u = 2π − u′, v = −v′/h (u′ over [0, 2π] as OpenCASCADE keeps it).
+fn cone_surface(radius: f64, height: f64) -> (Surface, ParamMap) {
+    let axes = Axes { origin: [0.0; 3], z: [0.0, 0.0, -1.0], x: [1.0, 0.0, 0.0] };
+    let cone = Surface::Cone { axes, radius, semi_angle: (radius / height).atan() };
+    (trimmed(cone, (0.0, TAU), (-height, 0.0)), ParamMap { u: (-1.0, TAU), v: (-height, 0.0) })
 }
 
 /// Revolutions and extrusions: the STEP swept surface of their profile's export (exact when

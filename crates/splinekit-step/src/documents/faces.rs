@@ -4,8 +4,8 @@
 //! for B-spline, NURBS, Bézier, line and conic loops, else a quintic Hermite B-spline within
 //! the tolerance in (u, v)), its 3-D curve the quintic Hermite B-spline of S(c(t)) over the
 //! same parameter t within the surface's tolerance, its one vertex S(c(t₀)) = S(c(t₁)).
-//! Without an outer loop the face is bounded by the domain's rectangle (four edges), which
-//! is refused for surfaces closed in u or v (the rectangle's sides would be a seam).
+//! Without an outer loop the face is bounded by the domain's rectangle: its natural bounds,
+//! seams on closed surfaces, no edge where a side is one point (see `domain_rectangle`).
 //! Bounds carry the orientation flag that puts the material on the left in (u, v): outer
 //! loops counter-clockwise, holes clockwise, by the sign of the loop's area
 //! ½∮(u dv − v du).
@@ -21,7 +21,7 @@ use std::f64::consts::TAU;
 use super::export::{Exported, Form, ParamMap, export_curve, export_surface, kernel_surface};
 use crate::approximate::hermite_curve;
 use crate::error::{Result, StepError};
-use crate::geometry::{Curve, FaceEdge, FaceGeometry, FaceLoop, Geometry, P3, SplineCurve, Surface};
+use crate::geometry::{Curve, FaceEdge, FaceGeometry, FaceLoop, Geometry, LoopEdge, P3, SplineCurve, Surface};
 
 /// Largest distance between an edge's 3-D curve and S(pcurve), relative to the size of
 /// the surface (and never more than the surface's own tolerance).
@@ -135,10 +135,27 @@ fn edge(
 ) -> Result<FaceEdge> {
     let on = OnSurface { surface, curve: c };
     let fitted = hermite_curve(&on, tolerance).map_err(|e| StepError::plain(format!("{field}: {}", e.message)))?;
-    Ok(FaceEdge { start, end, curve: Curve::Spline(fitted.spline), pcurve: mapped_pcurve(c, map) })
+    Ok(FaceEdge { start, end, curve: Curve::Spline(fitted.spline), pcurve: mapped_pcurve(c, map), seam: None })
 }
 
-/// The face's bound along the rectangle of the domain, counter-clockwise.
+/// A straight segment a → b of the parameter plane on [0, 1].
+fn segment(a: (f64, f64), b: (f64, f64)) -> Result<NurbsCurve<2>> {
+    NurbsCurve::new(
+        1,
+        vec![0.0, 0.0, 1.0, 1.0],
+        vec![Point::<2>::new(a.0, a.1), Point::<2>::new(b.0, b.1)],
+        vec![1.0; 2],
+    )
+    .map_err(|e| StepError::plain(format!("outer: {e}")))
+}
+
+/// The face's bound along the rectangle of the domain, counter-clockwise (the natural
+/// bounds, as CAD systems write a whole surface): sides bottom (v₀), right (u₁), top (v₁),
+/// left (u₀). On a surface closed in u the right and left sides are one seam edge
+/// (`SEAM_CURVE` with both pcurves), used up the right side and back down the left; closed
+/// in v, bottom and top likewise. A side whose image is one point (a sphere's pole, a
+/// cone's apex) has no edge, as STEP writers leave degenerate edges out. Corners that meet
+/// in space share a vertex.
 fn domain_rectangle(
     surface: &dyn KernelSurface<3>,
     map: &ParamMap,
@@ -146,26 +163,67 @@ fn domain_rectangle(
     vertices: &mut Vec<P3>,
 ) -> Result<FaceLoop> {
     let (du, dv) = (surface.domain_u(), surface.domain_v());
-    if surface.is_closed_u() || surface.is_closed_v() {
-        return Err(StepError::plain(format!(
-            "outer: a surface closed in u or v (domain [{}, {}] × [{}, {}]) needs an outer loop to leave as a STEP face",
-            du.start, du.end, dv.start, dv.end
-        )));
-    }
+    let (closed_u, closed_v) = (surface.is_closed_u(), surface.is_closed_v());
     let corners = [(du.start, dv.start), (du.end, dv.start), (du.end, dv.end), (du.start, dv.end)];
     let first = vertices.len();
-    vertices.extend(corners.iter().map(|&(u, v)| p3(surface.point(u, v))));
+    let mut corner_vertex = [0; 4];
+    for (k, &(u, v)) in corners.iter().enumerate() {
+        let p = p3(surface.point(u, v));
+        let near = |q: &P3| (0..3).map(|i| (q[i] - p[i]).powi(2)).sum::<f64>().sqrt() <= tolerance;
+        corner_vertex[k] = match vertices[first..].iter().position(near) {
+            Some(i) => first + i,
+            None => {
+                vertices.push(p);
+                vertices.len() - 1
+            }
+        };
+    }
+    let degenerate = |(a, b): ((f64, f64), (f64, f64))| {
+        let start = surface.point(a.0, a.1);
+        (1..=16).all(|i| {
+            let t = i as f64 / 16.0;
+            (surface.point(a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)) - start).norm() <= tolerance
+        })
+    };
+    let side = |k: usize| (corners[k], corners[(k + 1) % 4]);
     let mut edges = Vec::with_capacity(4);
+    // Which use (index in `edges`) wrote the edge of sides 0 (bottom) and 1 (right).
+    let (mut bottom, mut right) = (None, None);
     for k in 0..4 {
-        let (a, b) = (corners[k], corners[(k + 1) % 4]);
-        let line = NurbsCurve::new(
-            1,
-            vec![0.0, 0.0, 1.0, 1.0],
-            vec![Point::<2>::new(a.0, a.1), Point::<2>::new(b.0, b.1)],
-            vec![1.0; 2],
-        )
-        .map_err(|e| StepError::plain(format!("outer: {e}")))?;
-        edges.push(edge(surface, &line, map, tolerance, (first + k, first + (k + 1) % 4), "outer")?);
+        let (a, b) = side(k);
+        if degenerate((a, b)) {
+            continue;
+        }
+        let seam_again = match k {
+            2 if closed_v => bottom,
+            3 if closed_u => right,
+            _ => None,
+        };
+        if let Some(again) = seam_again {
+            edges.push(LoopEdge::Again(again));
+            continue;
+        }
+        let line = segment(a, b)?;
+        let mut e = edge(surface, &line, map, tolerance, (corner_vertex[k], corner_vertex[(k + 1) % 4]), "outer")?;
+        // The seam's other pcurve runs along the opposite side in this edge's sense.
+        let (c, d) = side((k + 2) % 4);
+        e.seam = match k {
+            0 if closed_v => Some(mapped_pcurve(&segment(d, c)?, map)),
+            1 if closed_u => Some(mapped_pcurve(&segment(d, c)?, map)),
+            _ => None,
+        };
+        match k {
+            0 => bottom = Some(edges.len()),
+            1 => right = Some(edges.len()),
+            _ => {}
+        }
+        edges.push(LoopEdge::Edge(Box::new(e)));
+    }
+    if edges.is_empty() {
+        return Err(StepError::plain(format!(
+            "outer: the boundary of the domain [{}, {}] × [{}, {}] is a single point on the surface, no face bound",
+            du.start, du.end, dv.start, dv.end
+        )));
     }
     Ok(FaceLoop { outer: true, orientation: true, edges })
 }
@@ -217,7 +275,11 @@ pub fn export_trimmed(doc: &TrimmedDoc, name: &str, relative_tolerance: f64) -> 
         vertices.push(a);
         let counter_clockwise = signed_area(&c) > 0.0;
         let e = edge(kernel.as_ref(), &c, &base.map, edge_tolerance, (vertex, vertex), &field)?;
-        loops.push(FaceLoop { outer, orientation: counter_clockwise == outer, edges: vec![e] });
+        loops.push(FaceLoop {
+            outer,
+            orientation: counter_clockwise == outer,
+            edges: vec![LoopEdge::Edge(Box::new(e))],
+        });
     }
     let face = FaceGeometry { surface: face_surface(surface), vertices, loops };
     Ok(Exported {
@@ -228,15 +290,14 @@ pub fn export_trimmed(doc: &TrimmedDoc, name: &str, relative_tolerance: f64) -> 
 }
 
 /// Whether a `trimmed` document leaves exactly: its surface does, every loop is a
-/// B-spline, NURBS, Bézier, line or conic, and a missing outer loop is the rectangle of a
-/// surface open in both directions.
+/// B-spline, NURBS, Bézier, line or conic (a missing outer loop is the domain's rectangle,
+/// whose sides are straight).
 pub fn trimmed_exports_exactly(
     doc: &TrimmedDoc,
     surface_exact: bool,
     loop_exact: impl Fn(&CurveDocument) -> bool,
 ) -> bool {
-    let open = || kernel_surface(&doc.surface).is_ok_and(|s| !s.is_closed_u() && !s.is_closed_v());
-    surface_exact && doc.outer.as_deref().map_or_else(open, &loop_exact) && doc.holes.iter().all(loop_exact)
+    surface_exact && doc.outer.as_deref().is_none_or(&loop_exact) && doc.holes.iter().all(loop_exact)
 }
 
 /// `count` points of each of a `trimmed` document's loops (outer first when it has one),

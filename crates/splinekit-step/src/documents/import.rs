@@ -431,6 +431,7 @@ fn join_loop(
     pieces: &[Curve],
     seam_twins: &[Option<(u64, Curve)>],
     map: &dyn Fn(Point<2>) -> Point<2>,
+    periodic: (bool, bool),
 ) -> Result<Option<CurveDocument>> {
     let mut parts = Vec::new();
     let mut twins = Vec::new();
@@ -446,6 +447,7 @@ fn join_loop(
         });
     }
     choose_seam_sides(&mut parts, twins);
+    align_periods(&mut parts, periodic);
     let parts = bridge_gaps(parts)?;
     let p = parts.iter().map(|c| c.degree()).max().unwrap_or(1);
     let err = |e: splinekit::Error| StepError::plain(format!("loop: {e}"));
@@ -598,6 +600,26 @@ fn bridge_gaps(parts: Vec<NurbsCurve<2>>) -> Result<Vec<NurbsCurve<2>>> {
     Ok(out)
 }
 
+/// Each piece after the first moved by whole turns (2π, along the periodic angles) to start
+/// where the one before it ends: a loop across a seam (around a torus' tube through v = 0)
+/// has pieces whose parameters writers give on either side of it (OpenCASCADE: the tube
+/// circles' arcs over [2π − 0.6, 2π + 0.9] beside u-circles at v = −0.6 and 0.9).
+fn align_periods(parts: &mut [NurbsCurve<2>], periodic: (bool, bool)) {
+    let start = |c: &NurbsCurve<2>| c.control_points()[0];
+    let end = |c: &NurbsCurve<2>| c.control_points()[c.control_points().len() - 1];
+    let turns = |gap: f64, on: bool| {
+        let n = (gap / TAU).round();
+        if on && n != 0.0 && (gap - n * TAU).abs() <= 1e-6 { n * TAU } else { 0.0 }
+    };
+    for k in 1..parts.len() {
+        let gap = start(&parts[k]) - end(&parts[k - 1]);
+        let shift = Point::<2>::new(turns(gap[0], periodic.0), turns(gap[1], periodic.1));
+        if shift != Point::<2>::zeros() {
+            parts[k] = parts[k].map_points(|q| q - shift);
+        }
+    }
+}
+
 /// Relative distance in the parameter plane below which consecutive loop pieces meet.
 const GAP_TOLERANCE: f64 = 1e-9;
 
@@ -646,18 +668,36 @@ fn choose_seam_sides(parts: &mut [NurbsCurve<2>], twins: Vec<Option<(u64, NurbsC
     parts.clone_from_slice(&chosen);
 }
 
-/// The map of a face's (u, v) followed by the shift of a whole number of turns that brings
-/// its loops' lowest u (and v, around a torus' tube) into [0, 2π) where the document's
-/// angle is periodic: STEP writers place faces at any angle (OpenCASCADE's cones run over
-/// u ∈ [−α, 0]), the documents' domains start at 0. Loops across the seam stay as they are.
-fn into_domain(f: &Face, map: Box<dyn Fn(Point<2>) -> Point<2>>) -> Result<Box<dyn Fn(Point<2>) -> Point<2>>> {
-    let periodic = match &f.surface {
+/// Which of a face surface's parameters are angles of period 2π (u around an axis, and v
+/// around a torus' tube).
+fn periodic_angles(s: &Surface) -> (bool, bool) {
+    match s {
         Surface::Torus { .. } => (true, true),
         Surface::Sphere { .. } | Surface::Cylinder { .. } | Surface::Cone { .. } | Surface::Revolution { .. } => {
             (true, false)
         }
         _ => (false, false),
-    };
+    }
+}
+
+/// The periodic angles along which a loop's pieces are aligned by whole turns: those of
+/// surfaces without poles (tori, cylinders). On a sphere, a cone or a revolution a gap of a
+/// whole turn in u is the degenerate edge at a pole or apex, which writers leave out and
+/// the loop bridges.
+fn seam_crossings(s: &Surface) -> (bool, bool) {
+    match s {
+        Surface::Torus { .. } => (true, true),
+        Surface::Cylinder { .. } => (true, false),
+        _ => (false, false),
+    }
+}
+
+/// The map of a face's (u, v) followed by the shift of a whole number of turns that brings
+/// its loops' lowest u (and v, around a torus' tube) into [0, 2π) where the document's
+/// angle is periodic: STEP writers place faces at any angle (OpenCASCADE's cones run over
+/// u ∈ [−α, 0]), the documents' domains start at 0. Loops across the seam stay as they are.
+fn into_domain(f: &Face, map: Box<dyn Fn(Point<2>) -> Point<2>>) -> Result<Box<dyn Fn(Point<2>) -> Point<2>>> {
+    let periodic = periodic_angles(&f.surface);
     let Some((lo, _)) = loops_box(f)? else { return Ok(map) };
     let low = map(lo);
     let turns = |x: f64, on: bool| if on { -((x + 1e-9) / TAU).floor() * TAU } else { 0.0 };
@@ -683,7 +723,9 @@ fn face_doc(f: &Face) -> Result<Option<SurfaceDocument>> {
     let mut outer = None;
     let mut holes = Vec::new();
     for (i, l) in f.loops.iter().enumerate() {
-        let Some(doc) = join_loop(l, &f.seam_twins[i], map.as_ref())? else { return Ok(None) };
+        let Some(doc) = join_loop(l, &f.seam_twins[i], map.as_ref(), seam_crossings(&f.surface))? else {
+            return Ok(None);
+        };
         if Some(i) == f.outer || (f.outer.is_none() && i == 0) {
             outer = Some(Box::new(doc));
         } else {

@@ -81,19 +81,26 @@ impl<const D: usize> TrimmedSurface<D> {
         Ok(TrimmedSurface { surface, outer, holes })
     }
 
-    /// Whether (u, v) lies in the trimmed region.
+    /// Whether (u, v) lies in the trimmed region. Where the surface is closed, a loop may
+    /// cross the seam (run past the domain's end, e.g. around a torus' tube through v = 0):
+    /// the point counts as inside a loop when it, or its copy one period to either side,
+    /// is.
     pub fn contains(&self, u: f64, v: f64) -> bool {
-        let p = Point::<2>::new(u, v);
         let (du, dv) = (self.surface.domain_u(), self.surface.domain_v());
         if u < du.start || u > du.end || v < dv.start || v > dv.end {
             return false;
         }
+        let shifts = |closed: bool, d: Interval| if closed { vec![0.0, -d.length(), d.length()] } else { vec![0.0] };
+        let (su, sv) = (shifts(self.surface.is_closed_u(), du), shifts(self.surface.is_closed_v(), dv));
+        let within = |poly: &[Point<2>]| {
+            su.iter().any(|a| sv.iter().any(|b| winding(poly, &Point::<2>::new(u + a, v + b)) != 0))
+        };
         if let Some(o) = &self.outer {
-            if winding(o, &p) == 0 {
+            if !within(o) {
                 return false;
             }
         }
-        self.holes.iter().all(|h| winding(h, &p) == 0)
+        self.holes.iter().all(|h| !within(h))
     }
 
     /// The flattened outer loop and holes (for tessellation).
@@ -127,5 +134,35 @@ impl<const D: usize> Surface<D> for TrimmedSurface<D> {
     fn trim_loops(&self) -> Option<crate::surface::traits::TrimLoops<'_>> {
         let (outer, holes) = self.loops();
         Some(crate::surface::traits::TrimLoops { outer, holes })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::curve::{CircleFrame, NurbsCurve};
+    use crate::surface::model::{Plane, Torus};
+    use std::f64::consts::TAU;
+
+    #[test]
+    fn loops_across_a_seam_trim_both_sides_of_it() {
+        // A disc of radius 0.5 about (1, 0) on the torus: it crosses the tube's seam
+        // v = 0, so it holds (1, 0.3) and (1, 2π − 0.3) but not (1, 0.6) or (1, 2π − 0.6).
+        let disc = NurbsCurve::circle(&CircleFrame::in_xy_plane(Point::<2>::new(1.0, 0.0), 0.5)).unwrap();
+        let torus = || Box::new(Torus::new(3.0, 1.0).unwrap());
+        let face = TrimmedSurface::new(torus(), Some(&disc), &[]).unwrap();
+        for (v, inside) in [(0.3, true), (TAU - 0.3, true), (0.0, true), (TAU, true), (0.6, false), (TAU - 0.6, false)]
+        {
+            assert_eq!(face.contains(1.0, v), inside, "v = {v}");
+        }
+        // As a hole, the same disc takes both sides away.
+        let holed = TrimmedSurface::new(torus(), None, &[&disc]).unwrap();
+        for (v, inside) in [(0.3, false), (TAU - 0.3, false), (0.6, true), (3.0, true)] {
+            assert_eq!(holed.contains(1.0, v), inside, "v = {v}");
+        }
+        // A surface open in v has no seam: only the part inside the domain counts.
+        let plane = Plane::new(Point::<3>::zeros(), Point::<3>::x(), Point::<3>::y()).unwrap();
+        let flat = TrimmedSurface::new(Box::new(plane), Some(&disc), &[]).unwrap();
+        assert!(flat.contains(0.9, 0.3) && !flat.contains(0.9, 0.95));
     }
 }
