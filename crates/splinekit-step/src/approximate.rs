@@ -11,8 +11,10 @@
 //!   and second derivatives at the breaks (C² where the model is; error O(h⁶)), the breaks
 //!   bisected until the measured deviation is below the tolerance.
 //!
-//! The deviation max |S(t) − model(t)| is measured on 16 samples per piece (per direction
-//! on surfaces) and refined by golden-section search around the worst sample.
+//! The deviation max |S(t) − model(t)| is measured on curves at 16 samples per piece and
+//! refined by golden-section search around the worst sample; on surfaces at 4 × 4 samples
+//! per cell, then on a 9 × 9 grid around the worst one. A deviation that is not a number
+//! (a shape with no finite value there) is an error, never "within the tolerance".
 
 use std::collections::HashMap;
 
@@ -23,6 +25,22 @@ use splinekit::surface::{BSplineSurface, Surface};
 
 use crate::error::{Result, StepError};
 use crate::geometry::{SplineCurve, SplineSurface};
+
+/// Whether deviation `d` is worse than `worst`: larger, or not a number (a model with no
+/// finite value there) where `worst` still is one, so that a NaN is never passed over as
+/// "within the tolerance".
+fn worse(d: f64, worst: f64) -> bool {
+    d > worst || d.is_nan() && !worst.is_nan()
+}
+
+/// Refuses a deviation that is not a number: the model (or its approximation) has no
+/// finite value near `at`.
+fn finite(deviation: f64, at: impl std::fmt::Display) -> Result<f64> {
+    if deviation.is_nan() {
+        return Err(StepError::plain(format!("the shape has no finite value near {at}, so it cannot be approximated")));
+    }
+    Ok(deviation)
+}
 
 /// Most pieces an approximation may use per direction before giving up.
 pub const MAX_PIECES: usize = 1 << 15;
@@ -128,7 +146,7 @@ fn piece_deviation(model: &dyn Curve<3>, spline: &BSplineCurve<3>, a: f64, b: f6
     for i in 0..=n {
         let t = if i == n { b } else { a + h * (i as f64 + 0.5) };
         let d = dev(t);
-        if d > worst {
+        if worse(d, worst) {
             (worst, at) = (d, t);
         }
     }
@@ -147,8 +165,11 @@ pub fn polynomial_curve(model: &dyn Curve<3>, breaks: &[f64], m: usize) -> Resul
         pieces.push((0..=m).map(|i| (0..=i).fold(Point::<3>::zeros(), |acc, j| acc + ders[j] * t[i][j])).collect());
     }
     let spline = assemble_curve(breaks, m, &pieces)?;
-    let max_deviation = breaks.windows(2).map(|w| piece_deviation(model, &spline, w[0], w[1])).fold(0.0, f64::max);
-    Ok(Fitted { spline: spline_curve_data(&spline), max_deviation })
+    let max_deviation = breaks
+        .windows(2)
+        .map(|w| piece_deviation(model, &spline, w[0], w[1]))
+        .fold(0.0, |a, d| if worse(d, a) { d } else { a });
+    Ok(Fitted { spline: spline_curve_data(&spline), max_deviation: finite(max_deviation, "one of its pieces")? })
 }
 
 fn hermite_piece(model: &dyn Curve<3>, a: f64, b: f64) -> Vec<Point<3>> {
@@ -177,7 +198,11 @@ pub fn hermite_curve(model: &dyn Curve<3>, tolerance: f64) -> Result<Fitted<Spli
         let pieces: Vec<Vec<Point<3>>> = breaks.windows(2).map(|w| hermite_piece(model, w[0], w[1])).collect();
         let spline = assemble_curve(&breaks, 5, &pieces)?;
         let devs: Vec<f64> = breaks.windows(2).map(|w| piece_deviation(model, &spline, w[0], w[1])).collect();
-        let worst = devs.iter().copied().fold(0.0, f64::max);
+        let worst = devs.iter().copied().fold(0.0, |a, d| if worse(d, a) { d } else { a });
+        if worst.is_nan() {
+            let k = devs.iter().position(|d| d.is_nan()).unwrap_or(0);
+            finite(worst, format!("t in [{}, {}]", breaks[k], breaks[k + 1]))?;
+        }
         if worst <= tolerance {
             return Ok(Fitted { spline: spline_curve_data(&spline), max_deviation: worst });
         }
@@ -256,7 +281,7 @@ fn worst_deviation(model: &dyn Surface<3>, spline: &BSplineSurface<3>, bu: &[f64
                 for j in 0..4 {
                     let (u, v) = (wu[0] + hu * (i as f64 + 0.5), wv[0] + hv * (j as f64 + 0.5));
                     let d = dev(u, v);
-                    if d > worst {
+                    if worse(d, worst) {
                         (worst, at) = (d, (u, v, hu, hv));
                     }
                 }
@@ -270,7 +295,7 @@ fn worst_deviation(model: &dyn Surface<3>, spline: &BSplineSurface<3>, bu: &[f64
             let u = (u0 + hu * i as f64 / 4.0).clamp(bu[0], bu[bu.len() - 1]);
             let v = (v0 + hv * j as f64 / 4.0).clamp(bv[0], bv[bv.len() - 1]);
             let d = dev(u, v);
-            if d > worst {
+            if worse(d, worst) {
                 (worst, place) = (d, (u, v));
             }
         }
@@ -322,7 +347,7 @@ pub fn polynomial_surface(
     }
     let spline = assemble_surface(bu, bv, (mu, mv), &cells)?;
     let max_deviation = surface_deviation(model, &spline, bu, bv);
-    Ok(Fitted { spline: spline_surface_data(&spline), max_deviation })
+    Ok(Fitted { spline: spline_surface_data(&spline), max_deviation: finite(max_deviation, "one of its cells")? })
 }
 
 /// The model's partials ∂^{i+j}S, i, j ≤ 2, at the grid nodes met so far (bisection keeps
@@ -410,7 +435,7 @@ fn cell_deviation(
             let (s, t) = ((i as f64 + 0.5) / CELL_SAMPLES as f64, (j as f64 + 0.5) / CELL_SAMPLES as f64);
             let (u, v) = (u0 + (u1 - u0) * s, v0 + (v1 - v0) * t);
             let d = (bezier_point(net, s, t) - model.point(u, v)).norm();
-            if d > worst.0 {
+            if worse(d, worst.0) {
                 worst = (d, (u, v));
             }
         }
@@ -455,10 +480,13 @@ pub fn hermite_surface(
             for wv in bv.windows(2) {
                 let (_, d, at) = fit(&mut nodes, (wu[0], wu[1]), (wv[0], wv[1]));
                 devs.push(d);
-                if d > worst.0 {
+                if worse(d, worst.0) {
                     worst = (d, at);
                 }
             }
+        }
+        if worst.0.is_nan() {
+            finite(worst.0, format!("(u, v) = ({}, {})", worst.1.0, worst.1.1))?;
         }
         // Where the cells' samples all pass but the finer look does not, the cell holding
         // the finer look's worst point is the one to bisect (else the grid would not
@@ -475,6 +503,7 @@ pub fn hermite_surface(
                 .collect();
             let spline = assemble_surface(&bu, &bv, (5, 5), &cells)?;
             let (fine, at) = finer_look(model, &spline, &bu, &bv, worst);
+            finite(fine, format!("(u, v) = ({}, {})", at.0, at.1))?;
             reached = fine;
             if fine <= tolerance {
                 return Ok(Fitted { spline: spline_surface_data(&spline), max_deviation: fine });
@@ -559,7 +588,7 @@ fn finer_look(
             let u = (u0 + hu * i as f64 / 4.0).clamp(bu[0], bu[bu.len() - 1]);
             let v = (v0 + hv * j as f64 / 4.0).clamp(bv[0], bv[bv.len() - 1]);
             let d = (spline.point(u, v) - model.point(u, v)).norm();
-            if d > worst.0 {
+            if worse(d, worst.0) {
                 worst = (d, (u, v));
             }
         }
@@ -643,7 +672,37 @@ mod tests {
         // marked and the grid never changed: the export hung.
         let f = hermite_surface(&Bump, &[0.0, 1.0], &[0.0, 1.0], 1e-5).unwrap();
         assert!(f.max_deviation <= 1e-5, "{}", f.max_deviation);
-        assert!(f.spline.knots_u.len() > 8, "the bump was not refined: {:?}", f.spline.knots_u);
+        // One biquintic cell per direction has 12 knots; refinement adds interior ones.
+        assert!(f.spline.knots_u.len() > 12, "the bump was not refined: {:?}", f.spline.knots_u);
+    }
+
+    /// The plane z = 0 with no value (NaN) on the strip 0.3 < u < 0.7 (which holds samples).
+    struct Torn;
+    impl Surface<3> for Torn {
+        fn domain_u(&self) -> Interval {
+            Interval::new(0.0, 1.0)
+        }
+        fn domain_v(&self) -> Interval {
+            Interval::new(0.0, 1.0)
+        }
+        fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<3>]) {
+            let torn = u > 0.3 && u < 0.7;
+            for i in 0..=du {
+                for j in 0..=dv {
+                    let x = [u, 1.0].get(i).copied().filter(|_| j == 0).unwrap_or(0.0);
+                    let y = [v, 1.0].get(j).copied().filter(|_| i == 0).unwrap_or(0.0);
+                    out[i * (dv + 1) + j] = Point::<3>::from([x, y, if torn { f64::NAN } else { 0.0 }]);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_shape_without_finite_values_is_refused_not_passed_as_within_tolerance() {
+        let e = hermite_surface(&Torn, &[0.0, 1.0], &[0.0, 1.0], 1e-6).unwrap_err().to_string();
+        assert!(e.contains("no finite value near (u, v) = (0.375, "), "{e}");
+        let e = polynomial_surface(&Torn, &[0.0, 1.0], &[0.0, 1.0], (1, 1)).unwrap_err().to_string();
+        assert!(e.contains("no finite value near one of its cells"), "{e}");
     }
 
     #[test]

@@ -470,7 +470,7 @@ fn polynomial_blending_surface(doc: &SurfaceDocument) -> Result<Option<Polynomia
 }
 
 /// The B-spline form of any other surface: exact for a blending spline with Bézier locals
-/// and a polynomial B-function, else a bicubic Hermite approximation within `tolerance`
+/// and a polynomial B-function, else a biquintic Hermite approximation within `tolerance`
 /// (blending splines on their own knots, others on a 4 × 4 start grid).
 fn fitted_surface(
     doc: &SurfaceDocument,
