@@ -1,6 +1,6 @@
 //! Intersection curves of two surfaces in 3-D by seeded marching.
 //!
-//! Seeds: the intersections ([`intersect_with_limit`]) of [`SEED_LINES`] isocurves in
+//! Seeds: the intersections ([`intersect_with_cover`]) of [`SEED_LINES`] isocurves in
 //! each direction of each surface (its boundary included) with the other surface. From
 //! each seed not already on a traced branch, the curve is followed by [`Marcher::step`]
 //! (predictor along N_a × N_b, Newton correction onto both surfaces, step control by the
@@ -19,7 +19,8 @@
 use crate::Point;
 use crate::curve::Interval;
 use crate::error::{Error, Result};
-use crate::query::curve_surface::intersect_with_limit;
+use crate::query::curve_surface::intersect_with_cover;
+use crate::query::surface_cover::SurfaceCover;
 use crate::query::march::{MarchPoint, Marcher, StepEnd};
 use crate::surface::Surface;
 use crate::surface::iso_curve::{Direction, IsoCurve};
@@ -114,6 +115,7 @@ fn lines(domain: Interval, closed: bool) -> Vec<f64> {
 fn seeds<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(m: &Marcher<'_, A, B>) -> Result<Vec<MarchPoint>> {
     let mut out = Vec::new();
     let zero = Point::<3>::zeros();
+    let (cover_a, cover_b) = (SurfaceCover::new(m.a), SurfaceCover::new(m.b));
     for first in [true, false] {
         let (du, dv) = if first { (m.a.domain_u(), m.a.domain_v()) } else { (m.b.domain_u(), m.b.domain_v()) };
         let (cu, cv) =
@@ -123,9 +125,9 @@ fn seeds<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(m: &Marcher<'_, A, B>) 
         for (k, dir) in (0..SEED_LINES).flat_map(|k| [(k, Direction::U), (k, Direction::V)]) {
             let value = if dir == Direction::U { lu[k] } else { lv[k] };
             let hits = if first {
-                intersect_with_limit(&IsoCurve::new(m.a, dir, value), m.b, m.tolerance, SEED_PAIRS)
+                intersect_with_cover(&IsoCurve::new(m.a, dir, value), m.b, &cover_b, m.tolerance, SEED_PAIRS)
             } else {
-                intersect_with_limit(&IsoCurve::new(m.b, dir, value), m.a, m.tolerance, SEED_PAIRS)
+                intersect_with_cover(&IsoCurve::new(m.b, dir, value), m.a, &cover_a, m.tolerance, SEED_PAIRS)
             };
             let Ok(hits) = hits else {
                 lost[(dir == Direction::V) as usize] = true;

@@ -75,6 +75,33 @@ impl TrigSeries {
         }
         v
     }
+
+    /// The derivatives of orders 0, 1, …, `out.len()` − 1 at t into `out` (the values of
+    /// [`TrigSeries::derivative`]), with one sine and cosine per term for all orders.
+    #[inline]
+    pub fn derivatives(&self, t: f64, out: &mut [f64]) {
+        for (k, o) in out.iter_mut().enumerate() {
+            *o = match k {
+                0 => self.constant + self.linear * t,
+                1 => self.linear,
+                _ => 0.0,
+            };
+        }
+        for term in &self.terms {
+            let (s, c) = (term.frequency * t + term.phase).sin_cos();
+            let mut power = 1.0;
+            for (k, o) in out.iter_mut().enumerate() {
+                let base = match (term.sine, k % 4) {
+                    (false, 0) | (true, 1) => c,
+                    (false, 1) | (true, 2) => -s,
+                    (false, 2) | (true, 3) => -c,
+                    _ => s,
+                };
+                *o += term.amplitude * power * base;
+                power *= term.frequency;
+            }
+        }
+    }
 }
 
 /// A 3-D curve with trigonometric-series coordinates on a domain.
