@@ -5,6 +5,7 @@ use crate::Point;
 use crate::basis::binomial;
 use crate::curve::Interval;
 use crate::curve::model::{Term, TrigSeries};
+use crate::curve::model::trig::SinCosCache;
 use smallvec::SmallVec;
 
 /// A function of one variable with derivatives of every order.
@@ -69,13 +70,23 @@ impl Factor {
     /// The derivatives of orders 0, 1, …, `out.len()` − 1 at t into `out`: the values of
     /// [`Factor::derivative`], with one sine and cosine per series term for all orders.
     pub fn derivatives(&self, t: f64, out: &mut [f64]) {
+        self.derivatives_cached(t, out, &mut SinCosCache::default());
+    }
+
+    /// [`Factor::derivatives`] sharing the sines and cosines of `cache`.
+    pub fn derivatives_cached(&self, t: f64, out: &mut [f64], cache: &mut SinCosCache) {
         match self {
-            Factor::Series(s) => s.derivatives(t, out),
+            Factor::Series(s) => s.derivatives_cached(t, out, cache),
+            Factor::Polynomial(c) if c.len() == 1 => {
+                for (k, o) in out.iter_mut().enumerate() {
+                    *o = if k == 0 { c[0] } else { 0.0 };
+                }
+            }
             Factor::Product(f, g) => {
                 let n = out.len();
                 let (mut a, mut b) = (SmallVec::<[f64; 8]>::from_elem(0.0, n), SmallVec::<[f64; 8]>::from_elem(0.0, n));
-                f.derivatives(t, &mut a);
-                g.derivatives(t, &mut b);
+                f.derivatives_cached(t, &mut a, cache);
+                g.derivatives_cached(t, &mut b, cache);
                 for (k, o) in out.iter_mut().enumerate() {
                     *o = (0..=k).map(|j| binomial(k, j) * a[j] * b[k - j]).sum();
                 }
@@ -138,10 +149,11 @@ impl SeparableSurface {
             *o = Point::<3>::zeros();
         }
         let (mut fu, mut gv) = (SmallVec::<[f64; 8]>::from_elem(0.0, du + 1), SmallVec::<[f64; 8]>::from_elem(0.0, dv + 1));
+        let mut cache = SinCosCache::default();
         for (c, terms) in self.coordinates.iter().enumerate() {
             for t in terms {
-                t.u.derivatives(u, &mut fu);
-                t.v.derivatives(v, &mut gv);
+                t.u.derivatives_cached(u, &mut fu, &mut cache);
+                t.v.derivatives_cached(v, &mut gv, &mut cache);
                 for i in 0..=du {
                     for j in 0..=dv {
                         out[i * (dv + 1) + j][c] += t.coefficient * fu[i] * gv[j];
