@@ -39,6 +39,10 @@ pub const FLAT: f64 = 0.5;
 /// Patches narrower than this fraction of their domain (in both directions) are not split.
 pub const MIN_WIDTH: f64 = 1.0 / 4096.0;
 
+/// Pairs whose normals may be parallel are checked for coinciding surfaces once both boxes
+/// are below this fraction of the shapes' size.
+pub const COINCIDENCE_SIZE: f64 = 1.0 / 16.0;
+
 /// The most pairs of patches the seeding examines.
 pub const MAX_SEED_PAIRS: usize = 200_000;
 
@@ -54,6 +58,44 @@ fn apart(a: &TangentCone<3>, b: &TangentCone<3>) -> bool {
 /// Whether the patch can still be split (wider than [`MIN_WIDTH`] of a domain).
 fn splittable(p: &SurfacePatch<3>, cover: &SurfaceCover<3>) -> bool {
     p.u().length() > MIN_WIDTH * cover.domain_u.length() || p.v().length() > MIN_WIDTH * cover.domain_v.length()
+}
+
+/// The first root box of a cover.
+fn a_root_box(c: &SurfaceCover<3>) -> crate::query::bounds::Aabb<3> {
+    c.nodes[0].patch.bounds
+}
+
+/// Whether the centre and corners of patch `a` lie on `m.b` near patch `b` within the
+/// tolerance (Gauss–Newton for the nearest point from b's centre, clamped to b's box grown
+/// by its width).
+fn coincide<A, B>(m: &Marcher<'_, A, B>, a: &SurfacePatch<3>, b: &SurfacePatch<3>) -> bool
+where
+    A: Surface<3> + ?Sized,
+    B: Surface<3> + ?Sized,
+{
+    let (iu, iv) = (grown(b.u()), grown(b.v()));
+    [4usize, 0, 2, 6, 8].iter().all(|&k| {
+        let p = a.grid[k].point;
+        let (mut u, mut v) = (b.u().lerp(0.5), b.v().lerp(0.5));
+        let mut o = [Point::<3>::zeros(); 4];
+        for _ in 0..20 {
+            m.b.eval_partials(u, v, 1, 1, &mut o);
+            let (r, su, sv) = (p - o[0], o[2], o[1]);
+            let (e, f, g) = (su.dot(&su), su.dot(&sv), sv.dot(&sv));
+            let det = e * g - f * f;
+            if !(det.is_finite() && det > 0.0) {
+                return false;
+            }
+            let (gu, gv) = (su.dot(&r), sv.dot(&r));
+            let next = (iu.clamp(u + (g * gu - f * gv) / det), iv.clamp(v + (e * gv - f * gu) / det));
+            let still = (next.0 - u).abs() <= 1e-14 * (1.0 + u.abs()) && (next.1 - v).abs() <= 1e-14 * (1.0 + v.abs());
+            (u, v) = next;
+            if still {
+                break;
+            }
+        }
+        (m.b.point(u, v) - p).norm() <= m.tolerance
+    })
 }
 
 /// The parameter box of a patch grown by its width on each side.
@@ -83,6 +125,11 @@ where
         }
     }
     let (mut seeds, mut examined) = (Vec::new(), 0usize);
+    let size = ca.nodes[..ca.roots]
+        .iter()
+        .chain(&cb.nodes[..cb.roots])
+        .fold(a_root_box(ca), |bx, n| bx.union(&n.patch.bounds))
+        .diagonal();
     let zero = Point::<3>::zeros();
     while let Some((na, nb)) = stack.pop() {
         examined += 1;
@@ -101,7 +148,19 @@ where
             continue;
         }
         let (split_a, split_b) = (splittable(a, ca), splittable(b, cb));
-        let leaf = apart(cone_a, cone_b) && cone_a.half_angle <= FLAT && cone_b.half_angle <= FLAT;
+        let parted = apart(cone_a, cone_b);
+        let small = a.bounds.diagonal().max(b.bounds.diagonal()) <= COINCIDENCE_SIZE * size;
+        if !parted && small && coincide(m, a, b) {
+            return Err(Error::numerical(
+                "surface intersection",
+                format!(
+                    "the surfaces coincide over a region (about ({:.6}, {:.6}) on the first)",
+                    a.u().lerp(0.5),
+                    a.v().lerp(0.5)
+                ),
+            ));
+        }
+        let leaf = parted && cone_a.half_angle <= FLAT && cone_b.half_angle <= FLAT;
         if leaf || (!split_a && !split_b) {
             let x = [a.u().lerp(0.5), a.v().lerp(0.5), b.u().lerp(0.5), b.v().lerp(0.5)];
             let within = [grown(a.u()), grown(a.v()), grown(b.u()), grown(b.v())];
