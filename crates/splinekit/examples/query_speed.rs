@@ -75,7 +75,8 @@ fn main() {
         std::f64::consts::TAU,
     )
     .unwrap();
-    let (surfaces, branches) = median(repeats_of("surfaces"), || intersect_surfaces(&torus, &cylinder, 1e-9, 1e-5).unwrap());
+    let (surfaces, branches) =
+        median(repeats_of("surfaces"), || intersect_surfaces(&torus, &cylinder, 1e-9, 1e-5).unwrap());
     let closed = branches.iter().filter(|b| b.closed).count();
     let points_on = branches.iter().map(|b| b.points.len()).sum::<usize>();
     println!(

@@ -3,18 +3,18 @@
 
 use anyhow::{Result, anyhow};
 use splinekit::Point;
+use splinekit::curve::model::Line;
 use splinekit::curve::{BSplineCurve, Curve};
 use splinekit::query::{intersect_curves, intersect_surfaces, offset_curve};
 use splinekit::surface::BSplineSurface;
-use splinekit::surface::model::Plane;
-use splinekit::curve::model::Line;
 use splinekit::surface::derived::RevolvedSurface;
+use splinekit::surface::model::Plane;
 use splinekit::surface::model::Torus;
 use splinekit_mesh::surface_mesh::regular;
 use splinekit_mesh::{MeshOptions, Polyline, Projection, SvgFigure};
 use splinekit_render::{Camera, Image, LineItem, MeshItem, RenderScene, Renderer};
-use std::f64::consts::TAU;
 use splinekit_scene::ShapeDocument;
+use std::f64::consts::TAU;
 
 use super::figures::Figure;
 
@@ -124,10 +124,17 @@ pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
     let branches = intersect_surfaces(&torus, &cylinder, 1e-9, 1e-5)?;
     let f = |v: &[[f64; 3]]| v.iter().map(|p| p.map(|x| x as f32)).collect::<Vec<_>>();
     let mut scene = RenderScene::default();
-    for (mesh, color) in [
-        (regular(&torus, 160, 80, MeshOptions::default())?, [0.85, 0.7, 0.35, 1.0]),
-        (regular(&cylinder, 32, 64, MeshOptions::default())?, [0.35, 0.6, 0.85, 1.0]),
+    for (mut mesh, color, cut) in [
+        (regular(&torus, 240, 120, MeshOptions::default())?, [0.86, 0.72, 0.4, 1.0], true),
+        (regular(&cylinder, 48, 96, MeshOptions::default())?, [0.3, 0.55, 0.85, 1.0], false),
     ] {
+        if cut {
+            // The torus in front of the plane y = −0.75 (the camera's side) is cut away: the
+            // open tube shows the cylinder inside it and both loops, the upper one where
+            // the cylinder leaves the tube and the lower one where it enters.
+            let pos = &mesh.positions;
+            mesh.triangles.retain(|t| t.iter().all(|&i| pos[i as usize][1] >= -0.75));
+        }
         scene.meshes.push(MeshItem {
             positions: f(&mesh.positions),
             normals: f(&mesh.normals),
@@ -139,18 +146,18 @@ pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
     let mut points = 0;
     for b in &branches {
         let pts = b.points.iter().map(|p| [p.x as f32, p.y as f32, p.z as f32]).collect();
-        scene.lines.push(LineItem { points: pts, closed: b.closed, color: [0.85, 0.1, 0.1, 1.0], width: 4.0 });
+        scene.lines.push(LineItem { points: pts, closed: b.closed, color: [0.8, 0.05, 0.05, 1.0], width: 5.0 });
         points += b.points.len();
     }
-    let bounds = scene.bounds().ok_or_else(|| anyhow!("torus_cylinder: an empty scene"))?;
-    scene.camera = Some(Camera::fit(bounds, -0.5, 0.55, 4.0 / 3.0));
+    // Framed on the cylinder and the tube around it.
+    scene.camera = Some(Camera::fit(([0.6, -1.5, -1.7], [5.4, 1.5, 1.7]), -0.35, 0.3, 4.0 / 3.0));
     let img = renderer.render(&scene, 800, 600)?;
     let closed = branches.iter().filter(|b| b.closed).count();
     let caption = format!(
-        "A torus (R = 3, r = 1) pierced through its tube by a cylinder of radius 0.5: the {} loops of their intersection \
-         curve (red, {closed} closed, {points} points within 10⁻⁵ of the curve; the lower loop shows where it passes \
-         under the tube), found by subdividing pairs of patches until their normals cannot be parallel and traced \
-         by marching (what `splinekit intersect` prints for two surfaces).",
+        "A torus (R = 3, r = 1, cut open in front) pierced through its tube by a cylinder of radius 0.5, and the {} \
+         loops of their intersection curve (red; {closed} closed, {points} points within 10⁻⁵ of the curve): seeds by \
+         subdividing pairs of patches until their normals cannot be parallel, then marching (what `splinekit \
+         intersect` prints for two surfaces).",
         branches.len()
     );
     Ok(("torus_cylinder".to_string(), caption, img))

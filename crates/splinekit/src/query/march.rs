@@ -124,7 +124,13 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
     /// within the tolerance (with the frames there), or `None`. The iteration stops once a
     /// step is below 10⁻⁸ of the parameters' scale and the surfaces agree: Newton's
     /// quadratic convergence leaves an error of the order of the square of that step.
-    fn correct(&self, x: [f64; 4], q: &Point<3>, t: &Point<3>, hold: Option<(usize, f64)>) -> Option<([f64; 4], Frames)> {
+    fn correct(
+        &self,
+        x: [f64; 4],
+        q: &Point<3>,
+        t: &Point<3>,
+        hold: Option<(usize, f64)>,
+    ) -> Option<([f64; 4], Frames)> {
         let mut x = self.wrap(x);
         let mut f = self.frames(&x);
         for _ in 0..MAX_NEWTON_ITERATIONS {

@@ -20,10 +20,10 @@
 
 use crate::Point;
 use crate::error::{Error, Result};
-use crate::query::surface_cover::SurfaceCover;
-use crate::query::surface_seeds::pair_seeds;
 use crate::query::bounds::Aabb;
 use crate::query::march::{MarchPoint, Marcher, StepEnd};
+use crate::query::surface_cover::SurfaceCover;
+use crate::query::surface_seeds::pair_seeds;
 use crate::surface::Surface;
 
 /// The most points on one branch.
@@ -106,7 +106,9 @@ fn near_polyline(points: &[Point<3>], q: &Point<3>, reach: f64) -> bool {
     while start + 1 < points.len() {
         let end = (start + 17).min(points.len());
         let run = &points[start..end];
-        if Aabb::around(run, 0.0).distance_to(q) <= reach && run.windows(2).any(|w| segment_distance(&w[0], &w[1], q) <= reach) {
+        if Aabb::around(run, 0.0).distance_to(q) <= reach
+            && run.windows(2).any(|w| segment_distance(&w[0], &w[1], q) <= reach)
+        {
             return true;
         }
         start = end - 1;

@@ -22,6 +22,7 @@
 //! centre. More than [`MAX_SEED_PAIRS`] pairs (surfaces that coincide over a region, whose
 //! normals are parallel everywhere) is an error.
 
+use crate::Point;
 use crate::curve::Interval;
 use crate::error::{Error, Result};
 use crate::query::march::{MarchPoint, Marcher};
@@ -29,7 +30,6 @@ use crate::query::normal_cone::normal_cone;
 use crate::query::surface_cover::{SearchPatch, SurfaceCover, SurfacePatch};
 use crate::query::tangent_cone::{TangentCone, angle};
 use crate::surface::Surface;
-use crate::Point;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::rc::Rc;
 

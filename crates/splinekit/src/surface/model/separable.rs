@@ -4,8 +4,8 @@
 use crate::Point;
 use crate::basis::binomial;
 use crate::curve::Interval;
-use crate::curve::model::{Term, TrigSeries};
 use crate::curve::model::trig::SinCosCache;
+use crate::curve::model::{Term, TrigSeries};
 use smallvec::SmallVec;
 
 /// A function of one variable with derivatives of every order.
@@ -148,7 +148,8 @@ impl SeparableSurface {
         for o in out[..count].iter_mut() {
             *o = Point::<3>::zeros();
         }
-        let (mut fu, mut gv) = (SmallVec::<[f64; 8]>::from_elem(0.0, du + 1), SmallVec::<[f64; 8]>::from_elem(0.0, dv + 1));
+        let (mut fu, mut gv) =
+            (SmallVec::<[f64; 8]>::from_elem(0.0, du + 1), SmallVec::<[f64; 8]>::from_elem(0.0, dv + 1));
         let mut cache = SinCosCache::default();
         for (c, terms) in self.coordinates.iter().enumerate() {
             for t in terms {
@@ -206,7 +207,10 @@ mod tests {
         let series = Factor::Series(TrigSeries {
             constant: 0.5,
             linear: -1.25,
-            terms: SmallVec::from_slice(&[Term::cos(2.0, 3.0), Term { amplitude: -0.7, frequency: 0.5, phase: 0.3, sine: true }]),
+            terms: SmallVec::from_slice(&[
+                Term::cos(2.0, 3.0),
+                Term { amplitude: -0.7, frequency: 0.5, phase: 0.3, sine: true },
+            ]),
         });
         let factors = [
             series.clone(),
