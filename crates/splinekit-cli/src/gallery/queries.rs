@@ -10,6 +10,7 @@ use splinekit::surface::BSplineSurface;
 use splinekit::surface::derived::RevolvedSurface;
 use splinekit::surface::model::Plane;
 use splinekit::surface::model::Torus;
+use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene};
 use splinekit_mesh::surface_mesh::regular;
 use splinekit_mesh::{MeshOptions, Polyline, Projection, SvgFigure};
 use splinekit_render::{Camera, Image, LineItem, MeshItem, RenderScene, Renderer};
@@ -111,8 +112,8 @@ pub fn contours() -> Result<Figure> {
     })
 }
 
-/// A rendered figure: file stem, caption, picture.
-pub type Rendered = (String, String, Image);
+/// A rendered figure: file stem, caption, picture, glb bytes.
+pub type Rendered = (String, String, Image, Vec<u8>);
 
 /// A torus (R 3, r 1) pierced by a cylinder of radius 0.5 about x = 3 through its tube, with
 /// the two loops of their intersection curve drawn over both (shaded offscreen).
@@ -124,33 +125,50 @@ pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
     let branches = intersect_surfaces(&torus, &cylinder, 1e-9, 1e-5)?;
     let f = |v: &[[f64; 3]]| v.iter().map(|p| p.map(|x| x as f32)).collect::<Vec<_>>();
     let mut scene = RenderScene::default();
-    for (mut mesh, color, cut) in [
-        (regular(&torus, 240, 120, MeshOptions::default())?, [0.86, 0.72, 0.4, 1.0], true),
-        (regular(&cylinder, 48, 96, MeshOptions::default())?, [0.3, 0.55, 0.85, 1.0], false),
+    let mut gltf = GltfScene::default();
+    for (name, mut mesh, color, cut) in [
+        ("torus", regular(&torus, 240, 120, MeshOptions::default())?, [0.86, 0.72, 0.4, 1.0], true),
+        ("cylinder", regular(&cylinder, 48, 96, MeshOptions::default())?, [0.3, 0.55, 0.85, 1.0], false),
     ] {
         if cut {
-            // The torus in front of the plane y = −0.75 (the camera's side) is cut away: the
-            // open tube shows the cylinder inside it and both loops, the upper one where
-            // the cylinder leaves the tube and the lower one where it enters.
-            let pos = &mesh.positions;
-            mesh.triangles.retain(|t| t.iter().all(|&i| pos[i as usize][1] >= -0.75));
+            // The ring of the torus is cut open along the meridians u = π and u = −0.22
+            // (the camera's side, in front of the cylinder at u = 0): the open tube shows
+            // the cylinder inside it and both loops, the upper one where the cylinder
+            // leaves the tube and the lower one where it enters.
+            let uv = &mesh.uvs;
+            mesh.triangles
+                .retain(|t| t.iter().all(|&i| uv[i as usize][0] <= 0.5 || uv[i as usize][0] >= 1.0 - 0.22 / TAU));
         }
         scene.meshes.push(MeshItem {
             positions: f(&mesh.positions),
             normals: f(&mesh.normals),
             color,
-            triangles: mesh.triangles,
+            triangles: mesh.triangles.clone(),
             ..Default::default()
+        });
+        gltf.objects.push(GltfObject {
+            name: name.to_string(),
+            geometry: GltfGeometry::Mesh(mesh),
+            color,
+            frames: vec![],
         });
     }
     let mut points = 0;
     for b in &branches {
         let pts = b.points.iter().map(|p| [p.x as f32, p.y as f32, p.z as f32]).collect();
-        scene.lines.push(LineItem { points: pts, closed: b.closed, color: [0.8, 0.05, 0.05, 1.0], width: 5.0 });
+        let red = [0.8, 0.05, 0.05, 1.0];
+        scene.lines.push(LineItem { points: pts, closed: b.closed, color: red, width: 5.0 });
+        let strip = b.points.iter().map(|p| [p.x, p.y, p.z]).collect();
+        gltf.objects.push(GltfObject {
+            name: "loop".to_string(),
+            geometry: GltfGeometry::LineStrip(strip),
+            color: red,
+            frames: vec![],
+        });
         points += b.points.len();
     }
     // Framed on the cylinder and the tube around it.
-    scene.camera = Some(Camera::fit(([0.6, -1.5, -1.7], [5.4, 1.5, 1.7]), -0.35, 0.3, 4.0 / 3.0));
+    scene.camera = Some(Camera::fit(([0.6, -1.5, -1.7], [5.4, 1.5, 1.7]), -1.2, 0.35, 4.0 / 3.0));
     let img = renderer.render(&scene, 800, 600)?;
     let closed = branches.iter().filter(|b| b.closed).count();
     let caption = format!(
@@ -160,7 +178,7 @@ pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
          intersect` prints for two surfaces).",
         branches.len()
     );
-    Ok(("torus_cylinder".to_string(), caption, img))
+    Ok(("torus_cylinder".to_string(), caption, img, gltf.to_glb()?))
 }
 
 #[cfg(test)]
