@@ -73,6 +73,11 @@ where
     A: Surface<3> + ?Sized,
     B: Surface<3> + ?Sized,
 {
+    // The centre off b's box: not on b there (a neighbour of b's may hold it, and is asked
+    // in its own pair).
+    if b.bounds.distance_to(&a.grid[4].point) > m.tolerance {
+        return false;
+    }
     let (iu, iv) = (grown(b.u()), grown(b.v()));
     [4usize, 0, 2, 6, 8].iter().all(|&k| {
         let p = a.grid[k].point;
