@@ -9,7 +9,8 @@
 //! a branch is closed when, after at least three steps and farther than four closing
 //! distances from its seed, a step passes within the closing distance (4·chord +
 //! 10·tolerance) of it. Closed loops are found however small unless they lie inside
-//! patches narrower than [`crate::query::surface_seeds::MIN_WIDTH`] of both domains (see [`crate::query::surface_seeds`]).
+//! boxes below [`crate::query::surface_seeds::TOUCH_SIZE`] of the shapes' size (see
+//! [`crate::query::surface_seeds`]).
 //! Touching surfaces (parallel normals along the curve) are not traced: marching stops
 //! there and says so.
 //!

@@ -11,13 +11,15 @@
 //! leaf: Newton's method with minimum-norm steps from the centres of the two patches
 //! ([`Marcher::converge`], kept within the pair's parameter boxes grown by their width on
 //! each side) puts a seed on the curve where it crosses the pair. Other pairs are split —
-//! the patch with the larger box into four — down to [`MIN_WIDTH`] of the domains, where a
-//! pair is a leaf whatever its cones (a tangential contact or a loop smaller than that).
+//! the patch with the wider normals (or larger box) into four — until both boxes are below
+//! [`TOUCH_SIZE`] of the shapes' size or the patches narrower than [`MIN_WIDTH`] of the
+//! domains, where a pair is a leaf whatever its cones (a tangential contact, or a loop
+//! smaller than that).
 //!
-//! What this guarantees: every closed loop passes through at least two leaf pairs (it
-//! cannot lie inside one), every branch through an examined pair's boxes is in a leaf, and
-//! no loop is missed for being small unless it lies inside patches narrower than
-//! [`MIN_WIDTH`] of both domains. Each leaf's seed comes from one Newton iteration from its
+//! What this guarantees: every closed loop passes through at least two leaf pairs unless it
+//! lies in a pair of boxes smaller than [`TOUCH_SIZE`] of the shapes' size (so loops
+//! wider than that are never missed for being small), and every branch through an examined
+//! pair's boxes is in a leaf. Each leaf's seed comes from one Newton iteration from its
 //! centre, which on flat transversal patches converges to the curve's point nearest the
 //! centre. More than [`MAX_SEED_PAIRS`] pairs (surfaces that coincide over a region, whose
 //! normals are parallel everywhere) is an error.
@@ -42,6 +44,9 @@ pub const MIN_WIDTH: f64 = 1.0 / 4096.0;
 /// Pairs whose normals may be parallel are checked for coinciding surfaces once both boxes
 /// are below this fraction of the shapes' size.
 pub const COINCIDENCE_SIZE: f64 = 1.0 / 16.0;
+
+/// A pair whose boxes are both below this fraction of the shapes' size is a leaf.
+pub const TOUCH_SIZE: f64 = 1e-3;
 
 /// The most pairs of patches the seeding examines.
 pub const MAX_SEED_PAIRS: usize = 200_000;
@@ -166,7 +171,10 @@ where
             ));
         }
         let leaf = parted && cone_a.half_angle <= FLAT && cone_b.half_angle <= FLAT;
-        if leaf || (!split_a && !split_b) {
+        // Both boxes below TOUCH_SIZE of the shapes: a leaf whatever its cones (surfaces that
+        // touch along a curve would otherwise be split along all of it down to MIN_WIDTH).
+        let touch = a.bounds.diagonal().max(b.bounds.diagonal()) <= TOUCH_SIZE * size;
+        if leaf || touch || (!split_a && !split_b) {
             let x = [a.u().lerp(0.5), a.v().lerp(0.5), b.u().lerp(0.5), b.v().lerp(0.5)];
             let within = [grown(a.u()), grown(a.v()), grown(b.u()), grown(b.v())];
             if let Some(p) = m.converge(x, &within).and_then(|x| m.point(x, &zero)) {
