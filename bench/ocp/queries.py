@@ -17,7 +17,7 @@ import time
 from OCP.gp import gp_Ax3, gp_Dir, gp_Pnt, gp_Pnt2d
 from OCP.OCP.collections import Array1_double, Array1_gp_Pnt, Array1_gp_Pnt2d, Array1_int, Array2_gp_Pnt
 from OCP.Geom import (Geom_BSplineCurve, Geom_BSplineSurface, Geom_CylindricalSurface, Geom_Plane,
-                      Geom_ToroidalSurface)
+                      Geom_SphericalSurface, Geom_ToroidalSurface)
 from OCP.Geom import Geom_OffsetSurface
 from OCP.Geom2d import Geom2d_BSplineCurve, Geom2d_OffsetCurve
 from OCP.Geom2dAPI import Geom2dAPI_InterCurveCurve, Geom2dAPI_ProjectPointOnCurve
@@ -266,8 +266,19 @@ def intersect_surfaces(binary):
     sdoc, bicubic = bicubic_surface()
     plane = {"type": "plane", "origin": [-10, -10, 0.2], "u_axis": [30, 0, 0], "v_axis": [0, 30, 0]}
     occ_plane = Geom_Plane(gp_Pnt(0, 0, 0.2), z)
+    # A small loop: the unit sphere cut by the plane n·x = cos 0.02 with n its normal at
+    # (u, v) = (π/8, 0), between the isocurves the old seeding looked along.
+    u, theta = math.pi / 8, 0.02
+    n, e1, e2 = [math.cos(u), math.sin(u), 0.0], [-math.sin(u), math.cos(u), 0.0], [0.0, 0.0, 1.0]
+    centre = [c * math.cos(theta) for c in n]
+    small = {"type": "plane", "origin": [c - 1.75 * a - 1.75 * b for c, a, b in zip(centre, e1, e2)],
+             "u_axis": [3.5 * a for a in e1], "v_axis": [3.5 * b for b in e2]}
+    occ_small = Geom_Plane(gp_Pnt(*centre), gp_Dir(*n))
+    occ_sphere = Geom_SphericalSurface(gp_Ax3(gp_Pnt(0, 0, 0), z), 1.0)
     for name, (da, db), (oa, ob) in [("torus–cylinder", (torus, cylinder), (occ_torus, occ_cylinder)),
-                                     ("bicubic 8×8 patch–plane z = 0.2", (sdoc, plane), (bicubic, occ_plane))]:
+                                     ("bicubic 8×8 patch–plane z = 0.2", (sdoc, plane), (bicubic, occ_plane)),
+                                     ("small loop: plane–unit sphere, radius sin 0.02", (small, {"type": "sphere", "radius": 1.0}),
+                                      (occ_small, occ_sphere))]:
         with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
             json.dump(db, f)
         ours, elapsed = splinekit(binary, da, "intersect", f.name, "--chord", "1e-5")

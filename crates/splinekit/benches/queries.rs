@@ -7,7 +7,7 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use splinekit::Point;
 use splinekit::curve::BSplineCurve;
 use splinekit::curve::model::Line;
-use splinekit::query::{SurfaceProjector, intersect_curves, intersect_surfaces};
+use splinekit::query::{SurfaceProjector, intersect_curves, intersect_surfaces, self_intersections};
 use splinekit::surface::BSplineSurface;
 use splinekit::surface::derived::RevolvedSurface;
 use splinekit::surface::model::Torus;
@@ -63,6 +63,19 @@ fn bench(c: &mut Criterion) {
     let cylinder = RevolvedSurface::new(Box::new(line), axis.0, axis.1, std::f64::consts::TAU).unwrap();
     g.bench_function("torus-cylinder intersection curve (two loops, chord 1e-5)", |b| {
         b.iter(|| intersect_surfaces(black_box(&torus), black_box(&cylinder), 1e-9, 1e-5).unwrap().len())
+    });
+    let windings = 32;
+    let n = 16 * windings;
+    let pts: Vec<Point<2>> = (0..n)
+        .map(|i| {
+            let t = i as f64 / (n - 1) as f64 * std::f64::consts::TAU;
+            let w = windings as f64 * t;
+            Point::<2>::new(w.cos() + 0.3 * t.cos(), w.sin() + 0.3 * t.sin())
+        })
+        .collect();
+    let winding = BSplineCurve::clamped_uniform(3, pts).unwrap();
+    g.bench_function("self-intersections of a cubic B-spline winding 32 times (962 crossings)", |b| {
+        b.iter(|| self_intersections(black_box(&winding), 1e-9).unwrap().points.len())
     });
     g.finish();
 }

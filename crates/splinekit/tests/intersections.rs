@@ -201,3 +201,32 @@ fn coincident_shapes_are_refused_quickly() {
     let e = intersect_surfaces(&torus, &torus, 1e-9, 1e-4).unwrap_err().to_string();
     assert!(e.contains("coincide over a region"), "{e}");
 }
+
+/// A unit sphere cut by the plane n·x = cos θ, n the sphere's normal at (u, v) = (π/8, 0):
+/// a circle of radius sin θ about n·cos θ. The loop lies between the sphere's isocurves at
+/// u = 0, π/4 and v = ±π/14 and between the plane's, where seeding by eight isocurves per
+/// direction did not look; subdivision until the patches' normals cannot be parallel must
+/// find it, down to loops a few thousandths wide.
+#[test]
+fn small_loops_of_a_plane_near_a_sphere_are_found() {
+    let sphere = Sphere::new(1.0).unwrap();
+    let u = std::f64::consts::PI / 8.0;
+    let n = p3(u.cos(), u.sin(), 0.0);
+    let (e1, e2) = (p3(-u.sin(), u.cos(), 0.0), p3(0.0, 0.0, 1.0));
+    for theta in [0.1f64, 0.02, 0.003] {
+        let centre = n * theta.cos();
+        let plane = Plane::new(centre - e1 * 1.75 - e2 * 1.75, e1 * 3.5, e2 * 3.5).unwrap();
+        let radius = theta.sin();
+        let chord = 1e-3 * radius;
+        let r = intersect_surfaces(&plane, &sphere, 1e-12, chord).unwrap();
+        assert_eq!(r.len(), 1, "θ = {theta}: {} branches", r.len());
+        assert!(r[0].closed && r[0].early_stop.is_none(), "θ = {theta}: {:?}", r[0].early_stop);
+        on_both(&plane, &sphere, &r, 1e-12);
+        for p in &r[0].points {
+            assert!(((p - centre).norm() - radius).abs() < 1e-11 && (p - centre).dot(&n).abs() < 1e-11, "{p:?}");
+        }
+        let length: f64 = r[0].points.windows(2).map(|w| (w[1] - w[0]).norm()).sum();
+        let full = std::f64::consts::TAU * radius;
+        assert!(length > (1.0 - 1e-2) * full && length <= full, "θ = {theta}: length {length} of {full}");
+    }
+}

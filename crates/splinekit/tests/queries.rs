@@ -449,6 +449,68 @@ mod intersections {
     }
 }
 
+/// Self-intersections of a cubic B-spline that winds `windings` times about a centre that
+/// drifts around a circle of radius 0.3 (every winding crosses the others; the drift stops
+/// short of a full turn so that the ends do not meet), against
+/// an independent count: proper crossings of non-adjacent segments of a dense polyline.
+#[test]
+fn a_many_times_winding_bspline_crosses_itself_where_its_polyline_does() {
+    use splinekit::query::self_intersections;
+    let windings = 8;
+    let n = 16 * windings;
+    let pts: Vec<Point<2>> = (0..n)
+        .map(|i| {
+            let t = i as f64 / (n - 1) as f64 * 0.97 * TAU;
+            let w = windings as f64 * t;
+            p2(w.cos() + 0.3 * t.cos(), w.sin() + 0.3 * t.sin())
+        })
+        .collect();
+    let c = BSplineCurve::clamped_uniform(3, pts).unwrap();
+    let r = self_intersections(&c, 1e-10).unwrap();
+    assert!(r.overlaps.is_empty());
+    for p in &r.points {
+        assert!(p.t_b - p.t_a > 1e-3 && (c.point(p.t_a) - c.point(p.t_b)).norm() < 1e-9, "{p:?}");
+    }
+    // The polyline's crossings, found through a grid of cells.
+    let m = 40_000;
+    let poly: Vec<Point<2>> = (0..=m).map(|k| c.point(k as f64 / m as f64)).collect();
+    let cell = 0.02;
+    let key = |p: &Point<2>| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
+    let mut grid: std::collections::HashMap<(i64, i64), Vec<usize>> = std::collections::HashMap::new();
+    for i in 0..m {
+        let (a, b) = (key(&poly[i]), key(&poly[i + 1]));
+        for x in a.0.min(b.0)..=a.0.max(b.0) {
+            for y in a.1.min(b.1)..=a.1.max(b.1) {
+                grid.entry((x, y)).or_default().push(i);
+            }
+        }
+    }
+    let cross = |i: usize, j: usize| {
+        let (p, q, r, s) = (poly[i], poly[i + 1], poly[j], poly[j + 1]);
+        let side = |a: &Point<2>, b: &Point<2>, c: &Point<2>| (b - a).perp(&(c - a));
+        side(&p, &q, &r) * side(&p, &q, &s) < 0.0 && side(&r, &s, &p) * side(&r, &s, &q) < 0.0
+    };
+    let mut found = std::collections::HashSet::new();
+    for segs in grid.values() {
+        for (k, &i) in segs.iter().enumerate() {
+            for &j in &segs[k + 1..] {
+                let (i, j) = (i.min(j), i.max(j));
+                if j > i + 1 && cross(i, j) {
+                    found.insert((i, j));
+                }
+            }
+        }
+    }
+    assert_eq!(r.points.len(), found.len(), "splinekit {} crossings, the polyline {}", r.points.len(), found.len());
+    for &(i, j) in &found {
+        let (ti, tj) = (i as f64 / m as f64, j as f64 / m as f64);
+        assert!(
+            r.points.iter().any(|p| (p.t_a - ti).abs() < 2.0 / m as f64 && (p.t_b - tj).abs() < 2.0 / m as f64),
+            "the polyline crosses itself near t = {ti}, {tj}"
+        );
+    }
+}
+
 mod arc_length {
     use super::*;
     use splinekit::curve::model::Helix;

@@ -117,6 +117,10 @@ fn rendered(folder: &Folder, renderer: &Renderer) -> Result<Vec<Entry>> {
         folder.write(&format!("{stem}.glb"), &glb)?;
         rendered.push(Entry { file: format!("{stem}.png"), gltf: Some(format!("{stem}.glb")), step: None, caption });
     }
+    let (stem, caption, img, glb) = queries::torus_cylinder(renderer)?;
+    folder.write(&format!("{stem}.png"), &img.to_png())?;
+    folder.write(&format!("{stem}.glb"), &glb)?;
+    rendered.push(Entry { file: format!("{stem}.png"), gltf: Some(format!("{stem}.glb")), step: None, caption });
     bar.finish_and_clear();
     Ok(rendered)
 }

@@ -3,12 +3,19 @@
 
 use anyhow::{Result, anyhow};
 use splinekit::Point;
+use splinekit::curve::model::Line;
 use splinekit::curve::{BSplineCurve, Curve};
 use splinekit::query::{intersect_curves, intersect_surfaces, offset_curve};
 use splinekit::surface::BSplineSurface;
+use splinekit::surface::derived::RevolvedSurface;
 use splinekit::surface::model::Plane;
-use splinekit_mesh::{Polyline, Projection, SvgFigure};
+use splinekit::surface::model::Torus;
+use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene};
+use splinekit_mesh::surface_mesh::regular;
+use splinekit_mesh::{MeshOptions, Polyline, Projection, SvgFigure};
+use splinekit_render::{Camera, Image, LineItem, MeshItem, RenderScene, Renderer};
 use splinekit_scene::ShapeDocument;
+use std::f64::consts::TAU;
 
 use super::figures::Figure;
 
@@ -103,6 +110,75 @@ pub fn contours() -> Result<Figure> {
         ),
         svg: fig.render()?,
     })
+}
+
+/// A rendered figure: file stem, caption, picture, glb bytes.
+pub type Rendered = (String, String, Image, Vec<u8>);
+
+/// A torus (R 3, r 1) pierced by a cylinder of radius 0.5 about x = 3 through its tube, with
+/// the two loops of their intersection curve drawn over both (shaded offscreen).
+pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
+    let torus = Torus::new(3.0, 1.0)?;
+    let line = Line::new(Point::<3>::new(3.5, 0.0, -1.6), Point::<3>::new(3.5, 0.0, 1.6))?;
+    let cylinder =
+        RevolvedSurface::new(Box::new(line), Point::<3>::new(3.0, 0.0, 0.0), Point::<3>::new(0.0, 0.0, 1.0), TAU)?;
+    let branches = intersect_surfaces(&torus, &cylinder, 1e-9, 1e-5)?;
+    let f = |v: &[[f64; 3]]| v.iter().map(|p| p.map(|x| x as f32)).collect::<Vec<_>>();
+    let mut scene = RenderScene::default();
+    let mut gltf = GltfScene::default();
+    for (name, mut mesh, color, cut) in [
+        ("torus", regular(&torus, 240, 120, MeshOptions::default())?, [0.86, 0.72, 0.4, 1.0], true),
+        ("cylinder", regular(&cylinder, 48, 96, MeshOptions::default())?, [0.3, 0.55, 0.85, 1.0], false),
+    ] {
+        if cut {
+            // The ring of the torus is cut open along the meridians u = π and u = −0.22
+            // (the camera's side, in front of the cylinder at u = 0): the open tube shows
+            // the cylinder inside it and both loops, the upper one where the cylinder
+            // leaves the tube and the lower one where it enters.
+            let uv = &mesh.uvs;
+            mesh.triangles
+                .retain(|t| t.iter().all(|&i| uv[i as usize][0] <= 0.5 || uv[i as usize][0] >= 1.0 - 0.22 / TAU));
+        }
+        scene.meshes.push(MeshItem {
+            positions: f(&mesh.positions),
+            normals: f(&mesh.normals),
+            color,
+            triangles: mesh.triangles.clone(),
+            ..Default::default()
+        });
+        gltf.objects.push(GltfObject {
+            name: name.to_string(),
+            geometry: GltfGeometry::Mesh(mesh),
+            color,
+            frames: vec![],
+        });
+    }
+    let mut points = 0;
+    for b in &branches {
+        let pts = b.points.iter().map(|p| [p.x as f32, p.y as f32, p.z as f32]).collect();
+        let red = [0.8, 0.05, 0.05, 1.0];
+        scene.lines.push(LineItem { points: pts, closed: b.closed, color: red, width: 5.0 });
+        let strip = b.points.iter().map(|p| [p.x, p.y, p.z]).collect();
+        gltf.objects.push(GltfObject {
+            name: "loop".to_string(),
+            geometry: GltfGeometry::LineStrip(strip),
+            color: red,
+            frames: vec![],
+        });
+        points += b.points.len();
+    }
+    // Framed on the cylinder and the tube around it.
+    scene.camera = Some(Camera::fit(([0.6, -1.5, -1.7], [5.4, 1.5, 1.7]), -1.2, 0.35, 4.0 / 3.0));
+    let img = renderer.render(&scene, 800, 600)?;
+    let closed = branches.iter().filter(|b| b.closed).count();
+    let caption = format!(
+        "A torus (R = 3, r = 1, cut open in front) pierced through its tube by a cylinder of radius 0.5, and the {} \
+         loops of their intersection curve (red; {closed} closed, {points} points within 10⁻⁵ of the curve): seeds by \
+         subdividing pairs of patches until their normals cannot be parallel, then marching (what `splinekit \
+         intersect` prints for two surfaces).",
+        branches.len()
+    );
+    Ok(("torus_cylinder".to_string(), caption, img, gltf.to_glb()?))
 }
 
 #[cfg(test)]

@@ -23,6 +23,7 @@
 use crate::Point;
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result};
+use crate::query::bounds::Aabb;
 use crate::query::curve_cover::{CurveCover, SearchPiece};
 use crate::query::tangent_cone::TangentCone;
 
@@ -221,7 +222,7 @@ impl<'c, const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized> Search<'c, 
                 }
                 continue;
             }
-            if !adjacent && self.coincide(x.interval(), y.interval(), dx.min(dy)) {
+            if !adjacent && self.coincide((x.interval(), &x.bounds), (y.interval(), &y.bounds), dx.min(dy)) {
                 continue;
             }
             if dx >= dy {
@@ -284,16 +285,32 @@ impl<'c, const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized> Search<'c, 
     /// Whether the pieces run along each other within the tolerance; if so, records the
     /// stretch. Only pieces much larger than the tolerance are tested (small pieces near a
     /// crossing lie within the tolerance of each other without coinciding).
-    fn coincide(&mut self, ia: Interval, ib: Interval, size: f64) -> bool {
+    /// The pieces come with their boxes (which hold them): a point farther than the
+    /// tolerance from the other's box is not on it, and when fewer than two of the four
+    /// ends can lie on the other piece there is no stretch, without searching.
+    fn coincide(&mut self, (ia, box_a): (Interval, &Aabb<D>), (ib, box_b): (Interval, &Aabb<D>), size: f64) -> bool {
         if size <= 100.0 * self.tolerance {
             return false;
         }
-        let near_b = |p: &Point<D>| nearest_in(self.b, ib, p);
-        let near_a = |p: &Point<D>| nearest_in(self.a, ia, p);
-        let samples_a: Vec<f64> = (0..=4).map(|k| ia.lerp(k as f64 / 4.0)).collect();
-        let on_b: Vec<(f64, f64)> = samples_a.iter().map(|&s| near_b(&self.a.point(s))).collect();
-        let on_a: Vec<(f64, f64)> = [ib.start, ib.end].iter().map(|&t| near_a(&self.b.point(t))).collect();
         let tol = self.tolerance;
+        let far = (f64::NAN, f64::INFINITY);
+        let near_b = |p: &Point<D>| if box_b.distance_to(p) > tol { far } else { nearest_in(self.b, ib, p) };
+        let near_a = |p: &Point<D>| if box_a.distance_to(p) > tol { far } else { nearest_in(self.a, ia, p) };
+        let samples_a: Vec<f64> = (0..=4).map(|k| ia.lerp(k as f64 / 4.0)).collect();
+        let on_a: Vec<(f64, f64)> = [ib.start, ib.end].iter().map(|&t| near_a(&self.b.point(t))).collect();
+        let (first, last) = (near_b(&self.a.point(ia.start)), near_b(&self.a.point(ia.end)));
+        if [first, last].iter().chain(&on_a).filter(|e| e.1 <= tol).count() < 2 {
+            return false;
+        }
+        let on_b: Vec<(f64, f64)> = samples_a
+            .iter()
+            .enumerate()
+            .map(|(k, &s)| match k {
+                0 => first,
+                4 => last,
+                _ => near_b(&self.a.point(s)),
+            })
+            .collect();
         // The stretch of a that lies on b: from its own ends where they lie on b, or from
         // the images of b's ends.
         let mut ends_a: Vec<f64> = Vec::new();
@@ -382,9 +399,13 @@ fn cover_size<const D: usize>(cover: &CurveCover<D>) -> f64 {
 /// samples, then Newton steps on (c − p)·c′ clamped to the range.
 fn nearest_in<const D: usize, C: Curve<D> + ?Sized>(curve: &C, range: Interval, p: &Point<D>) -> (f64, f64) {
     let mut t = (0..=8)
-        .map(|k| range.lerp(k as f64 / 8.0))
-        .min_by(|x, y| (curve.point(*x) - p).norm().total_cmp(&(curve.point(*y) - p).norm()))
-        .unwrap();
+        .map(|k| {
+            let t = range.lerp(k as f64 / 8.0);
+            (t, (curve.point(t) - p).norm())
+        })
+        .min_by(|x, y| x.1.total_cmp(&y.1))
+        .unwrap()
+        .0;
     let mut o = [Point::<D>::zeros(); 3];
     for _ in 0..30 {
         curve.eval(t, &mut o);

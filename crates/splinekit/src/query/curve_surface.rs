@@ -80,11 +80,27 @@ where
     C: Curve<3> + ?Sized,
     S: Surface<3> + ?Sized,
 {
+    intersect_with_cover(curve, surface, &SurfaceCover::new(surface), tolerance, max_pairs)
+}
+
+/// [`intersect_with_limit`] with the surface's cover built beforehand (`sc` must be
+/// `SurfaceCover::new(surface)`), so that many curves against one surface share it.
+pub fn intersect_with_cover<C, S>(
+    curve: &C,
+    surface: &S,
+    sc: &SurfaceCover<3>,
+    tolerance: f64,
+    max_pairs: usize,
+) -> Result<Vec<CurveSurfaceIntersection>>
+where
+    C: Curve<3> + ?Sized,
+    S: Surface<3> + ?Sized,
+{
     if !(tolerance > 0.0 && tolerance.is_finite()) {
         return Err(Error::invalid("tolerance", format!("must be finite and > 0, got {tolerance}")));
     }
-    let (cc, sc) = (CurveCover::new(curve), SurfaceCover::new(surface));
-    let size = cover_diagonal(&cc, &sc);
+    let cc = CurveCover::new(curve);
+    let size = cover_diagonal(&cc, sc);
     let mut search = Search { curve, surface, tolerance, size, max_pairs, found: Vec::new() };
     let mut pairs = Vec::new();
     for n in &cc.nodes[..cc.roots] {
@@ -92,7 +108,7 @@ where
             pairs.push((SearchPiece::Cached(n), SearchPatch::Cached(m)));
         }
     }
-    search.run(pairs, &cc, &sc)?;
+    search.run(pairs, &cc, sc)?;
     Ok(search.finish())
 }
 
@@ -232,7 +248,13 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
                     break;
                 }
                 let (gu, gv) = (su.dot(&r), sv.dot(&r));
-                (u, v) = (iu.clamp(u + (c * gu - b * gv) / det), iv.clamp(v + (a * gv - b * gu) / det));
+                let next = (iu.clamp(u + (c * gu - b * gv) / det), iv.clamp(v + (a * gv - b * gu) / det));
+                let moved = (next.0 - u).abs() <= 4.0 * f64::EPSILON * u.abs().max(iu.length())
+                    && (next.1 - v).abs() <= 4.0 * f64::EPSILON * v.abs().max(iv.length());
+                (u, v) = next;
+                if moved {
+                    break;
+                }
             }
             (self.surface.point(u, v) - p).norm() <= self.tolerance
         })

@@ -36,6 +36,9 @@ pub struct MarchPoint {
     pub point: Point<3>,
     /// Unit tangent N_a × N_b.
     pub tangent: Point<3>,
+    /// The first partials there: (∂S_a/∂u, ∂S_a/∂v, ∂S_b/∂u, ∂S_b/∂v), which the next
+    /// step's predictor uses.
+    pub partials: [Point<3>; 4],
 }
 
 /// How a step ended.
@@ -100,7 +103,11 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
     /// The point at x with its unit tangent oriented along `along` (any sign when zero);
     /// `None` where the normals are parallel.
     pub fn point(&self, x: [f64; 4], along: &Point<3>) -> Option<MarchPoint> {
-        let f = self.frames(&x);
+        Self::point_with(x, &self.frames(&x), along)
+    }
+
+    /// [`Marcher::point`] with the surfaces' frames at x already evaluated.
+    fn point_with(x: [f64; 4], f: &Frames, along: &Point<3>) -> Option<MarchPoint> {
         let (na, nb) = (f.a[1].cross(&f.a[2]), f.b[1].cross(&f.b[2]));
         let t = na.cross(&nb);
         let scale = na.norm() * nb.norm();
@@ -109,16 +116,24 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
         }
         let t = t.normalize();
         let tangent = if t.dot(along) < 0.0 { -t } else { t };
-        Some(MarchPoint { x, point: f.a[0], tangent })
+        Some(MarchPoint { x, point: f.a[0], tangent, partials: [f.a[1], f.a[2], f.b[1], f.b[2]] })
     }
 
     /// Newton's method from x on S_a = S_b and the fourth equation: (S_a − q)·T = 0, or
     /// `x[k] = value` for `hold = Some((k, value))`. The parameters where the surfaces agree
-    /// within the tolerance, or `None`.
-    pub fn correct(&self, mut x: [f64; 4], q: &Point<3>, t: &Point<3>, hold: Option<(usize, f64)>) -> Option<[f64; 4]> {
+    /// within the tolerance (with the frames there), or `None`. The iteration stops once a
+    /// step is below 10⁻⁸ of the parameters' scale and the surfaces agree: Newton's
+    /// quadratic convergence leaves an error of the order of the square of that step.
+    fn correct(
+        &self,
+        x: [f64; 4],
+        q: &Point<3>,
+        t: &Point<3>,
+        hold: Option<(usize, f64)>,
+    ) -> Option<([f64; 4], Frames)> {
+        let mut x = self.wrap(x);
+        let mut f = self.frames(&x);
         for _ in 0..MAX_NEWTON_ITERATIONS {
-            x = self.wrap(x);
-            let f = self.frames(&x);
             let g = f.a[0] - f.b[0];
             let mut j = Matrix4::<f64>::zeros();
             for r in 0..3 {
@@ -140,8 +155,49 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
             };
             let step = j.lu().solve(&Vector4::new(g.x, g.y, g.z, last))?;
             let size = step.amax();
+            if !size.is_finite() {
+                return None;
+            }
             for k in 0..4 {
                 x[k] -= step[k];
+            }
+            x = self.wrap(x);
+            f = self.frames(&x);
+            let scale = 1.0 + x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            if size <= 1e-14 * scale || (size <= 1e-8 * scale && (f.a[0] - f.b[0]).norm() <= self.tolerance) {
+                break;
+            }
+        }
+        ((f.a[0] - f.b[0]).norm() <= self.tolerance).then_some((x, f))
+    }
+
+    /// Newton's method with minimum-norm steps on S_a − S_b = 0 (three equations in four
+    /// unknowns) from x, staying inside `within` (per parameter, before wrapping; open
+    /// parameters are also clamped to their domains): the nearby point of the intersection
+    /// curve, or `None` when the iteration leaves `within`, the Jacobian loses rank or the
+    /// surfaces do not agree within the tolerance at the end.
+    pub fn converge(&self, mut x: [f64; 4], within: &[Interval; 4]) -> Option<[f64; 4]> {
+        let d = self.domains();
+        for _ in 0..MAX_NEWTON_ITERATIONS {
+            let f = self.frames(&x);
+            let g = f.a[0] - f.b[0];
+            let cols = [f.a[1], f.a[2], -f.b[1], -f.b[2]];
+            let mut jjt = nalgebra::Matrix3::<f64>::zeros();
+            for c in &cols {
+                jjt += c * c.transpose();
+            }
+            let y = jjt.cholesky()?.solve(&g);
+            let mut size = 0.0f64;
+            for k in 0..4 {
+                let step = cols[k].dot(&y);
+                size = size.max(step.abs());
+                x[k] -= step;
+                if !(x[k] >= within[k].start && x[k] <= within[k].end) {
+                    return None;
+                }
+                if !d[k].1 {
+                    x[k] = d[k].0.clamp(x[k]);
+                }
             }
             if !size.is_finite() {
                 return None;
@@ -155,14 +211,16 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
         ((f.a[0] - f.b[0]).norm() <= self.tolerance).then_some(x)
     }
 
-    /// The parameter increments that move both surfaces by the vector `d` (least squares).
-    fn predict(&self, x: &[f64; 4], d: &Point<3>) -> Option<[f64; 4]> {
-        let f = self.frames(x);
-        let solve = |fr: &[Point<3>; 3]| -> Option<Vector2<f64>> {
-            let m = Matrix2::new(fr[1].dot(&fr[1]), fr[1].dot(&fr[2]), fr[1].dot(&fr[2]), fr[2].dot(&fr[2]));
-            m.lu().solve(&Vector2::new(fr[1].dot(d), fr[2].dot(d)))
+    /// The parameter increments from `p` that move both surfaces by the vector `d` (least
+    /// squares on the partials at `p`).
+    fn predict(p: &MarchPoint, d: &Point<3>) -> Option<[f64; 4]> {
+        let solve = |su: &Point<3>, sv: &Point<3>| -> Option<Vector2<f64>> {
+            let m = Matrix2::new(su.dot(su), su.dot(sv), su.dot(sv), sv.dot(sv));
+            m.lu().solve(&Vector2::new(su.dot(d), sv.dot(d)))
         };
-        let (da, db) = (solve(&f.a)?, solve(&f.b)?);
+        let [au, av, bu, bv] = &p.partials;
+        let (da, db) = (solve(au, av)?, solve(bu, bv)?);
+        let x = &p.x;
         Some([x[0] + da[0], x[1] + da[1], x[2] + db[0], x[3] + db[1]])
     }
 
@@ -183,10 +241,12 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
         best
     }
 
-    /// One step of length about h from `p` (see the module documentation).
+    /// One step of length about h from `p` (see the module documentation). The next step
+    /// length aims at 0.8 of the chord error and of [`MAX_TURN`] (the sagitta grows as the
+    /// square of the step, the turn linearly), at most twice this one.
     pub fn step(&self, p: &MarchPoint, mut h: f64) -> StepEnd {
         for _ in 0..MAX_HALVINGS {
-            let Some(mut to) = self.predict(&p.x, &(p.tangent * h)) else { return StepEnd::StepLimit };
+            let Some(mut to) = Self::predict(p, &(p.tangent * h)) else { return StepEnd::StepLimit };
             let unwrapped = p.x;
             let exit = self.exit(&unwrapped, &to);
             let mut len = h;
@@ -196,7 +256,7 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
             }
             let q = p.point + p.tangent * len;
             let corrected = self.correct(to, &q, &p.tangent, exit.map(|(_, k, v)| (k, v)));
-            let next = corrected.and_then(|x| self.point(x, &p.tangent));
+            let next = corrected.as_ref().and_then(|(x, f)| Self::point_with(*x, f, &p.tangent));
             let Some(next) = next else {
                 if corrected.is_some() {
                     return StepEnd::Tangential;
@@ -206,14 +266,17 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
             };
             let turn = 2.0 * ((next.tangent - p.tangent).norm() / 2.0).min(1.0).asin();
             let forward = (next.point - p.point).dot(&p.tangent) > 0.0 || len == 0.0;
-            if turn > MAX_TURN || len * turn / 8.0 > self.chord || !forward {
+            let sagitta = len * turn / 8.0;
+            if turn > MAX_TURN || sagitta > self.chord || !forward {
                 h *= 0.5;
                 continue;
             }
             if exit.is_some() {
                 return StepEnd::Boundary(next);
             }
-            let grow = if len * turn / 8.0 < 0.25 * self.chord { (1.5 * h).min(self.max_step) } else { h };
+            let by_chord = if sagitta > 0.0 { (0.8 * self.chord / sagitta).sqrt() } else { 2.0 };
+            let by_turn = if turn > 0.0 { 0.8 * MAX_TURN / turn } else { 2.0 };
+            let grow = (h * by_chord.min(by_turn).clamp(0.5, 2.0)).min(self.max_step);
             return StepEnd::Inside(next, grow);
         }
         StepEnd::StepLimit

@@ -25,6 +25,7 @@ pub mod project_surface;
 pub mod slope;
 pub mod surface_cover;
 pub mod surface_intersection;
+pub mod surface_seeds;
 pub mod surface_slope;
 pub mod tangent_cone;
 

@@ -1,35 +1,31 @@
 //! Intersection curves of two surfaces in 3-D by seeded marching.
 //!
-//! Seeds: the intersections ([`intersect_with_limit`]) of [`SEED_LINES`] isocurves in
-//! each direction of each surface (its boundary included) with the other surface. From
-//! each seed not already on a traced branch, the curve is followed by [`Marcher::step`]
+//! Seeds: [`pair_seeds`] subdivides pairs of patches of the two surfaces' covers until
+//! their normals cannot be parallel (no closed loop fits inside such a pair) and puts a
+//! seed by Newton's method on the curve in each such pair whose boxes meet. From each
+//! seed not already on a traced branch, the curve is followed by [`Marcher::step`]
 //! (predictor along N_a × N_b, Newton correction onto both surfaces, step control by the
 //! chord error) in both directions until it leaves through a domain boundary or closes:
 //! a branch is closed when, after at least three steps and farther than four closing
 //! distances from its seed, a step passes within the closing distance (4·chord +
-//! 10·tolerance) of it. Every branch that crosses one
-//! of the seed isocurves is found; a closed loop lying entirely inside one cell of both
-//! isocurve grids is not. Touching surfaces (parallel normals along the curve) are not
-//! traced: marching stops there and says so.
+//! 10·tolerance) of it. Closed loops are found however small unless they lie inside
+//! boxes below [`crate::query::surface_seeds::TOUCH_SIZE`] of the shapes' size (see
+//! [`crate::query::surface_seeds`]).
+//! Touching surfaces (parallel normals along the curve) are not traced: marching stops
+//! there and says so.
 //!
-//! Limits: [`MAX_POINTS`] points per branch and [`MAX_BRANCHES`] branches; a branch that
-//! stops for a limit, a step that cannot be accepted or parallel normals carries an
-//! [`EarlyStop`].
+//! Limits: [`MAX_POINTS`] points per branch, [`MAX_BRANCHES`] branches and
+//! [`crate::query::surface_seeds::MAX_SEED_PAIRS`] pairs of patches while seeding (surfaces
+//! that coincide over a region: an error); a branch that stops for a limit, a step that
+//! cannot be accepted or parallel normals carries an [`EarlyStop`].
 
 use crate::Point;
-use crate::curve::Interval;
 use crate::error::{Error, Result};
-use crate::query::curve_surface::intersect_with_limit;
+use crate::query::bounds::Aabb;
 use crate::query::march::{MarchPoint, Marcher, StepEnd};
+use crate::query::surface_cover::SurfaceCover;
+use crate::query::surface_seeds::pair_seeds;
 use crate::surface::Surface;
-use crate::surface::iso_curve::{Direction, IsoCurve};
-
-/// Isocurves per direction and surface that seed the marching.
-pub const SEED_LINES: usize = 8;
-
-/// The most pairs of pieces the seeding of one isocurve examines: an isocurve that lies in
-/// the other surface gives up there (the isocurves across it seed that branch).
-pub const SEED_PAIRS: usize = 5_000;
 
 /// The most points on one branch.
 pub const MAX_POINTS: usize = 200_000;
@@ -79,7 +75,8 @@ where
     let size = extent(a).max(extent(b));
     let marcher = Marcher { a, b, tolerance, chord, max_step: size / 16.0 };
     let mut branches: Vec<IntersectionBranch> = Vec::new();
-    for seed in seeds(&marcher)? {
+    let (cover_a, cover_b) = (SurfaceCover::new(a), SurfaceCover::new(b));
+    for seed in pair_seeds(&marcher, &cover_a, &cover_b)? {
         let reach = 4.0 * chord + 10.0 * tolerance;
         if branches.iter().any(|br| near_polyline(&br.points, &seed.point, reach)) {
             continue;
@@ -100,59 +97,24 @@ fn extent<S: Surface<3> + ?Sized>(s: &S) -> f64 {
     crate::query::bounds::Aabb::around(&pts, 0.0).diagonal()
 }
 
-/// The parameters of the seed isocurves across `domain`: [`SEED_LINES`] evenly spaced, ends
-/// included (a closed direction's seam once).
-fn lines(domain: Interval, closed: bool) -> Vec<f64> {
-    let n = SEED_LINES;
-    let denom = if closed { n } else { n - 1 } as f64;
-    (0..n).map(|k| domain.lerp(k as f64 / denom)).collect()
-}
-
-/// Seeds from the isocurves of each surface against the other, u- and v-lines in turn.
-/// Isocurves of both directions of one surface that lie in the other (their search gives
-/// up) mean the surfaces coincide over a region: an error.
-fn seeds<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(m: &Marcher<'_, A, B>) -> Result<Vec<MarchPoint>> {
-    let mut out = Vec::new();
-    let zero = Point::<3>::zeros();
-    for first in [true, false] {
-        let (du, dv) = if first { (m.a.domain_u(), m.a.domain_v()) } else { (m.b.domain_u(), m.b.domain_v()) };
-        let (cu, cv) =
-            if first { (m.a.is_closed_u(), m.a.is_closed_v()) } else { (m.b.is_closed_u(), m.b.is_closed_v()) };
-        let (lu, lv) = (lines(du, cu), lines(dv, cv));
-        let mut lost = [false; 2];
-        for (k, dir) in (0..SEED_LINES).flat_map(|k| [(k, Direction::U), (k, Direction::V)]) {
-            let value = if dir == Direction::U { lu[k] } else { lv[k] };
-            let hits = if first {
-                intersect_with_limit(&IsoCurve::new(m.a, dir, value), m.b, m.tolerance, SEED_PAIRS)
-            } else {
-                intersect_with_limit(&IsoCurve::new(m.b, dir, value), m.a, m.tolerance, SEED_PAIRS)
-            };
-            let Ok(hits) = hits else {
-                lost[(dir == Direction::V) as usize] = true;
-                if lost[0] && lost[1] {
-                    return Err(Error::numerical(
-                        "surface intersection",
-                        "the surfaces coincide over a region (isocurves of both directions of one lie in the other)",
-                    ));
-                }
-                continue;
-            };
-            for h in hits {
-                let on = if dir == Direction::U { [value, h.t] } else { [h.t, value] };
-                let x = if first { [on[0], on[1], h.u, h.v] } else { [h.u, h.v, on[0], on[1]] };
-                out.extend(m.point(x, &zero));
-            }
-        }
-    }
-    Ok(out)
-}
-
-/// Whether `q` lies within `reach` of a segment of the polyline.
+/// Whether `q` lies within `reach` of a segment of the polyline (runs of 16 segments whose
+/// box is farther are skipped).
 fn near_polyline(points: &[Point<3>], q: &Point<3>, reach: f64) -> bool {
     if points.len() == 1 {
         return (points[0] - q).norm() <= reach;
     }
-    points.windows(2).any(|w| segment_distance(&w[0], &w[1], q) <= reach)
+    let mut start = 0;
+    while start + 1 < points.len() {
+        let end = (start + 17).min(points.len());
+        let run = &points[start..end];
+        if Aabb::around(run, 0.0).distance_to(q) <= reach
+            && run.windows(2).any(|w| segment_distance(&w[0], &w[1], q) <= reach)
+        {
+            return true;
+        }
+        start = end - 1;
+    }
+    false
 }
 
 fn segment_distance(p: &Point<3>, r: &Point<3>, q: &Point<3>) -> f64 {

@@ -38,7 +38,9 @@ impl<const D: usize> TangentCone<D> {
             return all;
         }
         let axis = chord.normalize();
-        let spread = legs.iter().map(|l| angle(&axis, &l.normalize())).fold(0.0f64, f64::max);
+        // The angle grows with the chord |axis − l̂|, so one arcsine of the longest chord.
+        let far = legs.iter().map(|l| (axis - l.normalize()).norm()).fold(0.0f64, f64::max);
+        let spread = 2.0 * (far / 2.0).min(1.0).asin();
         let widen = (slack / shortest).min(1.0).asin();
         TangentCone { axis, half_angle: (spread + widen).min(std::f64::consts::PI) }
     }

@@ -75,6 +75,62 @@ impl TrigSeries {
         }
         v
     }
+
+    /// The derivatives of orders 0, 1, …, `out.len()` − 1 at t into `out` (the values of
+    /// [`TrigSeries::derivative`]), with one sine and cosine per term for all orders.
+    #[inline]
+    pub fn derivatives(&self, t: f64, out: &mut [f64]) {
+        self.derivatives_cached(t, out, &mut SinCosCache::default());
+    }
+
+    /// [`TrigSeries::derivatives`] that looks up and keeps the sines and cosines in `cache`
+    /// (a surface's terms share their angles: the torus has seven trigonometric factors
+    /// and two angles).
+    #[inline]
+    pub fn derivatives_cached(&self, t: f64, out: &mut [f64], cache: &mut SinCosCache) {
+        for (k, o) in out.iter_mut().enumerate() {
+            *o = match k {
+                0 => self.constant + self.linear * t,
+                1 => self.linear,
+                _ => 0.0,
+            };
+        }
+        for term in &self.terms {
+            let (s, c) = cache.sin_cos(term.frequency * t + term.phase);
+            let mut power = 1.0;
+            for (k, o) in out.iter_mut().enumerate() {
+                let base = match (term.sine, k % 4) {
+                    (false, 0) | (true, 1) => c,
+                    (false, 1) | (true, 2) => -s,
+                    (false, 2) | (true, 3) => -c,
+                    _ => s,
+                };
+                *o += term.amplitude * power * base;
+                power *= term.frequency;
+            }
+        }
+    }
+}
+
+/// The last few angles whose sine and cosine were computed, with them.
+#[derive(Debug, Clone, Default)]
+pub struct SinCosCache {
+    entries: SmallVec<[(f64, f64, f64); 8]>,
+}
+
+impl SinCosCache {
+    /// (sin x, cos x), computed once per distinct x while the cache has room.
+    #[inline]
+    pub fn sin_cos(&mut self, x: f64) -> (f64, f64) {
+        if let Some(&(_, s, c)) = self.entries.iter().find(|e| e.0.to_bits() == x.to_bits()) {
+            return (s, c);
+        }
+        let (s, c) = x.sin_cos();
+        if self.entries.len() < 8 {
+            self.entries.push((x, s, c));
+        }
+        (s, c)
+    }
 }
 
 /// A 3-D curve with trigonometric-series coordinates on a domain.

@@ -4,7 +4,9 @@
 use crate::Point;
 use crate::basis::binomial;
 use crate::curve::Interval;
+use crate::curve::model::trig::SinCosCache;
 use crate::curve::model::{Term, TrigSeries};
+use smallvec::SmallVec;
 
 /// A function of one variable with derivatives of every order.
 #[derive(Debug, Clone, PartialEq)]
@@ -64,6 +66,38 @@ impl Factor {
             }
         }
     }
+
+    /// The derivatives of orders 0, 1, …, `out.len()` − 1 at t into `out`: the values of
+    /// [`Factor::derivative`], with one sine and cosine per series term for all orders.
+    pub fn derivatives(&self, t: f64, out: &mut [f64]) {
+        self.derivatives_cached(t, out, &mut SinCosCache::default());
+    }
+
+    /// [`Factor::derivatives`] sharing the sines and cosines of `cache`.
+    pub fn derivatives_cached(&self, t: f64, out: &mut [f64], cache: &mut SinCosCache) {
+        match self {
+            Factor::Series(s) => s.derivatives_cached(t, out, cache),
+            Factor::Polynomial(c) if c.len() == 1 => {
+                for (k, o) in out.iter_mut().enumerate() {
+                    *o = if k == 0 { c[0] } else { 0.0 };
+                }
+            }
+            Factor::Product(f, g) => {
+                let n = out.len();
+                let (mut a, mut b) = (SmallVec::<[f64; 8]>::from_elem(0.0, n), SmallVec::<[f64; 8]>::from_elem(0.0, n));
+                f.derivatives_cached(t, &mut a, cache);
+                g.derivatives_cached(t, &mut b, cache);
+                for (k, o) in out.iter_mut().enumerate() {
+                    *o = (0..=k).map(|j| binomial(k, j) * a[j] * b[k - j]).sum();
+                }
+            }
+            _ => {
+                for (k, o) in out.iter_mut().enumerate() {
+                    *o = self.derivative(t, k);
+                }
+            }
+        }
+    }
 }
 
 /// One separable term a·f(u)·g(v).
@@ -110,11 +144,21 @@ impl SeparableSurface {
         } else {
             self.domain_v.clamp(v)
         };
-        for i in 0..=du {
-            for j in 0..=dv {
-                let o = &mut out[i * (dv + 1) + j];
-                for (c, terms) in self.coordinates.iter().enumerate() {
-                    o[c] = terms.iter().map(|t| t.coefficient * t.u.derivative(u, i) * t.v.derivative(v, j)).sum();
+        let count = (du + 1) * (dv + 1);
+        for o in out[..count].iter_mut() {
+            *o = Point::<3>::zeros();
+        }
+        let (mut fu, mut gv) =
+            (SmallVec::<[f64; 8]>::from_elem(0.0, du + 1), SmallVec::<[f64; 8]>::from_elem(0.0, dv + 1));
+        let mut cache = SinCosCache::default();
+        for (c, terms) in self.coordinates.iter().enumerate() {
+            for t in terms {
+                t.u.derivatives_cached(u, &mut fu, &mut cache);
+                t.v.derivatives_cached(v, &mut gv, &mut cache);
+                for i in 0..=du {
+                    for j in 0..=dv {
+                        out[i * (dv + 1) + j][c] += t.coefficient * fu[i] * gv[j];
+                    }
                 }
             }
         }
@@ -151,5 +195,38 @@ pub(crate) fn positive(field: &str, v: f64) -> crate::Result<f64> {
         Ok(v)
     } else {
         Err(crate::Error::invalid(field, format!("must be positive and finite, got {v}")))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn all_orders_at_once_match_one_order_at_a_time() {
+        let series = Factor::Series(TrigSeries {
+            constant: 0.5,
+            linear: -1.25,
+            terms: SmallVec::from_slice(&[
+                Term::cos(2.0, 3.0),
+                Term { amplitude: -0.7, frequency: 0.5, phase: 0.3, sine: true },
+            ]),
+        });
+        let factors = [
+            series.clone(),
+            Factor::Polynomial(vec![1.0, -2.0, 0.5, 3.0]),
+            Factor::LogOneMinus(0.4),
+            series.times(Factor::Polynomial(vec![0.0, 2.0, 1.0])),
+        ];
+        for f in &factors {
+            for t in [-0.9, 0.0, 0.37, 1.7] {
+                let mut all = [0.0; 6];
+                f.derivatives(t, &mut all);
+                for (k, v) in all.iter().enumerate() {
+                    let one = f.derivative(t, k);
+                    assert!((v - one).abs() <= 1e-12 * one.abs().max(1.0), "{f:?} order {k} at {t}: {v} vs {one}");
+                }
+            }
+        }
     }
 }

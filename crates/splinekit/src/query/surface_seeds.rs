@@ -1,0 +1,204 @@
+//! Seeds for marching along the intersection curve of two surfaces: subdivision of pairs
+//! of patches of the two surfaces' covers until their normals cannot be parallel.
+//!
+//! A pair of patches is dropped when their boxes (grown by the tolerance) are apart. A pair
+//! whose [`normal_cone`]s are apart — the angle between the cone axes, as lines, exceeds
+//! the sum of the half-angles, so no normal of one patch is parallel to a normal of the
+//! other — holds no closed loop of the intersection curve: a closed loop bounding a disc on
+//! each patch has a point on each with parallel normals (Sederberg and Meyers, 1988; the
+//! signed height of one surface over the other along the loop's disc has a critical point).
+//! Such a pair, once both patches are also [`FLAT`] (normal half-angles at most that), is a
+//! leaf: Newton's method with minimum-norm steps from the centres of the two patches
+//! ([`Marcher::converge`], kept within the pair's parameter boxes grown by their width on
+//! each side) puts a seed on the curve where it crosses the pair. Other pairs are split —
+//! the patch with the wider normals (or larger box) into four — until both boxes are below
+//! [`TOUCH_SIZE`] of the shapes' size or the patches narrower than [`MIN_WIDTH`] of the
+//! domains, where a pair is a leaf whatever its cones (a tangential contact, or a loop
+//! smaller than that).
+//!
+//! What this guarantees: every closed loop passes through at least two leaf pairs unless it
+//! lies in a pair of boxes smaller than [`TOUCH_SIZE`] of the shapes' size (so loops
+//! wider than that are never missed for being small), and every branch through an examined
+//! pair's boxes is in a leaf. Each leaf's seed comes from one Newton iteration from its
+//! centre, which on flat transversal patches converges to the curve's point nearest the
+//! centre. More than [`MAX_SEED_PAIRS`] pairs (surfaces that coincide over a region, whose
+//! normals are parallel everywhere) is an error.
+
+use crate::Point;
+use crate::curve::Interval;
+use crate::error::{Error, Result};
+use crate::query::march::{MarchPoint, Marcher};
+use crate::query::normal_cone::normal_cone;
+use crate::query::surface_cover::{SearchPatch, SurfaceCover, SurfacePatch};
+use crate::query::tangent_cone::{TangentCone, angle};
+use crate::surface::Surface;
+use std::f64::consts::{FRAC_PI_2, PI};
+use std::rc::Rc;
+
+/// The largest normal half-angle (radians) of the patches of a leaf pair.
+pub const FLAT: f64 = 0.5;
+
+/// Patches narrower than this fraction of their domain (in both directions) are not split.
+pub const MIN_WIDTH: f64 = 1.0 / 4096.0;
+
+/// Pairs whose normals may be parallel are checked for coinciding surfaces once both boxes
+/// are below this fraction of the shapes' size.
+pub const COINCIDENCE_SIZE: f64 = 1.0 / 16.0;
+
+/// A pair whose boxes are both below this fraction of the shapes' size is a leaf.
+pub const TOUCH_SIZE: f64 = 1e-3;
+
+/// The most pairs of patches the seeding examines.
+pub const MAX_SEED_PAIRS: usize = 200_000;
+
+/// Whether no normal in `a` is parallel to one in `b`.
+fn apart(a: &TangentCone<3>, b: &TangentCone<3>) -> bool {
+    if a.half_angle >= FRAC_PI_2 || b.half_angle >= FRAC_PI_2 {
+        return false;
+    }
+    let between = angle(&a.axis, &b.axis);
+    between.min(PI - between) > a.half_angle + b.half_angle
+}
+
+/// Whether the patch can still be split (wider than [`MIN_WIDTH`] of a domain).
+fn splittable(p: &SurfacePatch<3>, cover: &SurfaceCover<3>) -> bool {
+    p.u().length() > MIN_WIDTH * cover.domain_u.length() || p.v().length() > MIN_WIDTH * cover.domain_v.length()
+}
+
+/// The first root box of a cover.
+fn a_root_box(c: &SurfaceCover<3>) -> crate::query::bounds::Aabb<3> {
+    c.nodes[0].patch.bounds
+}
+
+/// Whether the centre and corners of patch `a` lie on `m.b` near patch `b` within the
+/// tolerance (Gauss–Newton for the nearest point from b's centre, clamped to b's box grown
+/// by its width).
+fn coincide<A, B>(m: &Marcher<'_, A, B>, a: &SurfacePatch<3>, b: &SurfacePatch<3>) -> bool
+where
+    A: Surface<3> + ?Sized,
+    B: Surface<3> + ?Sized,
+{
+    // The centre off b's box: not on b there (a neighbour of b's may hold it, and is asked
+    // in its own pair).
+    if b.bounds.distance_to(&a.grid[4].point) > m.tolerance {
+        return false;
+    }
+    let (iu, iv) = (grown(b.u()), grown(b.v()));
+    [4usize, 0, 2, 6, 8].iter().all(|&k| {
+        let p = a.grid[k].point;
+        let (mut u, mut v) = (b.u().lerp(0.5), b.v().lerp(0.5));
+        let mut o = [Point::<3>::zeros(); 4];
+        for _ in 0..20 {
+            m.b.eval_partials(u, v, 1, 1, &mut o);
+            let (r, su, sv) = (p - o[0], o[2], o[1]);
+            let (e, f, g) = (su.dot(&su), su.dot(&sv), sv.dot(&sv));
+            let det = e * g - f * f;
+            if !(det.is_finite() && det > 0.0) {
+                return false;
+            }
+            let (gu, gv) = (su.dot(&r), sv.dot(&r));
+            let next = (iu.clamp(u + (g * gu - f * gv) / det), iv.clamp(v + (e * gv - f * gu) / det));
+            let still = (next.0 - u).abs() <= 1e-14 * (1.0 + u.abs()) && (next.1 - v).abs() <= 1e-14 * (1.0 + v.abs());
+            (u, v) = next;
+            if still {
+                break;
+            }
+        }
+        (m.b.point(u, v) - p).norm() <= m.tolerance
+    })
+}
+
+/// The parameter box of a patch grown by its width on each side.
+fn grown(i: Interval) -> Interval {
+    Interval::new(i.start - i.length(), i.end + i.length())
+}
+
+/// A patch shared between the pairs it is in, with its normal cone.
+fn node(p: SearchPatch<'_, 3>) -> Rc<(SearchPatch<'_, 3>, TangentCone<3>)> {
+    let cone = normal_cone(p.patch());
+    Rc::new((p, cone))
+}
+
+/// The seeds (see the module documentation), in the order the leaves were found.
+pub fn pair_seeds<A, B>(m: &Marcher<'_, A, B>, ca: &SurfaceCover<3>, cb: &SurfaceCover<3>) -> Result<Vec<MarchPoint>>
+where
+    A: Surface<3> + ?Sized,
+    B: Surface<3> + ?Sized,
+{
+    // Patches are shared between the pairs they are in, with their normal cones.
+    let roots_b: Vec<_> = cb.nodes[..cb.roots].iter().map(|n| node(SearchPatch::Cached(n))).collect();
+    let mut stack = Vec::new();
+    for na in &ca.nodes[..ca.roots] {
+        let na = node(SearchPatch::Cached(na));
+        for nb in &roots_b {
+            stack.push((na.clone(), nb.clone()));
+        }
+    }
+    let (mut seeds, mut examined) = (Vec::new(), 0usize);
+    let size = ca.nodes[..ca.roots]
+        .iter()
+        .chain(&cb.nodes[..cb.roots])
+        .fold(a_root_box(ca), |bx, n| bx.union(&n.patch.bounds))
+        .diagonal();
+    let zero = Point::<3>::zeros();
+    while let Some((na, nb)) = stack.pop() {
+        examined += 1;
+        if examined > MAX_SEED_PAIRS {
+            return Err(Error::numerical(
+                "surface intersection",
+                format!(
+                    "more than {MAX_SEED_PAIRS} pairs of patches whose normals may be parallel: the surfaces coincide \
+                     over a region (or touch along a long curve)"
+                ),
+            ));
+        }
+        let ((pa, cone_a), (pb, cone_b)) = (&*na, &*nb);
+        let (a, b) = (pa.patch(), pb.patch());
+        if !a.bounds.overlaps(&b.bounds, m.tolerance) {
+            continue;
+        }
+        let (split_a, split_b) = (splittable(a, ca), splittable(b, cb));
+        let parted = apart(cone_a, cone_b);
+        let small = a.bounds.diagonal().max(b.bounds.diagonal()) <= COINCIDENCE_SIZE * size;
+        if !parted && small && coincide(m, a, b) {
+            return Err(Error::numerical(
+                "surface intersection",
+                format!(
+                    "the surfaces coincide over a region (about ({:.6}, {:.6}) on the first)",
+                    a.u().lerp(0.5),
+                    a.v().lerp(0.5)
+                ),
+            ));
+        }
+        let leaf = parted && cone_a.half_angle <= FLAT && cone_b.half_angle <= FLAT;
+        // Both boxes below TOUCH_SIZE of the shapes: a leaf whatever its cones (surfaces that
+        // touch along a curve would otherwise be split along all of it down to MIN_WIDTH).
+        let touch = a.bounds.diagonal().max(b.bounds.diagonal()) <= TOUCH_SIZE * size;
+        if leaf || touch || (!split_a && !split_b) {
+            let x = [a.u().lerp(0.5), a.v().lerp(0.5), b.u().lerp(0.5), b.v().lerp(0.5)];
+            let within = [grown(a.u()), grown(a.v()), grown(b.u()), grown(b.v())];
+            if let Some(p) = m.converge(x, &within).and_then(|x| m.point(x, &zero)) {
+                seeds.push(p);
+            }
+            continue;
+        }
+        // Split the patch with the wider normals (the larger box when they are alike), so
+        // that the cones narrow fastest.
+        let first = if split_a && split_b {
+            let (wa, wb) = (cone_a.half_angle.min(FRAC_PI_2), cone_b.half_angle.min(FRAC_PI_2));
+            if (wa - wb).abs() > 1e-3 { wa > wb } else { a.bounds.diagonal() >= b.bounds.diagonal() }
+        } else {
+            split_a
+        };
+        if first {
+            for q in pa.split(ca, m.a) {
+                stack.push((node(q), nb.clone()));
+            }
+        } else {
+            for q in pb.split(cb, m.b) {
+                stack.push((na.clone(), node(q)));
+            }
+        }
+    }
+    Ok(seeds)
+}
