@@ -2,41 +2,13 @@
 //! one JSON line of median seconds, for bench/ocp/speed.py to set beside OpenCASCADE in
 //! the same run: `cargo run --release -p splinekit --example query_speed [REPEATS]`.
 
-use splinekit::Point;
-use splinekit::curve::BSplineCurve;
-use splinekit::curve::model::Line;
 use splinekit::query::{SurfaceProjector, intersect_curves, intersect_surfaces};
-use splinekit::surface::BSplineSurface;
-use splinekit::surface::derived::RevolvedSurface;
-use splinekit::surface::model::Torus;
 use std::hint::black_box;
 use std::time::Instant;
 
-fn bicubic() -> BSplineSurface<3> {
-    let net: Vec<Vec<Point<3>>> = (0..8)
-        .map(|i| (0..8).map(|j| Point::<3>::new(i as f64, j as f64, (i as f64).sin() * (j as f64).cos())).collect())
-        .collect();
-    BSplineSurface::clamped_uniform((3, 3), net).unwrap()
-}
-
-fn query_points() -> Vec<Point<3>> {
-    let side = 100;
-    let mut pts = Vec::with_capacity(side * side);
-    for a in 0..side {
-        for b in 0..side {
-            let x = -1.0 + 9.0 * (a as f64 + 0.5) / side as f64;
-            let y = -1.0 + 9.0 * (b as f64 + 0.5) / side as f64;
-            pts.push(Point::<3>::new(x, y, -2.0 + 4.0 * (3.0 * a as f64 + 7.0 * b as f64).sin().powi(2)));
-        }
-    }
-    pts
-}
-
-fn wavy_curves() -> (BSplineCurve<2>, BSplineCurve<2>) {
-    let a: Vec<Point<2>> = (0..100).map(|i| Point::<2>::new(0.1 * i as f64, (0.7 * i as f64).sin())).collect();
-    let b: Vec<Point<2>> = (0..100).map(|i| Point::<2>::new(0.1 * i as f64, 0.8 * (0.45 * i as f64).cos())).collect();
-    (BSplineCurve::clamped_uniform(3, a).unwrap(), BSplineCurve::clamped_uniform(3, b).unwrap())
-}
+#[path = "../benches/common/query_workloads.rs"]
+mod query_workloads;
+use query_workloads::{bicubic, query_points, torus_and_cylinder, wavy_curves};
 
 /// The median of `repeats` timings of `f` (seconds) and its last result.
 fn median<T>(repeats: usize, mut f: impl FnMut() -> T) -> (f64, T) {
@@ -66,15 +38,7 @@ fn main() {
     });
     let (ca, cb) = wavy_curves();
     let (curves, crossings) = median(repeats_of("curves"), || intersect_curves(&ca, &cb, 1e-9).unwrap().points.len());
-    let torus = Torus::new(3.0, 1.0).unwrap();
-    let line = Line::new(Point::<3>::new(3.5, 0.0, -2.0), Point::<3>::new(3.5, 0.0, 2.0)).unwrap();
-    let cylinder = RevolvedSurface::new(
-        Box::new(line),
-        Point::<3>::new(3.0, 0.0, 0.0),
-        Point::<3>::new(0.0, 0.0, 1.0),
-        std::f64::consts::TAU,
-    )
-    .unwrap();
+    let (torus, cylinder) = torus_and_cylinder();
     let (surfaces, branches) =
         median(repeats_of("surfaces"), || intersect_surfaces(&torus, &cylinder, 1e-9, 1e-5).unwrap());
     let closed = branches.iter().filter(|b| b.closed).count();
