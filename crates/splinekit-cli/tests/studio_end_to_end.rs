@@ -130,6 +130,31 @@ fn at((x, y): (f64, f64)) -> [String; 2] {
     [format!("{}", x.round()), format!("{}", y.round())]
 }
 
+/// Drags as a person does: the mouse to `path(0)`, the left button down, moves along
+/// `path(s)` for s = 1/steps … 1, the button up; `held` is a key held through the drag
+/// (R to rotate).
+fn drag(window: &str, path: impl Fn(f64) -> (f64, f64), steps: usize, held: Option<&str>) {
+    let [x, y] = at(path(0.0));
+    xdotool(&["mousemove", "--window", window, &x, &y]);
+    std::thread::sleep(Duration::from_millis(400));
+    if let Some(key) = held {
+        xdotool(&["keydown", key]);
+        std::thread::sleep(Duration::from_millis(200));
+    }
+    xdotool(&["mousedown", "1"]);
+    for step in 1..=steps {
+        let [x, y] = at(path(step as f64 / steps as f64));
+        xdotool(&["mousemove", "--window", window, &x, &y]);
+        std::thread::sleep(Duration::from_millis(80));
+    }
+    std::thread::sleep(Duration::from_millis(300));
+    xdotool(&["mouseup", "1"]);
+    if let Some(key) = held {
+        xdotool(&["keyup", key]);
+    }
+    std::thread::sleep(Duration::from_millis(300));
+}
+
 /// The settled handle report of the studio just started, and its window, focused.
 fn focused_window(report: &Path) -> (Value, String) {
     let report = settled_report(report);
@@ -148,20 +173,8 @@ fn drag_and_save(dir: &Path, doc: &Path) -> ((f64, f64), (f64, f64)) {
     let child = studio(doc, dir, "before.json", &["--screenshot", &view, "--window-screenshot", &whole]);
     let (report, window) = focused_window(&dir.join("before.json"));
     let from = handle(&report, LOCAL);
-    let [x, y] = at(from);
-    xdotool(&["mousemove", "--window", &window, &x, &y]);
-    std::thread::sleep(Duration::from_millis(400));
-    xdotool(&["mousedown", "1"]);
     let to = (from.0 + DRAG.0, from.1 + DRAG.1);
-    for step in 1..=12 {
-        let f = step as f64 / 12.0;
-        let [x, y] = at((from.0 + f * DRAG.0, from.1 + f * DRAG.1));
-        xdotool(&["mousemove", "--window", &window, &x, &y]);
-        std::thread::sleep(Duration::from_millis(80));
-    }
-    std::thread::sleep(Duration::from_millis(300));
-    xdotool(&["mouseup", "1"]);
-    std::thread::sleep(Duration::from_millis(300));
+    drag(&window, |f| (from.0 + f * DRAG.0, from.1 + f * DRAG.1), 12, None);
     xdotool(&["key", "ctrl+s"]);
     wait_for_json(doc, |v| v["objects"][0]["shape"]["transforms"].is_object(), "the saved document");
     xdotool(&["key", "ctrl+q"]);
@@ -278,21 +291,7 @@ fn a_local_rotating_about_a_pivot_is_rotated_by_hand() {
     let from = handle(&report, LOCAL);
     // Grab 8 pixels right of the handle and sweep a quarter turn around it, R held.
     let around = |a: f64| (from.0 + 8.0 * a.cos(), from.1 + 8.0 * a.sin());
-    let [x, y] = at(around(0.0));
-    xdotool(&["mousemove", "--window", &window, &x, &y]);
-    std::thread::sleep(Duration::from_millis(400));
-    xdotool(&["keydown", "r"]);
-    std::thread::sleep(Duration::from_millis(200));
-    xdotool(&["mousedown", "1"]);
-    for step in 1..=10 {
-        let [x, y] = at(around(std::f64::consts::FRAC_PI_2 * step as f64 / 10.0));
-        xdotool(&["mousemove", "--window", &window, &x, &y]);
-        std::thread::sleep(Duration::from_millis(80));
-    }
-    std::thread::sleep(Duration::from_millis(300));
-    xdotool(&["mouseup", "1"]);
-    xdotool(&["keyup", "r"]);
-    std::thread::sleep(Duration::from_millis(300));
+    drag(&window, |f| around(std::f64::consts::FRAC_PI_2 * f), 10, Some("r"));
     xdotool(&["key", "ctrl+s"]);
     let rotated = |v: &Value| v["objects"][0]["shape"]["transforms"][LOCAL.to_string()]["rotate"]["angle"] != 0.3;
     let saved = wait_for_json(&doc, rotated, "the saved document");
@@ -392,19 +391,7 @@ fn a_dragged_control_point_of_a_local_bezier_is_saved_and_renders_as_the_window_
         .find(|&i| local_point(&report, LOCAL, i).is_some_and(|(p, _)| inside(p) && inside((p.0 + BY.0, p.1 + BY.1))))
         .unwrap_or_else(|| panic!("a control point of local {LOCAL} well inside the view: {report}"));
     let (from, world) = local_point(&report, LOCAL, i).expect("shown");
-    let [x, y] = at(from);
-    xdotool(&["mousemove", "--window", &window, &x, &y]);
-    std::thread::sleep(Duration::from_millis(400));
-    xdotool(&["mousedown", "1"]);
-    for step in 1..=12 {
-        let f = step as f64 / 12.0;
-        let [x, y] = at((from.0 + f * BY.0, from.1 + f * BY.1));
-        xdotool(&["mousemove", "--window", &window, &x, &y]);
-        std::thread::sleep(Duration::from_millis(80));
-    }
-    std::thread::sleep(Duration::from_millis(300));
-    xdotool(&["mouseup", "1"]);
-    std::thread::sleep(Duration::from_millis(300));
+    drag(&window, |f| (from.0 + f * BY.0, from.1 + f * BY.1), 12, None);
     xdotool(&["key", "ctrl+s"]);
     let saved =
         wait_for_json(&doc, |v| v["objects"][0]["shape"]["local_control_points"].is_object(), "the saved document");
