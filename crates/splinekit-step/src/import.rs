@@ -6,6 +6,8 @@
 
 use std::collections::{BTreeMap, HashSet};
 
+use splinekit::axes::{OrthonormalAxes, unit_vector};
+
 use crate::error::{Result, StepError};
 use crate::geometry::{Axes, Curve, P3, SplineCurve, SplineSurface, Surface, cross, dot, expand_knots, norm};
 use crate::part21::{Instance, Param, StepFile};
@@ -253,12 +255,9 @@ fn checked_knots(what: &str, degree: usize, points: usize, values: &[f64], mults
     Ok(expand_knots(values, mults))
 }
 
+/// v/|v| (an error naming the direction when it is zero).
 fn unit(v: P3) -> Result<P3> {
-    let n = norm(v);
-    if !(n > 0.0 && n.is_finite()) {
-        return Err(StepError::plain("a direction has zero length"));
-    }
-    Ok(v.map(|c| c / n))
+    unit_vector(v, "direction").map_err(|e| StepError::plain(e.to_string()))
 }
 
 /// Follows references, marking what it reads.
@@ -339,7 +338,8 @@ impl Reader<'_> {
                 }
             };
             // Reference direction made orthogonal to the axis (ISO 10303-42 build_axes).
-            let x = unit(std::array::from_fn(|k| x0[k] - dot(x0, z) * z[k]))?;
+            let OrthonormalAxes { x, z, .. } =
+                OrthonormalAxes::build(z, x0).map_err(|e| StepError::plain(e.to_string()))?;
             Ok(Axes { origin, z, x })
         })
     }

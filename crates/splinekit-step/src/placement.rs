@@ -3,16 +3,19 @@
 //! directions by d ↦ d₁x + d₂y + d₃z; placements compose (their origin is a point, their
 //! axes directions), so every entity stays the same kind and keeps its parametrisation.
 
+use splinekit::axes::OrthonormalAxes;
+
 use crate::error::{Result, StepError};
-use crate::geometry::{Axes, Curve, P3, SplineCurve, SplineSurface, Surface, dot, norm};
+use crate::geometry::{Axes, Curve, P3, SplineCurve, SplineSurface, Surface};
 
 /// The frame as a map of points and directions.
 #[derive(Debug, Clone, Copy)]
 pub struct Placement(pub Axes);
 
 impl Placement {
-    /// The frame of a document's `origin`, `axis` and `ref_direction`: z = axis/|axis|, x the
-    /// part of `ref_direction` orthogonal to z, normalised (errors name the field).
+    /// The frame of a document's `origin`, `axis` and `ref_direction` ([`OrthonormalAxes`]:
+    /// z = axis/|axis|, x the part of `ref_direction` orthogonal to z, normalised; errors
+    /// name the field).
     pub fn of_frame(origin: &[f64], axis: &[f64], ref_direction: &[f64]) -> Result<Placement> {
         let three = |field: &str, v: &[f64]| -> Result<P3> {
             match v {
@@ -20,18 +23,9 @@ impl Placement {
                 _ => Err(StepError::plain(format!("{field}: expected 3 finite coordinates, got {v:?}"))),
             }
         };
-        let unit = |field: &str, v: P3| -> Result<P3> {
-            let n = norm(v);
-            if n > 0.0 {
-                Ok(v.map(|c| c / n))
-            } else {
-                Err(StepError::plain(format!("{field}: must be a non-zero vector not along the axis, got {v:?}")))
-            }
-        };
-        let z = unit("axis", three("axis", axis)?)?;
-        let d = unit("ref_direction", three("ref_direction", ref_direction)?)?;
-        let along = dot(d, z);
-        let x = unit("ref_direction", std::array::from_fn(|k| d[k] - along * z[k]))?;
+        let OrthonormalAxes { x, z, .. } =
+            OrthonormalAxes::build(three("axis", axis)?, three("ref_direction", ref_direction)?)
+                .map_err(|e| StepError::plain(e.to_string()))?;
         Ok(Placement(Axes { origin: three("origin", origin)?, z, x }))
     }
 

@@ -22,6 +22,7 @@
 
 #![warn(missing_docs)]
 
+pub mod axes;
 pub mod basis;
 pub mod blend;
 pub mod curve;

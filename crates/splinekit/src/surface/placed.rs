@@ -1,12 +1,13 @@
 //! Placed surfaces: a surface moved rigidly into a right-handed orthonormal frame, with its
 //! parameters kept (the `AXIS2_PLACEMENT_3D` of STEP's elementary surfaces).
 //!
-//! With the frame's x (the reference direction made orthogonal to the axis:
-//! x = (d − (d·z) z)/|d − (d·z) z|), y = z × x and z = axis/|axis|, the placed surface is
+//! With the frame's x, y, z ([`OrthonormalAxes`]: z along the axis, x the reference
+//! direction made orthogonal to it, y = z × x), the placed surface is
 //! P(u, v) = o + S₁(u, v) x + S₂(u, v) y + S₃(u, v) z, and every partial derivative is the
 //! rotated partial of S: ∂^{i+j}P/∂uⁱ∂vʲ = R ∂^{i+j}S/∂uⁱ∂vʲ with R = [x y z] (i + j ≥ 1).
 
 use crate::Point;
+use crate::axes::OrthonormalAxes;
 use crate::curve::Interval;
 use crate::error::{Error, Result};
 use crate::surface::Surface;
@@ -18,14 +19,6 @@ pub struct PlacedSurface<const D: usize> {
     origin: Point<D>,
     /// Columns x, y, z of the rotation (the first three coordinates).
     frame: [[f64; 3]; 3],
-}
-
-fn unit(v: [f64; 3], field: &str) -> Result<[f64; 3]> {
-    let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    if !(n.is_finite() && n > 0.0) {
-        return Err(Error::invalid(field, format!("must be a non-zero vector, got {v:?}")));
-    }
-    Ok(v.map(|c| c / n))
 }
 
 impl<const D: usize> PlacedSurface<D> {
@@ -40,14 +33,7 @@ impl<const D: usize> PlacedSurface<D> {
         if D < 3 {
             return Err(Error::invalid("origin", format!("a placement needs 3 dimensions, got {D}")));
         }
-        let z = unit(axis, "axis")?;
-        let d = unit(ref_direction, "ref_direction")?;
-        let dz = d[0] * z[0] + d[1] * z[1] + d[2] * z[2];
-        let x = std::array::from_fn(|k| d[k] - dz * z[k]);
-        let x = unit(x, "ref_direction").map_err(|_| {
-            Error::invalid("ref_direction", format!("must not be parallel to the axis {axis:?}, got {ref_direction:?}"))
-        })?;
-        let y = [z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]];
+        let OrthonormalAxes { x, y, z } = OrthonormalAxes::build(axis, ref_direction)?;
         let origin = Point::<D>::from_fn(|k, _| origin.get(k).copied().unwrap_or(0.0));
         Ok(PlacedSurface { surface, origin, frame: [x, y, z] })
     }
