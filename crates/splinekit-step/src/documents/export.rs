@@ -444,50 +444,36 @@ fn swept_surface(
     }))
 }
 
-/// The B-spline a blending-spline surface with Bézier locals and a polynomial B-function is:
-/// its degrees (m_u, m_v) and its distinct knots in u and v.
-struct PolynomialForm {
-    degrees: (usize, usize),
-    breaks_u: Vec<f64>,
-    breaks_v: Vec<f64>,
-}
-
-/// The [`PolynomialForm`] of a blending-spline surface; `None` for other surfaces.
-fn polynomial_blending_surface(doc: &SurfaceDocument) -> Result<Option<PolynomialForm>> {
-    let SurfaceDocument::BlendingSplineSurface(b) = doc else { return Ok(None) };
+/// The degrees (m_u, m_v) = (d_u + β, d_v + β) of the B-spline that a blending-spline surface
+/// with Bézier locals of degrees (d_u, d_v) and a polynomial B-function of degree β is (its
+/// knots are the blending spline's); `None` for other surfaces.
+fn polynomial_blending_degrees(doc: &SurfaceDocument) -> Option<(usize, usize)> {
+    let SurfaceDocument::BlendingSplineSurface(b) = doc else { return None };
     let local = b.local.as_ref().unwrap_or(&LocalPatchDoc::Bezier { degree: [3, 3] });
-    let (LocalPatchDoc::Bezier { degree }, Some(beta)) = (local, b.bfunction.as_ref().and_then(bfunction_degree))
-    else {
-        return Ok(None);
-    };
-    let built = b.surface::<3>().map_err(|e| plain("document", e))?;
-    let (ku, kv) = built.knots();
-    Ok(Some(PolynomialForm {
-        degrees: (degree[0] + beta, degree[1] + beta),
-        breaks_u: dedup(ku.values()),
-        breaks_v: dedup(kv.values()),
-    }))
+    match (local, b.bfunction.as_ref().and_then(bfunction_degree)) {
+        (LocalPatchDoc::Bezier { degree }, Some(beta)) => Some((degree[0] + beta, degree[1] + beta)),
+        _ => None,
+    }
 }
 
 /// The B-spline form of any other surface: exact for a blending spline with Bézier locals
 /// and a polynomial B-function, else a biquintic Hermite approximation within `tolerance`
-/// (blending splines on their own knots, others on a 4 × 4 start grid).
+/// (blending splines on their own knots, the kernel surface's breakpoints; others on a
+/// 4 × 4 start grid).
 fn fitted_surface(
     doc: &SurfaceDocument,
     kernel: &dyn KernelSurface<3>,
     domain: (Interval, Interval),
     tolerance: f64,
 ) -> Result<(Fitted<SplineSurface>, Form)> {
-    if let Some(f) = polynomial_blending_surface(doc)? {
-        let fitted = polynomial_surface(kernel, &f.breaks_u, &f.breaks_v, f.degrees)?;
-        return Ok((fitted, Form::ExactPolynomial { degree: f.degrees }));
+    let knots = || (kernel.breakpoints_u(), kernel.breakpoints_v());
+    if let Some(degrees) = polynomial_blending_degrees(doc) {
+        let (bu, bv) = knots();
+        let fitted = polynomial_surface(kernel, &bu, &bv, degrees)?;
+        return Ok((fitted, Form::ExactPolynomial { degree: degrees }));
     }
     let (bu, bv) = match doc {
-        SurfaceDocument::BlendingSplineSurface(b) => {
-            let built = b.surface::<3>().map_err(|e| plain("document", e))?;
-            let (ku, kv) = built.knots();
-            (dedup(ku.values()), dedup(kv.values()))
-        }
+        SurfaceDocument::BlendingSplineSurface(_) => knots(),
         _ => (uniform_breaks(domain.0, 4), uniform_breaks(domain.1, 4)),
     };
     Ok((hermite_surface(kernel, &bu, &bv, tolerance)?, Form::Approximated))
@@ -555,10 +541,7 @@ fn surface_exports_exactly(doc: &SurfaceDocument) -> bool {
         SurfaceDocument::Placed(p) => {
             !matches!(*p.surface, SurfaceDocument::Trimmed(_)) && surface_exports_exactly(&p.surface)
         }
-        other => {
-            matches!(elementary_surface(other), Ok(Some(_)))
-                || matches!(polynomial_blending_surface(other), Ok(Some(_)))
-        }
+        other => matches!(elementary_surface(other), Ok(Some(_))) || polynomial_blending_degrees(other).is_some(),
     }
 }
 
@@ -574,12 +557,6 @@ fn curve_exports_exactly(doc: &CurveDocument) -> bool {
         CurveDocument::BlendingSpline(b) => blending_polynomial_degree(b).is_some(),
         _ => false,
     }
-}
-
-fn dedup(v: &[f64]) -> Vec<f64> {
-    let mut v = v.to_vec();
-    v.dedup();
-    v
 }
 
 /// Exports any shape document.

@@ -444,6 +444,20 @@ impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
     fn is_closed_v(&self) -> bool {
         self.knots_v.is_closed()
     }
+    /// The knots: where the active patches change (as [`BlendingSplineCurve`]'s
+    /// breakpoints).
+    ///
+    /// [`BlendingSplineCurve`]: crate::blend::BlendingSplineCurve
+    fn breakpoints_u(&self) -> Vec<f64> {
+        let mut b = self.knots_u.values().to_vec();
+        b.dedup();
+        b
+    }
+    fn breakpoints_v(&self) -> Vec<f64> {
+        let mut b = self.knots_v.values().to_vec();
+        b.dedup();
+        b
+    }
 
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let su = self.knots_u.locate(u, Side::Right);
