@@ -578,18 +578,25 @@ impl Reader<'_> {
                         (lo, hi)
                     }
                 };
-                // A generatrix of a cone: its 3-D line runs by length, its pcurve (a unit
-                // line along v, as OpenCASCADE writes it) by the height v = t cos α.
-                let generatrix_scale = match (&surface, &space) {
-                    (Surface::Cone { semi_angle, .. }, Curve::Line { .. }) => semi_angle.cos(),
-                    _ => 1.0,
-                };
+                // A generatrix of a cone: its 3-D line runs by length, its pcurve (a line of
+                // constant u) by the height v of the cone's parametrisation, whatever the
+                // pcurve's speed and start; the pcurve's parameters at the edge's ends
+                // follow from their heights v = (p − origin)·z.
                 let trim = |c: &Curve| {
-                    let scale = match c {
-                        Curve::Line { direction, .. } if direction[0] == 0.0 => generatrix_scale,
-                        _ => 1.0,
+                    let (start, end) = match (&surface, &space, c) {
+                        (Surface::Cone { axes, .. }, Curve::Line { .. }, Curve::Line { origin, direction })
+                            if direction.len() >= 2 && direction[1] != 0.0 =>
+                        {
+                            let at = |p: P3| {
+                                let height = dot(std::array::from_fn(|k| p[k] - axes.origin[k]), axes.z);
+                                (height - origin.get(1).copied().unwrap_or(0.0)) / direction[1]
+                            };
+                            let (a, b) = (at(ends[0]), at(ends[1]));
+                            if same_sense { (a, b) } else { (b, a) }
+                        }
+                        _ => (lo, hi),
                     };
-                    Curve::Trimmed { basis: Box::new(c.clone()), start: lo * scale, end: hi * scale }
+                    Curve::Trimmed { basis: Box::new(c.clone()), start, end }
                 };
                 pieces.push((trim(&pcurves[0]), pcurves.get(1).map(|c| (edge_id, trim(c))), oriented == same_sense));
             }
