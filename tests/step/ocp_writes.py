@@ -4,7 +4,7 @@ OCP builds shapes — a B-spline curve and surface, rational ones (a NURBS circl
 sphere patch), a surface of revolution, a surface of linear extrusion, a trimmed face (a
 plate with a round hole), a box — and writes each with STEPControl_Writer. splinekit
 converts every file to a JSON document (`splinekit convert F.step -o F.json`, which must
-succeed with no unknown entity dropped silently), then evaluates each imported object at
+succeed with no entity left unread: no "not converted" warning), then evaluates each imported object at
 parameters spread over OpenCASCADE's bounds of the matching edge or face. Every OCC edge
 and face must be matched by one imported object whose points agree within 1e-9 of the
 shape's size; trimmed faces must also agree with OCC's face classifier on which of the
@@ -273,6 +273,9 @@ def judge(binary, workdir, name, shape):
     items = [("face", f) for f in faces] or [("curve", e) for e in occ_edges(shape)]
     if len(docs) != len(items):
         return [(False, f"{name}: splinekit imported {len(docs)} objects for OCC's {len(items)} ({notes.strip()})")]
+    if "not converted" in notes:
+        # Every entity of these files is read: a warning is an entity left behind.
+        return [(False, f"{name}: splinekit left entities unread: {notes.strip()}")]
     for kind, item in items:
         if kind == "curve":
             params, points = edge_samples(item)

@@ -124,6 +124,17 @@ pub fn import(file: &StepFile) -> Result<Imported> {
             Err(Unsupported::Bad(e)) => return Err(e),
         }
     }
+    // A placement passed over as structure (a representation's own frame, which places
+    // nothing) takes its point and directions with it.
+    for id in file.ids_of_type("AXIS2_PLACEMENT_3D") {
+        if !r.visited.contains(&id) {
+            let inst = file.get(id)?;
+            r.visited.extend(inst.records[0].params.iter().filter_map(|p| match p {
+                Param::Reference(part) => Some(*part),
+                _ => None,
+            }));
+        }
+    }
     for id in file.ids() {
         let t = file.type_of(id).unwrap_or("");
         if !r.visited.contains(&id) && !structural(t) {
@@ -414,6 +425,16 @@ impl Reader<'_> {
                     };
                     if !boolean(param(inst, 4)?)? {
                         return Err(Unsupported::Type("TRIMMED_CURVE (reversed sense)".into()));
+                    }
+                    // Trimming points given beside the parameters say the same (the
+                    // parameters are read; the points are not left behind as unread).
+                    for select in [param(inst, 2)?, param(inst, 3)?] {
+                        if let Param::List(items) = select {
+                            r.visited.extend(items.iter().filter_map(|i| match i {
+                                Param::Reference(point) => Some(*point),
+                                _ => None,
+                            }));
+                        }
                     }
                     Curve::Trimmed { basis: Box::new(basis), start, end }
                 }
