@@ -240,3 +240,23 @@ fn bad_counts_and_degrees_are_refused_with_the_field() {
     );
     assert!(e.err().unwrap().to_string().contains("local"));
 }
+
+/// The breakpoints (where queries cut patches) are the knots: increasing, from the start
+/// of the domain to its end, every local's knot among them and nothing between knots.
+#[test]
+fn breakpoints_are_the_knots() {
+    for (name, model) in models() {
+        let s = build(&model, (5, 4), PatchKind::Bezier(3, 3));
+        let (ku, kv) = s.knots();
+        for (breaks, knots, domain, count) in
+            [(s.breakpoints_u(), ku, s.domain_u(), 5), (s.breakpoints_v(), kv, s.domain_v(), 4)]
+        {
+            assert_eq!((breaks[0], *breaks.last().unwrap()), (domain.start, domain.end), "{name}");
+            assert!(breaks.windows(2).all(|w| w[0] < w[1]), "{name}: {breaks:?}");
+            for k in 0..count {
+                assert!(breaks.contains(&knots.centre(k)), "{name}: knot {k} missing from {breaks:?}");
+            }
+            assert!(breaks.len() <= count + 1, "{name}: {breaks:?} has points that are not knots");
+        }
+    }
+}
