@@ -42,7 +42,7 @@ impl CollocationLu {
         if knots.len() != n + p + 1 {
             return Err(Error::count("knots", format!("{} for {n} parameters of degree {p}", n + p + 1), knots.len()));
         }
-        if let Some(i) = params.windows(2).position(|w| !(w[1] > w[0])) {
+        if let Some(i) = params.windows(2).position(|w| w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater)) {
             return Err(Error::invalid("params", format!("must increase, got {} then {}", params[i], params[i + 1])));
         }
         let (start, end) = (knots[p], knots[n]);
