@@ -28,7 +28,7 @@ use crate::curve::Interval;
 use crate::error::{Error, Result};
 use crate::fit::interpolate_surface_on_knots;
 use crate::query::offset::{check_arguments, check_resolvable};
-use crate::surface::{BSplineSurface, Surface, unit_normal};
+use crate::surface::{BSplineSurface, Curvatures, FundamentalForms, Surface, unit_normal};
 use std::collections::{HashMap, HashSet};
 
 /// The most grid points (m_u · m_v) one surface offset may interpolate.
@@ -146,17 +146,24 @@ impl<'s, S: Surface<3> + ?Sized> OffsetCache<'s, S> {
         Ok(us.iter().map(|&u| vs.iter().map(|&v| self.values[&key(u, v)]).collect()).collect())
     }
 
-    /// 1 − d·k > 0 for both principal curvatures at every regular node not checked before,
+    /// 1 − d·k > 0 for both principal curvatures at every regular node not checked before
+    /// (second partials by [`Surface::eval_grid`] on the rows and columns that hold them),
     /// or an error.
     fn check_folds(&mut self, us: &[f64], vs: &[f64]) -> Result<()> {
         let d = self.distance;
-        for &u in us {
-            for &v in vs {
-                if !self.folds_checked.insert(key(u, v)) {
-                    continue;
-                }
-                let Some(c) = self.surface.curvatures(u, v) else { continue };
-                for k in [c.principal.0, c.principal.1] {
+        let new = |u: f64, v: f64| !self.folds_checked.contains(&key(u, v));
+        let rows: Vec<f64> = us.iter().copied().filter(|&u| vs.iter().any(|&v| new(u, v))).collect();
+        let cols: Vec<f64> = vs.iter().copied().filter(|&v| rows.iter().any(|&u| new(u, v))).collect();
+        let mut out = vec![Point::<3>::zeros(); rows.len() * cols.len() * 9];
+        self.surface.eval_grid(&rows, &cols, 2, 2, &mut out);
+        for (a, &u) in rows.iter().enumerate() {
+            for (b, &v) in cols.iter().enumerate() {
+                self.folds_checked.insert(key(u, v));
+                // o[i·3 + j] = ∂^{i+j}S/∂uⁱ∂vʲ.
+                let o = &out[(a * cols.len() + b) * 9..][..9];
+                let Some(ff) = FundamentalForms::from_partials(&o[3], &o[1], &o[6], &o[4], &o[2]) else { continue };
+                let (k1, k2) = Curvatures::of(&ff).principal;
+                for k in [k1, k2] {
                     if 1.0 - d * k <= 0.0 {
                         return Err(Error::invalid(
                             "distance",
