@@ -253,7 +253,9 @@ fn iterate<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(
             }
         }
         x = wrap(x);
-        if size <= 1e-14 * (1.0 + x.iter().fold(0.0f64, |m, v| m.max(v.abs()))) {
+        // Quadratic convergence: a step below 10⁻⁸ of the scale leaves an error of the
+        // order of its square.
+        if size <= 1e-8 * (1.0 + x.iter().fold(0.0f64, |m, v| m.max(v.abs()))) {
             break;
         }
     }
