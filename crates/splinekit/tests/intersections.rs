@@ -308,3 +308,24 @@ fn a_patch_of_a_plane_on_a_plane_is_refused() {
     let e = intersect_surfaces(&plane, &patch, 1e-9, 1e-4).unwrap_err().to_string();
     assert!(e.contains("coincide over a region"), "{e}");
 }
+
+/// Against the touching case: a cylinder of radius 0.95 crosses the unit sphere in two
+/// circles at z = ±√(1 − 0.95²), flat crossings that are no touching curve.
+#[test]
+fn a_slightly_thinner_cylinder_crosses_the_unit_sphere_in_two_circles() {
+    let sphere = Sphere::new(1.0).unwrap();
+    let frame =
+        CircleFrame { center: p3(0.0, 0.0, -1.0), x_axis: p3(1.0, 0.0, 0.0), y_axis: p3(0.0, 1.0, 0.0), radius: 0.95 };
+    let cylinder = Extrusion::new(Box::new(NurbsCurve::circle(&frame).unwrap()), p3(0.0, 0.0, 2.0)).unwrap();
+    let r = intersect_surfaces(&sphere, &cylinder, 1e-10, 1e-4).unwrap();
+    assert_eq!(r.len(), 2, "{r:?}");
+    on_both(&sphere, &cylinder, &r, 1e-10);
+    let h = (1.0f64 - 0.95 * 0.95).sqrt();
+    for br in &r {
+        assert!(!br.tangent && br.closed && br.early_stop.is_none(), "{:?}", br.early_stop);
+        for p in &br.points {
+            assert!((p.z.abs() - h).abs() < 1e-9 && ((p.x * p.x + p.y * p.y).sqrt() - 0.95).abs() < 1e-9, "{p:?}");
+        }
+    }
+    assert!(r[0].points[0].z * r[1].points[0].z < 0.0, "one circle on each side of the equator");
+}

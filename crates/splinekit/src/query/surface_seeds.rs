@@ -26,8 +26,9 @@
 //! Touching curves: along a curve where the surfaces touch the normals are parallel, so
 //! the pairs along it would be split down to [`TOUCH_SIZE`] all along. Instead a pair whose
 //! normals may be parallel, once both boxes are below [`COINCIDENCE_SIZE`] of the shapes'
-//! size, is first checked for coinciding surfaces (an error), then searched for a point of
-//! a touching curve ([`touching::find`], itself an error where the surfaces coincide); the
+//! size, is first checked for coinciding surfaces (an error), then, down to
+//! [`TOUCH_SEARCH_SIZE`], searched for a point of a touching curve ([`touching::find`],
+//! itself an error where the surfaces coincide); the
 //! curve found is traced at once by the caller, and later pairs of that size whose centres
 //! both lie within their larger box's diagonal of a traced touching curve are dropped. So a
 //! crossing branch is seeded from pairs outside that band around a touching curve (loops
@@ -55,6 +56,12 @@ pub const MIN_WIDTH: f64 = 1.0 / 4096.0;
 /// Pairs whose normals may be parallel are checked for coinciding surfaces once both boxes
 /// are below this fraction of the shapes' size.
 pub const COINCIDENCE_SIZE: f64 = 1.0 / 16.0;
+
+/// Pairs whose normals may be parallel are searched for a touching curve while the larger
+/// box is between this fraction of the shapes' size and [`COINCIDENCE_SIZE`] (two levels of
+/// subdivision: a touching curve through the pair is found there, and smaller pairs between
+/// nearly parallel surfaces, as beside a flat crossing, are not searched again).
+pub const TOUCH_SEARCH_SIZE: f64 = COINCIDENCE_SIZE / 4.0;
 
 /// A pair whose boxes are both below this fraction of the shapes' size is a leaf.
 pub const TOUCH_SIZE: f64 = 1e-3;
@@ -190,7 +197,8 @@ where
         }
         let (split_a, split_b) = (splittable(a, ca), splittable(b, cb));
         let parted = apart(cone_a, cone_b);
-        let small = a.bounds.diagonal().max(b.bounds.diagonal()) <= COINCIDENCE_SIZE * size;
+        let larger = a.bounds.diagonal().max(b.bounds.diagonal());
+        let small = larger <= COINCIDENCE_SIZE * size;
         if !parted && small && coincide(m, a, b) {
             return Err(coincidence(a.u().lerp(0.5), a.v().lerp(0.5)));
         }
@@ -205,7 +213,8 @@ where
             if seeds.touching.iter().any(near) {
                 continue;
             }
-            if let Some(p) = touching::find(m, centres, &within)? {
+            let searched = larger > TOUCH_SEARCH_SIZE * size;
+            if let Some(p) = if searched { touching::find(m, centres, &within)? } else { None } {
                 seeds.touching.push(trace_touching(p));
                 continue;
             }
