@@ -833,9 +833,24 @@ fn intersect_and_section_cut_surfaces() {
     let curves = v["curves"].as_array().unwrap();
     assert_eq!(curves.len(), 1, "{v}");
     assert_eq!(curves[0]["closed"], true);
+    assert_eq!(curves[0]["tangent"], false);
     for p in curves[0]["points"].as_array().unwrap() {
         let x = floats(p);
         assert!(((x[0] * x[0] + x[1] * x[1]).sqrt() - 3.0).abs() < 1e-9 && (x[2] - 1.0).abs() < 1e-9, "{p}");
+    }
+    // A unit sphere in a unit cylinder: they touch along the equator, one tangent loop.
+    let unit = write("unit.json", r#"{"type":"sphere","radius":1}"#);
+    let around = write(
+        "around.json",
+        r#"{"type":"revolution","curve":{"type":"line","from":[1,0,-1],"to":[1,0,1]},"axis":[0,0,1]}"#,
+    );
+    let v = ok_json(&["intersect", &unit, &around], "");
+    let curves = v["curves"].as_array().unwrap();
+    assert_eq!(curves.len(), 1, "{v}");
+    assert_eq!((&curves[0]["tangent"], &curves[0]["closed"]), (&true.into(), &true.into()), "{v}");
+    for p in curves[0]["points"].as_array().unwrap() {
+        let x = floats(p);
+        assert!(((x[0] * x[0] + x[1] * x[1]).sqrt() - 1.0).abs() < 1e-9 && x[2].abs() < 1e-9, "{p}");
     }
     let v = ok_json(&["section", &sphere, "--plane", "0,0,1/0,0,1"], "");
     let curves = v["sections"][0]["curves"].as_array().unwrap();

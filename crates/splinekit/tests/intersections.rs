@@ -230,3 +230,102 @@ fn small_loops_of_a_plane_near_a_sphere_are_found() {
         assert!(length > (1.0 - 1e-2) * full && length <= full, "θ = {theta}: length {length} of {full}");
     }
 }
+
+/// Checks a touching branch: flagged tangent, every point on both surfaces within `tol`
+/// with parallel normals there, and on the closed-form curve (`off` gives a point's
+/// distance from it).
+fn touching<A: Surface<3>, B: Surface<3>>(a: &A, b: &B, br: &IntersectionBranch, off: impl Fn(&Point<3>) -> f64) {
+    assert!(br.tangent && br.early_stop.is_none(), "{:?} tangent {}", br.early_stop, br.tangent);
+    on_both(a, b, std::slice::from_ref(br), 1e-10);
+    for ((p, pa), pb) in br.points.iter().zip(&br.params_a).zip(&br.params_b) {
+        assert!(off(p) < 1e-9, "{p:?} is {} off the touching curve", off(p));
+        let (na, nb) = (a.normal(pa[0], pa[1]).unwrap(), b.normal(pb[0], pb[1]).unwrap());
+        assert!(na.cross(&nb).norm() < 1e-6, "normals at {p:?} are not parallel");
+    }
+}
+
+/// The polyline's length.
+fn length(points: &[Point<3>]) -> f64 {
+    points.windows(2).map(|w| (w[1] - w[0]).norm()).sum()
+}
+
+/// A unit cylinder about z from z = −1 to 1 (a NURBS circle extruded: its seam is a
+/// boundary).
+fn nurbs_cylinder(centre: Point<3>, height: f64) -> Extrusion<3> {
+    let frame = CircleFrame { center: centre, x_axis: p3(1.0, 0.0, 0.0), y_axis: p3(0.0, 1.0, 0.0), radius: 1.0 };
+    Extrusion::new(Box::new(NurbsCurve::circle(&frame).unwrap()), p3(0.0, 0.0, height)).unwrap()
+}
+
+#[test]
+fn a_unit_sphere_touches_a_unit_cylinder_along_the_equator() {
+    let sphere = Sphere::new(1.0).unwrap();
+    let cylinder = nurbs_cylinder(p3(0.0, 0.0, -1.0), 2.0);
+    for (first, r) in [
+        (true, intersect_surfaces(&sphere, &cylinder, 1e-10, 1e-4).unwrap()),
+        (false, intersect_surfaces(&cylinder, &sphere, 1e-10, 1e-4).unwrap()),
+    ] {
+        assert_eq!(r.len(), 1, "{r:?}");
+        assert!(r[0].closed, "the equator is one loop");
+        let off = |p: &Point<3>| p.z.abs().max(((p.x * p.x + p.y * p.y).sqrt() - 1.0).abs());
+        if first {
+            touching(&sphere, &cylinder, &r[0], off);
+        } else {
+            touching(&cylinder, &sphere, &r[0], off);
+        }
+        let full = std::f64::consts::TAU;
+        assert!((length(&r[0].points) - full).abs() < 1e-3, "length {} of {full}", length(&r[0].points));
+        let fitted = r[0].fit_bspline(1e-4).unwrap();
+        assert!(fitted.max_error <= 1e-4 && fitted.curve.is_closed());
+    }
+}
+
+#[test]
+fn a_plane_touches_a_cylinder_along_a_line_and_two_cylinders_touch_side_by_side() {
+    // The cylinder of radius 1 about z, 0 ≤ z ≤ 1, touches the plane x = 1 along the segment
+    // x = 1, y = 0 and the same cylinder about x = 2 along it too; the segment ends on the
+    // first cylinder's boundary circles.
+    let cylinder = Cylinder::new(1.0, 1.0).unwrap();
+    let plane = Plane::new(p3(1.0, -2.0, -0.5), p3(0.0, 4.0, 0.0), p3(0.0, 0.0, 2.0)).unwrap();
+    let beside = nurbs_cylinder(p3(2.0, 0.0, -0.5), 2.0);
+    let off = |p: &Point<3>| (p.x - 1.0).abs().max(p.y.abs()).max((p.z - p.z.clamp(0.0, 1.0)).abs());
+    let r = intersect_surfaces(&cylinder, &plane, 1e-10, 1e-4).unwrap();
+    assert_eq!(r.len(), 1, "{r:?}");
+    touching(&cylinder, &plane, &r[0], off);
+    let r2 = intersect_surfaces(&cylinder, &beside, 1e-10, 1e-4).unwrap();
+    assert_eq!(r2.len(), 1, "{r2:?}");
+    touching(&cylinder, &beside, &r2[0], off);
+    for br in [&r[0], &r2[0]] {
+        assert!(!br.closed);
+        let (z0, z1) = (br.points[0].z, br.points[br.points.len() - 1].z);
+        assert!((z0.min(z1)).abs() < 1e-12 && (z0.max(z1) - 1.0).abs() < 1e-12, "ends at z = {z0}, {z1}");
+    }
+}
+
+#[test]
+fn a_patch_of_a_plane_on_a_plane_is_refused() {
+    let plane = Plane::new(p3(-1.0, -1.0, 0.0), p3(2.0, 0.0, 0.0), p3(0.0, 2.0, 0.0)).unwrap();
+    let patch = Plane::new(p3(-0.3, -0.2, 0.0), p3(0.5, 0.1, 0.0), p3(-0.1, 0.6, 0.0)).unwrap();
+    let e = intersect_surfaces(&plane, &patch, 1e-9, 1e-4).unwrap_err().to_string();
+    assert!(e.contains("coincide over a region"), "{e}");
+}
+
+/// Against the touching case: a cylinder of radius 0.95 crosses the unit sphere in two
+/// circles at z = ±√(1 − 0.95²), flat crossings that are no touching curve.
+#[test]
+fn a_slightly_thinner_cylinder_crosses_the_unit_sphere_in_two_circles() {
+    let sphere = Sphere::new(1.0).unwrap();
+    let frame =
+        CircleFrame { center: p3(0.0, 0.0, -1.0), x_axis: p3(1.0, 0.0, 0.0), y_axis: p3(0.0, 1.0, 0.0), radius: 0.95 };
+    let cylinder = Extrusion::new(Box::new(NurbsCurve::circle(&frame).unwrap()), p3(0.0, 0.0, 2.0)).unwrap();
+    let r = intersect_surfaces(&sphere, &cylinder, 1e-10, 1e-4).unwrap();
+    assert_eq!(r.len(), 2, "{r:?}");
+    on_both(&sphere, &cylinder, &r, 1e-10);
+    let h = (1.0f64 - 0.95 * 0.95).sqrt();
+    for br in &r {
+        assert!(!br.tangent && br.closed && br.early_stop.is_none(), "{:?}", br.early_stop);
+        for p in &br.points {
+            assert!((p.z.abs() - h).abs() < 1e-9 && ((p.x * p.x + p.y * p.y).sqrt() - 0.95).abs() < 1e-9, "{p:?}");
+        }
+    }
+    assert!(r[0].points[0].z * r[1].points[0].z < 0.0, "one circle on each side of the equator");
+}

@@ -49,8 +49,9 @@ fn curve_surface_json(r: &[CurveSurfaceIntersection]) -> Value {
     json!({"points": points, "overlaps": [], "curves": []})
 }
 
-/// The JSON of intersection branches: `{points, params_a, params_b, closed, early_stop,
-/// bspline, fit_error}`, the B-spline fitted within `fit` of the points where it can be.
+/// The JSON of intersection branches: `{points, params_a, params_b, closed, tangent,
+/// early_stop, bspline, fit_error}`, the B-spline fitted within `fit` of the points where
+/// it can be.
 pub fn branches_json(branches: &[IntersectionBranch], fit: f64) -> Result<Vec<Value>> {
     branches
         .iter()
@@ -69,7 +70,7 @@ pub fn branches_json(branches: &[IntersectionBranch], fit: f64) -> Result<Vec<Va
                 }
             };
             Ok(json!({"points": points, "params_a": b.params_a, "params_b": b.params_b, "closed": b.closed,
-                "early_stop": stop, "bspline": bspline, "fit_error": error}))
+                "tangent": b.tangent, "early_stop": stop, "bspline": bspline, "fit_error": error}))
         })
         .collect()
 }

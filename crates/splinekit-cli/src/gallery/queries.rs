@@ -5,7 +5,7 @@ use anyhow::{Result, anyhow};
 use splinekit::Point;
 use splinekit::curve::model::Line;
 use splinekit::curve::{BSplineCurve, Curve};
-use splinekit::query::{intersect_curves, intersect_surfaces, offset_curve};
+use splinekit::query::{IntersectionBranch, intersect_curves, intersect_surfaces, offset_curve};
 use splinekit::surface::BSplineSurface;
 use splinekit::surface::derived::RevolvedSurface;
 use splinekit::surface::model::Plane;
@@ -29,11 +29,16 @@ fn draw<const D: usize>(fig: &mut SvgFigure, c: &dyn Curve<D>, colour: &str, wid
     Ok(())
 }
 
-/// Two wavy cubic B-splines and every crossing of them.
-pub fn crossings() -> Result<Figure> {
+/// The two wavy cubic B-splines (40 control points each) of [`crossings`].
+fn wavy_pair() -> Result<(BSplineCurve<2>, BSplineCurve<2>)> {
     let a: Vec<Point<2>> = (0..40).map(|i| Point::<2>::new(0.25 * i as f64, (0.7 * i as f64).sin())).collect();
     let b: Vec<Point<2>> = (0..40).map(|i| Point::<2>::new(0.25 * i as f64, 0.8 * (0.45 * i as f64).cos())).collect();
-    let (a, b) = (BSplineCurve::clamped_uniform(3, a)?, BSplineCurve::clamped_uniform(3, b)?);
+    Ok((BSplineCurve::clamped_uniform(3, a)?, BSplineCurve::clamped_uniform(3, b)?))
+}
+
+/// Two wavy cubic B-splines and every crossing of them.
+pub fn crossings() -> Result<Figure> {
+    let (a, b) = wavy_pair()?;
     let found = intersect_curves(&a, &b, 1e-9)?;
     let mut fig = SvgFigure::new(W, H, Projection::TOP).title("Crossings of two cubic B-splines");
     draw(&mut fig, &a, PALETTE[0], 2.0)?;
@@ -51,6 +56,9 @@ pub fn crossings() -> Result<Figure> {
     })
 }
 
+/// The distances of the heart's offsets, drawn with stroke width 1.2 + 0.1·(index).
+const HEART_DISTANCES: [f64; 6] = [-1.2, -0.8, -0.4, 0.4, 0.8, 1.2];
+
 /// The blending-spline heart of examples/ and its offsets at ±0.4, ±0.8, ±1.2.
 pub fn heart_offsets() -> Result<Figure> {
     let text = include_str!("../../../../examples/shapes/beating_heart.json");
@@ -60,7 +68,7 @@ pub fn heart_offsets() -> Result<Figure> {
     let heart = doc.build_in::<3>()?;
     let mut fig = SvgFigure::new(W, H, Projection::TOP).title("Offsets of the heart");
     let mut worst = 0.0f64;
-    for (k, d) in [-1.2, -0.8, -0.4, 0.4, 0.8, 1.2].iter().enumerate() {
+    for (k, d) in HEART_DISTANCES.iter().enumerate() {
         let off = offset_curve(heart.as_ref(), *d, Some(Point::<3>::z()), 1e-4)?;
         worst = worst.max(off.max_error);
         for piece in &off.pieces {
@@ -79,22 +87,31 @@ pub fn heart_offsets() -> Result<Figure> {
     })
 }
 
-/// Contours of a wavy bicubic patch: its sections with planes z = const.
-pub fn contours() -> Result<Figure> {
+/// The heights of the contours of [`contours`].
+const CONTOUR_LEVELS: [f64; 7] = [-0.45, -0.3, -0.15, 0.0, 0.15, 0.3, 0.45];
+
+/// The contours' patch z ≈ sin i cos j (8 × 8 control points).
+fn contour_patch() -> Result<BSplineSurface<3>> {
     let net: Vec<Vec<Point<3>>> = (0..8)
         .map(|i| (0..8).map(|j| Point::<3>::new(i as f64, j as f64, (i as f64).sin() * (j as f64).cos())).collect())
         .collect();
-    let s = BSplineSurface::clamped_uniform((3, 3), net)?;
+    Ok(BSplineSurface::clamped_uniform((3, 3), net)?)
+}
+
+/// The patch's section with the plane at height z.
+fn section(s: &BSplineSurface<3>, z: f64) -> Result<Vec<IntersectionBranch>> {
+    let o = Point::<3>::new(-10.0, -10.0, z);
+    let plane = Plane::new(o, Point::<3>::new(30.0, 0.0, 0.0), Point::<3>::new(0.0, 30.0, 0.0))?;
+    Ok(intersect_surfaces(s, &plane, 1e-9, 1e-3)?)
+}
+
+/// Contours of a wavy bicubic patch: its sections with planes z = const.
+pub fn contours() -> Result<Figure> {
+    let s = contour_patch()?;
     let mut fig = SvgFigure::new(W, H, Projection::TOP).title("Contours of a bicubic patch");
-    let levels = [-0.45, -0.3, -0.15, 0.0, 0.15, 0.3, 0.45];
     let mut branches = 0;
-    for (k, z) in levels.iter().enumerate() {
-        let plane = Plane::new(
-            Point::<3>::new(-10.0, -10.0, *z),
-            Point::<3>::new(30.0, 0.0, 0.0),
-            Point::<3>::new(0.0, 30.0, 0.0),
-        )?;
-        for b in intersect_surfaces(&s, &plane, 1e-9, 1e-3)? {
+    for (k, z) in CONTOUR_LEVELS.iter().enumerate() {
+        for b in section(&s, *z)? {
             fig.path(&b.points, b.closed, PALETTE[k % PALETTE.len()], 1.8);
             branches += 1;
         }
@@ -167,8 +184,9 @@ pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
         });
         points += b.points.len();
     }
-    // Framed on the cylinder and the tube around it.
-    scene.camera = Some(Camera::fit(([0.6, -1.5, -1.7], [5.4, 1.5, 1.7]), -1.2, 0.35, 4.0 / 3.0));
+    // Framed on what is drawn: the half of the ring left (u from −0.22 to π: x from −4 to
+    // 4, y from −0.9 to 4) and the cylinder, seen from the front right and above.
+    scene.camera = Some(Camera::fit(([-4.0, -0.9, -1.6], [4.0, 4.0, 1.6]), -1.0, 0.4, 4.0 / 3.0));
     let img = renderer.render(&scene, 800, 600)?;
     let closed = branches.iter().filter(|b| b.closed).count();
     let caption = format!(
@@ -183,10 +201,114 @@ pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
 
 #[cfg(test)]
 mod tests {
+    use super::*;
+
+    /// A drawn polyline: its points in picture coordinates, stroke and width.
+    struct Drawn {
+        points: Vec<[f64; 2]>,
+        stroke: String,
+        width: f64,
+        dashed: bool,
+    }
+
+    fn attribute<'a>(element: &'a str, name: &str) -> &'a str {
+        let start =
+            element.find(&format!(" {name}=\"")).unwrap_or_else(|| panic!("no {name} in {element}")) + name.len() + 3;
+        &element[start..start + element[start..].find('"').unwrap()]
+    }
+
+    /// The paths and the dots (circle centres) of an SVG written by `SvgFigure`.
+    fn parse(svg: &str) -> (Vec<Drawn>, Vec<[f64; 2]>) {
+        let (mut paths, mut dots) = (Vec::new(), Vec::new());
+        for line in svg.lines() {
+            if line.starts_with("<path") {
+                let points = attribute(line, "d")
+                    .split_whitespace()
+                    .filter(|t| *t != "Z")
+                    .map(|t| {
+                        let (x, y) = t[1..].split_once(',').unwrap();
+                        [x.parse().unwrap(), y.parse().unwrap()]
+                    })
+                    .collect();
+                let (stroke, width) =
+                    (attribute(line, "stroke").to_string(), attribute(line, "stroke-width").parse().unwrap());
+                paths.push(Drawn { points, stroke, width, dashed: line.contains("stroke-dasharray") });
+            } else if line.starts_with("<circle") {
+                dots.push([attribute(line, "cx").parse().unwrap(), attribute(line, "cy").parse().unwrap()]);
+            }
+        }
+        (paths, dots)
+    }
+
+    /// The distance from q to the polyline (picture coordinates).
+    fn distance(q: &[f64; 2], line: &[[f64; 2]]) -> f64 {
+        line.windows(2)
+            .map(|w| {
+                let (d, r) = ([w[1][0] - w[0][0], w[1][1] - w[0][1]], [q[0] - w[0][0], q[1] - w[0][1]]);
+                let dd = d[0] * d[0] + d[1] * d[1];
+                let s = if dd > 0.0 { ((r[0] * d[0] + r[1] * d[1]) / dd).clamp(0.0, 1.0) } else { 0.0 };
+                (r[0] - s * d[0]).hypot(r[1] - s * d[1])
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
     #[test]
-    fn the_query_figures_draw_their_answers() {
-        for f in [super::crossings().unwrap(), super::heart_offsets().unwrap(), super::contours().unwrap()] {
-            assert!(f.svg.contains("<path") && f.svg.len() > 1000, "{}", f.file);
+    fn every_crossing_is_marked_on_both_drawn_curves() {
+        let (a, b) = wavy_pair().unwrap();
+        let expected = intersect_curves(&a, &b, 1e-9).unwrap().points.len();
+        let (paths, dots) = parse(&crossings().unwrap().svg);
+        assert!(expected > 5 && dots.len() == expected, "{} dots for {expected} crossings", dots.len());
+        assert_eq!(paths.len(), 2);
+        for q in &dots {
+            // Picture coordinates have two decimals; the drawn polylines are within 10⁻³
+            // of the curves, a fraction of a pixel at this scale.
+            for p in &paths {
+                assert!(distance(q, &p.points) < 0.5, "the dot at {q:?} is {} px off a curve", distance(q, &p.points));
+            }
+        }
+    }
+
+    #[test]
+    fn each_drawn_offset_of_the_heart_keeps_its_distance_from_the_drawn_heart() {
+        let (paths, _) = parse(&heart_offsets().unwrap().svg);
+        let heart = paths.iter().find(|p| p.stroke == PALETTE[1]).expect("the heart is drawn in red");
+        // Per distance: the pixel distances of the offset's points from the heart, which
+        // must all be |d| at one scale (trimmed offsets are exactly |d| from the curve).
+        let mut scales = Vec::new();
+        for (k, d) in HEART_DISTANCES.iter().enumerate() {
+            let width = 1.2 + 0.1 * k as f64;
+            let pieces: Vec<&Drawn> =
+                paths.iter().filter(|p| (p.width - width).abs() < 1e-9 && p.stroke != PALETTE[1]).collect();
+            assert!(!pieces.is_empty(), "no offset drawn at d = {d}");
+            assert!(pieces.iter().all(|p| p.stroke == PALETTE[if *d < 0.0 { 0 } else { 2 }]), "d = {d}: colour");
+            let gaps: Vec<f64> =
+                pieces.iter().flat_map(|p| p.points.iter().map(|q| distance(q, &heart.points))).collect();
+            let (lo, hi) = gaps.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), g| (lo.min(*g), hi.max(*g)));
+            assert!(hi - lo < 1.5, "d = {d}: the offset is {lo} to {hi} px from the heart");
+            scales.push(0.5 * (lo + hi) / d.abs());
+        }
+        let (lo, hi) = scales.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), s| (lo.min(*s), hi.max(*s)));
+        assert!(hi / lo < 1.03, "pixels per unit differ between the offsets: {scales:?}");
+    }
+
+    #[test]
+    fn every_contour_is_drawn_inside_the_patch_outline() {
+        let s = contour_patch().unwrap();
+        let expected: usize = CONTOUR_LEVELS.iter().map(|z| section(&s, *z).unwrap().len()).sum();
+        let (paths, _) = parse(&contours().unwrap().svg);
+        let outline: Vec<&Drawn> = paths.iter().filter(|p| p.dashed).collect();
+        assert_eq!(outline.len(), 1);
+        let (lo, hi) = outline[0].points.iter().fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(lo, hi), q| {
+            ([lo[0].min(q[0]), lo[1].min(q[1])], [hi[0].max(q[0]), hi[1].max(q[1])])
+        });
+        let contours: Vec<&Drawn> = paths.iter().filter(|p| !p.dashed).collect();
+        assert!(
+            expected > CONTOUR_LEVELS.len() && contours.len() == expected,
+            "{} paths, {expected} branches",
+            contours.len()
+        );
+        for q in contours.iter().flat_map(|p| &p.points) {
+            assert!((0..2).all(|i| q[i] >= lo[i] - 0.01 && q[i] <= hi[i] + 0.01), "{q:?} is outside the patch");
         }
     }
 }

@@ -1,6 +1,7 @@
 //! Least-squares fitting and interpolation of B-spline curves.
 
 pub mod banded_qr;
+pub mod collocation;
 pub mod interpolate;
 pub mod lsq;
 pub mod parametrize;

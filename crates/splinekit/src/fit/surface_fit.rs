@@ -7,6 +7,7 @@
 
 use crate::Point;
 use crate::error::{Error, Result, check_points_finite};
+use crate::fit::collocation::CollocationLu;
 use crate::fit::lsq::{FitWithKnotsOptions, fit_with_knots};
 use crate::fit::parametrize::{KnotPlacement, Parametrization, fit_knots, parametrize};
 use crate::surface::BSplineSurface;
@@ -136,7 +137,8 @@ fn averaged_knots(t: &[f64], deg: usize) -> Vec<f64> {
 /// B-spline surface interpolating every grid point (`grid[a][b]` at (`u.0[a]`, `v.0[b]`)) on
 /// the given knots (`u.1`, `v.1`; one control point per grid line each way, and the
 /// parameters must satisfy the Schoenberg–Whitney conditions): every row is interpolated
-/// in v, then every column of the result in u (the square systems of [`fit_with_knots`]).
+/// in v, then every column of the result in u, each direction's collocation matrix factored
+/// once ([`CollocationLu`]).
 pub fn interpolate_surface_on_knots<const D: usize>(
     grid: &[Vec<Point<D>>],
     degrees: (usize, usize),
@@ -151,15 +153,9 @@ pub fn interpolate_surface_on_knots<const D: usize>(
             format!("a {mu} × {mv} grid needs {mu} × {mv} parameters, got {} × {}", u.0.len(), v.0.len()),
         ));
     }
-    let mut mid = Vec::with_capacity(mu);
-    for row in grid {
-        mid.push(fit_with_knots(row, v.0, &FitWithKnotsOptions::new(q, v.1.to_vec()))?.curve.control_points().to_vec());
-    }
-    let mut cols = Vec::with_capacity(mv);
-    for col in transpose(&mid) {
-        cols.push(
-            fit_with_knots(&col, u.0, &FitWithKnotsOptions::new(p, u.1.to_vec()))?.curve.control_points().to_vec(),
-        );
-    }
+    // One factorisation per direction: every row shares the v-parameters, every column the u's.
+    let (lu_u, lu_v) = (CollocationLu::new(p, u.1, u.0)?, CollocationLu::new(q, v.1, v.0)?);
+    let mid: Vec<Vec<Point<D>>> = grid.iter().map(|row| lu_v.solve(row)).collect();
+    let cols: Vec<Vec<Point<D>>> = transpose(&mid).iter().map(|col| lu_u.solve(col)).collect();
     BSplineSurface::new((p, q), u.1.to_vec(), v.1.to_vec(), transpose(&cols), (false, false))
 }

@@ -12,6 +12,7 @@
 
 use crate::Point;
 use crate::curve::Interval;
+use crate::query::touching;
 use crate::surface::Surface;
 use nalgebra::{Matrix2, Matrix4, Vector2, Vector4};
 
@@ -39,6 +40,15 @@ pub struct MarchPoint {
     /// The first partials there: (∂S_a/∂u, ∂S_a/∂v, ∂S_b/∂u, ∂S_b/∂v), which the next
     /// step's predictor uses.
     pub partials: [Point<3>; 4],
+}
+
+/// Which curve a march follows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Contact {
+    /// A crossing branch: the normals make an angle (tangent N_a × N_b).
+    Crossing,
+    /// A touching curve: the normals are parallel ([`crate::query::touching`]).
+    Touching,
 }
 
 /// How a step ended.
@@ -75,7 +85,8 @@ struct Frames {
 }
 
 impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
-    fn domains(&self) -> [(Interval, bool); 4] {
+    /// The four parameters' domains and whether each is closed.
+    pub fn domains(&self) -> [(Interval, bool); 4] {
         [
             (self.a.domain_u(), self.a.is_closed_u()),
             (self.a.domain_v(), self.a.is_closed_v()),
@@ -241,10 +252,11 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
         best
     }
 
-    /// One step of length about h from `p` (see the module documentation). The next step
+    /// One step of length about h from `p` along a curve of the given contact (see the
+    /// module documentation; touching curves are corrected by [`touching::correct`]). The next step
     /// length aims at 0.8 of the chord error and of [`MAX_TURN`] (the sagitta grows as the
     /// square of the step, the turn linearly), at most twice this one.
-    pub fn step(&self, p: &MarchPoint, mut h: f64) -> StepEnd {
+    pub fn step(&self, p: &MarchPoint, mut h: f64, contact: Contact) -> StepEnd {
         for _ in 0..MAX_HALVINGS {
             let Some(mut to) = Self::predict(p, &(p.tangent * h)) else { return StepEnd::StepLimit };
             let unwrapped = p.x;
@@ -255,12 +267,21 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
                 to = std::array::from_fn(|k| unwrapped[k] + (to[k] - unwrapped[k]) * s);
             }
             let q = p.point + p.tangent * len;
-            let corrected = self.correct(to, &q, &p.tangent, exit.map(|(_, k, v)| (k, v)));
-            let next = corrected.as_ref().and_then(|(x, f)| Self::point_with(*x, f, &p.tangent));
-            let Some(next) = next else {
-                if corrected.is_some() {
-                    return StepEnd::Tangential;
+            let hold = exit.map(|(_, k, v)| (k, v));
+            let next = match contact {
+                Contact::Crossing => {
+                    let corrected = self.correct(to, &q, &p.tangent, hold);
+                    let next = corrected.as_ref().and_then(|(x, f)| Self::point_with(*x, f, &p.tangent));
+                    if next.is_none() && corrected.is_some() {
+                        return StepEnd::Tangential;
+                    }
+                    next
                 }
+                Contact::Touching => {
+                    touching::correct(self, to, &q, &p.tangent, hold).and_then(|x| touching::point(self, x, &p.tangent))
+                }
+            };
+            let Some(next) = next else {
                 h *= 0.5;
                 continue;
             };

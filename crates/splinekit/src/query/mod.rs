@@ -28,6 +28,7 @@ pub mod surface_intersection;
 pub mod surface_seeds;
 pub mod surface_slope;
 pub mod tangent_cone;
+pub mod touching;
 
 pub use arc_length::{ArcLengthCurve, ArcLengthTable};
 pub use bounds::Aabb;

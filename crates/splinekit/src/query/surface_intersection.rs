@@ -11,18 +11,20 @@
 //! 10·tolerance) of it. Closed loops are found however small unless they lie inside
 //! boxes below [`crate::query::surface_seeds::TOUCH_SIZE`] of the shapes' size (see
 //! [`crate::query::surface_seeds`]).
-//! Touching surfaces (parallel normals along the curve) are not traced: marching stops
-//! there and says so.
+//! Curves along which the surfaces touch (parallel normals all along) are found while
+//! seeding and traced by the same marching on the touching system of
+//! [`crate::query::touching`]; they come first, flagged [`IntersectionBranch::tangent`].
+//! A crossing branch that runs into a touching point stops there and says so.
 //!
 //! Limits: [`MAX_POINTS`] points per branch, [`MAX_BRANCHES`] branches and
-//! [`crate::query::surface_seeds::MAX_SEED_PAIRS`] pairs of patches while seeding (surfaces
-//! that coincide over a region: an error); a branch that stops for a limit, a step that
+//! [`crate::query::surface_seeds::MAX_SEED_PAIRS`] pairs of patches while seeding; surfaces
+//! that coincide over a region are an error; a branch that stops for a limit, a step that
 //! cannot be accepted or parallel normals carries an [`EarlyStop`].
 
 use crate::Point;
 use crate::error::{Error, Result};
 use crate::query::bounds::Aabb;
-use crate::query::march::{MarchPoint, Marcher, StepEnd};
+use crate::query::march::{Contact, MarchPoint, Marcher, StepEnd};
 use crate::query::surface_cover::SurfaceCover;
 use crate::query::surface_seeds::pair_seeds;
 use crate::surface::Surface;
@@ -57,6 +59,9 @@ pub struct IntersectionBranch {
     pub closed: bool,
     /// Why marching stopped early, in either direction, if it did.
     pub early_stop: Option<EarlyStop>,
+    /// Whether the surfaces touch along the branch (their normals are parallel at every
+    /// point) rather than cross.
+    pub tangent: bool,
 }
 
 /// Every branch of the intersection curve of `a` and `b` (see the module documentation):
@@ -74,17 +79,21 @@ where
     }
     let size = extent(a).max(extent(b));
     let marcher = Marcher { a, b, tolerance, chord, max_step: size / 16.0 };
-    let mut branches: Vec<IntersectionBranch> = Vec::new();
     let (cover_a, cover_b) = (SurfaceCover::new(a), SurfaceCover::new(b));
-    for seed in pair_seeds(&marcher, &cover_a, &cover_b)? {
-        let reach = 4.0 * chord + 10.0 * tolerance;
+    let (h0, reach) = (size / 128.0, 4.0 * chord + 10.0 * tolerance);
+    let seeds = pair_seeds(&marcher, &cover_a, &cover_b, |seed| trace(&marcher, seed, h0, reach, Contact::Touching))?;
+    let mut branches = seeds.touching;
+    for seed in seeds.crossing {
         if branches.iter().any(|br| near_polyline(&br.points, &seed.point, reach)) {
             continue;
         }
         if branches.len() >= MAX_BRANCHES {
-            return Err(Error::numerical("surface intersection", format!("more than {MAX_BRANCHES} branches")));
+            break;
         }
-        branches.push(trace(&marcher, seed, size / 128.0, reach));
+        branches.push(trace(&marcher, seed, h0, reach, Contact::Crossing));
+    }
+    if branches.len() >= MAX_BRANCHES {
+        return Err(Error::numerical("surface intersection", format!("more than {MAX_BRANCHES} branches")));
     }
     Ok(branches)
 }
@@ -99,7 +108,7 @@ fn extent<S: Surface<3> + ?Sized>(s: &S) -> f64 {
 
 /// Whether `q` lies within `reach` of a segment of the polyline (runs of 16 segments whose
 /// box is farther are skipped).
-fn near_polyline(points: &[Point<3>], q: &Point<3>, reach: f64) -> bool {
+pub(crate) fn near_polyline(points: &[Point<3>], q: &Point<3>, reach: f64) -> bool {
     if points.len() == 1 {
         return (points[0] - q).norm() <= reach;
     }
@@ -123,19 +132,21 @@ fn segment_distance(p: &Point<3>, r: &Point<3>, q: &Point<3>) -> f64 {
     (p + d * s - q).norm()
 }
 
-/// The branch through `seed`: forward, and backward unless it closed.
+/// The branch of the given contact through `seed`: forward, and backward unless it closed.
 fn trace<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(
     m: &Marcher<'_, A, B>,
     seed: MarchPoint,
     h0: f64,
     reach: f64,
+    contact: Contact,
 ) -> IntersectionBranch {
-    let (forward, closed, stop_f) = march(m, seed, h0, reach);
+    let tangent = contact == Contact::Touching;
+    let (forward, closed, stop_f) = march(m, seed, h0, reach, contact);
     let mut pts = if closed {
         forward
     } else {
         let back_seed = MarchPoint { tangent: -seed.tangent, ..seed };
-        let (mut backward, _, stop_b) = march(m, back_seed, h0, 0.0);
+        let (mut backward, _, stop_b) = march(m, back_seed, h0, 0.0, contact);
         backward.reverse();
         backward.pop();
         backward.extend(forward);
@@ -143,38 +154,41 @@ fn trace<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(
         let (first, last) = (backward[0].point, backward[backward.len() - 1].point);
         let stop = stop_f.or(stop_b);
         let seam = stop.is_none() && backward.len() > 2 && (first - last).norm() <= reach;
-        return branch(backward, seam, stop);
+        return branch(backward, seam, stop, tangent);
     };
     if closed {
         pts.push(seed);
     }
-    branch(pts, closed, stop_f)
+    branch(pts, closed, stop_f, tangent)
 }
 
-fn branch(pts: Vec<MarchPoint>, closed: bool, early_stop: Option<EarlyStop>) -> IntersectionBranch {
+fn branch(pts: Vec<MarchPoint>, closed: bool, early_stop: Option<EarlyStop>, tangent: bool) -> IntersectionBranch {
     IntersectionBranch {
         points: pts.iter().map(|p| p.point).collect(),
         params_a: pts.iter().map(|p| [p.x[0], p.x[1]]).collect(),
         params_b: pts.iter().map(|p| [p.x[2], p.x[3]]).collect(),
         closed,
         early_stop,
+        tangent,
     }
 }
 
-/// Marches from `seed` along its tangent; closes the loop when `reach` > 0 and a step
-/// passes within it of the seed after the march has been farther than 4·`reach` from it. The points (seed first), whether it closed, and why it
+/// Marches from `seed` along its tangent on a curve of the given contact; closes the loop
+/// when `reach` > 0 and a step passes within it of the seed after the march has been
+/// farther than 4·`reach` from it. The points (seed first), whether it closed, and why it
 /// stopped early.
 fn march<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(
     m: &Marcher<'_, A, B>,
     seed: MarchPoint,
     h0: f64,
     reach: f64,
+    contact: Contact,
 ) -> (Vec<MarchPoint>, bool, Option<EarlyStop>) {
     let mut pts = vec![seed];
     let (mut h, mut far) = (h0, 0.0f64);
     while pts.len() < MAX_POINTS {
         let last = pts[pts.len() - 1];
-        let (next, stop) = match m.step(&last, h) {
+        let (next, stop) = match m.step(&last, h, contact) {
             StepEnd::Inside(p, grow) => {
                 h = grow;
                 (p, false)

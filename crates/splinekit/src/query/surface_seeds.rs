@@ -21,8 +21,18 @@
 //! wider than that are never missed for being small), and every branch through an examined
 //! pair's boxes is in a leaf. Each leaf's seed comes from one Newton iteration from its
 //! centre, which on flat transversal patches converges to the curve's point nearest the
-//! centre. More than [`MAX_SEED_PAIRS`] pairs (surfaces that coincide over a region, whose
-//! normals are parallel everywhere) is an error.
+//! centre.
+//!
+//! Touching curves: along a curve where the surfaces touch the normals are parallel, so
+//! the pairs along it would be split down to [`TOUCH_SIZE`] all along. Instead a pair whose
+//! normals may be parallel, once both boxes are below [`COINCIDENCE_SIZE`] of the shapes'
+//! size, is first checked for coinciding surfaces (an error), then, down to
+//! [`TOUCH_SEARCH_SIZE`], searched for a point of a touching curve ([`touching::find`],
+//! itself an error where the surfaces coincide); the
+//! curve found is traced at once by the caller, and later pairs of that size whose centres
+//! both lie within their larger box's diagonal of a traced touching curve are dropped. So a
+//! crossing branch is seeded from pairs outside that band around a touching curve (loops
+//! inside it are not found). More than [`MAX_SEED_PAIRS`] pairs is an error.
 
 use crate::Point;
 use crate::curve::Interval;
@@ -30,7 +40,9 @@ use crate::error::{Error, Result};
 use crate::query::march::{MarchPoint, Marcher};
 use crate::query::normal_cone::normal_cone;
 use crate::query::surface_cover::{SearchPatch, SurfaceCover, SurfacePatch};
+use crate::query::surface_intersection::{IntersectionBranch, near_polyline};
 use crate::query::tangent_cone::{TangentCone, angle};
+use crate::query::touching;
 use crate::surface::Surface;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::rc::Rc;
@@ -44,6 +56,12 @@ pub const MIN_WIDTH: f64 = 1.0 / 4096.0;
 /// Pairs whose normals may be parallel are checked for coinciding surfaces once both boxes
 /// are below this fraction of the shapes' size.
 pub const COINCIDENCE_SIZE: f64 = 1.0 / 16.0;
+
+/// Pairs whose normals may be parallel are searched for a touching curve while the larger
+/// box is between this fraction of the shapes' size and [`COINCIDENCE_SIZE`] (two levels of
+/// subdivision: a touching curve through the pair is found there, and smaller pairs between
+/// nearly parallel surfaces, as beside a flat crossing, are not searched again).
+pub const TOUCH_SEARCH_SIZE: f64 = COINCIDENCE_SIZE / 4.0;
 
 /// A pair whose boxes are both below this fraction of the shapes' size is a leaf.
 pub const TOUCH_SIZE: f64 = 1e-3;
@@ -108,6 +126,14 @@ where
     })
 }
 
+/// The error for surfaces that coincide over a region around (u, v) on the first.
+pub fn coincidence(u: f64, v: f64) -> Error {
+    Error::numerical(
+        "surface intersection",
+        format!("the surfaces coincide over a region (about ({u:.6}, {v:.6}) on the first)"),
+    )
+}
+
 /// The parameter box of a patch grown by its width on each side.
 fn grown(i: Interval) -> Interval {
     Interval::new(i.start - i.length(), i.end + i.length())
@@ -119,8 +145,23 @@ fn node(p: SearchPatch<'_, 3>) -> Rc<(SearchPatch<'_, 3>, TangentCone<3>)> {
     Rc::new((p, cone))
 }
 
-/// The seeds (see the module documentation), in the order the leaves were found.
-pub fn pair_seeds<A, B>(m: &Marcher<'_, A, B>, ca: &SurfaceCover<3>, cb: &SurfaceCover<3>) -> Result<Vec<MarchPoint>>
+/// What seeding found: seeds of crossing branches and the touching curves traced.
+#[derive(Debug, Clone, Default)]
+pub struct Seeds {
+    /// Seeds on crossing branches, in the order the leaves were found.
+    pub crossing: Vec<MarchPoint>,
+    /// The touching curves, each traced by `trace_touching` from its first point.
+    pub touching: Vec<IntersectionBranch>,
+}
+
+/// The seeds (see the module documentation); `trace_touching` traces the touching curve
+/// through a point found.
+pub fn pair_seeds<A, B>(
+    m: &Marcher<'_, A, B>,
+    ca: &SurfaceCover<3>,
+    cb: &SurfaceCover<3>,
+    mut trace_touching: impl FnMut(MarchPoint) -> IntersectionBranch,
+) -> Result<Seeds>
 where
     A: Surface<3> + ?Sized,
     B: Surface<3> + ?Sized,
@@ -134,7 +175,7 @@ where
             stack.push((na.clone(), nb.clone()));
         }
     }
-    let (mut seeds, mut examined) = (Vec::new(), 0usize);
+    let (mut seeds, mut examined) = (Seeds::default(), 0usize);
     let size = ca.nodes[..ca.roots]
         .iter()
         .chain(&cb.nodes[..cb.roots])
@@ -146,10 +187,7 @@ where
         if examined > MAX_SEED_PAIRS {
             return Err(Error::numerical(
                 "surface intersection",
-                format!(
-                    "more than {MAX_SEED_PAIRS} pairs of patches whose normals may be parallel: the surfaces coincide \
-                     over a region (or touch along a long curve)"
-                ),
+                format!("more than {MAX_SEED_PAIRS} pairs of patches whose normals may be parallel"),
             ));
         }
         let ((pa, cone_a), (pb, cone_b)) = (&*na, &*nb);
@@ -159,34 +197,46 @@ where
         }
         let (split_a, split_b) = (splittable(a, ca), splittable(b, cb));
         let parted = apart(cone_a, cone_b);
-        let small = a.bounds.diagonal().max(b.bounds.diagonal()) <= COINCIDENCE_SIZE * size;
+        let larger = a.bounds.diagonal().max(b.bounds.diagonal());
+        let small = larger <= COINCIDENCE_SIZE * size;
         if !parted && small && coincide(m, a, b) {
-            return Err(Error::numerical(
-                "surface intersection",
-                format!(
-                    "the surfaces coincide over a region (about ({:.6}, {:.6}) on the first)",
-                    a.u().lerp(0.5),
-                    a.v().lerp(0.5)
-                ),
-            ));
+            return Err(coincidence(a.u().lerp(0.5), a.v().lerp(0.5)));
+        }
+        let centres = [a.u().lerp(0.5), a.v().lerp(0.5), b.u().lerp(0.5), b.v().lerp(0.5)];
+        let within = [grown(a.u()), grown(a.v()), grown(b.u()), grown(b.v())];
+        if !parted && small {
+            let reach = a.bounds.diagonal().max(b.bounds.diagonal());
+            let (pa, pb) = (a.grid[4].point, b.grid[4].point);
+            let near = |br: &IntersectionBranch| {
+                near_polyline(&br.points, &pa, reach) && near_polyline(&br.points, &pb, reach)
+            };
+            if seeds.touching.iter().any(near) {
+                continue;
+            }
+            let searched = larger > TOUCH_SEARCH_SIZE * size;
+            if let Some(p) = if searched { touching::find(m, centres, &within)? } else { None } {
+                seeds.touching.push(trace_touching(p));
+                continue;
+            }
         }
         let leaf = parted && cone_a.half_angle <= FLAT && cone_b.half_angle <= FLAT;
         // Both boxes below TOUCH_SIZE of the shapes: a leaf whatever its cones (surfaces that
         // touch along a curve would otherwise be split along all of it down to MIN_WIDTH).
         let touch = a.bounds.diagonal().max(b.bounds.diagonal()) <= TOUCH_SIZE * size;
         if leaf || touch || (!split_a && !split_b) {
-            let x = [a.u().lerp(0.5), a.v().lerp(0.5), b.u().lerp(0.5), b.v().lerp(0.5)];
-            let within = [grown(a.u()), grown(a.v()), grown(b.u()), grown(b.v())];
-            if let Some(p) = m.converge(x, &within).and_then(|x| m.point(x, &zero)) {
-                seeds.push(p);
+            if let Some(p) = m.converge(centres, &within).and_then(|x| m.point(x, &zero)) {
+                seeds.crossing.push(p);
             }
             continue;
         }
-        // Split the patch with the wider normals (the larger box when they are alike), so
-        // that the cones narrow fastest.
+        // Split the patch with the wider normals (the larger box when they are alike, or
+        // when one box is below a quarter of the other: a flat patch beside a curved one
+        // would never be split otherwise, and the pair never become small), so that the
+        // cones narrow fastest.
         let first = if split_a && split_b {
             let (wa, wb) = (cone_a.half_angle.min(FRAC_PI_2), cone_b.half_angle.min(FRAC_PI_2));
-            if (wa - wb).abs() > 1e-3 { wa > wb } else { a.bounds.diagonal() >= b.bounds.diagonal() }
+            let (da, db) = (a.bounds.diagonal(), b.bounds.diagonal());
+            if (wa - wb).abs() > 1e-3 && da.min(db) >= 0.25 * da.max(db) { wa > wb } else { da >= db }
         } else {
             split_a
         };

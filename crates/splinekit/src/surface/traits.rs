@@ -34,6 +34,39 @@ pub struct Curvatures {
     pub principal: (f64, f64),
 }
 
+impl FundamentalForms {
+    /// The forms from the partials S_u, S_v, S_uu, S_uv, S_vv (ℝ³; `None` where
+    /// S_u × S_v = 0).
+    pub fn from_partials<const D: usize>(
+        su: &Point<D>,
+        sv: &Point<D>,
+        suu: &Point<D>,
+        suv: &Point<D>,
+        svv: &Point<D>,
+    ) -> Option<Self> {
+        let n = unit_normal(su, sv)?;
+        Some(FundamentalForms {
+            e: su.dot(su),
+            f: su.dot(sv),
+            g: sv.dot(sv),
+            l: n.dot(suu),
+            m: n.dot(suv),
+            n: n.dot(svv),
+        })
+    }
+}
+
+impl Curvatures {
+    /// The curvatures given by the fundamental forms.
+    pub fn of(ff: &FundamentalForms) -> Self {
+        let det = ff.e * ff.g - ff.f * ff.f;
+        let gaussian = (ff.l * ff.n - ff.m * ff.m) / det;
+        let mean = (ff.e * ff.n - 2.0 * ff.f * ff.m + ff.g * ff.l) / (2.0 * det);
+        let root = (mean * mean - gaussian).max(0.0).sqrt();
+        Curvatures { gaussian, mean, principal: (mean + root, mean - root) }
+    }
+}
+
 /// Trimming loops in the parameter plane, as closed polygons (the last point joins the first).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TrimLoops<'a> {
@@ -159,26 +192,12 @@ pub trait Surface<const D: usize>: Send + Sync {
         let mut o = [Point::<D>::zeros(); 9];
         self.eval_partials(u, v, 2, 2, &mut o);
         // o[i*3 + j]: (0,1) = S_v, (1,0) = S_u, (2,0) = S_uu, (1,1) = S_uv, (0,2) = S_vv.
-        let (su, sv, suu, suv, svv) = (o[3], o[1], o[6], o[4], o[2]);
-        let n = unit_normal(&su, &sv)?;
-        Some(FundamentalForms {
-            e: su.dot(&su),
-            f: su.dot(&sv),
-            g: sv.dot(&sv),
-            l: n.dot(&suu),
-            m: n.dot(&suv),
-            n: n.dot(&svv),
-        })
+        FundamentalForms::from_partials(&o[3], &o[1], &o[6], &o[4], &o[2])
     }
 
     /// Gaussian, mean and principal curvatures (ℝ³, regular points only).
     fn curvatures(&self, u: f64, v: f64) -> Option<Curvatures> {
-        let ff = self.fundamental_forms(u, v)?;
-        let det = ff.e * ff.g - ff.f * ff.f;
-        let gaussian = (ff.l * ff.n - ff.m * ff.m) / det;
-        let mean = (ff.e * ff.n - 2.0 * ff.f * ff.m + ff.g * ff.l) / (2.0 * det);
-        let root = (mean * mean - gaussian).max(0.0).sqrt();
-        Some(Curvatures { gaussian, mean, principal: (mean + root, mean - root) })
+        Some(Curvatures::of(&self.fundamental_forms(u, v)?))
     }
 
     /// The point of the surface nearest to `query`, its distance within `accuracy`

@@ -28,7 +28,8 @@ use crate::curve::Interval;
 use crate::error::{Error, Result};
 use crate::fit::interpolate_surface_on_knots;
 use crate::query::offset::{check_arguments, check_resolvable};
-use crate::surface::{BSplineSurface, Surface, unit_normal};
+use crate::surface::{BSplineSurface, Curvatures, FundamentalForms, Surface, unit_normal};
+use std::collections::{HashMap, HashSet};
 
 /// The most grid points (m_u · m_v) one surface offset may interpolate.
 pub const MAX_GRID_POINTS: usize = 1 << 18;
@@ -96,28 +97,96 @@ fn no_normal(p: &Point<3>, u: f64, v: f64, why: &str) -> Error {
     )
 }
 
-/// Grid values of the exact offset: points, and the singular nodes (point, normal, u, v).
-struct Samples {
-    points: Vec<Vec<Point<3>>>,
+/// The exact offset O = S + d·N at every (u, v) evaluated so far, each evaluated once: a
+/// doubled grid keeps the old nodes, and the midpoints where the error is measured become
+/// the next grid's nodes. New values come from [`Surface::eval_grid`] on the rows and
+/// columns that hold them (tensor-product surfaces evaluate their bases once per row and
+/// column); folds are checked once per node.
+struct OffsetCache<'s, S: ?Sized> {
+    surface: &'s S,
+    distance: f64,
+    values: HashMap<(u64, u64), Point<3>>,
+    /// Points where the normal is a limit: (point, normal, u, v).
     singular: Vec<(Point<3>, Point<3>, f64, f64)>,
+    folds_checked: HashSet<(u64, u64)>,
 }
 
-fn sample<S: Surface<3> + ?Sized>(s: &S, d: f64, us: &[f64], vs: &[f64]) -> Result<Samples> {
-    let mut points = Vec::with_capacity(us.len());
-    let mut singular = Vec::new();
-    for &u in us {
-        let mut row = Vec::with_capacity(vs.len());
-        for &v in vs {
-            let (n, limit) = normal_at(s, u, v)?;
-            let p = s.point(u, v);
-            if limit {
-                singular.push((p, n, u, v));
-            }
-            row.push(p + n * d);
-        }
-        points.push(row);
+fn key(u: f64, v: f64) -> (u64, u64) {
+    (u.to_bits(), v.to_bits())
+}
+
+impl<'s, S: Surface<3> + ?Sized> OffsetCache<'s, S> {
+    fn new(surface: &'s S, distance: f64) -> Self {
+        OffsetCache { surface, distance, values: HashMap::new(), singular: Vec::new(), folds_checked: HashSet::new() }
     }
-    Ok(Samples { points, singular })
+
+    /// O at the grid us × vs (`out[a][b]` at (us[a], vs[b])).
+    fn grid(&mut self, us: &[f64], vs: &[f64]) -> Result<Vec<Vec<Point<3>>>> {
+        let missing = |u: f64, v: f64| !self.values.contains_key(&key(u, v));
+        let rows: Vec<f64> = us.iter().copied().filter(|&u| vs.iter().any(|&v| missing(u, v))).collect();
+        let cols: Vec<f64> = vs.iter().copied().filter(|&v| rows.iter().any(|&u| missing(u, v))).collect();
+        if !rows.is_empty() {
+            let mut out = vec![Point::<3>::zeros(); rows.len() * cols.len() * 4];
+            self.surface.eval_grid(&rows, &cols, 1, 1, &mut out);
+            for (a, &u) in rows.iter().enumerate() {
+                for (b, &v) in cols.iter().enumerate() {
+                    let o = &out[(a * cols.len() + b) * 4..][..4];
+                    let n = match unit_normal(&o[2], &o[1]) {
+                        Some(n) => n,
+                        None => {
+                            let (n, _) = normal_at(self.surface, u, v)?;
+                            self.singular.push((o[0], n, u, v));
+                            n
+                        }
+                    };
+                    self.values.insert(key(u, v), o[0] + n * self.distance);
+                }
+            }
+        }
+        Ok(us.iter().map(|&u| vs.iter().map(|&v| self.values[&key(u, v)]).collect()).collect())
+    }
+
+    /// 1 − d·k > 0 for both principal curvatures at every regular node not checked before
+    /// (second partials by [`Surface::eval_grid`] on the rows and columns that hold them),
+    /// or an error.
+    fn check_folds(&mut self, us: &[f64], vs: &[f64]) -> Result<()> {
+        let d = self.distance;
+        let new = |u: f64, v: f64| !self.folds_checked.contains(&key(u, v));
+        let rows: Vec<f64> = us.iter().copied().filter(|&u| vs.iter().any(|&v| new(u, v))).collect();
+        let cols: Vec<f64> = vs.iter().copied().filter(|&v| rows.iter().any(|&u| new(u, v))).collect();
+        let mut out = vec![Point::<3>::zeros(); rows.len() * cols.len() * 9];
+        self.surface.eval_grid(&rows, &cols, 2, 2, &mut out);
+        for (a, &u) in rows.iter().enumerate() {
+            for (b, &v) in cols.iter().enumerate() {
+                self.folds_checked.insert(key(u, v));
+                // o[i·3 + j] = ∂^{i+j}S/∂uⁱ∂vʲ.
+                let o = &out[(a * cols.len() + b) * 9..][..9];
+                let Some(ff) = FundamentalForms::from_partials(&o[3], &o[1], &o[6], &o[4], &o[2]) else { continue };
+                let (k1, k2) = Curvatures::of(&ff).principal;
+                for k in [k1, k2] {
+                    if 1.0 - d * k <= 0.0 {
+                        return Err(Error::invalid(
+                            "distance",
+                            format!(
+                                "the offset at d = {d} folds at u = {u}, v = {v}, where the radius of curvature is {:e} (surface offsets are not trimmed)",
+                                1.0 / k.abs()
+                            ),
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The largest of |B − O| on the grid us × vs.
+    fn error_at(&mut self, b: &BSplineSurface<3>, us: &[f64], vs: &[f64]) -> Result<f64> {
+        let exact = self.grid(us, vs)?;
+        let mut fitted = vec![Point::<3>::zeros(); us.len() * vs.len()];
+        b.eval_grid(us, vs, 0, 0, &mut fitted);
+        let exact = exact.iter().flatten();
+        Ok(fitted.iter().zip(exact).fold(0.0f64, |m, (p, q)| m.max((p - q).norm())))
+    }
 }
 
 /// Singular nodes at one point must share their normal (a pole), else it is an apex.
@@ -131,39 +200,6 @@ fn check_singular(singular: &[(Point<3>, Point<3>, f64, f64)], size: f64) -> Res
         }
     }
     Ok(())
-}
-
-/// 1 − d·k > 0 for both principal curvatures at every regular node, or an error.
-fn check_folds<S: Surface<3> + ?Sized>(s: &S, d: f64, us: &[f64], vs: &[f64]) -> Result<()> {
-    for &u in us {
-        for &v in vs {
-            let Some(c) = s.curvatures(u, v) else { continue };
-            for k in [c.principal.0, c.principal.1] {
-                if 1.0 - d * k <= 0.0 {
-                    return Err(Error::invalid(
-                        "distance",
-                        format!(
-                            "the offset at d = {d} folds at u = {u}, v = {v}, where the radius of curvature is {:e} (surface offsets are not trimmed)",
-                            1.0 / k.abs()
-                        ),
-                    ));
-                }
-            }
-        }
-    }
-    Ok(())
-}
-
-/// The largest of |B − O| at the given parameters.
-fn error_at<S: Surface<3> + ?Sized>(s: &S, b: &BSplineSurface<3>, d: f64, us: &[f64], vs: &[f64]) -> Result<f64> {
-    let mut worst = 0.0f64;
-    for &u in us {
-        for &v in vs {
-            let (n, _) = normal_at(s, u, v)?;
-            worst = worst.max((b.point(u, v) - (s.point(u, v) + n * d)).norm());
-        }
-    }
-    Ok(worst)
 }
 
 /// The offset of `surface` at signed distance `distance` (along S_u × S_v) within
@@ -182,6 +218,7 @@ pub fn offset_surface<S: Surface<3> + ?Sized>(surface: &S, distance: f64, tolera
     let dom = (surface.domain_u(), surface.domain_v());
     let breaks = (spans(&surface.breakpoints_u(), dom.0), spans(&surface.breakpoints_v(), dom.1));
     let (mut mu, mut mv) = (FIRST_SAMPLES, FIRST_SAMPLES);
+    let mut cache = OffsetCache::new(surface, distance);
     loop {
         let ((us, ku), (vs, kv)) = (span_grid(&breaks.0, mu), span_grid(&breaks.1, mv));
         if us.len() * vs.len() > MAX_GRID_POINTS {
@@ -194,19 +231,21 @@ pub fn offset_surface<S: Surface<3> + ?Sized>(surface: &S, distance: f64, tolera
                 ),
             ));
         }
-        let samples = sample(surface, distance, &us, &vs)?;
-        let flat: Vec<Point<3>> = samples.points.iter().flatten().copied().collect();
+        let points = cache.grid(&us, &vs)?;
+        let flat: Vec<Point<3>> = points.iter().flatten().copied().collect();
         let size = crate::query::Aabb::around(&flat, 0.0).diagonal().max(f64::MIN_POSITIVE);
         let scale = flat.iter().fold(0.0f64, |m, p| m.max(p.amax()));
         check_resolvable(tolerance, scale)?;
-        check_singular(&samples.singular, size)?;
-        check_folds(surface, distance, &us, &vs)?;
-        let b = interpolate_surface_on_knots(&samples.points, (3, 3), (&us, &ku), (&vs, &kv))?;
-        let mids = |n: &[f64]| -> Vec<f64> { n.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect() };
-        let (mid_u, mid_v) = (mids(&us), mids(&vs));
-        let e_u = error_at(surface, &b, distance, &mid_u, &vs)?;
-        let e_v = error_at(surface, &b, distance, &us, &mid_v)?;
-        let e_c = error_at(surface, &b, distance, &mid_u, &mid_v)?;
+        check_singular(&cache.singular, size)?;
+        cache.check_folds(&us, &vs)?;
+        let b = interpolate_surface_on_knots(&points, (3, 3), (&us, &ku), (&vs, &kv))?;
+        // The midpoints, as the doubled grid will place them (so their values are reused).
+        let mids =
+            |b: &[f64], m: usize| -> Vec<f64> { span_grid(b, 2 * m - 1).0.into_iter().skip(1).step_by(2).collect() };
+        let (mid_u, mid_v) = (mids(&breaks.0, mu), mids(&breaks.1, mv));
+        let e_u = cache.error_at(&b, &mid_u, &vs)?;
+        let e_v = cache.error_at(&b, &us, &mid_v)?;
+        let e_c = cache.error_at(&b, &mid_u, &mid_v)?;
         let error = e_u.max(e_v).max(e_c);
         if error <= 0.5 * tolerance {
             return Ok(SurfaceOffset { surface: b, max_error: error, grid: (us.len(), vs.len()) });
