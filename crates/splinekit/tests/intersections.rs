@@ -279,6 +279,25 @@ fn a_unit_sphere_touches_a_unit_cylinder_along_the_equator() {
     }
 }
 
+/// The equator on the rim of the cylinder (0 ≤ z ≤ 1, a model cylinder and a NURBS one):
+/// the touching curve lies in a domain boundary and is followed along it, one closed loop
+/// (not a piece per step that leaves through the boundary).
+#[test]
+fn a_touching_curve_on_a_domain_boundary_is_one_loop() {
+    let sphere = Sphere::new(1.0).unwrap();
+    let off = |p: &Point<3>| p.z.abs().max(((p.x * p.x + p.y * p.y).sqrt() - 1.0).abs());
+    let model = Cylinder::new(1.0, 1.0).unwrap();
+    let r = intersect_surfaces(&sphere, &model, 1e-10, 1e-4).unwrap();
+    assert_eq!(r.len(), 1, "{r:?}");
+    assert!(r[0].closed, "one loop along the rim");
+    touching(&sphere, &model, &r[0], off);
+    let nurbs = nurbs_cylinder(p3(0.0, 0.0, 0.0), 1.0);
+    let r = intersect_surfaces(&nurbs, &sphere, 1e-10, 1e-4).unwrap();
+    assert_eq!(r.len(), 1, "{r:?}");
+    touching(&nurbs, &sphere, &r[0], off);
+    assert!((length(&r[0].points) - std::f64::consts::TAU).abs() < 1e-3, "length {}", length(&r[0].points));
+}
+
 #[test]
 fn a_plane_touches_a_cylinder_along_a_line_and_two_cylinders_touch_side_by_side() {
     // The cylinder of radius 1 about z, 0 ≤ z ≤ 1, touches the plane x = 1 along the segment

@@ -5,7 +5,8 @@
 //! h predicts the parameters by the least-squares solutions of J_a δ_a = h·T and
 //! J_b δ_b = h·T (J = [S_u, S_v]), then corrects by Newton's method on the four equations
 //! S_a − S_b = 0, (S_a − q)·T = 0 with q = P + h·T (the plane through the predicted point
-//! normal to the tangent), or with a parameter held on the domain boundary the step crosses.
+//! normal to the tangent), or with a parameter held on the domain boundary the step crosses
+//! (or runs along: a curve lying in a boundary is followed there).
 //! The step is accepted when the tangent turns by θ with h·θ/8 ≤ `chord` (the sagitta of a
 //! circular arc of chord h turning by θ) and θ ≤ [`MAX_TURN`]; otherwise it is halved,
 //! at most [`MAX_HALVINGS`] times.
@@ -18,6 +19,10 @@ use nalgebra::{Matrix2, Matrix4, Vector2, Vector4};
 
 /// The largest angle (radians) the tangent may turn in one step.
 pub const MAX_TURN: f64 = 0.2;
+
+/// The largest move off a boundary, as a fraction of the step, of a curve that counts as
+/// running along that boundary (a step at an angle of at most about 0.06° to it).
+pub const ALONG_BOUNDARY: f64 = 1e-3;
 
 /// How often one step may be halved before marching stops.
 pub const MAX_HALVINGS: usize = 40;
@@ -252,6 +257,32 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
         best
     }
 
+    /// An open parameter the curve runs along the boundary of (p lies on that boundary and
+    /// the predicted step moves off it by at most [`ALONG_BOUNDARY`] of its length, in
+    /// 3-D): `to` is put back on the boundary, and the (index, boundary value) is held in
+    /// the correction, so that a curve lying in a boundary (a sphere touching a cylinder
+    /// along its rim) is followed along it instead of leaving at every step.
+    fn along_boundary(&self, p: &MarchPoint, to: &mut [f64; 4], h: f64) -> Option<(usize, f64)> {
+        for (k, (i, closed)) in self.domains().into_iter().enumerate() {
+            let scale = 1e-12 * (1.0 + i.start.abs().max(i.end.abs()));
+            let bound = if (p.x[k] - i.start).abs() <= scale {
+                i.start
+            } else if (p.x[k] - i.end).abs() <= scale {
+                i.end
+            } else {
+                continue;
+            };
+            if closed || (to[k] >= i.start && to[k] <= i.end) {
+                continue;
+            }
+            if (to[k] - bound).abs() * p.partials[k].norm() <= ALONG_BOUNDARY * h {
+                to[k] = bound;
+                return Some((k, bound));
+            }
+        }
+        None
+    }
+
     /// One step of length about h from `p` along a curve of the given contact (see the
     /// module documentation; touching curves are corrected by [`touching::correct`]). The next step
     /// length aims at 0.8 of the chord error and of [`MAX_TURN`] (the sagitta grows as the
@@ -260,6 +291,7 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
         for _ in 0..MAX_HALVINGS {
             let Some(mut to) = Self::predict(p, &(p.tangent * h)) else { return StepEnd::StepLimit };
             let unwrapped = p.x;
+            let along = self.along_boundary(p, &mut to, h);
             let exit = self.exit(&unwrapped, &to);
             let mut len = h;
             if let Some((s, _, _)) = exit {
@@ -267,7 +299,7 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
                 to = std::array::from_fn(|k| unwrapped[k] + (to[k] - unwrapped[k]) * s);
             }
             let q = p.point + p.tangent * len;
-            let hold = exit.map(|(_, k, v)| (k, v));
+            let hold = exit.map(|(_, k, v)| (k, v)).or(along);
             let next = match contact {
                 Contact::Crossing => {
                     let corrected = self.correct(to, &q, &p.tangent, hold);
