@@ -185,9 +185,9 @@ impl App {
     fn draw_view(&mut self) -> Result<(), String> {
         let Some(gpu) = self.gpu.as_mut() else { return Ok(()) };
         let size = (self.view.rect_px[2].max(1), self.view.rect_px[3].max(1));
-        let rs = self.studio.render_scene(size, true)?;
-        self.projector = Some(Projector::new(&rs, size));
-        gpu.draw_view(&rs, size).map_err(|e| e.to_string())?;
+        let scene = self.studio.view_scene(size, true)?;
+        self.projector = Some(Projector::with_bounds(&scene.overlay, scene.bounds, size));
+        gpu.draw_view(&scene, size).map_err(|e| e.to_string())?;
         Ok(())
     }
 
@@ -217,8 +217,8 @@ impl App {
         let path = self.options.screenshot.clone().unwrap_or_else(|| PathBuf::from("studio-screenshot.png"));
         let Some(gpu) = self.gpu.as_mut() else { return Err("no window".into()) };
         let size = (self.view.rect_px[2].max(1), self.view.rect_px[3].max(1));
-        let rs = self.studio.render_scene(size, false)?;
-        gpu.draw_view(&rs, size).map_err(|e| e.to_string())?;
+        let scene = self.studio.view_scene(size, false)?;
+        gpu.draw_view(&scene, size).map_err(|e| e.to_string())?;
         let image = gpu.read_view().map_err(|e| e.to_string())?.ok_or("nothing drawn yet")?;
         image.save_png(&path).map_err(|e| format!("--screenshot: cannot write {}: {e}", path.display()))?;
         Ok(path)

@@ -35,6 +35,7 @@ pub mod history;
 pub mod keys;
 pub mod live;
 pub mod live_surfaces;
+pub mod live_view;
 pub mod options;
 pub mod panels;
 pub mod report;
