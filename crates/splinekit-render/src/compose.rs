@@ -3,12 +3,12 @@
 //! local pieces become lines and points, all posed at a time of the scene's animation.
 
 use splinekit::Point;
-use splinekit::blend::BlendingSplineSurface;
+use splinekit::blend::{BlendingSplineCurve, BlendingSplineSurface};
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
 use splinekit_mesh::surface_mesh::{regular, to3};
 use splinekit_mesh::{MeshOptions, Polyline};
-use splinekit_scene::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
+use splinekit_scene::blending::BlendingSplineSurfaceDoc;
 use splinekit_scene::scenes::{CameraDoc, ColorMapDoc, SceneDocument, SceneObject, StyleDoc};
 use splinekit_scene::{Curves, Decoration, DimensionVisitor, DocumentError, DocumentKind, ShapeDocument, Surfaces};
 
@@ -185,6 +185,29 @@ fn object(
     let within = |e: DocumentError| e.within(field);
     match &shape {
         ShapeDocument::Curve(c) => {
+            if let Decoration::LocalCurves(d) = c.decoration() {
+                // A blending spline, built once for its local curves and its line.
+                macro_rules! blending {
+                    ($dim:literal) => {{
+                        let curve = d.curve::<$dim>().map_err(within)?;
+                        if obj.style.local_pieces {
+                            local_curves(&curve, &obj.style, out);
+                        }
+                        if !obj.style.hidden {
+                            out.lines.push(CurveLine { obj, color }.visit::<$dim>(&curve)?);
+                        }
+                        return Ok($dim <= 2);
+                    }};
+                }
+                match d.dimension().map_err(within)? {
+                    2 => blending!(2),
+                    3 => blending!(3),
+                    other => {
+                        let e = format!("drawn for 2-D and 3-D curves, not {other}-D");
+                        return Err(within(DocumentError::new("local_pieces", e)));
+                    }
+                }
+            }
             let curve = c.build().map_err(within)?;
             decorate(c.decoration(), &obj.style, out).map_err(within)?;
             if !obj.style.hidden {
@@ -223,11 +246,8 @@ fn decorate(decoration: Decoration<'_>, style: &StyleDoc, out: &mut RenderScene)
                 control_net(net, out);
             }
         }
-        Decoration::LocalCurves(d) => {
-            if style.local_pieces {
-                local_curves(d, style, out)?;
-            }
-        }
+        // Drawn with the curve, which is built once for both (see `object`).
+        Decoration::LocalCurves(_) => {}
         Decoration::LocalPatches(d) => {
             if style.local_pieces {
                 local_patches(d, out)?;
@@ -322,42 +342,30 @@ fn control_net(net: &[Vec<Vec<f64>>], out: &mut RenderScene) {
     }
 }
 
-/// The local curves of a blending spline in their own colours, with their (moved) origins.
-fn local_curves(d: &BlendingSplineDoc, style: &StyleDoc, out: &mut RenderScene) -> Result<(), DocumentError> {
-    macro_rules! draw {
-        ($dim:literal) => {{
-            let c = d.curve::<$dim>()?;
-            let n = c.local_count();
-            for k in 0..n {
-                let support = c.local_support(k);
-                let (a, b) = (support.start, support.end);
-                let mut v = [Point::<$dim>::zeros(); 1];
-                let pts: Vec<[f32; 3]> = (0..=96)
-                    .map(|i| {
-                        c.eval_local(k, a + (b - a) * i as f64 / 96.0, &mut v);
-                        f32x3(to3(&v[0]))
-                    })
-                    .collect();
-                out.lines.push(LineItem {
-                    points: pts,
-                    closed: false,
-                    color: local_color(k, n),
-                    width: style.line_width * 0.6,
-                });
-                // The frame origin where the local's transform moved it.
-                let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
-                out.points.push(PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 });
-            }
-        }};
+/// The local curves of a blending spline in their own colours (97 points over each one's
+/// support), with their origins where their transforms moved them.
+fn local_curves<const D: usize>(c: &BlendingSplineCurve<D>, style: &StyleDoc, out: &mut RenderScene) {
+    let n = c.local_count();
+    for k in 0..n {
+        let support = c.local_support(k);
+        let (a, b) = (support.start, support.end);
+        let mut v = [Point::<D>::zeros(); 1];
+        let pts: Vec<[f32; 3]> = (0..=96)
+            .map(|i| {
+                c.eval_local(k, a + (b - a) * i as f64 / 96.0, &mut v);
+                f32x3(to3(&v[0]))
+            })
+            .collect();
+        out.lines.push(LineItem {
+            points: pts,
+            closed: false,
+            color: local_color(k, n),
+            width: style.line_width * 0.6,
+        });
+        // The frame origin where the local's transform moved it.
+        let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
+        out.points.push(PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 });
     }
-    match d.dimension()? {
-        2 => draw!(2),
-        3 => draw!(3),
-        other => {
-            return Err(DocumentError::new("local_pieces", format!("drawn for 2-D and 3-D curves, not {other}-D")));
-        }
-    }
-    Ok(())
 }
 
 /// The local patches of a blending-spline surface: outline and middle lines of each over

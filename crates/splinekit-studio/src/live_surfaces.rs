@@ -23,12 +23,15 @@ use splinekit_scene::blending::BlendingSplineSurfaceDoc;
 use splinekit_scene::blending::local_points::PatchControlPoints;
 use splinekit_scene::scenes::SceneDocument;
 use splinekit_scene::transforms::PatchTransforms;
-use splinekit_scene::{Decoration, DocumentKind, ShapeDocument};
+use splinekit_scene::{Decoration, DocumentError, DocumentKind, ShapeDocument};
 
 /// The kept surfaces of a scene, by object.
 #[derive(Default)]
 pub struct LiveSurfaces {
     kept: Vec<Option<KeptSurface>>,
+    /// The surface the last edit's check built ([`Self::check_build`]): its object and
+    /// document; the next update keeps it instead of building it again.
+    checked: Option<(usize, BlendingSplineSurfaceDoc, BlendingSplineSurface<3>)>,
     /// Grid samples re-evaluated by the last [`LiveSurfaces::update`] after frames changed.
     pub last_refreshed: usize,
 }
@@ -68,7 +71,7 @@ impl LiveSurfaces {
         self.kept.resize_with(scene.objects.len(), || None);
         self.kept.truncate(scene.objects.len());
         self.last_refreshed = 0;
-        for (slot, obj) in self.kept.iter_mut().zip(&scene.objects) {
+        for (index, (slot, obj)) in self.kept.iter_mut().zip(&scene.objects).enumerate() {
             let mut shape = obj.shape.clone();
             if let Some(t) = time {
                 shape.set_time(t);
@@ -86,7 +89,14 @@ impl LiveSurfaces {
                 continue;
             }
             let key = frameless(doc);
-            let Ok(posed) = doc.surface::<3>() else {
+            let built = match self.checked.take() {
+                Some((i, checked, s)) if i == index && checked == *doc => Ok(s),
+                other => {
+                    self.checked = other;
+                    doc.surface::<3>()
+                }
+            };
+            let Ok(posed) = built else {
                 *slot = None;
                 continue;
             };
@@ -108,6 +118,28 @@ impl LiveSurfaces {
                     })
                 }
             }
+        }
+    }
+
+    /// Builds an edited object's shape to check the edit ([`crate::edit::Edit::apply_with`]):
+    /// a 3-D blending-spline surface as the next [`Self::update`] would build it, kept for
+    /// it when the scene is not posed at a time (`time` is `None`), so that a drag step
+    /// builds the surface once; any other shape as [`crate::edit::check_builds`] does.
+    pub fn check_build(
+        &mut self,
+        object: usize,
+        shape: &ShapeDocument,
+        time: Option<f64>,
+    ) -> Result<(), DocumentError> {
+        match shape {
+            ShapeDocument::Surface(s) if time.is_none() => match s.decoration() {
+                Decoration::LocalPatches(doc) if doc.dimension().ok() == Some(3) => {
+                    self.checked = Some((object, doc.clone(), doc.surface::<3>()?));
+                    Ok(())
+                }
+                _ => crate::edit::check_builds(shape),
+            },
+            _ => crate::edit::check_builds(shape),
         }
     }
 

@@ -6,6 +6,7 @@
 use std::path::PathBuf;
 
 use splinekit_render::{LineItem, PointItem, RenderScene, compose_with};
+use splinekit_scene::ShapeDocument;
 use splinekit_scene::scenes::SceneDocument;
 
 use crate::clock::Clock;
@@ -191,7 +192,10 @@ impl Studio {
 
     /// Applies an edit through the history; a refused edit leaves its message.
     pub fn edit(&mut self, edit: Edit, merge: bool) -> bool {
-        match self.history.apply(&mut self.scene, edit, merge) {
+        let time = self.time();
+        let live = &mut self.live;
+        let mut check = |object: usize, shape: &ShapeDocument| live.check_build(object, shape, time);
+        match self.history.apply_with(&mut self.scene, edit, merge, &mut check) {
             Ok(()) => {
                 self.message = None;
                 true
