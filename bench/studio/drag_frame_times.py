@@ -65,9 +65,7 @@ def main():
     x0, y0 = h["x"], h["y"]
     xdotool("mousemove", "--window", window, str(round(x0)), str(round(y0)))
     time.sleep(1.0)
-    before = json.load(open(report)) if os.path.exists(report) else None
     xdotool("mousedown", "1")
-    marks = []
     for s in range(1, steps + 1):
         f = s / steps
         xdotool("mousemove", "--window", window, str(round(x0 + 120 * f)), str(round(y0 + 80 * f)))
@@ -76,16 +74,16 @@ def main():
     time.sleep(1.0)
     xdotool("key", "ctrl+q")
     child.wait(timeout=120)
-    log = json.load(open(frames))
-    work, scene = log["work_ms"], log["scene_ms"]
-    # The frames of the drag: all but the first frames (window opening, layout) and the
-    # last two (the release and the closing frame).
-    drag = slice(len(work) - steps - 2, len(work) - 2) if len(work) > steps + 4 else slice(0, len(work))
-    for name, xs in (("whole frame", work[drag]), ("3-D view", scene[drag])):
+    with open(frames) as f:
+        log = json.load(f)
+    drag = [i for i, d in enumerate(log["dragging"]) if d]
+    if len(drag) < 4:
+        sys.exit(f"only {len(drag)} frames were drawn during the drag")
+    for name, key in (("whole frame", "work_ms"), ("3-D view", "scene_ms")):
+        xs = [log[key][i] for i in drag]
         q = statistics.quantiles(xs, n=4)
         print(f"{name}: median {statistics.median(xs):.1f} ms, quartiles {q[0]:.1f}-{q[2]:.1f} ms "
               f"over {len(xs)} frames")
-    del before, marks
 
 
 if __name__ == "__main__":

@@ -73,7 +73,6 @@ impl Changes {
 /// poles and seams the mesher found.
 #[derive(Debug, Clone)]
 pub struct Lattice {
-    mesh: usize,
     flipped: bool,
     gluing: Gluing,
 }
@@ -112,7 +111,7 @@ fn lattice(obj: &SceneObject, items: &ObjectItems, composed: &RenderScene, kept:
         } else {
             return None;
         };
-        positions.then(|| Lattice { mesh: items.meshes.start, flipped, gluing: Gluing::detect(kept.blending()) })
+        positions.then(|| Lattice { flipped, gluing: Gluing::detect(kept.blending()) })
     })?
 }
 
@@ -175,7 +174,11 @@ fn patch_surface(
     if followed.rects.iter().any(on_boundary) && Gluing::detect(surface) != lattice.gluing {
         return None;
     }
-    let mesh = &mut composed.meshes[lattice.mesh];
+    if items.meshes.len() != 1 {
+        return None;
+    }
+    let index = items.meshes.start;
+    let mesh = &mut composed.meshes[index];
     let rows = kept.with_samples(|s| {
         let rows = merged(followed.rects.iter().map(|r| rows_in(s.us(), r.u)).collect());
         let nv = s.vs().len();
@@ -189,7 +192,7 @@ fn patch_surface(
                 mesh.normals[k] = f32x3(&s.normals()[k]).map(|x| sign * x);
             }
         }
-        Some(rows.into_iter().map(|r| (lattice.mesh, r.start * nv..r.end * nv)).collect::<Vec<_>>())
+        Some(rows.into_iter().map(|r| (index, r.start * nv..r.end * nv)).collect::<Vec<_>>())
     })??;
     let mut lines = Vec::new();
     if obj.style.local_pieces {
