@@ -3,16 +3,17 @@
 //! local pieces become lines and points, all posed at a time of the scene's animation.
 
 use splinekit::Point;
+use splinekit::blend::{BlendingSplineCurve, BlendingSplineSurface};
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
 use splinekit_mesh::surface_mesh::{regular, to3};
 use splinekit_mesh::{MeshOptions, Polyline};
-use splinekit_scene::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
+use splinekit_scene::blending::BlendingSplineSurfaceDoc;
 use splinekit_scene::scenes::{CameraDoc, ColorMapDoc, SceneDocument, SceneObject, StyleDoc};
 use splinekit_scene::{Curves, Decoration, DimensionVisitor, DocumentError, DocumentKind, ShapeDocument, Surfaces};
 
 use crate::camera::Camera;
-use crate::scene::{LineItem, MeshItem, PointItem, RenderScene};
+use crate::scene::{LineItem, MeshItem, ObjectItems, PointItem, RenderScene};
 
 /// Colours given to objects without one (sRGB).
 pub const PALETTE: [[f32; 4]; 6] = [
@@ -57,25 +58,99 @@ pub fn compose_with<'a>(
         background: [scene.background[0], scene.background[1], scene.background[2], 1.0],
         ..Default::default()
     };
-    let mut flat = true;
-    for (i, obj) in scene.objects.iter().enumerate() {
-        let color = obj
-            .style
-            .color
-            .as_ref()
-            .map_or(PALETTE[i % PALETTE.len()], |c| [c[0], c[1], c[2], *c.get(3).unwrap_or(&1.0)]);
-        let color = match time {
-            Some(t) if obj.style.color_cycle => hue_turned(color, (t / scene.animation.duration) as f32),
-            _ => color,
-        };
-        flat &= object(obj, &format!("objects[{i}].shape"), time, color, surfaces(i), &mut out)?;
-        for p in &obj.points {
-            out.points.push(PointItem { position: f32x3(*p), color, size: 8.0 });
+    for i in 0..scene.objects.len() {
+        let items = compose_object(scene, i, time, surfaces(i), &mut out)?;
+        out.objects.push(items);
+    }
+    finish(scene, aspect, &mut out);
+    Ok(out)
+}
+
+/// Composes object `index` of the scene again (with `given` standing in for its surface as
+/// in [`compose_with`]) and puts its items where its old ones were in `out`, a
+/// composition of the same scene before the object changed; the scene-wide parts (axes,
+/// painter's order, camera) are made again; the objects after it keep their items, moved
+/// when the object made a different number of them. Scenes with `axes` (which follow the
+/// bounds of everything) are refused with an error naming the field.
+pub fn recompose_object(
+    scene: &SceneDocument,
+    index: usize,
+    time: Option<f64>,
+    aspect: f32,
+    given: Option<&(dyn Surface<3> + 'static)>,
+    out: &mut RenderScene,
+) -> Result<(), DocumentError> {
+    if scene.axes {
+        return Err(DocumentError::new("axes", "a scene with axes is composed whole"));
+    }
+    let Some(old) = out.objects.get(index).cloned() else {
+        return Err(DocumentError::new("objects", format!("object {index} of {} was not composed", out.objects.len())));
+    };
+    let mut one = RenderScene::default();
+    let items = compose_object(scene, index, time, given, &mut one)?;
+    let shift = |r: &std::ops::Range<usize>, at: usize, n: usize, by: usize| {
+        if r.start >= at { r.start - n + by..r.end - n + by } else { r.clone() }
+    };
+    let (nm, nl, np) = (one.meshes.len(), one.lines.len(), one.points.len());
+    out.meshes.splice(old.meshes.clone(), one.meshes);
+    out.lines.splice(old.lines.clone(), one.lines);
+    out.points.splice(old.points.clone(), one.points);
+    for (i, o) in out.objects.iter_mut().enumerate() {
+        if i == index {
+            *o = ObjectItems {
+                meshes: old.meshes.start..old.meshes.start + nm,
+                lines: old.lines.start..old.lines.start + nl,
+                points: old.points.start..old.points.start + np,
+                flat: items.flat,
+            };
+        } else if i > index {
+            o.meshes = shift(&o.meshes, old.meshes.end, old.meshes.len(), nm);
+            o.lines = shift(&o.lines, old.lines.end, old.lines.len(), nl);
+            o.points = shift(&o.points, old.points.end, old.points.len(), np);
         }
     }
+    finish(scene, aspect, out);
+    Ok(())
+}
+
+/// Appends object `index`'s items (shape, decoration, points) to `out`.
+fn compose_object(
+    scene: &SceneDocument,
+    index: usize,
+    time: Option<f64>,
+    given: Option<&(dyn Surface<3> + 'static)>,
+    out: &mut RenderScene,
+) -> Result<ObjectItems, DocumentError> {
+    let obj = &scene.objects[index];
+    let color = obj
+        .style
+        .color
+        .as_ref()
+        .map_or(PALETTE[index % PALETTE.len()], |c| [c[0], c[1], c[2], *c.get(3).unwrap_or(&1.0)]);
+    let color = match time {
+        Some(t) if obj.style.color_cycle => hue_turned(color, (t / scene.animation.duration) as f32),
+        _ => color,
+    };
+    let start = (out.meshes.len(), out.lines.len(), out.points.len());
+    let flat = object(obj, &format!("objects[{index}].shape"), time, color, given, out)?;
+    for p in &obj.points {
+        out.points.push(PointItem { position: f32x3(*p), color, size: 8.0 });
+    }
+    Ok(ObjectItems {
+        meshes: start.0..out.meshes.len(),
+        lines: start.1..out.lines.len(),
+        points: start.2..out.points.len(),
+        flat,
+    })
+}
+
+/// The scene-wide parts of a composition, from its objects' items: axes, painter's order,
+/// camera, lights.
+fn finish(scene: &SceneDocument, aspect: f32, out: &mut RenderScene) {
+    let mut flat = out.objects.iter().all(|o| o.flat);
     let bounds = out.bounds().unwrap_or(([-1.0; 3], [1.0; 3]));
     if scene.axes {
-        axes(bounds, &mut out);
+        axes(bounds, out);
     }
     let bounds = out.bounds().unwrap_or(bounds);
     // Everything in one plane z = const: a plane figure, seen from the top.
@@ -88,7 +163,6 @@ pub fn compose_with<'a>(
     for (k, l) in scene.lights.iter().enumerate() {
         out.lights[k] = (l.direction.map(|x| x as f32), l.intensity as f32);
     }
-    Ok(out)
 }
 
 /// Adds one object's shape, posed at `time`, with its decoration (local pieces and
@@ -111,6 +185,29 @@ fn object(
     let within = |e: DocumentError| e.within(field);
     match &shape {
         ShapeDocument::Curve(c) => {
+            if let Decoration::LocalCurves(d) = c.decoration() {
+                // A blending spline, built once for its local curves and its line.
+                macro_rules! blending {
+                    ($dim:literal) => {{
+                        let curve = d.curve::<$dim>().map_err(within)?;
+                        if obj.style.local_pieces {
+                            local_curves(&curve, &obj.style, out);
+                        }
+                        if !obj.style.hidden {
+                            out.lines.push(CurveLine { obj, color }.visit::<$dim>(&curve)?);
+                        }
+                        return Ok($dim <= 2);
+                    }};
+                }
+                match d.dimension().map_err(within)? {
+                    2 => blending!(2),
+                    3 => blending!(3),
+                    other => {
+                        let e = format!("drawn for 2-D and 3-D curves, not {other}-D");
+                        return Err(within(DocumentError::new("local_pieces", e)));
+                    }
+                }
+            }
             let curve = c.build().map_err(within)?;
             decorate(c.decoration(), &obj.style, out).map_err(within)?;
             if !obj.style.hidden {
@@ -149,11 +246,8 @@ fn decorate(decoration: Decoration<'_>, style: &StyleDoc, out: &mut RenderScene)
                 control_net(net, out);
             }
         }
-        Decoration::LocalCurves(d) => {
-            if style.local_pieces {
-                local_curves(d, style, out)?;
-            }
-        }
+        // Drawn with the curve, which is built once for both (see `object`).
+        Decoration::LocalCurves(_) => {}
         Decoration::LocalPatches(d) => {
             if style.local_pieces {
                 local_patches(d, out)?;
@@ -248,42 +342,30 @@ fn control_net(net: &[Vec<Vec<f64>>], out: &mut RenderScene) {
     }
 }
 
-/// The local curves of a blending spline in their own colours, with their (moved) origins.
-fn local_curves(d: &BlendingSplineDoc, style: &StyleDoc, out: &mut RenderScene) -> Result<(), DocumentError> {
-    macro_rules! draw {
-        ($dim:literal) => {{
-            let c = d.curve::<$dim>()?;
-            let n = c.local_count();
-            for k in 0..n {
-                let support = c.local_support(k);
-                let (a, b) = (support.start, support.end);
-                let mut v = [Point::<$dim>::zeros(); 1];
-                let pts: Vec<[f32; 3]> = (0..=96)
-                    .map(|i| {
-                        c.eval_local(k, a + (b - a) * i as f64 / 96.0, &mut v);
-                        f32x3(to3(&v[0]))
-                    })
-                    .collect();
-                out.lines.push(LineItem {
-                    points: pts,
-                    closed: false,
-                    color: local_color(k, n),
-                    width: style.line_width * 0.6,
-                });
-                // The frame origin where the local's transform moved it.
-                let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
-                out.points.push(PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 });
-            }
-        }};
+/// The local curves of a blending spline in their own colours (97 points over each one's
+/// support), with their origins where their transforms moved them.
+fn local_curves<const D: usize>(c: &BlendingSplineCurve<D>, style: &StyleDoc, out: &mut RenderScene) {
+    let n = c.local_count();
+    for k in 0..n {
+        let support = c.local_support(k);
+        let (a, b) = (support.start, support.end);
+        let mut v = [Point::<D>::zeros(); 1];
+        let pts: Vec<[f32; 3]> = (0..=96)
+            .map(|i| {
+                c.eval_local(k, a + (b - a) * i as f64 / 96.0, &mut v);
+                f32x3(to3(&v[0]))
+            })
+            .collect();
+        out.lines.push(LineItem {
+            points: pts,
+            closed: false,
+            color: local_color(k, n),
+            width: style.line_width * 0.6,
+        });
+        // The frame origin where the local's transform moved it.
+        let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
+        out.points.push(PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 });
     }
-    match d.dimension()? {
-        2 => draw!(2),
-        3 => draw!(3),
-        other => {
-            return Err(DocumentError::new("local_pieces", format!("drawn for 2-D and 3-D curves, not {other}-D")));
-        }
-    }
-    Ok(())
 }
 
 /// The local patches of a blending-spline surface: outline and middle lines of each over
@@ -291,31 +373,41 @@ fn local_curves(d: &BlendingSplineDoc, style: &StyleDoc, out: &mut RenderScene) 
 fn local_patches(d: &BlendingSplineSurfaceDoc, out: &mut RenderScene) -> Result<(), DocumentError> {
     let s = d.surface::<3>()?;
     let (nu, nv) = s.local_count();
-    let mut v = [Point::<3>::zeros(); 1];
     for k in 0..nu {
         for l in 0..nv {
-            let rect = s.local_support(k, l);
-            let ((u0, u1), (v0, v1)) = ((rect.u.start, rect.u.end), (rect.v.start, rect.v.end));
-            let color = local_color(k * nv + l, nu * nv);
-            // The patch's outline and middle lines over its support.
-            for (fixed_u, t) in [(true, 0.0), (true, 0.5), (true, 1.0), (false, 0.0), (false, 0.5), (false, 1.0)] {
-                let pts: Vec<[f32; 3]> = (0..=32)
-                    .map(|i| {
-                        let s_ = i as f64 / 32.0;
-                        let (u, vv) = if fixed_u {
-                            (u0 + (u1 - u0) * t, v0 + (v1 - v0) * s_)
-                        } else {
-                            (u0 + (u1 - u0) * s_, v0 + (v1 - v0) * t)
-                        };
-                        s.eval_local((k, l), (u, vv), 0, 0, &mut v);
-                        f32x3(to3(&v[0]))
-                    })
-                    .collect();
-                out.lines.push(LineItem { points: pts, closed: false, color, width: 1.0 });
-            }
+            out.lines.extend(local_patch_lines(&s, (k, l)));
         }
     }
     Ok(())
+}
+
+/// Lines drawn for each local patch with `local_pieces`.
+pub const LOCAL_PATCH_LINES: usize = 6;
+
+/// The lines drawn for local patch (k, l) of a blending-spline surface: its outline and
+/// middle lines over its support (fixed u at the support's start, middle and end, then
+/// fixed v), 33 points each, in its own colour ([`local_color`]).
+pub fn local_patch_lines(s: &BlendingSplineSurface<3>, (k, l): (usize, usize)) -> [LineItem; LOCAL_PATCH_LINES] {
+    let (nu, nv) = s.local_count();
+    let rect = s.local_support(k, l);
+    let ((u0, u1), (v0, v1)) = ((rect.u.start, rect.u.end), (rect.v.start, rect.v.end));
+    let color = local_color(k * nv + l, nu * nv);
+    let mut v = [Point::<3>::zeros(); 1];
+    [(true, 0.0), (true, 0.5), (true, 1.0), (false, 0.0), (false, 0.5), (false, 1.0)].map(|(fixed_u, t)| {
+        let pts: Vec<[f32; 3]> = (0..=32)
+            .map(|i| {
+                let s_ = i as f64 / 32.0;
+                let (u, vv) = if fixed_u {
+                    (u0 + (u1 - u0) * t, v0 + (v1 - v0) * s_)
+                } else {
+                    (u0 + (u1 - u0) * s_, v0 + (v1 - v0) * t)
+                };
+                s.eval_local((k, l), (u, vv), 0, 0, &mut v);
+                f32x3(to3(&v[0]))
+            })
+            .collect();
+        LineItem { points: pts, closed: false, color, width: 1.0 }
+    })
 }
 
 struct SurfaceMesh<'a> {

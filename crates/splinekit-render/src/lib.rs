@@ -10,14 +10,16 @@
 
 pub mod camera;
 pub mod compose;
+pub mod geometry;
 pub mod gltf_export;
 pub mod image;
 pub mod renderer;
 pub mod scene;
 
 pub use camera::Camera;
-pub use compose::{SurfaceFor, compose, compose_with};
+pub use compose::{SurfaceFor, compose, compose_with, recompose_object};
+pub use geometry::{Geometry, GeometryData};
 pub use gltf_export::scene_to_gltf;
 pub use image::{Image, write_gif};
 pub use renderer::{RenderError, RenderTarget, Renderer};
-pub use scene::{LineItem, MeshItem, PointItem, RenderScene};
+pub use scene::{LineItem, MeshItem, ObjectItems, PointItem, RenderScene};

@@ -3,6 +3,7 @@
 
 use wgpu::util::DeviceExt;
 
+use crate::geometry::{Geometry, bytes};
 use crate::image::Image;
 use crate::scene::{RenderScene, srgba_to_linear};
 
@@ -50,14 +51,6 @@ struct Pipelines {
     flat_point: wgpu::RenderPipeline,
 }
 
-/// A scene's geometry on the device: one vertex and index buffer per mesh, and instance
-/// buffers of line segments and points with their counts.
-struct Geometry {
-    meshes: Vec<(wgpu::Buffer, wgpu::Buffer, u32)>,
-    lines: Option<(wgpu::Buffer, u32)>,
-    points: Option<(wgpu::Buffer, u32)>,
-}
-
 /// The textures a frame is drawn into: multisampled colour and depth, the resolved image
 /// (sRGB; a window can copy it into an `Rgba8Unorm` texture to show the bytes), and the
 /// buffer it is copied into for reading (rows padded to 256 bytes). Made by
@@ -83,17 +76,7 @@ impl RenderTarget {
     }
 }
 
-/// Floats of one mesh vertex in the vertex buffer: position, normal, linear colour.
-pub const MESH_VERTEX_FLOATS: usize = 10;
-/// Floats of one line-segment instance: its two ends, linear colour, width and padding.
-pub const SEGMENT_FLOATS: usize = 12;
-/// Floats of one point instance: position, size, linear colour.
-pub const POINT_FLOATS: usize = 8;
-
-fn bytes<T: Copy>(data: &[T]) -> &[u8] {
-    // SAFETY: T is plain f32/u32 data (no padding, no pointers); the slice is read only.
-    unsafe { std::slice::from_raw_parts(data.as_ptr() as *const u8, std::mem::size_of_val(data)) }
-}
+pub use crate::geometry::{MESH_VERTEX_FLOATS, POINT_FLOATS, SEGMENT_FLOATS};
 
 impl Renderer {
     /// Finds an adapter (Vulkan or GL; headless GL works on Mesa's llvmpipe) and builds the
@@ -155,14 +138,29 @@ impl Renderer {
         self.read(&targets)
     }
 
-    /// Draws the scene into the target: uploads the scene's uniforms and geometry and runs
-    /// one render pass into the multisampled textures, resolved into
-    /// [`RenderTarget::resolved`].
+    /// Draws the scene into the target: uploads its geometry ([`Self::upload`]) and draws
+    /// it ([`Self::draw_layers`]).
     pub fn draw(&self, scene: &RenderScene, targets: &RenderTarget) {
+        let geometry = self.upload(scene);
+        self.draw_layers(scene, scene.bounds(), &[&geometry], targets);
+    }
+
+    /// Draws geometry uploaded before in one render pass into the multisampled textures,
+    /// resolved into [`RenderTarget::resolved`]: the meshes of every layer, then their
+    /// lines, then their points, as one scene holding the layers' items in order would be
+    /// drawn. Camera, lights, background and painter's order come from `scene`, the depth
+    /// range from `bounds` (of all layers; [`RenderScene::view_projection_in`]).
+    pub fn draw_layers(
+        &self,
+        scene: &RenderScene,
+        bounds: Option<([f32; 3], [f32; 3])>,
+        layers: &[&Geometry],
+        targets: &RenderTarget,
+    ) {
         let (width, height) = targets.size();
         let uniform = self.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: None,
-            contents: bytes(&globals(scene, width, height)),
+            contents: bytes(&globals(scene, bounds, width, height)),
             usage: wgpu::BufferUsages::UNIFORM,
         });
         let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -170,9 +168,8 @@ impl Renderer {
             layout: &self.bind_layout,
             entries: &[wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() }],
         });
-        let geometry = self.upload(scene);
         let mut encoder = self.device.create_command_encoder(&Default::default());
-        self.pass(&mut encoder, targets, &bind, &geometry, scene);
+        self.pass(&mut encoder, targets, &bind, layers, scene);
         self.queue.submit([encoder.finish()]);
     }
 
@@ -198,54 +195,6 @@ impl Renderer {
         );
         self.queue.submit([encoder.finish()]);
         self.read_back(targets)
-    }
-
-    /// Uploads the meshes, the lines as instanced segments and the points as instanced
-    /// discs, with colours converted to linear.
-    fn upload(&self, scene: &RenderScene) -> Geometry {
-        let device = &self.device;
-        let buffer = |data: &[u8], usage: wgpu::BufferUsages| {
-            device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: None, contents: data, usage })
-        };
-        let mut meshes = Vec::new();
-        for m in &scene.meshes {
-            if m.triangles.is_empty() {
-                continue;
-            }
-            let mut v = Vec::with_capacity(m.positions.len() * MESH_VERTEX_FLOATS);
-            for i in 0..m.positions.len() {
-                v.extend_from_slice(&m.positions[i]);
-                v.extend_from_slice(m.normals.get(i).unwrap_or(&[0.0; 3]));
-                v.extend_from_slice(&srgba_to_linear(*m.colors.get(i).unwrap_or(&m.color)));
-            }
-            let flat: Vec<u32> = m.triangles.iter().flatten().copied().collect();
-            let (vb, ib) =
-                (buffer(bytes(&v), wgpu::BufferUsages::VERTEX), buffer(bytes(&flat), wgpu::BufferUsages::INDEX));
-            meshes.push((vb, ib, flat.len() as u32));
-        }
-        let mut segments: Vec<f32> = Vec::new();
-        for l in &scene.lines {
-            let c = srgba_to_linear(l.color);
-            let n = l.points.len();
-            let count = if l.closed && n > 2 { n } else { n.saturating_sub(1) };
-            for i in 0..count {
-                let (a, b) = (l.points[i], l.points[(i + 1) % n]);
-                segments.extend_from_slice(&a);
-                segments.extend_from_slice(&b);
-                segments.extend_from_slice(&c);
-                segments.extend_from_slice(&[l.width, 0.0]);
-            }
-        }
-        let mut points: Vec<f32> = Vec::new();
-        for p in &scene.points {
-            points.extend_from_slice(&p.position);
-            points.push(p.size);
-            points.extend_from_slice(&srgba_to_linear(p.color));
-        }
-        let instances = |data: &[f32], floats: usize| {
-            (!data.is_empty()).then(|| (buffer(bytes(data), wgpu::BufferUsages::VERTEX), (data.len() / floats) as u32))
-        };
-        Geometry { meshes, lines: instances(&segments, SEGMENT_FLOATS), points: instances(&points, POINT_FLOATS) }
     }
 
     /// The textures and read-back buffer of a `width` × `height` frame; each side in
@@ -294,7 +243,7 @@ impl Renderer {
         encoder: &mut wgpu::CommandEncoder,
         targets: &RenderTarget,
         bind: &wgpu::BindGroup,
-        geometry: &Geometry,
+        layers: &[&Geometry],
         scene: &RenderScene,
     ) {
         let bg = srgba_to_linear(scene.background);
@@ -330,18 +279,20 @@ impl Renderer {
         });
         pass.set_bind_group(0, bind, &[]);
         pass.set_pipeline(&self.pipelines.mesh);
-        for (vb, ib, count) in &geometry.meshes {
-            pass.set_vertex_buffer(0, vb.slice(..));
-            pass.set_index_buffer(ib.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed(0..*count, 0, 0..1);
+        for m in layers.iter().flat_map(|g| &g.meshes) {
+            pass.set_vertex_buffer(0, m.vertices.slice(..));
+            pass.set_index_buffer(m.indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..m.index_count, 0, 0..1);
         }
         let p = &self.pipelines;
         let (line, point) = if scene.painter_order { (&p.flat_line, &p.flat_point) } else { (&p.line, &p.point) };
-        for (pipeline, instances) in [(line, &geometry.lines), (point, &geometry.points)] {
-            if let Some((buffer, count)) = instances {
-                pass.set_pipeline(pipeline);
-                pass.set_vertex_buffer(0, buffer.slice(..));
-                pass.draw(0..6, 0..*count);
+        for (pipeline, lines) in [(line, true), (point, false)] {
+            pass.set_pipeline(pipeline);
+            for g in layers {
+                if let Some(i) = if lines { &g.lines } else { &g.points } {
+                    pass.set_vertex_buffer(0, i.buffer.slice(..));
+                    pass.draw(0..6, 0..i.count);
+                }
             }
         }
     }
@@ -388,9 +339,9 @@ fn bind_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
 }
 
 /// The uniform block: view-projection matrix, eye, viewport, lights and ambient light (see
-/// `shaders.wgsl`), with the camera fitted to the scene when it has none.
-fn globals(scene: &RenderScene, width: u32, height: u32) -> [f32; 36] {
-    let (view_proj, eye) = scene.view_projection(width, height);
+/// `shaders.wgsl`), with the camera fitted to `bounds` when the scene has none.
+fn globals(scene: &RenderScene, bounds: Option<([f32; 3], [f32; 3])>, width: u32, height: u32) -> [f32; 36] {
+    let (view_proj, eye) = scene.view_projection_in(bounds, width, height);
     let mut globals = [0.0f32; 36];
     for c in 0..4 {
         globals[4 * c..4 * c + 4].copy_from_slice(&view_proj[c]);

@@ -62,6 +62,23 @@ pub struct RenderScene {
     /// Draw lines and points in order without depth testing (plane figures, where
     /// overlapping curves would otherwise fight over equal depths).
     pub painter_order: bool,
+    /// Which items each object of a composed document made, in order (empty for scenes
+    /// made by hand; [`crate::compose`]).
+    pub objects: Vec<ObjectItems>,
+}
+
+/// The items one object of a composed document made: ranges of [`RenderScene::meshes`],
+/// [`RenderScene::lines`] and [`RenderScene::points`].
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ObjectItems {
+    /// Its meshes.
+    pub meshes: std::ops::Range<usize>,
+    /// Its lines (shape, parameter lines, decorations).
+    pub lines: std::ops::Range<usize>,
+    /// Its points.
+    pub points: std::ops::Range<usize>,
+    /// Whether it is a plane figure (a curve of at most two dimensions).
+    pub flat: bool,
 }
 
 impl Default for RenderScene {
@@ -75,6 +92,7 @@ impl Default for RenderScene {
             lights: [([-0.4, -0.6, -1.0], 0.75), ([0.8, 0.3, 0.2], 0.35)],
             ambient: 0.22,
             painter_order: false,
+            objects: Vec::new(),
         }
     }
 }
@@ -84,8 +102,19 @@ impl RenderScene {
     /// image, with the depth range fitted to the scene's bounding sphere, and the eye
     /// position: what the renderer draws with, and what picking projects with.
     pub fn view_projection(&self, width: u32, height: u32) -> ([[f32; 4]; 4], [f32; 3]) {
+        self.view_projection_in(self.bounds(), width, height)
+    }
+
+    /// [`Self::view_projection`] with the scene's bounds given (those of several layers
+    /// drawn together, [`crate::Renderer::draw_layers`]).
+    pub fn view_projection_in(
+        &self,
+        bounds: Option<([f32; 3], [f32; 3])>,
+        width: u32,
+        height: u32,
+    ) -> ([[f32; 4]; 4], [f32; 3]) {
         let aspect = width as f32 / height as f32;
-        let bounds = self.bounds().unwrap_or(([-1.0; 3], [1.0; 3]));
+        let bounds = bounds.unwrap_or(([-1.0; 3], [1.0; 3]));
         let camera = self.camera.unwrap_or_else(|| Camera::fit(bounds, 0.9, 0.5, aspect));
         let (lo, hi) = bounds;
         let centre = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0, (lo[2] + hi[2]) / 2.0];

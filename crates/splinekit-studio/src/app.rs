@@ -39,8 +39,9 @@ pub struct App {
     last_frame: Instant,
     files: FileFields,
     last_report: String,
-    /// Each frame's work (panels, scene, present) and scene drawing time in ms.
-    frame_log: Vec<(f64, f64)>,
+    /// Each frame's work (panels, scene, present) and scene drawing time in ms, and
+    /// whether a drag was in progress.
+    frame_log: Vec<(f64, f64, bool)>,
     /// Close after the frame being drawn.
     quitting: bool,
     /// The whole window as last painted (with `--window-screenshot`).
@@ -123,7 +124,7 @@ impl App {
             }
         }
         self.timings = (self.last_frame.elapsed().as_secs_f64() * 1e3, scene_ms);
-        self.frame_log.push((start.elapsed().as_secs_f64() * 1e3, scene_ms));
+        self.frame_log.push((start.elapsed().as_secs_f64() * 1e3, scene_ms, self.studio.gesture.is_some()));
         self.last_frame = start;
         self.after_frame(event_loop, &window, repaint_now);
     }
@@ -185,9 +186,9 @@ impl App {
     fn draw_view(&mut self) -> Result<(), String> {
         let Some(gpu) = self.gpu.as_mut() else { return Ok(()) };
         let size = (self.view.rect_px[2].max(1), self.view.rect_px[3].max(1));
-        let rs = self.studio.render_scene(size, true)?;
-        self.projector = Some(Projector::new(&rs, size));
-        gpu.draw_view(&rs, size).map_err(|e| e.to_string())?;
+        let scene = self.studio.view_scene(size, true)?;
+        self.projector = Some(Projector::with_bounds(&scene.overlay, scene.bounds, size));
+        gpu.draw_view(&scene, size).map_err(|e| e.to_string())?;
         Ok(())
     }
 
@@ -217,8 +218,8 @@ impl App {
         let path = self.options.screenshot.clone().unwrap_or_else(|| PathBuf::from("studio-screenshot.png"));
         let Some(gpu) = self.gpu.as_mut() else { return Err("no window".into()) };
         let size = (self.view.rect_px[2].max(1), self.view.rect_px[3].max(1));
-        let rs = self.studio.render_scene(size, false)?;
-        gpu.draw_view(&rs, size).map_err(|e| e.to_string())?;
+        let scene = self.studio.view_scene(size, false)?;
+        gpu.draw_view(&scene, size).map_err(|e| e.to_string())?;
         let image = gpu.read_view().map_err(|e| e.to_string())?.ok_or("nothing drawn yet")?;
         image.save_png(&path).map_err(|e| format!("--screenshot: cannot write {}: {e}", path.display()))?;
         Ok(path)
@@ -234,8 +235,10 @@ impl App {
             image.save_png(path).map_err(|e| format!("--window-screenshot: cannot write {}: {e}", path.display()))?;
         }
         if let Some(path) = &self.options.report_frame_times {
-            let (work, scene): (Vec<f64>, Vec<f64>) = self.frame_log.iter().copied().unzip();
-            let text = serde_json::json!({"work_ms": work, "scene_ms": scene}).to_string();
+            let work: Vec<f64> = self.frame_log.iter().map(|f| f.0).collect();
+            let scene: Vec<f64> = self.frame_log.iter().map(|f| f.1).collect();
+            let dragging: Vec<bool> = self.frame_log.iter().map(|f| f.2).collect();
+            let text = serde_json::json!({"work_ms": work, "scene_ms": scene, "dragging": dragging}).to_string();
             std::fs::write(path, text)
                 .map_err(|e| format!("--report-frame-times: cannot write {}: {e}", path.display()))?;
         }

@@ -46,9 +46,19 @@ pub enum EditError {
     Missing(String),
 }
 
+/// Checks that an edited object's shape builds: given the object's index and its shape.
+pub type BuildCheck<'a> = dyn FnMut(usize, &ShapeDocument) -> Result<(), DocumentError> + 'a;
+
 impl Edit {
     /// Applies the edit, returning the edit that undoes it.
     pub fn apply(&self, scene: &mut SceneDocument) -> Result<Edit, EditError> {
+        self.apply_with(scene, &mut |_, shape| check_builds(shape))
+    }
+
+    /// [`Self::apply`], with `check` building the edited shape (the studio's, which keeps
+    /// what it built, [`crate::live_surfaces::LiveSurfaces::check_build`]; it must refuse
+    /// what [`check_builds`] refuses).
+    pub fn apply_with(&self, scene: &mut SceneDocument, check: &mut BuildCheck<'_>) -> Result<Edit, EditError> {
         match self {
             Edit::Set { object, pointer, value } => {
                 let obj = scene.objects.get(*object).ok_or_else(|| missing_object(*object, scene))?;
@@ -56,7 +66,7 @@ impl Edit {
                 let old = doc.pointer(pointer).cloned();
                 set_pointer(&mut doc, pointer, value.clone())?;
                 let edited = SceneObject::from_value(doc).map_err(|e| e.within(&format!("objects[{object}]")))?;
-                check_builds(&edited.shape).map_err(|e| e.within(&format!("objects[{object}].shape")))?;
+                check(*object, &edited.shape).map_err(|e| e.within(&format!("objects[{object}].shape")))?;
                 scene.objects[*object] = edited;
                 Ok(Edit::Set { object: *object, pointer: pointer.clone(), value: old })
             }
@@ -92,7 +102,7 @@ fn missing_object(index: usize, scene: &SceneDocument) -> EditError {
 
 /// Builds the shape as a renderer would, so that a value only the kernel checks (a degree
 /// above the number of points minus one, an empty knot span) is refused here.
-fn check_builds(shape: &ShapeDocument) -> Result<(), DocumentError> {
+pub fn check_builds(shape: &ShapeDocument) -> Result<(), DocumentError> {
     match shape {
         ShapeDocument::Curve(c) => c.build().map(|_| ()),
         ShapeDocument::Surface(s) => s.build().map(|_| ()),

@@ -6,9 +6,12 @@
 
 use std::sync::Arc;
 
-use splinekit_render::{Image, RenderScene, RenderTarget, Renderer};
+use splinekit_render::{Geometry, Image, RenderScene, RenderTarget, Renderer};
 use winit::event_loop::OwnedDisplayHandle;
 use winit::window::Window;
+
+use crate::live_view::Changes;
+use crate::studio::ViewScene;
 
 /// Why the window's graphics could not start.
 #[derive(Debug, thiserror::Error)]
@@ -23,6 +26,8 @@ pub struct Gpu {
     pub renderer: Renderer,
     egui: egui_wgpu::Renderer,
     view: Option<View>,
+    /// The composed scene's geometry, kept between frames and written in place.
+    geometry: Option<Geometry>,
 }
 
 /// The 3-D view's target, the `Rgba8Unorm` copy egui samples, and its egui id.
@@ -60,7 +65,8 @@ impl Gpu {
         config.present_mode = wgpu::PresentMode::AutoVsync;
         surface.configure(&device, &config);
         let egui = egui_wgpu::Renderer::new(&device, config.format, egui_wgpu::RendererOptions::default());
-        Ok(Gpu { surface, config, renderer: Renderer::from_device(device, queue, name), egui, view: None })
+        let renderer = Renderer::from_device(device, queue, name);
+        Ok(Gpu { surface, config, renderer, egui, view: None, geometry: None })
     }
 
     /// Follows a window resize.
@@ -72,16 +78,21 @@ impl Gpu {
         }
     }
 
-    /// Draws the scene into the 3-D view's target (resized to `size`), copies it to the
-    /// texture egui shows, and returns that texture's id.
-    pub fn draw_view(&mut self, scene: &RenderScene, size: (u32, u32)) -> Result<egui::TextureId, GpuError> {
+    /// Draws the view's scene into the 3-D view's target (resized to `size`), copies it to
+    /// the texture egui shows, and returns that texture's id. The composed scene's geometry
+    /// stays on the device between frames: only the items the view lists as changed are
+    /// written ([`keep_geometry`]); the overlays are uploaded each frame.
+    pub fn draw_view(&mut self, scene: &ViewScene, size: (u32, u32)) -> Result<egui::TextureId, GpuError> {
         let max = splinekit_render::renderer::MAX_SIDE;
         let size = (size.0.clamp(1, max), size.1.clamp(1, max));
         if self.view.as_ref().is_none_or(|v| v.target.size() != size) {
             self.view = Some(self.new_view(size)?);
         }
+        keep_geometry(&self.renderer, &mut self.geometry, scene.composed, &scene.changes);
+        let overlay = self.renderer.upload(&scene.overlay);
         let v = self.view.as_ref().expect("made above");
-        self.renderer.draw(scene, &v.target);
+        let geometry = self.geometry.as_ref().expect("kept above");
+        self.renderer.draw_layers(&scene.overlay, scene.bounds, &[geometry, &overlay], &v.target);
         let mut encoder = self.renderer.device().create_command_encoder(&Default::default());
         encoder.copy_texture_to_texture(
             v.target.resolved().as_image_copy(),
@@ -232,6 +243,40 @@ impl Gpu {
             self.egui.render(&mut pass.forget_lifetime(), jobs, screen);
         }
         queue.submit(extra.into_iter().chain([encoder.finish()]));
+    }
+}
+
+/// Brings the kept geometry of the composed scene up to date with the `changes` since it
+/// was last drawn: the listed meshes' vertex ranges are written in place; the listed lines
+/// too, unless some line no longer has as many segments (an adaptive polyline gained
+/// points), when the segment buffer is uploaded afresh; the points (a few hundred at most)
+/// are written whenever something changed. Everything is uploaded afresh when there is no
+/// geometry yet, the changes are [`Changes::All`], or the meshes no longer fit. Returns
+/// whether the mesh buffers were kept.
+pub fn keep_geometry(renderer: &Renderer, kept: &mut Option<Geometry>, scene: &RenderScene, changes: &Changes) -> bool {
+    let queue = renderer.queue();
+    match (kept.as_mut(), changes) {
+        (Some(g), Changes::Items { meshes, lines }) if g.meshes_fit(scene) => {
+            for (m, r) in meshes {
+                g.write_mesh_vertices(queue, scene, *m, r.clone());
+            }
+            if !g.lines_fit(scene) {
+                renderer.renew_lines(g, scene);
+            } else {
+                for &l in lines {
+                    g.write_line(queue, scene, l);
+                }
+            }
+            let changed = !meshes.is_empty() || !lines.is_empty();
+            if changed && !g.write_points(queue, scene) {
+                renderer.renew_points(g, scene);
+            }
+            true
+        }
+        _ => {
+            *kept = Some(renderer.upload(scene));
+            false
+        }
     }
 }
 

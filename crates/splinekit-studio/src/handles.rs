@@ -6,6 +6,7 @@
 //! B-spline or NURBS curve or net.
 
 use serde_json::Value;
+use splinekit::blend::BlendingSplineSurface;
 use splinekit_scene::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
 use splinekit_scene::scenes::SceneDocument;
 use splinekit_scene::transforms::TransformDoc;
@@ -108,8 +109,21 @@ impl Handle {
     }
 }
 
+/// A blending-spline surface already built from object i's document (posed), if any.
+pub type BuiltSurface<'a> = dyn Fn(usize, &BlendingSplineSurfaceDoc) -> Option<&'a BlendingSplineSurface<3>> + 'a;
+
 /// The handles of every visible object of the scene, posed at `time`.
 pub fn handles(scene: &SceneDocument, time: Option<f64>) -> Result<Vec<Handle>, DocumentError> {
+    handles_with(scene, time, &|_, _| None)
+}
+
+/// [`handles`], with the blending-spline surfaces `built` gives used instead of building
+/// them again (the studio's one built surface per object, [`crate::live_surfaces`]).
+pub fn handles_with<'a>(
+    scene: &SceneDocument,
+    time: Option<f64>,
+    built: &BuiltSurface<'a>,
+) -> Result<Vec<Handle>, DocumentError> {
     let mut out = Vec::new();
     for (object, obj) in scene.objects.iter().enumerate() {
         let mut shape = obj.shape.clone();
@@ -142,7 +156,7 @@ pub fn handles(scene: &SceneDocument, time: Option<f64>) -> Result<Vec<Handle>, 
                 }
             }
             Decoration::LocalCurves(d) => local_curves(d, &mut push).map_err(within)?,
-            Decoration::LocalPatches(d) => local_patches(d, &mut push).map_err(within)?,
+            Decoration::LocalPatches(d) => local_patches(d, built(object, d), &mut push).map_err(within)?,
         }
     }
     Ok(out)
@@ -183,9 +197,17 @@ fn local_curves(
 /// The moved origins of a blending-spline surface's patches.
 fn local_patches(
     d: &BlendingSplineSurfaceDoc,
+    built: Option<&BlendingSplineSurface<3>>,
     push: &mut impl FnMut(HandleKind, &[f64], &[f64], usize),
 ) -> Result<(), DocumentError> {
-    let s = d.surface::<3>()?;
+    let owned;
+    let s = match built {
+        Some(s) => s,
+        None => {
+            owned = d.surface::<3>()?;
+            &owned
+        }
+    };
     let (nu, nv) = s.local_count();
     for k in 0..nu {
         for l in 0..nv {

@@ -3,7 +3,7 @@
 
 use splinekit_scene::scenes::SceneDocument;
 
-use crate::edit::{Edit, EditError};
+use crate::edit::{BuildCheck, Edit, EditError};
 
 /// One step: the edit as done and the edit that undoes it.
 #[derive(Debug, Clone)]
@@ -25,7 +25,18 @@ impl History {
     /// Applies `edit`; with `merge`, an edit of the same value as the last step joins it
     /// (its undo still restores the value from before the first). Clears the redo stack.
     pub fn apply(&mut self, scene: &mut SceneDocument, edit: Edit, merge: bool) -> Result<(), EditError> {
-        let undo = edit.apply(scene)?;
+        self.apply_with(scene, edit, merge, &mut |_, shape| crate::edit::check_builds(shape))
+    }
+
+    /// [`Self::apply`] with the edited shape built by `check` ([`Edit::apply_with`]).
+    pub fn apply_with(
+        &mut self,
+        scene: &mut SceneDocument,
+        edit: Edit,
+        merge: bool,
+        check: &mut BuildCheck<'_>,
+    ) -> Result<(), EditError> {
+        let undo = edit.apply_with(scene, check)?;
         self.undone.clear();
         match self.done.last_mut() {
             Some(last) if merge && self.open && last.done.same_target(&edit) => last.done = edit,

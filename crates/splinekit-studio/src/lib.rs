@@ -15,9 +15,11 @@
 //!   [`transform_edit`]).
 //! - Ctrl+S writes an ordinary scene document with the view's camera.
 //! - [`live_surfaces`] keeps the window's blending-spline surfaces evaluated: after a frame
-//!   moves only the rectangles it affects are re-evaluated before the scene is composed;
-//!   [`live`] keeps a blending spline sampled and on the GPU the same way, uploading only
-//!   the changed rows (both benchmarked in `benches/live.rs`, `--features bench`).
+//!   moves only the rectangles it affects are re-evaluated, and it owns the one built
+//!   surface per object (the edit's check, handles and meshing share it); during a drag
+//!   [`live_view`] brings the composed scene up to date in place and lists what changed,
+//!   which the window writes into the vertex buffers it keeps ([`gpu::keep_geometry`];
+//!   benchmarked in `benches/live.rs`, `--features bench`).
 //!
 //! Everything but [`app`] and [`gpu`] runs without a window and is unit-tested.
 
@@ -33,8 +35,8 @@ pub mod gpu;
 pub mod handles;
 pub mod history;
 pub mod keys;
-pub mod live;
 pub mod live_surfaces;
+pub mod live_view;
 pub mod options;
 pub mod panels;
 pub mod report;

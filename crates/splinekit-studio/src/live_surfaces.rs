@@ -18,17 +18,20 @@ use std::sync::Mutex;
 
 use splinekit::blend::BlendingSplineSurface;
 use splinekit::surface::{Curvatures, FundamentalForms, Surface, SurfaceGridSamples, TrimLoops};
-use splinekit::{Interval, Point};
+use splinekit::{Interval, ParamRect, Point};
 use splinekit_scene::blending::BlendingSplineSurfaceDoc;
 use splinekit_scene::blending::local_points::PatchControlPoints;
 use splinekit_scene::scenes::SceneDocument;
 use splinekit_scene::transforms::PatchTransforms;
-use splinekit_scene::{Decoration, DocumentKind, ShapeDocument};
+use splinekit_scene::{Decoration, DocumentError, DocumentKind, ShapeDocument};
 
 /// The kept surfaces of a scene, by object.
 #[derive(Default)]
 pub struct LiveSurfaces {
     kept: Vec<Option<KeptSurface>>,
+    /// The surface the last edit's check built ([`Self::check_build`]): its object and
+    /// document; the next update keeps it instead of building it again.
+    checked: Option<(usize, BlendingSplineSurfaceDoc, BlendingSplineSurface<3>)>,
     /// Grid samples re-evaluated by the last [`LiveSurfaces::update`] after frames changed.
     pub last_refreshed: usize,
 }
@@ -41,8 +44,22 @@ pub struct KeptSurface {
     transforms: PatchTransforms,
     /// The document's `local_control_points`.
     nets: PatchControlPoints,
+    /// The document as posed, which `surface` was built from.
+    posed: BlendingSplineSurfaceDoc,
     surface: BlendingSplineSurface<3>,
     samples: Mutex<Option<SurfaceGridSamples<3>>>,
+    /// What the last [`LiveSurfaces::update`] did: `None` when it made the surface afresh;
+    /// else the patches whose frame or net changed and the rectangles it refreshed.
+    followed: Option<Followed>,
+}
+
+/// The patches a frame change moved and the parameter rectangles refreshed for them.
+#[derive(Debug, Clone, Default)]
+pub struct Followed {
+    /// The patches (k, l) whose frame, transform entry or edited net changed.
+    pub patches: Vec<(usize, usize)>,
+    /// The rectangles re-evaluated (those the kernel reports for them).
+    pub rects: Vec<ParamRect>,
 }
 
 impl LiveSurfaces {
@@ -54,7 +71,7 @@ impl LiveSurfaces {
         self.kept.resize_with(scene.objects.len(), || None);
         self.kept.truncate(scene.objects.len());
         self.last_refreshed = 0;
-        for (slot, obj) in self.kept.iter_mut().zip(&scene.objects) {
+        for (index, (slot, obj)) in self.kept.iter_mut().zip(&scene.objects).enumerate() {
             let mut shape = obj.shape.clone();
             if let Some(t) = time {
                 shape.set_time(t);
@@ -72,21 +89,81 @@ impl LiveSurfaces {
                 continue;
             }
             let key = frameless(doc);
-            let Ok(posed) = doc.surface::<3>() else {
+            let built = match self.checked.take() {
+                Some((i, checked, s)) if i == index && checked == *doc => Ok(s),
+                other => {
+                    self.checked = other;
+                    doc.surface::<3>()
+                }
+            };
+            let Ok(posed) = built else {
                 *slot = None;
                 continue;
             };
             let (transforms, nets) = (doc.transforms.clone(), doc.local_control_points.clone());
             match slot {
-                Some(kept) if kept.key == key => self.last_refreshed += kept.follow(posed, transforms, nets),
-                _ => *slot = Some(KeptSurface { key, transforms, nets, surface: posed, samples: Mutex::new(None) }),
+                Some(kept) if kept.key == key => {
+                    kept.posed = doc.clone();
+                    self.last_refreshed += kept.follow(posed, transforms, nets)
+                }
+                _ => {
+                    *slot = Some(KeptSurface {
+                        key,
+                        transforms,
+                        nets,
+                        posed: doc.clone(),
+                        surface: posed,
+                        samples: Mutex::new(None),
+                        followed: None,
+                    })
+                }
             }
+        }
+    }
+
+    /// Builds an edited object's shape to check the edit ([`crate::edit::Edit::apply_with`]):
+    /// a 3-D blending-spline surface as the next [`Self::update`] would build it, kept for
+    /// it when the scene is not posed at a time (`time` is `None`), so that a drag step
+    /// builds the surface once; any other shape as [`crate::edit::check_builds`] does.
+    pub fn check_build(
+        &mut self,
+        object: usize,
+        shape: &ShapeDocument,
+        time: Option<f64>,
+    ) -> Result<(), DocumentError> {
+        match shape {
+            ShapeDocument::Surface(s) if time.is_none() => match s.decoration() {
+                Decoration::LocalPatches(doc) if doc.dimension().ok() == Some(3) => {
+                    self.checked = Some((object, doc.clone(), doc.surface::<3>()?));
+                    Ok(())
+                }
+                _ => crate::edit::check_builds(shape),
+            },
+            _ => crate::edit::check_builds(shape),
         }
     }
 
     /// The kept surface of object `object`, for [`splinekit_render::compose_with`].
     pub fn surface(&self, object: usize) -> Option<&(dyn Surface<3> + 'static)> {
         self.kept.get(object)?.as_ref().map(|k| k as &(dyn Surface<3> + 'static))
+    }
+
+    /// Object `object`'s kept surface and samples.
+    pub fn kept(&self, object: usize) -> Option<&KeptSurface> {
+        self.kept.get(object)?.as_ref()
+    }
+
+    /// Object `object`'s blending-spline surface as built from the document posed at the
+    /// last update's time: the one built surface the studio shares (handles, decorations,
+    /// meshing).
+    pub fn blending(&self, object: usize) -> Option<&BlendingSplineSurface<3>> {
+        self.kept(object).map(KeptSurface::blending)
+    }
+
+    /// Object `object`'s blending-spline surface if it was built from `doc` (the document
+    /// posed as the caller poses it), else `None`.
+    pub fn built_from(&self, object: usize, doc: &BlendingSplineSurfaceDoc) -> Option<&BlendingSplineSurface<3>> {
+        self.kept(object).filter(|k| k.posed == *doc).map(KeptSurface::blending)
     }
 }
 
@@ -115,7 +192,7 @@ impl KeptSurface {
         let (nu, nv) = posed.local_count();
         let entry = |ts: &PatchTransforms, k: usize, l: usize| ts.iter().rev().find(|(i, _)| *i == (k, l)).cloned();
         let net = |ns: &PatchControlPoints, k: usize, l: usize| ns.iter().rev().find(|(i, _)| *i == (k, l)).cloned();
-        let mut rects = Vec::new();
+        let (mut rects, mut patches) = (Vec::new(), Vec::new());
         for k in 0..nu {
             for l in 0..nv {
                 let moved = self.surface.transform(k, l) != posed.transform(k, l);
@@ -124,6 +201,7 @@ impl KeptSurface {
                     || net(&self.nets, k, l) != net(&nets, k, l)
                 {
                     rects.extend(posed.affected_rects(k, l));
+                    patches.push((k, l));
                 }
             }
         }
@@ -131,10 +209,28 @@ impl KeptSurface {
         self.transforms = transforms;
         self.nets = nets;
         let samples = self.samples.get_mut().unwrap_or_else(|e| e.into_inner());
-        match samples {
+        let done = match samples {
             Some(s) if !rects.is_empty() => s.refresh(&self.surface, &rects),
             _ => 0,
-        }
+        };
+        self.followed = Some(Followed { patches, rects });
+        done
+    }
+
+    /// The blending-spline surface built from the document.
+    pub fn blending(&self) -> &BlendingSplineSurface<3> {
+        &self.surface
+    }
+
+    /// What the last update did: `None` when it made the surface afresh, else the patches
+    /// that moved and the rectangles refreshed (both empty when nothing changed).
+    pub fn followed(&self) -> Option<&Followed> {
+        self.followed.as_ref()
+    }
+
+    /// Runs `f` on the kept grid samples (`None` before the first meshing).
+    pub fn with_samples<R>(&self, f: impl FnOnce(&SurfaceGridSamples<3>) -> R) -> Option<R> {
+        self.samples.lock().unwrap_or_else(|e| e.into_inner()).as_ref().map(f)
     }
 
     /// The kept samples into `points` and `normals` when they are of the grid `us` × `vs`

@@ -165,7 +165,13 @@ pub struct Projector {
 impl Projector {
     /// The projector of the scene as drawn at `size` pixels.
     pub fn new(scene: &RenderScene, size: (u32, u32)) -> Self {
-        let (m, _) = scene.view_projection(size.0.max(1), size.1.max(1));
+        Self::with_bounds(scene, scene.bounds(), size)
+    }
+
+    /// The projector of a scene drawn with these bounds (of layers drawn together,
+    /// [`RenderScene::view_projection_in`]).
+    pub fn with_bounds(scene: &RenderScene, bounds: Option<([f32; 3], [f32; 3])>, size: (u32, u32)) -> Self {
+        let (m, _) = scene.view_projection_in(bounds, size.0.max(1), size.1.max(1));
         let matrix = Matrix4::from_fn(|r, c| f64::from(m[c][r]));
         let inverse = matrix.try_inverse().unwrap_or_else(Matrix4::identity);
         Projector { matrix, inverse, size: (f64::from(size.0), f64::from(size.1)) }

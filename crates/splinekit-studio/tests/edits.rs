@@ -156,6 +156,10 @@ fn a_drag_on_a_handle_follows_the_mouse_and_is_one_undo_step() {
     assert!((q[0] - (p[0] + 40.0)).abs() < 1e-6 && (q[1] - (p[1] + 20.0)).abs() < 1e-6, "{q:?} from {p:?}");
     studio.undo();
     assert_eq!(studio.scene, heart(), "the whole drag is one step");
+    // The next frame shows the selection where the undo put it, not where the drag left it.
+    studio.render_scene((600, 600), true).expect("composes");
+    let back = studio.selected.clone().expect("still selected");
+    assert_eq!(back.position, h.position, "the selected handle follows the undo");
 }
 
 #[test]
@@ -278,4 +282,32 @@ fn a_local_bezier_point_of_a_turned_and_scaled_local_follows_the_mouse() {
     let after = studio.selected.clone().expect("selected").position;
     assert!((after[0] - before[0]).abs() > 0.1, "{after:?} {before:?}");
     assert!((after[1] - before[1]).abs() < 1e-9 && (after[2] - before[2]).abs() < 1e-9, "{after:?} {before:?}");
+}
+
+/// A beat is one undoable edit of the object's animation; the posed heart then moves, each
+/// local away from the centre and back, and undo takes the animation away.
+#[test]
+fn a_beat_animates_the_locals_and_undo_takes_it_away() {
+    let (mut studio, _) = studio_on_heart();
+    assert!(!studio.scene.is_animated());
+    studio.selected_object = Some(0);
+    assert!(studio.add_beat(0), "{:?}", studio.message);
+    assert!(studio.scene.is_animated() && studio.clock.playing);
+    let rest = curve(&heart());
+    let posed = |t: f64| {
+        let mut s = studio.scene.clone();
+        s.objects[0].shape.set_time(t);
+        curve(&s)
+    };
+    let (quarter, half) = (posed(0.25), posed(0.5));
+    let origin = |c: &splinekit::blend::BlendingSplineCurve<3>, k: usize| {
+        c.transform(k).apply_point_about(&c.origin(k), &c.origin(k))
+    };
+    for k in 0..rest.local_count() {
+        // Out by the amplitude a quarter beat in, back at half a beat.
+        let (o, q, h) = (origin(&rest, k), origin(&quarter, k), origin(&half, k));
+        assert!((q - o).norm() > 1e-3 && (h - o).norm() < 1e-9, "local {k}: {o} {q} {h}");
+    }
+    studio.undo();
+    assert!(!studio.scene.is_animated());
 }

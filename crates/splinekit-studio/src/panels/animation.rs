@@ -1,4 +1,5 @@
-//! The Animation panel: play/pause, speed and a time slider over the scene's duration.
+//! The Animation panel: play/pause, speed and a time slider over the scene's duration; in a
+//! scene without animation, a beat for the selected blending spline ([`Studio::add_beat`]).
 
 use crate::studio::Studio;
 
@@ -8,6 +9,14 @@ pub fn animation_panel(ui: &mut egui::Ui, studio: &mut Studio) {
     ui.horizontal(|ui| {
         if !studio.scene.is_animated() {
             ui.label("no animation in this scene");
+            if let Some(object) = studio.selected_object
+                && ui
+                    .button("Add a beat")
+                    .on_hover_text("the selected blending spline's local pieces oscillate")
+                    .clicked()
+            {
+                studio.add_beat(object);
+            }
             return;
         }
         let label = if studio.clock.playing { "Pause" } else { "Play" };

@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""Whole frame times of the studio window during a drag, as a person drags (issue 11).
+
+Run under an X server with xdotool, e.g.
+
+    cargo build --release -p splinekit-cli
+    xvfb-run -a -s "-screen 0 1280x800x24" python3 bench/studio/drag_frame_times.py \
+        examples/scenes/blending_torus_local_patches.json local_patch 3,4
+
+It opens the document in a 1280x800 window (`--report-handles`, `--report-frame-times`),
+waits for the handles, drags the handle of the given kind and index (`local_patch k,l`,
+`local_curve k`) by 120 x 80 pixels in 40 steps, closes the window and prints the median
+and quartiles of the frames drawn during the drag: the whole frame's work (panels, the
+3-D view's composition and drawing, egui's painting and presenting) and of it the 3-D
+view. The window draws only when something changes, so the frames between the button
+going down and up are the drag's.
+"""
+
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+BIN = os.environ.get("SPLINEKIT", "target/release/splinekit")
+
+
+def xdotool(*args):
+    return subprocess.run(["xdotool", *args], check=True, capture_output=True, text=True).stdout.strip()
+
+
+def wait_for(path, ready, what, timeout=120):
+    start = time.time()
+    while time.time() - start < timeout:
+        try:
+            with open(path) as f:
+                v = json.load(f)
+            if ready(v):
+                return v
+        except (OSError, ValueError):
+            pass
+        time.sleep(0.1)
+    sys.exit(f"timed out waiting for {what}")
+
+
+def main():
+    doc, kind, index = sys.argv[1], sys.argv[2], [int(x) for x in sys.argv[3].split(",")]
+    steps = int(os.environ.get("STEPS", "40"))
+    tmp = tempfile.mkdtemp(prefix="splinekit-frames-")
+    report, frames = os.path.join(tmp, "handles.json"), os.path.join(tmp, "frames.json")
+    child = subprocess.Popen([BIN, "view", doc, "--window-size", "1280x800", "--report-handles", report,
+                              "--report-frame-times", frames])
+    want = index[0] if len(index) == 1 else index
+
+    def find(v):
+        return next((h for h in v.get("handles", []) if h["kind"] == kind and h["index"] == want), None)
+
+    h = find(wait_for(report, find, f"{kind} {index}"))
+    time.sleep(2.0)
+    h = find(wait_for(report, find, f"{kind} {index}"))
+    window = xdotool("search", "--sync", "--name", "splinekit studio").splitlines()[0]
+    xdotool("windowfocus", "--sync", window)
+    x0, y0 = h["x"], h["y"]
+    xdotool("mousemove", "--window", window, str(round(x0)), str(round(y0)))
+    time.sleep(1.0)
+    xdotool("mousedown", "1")
+    for s in range(1, steps + 1):
+        f = s / steps
+        xdotool("mousemove", "--window", window, str(round(x0 + 120 * f)), str(round(y0 + 80 * f)))
+        time.sleep(0.25)
+    xdotool("mouseup", "1")
+    time.sleep(1.0)
+    xdotool("key", "ctrl+q")
+    child.wait(timeout=120)
+    with open(frames) as f:
+        log = json.load(f)
+    drag = [i for i, d in enumerate(log["dragging"]) if d]
+    if len(drag) < 4:
+        sys.exit(f"only {len(drag)} frames were drawn during the drag")
+    for name, key in (("whole frame", "work_ms"), ("3-D view", "scene_ms")):
+        xs = [log[key][i] for i in drag]
+        q = statistics.quantiles(xs, n=4)
+        print(f"{name}: median {statistics.median(xs):.1f} ms, quartiles {q[0]:.1f}-{q[2]:.1f} ms "
+              f"over {len(xs)} frames")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,291 @@
+//! A scene's geometry on the device, kept between frames: one vertex and index buffer per
+//! mesh and one instance buffer of line segments and one of points, in the pipelines'
+//! layouts (the one home of those layouts). A window that changes a few vertices or one
+//! line writes just those ([`Geometry::write_mesh_vertices`], [`Geometry::write_line`],
+//! `Queue::write_buffer`), leaving the rest of the buffers as they are; what it then draws
+//! is what uploading the whole changed scene afresh draws, because the buffers hold the
+//! same bytes (the studio's tests read them back, [`Renderer::read_geometry`]).
+
+use std::ops::Range;
+
+use wgpu::util::DeviceExt;
+
+use crate::renderer::Renderer;
+use crate::scene::{LineItem, MeshItem, PointItem, RenderScene, srgba_to_linear};
+
+/// Floats of one mesh vertex in the vertex buffer: position, normal, linear colour.
+pub const MESH_VERTEX_FLOATS: usize = 10;
+/// Floats of one line-segment instance: its two ends, linear colour, width and padding.
+pub const SEGMENT_FLOATS: usize = 12;
+/// Floats of one point instance: position, size, linear colour.
+pub const POINT_FLOATS: usize = 8;
+
+/// Buffers that can be written in place and read back.
+const USAGE: wgpu::BufferUsages = wgpu::BufferUsages::COPY_DST.union(wgpu::BufferUsages::COPY_SRC);
+
+pub(crate) fn bytes<T: Copy>(data: &[T]) -> &[u8] {
+    // SAFETY: T is plain f32/u32 data (no padding, no pointers); the slice is read only.
+    unsafe { std::slice::from_raw_parts(data.as_ptr() as *const u8, std::mem::size_of_val(data)) }
+}
+
+/// Packs vertices `range` of a mesh: position, normal (zero when missing), linear colour
+/// (per vertex, else the mesh's).
+pub fn pack_mesh_vertices(m: &MeshItem, range: Range<usize>, out: &mut Vec<f32>) {
+    let color = srgba_to_linear(m.color);
+    for i in range {
+        out.extend_from_slice(&m.positions[i]);
+        out.extend_from_slice(m.normals.get(i).unwrap_or(&[0.0; 3]));
+        out.extend_from_slice(&m.colors.get(i).map_or(color, |c| srgba_to_linear(*c)));
+    }
+}
+
+/// The number of segments a line is drawn with: n − 1, or n when closed (n > 2).
+pub fn segment_count(l: &LineItem) -> usize {
+    let n = l.points.len();
+    if l.closed && n > 2 { n } else { n.saturating_sub(1) }
+}
+
+/// Packs a line's segments (from point i to point i + 1, the last to the first when
+/// closed): both ends, linear colour, width, padding.
+pub fn pack_line(l: &LineItem, out: &mut Vec<f32>) {
+    let c = srgba_to_linear(l.color);
+    let n = l.points.len();
+    for i in 0..segment_count(l) {
+        out.extend_from_slice(&l.points[i]);
+        out.extend_from_slice(&l.points[(i + 1) % n]);
+        out.extend_from_slice(&c);
+        out.extend_from_slice(&[l.width, 0.0]);
+    }
+}
+
+/// Packs points: position, size, linear colour.
+pub fn pack_points(points: &[PointItem], out: &mut Vec<f32>) {
+    for p in points {
+        out.extend_from_slice(&p.position);
+        out.push(p.size);
+        out.extend_from_slice(&srgba_to_linear(p.color));
+    }
+}
+
+/// One mesh on the device.
+pub(crate) struct MeshBuffers {
+    pub(crate) vertices: wgpu::Buffer,
+    pub(crate) indices: wgpu::Buffer,
+    pub(crate) index_count: u32,
+    vertex_count: usize,
+    /// Its index in the scene's meshes (meshes without triangles are not uploaded).
+    item: usize,
+}
+
+/// Instances (segments or points) in one buffer.
+pub(crate) struct Instances {
+    pub(crate) buffer: wgpu::Buffer,
+    pub(crate) count: u32,
+}
+
+/// A scene's geometry on the device ([`Renderer::upload`]; drawn by
+/// [`Renderer::draw_layers`]).
+pub struct Geometry {
+    pub(crate) meshes: Vec<MeshBuffers>,
+    pub(crate) lines: Option<Instances>,
+    /// Per line of the scene, its first segment and number of segments.
+    line_runs: Vec<(usize, usize)>,
+    pub(crate) points: Option<Instances>,
+}
+
+/// What [`Renderer::read_geometry`] reads back: each uploaded mesh's vertex floats, the
+/// segment floats and the point floats.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GeometryData {
+    /// Per mesh with triangles, its packed vertices.
+    pub meshes: Vec<Vec<f32>>,
+    /// The packed segments of all lines.
+    pub segments: Vec<f32>,
+    /// The packed points.
+    pub points: Vec<f32>,
+}
+
+impl Geometry {
+    /// Writes vertices `range` of the scene's mesh `mesh` (as [`pack_mesh_vertices`] packs
+    /// them) into its vertex buffer; `false` (nothing written) when that mesh is not the
+    /// uploaded one's size, so the caller uploads afresh.
+    pub fn write_mesh_vertices(
+        &self,
+        queue: &wgpu::Queue,
+        scene: &RenderScene,
+        mesh: usize,
+        range: Range<usize>,
+    ) -> bool {
+        let (Some(m), Some(b)) = (scene.meshes.get(mesh), self.meshes.iter().find(|b| b.item == mesh)) else {
+            return false;
+        };
+        if m.positions.len() != b.vertex_count || range.end > b.vertex_count {
+            return false;
+        }
+        if range.is_empty() {
+            return true;
+        }
+        let mut data = Vec::with_capacity(range.len() * MESH_VERTEX_FLOATS);
+        let offset = (4 * range.start * MESH_VERTEX_FLOATS) as u64;
+        pack_mesh_vertices(m, range, &mut data);
+        queue.write_buffer(&b.vertices, offset, bytes(&data));
+        true
+    }
+
+    /// Writes the segments of the scene's line `line` into the segment buffer; `false`
+    /// (nothing written) when its number of segments is not the uploaded one's.
+    pub fn write_line(&self, queue: &wgpu::Queue, scene: &RenderScene, line: usize) -> bool {
+        let (Some(l), Some(&(first, count)), Some(lines)) =
+            (scene.lines.get(line), self.line_runs.get(line), &self.lines)
+        else {
+            return false;
+        };
+        if segment_count(l) != count {
+            return false;
+        }
+        if count == 0 {
+            return true;
+        }
+        let mut data = Vec::with_capacity(count * SEGMENT_FLOATS);
+        pack_line(l, &mut data);
+        queue.write_buffer(&lines.buffer, (4 * first * SEGMENT_FLOATS) as u64, bytes(&data));
+        true
+    }
+
+    /// Writes the scene's points into the point buffer; `false` (nothing written) when
+    /// their number is not the uploaded one's.
+    pub fn write_points(&self, queue: &wgpu::Queue, scene: &RenderScene) -> bool {
+        let Some(points) = &self.points else { return scene.points.is_empty() };
+        if points.count as usize != scene.points.len() {
+            return false;
+        }
+        let mut data = Vec::with_capacity(scene.points.len() * POINT_FLOATS);
+        pack_points(&scene.points, &mut data);
+        queue.write_buffer(&points.buffer, 0, bytes(&data));
+        true
+    }
+
+    /// Whether this geometry's meshes were uploaded from a scene with the same meshes
+    /// (those with triangles, by index, each with as many vertices) as `scene`: the
+    /// meshes that may be written in place to become `scene`'s.
+    pub fn meshes_fit(&self, scene: &RenderScene) -> bool {
+        let meshes = scene.meshes.iter().enumerate().filter(|(_, m)| !m.triangles.is_empty());
+        meshes.clone().count() == self.meshes.len()
+            && meshes.zip(&self.meshes).all(|((i, m), b)| b.item == i && b.vertex_count == m.positions.len())
+    }
+
+    /// Whether this geometry's segments were uploaded from lines with as many segments
+    /// each as `scene`'s.
+    pub fn lines_fit(&self, scene: &RenderScene) -> bool {
+        scene.lines.len() == self.line_runs.len()
+            && scene.lines.iter().zip(&self.line_runs).all(|(l, r)| segment_count(l) == r.1)
+    }
+}
+
+impl Renderer {
+    /// Uploads the meshes, the lines as instanced segments and the points as instanced
+    /// discs, with colours converted to linear; buffers can be written in place and read
+    /// back.
+    pub fn upload(&self, scene: &RenderScene) -> Geometry {
+        let device = self.device();
+        let buffer = |data: &[u8], usage: wgpu::BufferUsages| {
+            device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: None,
+                contents: data,
+                usage: usage | USAGE,
+            })
+        };
+        let mut meshes = Vec::new();
+        for (item, m) in scene.meshes.iter().enumerate() {
+            if m.triangles.is_empty() {
+                continue;
+            }
+            let mut v = Vec::with_capacity(m.positions.len() * MESH_VERTEX_FLOATS);
+            pack_mesh_vertices(m, 0..m.positions.len(), &mut v);
+            let flat: Vec<u32> = m.triangles.iter().flatten().copied().collect();
+            meshes.push(MeshBuffers {
+                vertices: buffer(bytes(&v), wgpu::BufferUsages::VERTEX),
+                indices: buffer(bytes(&flat), wgpu::BufferUsages::INDEX),
+                index_count: flat.len() as u32,
+                vertex_count: m.positions.len(),
+                item,
+            });
+        }
+        let (lines, line_runs) = self.line_instances(scene);
+        Geometry { meshes, lines, line_runs, points: self.point_instances(scene) }
+    }
+
+    /// Uploads the scene's lines afresh into `geometry` (its meshes and points stay).
+    pub fn renew_lines(&self, geometry: &mut Geometry, scene: &RenderScene) {
+        (geometry.lines, geometry.line_runs) = self.line_instances(scene);
+    }
+
+    /// Uploads the scene's points afresh into `geometry` (its meshes and lines stay).
+    pub fn renew_points(&self, geometry: &mut Geometry, scene: &RenderScene) {
+        geometry.points = self.point_instances(scene);
+    }
+
+    fn line_instances(&self, scene: &RenderScene) -> (Option<Instances>, Vec<(usize, usize)>) {
+        let mut segments: Vec<f32> = Vec::new();
+        let mut runs = Vec::with_capacity(scene.lines.len());
+        for l in &scene.lines {
+            runs.push((segments.len() / SEGMENT_FLOATS, segment_count(l)));
+            pack_line(l, &mut segments);
+        }
+        (self.instances(&segments, SEGMENT_FLOATS), runs)
+    }
+
+    fn point_instances(&self, scene: &RenderScene) -> Option<Instances> {
+        let mut points: Vec<f32> = Vec::new();
+        pack_points(&scene.points, &mut points);
+        self.instances(&points, POINT_FLOATS)
+    }
+
+    fn instances(&self, data: &[f32], floats: usize) -> Option<Instances> {
+        (!data.is_empty()).then(|| Instances {
+            buffer: self.device().create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: None,
+                contents: bytes(data),
+                usage: wgpu::BufferUsages::VERTEX | USAGE,
+            }),
+            count: (data.len() / floats) as u32,
+        })
+    }
+
+    /// Reads the geometry's buffers back (for tests that check a buffer written in place
+    /// against one uploaded afresh).
+    pub fn read_geometry(&self, geometry: &Geometry) -> Result<GeometryData, crate::RenderError> {
+        let read = |b: &wgpu::Buffer| self.read_buffer(b);
+        Ok(GeometryData {
+            meshes: geometry.meshes.iter().map(|m| read(&m.vertices)).collect::<Result<_, _>>()?,
+            segments: geometry.lines.as_ref().map(|l| read(&l.buffer)).transpose()?.unwrap_or_default(),
+            points: geometry.points.as_ref().map(|p| read(&p.buffer)).transpose()?.unwrap_or_default(),
+        })
+    }
+
+    fn read_buffer(&self, source: &wgpu::Buffer) -> Result<Vec<f32>, crate::RenderError> {
+        let device = self.device();
+        let staging = device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size: source.size(),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let mut encoder = device.create_command_encoder(&Default::default());
+        encoder.copy_buffer_to_buffer(source, 0, &staging, 0, source.size());
+        self.queue().submit([encoder.finish()]);
+        let slice = staging.slice(..);
+        let (tx, rx) = std::sync::mpsc::channel();
+        slice.map_async(wgpu::MapMode::Read, move |r| {
+            let _ = tx.send(r);
+        });
+        let failed = |e: String| crate::RenderError::Readback(e);
+        device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| failed(e.to_string()))?;
+        rx.recv().map_err(|e| failed(e.to_string()))?.map_err(|e| failed(e.to_string()))?;
+        let data = slice.get_mapped_range().map_err(|e| failed(format!("{e:?}")))?;
+        let floats = data.chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).collect();
+        drop(data);
+        staging.unmap();
+        Ok(floats)
+    }
+}

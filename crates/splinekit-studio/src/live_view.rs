@@ -1,0 +1,272 @@
+//! The live path of a drag: the scene composed before the drag step is brought up to date
+//! in place, and what changed is listed for the window to write into its vertex buffers
+//! ([`Changes`]); the rest of the scene, on the CPU and on the GPU, stays.
+//!
+//! - A blending-spline surface whose mesh is the plain lattice of its kept grid samples
+//!   ([`Lattice`], checked at each full composition) has the mesh rows its moved patches
+//!   refreshed ([`crate::live_surfaces`]) copied from the samples, and the outline and
+//!   middle lines of those patches drawn again
+//!   ([`splinekit_render::compose::local_patch_lines`]). Styles whose drawing depends on
+//!   the whole surface go the full path instead: a curvature or (u, v) colour map (its
+//!   scale is a percentile over all vertices), parameter lines.
+//! - Any other changed object (curves: their adaptive polylines depend on the whole curve)
+//!   is composed again on its own ([`splinekit_render::recompose_object`]) and its items
+//!   are listed whole.
+//!
+//! The mesher's clean-up ([`splinekit_mesh::surface_mesh::regular`]) could make a
+//! different mesh of the moved surface: edges that collapse in single precision, normals
+//! it repairs (not of unit length, or facing against their triangles), poles or seams
+//! found anew. Those are checked on the refreshed rows and the rows next to them (and the
+//! poles and seams whenever a refreshed rectangle touches the domain's boundary); any of
+//! them sends the step down the full path. One decision is kept from the last full
+//! composition: which way a closed mesh faces (the mesher turns a closed mesh whose signed
+//! volume is negative inside out). The studio composes afresh when the drag ends, so the
+//! still image is always the full composition's, which is what `splinekit render` draws.
+
+use std::ops::Range;
+
+use splinekit::Point;
+use splinekit::surface::{Surface, SurfaceGridSamples};
+use splinekit_mesh::boundary_gluing::Gluing;
+use splinekit_render::compose::{LOCAL_PATCH_LINES, local_patch_lines};
+use splinekit_render::{ObjectItems, RenderScene, recompose_object};
+use splinekit_scene::scenes::{SceneDocument, SceneObject};
+
+use crate::live_surfaces::{KeptSurface, LiveSurfaces};
+
+/// What changed in the composed scene since the window last drew it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Changes {
+    /// Everything: upload the scene afresh.
+    All,
+    /// These items only.
+    Items {
+        /// Meshes and their vertex ranges, as indices of [`RenderScene::meshes`].
+        meshes: Vec<(usize, Range<usize>)>,
+        /// Lines, as indices of [`RenderScene::lines`].
+        lines: Vec<usize>,
+    },
+}
+
+impl Changes {
+    /// Nothing changed.
+    pub fn none() -> Self {
+        Changes::Items { meshes: Vec::new(), lines: Vec::new() }
+    }
+
+    /// Adds the changes of `other`.
+    pub fn merge(&mut self, other: Changes) {
+        match (&mut *self, other) {
+            (Changes::All, _) => {}
+            (_, Changes::All) => *self = Changes::All,
+            (Changes::Items { meshes, lines }, Changes::Items { meshes: m, lines: l }) => {
+                meshes.extend(m);
+                lines.extend(l);
+            }
+        }
+    }
+}
+
+/// How a live surface's mesh lies in the composed scene: vertex i·n_v + j at grid sample
+/// (i, j) (positions and normals those of the samples in single precision; the normals
+/// negated when the mesher turned the mesh inside out), two triangles a cell, and the
+/// poles and seams the mesher found.
+#[derive(Debug, Clone)]
+pub struct Lattice {
+    flipped: bool,
+    gluing: Gluing,
+}
+
+fn f32x3(p: &Point<3>) -> [f32; 3] {
+    [p.x as f32, p.y as f32, p.z as f32]
+}
+
+/// The lattices of the scene's live surfaces, by object, checked against the composed
+/// scene (`None` for objects that are not live surfaces, or whose mesh is not the plain
+/// lattice or whose style is drawn from the whole surface).
+pub fn lattices(scene: &SceneDocument, composed: &RenderScene, live: &LiveSurfaces) -> Vec<Option<Lattice>> {
+    let objects = scene.objects.iter().zip(&composed.objects).enumerate();
+    objects.map(|(i, (obj, items))| live.kept(i).and_then(|k| lattice(obj, items, composed, k))).collect()
+}
+
+fn lattice(obj: &SceneObject, items: &ObjectItems, composed: &RenderScene, kept: &KeptSurface) -> Option<Lattice> {
+    let style = &obj.style;
+    let (nu, nv) = kept.blending().local_count();
+    let lines = if style.local_pieces { LOCAL_PATCH_LINES * nu * nv } else { 0 };
+    if style.color_map.is_some() || style.wireframe || items.meshes.len() != 1 || items.lines.len() != lines {
+        return None;
+    }
+    let m = &composed.meshes[items.meshes.start];
+    kept.with_samples(|s| {
+        let (su, sv) = (s.us().len(), s.vs().len());
+        if m.positions.len() != su * sv || m.triangles.len() != 2 * (su - 1) * (sv - 1) || !m.colors.is_empty() {
+            return None;
+        }
+        let positions = s.points().iter().zip(&m.positions).all(|(p, q)| f32x3(p) == *q);
+        let normals = |sign: f32| s.normals().iter().zip(&m.normals).all(|(n, q)| f32x3(n).map(|x| sign * x) == *q);
+        let flipped = if normals(1.0) {
+            false
+        } else if normals(-1.0) {
+            true
+        } else {
+            return None;
+        };
+        positions.then(|| Lattice { flipped, gluing: Gluing::detect(kept.blending()) })
+    })?
+}
+
+/// Brings `composed` (the scene composed from `before`, with `lattices`) up to `scene`,
+/// both posed at `time`, after [`LiveSurfaces::update`] followed the edit; returns what
+/// changed, or `None` when the step must be composed afresh (something other than the
+/// objects changed, the scene has axes, or a check of the module documentation failed;
+/// `composed` is then left half done).
+pub fn patch(
+    before: &SceneDocument,
+    scene: &SceneDocument,
+    time: Option<f64>,
+    aspect: f32,
+    composed: &mut RenderScene,
+    lattices: &[Option<Lattice>],
+    live: &LiveSurfaces,
+) -> Option<Changes> {
+    let same_rest = SceneDocument { objects: Vec::new(), ..before.clone() }
+        == SceneDocument { objects: Vec::new(), ..scene.clone() };
+    if !same_rest || scene.axes || before.objects.len() != scene.objects.len() {
+        return None;
+    }
+    let mut changes = Changes::none();
+    for (i, (old, new)) in before.objects.iter().zip(&scene.objects).enumerate() {
+        if old == new {
+            continue;
+        }
+        let items = composed.objects.get(i)?.clone();
+        let surface = match (lattices.get(i).and_then(Option::as_ref), live.kept(i)) {
+            (Some(lattice), Some(kept)) if old.style == new.style => Some((lattice, kept)),
+            _ => None,
+        };
+        match surface {
+            Some((lattice, kept)) => changes.merge(patch_surface(new, &items, lattice, kept, composed)?),
+            None => {
+                recompose_object(scene, i, time, aspect, live.surface(i), composed).ok()?;
+                let meshes = items.meshes.clone().map(|m| (m, 0..composed.meshes[m].positions.len()));
+                changes.merge(Changes::Items { meshes: meshes.collect(), lines: items.lines.collect() });
+            }
+        }
+    }
+    Some(changes)
+}
+
+/// Copies the rows the last update refreshed into the live surface's mesh and draws its
+/// moved patches' lines again.
+fn patch_surface(
+    obj: &SceneObject,
+    items: &ObjectItems,
+    lattice: &Lattice,
+    kept: &KeptSurface,
+    composed: &mut RenderScene,
+) -> Option<Changes> {
+    let followed = kept.followed()?;
+    let surface = kept.blending();
+    let (du, dv) = (surface.domain_u(), surface.domain_v());
+    let on_boundary = |r: &splinekit::ParamRect| {
+        r.u.start <= du.start || r.u.end >= du.end || r.v.start <= dv.start || r.v.end >= dv.end
+    };
+    if followed.rects.iter().any(on_boundary) && Gluing::detect(surface) != lattice.gluing {
+        return None;
+    }
+    if items.meshes.len() != 1 {
+        return None;
+    }
+    let index = items.meshes.start;
+    let mesh = &mut composed.meshes[index];
+    let rows = kept.with_samples(|s| {
+        let rows = merged(followed.rects.iter().map(|r| rows_in(s.us(), r.u)).collect());
+        let nv = s.vs().len();
+        let sign = if lattice.flipped { -1.0 } else { 1.0 };
+        for r in &rows {
+            if !meshes_alike(s, r.start.saturating_sub(1)..(r.end + 1).min(s.us().len())) {
+                return None;
+            }
+            for k in r.start * nv..r.end * nv {
+                mesh.positions[k] = f32x3(&s.points()[k]);
+                mesh.normals[k] = f32x3(&s.normals()[k]).map(|x| sign * x);
+            }
+        }
+        Some(rows.into_iter().map(|r| (index, r.start * nv..r.end * nv)).collect::<Vec<_>>())
+    })??;
+    let mut lines = Vec::new();
+    if obj.style.local_pieces {
+        let nv = surface.local_count().1;
+        for &(k, l) in &followed.patches {
+            let first = items.lines.start + LOCAL_PATCH_LINES * (k * nv + l);
+            for (m, line) in local_patch_lines(surface, (k, l)).into_iter().enumerate() {
+                composed.lines[first + m] = line;
+                lines.push(first + m);
+            }
+        }
+    }
+    Some(Changes::Items { meshes: rows, lines })
+}
+
+/// The indices of the sorted parameters `xs` inside the closed interval.
+fn rows_in(xs: &[f64], i: splinekit::Interval) -> Range<usize> {
+    xs.partition_point(|&x| x < i.start)..xs.partition_point(|&x| x <= i.end)
+}
+
+/// Sorted, overlapping ranges joined.
+fn merged(mut ranges: Vec<Range<usize>>) -> Vec<Range<usize>> {
+    ranges.retain(|r| !r.is_empty());
+    ranges.sort_by_key(|r| r.start);
+    let mut out: Vec<Range<usize>> = Vec::new();
+    for r in ranges {
+        match out.last_mut() {
+            Some(last) if r.start <= last.end => last.end = last.end.max(r.end),
+            _ => out.push(r),
+        }
+    }
+    out
+}
+
+/// Whether the mesher leaves grid rows `rows` as they are: every position finite, no
+/// edge of the lattice (right, down, diagonal) whose ends are the same single-precision
+/// point, every normal of unit length (within 10⁻⁶) and facing along the sum of its
+/// triangles' normals ((b − a) × (c − a) of the triangles (i, j), (i+1, j), (i+1, j+1) and
+/// (i, j), (i+1, j+1), (i, j+1) of each cell), as [`splinekit_mesh::TriangleMesh`]'s
+/// normal repair asks.
+fn meshes_alike(s: &SurfaceGridSamples<3>, rows: Range<usize>) -> bool {
+    let (su, sv) = (s.us().len(), s.vs().len());
+    let at = |i: usize, j: usize| &s.points()[i * sv + j];
+    let cross = |a: &Point<3>, b: &Point<3>, c: &Point<3>| (b - a).cross(&(c - a));
+    for i in rows {
+        for j in 0..sv {
+            let p = at(i, j);
+            if !p.iter().all(|x| x.is_finite()) {
+                return false;
+            }
+            let neighbours = [(i + 1, j), (i, j + 1), (i + 1, j + 1)];
+            if neighbours.iter().any(|&(a, b)| a < su && b < sv && f32x3(at(a, b)) == f32x3(p)) {
+                return false;
+            }
+            let mut own = Point::<3>::zeros();
+            let cells =
+                [(i.checked_sub(1), j.checked_sub(1)), (i.checked_sub(1), Some(j)), (Some(i), j.checked_sub(1))];
+            for (ci, cj) in cells.into_iter().chain([(Some(i), Some(j))]) {
+                let (Some(ci), Some(cj)) = (ci, cj) else { continue };
+                if ci + 1 >= su || cj + 1 >= sv {
+                    continue;
+                }
+                let (a, b, c, d) = ((ci, cj), (ci + 1, cj), (ci + 1, cj + 1), (ci, cj + 1));
+                for t in [[a, b, c], [a, c, d]] {
+                    if t.contains(&(i, j)) {
+                        own += cross(at(t[0].0, t[0].1), at(t[1].0, t[1].1), at(t[2].0, t[2].1));
+                    }
+                }
+            }
+            let n = &s.normals()[i * sv + j];
+            if (n.norm() - 1.0).abs() >= 1e-6 || own.dot(n) <= 0.0 {
+                return false;
+            }
+        }
+    }
+    true
+}
