@@ -60,18 +60,8 @@ impl<const D: usize> Polyline<D> {
             return Err(Error::invalid("tolerance", format!("must be positive and finite, got {tolerance}")));
         }
         let bps = curve.breakpoints();
-        let total = curve.domain().length();
         // 1. Regular samples; `fixed` marks breakpoints.
-        let mut ts = vec![bps[0]];
-        let mut fixed = vec![true];
-        for w in bps.windows(2) {
-            let (a, b) = (w[0], w[1]);
-            let pieces = ((256.0 * (b - a) / total).ceil() as usize).max(8);
-            for i in 1..=pieces {
-                ts.push(if i == pieces { b } else { a + (b - a) * i as f64 / pieces as f64 });
-                fixed.push(i == pieces);
-            }
-        }
+        let (ts, fixed) = span_samples(&bps, 0..bps.len() - 1, curve.domain().length());
         let mut ps = vec![Point::<D>::zeros(); ts.len()];
         curve.eval_many(&ts, 0, &mut ps);
         let estimate = estimated_points(curve, &ts, &ps, tolerance);
@@ -83,54 +73,41 @@ impl<const D: usize> Polyline<D> {
                 ),
             ));
         }
-        // 2. Greedy chords over the samples.
-        let mut keep = vec![0usize];
-        let mut i = 0;
-        while i + 1 < ts.len() {
-            let mut j = i + 1;
-            while j + 1 < ts.len()
-                && !fixed[j]
-                && (i + 1..=j).all(|k| distance_to_segment(&ps[k], &ps[i], &ps[j + 1]) <= 0.5 * tolerance)
-            {
-                j += 1;
-            }
-            keep.push(j);
-            i = j;
-        }
-        // 3. Adaptive refinement of every chord.
-        let mut params = vec![ts[0]];
-        let mut points = vec![ps[0]];
-        for w in keep.windows(2) {
-            let mut stack = vec![(ts[w[0]], ps[w[0]], ts[w[1]], ps[w[1]], 0u32)];
-            while let Some((s0, q0, s1, q1, depth)) = stack.pop() {
-                let sm = 0.5 * (s0 + s1);
-                let qm = curve.point(sm);
-                let too_far = depth < 24
-                    && [0.25, 0.5, 0.75].iter().any(|&f| {
-                        let q = if f == 0.5 { qm } else { curve.point(s0 + (s1 - s0) * f) };
-                        distance_to_segment(&q, &q0, &q1) > 0.8 * tolerance
-                    });
-                if too_far {
-                    stack.push((sm, qm, s1, q1, depth + 1));
-                    stack.push((s0, q0, sm, qm, depth + 1));
-                } else {
-                    params.push(s1);
-                    points.push(q1);
-                    if points.len() > max_points {
-                        return Err(Error::invalid(
-                            "tolerance",
-                            format!("{tolerance:?} needs more than {max_points} points"),
-                        ));
-                    }
-                }
-            }
-        }
+        let (mut params, mut points) = refined(curve, &ts, &ps, &fixed, tolerance, max_points)?;
         let closed = curve.is_closed();
         if closed {
             params.pop();
             points.pop();
         }
         Ok(Polyline { params, points, closed })
+    }
+
+    /// The vertices [`Self::adaptive_with_limit`] makes from breakpoint `spans.start` to
+    /// breakpoint `spans.end` (indices into [`Curve::breakpoints`]), both included, bit for
+    /// bit: breakpoints are always vertices and each span between two is flattened from its
+    /// own samples alone, so a curve changed only between two breakpoints has its polyline
+    /// changed only between them (the studio re-flattens just that run during a drag). The
+    /// whole curve's point estimate is not made (a run of more than `max_points` vertices
+    /// is refused) and a closed curve's end point is kept. An error on `spans` when it is
+    /// empty or reaches past the last breakpoint.
+    pub fn adaptive_span<C: Curve<D> + ?Sized>(
+        curve: &C,
+        tolerance: f64,
+        spans: std::ops::Range<usize>,
+        max_points: usize,
+    ) -> Result<(Vec<f64>, Vec<Point<D>>)> {
+        if !(tolerance > 0.0 && tolerance.is_finite()) {
+            return Err(Error::invalid("tolerance", format!("must be positive and finite, got {tolerance}")));
+        }
+        let bps = curve.breakpoints();
+        if spans.is_empty() || spans.end >= bps.len() {
+            let n = bps.len().saturating_sub(1);
+            return Err(Error::invalid("spans", format!("{spans:?} is not a run of the curve's {n} spans")));
+        }
+        let (ts, fixed) = span_samples(&bps, spans, curve.domain().length());
+        let mut ps = vec![Point::<D>::zeros(); ts.len()];
+        curve.eval_many(&ts, 0, &mut ps);
+        refined(curve, &ts, &ps, &fixed, tolerance, max_points)
     }
 
     /// Total length of the polyline (closing segment included for closed ones).
@@ -141,6 +118,78 @@ impl<const D: usize> Polyline<D> {
         }
         l
     }
+}
+
+/// Step 1 of adaptive flattening over the spans `spans` between the breakpoints `bps` of
+/// a domain `total` long: regular samples (about 256 over the domain, at least 8 a span)
+/// from `bps[spans.start]` to `bps[spans.end]`; `fixed` marks breakpoints.
+fn span_samples(bps: &[f64], spans: std::ops::Range<usize>, total: f64) -> (Vec<f64>, Vec<bool>) {
+    let mut ts = vec![bps[spans.start]];
+    let mut fixed = vec![true];
+    for w in bps[spans.start..=spans.end].windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let pieces = ((256.0 * (b - a) / total).ceil() as usize).max(8);
+        for i in 1..=pieces {
+            ts.push(if i == pieces { b } else { a + (b - a) * i as f64 / pieces as f64 });
+            fixed.push(i == pieces);
+        }
+    }
+    (ts, fixed)
+}
+
+/// Steps 2 and 3 of adaptive flattening: greedy chords over the samples `ts`, `ps` (never
+/// past a `fixed` one), each halved until within `tolerance`.
+fn refined<const D: usize, C: Curve<D> + ?Sized>(
+    curve: &C,
+    ts: &[f64],
+    ps: &[Point<D>],
+    fixed: &[bool],
+    tolerance: f64,
+    max_points: usize,
+) -> Result<(Vec<f64>, Vec<Point<D>>)> {
+    // 2. Greedy chords over the samples.
+    let mut keep = vec![0usize];
+    let mut i = 0;
+    while i + 1 < ts.len() {
+        let mut j = i + 1;
+        while j + 1 < ts.len()
+            && !fixed[j]
+            && (i + 1..=j).all(|k| distance_to_segment(&ps[k], &ps[i], &ps[j + 1]) <= 0.5 * tolerance)
+        {
+            j += 1;
+        }
+        keep.push(j);
+        i = j;
+    }
+    // 3. Adaptive refinement of every chord.
+    let mut params = vec![ts[0]];
+    let mut points = vec![ps[0]];
+    for w in keep.windows(2) {
+        let mut stack = vec![(ts[w[0]], ps[w[0]], ts[w[1]], ps[w[1]], 0u32)];
+        while let Some((s0, q0, s1, q1, depth)) = stack.pop() {
+            let sm = 0.5 * (s0 + s1);
+            let qm = curve.point(sm);
+            let too_far = depth < 24
+                && [0.25, 0.5, 0.75].iter().any(|&f| {
+                    let q = if f == 0.5 { qm } else { curve.point(s0 + (s1 - s0) * f) };
+                    distance_to_segment(&q, &q0, &q1) > 0.8 * tolerance
+                });
+            if too_far {
+                stack.push((sm, qm, s1, q1, depth + 1));
+                stack.push((s0, q0, sm, qm, depth + 1));
+            } else {
+                params.push(s1);
+                points.push(q1);
+                if points.len() > max_points {
+                    return Err(Error::invalid(
+                        "tolerance",
+                        format!("{tolerance:?} needs more than {max_points} points"),
+                    ));
+                }
+            }
+        }
+    }
+    Ok((params, points))
 }
 
 /// An estimate of the points adaptive flattening to `tolerance` makes, before it starts:

@@ -291,6 +291,27 @@ fn camera(scene: &SceneDocument, bounds: ([f32; 3], [f32; 3]), flat: bool, aspec
     }
 }
 
+/// Most points of a curve's adaptive polyline.
+pub const CURVE_POINTS: usize = 200_000;
+
+/// The chord-height tolerance a curve without a `density` is flattened to: 4·10⁻⁴ of its
+/// size (the largest distance of 64 regular samples from the first).
+pub fn curve_tolerance<const D: usize>(c: &dyn Curve<D>) -> Result<f64, DocumentError> {
+    let rough = Polyline::regular(c, 64)?;
+    let size = rough.points.iter().map(|p| (p - rough.points[0]).norm()).fold(0.0, f64::max).max(1e-9);
+    Ok(size * 4e-4)
+}
+
+/// The line drawn for a curve's polyline: its points in single precision (a 1-D curve, a
+/// B-function, as its graph (t, c(t))).
+pub fn polyline_points<const D: usize>(params: &[f64], points: &[Point<D>]) -> Vec<[f32; 3]> {
+    if D == 1 {
+        params.iter().zip(points).map(|(t, p)| [*t as f32, p[0] as f32, 0.0]).collect()
+    } else {
+        points.iter().map(|p| f32x3(to3(p))).collect()
+    }
+}
+
 struct CurveLine<'a> {
     obj: &'a SceneObject,
     color: [f32; 4],
@@ -301,18 +322,9 @@ impl DimensionVisitor<Curves> for CurveLine<'_> {
     fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Self::Output {
         let poly = match self.obj.style.density {
             Some(n) => Polyline::regular(c, n)?,
-            None => {
-                let rough = Polyline::regular(c, 64)?;
-                let size = rough.points.iter().map(|p| (p - rough.points[0]).norm()).fold(0.0, f64::max).max(1e-9);
-                Polyline::adaptive_with_limit(c, size * 4e-4, 200_000)?
-            }
+            None => Polyline::adaptive_with_limit(c, curve_tolerance(c)?, CURVE_POINTS)?,
         };
-        let points = if D == 1 {
-            // A 1-D curve (a B-function) is drawn as its graph (t, c(t)).
-            poly.params.iter().zip(&poly.points).map(|(t, p)| [*t as f32, p[0] as f32, 0.0]).collect()
-        } else {
-            poly.points.iter().map(|p| f32x3(to3(p))).collect()
-        };
+        let points = polyline_points(&poly.params, &poly.points);
         Ok(LineItem { points, closed: poly.closed, color: self.color, width: self.obj.style.line_width })
     }
 }
@@ -345,27 +357,34 @@ fn control_net(net: &[Vec<Vec<f64>>], out: &mut RenderScene) {
 /// The local curves of a blending spline in their own colours (97 points over each one's
 /// support), with their origins where their transforms moved them.
 fn local_curves<const D: usize>(c: &BlendingSplineCurve<D>, style: &StyleDoc, out: &mut RenderScene) {
-    let n = c.local_count();
-    for k in 0..n {
-        let support = c.local_support(k);
-        let (a, b) = (support.start, support.end);
-        let mut v = [Point::<D>::zeros(); 1];
-        let pts: Vec<[f32; 3]> = (0..=96)
-            .map(|i| {
-                c.eval_local(k, a + (b - a) * i as f64 / 96.0, &mut v);
-                f32x3(to3(&v[0]))
-            })
-            .collect();
-        out.lines.push(LineItem {
-            points: pts,
-            closed: false,
-            color: local_color(k, n),
-            width: style.line_width * 0.6,
-        });
-        // The frame origin where the local's transform moved it.
-        let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
-        out.points.push(PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 });
+    for k in 0..c.local_count() {
+        let (line, point) = local_curve_items(c, k, style);
+        out.lines.push(line);
+        out.points.push(point);
     }
+}
+
+/// What [`compose`] draws for local curve k of a blending spline with `local_pieces`: the
+/// local over its support (97 points) and its frame origin where its transform moved it,
+/// in its own colour ([`local_color`]).
+pub fn local_curve_items<const D: usize>(
+    c: &BlendingSplineCurve<D>,
+    k: usize,
+    style: &StyleDoc,
+) -> (LineItem, PointItem) {
+    let n = c.local_count();
+    let support = c.local_support(k);
+    let (a, b) = (support.start, support.end);
+    let mut v = [Point::<D>::zeros(); 1];
+    let pts: Vec<[f32; 3]> = (0..=96)
+        .map(|i| {
+            c.eval_local(k, a + (b - a) * i as f64 / 96.0, &mut v);
+            f32x3(to3(&v[0]))
+        })
+        .collect();
+    let line = LineItem { points: pts, closed: false, color: local_color(k, n), width: style.line_width * 0.6 };
+    let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
+    (line, PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 })
 }
 
 /// The local patches of a blending-spline surface: outline and middle lines of each over

@@ -48,9 +48,14 @@ pub fn segment_count(l: &LineItem) -> usize {
 /// Packs a line's segments (from point i to point i + 1, the last to the first when
 /// closed): both ends, linear colour, width, padding.
 pub fn pack_line(l: &LineItem, out: &mut Vec<f32>) {
+    pack_line_segments(l, 0..segment_count(l), out);
+}
+
+/// Packs segments `range` of a line as [`pack_line`] does.
+pub fn pack_line_segments(l: &LineItem, range: Range<usize>, out: &mut Vec<f32>) {
     let c = srgba_to_linear(l.color);
     let n = l.points.len();
-    for i in 0..segment_count(l) {
+    for i in range {
         out.extend_from_slice(&l.points[i]);
         out.extend_from_slice(&l.points[(i + 1) % n]);
         out.extend_from_slice(&c);
@@ -77,10 +82,11 @@ pub(crate) struct MeshBuffers {
     item: usize,
 }
 
-/// Instances (segments or points) in one buffer.
+/// Instances (segments or points) in one buffer: `count` drawn, room for `capacity`.
 pub(crate) struct Instances {
     pub(crate) buffer: wgpu::Buffer,
     pub(crate) count: u32,
+    capacity: usize,
 }
 
 /// A scene's geometry on the device ([`Renderer::upload`]; drawn by
@@ -149,6 +155,56 @@ impl Geometry {
         let mut data = Vec::with_capacity(count * SEGMENT_FLOATS);
         pack_line(l, &mut data);
         queue.write_buffer(&lines.buffer, (4 * first * SEGMENT_FLOATS) as u64, bytes(&data));
+        true
+    }
+
+    /// Writes segments `segments` (of those [`pack_line`] packs) of the scene's line `line`,
+    /// the rest of its segments being the uploaded ones (a polyline spliced in place). When
+    /// the line's number of segments is no longer the uploaded one's, its segments from
+    /// `segments.start` on and those of every later line are written (moved to follow it)
+    /// while the buffer has room for them; `false` (nothing written) when it has not, so
+    /// the caller uploads the lines afresh ([`Renderer::renew_lines`]).
+    pub fn write_line_segments(
+        &mut self,
+        queue: &wgpu::Queue,
+        scene: &RenderScene,
+        line: usize,
+        segments: Range<usize>,
+    ) -> bool {
+        let (Some(l), Some(&(first, count)), Some(lines)) =
+            (scene.lines.get(line), self.line_runs.get(line), self.lines.as_mut())
+        else {
+            return false;
+        };
+        if scene.lines.len() != self.line_runs.len() {
+            return false;
+        }
+        let now = segment_count(l);
+        let mut data = Vec::new();
+        if now == count {
+            let segments = segments.start.min(now)..segments.end.min(now);
+            if segments.is_empty() {
+                return true;
+            }
+            pack_line_segments(l, segments.clone(), &mut data);
+            queue.write_buffer(&lines.buffer, (4 * (first + segments.start) * SEGMENT_FLOATS) as u64, bytes(&data));
+            return true;
+        }
+        let total = lines.count as usize + now - count;
+        if total > lines.capacity {
+            return false;
+        }
+        let start = segments.start.min(now);
+        pack_line_segments(l, start..now, &mut data);
+        for later in &scene.lines[line + 1..] {
+            pack_line(later, &mut data);
+        }
+        queue.write_buffer(&lines.buffer, (4 * (first + start) * SEGMENT_FLOATS) as u64, bytes(&data));
+        lines.count = total as u32;
+        self.line_runs[line].1 = now;
+        for run in &mut self.line_runs[line + 1..] {
+            run.0 = run.0 + now - count;
+        }
         true
     }
 
@@ -232,34 +288,51 @@ impl Renderer {
             runs.push((segments.len() / SEGMENT_FLOATS, segment_count(l)));
             pack_line(l, &mut segments);
         }
-        (self.instances(&segments, SEGMENT_FLOATS), runs)
+        // Room for a quarter more segments: a polyline spliced during a drag may gain some
+        // without the buffer being made again.
+        let room = segments.len() / 4 + 64 * SEGMENT_FLOATS;
+        (self.instances(&segments, SEGMENT_FLOATS, room), runs)
     }
 
     fn point_instances(&self, scene: &RenderScene) -> Option<Instances> {
         let mut points: Vec<f32> = Vec::new();
         pack_points(&scene.points, &mut points);
-        self.instances(&points, POINT_FLOATS)
+        self.instances(&points, POINT_FLOATS, 0)
     }
 
-    fn instances(&self, data: &[f32], floats: usize) -> Option<Instances> {
-        (!data.is_empty()).then(|| Instances {
+    /// Instances of `data` (`floats` each) in a buffer with `room` floats to spare.
+    fn instances(&self, data: &[f32], floats: usize, room: usize) -> Option<Instances> {
+        if data.is_empty() {
+            return None;
+        }
+        let mut contents = Vec::with_capacity(data.len() + room);
+        contents.extend_from_slice(data);
+        contents.resize(data.len() + room / floats * floats, 0.0);
+        Some(Instances {
             buffer: self.device().create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: None,
-                contents: bytes(data),
+                contents: bytes(&contents),
                 usage: wgpu::BufferUsages::VERTEX | USAGE,
             }),
             count: (data.len() / floats) as u32,
+            capacity: contents.len() / floats,
         })
     }
 
     /// Reads the geometry's buffers back (for tests that check a buffer written in place
-    /// against one uploaded afresh).
+    /// against one uploaded afresh): the instances drawn, not the room after them.
     pub fn read_geometry(&self, geometry: &Geometry) -> Result<GeometryData, crate::RenderError> {
         let read = |b: &wgpu::Buffer| self.read_buffer(b);
         Ok(GeometryData {
             meshes: geometry.meshes.iter().map(|m| read(&m.vertices)).collect::<Result<_, _>>()?,
-            segments: geometry.lines.as_ref().map(|l| read(&l.buffer)).transpose()?.unwrap_or_default(),
-            points: geometry.points.as_ref().map(|p| read(&p.buffer)).transpose()?.unwrap_or_default(),
+            segments: match &geometry.lines {
+                Some(l) => read(&l.buffer)?[..l.count as usize * SEGMENT_FLOATS].to_vec(),
+                None => Vec::new(),
+            },
+            points: match &geometry.points {
+                Some(p) => read(&p.buffer)?[..p.count as usize * POINT_FLOATS].to_vec(),
+                None => Vec::new(),
+            },
         })
     }
 

@@ -248,26 +248,40 @@ impl Gpu {
 
 /// Brings the kept geometry of the composed scene up to date with the `changes` since it
 /// was last drawn: the listed meshes' vertex ranges are written in place; the listed lines
-/// too, unless some line no longer has as many segments (an adaptive polyline gained
-/// points), when the segment buffer is uploaded afresh; the points (a few hundred at most)
+/// and runs of segments too (a spliced polyline that gained or lost points has its
+/// segments from the run on and the later lines' moved,
+/// [`Geometry::write_line_segments`]), unless the segment buffer has no room left or some
+/// line no longer has as many segments, when it is uploaded afresh; the points (a few hundred at most)
 /// are written whenever something changed. Everything is uploaded afresh when there is no
 /// geometry yet, the changes are [`Changes::All`], or the meshes no longer fit. Returns
 /// whether the mesh buffers were kept.
 pub fn keep_geometry(renderer: &Renderer, kept: &mut Option<Geometry>, scene: &RenderScene, changes: &Changes) -> bool {
     let queue = renderer.queue();
     match (kept.as_mut(), changes) {
-        (Some(g), Changes::Items { meshes, lines }) if g.meshes_fit(scene) => {
+        (Some(g), Changes::Items { meshes, lines, runs }) if g.meshes_fit(scene) => {
             for (m, r) in meshes {
                 g.write_mesh_vertices(queue, scene, *m, r.clone());
             }
-            if !g.lines_fit(scene) {
+            // One run a line: from its first changed segment to its last.
+            let mut joined: Vec<(usize, std::ops::Range<usize>)> = Vec::new();
+            for (l, r) in runs {
+                match joined.iter_mut().find(|(j, _)| j == l) {
+                    Some((_, j)) => *j = j.start.min(r.start)..j.end.max(r.end),
+                    None => joined.push((*l, r.clone())),
+                }
+            }
+            let mut fits = true;
+            for (l, r) in joined {
+                fits &= g.write_line_segments(queue, scene, l, r);
+            }
+            if !fits || !g.lines_fit(scene) {
                 renderer.renew_lines(g, scene);
             } else {
                 for &l in lines {
                     g.write_line(queue, scene, l);
                 }
             }
-            let changed = !meshes.is_empty() || !lines.is_empty();
+            let changed = !meshes.is_empty() || !lines.is_empty() || !runs.is_empty();
             if changed && !g.write_points(queue, scene) {
                 renderer.renew_points(g, scene);
             }

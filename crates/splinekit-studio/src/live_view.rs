@@ -9,9 +9,22 @@
 //!   ([`splinekit_render::compose::local_patch_lines`]). Styles whose drawing depends on
 //!   the whole surface go the full path instead: a curvature or (u, v) colour map (its
 //!   scale is a percentile over all vertices), parameter lines.
-//! - Any other changed object (curves: their adaptive polylines depend on the whole curve)
-//!   is composed again on its own ([`splinekit_render::recompose_object`]) and its items
-//!   are listed whole.
+//! - A blending-spline curve drawn adaptively (no `density`) whose frames or local Bézier
+//!   points alone changed keeps its polyline with the parameters of its vertices
+//!   ([`KeptPolyline`]): only the spans between breakpoints that the kernel reports for the
+//!   changed locals (`BlendingSplineCurve::affected_ranges`) are flattened again
+//!   ([`splinekit_mesh::Polyline::adaptive_span`]) and spliced in, and only the changed
+//!   locals' lines and origins are drawn again
+//!   ([`splinekit_render::compose::local_curve_items`]). Adaptive flattening is local
+//!   (breakpoints are always vertices, each span is flattened from its own samples), so the
+//!   spliced polyline is, vertex for vertex, what flattening the whole edited curve to the
+//!   same tolerance gives. The tolerance is the one of the drag's first step (4·10⁻⁴ of the
+//!   curve's size then, [`splinekit_render::compose::curve_tolerance`]): when the drag
+//!   changes the curve's size, a fresh composition flattens to a slightly different
+//!   tolerance and its polyline differs (both within their tolerance of the curve) until the
+//!   drag ends and the still scene is composed afresh.
+//! - Any other changed object is composed again on its own
+//!   ([`splinekit_render::recompose_object`]) and its items are listed whole.
 //!
 //! The mesher's clean-up ([`splinekit_mesh::surface_mesh::regular`]) could make a
 //! different mesh of the moved surface: edges that collapse in single precision, normals
@@ -26,11 +39,19 @@
 use std::ops::Range;
 
 use splinekit::Point;
+use splinekit::blend::BlendingSplineCurve;
+use splinekit::curve::Curve;
 use splinekit::surface::{Surface, SurfaceGridSamples};
+use splinekit_mesh::Polyline;
 use splinekit_mesh::boundary_gluing::Gluing;
-use splinekit_render::compose::{LOCAL_PATCH_LINES, local_patch_lines};
+use splinekit_render::compose::{
+    CURVE_POINTS, LOCAL_PATCH_LINES, curve_tolerance, local_curve_items, local_patch_lines, polyline_points,
+};
+use splinekit_render::geometry::segment_count;
 use splinekit_render::{ObjectItems, RenderScene, recompose_object};
-use splinekit_scene::scenes::{SceneDocument, SceneObject};
+use splinekit_scene::blending::BlendingSplineDoc;
+use splinekit_scene::scenes::{SceneDocument, SceneObject, StyleDoc};
+use splinekit_scene::{Decoration, DocumentKind, ShapeDocument};
 
 use crate::live_surfaces::{KeptSurface, LiveSurfaces};
 
@@ -45,13 +66,17 @@ pub enum Changes {
         meshes: Vec<(usize, Range<usize>)>,
         /// Lines, as indices of [`RenderScene::lines`].
         lines: Vec<usize>,
+        /// Lines of which only some segments changed (as [`splinekit_render::geometry::pack_line`]
+        /// numbers them), with those segments; when a line's number of segments changed,
+        /// all of its segments from the run's start on.
+        runs: Vec<(usize, Range<usize>)>,
     },
 }
 
 impl Changes {
     /// Nothing changed.
     pub fn none() -> Self {
-        Changes::Items { meshes: Vec::new(), lines: Vec::new() }
+        Changes::Items { meshes: Vec::new(), lines: Vec::new(), runs: Vec::new() }
     }
 
     /// Adds the changes of `other`.
@@ -59,9 +84,17 @@ impl Changes {
         match (&mut *self, other) {
             (Changes::All, _) => {}
             (_, Changes::All) => *self = Changes::All,
-            (Changes::Items { meshes, lines }, Changes::Items { meshes: m, lines: l }) => {
+            (Changes::Items { meshes, lines, runs }, Changes::Items { meshes: m, lines: l, runs: r }) => {
                 meshes.extend(m);
                 lines.extend(l);
+                // Runs of two splices in a row: the earlier's indices no longer hold after
+                // the later, so the line is written from the first changed segment on.
+                for (line, run) in r {
+                    match runs.iter_mut().find(|(l, _)| *l == line) {
+                        Some((_, old)) => *old = old.start.min(run.start)..usize::MAX,
+                        None => runs.push((line, run)),
+                    }
+                }
             }
         }
     }
@@ -115,11 +148,22 @@ fn lattice(obj: &SceneObject, items: &ObjectItems, composed: &RenderScene, kept:
     })?
 }
 
+/// A blending-spline curve's adaptive polyline as the live path keeps it: the parameters of
+/// its vertices (those of the line in the composed scene) and the tolerance it was
+/// flattened to.
+#[derive(Debug, Clone)]
+pub struct KeptPolyline {
+    params: Vec<f64>,
+    tolerance: f64,
+}
+
 /// Brings `composed` (the scene composed from `before`, with `lattices`) up to `scene`,
 /// both posed at `time`, after [`LiveSurfaces::update`] followed the edit; returns what
 /// changed, or `None` when the step must be composed afresh (something other than the
 /// objects changed, the scene has axes, or a check of the module documentation failed;
-/// `composed` is then left half done).
+/// `composed` is then left half done). `polylines` (by object, grown as needed) keeps the
+/// adaptive curves' polylines between steps; start it empty after a full composition.
+#[allow(clippy::too_many_arguments)]
 pub fn patch(
     before: &SceneDocument,
     scene: &SceneDocument,
@@ -127,13 +171,15 @@ pub fn patch(
     aspect: f32,
     composed: &mut RenderScene,
     lattices: &[Option<Lattice>],
+    polylines: &mut Vec<Option<KeptPolyline>>,
     live: &LiveSurfaces,
 ) -> Option<Changes> {
-    let same_rest = SceneDocument { objects: Vec::new(), ..before.clone() }
-        == SceneDocument { objects: Vec::new(), ..scene.clone() };
-    if !same_rest || scene.axes || before.objects.len() != scene.objects.len() {
+    let rest = |s: &SceneDocument| SceneDocument { objects: Vec::new(), ..s.clone() };
+    let same_rest = before.objects.len() == scene.objects.len() && rest(before) == rest(scene);
+    if !same_rest || scene.axes {
         return None;
     }
+    polylines.resize_with(scene.objects.len(), || None);
     let mut changes = Changes::none();
     for (i, (old, new)) in before.objects.iter().zip(&scene.objects).enumerate() {
         if old == new {
@@ -146,10 +192,15 @@ pub fn patch(
         };
         match surface {
             Some((lattice, kept)) => changes.merge(patch_surface(new, &items, lattice, kept, composed)?),
+            None if let Some(c) = patch_curve(old, new, time, &items, composed, &mut polylines[i]) => changes.merge(c),
             None => {
                 recompose_object(scene, i, time, aspect, live.surface(i), composed).ok()?;
                 let meshes = items.meshes.clone().map(|m| (m, 0..composed.meshes[m].positions.len()));
-                changes.merge(Changes::Items { meshes: meshes.collect(), lines: items.lines.collect() });
+                changes.merge(Changes::Items {
+                    meshes: meshes.collect(),
+                    lines: items.lines.collect(),
+                    runs: Vec::new(),
+                });
             }
         }
     }
@@ -205,7 +256,145 @@ fn patch_surface(
             }
         }
     }
-    Some(Changes::Items { meshes: rows, lines })
+    Some(Changes::Items { meshes: rows, lines, runs: Vec::new() })
+}
+
+/// The shape's blending-spline document, posed at `time`, and the document without its
+/// frames and local Bézier points (what must stay for those alone to have changed).
+fn blending_curve(obj: &SceneObject, time: Option<f64>) -> Option<(BlendingSplineDoc, BlendingSplineDoc)> {
+    let mut shape = obj.shape.clone();
+    if let Some(t) = time {
+        shape.set_time(t);
+    }
+    let ShapeDocument::Curve(c) = &shape else { return None };
+    let Decoration::LocalCurves(d) = c.decoration() else { return None };
+    let mut key = d.clone();
+    key.transforms.clear();
+    key.local_control_points.clear();
+    Some((d.clone(), key))
+}
+
+/// Brings a blending-spline curve drawn adaptively up to date after its frames or local
+/// Bézier points changed (see the module documentation); `None` for anything else.
+fn patch_curve(
+    old: &SceneObject,
+    new: &SceneObject,
+    time: Option<f64>,
+    items: &ObjectItems,
+    composed: &mut RenderScene,
+    kept: &mut Option<KeptPolyline>,
+) -> Option<Changes> {
+    let style = &new.style;
+    if old.style != *style || style.density.is_some() || style.hidden || old.points != new.points {
+        return None;
+    }
+    let ((before, key), (doc, new_key)) = (blending_curve(old, time)?, blending_curve(new, time)?);
+    if key != new_key {
+        return None;
+    }
+    let splice = Splice { before: &before, style, items };
+    match doc.dimension().ok()? {
+        2 => splice.curve::<2>(&doc.curve::<2>().ok()?, &doc, composed, kept),
+        3 => splice.curve::<3>(&doc.curve::<3>().ok()?, &doc, composed, kept),
+        _ => None,
+    }
+}
+
+/// A curve object's document before the step, its style and its items.
+struct Splice<'a> {
+    before: &'a BlendingSplineDoc,
+    style: &'a StyleDoc,
+    items: &'a ObjectItems,
+}
+
+/// Draws the `changed` locals of the edited `curve` again and splices their spans into its
+/// kept polyline (flattened whole on the drag's first step).
+impl Splice<'_> {
+    fn curve<const D: usize>(
+        &self,
+        curve: &BlendingSplineCurve<D>,
+        doc: &BlendingSplineDoc,
+        composed: &mut RenderScene,
+        kept: &mut Option<KeptPolyline>,
+    ) -> Option<Changes> {
+        let (style, items) = (self.style, self.items);
+        let n = curve.local_count();
+        let entry = |d: &BlendingSplineDoc, k: usize| {
+            let t = d.transforms.iter().rev().find(|(i, _)| *i == k).map(|(_, t)| t);
+            let p = d.local_control_points.iter().rev().find(|(i, _)| *i == k).map(|(_, p)| p);
+            (t.cloned(), p.cloned())
+        };
+        let changed: Vec<usize> = (0..n).filter(|&k| entry(self.before, k) != entry(doc, k)).collect();
+        let locals = if style.local_pieces { n } else { 0 };
+        if items.lines.len() != locals + 1 || items.points.len() < locals {
+            return None;
+        }
+        let line = items.lines.end - 1;
+        let mut lines = Vec::new();
+        if style.local_pieces {
+            for &k in &changed {
+                let (l, p) = local_curve_items(curve, k, style);
+                composed.lines[items.lines.start + k] = l;
+                composed.points[items.points.start + k] = p;
+                lines.push(items.lines.start + k);
+            }
+        }
+        let Some(kept) = kept.as_mut().filter(|k| k.params.len() == composed.lines[line].points.len()) else {
+            let tolerance = curve_tolerance::<D>(curve).ok()?;
+            let poly = Polyline::adaptive_with_limit(curve, tolerance, CURVE_POINTS).ok()?;
+            composed.lines[line].points = polyline_points(&poly.params, &poly.points);
+            *kept = Some(KeptPolyline { params: poly.params, tolerance });
+            return Some(Changes::Items { meshes: Vec::new(), lines, runs: vec![(line, 0..usize::MAX)] });
+        };
+        let bps = curve.breakpoints();
+        let last = bps.len().checked_sub(1).filter(|&l| l > 0)?;
+        let mut spans: Vec<Range<usize>> = changed
+            .iter()
+            .flat_map(|&k| curve.affected_ranges(k))
+            .map(|r| {
+                let from = bps.partition_point(|&b| b <= r.start).saturating_sub(1);
+                let to = bps.partition_point(|&b| b < r.end).clamp(from + 1, last);
+                from..to
+            })
+            .collect();
+        spans.sort_by_key(|s| s.start);
+        let mut merged: Vec<Range<usize>> = Vec::new();
+        for s in spans {
+            match merged.last_mut() {
+                Some(m) if s.start <= m.end => m.end = m.end.max(s.end),
+                _ => merged.push(s),
+            }
+        }
+        let closed = composed.lines[line].closed;
+        let (mut runs, mut closing) = (Vec::new(), false);
+        for span in merged {
+            let (mut params, mut points) =
+                Polyline::adaptive_span(curve, kept.tolerance, span.clone(), CURVE_POINTS).ok()?;
+            let start = kept.params.binary_search_by(|t| t.total_cmp(&bps[span.start])).ok()?;
+            let end = if closed && span.end == last {
+                params.pop();
+                points.pop();
+                kept.params.len()
+            } else {
+                kept.params.binary_search_by(|t| t.total_cmp(&bps[span.end])).ok()? + 1
+            };
+            let count = params.len();
+            if start >= end || kept.params.len() - (end - start) + count > CURVE_POINTS {
+                return None;
+            }
+            let drawn = polyline_points(&params, &points);
+            kept.params.splice(start..end, params);
+            composed.lines[line].points.splice(start..end, drawn);
+            runs.push((line, start.saturating_sub(1)..start + count));
+            closing |= closed && start == 0;
+        }
+        if closing {
+            // The closing segment ends at the first point.
+            let segments = segment_count(&composed.lines[line]);
+            runs.push((line, segments.saturating_sub(1)..segments));
+        }
+        Some(Changes::Items { meshes: Vec::new(), lines, runs })
+    }
 }
 
 /// The indices of the sorted parameters `xs` inside the closed interval.

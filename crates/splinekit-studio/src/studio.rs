@@ -16,7 +16,7 @@ use crate::gesture::{Gesture, GestureKind};
 use crate::handles::{Handle, HandleKind, handles_with};
 use crate::history::History;
 use crate::live_surfaces::LiveSurfaces;
-use crate::live_view::{self, Changes, Lattice};
+use crate::live_view::{self, Changes, KeptPolyline, Lattice};
 use crate::view_camera::{Projector, ViewCamera};
 
 /// The scene as last composed, and what it was composed from.
@@ -30,6 +30,8 @@ struct Composed {
     exact: bool,
     /// The live surfaces' meshes, by object ([`live_view::lattices`]).
     lattices: Vec<Option<Lattice>>,
+    /// The adaptive curves' polylines kept during a drag ([`live_view::patch`]).
+    polylines: Vec<Option<KeptPolyline>>,
 }
 
 /// What the 3-D view draws: the composed scene (kept between frames), the overlays drawn
@@ -349,8 +351,16 @@ impl Studio {
         if dragging
             && let Some(c) = self.cache.as_mut()
             && c.time == time
-            && let Some(changes) =
-                live_view::patch(&c.scene, &self.scene, time, aspect, &mut c.composed, &c.lattices, &self.live)
+            && let Some(changes) = live_view::patch(
+                &c.scene,
+                &self.scene,
+                time,
+                aspect,
+                &mut c.composed,
+                &c.lattices,
+                &mut c.polylines,
+                &self.live,
+            )
         {
             c.scene = self.scene.clone();
             c.bounds = c.composed.bounds();
@@ -364,7 +374,15 @@ impl Studio {
         let lattices = live_view::lattices(&self.scene, &composed, live);
         self.handles = self.visible_handles()?;
         let bounds = composed.bounds();
-        self.cache = Some(Composed { scene: self.scene.clone(), time, composed, bounds, exact: true, lattices });
+        self.cache = Some(Composed {
+            scene: self.scene.clone(),
+            time,
+            composed,
+            bounds,
+            exact: true,
+            lattices,
+            polylines: Vec::new(),
+        });
         self.changes = Changes::All;
         Ok(())
     }

@@ -4,7 +4,13 @@
 //! uploading a fresh composition of the edited document holds (read back from the device),
 //! and the composed items are the fresh composition's.
 
+use splinekit::Point;
+use splinekit::blend::BlendingSplineCurve;
+use splinekit_mesh::Polyline;
+use splinekit_mesh::polyline::distance_to_segment;
+use splinekit_render::compose::{CURVE_POINTS, curve_tolerance};
 use splinekit_render::{Geometry, RenderScene, Renderer, compose};
+use splinekit_scene::{Decoration, ShapeDocument};
 use splinekit_studio::gesture::GestureKind;
 use splinekit_studio::gpu::keep_geometry;
 use splinekit_studio::handles::HandleKind;
@@ -140,11 +146,60 @@ fn a_colour_mapped_surface_is_meshed_whole_during_a_drag() {
     assert!(in_place && mesh_rows(&changes) == 41 * 41, "the whole mesh: {changes:?}");
 }
 
-/// The heart drawn adaptively: a drag step composes the curve again; its polyline may gain
-/// points, and then the segment buffer is uploaded afresh; either way the buffers are the
-/// fresh ones.
+/// The heart's blending spline (3-D) as the studio's document now builds it.
+fn heart_curve(s: &Studio) -> BlendingSplineCurve<3> {
+    let ShapeDocument::Curve(c) = &s.scene.objects[0].shape else { panic!("a curve") };
+    let Decoration::LocalCurves(d) = c.decoration() else { panic!("a blending spline") };
+    d.curve::<3>().expect("builds")
+}
+
+/// Checks a drag step of the heart: the buffers are the upload of the scene as the live
+/// path brought it up to date; every item but the curve's line is the fresh composition's;
+/// the line is, point for point, the edited curve flattened whole to `tolerance` (the
+/// drag's), and the curve stays within `tolerance` of it (dense samples of the curve, each
+/// near some segment).
+fn heart_step(s: &mut Studio, renderer: &Renderer, kept: &mut Option<Geometry>, tolerance: f64, what: &str) {
+    let view = s.view_scene(SIZE, false).expect("composes");
+    let in_place = keep_geometry(renderer, kept, view.composed, &view.changes);
+    assert!(in_place && view.changes != Changes::All, "{what}: written in place: {:?}", view.changes);
+    let Changes::Items { runs, .. } = &view.changes else { unreachable!() };
+    assert!(!runs.is_empty(), "{what}: the curve's polyline spliced");
+    let composed = view.composed.clone();
+    let want = renderer.read_geometry(&renderer.upload(&composed)).expect("reads back");
+    let got = renderer.read_geometry(kept.as_ref().expect("kept")).expect("reads back");
+    assert!(got == want, "{what}: the buffers written in place are not those of uploading the scene");
+    let mut fresh = compose(&s.scene, s.time(), SIZE.0 as f32 / SIZE.1 as f32).expect("composes");
+    let line = composed.lines.len() - 1;
+    let curve = heart_curve(s);
+    let whole = Polyline::adaptive_with_limit(&curve, tolerance, CURVE_POINTS).expect("flattens");
+    assert!(whole.closed, "the heart is closed");
+    let points: Vec<[f32; 3]> = whole.points.iter().map(|p| [p.x as f32, p.y as f32, p.z as f32]).collect();
+    assert!(composed.lines[line].points == points, "{what}: the spliced polyline is not the whole flatten");
+    fresh.lines[line].points = points.clone();
+    assert_same_items(&composed, &fresh, what);
+    let samples = Polyline::regular(&curve, 3000).expect("samples");
+    let mut segments: Vec<([f32; 3], [f32; 3])> = points.windows(2).map(|w| (w[0], w[1])).collect();
+    segments.push((points[points.len() - 1], points[0]));
+    let near = |q: &Point<3>| {
+        let d = |(a, b): &([f32; 3], [f32; 3])| {
+            let (a, b) = (
+                Point::<3>::new(a[0].into(), a[1].into(), a[2].into()),
+                Point::<3>::new(b[0].into(), b[1].into(), b[2].into()),
+            );
+            distance_to_segment(q, &a, &b)
+        };
+        segments.iter().map(d).fold(f64::INFINITY, f64::min)
+    };
+    // Single-precision vertices add up to about 10⁻⁷ of the curve's size.
+    let worst = samples.points.iter().map(near).fold(0.0, f64::max);
+    assert!(worst <= 1.01 * tolerance, "{what}: the curve strays {worst} from its polyline (tolerance {tolerance})");
+}
+
+/// The heart drawn adaptively: a drag step flattens again only the spans of the moved
+/// local and splices them into the kept polyline, writing only the changed run of segments
+/// (the buffer has room for a few more); after the drag the still scene is composed afresh.
 #[test]
-fn dragging_a_local_curve_of_the_heart_keeps_the_buffers_fresh() {
+fn dragging_a_local_curve_of_the_heart_splices_its_polyline() {
     let renderer = Renderer::new().expect("a headless adapter (Mesa llvmpipe)");
     let text =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/scenes/heart_local_curves.json"))
@@ -152,11 +207,19 @@ fn dragging_a_local_curve_of_the_heart_keeps_the_buffers_fresh() {
     let mut s = studio(&text);
     let mut kept = None;
     frame(&mut s, &renderer, &mut kept, "first frame");
-    let projector = projector(&mut s);
-    let p = grab(&mut s, &projector, HandleKind::LocalCurve(2));
-    for k in 1..=3 {
-        s.drag_to(&projector, [p[0] + 15.0 * k as f64, p[1] - 10.0 * k as f64]);
-        let (changes, in_place) = frame(&mut s, &renderer, &mut kept, &format!("heart drag step {k}"));
-        assert!(in_place && changes != Changes::All, "step {k}: the curve alone was composed again");
+    // Local 2 inside the domain, local 0 across the closed curve's seam.
+    for local in [2, 0] {
+        let projector = projector(&mut s);
+        let p = grab(&mut s, &projector, HandleKind::LocalCurve(local));
+        s.drag_to(&projector, [p[0] + 15.0, p[1] - 10.0]);
+        let tolerance = curve_tolerance::<3>(&heart_curve(&s)).expect("a tolerance");
+        heart_step(&mut s, &renderer, &mut kept, tolerance, &format!("local {local}, first step"));
+        for k in 2..=4 {
+            s.drag_to(&projector, [p[0] + 15.0 * k as f64, p[1] - 25.0 * k as f64]);
+            heart_step(&mut s, &renderer, &mut kept, tolerance, &format!("local {local}, step {k}"));
+        }
+        s.end_drag();
+        let (changes, _) = frame(&mut s, &renderer, &mut kept, &format!("local {local}, after the drag"));
+        assert_eq!(changes, Changes::All, "the still scene is composed afresh");
     }
 }
