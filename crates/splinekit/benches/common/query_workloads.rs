@@ -34,6 +34,22 @@ pub fn query_points() -> Vec<Point<3>> {
     pts
 }
 
+/// Query points for projections onto the first of the [`wavy_curves`] (bench/peers, beside
+/// curvo): a 100 × 100 grid over [−0.5, 10.4] × [−2, 2], the curve's box widened by 0.5
+/// and 1.
+pub fn curve_query_points() -> Vec<Point<2>> {
+    let side = 100;
+    let mut pts = Vec::with_capacity(side * side);
+    for a in 0..side {
+        for b in 0..side {
+            let x = -0.5 + 10.9 * (a as f64 + 0.5) / side as f64;
+            let y = -2.0 + 4.0 * (b as f64 + 0.5) / side as f64;
+            pts.push(Point::<2>::new(x, y));
+        }
+    }
+    pts
+}
+
 /// The two cubic curves with 100 control points each of bench/ocp/queries.py (22 crossings).
 pub fn wavy_curves() -> (BSplineCurve<2>, BSplineCurve<2>) {
     let a: Vec<Point<2>> = (0..100).map(|i| Point::<2>::new(0.1 * i as f64, (0.7 * i as f64).sin())).collect();
