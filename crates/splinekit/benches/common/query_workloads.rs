@@ -1,6 +1,7 @@
 //! The shapes of the query benchmarks, shared by `benches/queries.rs` (criterion), the
 //! example `query_speed` (timed beside OpenCASCADE by bench/ocp/speed.py, which builds the
-//! same shapes in OCP) and the example `self_cross_speed`; each uses a part of it.
+//! same shapes in OCP), the example `self_cross_speed` and bench/peers/src/bin/queries.rs
+//! (timed beside curvo); each uses a part of it.
 
 #![allow(dead_code)]
 
