@@ -158,8 +158,8 @@ fn main() {
         if near > 1e-6 {
             disagreements += 1;
             println!(
-                "!!! DISAGREEMENT: splinekit crossing at t_a {:.12}, t_b {:.12} missing from curvo; \
-                 |a(t_a) - b(t_b)| = {:.1e}",
+                "!!! DISAGREEMENT: splinekit crossing at t_a {:.12}, t_b {:.12} is {near:.1e} from every curvo \
+                 crossing; |a(t_a) - b(t_b)| = {:.1e}",
                 x.t_a,
                 x.t_b,
                 miss(x.t_a, x.t_b)
