@@ -68,11 +68,8 @@ fn curvo_curve(c: &BSplineCurve<2>) -> Result<NurbsCurve2D<f64>, String> {
 fn curvo_surface(s: &BSplineSurface<3>) -> NurbsSurface3D<f64> {
     let (p, q) = s.degrees();
     let (ku, kv) = s.knots();
-    let net = s
-        .control_points()
-        .iter()
-        .map(|row| row.iter().map(|c| Point4::new(c[0], c[1], c[2], 1.0)).collect())
-        .collect();
+    let net =
+        s.control_points().iter().map(|row| row.iter().map(|c| Point4::new(c[0], c[1], c[2], 1.0)).collect()).collect();
     NurbsSurface3D::new(p, q, ku.to_vec(), kv.to_vec(), net)
 }
 
@@ -252,9 +249,18 @@ fn main() {
 
     println!("{:<68} {:>11} {:>11} {:>13}", "workload", "splinekit", "curvo 0.3", "curvo/ours");
     for r in &rows {
-        println!("{:<68} {:>8.3} ms {:>8.3} ms {:>12.2}x  {}", r.name, r.ours * 1e3, r.theirs * 1e3, r.theirs / r.ours, r.note);
+        println!(
+            "{:<68} {:>8.3} ms {:>8.3} ms {:>12.2}x  {}",
+            r.name,
+            r.ours * 1e3,
+            r.theirs * 1e3,
+            r.theirs / r.ours,
+            r.note
+        );
     }
-    println!("(medians of {repeats} runs each; curvo/ours > 1 means splinekit is faster; curvo has no surface-surface intersection)");
+    println!(
+        "(medians of {repeats} runs each; curvo/ours > 1 means splinekit is faster; curvo has no surface-surface intersection)"
+    );
     if disagreements > 0 {
         println!("!!! {disagreements} disagreement(s) between splinekit and curvo, see above");
     } else {
