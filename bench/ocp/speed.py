@@ -8,6 +8,11 @@ benches/queries.rs: 10⁴ projections onto the wavy bicubic 8 × 8 patch, all in
 of two cubic B-splines with 100 control points each, torus (R 3, r 1) ∩ cylinder (radius
 0.5 about x = 3). OpenCASCADE's projections run in a Python loop over one initialised
 GeomAPI_ProjectPointOnSurf (the loop's own cost is measured and subtracted).
+
+The curvo ratios of the same shapes (curve-curve intersection and the projections; curvo
+has no surface-surface intersection) come from bench/peers/run.sh, whose src/bin/queries.rs
+times splinekit beside curvo 0.3 in one process; bench/peers is a separate cargo project so
+that curvo's dependencies stay out of the workspace and CI.
 """
 
 import json

@@ -1,6 +1,7 @@
 //! The shapes of the query benchmarks, shared by `benches/queries.rs` (criterion), the
 //! example `query_speed` (timed beside OpenCASCADE by bench/ocp/speed.py, which builds the
-//! same shapes in OCP) and the example `self_cross_speed`; each uses a part of it.
+//! same shapes in OCP), the example `self_cross_speed` and bench/peers/src/bin/queries.rs
+//! (timed beside curvo); each uses a part of it.
 
 #![allow(dead_code)]
 
@@ -29,6 +30,22 @@ pub fn query_points() -> Vec<Point<3>> {
             let x = -1.0 + 9.0 * (a as f64 + 0.5) / side as f64;
             let y = -1.0 + 9.0 * (b as f64 + 0.5) / side as f64;
             pts.push(Point::<3>::new(x, y, -2.0 + 4.0 * (3.0 * a as f64 + 7.0 * b as f64).sin().powi(2)));
+        }
+    }
+    pts
+}
+
+/// Query points for projections onto the first of the [`wavy_curves`] (bench/peers, beside
+/// curvo): a 100 × 100 grid over [−0.5, 10.4] × [−2, 2], the curve's box widened by 0.5
+/// and 1.
+pub fn curve_query_points() -> Vec<Point<2>> {
+    let side = 100;
+    let mut pts = Vec::with_capacity(side * side);
+    for a in 0..side {
+        for b in 0..side {
+            let x = -0.5 + 10.9 * (a as f64 + 0.5) / side as f64;
+            let y = -2.0 + 4.0 * (b as f64 + 0.5) / side as f64;
+            pts.push(Point::<2>::new(x, y));
         }
     }
     pts
