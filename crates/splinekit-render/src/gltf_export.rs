@@ -42,10 +42,13 @@ pub fn scene_to_gltf(scene: &SceneDocument, frames: usize, fps: f64) -> Result<G
                 ));
             }
         }
+        // glTF multiplies COLOR_0 by the base colour; the renderer draws the vertex colours
+        // (a colour map) alone, so the base colour is then white.
+        let color = if m.colors.is_empty() { srgba_to_linear(m.color) } else { [1.0; 4] };
         out.objects.push(GltfObject {
             name: format!("surface {i}"),
             geometry: GltfGeometry::Mesh(mesh),
-            color: srgba_to_linear(m.color),
+            color,
             frames: frames_out,
         });
     }
@@ -73,4 +76,35 @@ pub fn scene_to_gltf(scene: &SceneDocument, frames: usize, fps: f64) -> Result<G
         });
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene(json: &str) -> SceneDocument {
+        splinekit_scene::SceneOrShape::from_json(json).unwrap().into_scene()
+    }
+
+    #[test]
+    fn a_colour_mapped_mesh_has_a_white_base_colour_and_a_plain_one_its_own() {
+        let mapped = scene_to_gltf(
+            &scene(r#"{"type":"scene","objects":[{"shape":{"type":"torus"},"color_map":"gaussian"}]}"#),
+            1,
+            1.0,
+        )
+        .unwrap();
+        let GltfGeometry::Mesh(mesh) = &mapped.objects[0].geometry else { panic!("a torus is a mesh") };
+        assert!(!mesh.colors.is_empty());
+        assert_eq!(mapped.objects[0].color, [1.0; 4], "COLOR_0 is multiplied by the base colour");
+        let plain = scene_to_gltf(
+            &scene(r#"{"type":"scene","objects":[{"shape":{"type":"torus"},"color":[0.5,0.25,1.0]}]}"#),
+            1,
+            1.0,
+        )
+        .unwrap();
+        let GltfGeometry::Mesh(mesh) = &plain.objects[0].geometry else { panic!("a torus is a mesh") };
+        assert!(mesh.colors.is_empty());
+        assert_eq!(plain.objects[0].color, srgba_to_linear([0.5, 0.25, 1.0, 1.0]));
+    }
 }
