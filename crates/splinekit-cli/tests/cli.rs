@@ -358,11 +358,30 @@ fn gallery_writes_every_figure_and_an_index() {
     }
     assert!(png >= 18 && gif >= 4, "{png} PNG, {gif} GIF");
     let links: Vec<&str> = index.split("<a href=\"").skip(1).map(|s| s.split('"').next().unwrap()).collect();
-    let (gltf, step): (Vec<&str>, Vec<&str>) = links.iter().partition(|l| l.ends_with(".glb"));
+    let (gltf, others): (Vec<&str>, Vec<&str>) = links.iter().partition(|l| l.ends_with(".glb"));
+    let (step, pictures): (Vec<&str>, Vec<&str>) = others.iter().partition(|l| l.ends_with(".step"));
     assert_eq!(gltf.len(), png + gif);
+    // Every glb shows in a 3-D view (tools/browser/gallery_test.mjs tests it in Chromium):
+    // a figure with its model script, models/NAME.js, carrying the glb in base64, and a
+    // link to the picture, which is the view's poster.
+    assert_eq!(index.matches("<figure data-view=\"").count(), gltf.len());
+    assert_eq!(pictures.len(), gltf.len(), "{pictures:?}");
     for l in gltf {
-        assert!(std::fs::read(dir.join(l)).unwrap().starts_with(b"glTF"), "{l}");
+        let glb = std::fs::read(dir.join(l)).unwrap();
+        assert!(glb.starts_with(b"glTF"), "{l}");
+        let stem = l.strip_suffix(".glb").unwrap();
+        assert!(index.contains(&format!("&quot;src&quot;:&quot;models/{stem}.js&quot;")), "{stem}");
+        let model = std::fs::read_to_string(dir.join(format!("models/{stem}.js"))).unwrap();
+        let base64 = model.strip_prefix(&format!("splinekitGallery.addModel(\"{stem}\", \"")).unwrap();
+        let base64 = base64.strip_suffix("\");\n").unwrap();
+        assert_eq!(base64.len(), glb.len().div_ceil(3) * 4, "{stem}");
+        assert!(base64.bytes().all(|b| b.is_ascii_alphanumeric() || b"+/=".contains(&b)), "{stem}");
     }
+    for script in ["vendor/three-gltf-orbit.min.js", "viewer.js"] {
+        assert!(index.contains(&format!("<script src=\"{script}\"></script>")), "{script}");
+        assert!(std::fs::metadata(dir.join(script)).unwrap().len() > 5000, "{script}");
+    }
+    assert!(std::fs::read_to_string(dir.join("vendor/three-LICENSE")).unwrap().contains("MIT License"));
     // The exact figures (B-spline polygon, Bézier surface, NURBS torus, …) offer STEP files.
     assert!(step.len() >= 3, "{step:?}");
     for l in step {

@@ -77,12 +77,24 @@ pub fn render_frame(
     size: (u32, u32),
     camera: Option<Camera>,
 ) -> Result<Image> {
+    Ok(render_frame_with_camera(renderer, scene, time, size, camera)?.0)
+}
+
+/// `render_frame`, also returning the camera the frame was drawn with (the gallery's 3-D
+/// viewer starts from it, so that the model first shows as its picture does).
+pub fn render_frame_with_camera(
+    renderer: &Renderer,
+    scene: &SceneDocument,
+    time: Option<f64>,
+    size: (u32, u32),
+    camera: Option<Camera>,
+) -> Result<(Image, Option<Camera>)> {
     let mut rs = compose(scene, time, size.0 as f32 / size.1 as f32)?;
     check_drawable(&rs)?;
     if camera.is_some() {
         rs.camera = camera;
     }
-    Ok(renderer.render(&rs, size.0, size.1)?)
+    Ok((renderer.render(&rs, size.0, size.1)?, rs.camera))
 }
 
 /// Refuses a composed scene with coordinates that are not finite in single precision (the

@@ -1,10 +1,12 @@
 //! `splinekit gallery`: renders the showcase — shaded scenes (PNG), animations (GIF) with
-//! glTF exports, and plots (SVG) — into a folder with an index page.
+//! glTF exports, and plots (SVG) — into a folder with an index page that shows every glTF
+//! export in a 3-D viewer (three.js, `viewer.rs`) and works opened from the file system.
 
 mod figures;
 mod queries;
 mod scenes;
 mod subdivision;
+mod viewer;
 
 use anyhow::{Context, Result, anyhow};
 use clap::Args;
@@ -14,7 +16,8 @@ use splinekit_scene::scenes::SceneDocument;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use crate::commands::render::{animation_camera, progress, render_frame};
+use crate::commands::render::{animation_camera, progress, render_frame, render_frame_with_camera};
+use viewer::ViewStart;
 
 #[derive(Args, Debug)]
 pub struct GalleryArgs {
@@ -32,6 +35,8 @@ struct Entry {
     /// STEP form.
     step: Option<String>,
     caption: String,
+    /// The 3-D view of the glTF export: its model script and how it first shows.
+    view: Option<(String, ViewStart)>,
 }
 
 pub fn run(args: &GalleryArgs) -> Result<()> {
@@ -42,6 +47,7 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
     let renderer =
         Renderer::new().map_err(|e| anyhow!("gallery: the plots are in {}, but {e}", args.output.display()))?;
     let rendered = rendered(&folder, &renderer)?;
+    viewer::write_scripts(&folder)?;
     folder.write("index.html", index_html(&rendered, &plots).as_bytes())?;
     eprintln!(
         "gallery: {} rendered scenes and {} plots in {} ({:.1} s, {}); open {}",
@@ -63,6 +69,12 @@ impl Folder<'_> {
     fn write(&self, name: &str, bytes: &[u8]) -> Result<()> {
         let path = self.0.join(name);
         std::fs::write(&path, bytes).with_context(|| format!("-o: cannot write '{}'", path.display()))
+    }
+
+    /// Creates the folder `name` in the gallery if missing.
+    fn create_dir(&self, name: &str) -> Result<()> {
+        let path = self.0.join(name);
+        std::fs::create_dir_all(&path).with_context(|| format!("-o: cannot create '{}'", path.display()))
     }
 }
 
@@ -87,7 +99,7 @@ fn plots(folder: &Folder) -> Result<Vec<Entry>> {
         .iter()
         .map(|f| {
             folder.write(f.file, f.svg.as_bytes())?;
-            Ok(Entry { file: f.file.to_string(), gltf: None, step: None, caption: f.caption.to_string() })
+            Ok(Entry { file: f.file.to_string(), gltf: None, step: None, caption: f.caption.to_string(), view: None })
         })
         .collect()
 }
@@ -107,20 +119,33 @@ fn rendered(folder: &Folder, renderer: &Renderer) -> Result<Vec<Entry>> {
     let bar = progress(work, "gallery");
     let mut rendered = Vec::new();
     for (name, doc, caption) in &docs {
-        let file = render_scene(folder, renderer, name, doc, &bar)?;
+        let (file, view) = render_scene(folder, renderer, name, doc, &bar)?;
         let step = exact_step(folder, name, doc)?;
-        rendered.push(Entry { file, gltf: Some(format!("{name}.glb")), step, caption: caption.to_string() });
+        rendered.push(Entry {
+            file,
+            gltf: Some(format!("{name}.glb")),
+            step,
+            caption: caption.to_string(),
+            view: Some(view),
+        });
         bar.inc(1);
     }
-    for (stem, caption, img, glb) in subdivision::figures(renderer)? {
+    let mut figures = subdivision::figures(renderer)?;
+    figures.push(queries::torus_cylinder(renderer)?);
+    for (stem, caption, img, glb, camera) in figures {
         folder.write(&format!("{stem}.png"), &img.to_png())?;
         folder.write(&format!("{stem}.glb"), &glb)?;
-        rendered.push(Entry { file: format!("{stem}.png"), gltf: Some(format!("{stem}.glb")), step: None, caption });
+        let start =
+            ViewStart { camera: Some(camera), size: (img.width, img.height), background: [1.0; 3], period: None };
+        let view = (viewer::write_model(folder, &stem, &glb)?, start);
+        rendered.push(Entry {
+            file: format!("{stem}.png"),
+            gltf: Some(format!("{stem}.glb")),
+            step: None,
+            caption,
+            view: Some(view),
+        });
     }
-    let (stem, caption, img, glb) = queries::torus_cylinder(renderer)?;
-    folder.write(&format!("{stem}.png"), &img.to_png())?;
-    folder.write(&format!("{stem}.glb"), &glb)?;
-    rendered.push(Entry { file: format!("{stem}.png"), gltf: Some(format!("{stem}.glb")), step: None, caption });
     bar.finish_and_clear();
     Ok(rendered)
 }
@@ -140,17 +165,18 @@ fn exact_step(folder: &Folder, name: &str, doc: &SceneDocument) -> Result<Option
     Ok(Some(file))
 }
 
-/// Writes one scene as `name.png` (or `name.gif`, counting frames on `bar`) and
-/// `name.glb`; returns the picture's file name.
+/// Writes one scene as `name.png` (or `name.gif`, counting frames on `bar`), `name.glb` and
+/// the viewer's `models/name.js`; returns the picture's file name and the 3-D view.
 fn render_scene(
     folder: &Folder,
     renderer: &Renderer,
     name: &str,
     doc: &SceneDocument,
     bar: &ProgressBar,
-) -> Result<String> {
+) -> Result<(String, (String, ViewStart))> {
     let size = (doc.size[0], doc.size[1]);
     let glb = format!("{name}.glb");
+    let start = |camera, period| ViewStart { camera, size, background: doc.background, period };
     if doc.is_animated() {
         let fps = doc.animation.fps;
         let frames = doc.animation.frames();
@@ -163,41 +189,93 @@ fn render_scene(
         let mut gif = Vec::new();
         write_gif(&mut gif, &images, fps as f32).map_err(|e| anyhow!("{name}.gif: {e}"))?;
         folder.write(&format!("{name}.gif"), &gif)?;
-        folder.write(&glb, &scene_to_gltf(doc, frames, fps).map_err(|e| anyhow!("{name}: {e}"))?.to_glb()?)?;
-        Ok(format!("{name}.gif"))
+        let bytes = scene_to_gltf(doc, frames, fps).map_err(|e| anyhow!("{name}: {e}"))?.to_glb()?;
+        folder.write(&glb, &bytes)?;
+        let model = viewer::write_model(folder, name, &bytes)?;
+        Ok((format!("{name}.gif"), (model, start(camera, Some(frames as f64 / fps)))))
     } else {
-        let img = render_frame(renderer, doc, None, size, None)?;
+        let (img, camera) = render_frame_with_camera(renderer, doc, None, size, None)?;
         folder.write(&format!("{name}.png"), &img.to_png())?;
-        folder.write(&glb, &scene_to_gltf(doc, 1, 1.0).map_err(|e| anyhow!("{name}: {e}"))?.to_glb()?)?;
-        Ok(format!("{name}.png"))
+        let bytes = scene_to_gltf(doc, 1, 1.0).map_err(|e| anyhow!("{name}: {e}"))?.to_glb()?;
+        folder.write(&glb, &bytes)?;
+        let model = viewer::write_model(folder, name, &bytes)?;
+        Ok((format!("{name}.png"), (model, start(camera, None))))
     }
 }
 
-/// The index page: the rendered figures, then the plots.
+/// The index page: the rendered figures, each in a 3-D viewer with its picture as the poster,
+/// then the plots.
 fn index_html(rendered: &[Entry], plots: &[Entry]) -> String {
     let mut html = String::from(
         "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>splinekit gallery</title>\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
          <style>body{font-family:sans-serif;max-width:1400px;margin:auto;padding:1em}\
          .grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(420px,1fr));gap:1.5em}\
-         figure{margin:0}img{width:100%;border:1px solid #ddd}figcaption{font-size:0.9em;color:#333}</style></head>\n\
+         figure{margin:0}img{width:100%;border:1px solid #ddd}figcaption{font-size:0.9em;color:#333}\
+         .view{position:relative;border:1px solid #ddd;background:#fff}\
+         .view img{display:block;border:0;height:100%;object-fit:contain}\
+         .view canvas{display:block;width:100%;height:100%;cursor:grab;touch-action:none}\
+         .view.ready img{display:none}\
+         .view.loading::after,.view.failed::after{position:absolute;right:0.5em;bottom:0.4em;font-size:0.8em;\
+         color:#555;background:#fffd;padding:0 0.3em}\
+         .view.loading::after{content:\"loading the 3-D view\u{2026}\"}\
+         .view.failed::after{content:\"picture only: the 3-D view failed\"}\
+         .timebar{display:flex;gap:0.6em;align-items:center;margin:0.3em 0}\
+         .timebar button{min-width:4.5em}.timebar input{flex:1}.timebar output{font-variant-numeric:tabular-nums}\
+         </style></head>\n\
          <body><h1>splinekit gallery</h1><p>Every figure is computed and drawn by splinekit: shaded scenes \
          rendered offscreen with wgpu (the scene documents are in <code>examples/scenes/</code>), animations \
          as GIF, each with a glTF export (and a STEP file of the exact geometry where every object has an \
-         exact STEP form), and plots as SVG.</p>\n",
+         exact STEP form), and plots as SVG.</p>\n\
+         <p>Each scene shows its glTF export in a 3-D view (three.js) once it is loaded, starting from the \
+         picture's camera: drag to turn it, wheel to zoom, right-drag or shift-drag to pan, double-click to \
+         go back; animations play as morph targets, with a button to pause and a slider to scrub. Lines are \
+         one pixel wide there (WebGL's lines); the picture link shows the rendering.</p>\n",
     );
     for (title, entries) in [("Scenes and animations", rendered), ("Plots", plots)] {
         html.push_str(&format!("<h2>{title}</h2><div class=\"grid\">\n"));
         for e in entries {
-            let mut link = e.gltf.as_ref().map(|g| format!(" <a href=\"{g}\">glTF</a>")).unwrap_or_default();
+            let mut link = String::new();
+            if e.view.is_some() {
+                link.push_str(&format!(" <a href=\"{}\">picture</a>", e.file));
+            }
+            if let Some(g) = &e.gltf {
+                link.push_str(&format!(" <a href=\"{g}\">glTF</a>"));
+            }
             if let Some(step) = &e.step {
                 link.push_str(&format!(" <a href=\"{step}\">STEP</a>"));
             }
-            html.push_str(&format!(
-                "<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}{link}</figcaption></figure>\n",
-                e.file, e.file, e.caption
-            ));
+            match &e.view {
+                Some((src, start)) => {
+                    let stem = e.file.rsplit_once('.').map_or(e.file.as_str(), |(stem, _)| stem);
+                    html.push_str(&format!(
+                        "<figure data-view=\"{}\"><div class=\"view\" style=\"aspect-ratio:{}/{}\">\
+                         <img src=\"{}\" loading=\"lazy\" alt=\"{}\"></div>",
+                        viewer::data_view(stem, src, start),
+                        start.size.0,
+                        start.size.1,
+                        e.file,
+                        e.file
+                    ));
+                    if start.period.is_some() {
+                        html.push_str(
+                            "<div class=\"timebar\" hidden><button type=\"button\" aria-pressed=\"false\">play</button>\
+                             <input type=\"range\" min=\"0\" max=\"1\" step=\"0.001\" value=\"0\" aria-label=\"time\">\
+                             <output>0.00 s</output></div>",
+                        );
+                    }
+                    html.push_str(&format!("<figcaption>{}{link}</figcaption></figure>\n", e.caption));
+                }
+                None => html.push_str(&format!(
+                    "<figure><img src=\"{}\" loading=\"lazy\" alt=\"{}\"><figcaption>{}{link}</figcaption></figure>\n",
+                    e.file, e.file, e.caption
+                )),
+            }
         }
         html.push_str("</div>\n");
+    }
+    for script in viewer::SCRIPTS {
+        html.push_str(&format!("<script src=\"{script}\"></script>\n"));
     }
     html.push_str("</body></html>\n");
     html

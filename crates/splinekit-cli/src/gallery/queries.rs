@@ -129,8 +129,8 @@ pub fn contours() -> Result<Figure> {
     })
 }
 
-/// A rendered figure: file stem, caption, picture, glb bytes.
-pub type Rendered = (String, String, Image, Vec<u8>);
+/// A rendered figure: file stem, caption, picture, glb bytes, the picture's camera.
+pub type Rendered = (String, String, Image, Vec<u8>, Camera);
 
 /// A torus (R 3, r 1) pierced by a cylinder of radius 0.5 about x = 3 through its tube, with
 /// the two loops of their intersection curve drawn over both (shaded offscreen).
@@ -186,7 +186,8 @@ pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
     }
     // Framed on what is drawn: the half of the ring left (u from −0.22 to π: x from −4 to
     // 4, y from −0.9 to 4) and the cylinder, seen from the front right and above.
-    scene.camera = Some(Camera::fit(([-4.0, -0.9, -1.6], [4.0, 4.0, 1.6]), -1.0, 0.4, 4.0 / 3.0));
+    let camera = Camera::fit(([-4.0, -0.9, -1.6], [4.0, 4.0, 1.6]), -1.0, 0.4, 4.0 / 3.0);
+    scene.camera = Some(camera);
     let img = renderer.render(&scene, 800, 600)?;
     let closed = branches.iter().filter(|b| b.closed).count();
     let caption = format!(
@@ -196,7 +197,7 @@ pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
          intersect` prints for two surfaces).",
         branches.len()
     );
-    Ok(("torus_cylinder".to_string(), caption, img, gltf.to_glb()?))
+    Ok(("torus_cylinder".to_string(), caption, img, gltf.to_glb()?, camera))
 }
 
 #[cfg(test)]

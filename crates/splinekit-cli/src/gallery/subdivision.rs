@@ -6,8 +6,8 @@ use splinekit_mesh::export::{GltfGeometry, GltfScene};
 use splinekit_mesh::subdivision_surface::{SurfaceScheme, read_obj_polygons};
 use splinekit_render::{Camera, Image, LineItem, MeshItem, PointItem, RenderScene, Renderer};
 
-/// A rendered figure: file stem, caption, picture, glb bytes.
-pub type Figure = (String, String, Image, Vec<u8>);
+/// A rendered figure: file stem, caption, picture, glb bytes, the picture's camera.
+pub type Figure = (String, String, Image, Vec<u8>, Camera);
 
 /// One figure per scheme.
 pub fn figures(renderer: &Renderer) -> Result<Vec<Figure>> {
@@ -48,10 +48,11 @@ pub fn figures(renderer: &Renderer) -> Result<Vec<Figure>> {
             scene.points.push(PointItem { position: v.map(|x| x as f32), color: [0.1, 0.1, 0.1, 1.0], size: 8.0 });
         }
         let bounds = scene.bounds().expect("a cube has bounds");
-        scene.camera = Some(Camera::fit(bounds, 0.7, 0.45, 4.0 / 3.0));
+        let camera = Camera::fit(bounds, 0.7, 0.45, 4.0 / 3.0);
+        scene.camera = Some(camera);
         let img = renderer.render(&scene, 640, 480)?;
         let glb = GltfScene::single(stem, GltfGeometry::Mesh(mesh), color).to_glb()?;
-        out.push((stem.to_string(), caption.to_string(), img, glb));
+        out.push((stem.to_string(), caption.to_string(), img, glb, camera));
     }
     Ok(out)
 }
