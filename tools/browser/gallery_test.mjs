@@ -7,7 +7,8 @@
 //     wrote in beating_heart.glb (read back here from the file, not through three.js);
 //   - two screenshots of the playing heart at different times differ and are not blank;
 //   - dragging turns a view, the wheel zooms it, the pause button and the time slider work.
-// It prints the page's size and load times. Usage:
+// It prints the page's size and load times. With --screenshot, it saves the window with the
+// heart's row at the top, playing. Usage:
 //   node gallery_test.mjs GALLERY [--out DIR] [--screenshot FILE.png]
 // DIR (default GALLERY/../browser-test) receives the heart's two screenshots, a screenshot of
 // every view (views/NAME.png) and the measurements (measurements.json).
@@ -240,10 +241,6 @@ try {
     measured.firstScreenViews = await page.evaluate(() => window.splinekitGallery.views.filter((v) => v.visible).map((v) => v.name));
     measured.firstScreenBytes = bytesOf(await filesRead(page));
     check(await page.evaluate(() => window.splinekitGallery.revision) !== null, 'three.js loaded');
-    if (screenshotPath) {
-        await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-        await page.screenshot({ path: resolve(screenshotPath) });
-    }
 
     await page.locator(view('beating_heart')).scrollIntoViewIfNeeded();
     await page.waitForFunction(heart(`return v.state === 'ready' || v.state === 'error';`), null, { timeout: 60000 });
@@ -306,6 +303,18 @@ try {
     check(Math.abs(scrubbed - 0.4) < 1e-9, `the slider scrubs the heart to 0.4 s (${scrubbed})`);
     await bar.locator('button').click();
     check(await page.evaluate(heart('return v.playing;')), 'the play button plays the heart again');
+
+    if (screenshotPath) {
+        // The page with the heart's row at the top: the heart playing, surfaces beside it.
+        await page.evaluate(heart('window.scrollTo(0, v.figure.getBoundingClientRect().top + window.scrollY - 16);'));
+        await page.waitForFunction(
+            () => window.splinekitGallery.views.filter((v) => v.visible).every((v) => v.state === 'ready' || v.state === 'error'),
+            null,
+            { timeout: 60000 },
+        );
+        await page.waitForTimeout(300);
+        await page.screenshot({ path: resolve(screenshotPath) });
+    }
     await page.context().close();
 
     // 2. Every view, scrolled to in turn, loads its model and draws it; with reduced motion,
