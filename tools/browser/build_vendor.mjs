@@ -25,7 +25,7 @@ const result = await build({
     write: false,
     banner: {
         js:
-            `/* three.js ${three.version} (MIT licence, three-LICENSE): WebGLRenderer, GLTFLoader, OrbitControls and ` +
+            `/* three.js ${three.version} (MIT licence, three-LICENSE): WebGLRenderer, GLTFLoader, OrbitControls, wide lines and ` +
             `what they need, bundled by esbuild ${esbuildVersion} from tools/browser/vendor_entry.js ` +
             `(tools/browser/build_vendor.mjs) */`,
     },

@@ -18,3 +18,6 @@ export {
 } from 'three';
 export { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 export { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+export { LineMaterial } from 'three/addons/lines/LineMaterial.js';
+export { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
+export { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';

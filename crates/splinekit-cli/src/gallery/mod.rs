@@ -229,8 +229,8 @@ fn index_html(rendered: &[Entry], plots: &[Entry]) -> String {
          exact STEP form), and plots as SVG.</p>\n\
          <p>Each scene shows its glTF export in a 3-D view (three.js) once it is loaded, starting from the \
          picture's camera: drag to turn it, wheel to zoom, right-drag or shift-drag to pan, double-click to \
-         go back; animations play as morph targets, with a button to pause and a slider to scrub. Lines are \
-         one pixel wide there (WebGL's lines); the picture link shows the rendering.</p>\n",
+         go back; animations play as morph targets, with a button to pause and a slider to scrub. The \
+         picture link shows the rendering.</p>\n",
     );
     for (title, entries) in [("Scenes and animations", rendered), ("Plots", plots)] {
         html.push_str(&format!("<h2>{title}</h2><div class=\"grid\">\n"));

@@ -8,6 +8,10 @@
  * splinekitGallery.addModel. A figure's model is loaded when the figure comes near the
  * window; until then (and if it fails) its rendered picture shows as the poster.
  *
+ * WebGL draws its lines one pixel wide, so every line of a model is drawn by a LineSegments2
+ * (three's screen-space wide lines) LINE_WIDTH CSS pixels wide, its points following the
+ * line's morph targets; the line itself stays, hidden, for the animation to drive.
+ *
  * One WebGL renderer draws every view and copies the picture into the view's own 2-D
  * canvas, so the page never holds more than one WebGL context (browsers drop the oldest
  * beyond about 16). A view is redrawn only when it moves, plays, or is resized.
@@ -22,6 +26,8 @@
     'use strict';
     const T = window.SplinekitThree;
     const gallery = { views: [], addModel, revision: T ? T.REVISION : null };
+    // Width of the models' lines in CSS pixels (the pictures' are 1.5 to 5).
+    const LINE_WIDTH = 2.5;
     window.splinekitGallery = gallery;
 
     // models/NAME.js scripts that are loading: name -> { resolve, reject }.
@@ -163,6 +169,7 @@
             const bg = spec.background || [1, 1, 1];
             scene.background = new T.Color().setRGB(bg[0], bg[1], bg[2], T.SRGBColorSpace);
             scene.add(gltf.scene);
+            this.widenLines(gltf.scene);
             const box = new T.Box3().setFromObject(gltf.scene);
             const centre = box.getCenter(new T.Vector3());
             const radius = Math.max(box.getSize(new T.Vector3()).length() / 2, 1e-6);
@@ -232,6 +239,77 @@
                 } else {
                     this.play();
                 }
+            }
+        }
+
+        /** A LineSegments2 over each line of the model (see the top of this file). */
+        widenLines(root) {
+            this.wideLines = [];
+            const lines = [];
+            root.traverse((o) => {
+                if (o.isLine) {
+                    lines.push(o);
+                }
+            });
+            for (const line of lines) {
+                const g = line.geometry;
+                const count = g.index ? g.index.count : g.attributes.position.count;
+                const vertex = (k) => (g.index ? g.index.getX(k) : k);
+                // Segments as pairs of vertex numbers.
+                const pairs = [];
+                const step = line.isLineSegments ? 2 : 1;
+                for (let k = 0; k + 1 < count; k += step) {
+                    pairs.push(vertex(k), vertex(k + 1));
+                }
+                if (line.isLineLoop && count > 2) {
+                    pairs.push(vertex(count - 1), vertex(0));
+                }
+                const geometry = new T.LineSegmentsGeometry();
+                geometry.setPositions(new Float32Array(pairs.length * 3));
+                const m = line.material;
+                const material = new T.LineMaterial({
+                    color: m.color,
+                    linewidth: LINE_WIDTH,
+                    transparent: m.transparent,
+                    opacity: m.opacity,
+                });
+                const wide = new T.LineSegments2(geometry, material);
+                wide.frustumCulled = false;
+                line.add(wide);
+                m.visible = false;
+                this.wideLines.push({ line, wide, pairs, key: null });
+            }
+            this.updateWideLines();
+        }
+
+        /** Moves the wide lines' points to where the lines' morph targets put them. */
+        updateWideLines() {
+            for (const w of this.wideLines) {
+                const g = w.line.geometry;
+                const weights = w.line.morphTargetInfluences || [];
+                const key = weights.join(',');
+                if (key === w.key) {
+                    continue;
+                }
+                w.key = key;
+                const base = g.attributes.position;
+                const targets = g.morphAttributes.position || [];
+                const relative = g.morphTargetsRelative;
+                const sum = relative ? 0 : weights.reduce((a, b) => a + b, 0);
+                const buffer = w.wide.geometry.attributes.instanceStart.data;
+                const out = buffer.array;
+                w.pairs.forEach((v, i) => {
+                    for (let c = 0; c < 3; c++) {
+                        let x = base.getComponent(v, c) * (relative ? 1 : 1 - sum);
+                        for (let t = 0; t < targets.length; t++) {
+                            if (weights[t]) {
+                                x += weights[t] * targets[t].getComponent(v, c);
+                            }
+                        }
+                        out[3 * i + c] = x;
+                    }
+                });
+                buffer.needsUpdate = true;
             }
         }
 
@@ -324,6 +402,11 @@
                 cam.right = half * aspect;
             }
             cam.updateProjectionMatrix();
+            this.updateWideLines();
+            for (const wl of this.wideLines) {
+                wl.wide.material.linewidth = LINE_WIDTH * dpr;
+                wl.wide.material.resolution.set(w, h);
+            }
             const r = renderer();
             r.setSize(w, h, false);
             r.render(this.scene, cam);
