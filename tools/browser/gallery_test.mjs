@@ -198,7 +198,8 @@ for (const stem of glbs) {
 const browser = await chromium.launch({
     executablePath,
     headless: true,
-    args: ['--enable-unsafe-swiftshader', '--use-angle=swiftshader', '--ignore-gpu-blocklist'],
+    // SwiftShader's WebGL (no GPU); /tmp instead of a container's small /dev/shm.
+    args: ['--enable-unsafe-swiftshader', '--use-angle=swiftshader', '--ignore-gpu-blocklist', '--disable-dev-shm-usage'],
 });
 const messages = [];
 /** A page of the gallery, its console recorded. */
