@@ -55,7 +55,7 @@ pub fn compose_with<'a>(
     surfaces: &SurfaceFor<'a>,
 ) -> Result<RenderScene, DocumentError> {
     let mut out = RenderScene {
-        background: [scene.background[0], scene.background[1], scene.background[2], 1.0],
+        background: [scene.background[0] as f32, scene.background[1] as f32, scene.background[2] as f32, 1.0],
         ..Default::default()
     };
     for i in 0..scene.objects.len() {
@@ -122,13 +122,12 @@ fn compose_object(
     out: &mut RenderScene,
 ) -> Result<ObjectItems, DocumentError> {
     let obj = &scene.objects[index];
-    let color = obj
-        .style
-        .color
-        .as_ref()
-        .map_or(PALETTE[index % PALETTE.len()], |c| [c[0], c[1], c[2], *c.get(3).unwrap_or(&1.0)]);
+    let color =
+        obj.style.color.as_ref().map_or(PALETTE[index % PALETTE.len()], |c| {
+            [c[0], c[1], c[2], *c.get(3).unwrap_or(&1.0)].map(|x| x as f32)
+        });
     let color = match time {
-        Some(t) if obj.style.color_cycle => hue_turned(color, (t / scene.animation.duration) as f32),
+        Some(t) if obj.style.color_cycle => hue_turned(color, (t / scene.clock().duration) as f32),
         _ => color,
     };
     let start = (out.meshes.len(), out.lines.len(), out.points.len());
@@ -325,7 +324,7 @@ impl DimensionVisitor<Curves> for CurveLine<'_> {
             None => Polyline::adaptive_with_limit(c, curve_tolerance(c)?, CURVE_POINTS)?,
         };
         let points = polyline_points(&poly.params, &poly.points);
-        Ok(LineItem { points, closed: poly.closed, color: self.color, width: self.obj.style.line_width })
+        Ok(LineItem { points, closed: poly.closed, color: self.color, width: self.obj.style.line_width as f32 })
     }
 }
 
@@ -382,7 +381,7 @@ pub fn local_curve_items<const D: usize>(
             f32x3(to3(&v[0]))
         })
         .collect();
-    let line = LineItem { points: pts, closed: false, color: local_color(k, n), width: style.line_width * 0.6 };
+    let line = LineItem { points: pts, closed: false, color: local_color(k, n), width: style.line_width as f32 * 0.6 };
     let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
     (line, PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 })
 }

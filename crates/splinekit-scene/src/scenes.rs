@@ -15,7 +15,7 @@ use crate::ShapeDocument;
 use crate::error::{DocumentError, Result};
 use crate::json::{fields, kind, nested, split_type};
 
-fn default_line_width() -> f32 {
+fn default_line_width() -> f64 {
     2.5
 }
 
@@ -25,10 +25,10 @@ fn default_line_width() -> f32 {
 pub struct StyleDoc {
     /// sRGB colour [r, g, b] or [r, g, b, a] in [0, 1] (default: from a palette by index).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub color: Option<Vec<f32>>,
+    pub color: Option<Vec<f64>>,
     /// Width of curves in pixels (default 2.5).
     #[serde(default = "default_line_width")]
-    pub line_width: f32,
+    pub line_width: f64,
     /// Surfaces: draw parameter lines over the shading.
     #[serde(default)]
     pub wireframe: bool,
@@ -231,7 +231,7 @@ fn seven_tenths() -> f64 {
 }
 
 /// The animation clock of a scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct AnimationDoc {
     /// Length in seconds (default 1).
@@ -271,32 +271,34 @@ pub struct SceneDocument {
     pub lights: Vec<LightDoc>,
     /// Background sRGB colour (default white).
     #[serde(default = "white", deserialize_with = "white_if_null")]
-    pub background: [f32; 3],
+    pub background: [f64; 3],
     /// Image size in pixels (default 800×600).
     #[serde(default = "default_size", deserialize_with = "default_size_if_null")]
     pub size: [u32; 2],
     /// Draw x, y, z axes.
     #[serde(default)]
     pub axes: bool,
-    /// The animation clock (default 1 s at 20 fps).
-    #[serde(default, deserialize_with = "default_animation_if_null")]
-    pub animation: AnimationDoc,
+    /// The animation clock as the document gives it (`None`: none given, the default
+    /// clock of [`SceneDocument::clock`]; kept apart so that writing the scene back adds
+    /// no block the document did not have).
+    #[serde(default, deserialize_with = "animation_or_null")]
+    pub animation: Option<AnimationDoc>,
 }
 
-fn white() -> [f32; 3] {
+fn white() -> [f64; 3] {
     [1.0, 1.0, 1.0]
 }
 fn default_size() -> [u32; 2] {
     [800, 600]
 }
-fn white_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<[f32; 3], D::Error> {
+fn white_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<[f64; 3], D::Error> {
     Ok(Option::deserialize(d)?.unwrap_or_else(white))
 }
 fn default_size_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<[u32; 2], D::Error> {
     Ok(Option::deserialize(d)?.unwrap_or_else(default_size))
 }
-fn default_animation_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<AnimationDoc, D::Error> {
-    Ok(Option::deserialize(d)?.unwrap_or_default())
+fn animation_or_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<Option<AnimationDoc>, D::Error> {
+    Option::deserialize(d)
 }
 
 /// Largest image side of a scene.
@@ -351,7 +353,7 @@ impl SceneDocument {
         if background.iter().any(|c| !(0.0..=1.0).contains(c)) {
             return Err(DocumentError::new("background", format!("colours are in [0, 1], got {background:?}")));
         }
-        let a = &self.animation;
+        let a = self.clock();
         if !(a.duration > 0.0 && a.duration <= 600.0 && a.fps > 0.0 && a.fps <= 100.0) {
             return Err(DocumentError::new(
                 "animation",
@@ -384,7 +386,7 @@ impl SceneDocument {
             background: white(),
             size: default_size(),
             axes: false,
-            animation: AnimationDoc::default(),
+            animation: None,
         }
     }
 
@@ -406,8 +408,15 @@ impl SceneDocument {
         if self.axes {
             doc.insert("axes".into(), true.into());
         }
-        doc.insert("animation".into(), serde_json::to_value(&self.animation).unwrap_or(Value::Null));
+        if let Some(a) = &self.animation {
+            doc.insert("animation".into(), serde_json::to_value(a).unwrap_or(Value::Null));
+        }
         Value::Object(doc)
+    }
+
+    /// The animation clock: the document's, else 1 s at 20 fps.
+    pub fn clock(&self) -> AnimationDoc {
+        self.animation.unwrap_or_default()
     }
 
     /// Whether any object carries an animation.
