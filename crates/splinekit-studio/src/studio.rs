@@ -9,7 +9,9 @@ use splinekit_render::{LineItem, PointItem, RenderScene, compose_with};
 use splinekit_scene::ShapeDocument;
 use splinekit_scene::scenes::SceneDocument;
 
+use crate::actions::Action;
 use crate::clock::Clock;
+use crate::command::{Command, FieldEdit};
 use crate::document;
 use crate::edit::{Edit, EditError};
 use crate::gesture::{Gesture, GestureKind};
@@ -17,7 +19,7 @@ use crate::handles::{Handle, HandleKind, handles_with};
 use crate::history::History;
 use crate::live_surfaces::LiveSurfaces;
 use crate::live_view::{self, Changes, KeptPolyline, Lattice};
-use crate::view_camera::{Projector, ViewCamera};
+use crate::view_camera::{Projector, StandardView, ViewCamera};
 
 /// The scene as last composed, and what it was composed from.
 struct Composed {
@@ -149,6 +151,8 @@ pub struct Studio {
     pub live: LiveSurfaces,
     /// What changed in the composition since the last [`Studio::view_scene`].
     changes: Changes,
+    /// Commands queued by the panels, run by [`Studio::run_commands`].
+    commands: Vec<Command>,
 }
 
 impl Studio {
@@ -173,7 +177,78 @@ impl Studio {
             cache: None,
             live: LiveSurfaces::default(),
             changes: Changes::All,
+            commands: Vec::new(),
         }
+    }
+
+    /// Queues a command (panels ask through this; the window runs the queue after the
+    /// panels are drawn).
+    pub fn queue(&mut self, command: Command) {
+        self.commands.push(command);
+    }
+
+    /// Runs the queued commands in order; returns the actions only the window can carry
+    /// out (screenshots, closing, overlays), in order.
+    pub fn run_commands(&mut self) -> Vec<Action> {
+        let mut left = Vec::new();
+        for c in std::mem::take(&mut self.commands) {
+            left.extend(self.run(c));
+        }
+        left
+    }
+
+    /// Runs one command; returns its action when only the window can carry it out.
+    pub fn run(&mut self, command: Command) -> Option<Action> {
+        match command {
+            Command::Action(a) => return self.run_action(a),
+            Command::Open(path) => self.open(PathBuf::from(path)),
+            Command::Export(path) => self.export_selected(std::path::Path::new(&path)),
+            Command::Edit(FieldEdit { edit, field, select }) => {
+                let done = self.edit(edit, false);
+                self.field_error = match (done, field) {
+                    (false, Some(f)) => self.message.clone().map(|m| (f, m)),
+                    _ => None,
+                };
+                if let (true, Some(object)) = (done, select) {
+                    self.select_object(object);
+                }
+            }
+            Command::SelectObject(object) => self.select_object(object),
+        }
+        None
+    }
+
+    /// Selects object `object` (none: `None`; an index past the end selects none) and no
+    /// handle.
+    pub fn select_object(&mut self, object: Option<usize>) {
+        self.selected_object = object.filter(|&i| i < self.scene.objects.len());
+        self.selected = None;
+    }
+
+    /// Carries out an action of the registry; returns it when only the window can
+    /// (screenshots, closing, overlays).
+    pub fn run_action(&mut self, action: Action) -> Option<Action> {
+        let look = |studio: &mut Studio, v| studio.camera.iter_mut().for_each(|c| c.look_from(v));
+        match action {
+            Action::Save => self.save(),
+            Action::Undo => self.undo(),
+            Action::Redo => self.redo(),
+            Action::LookTop => look(self, StandardView::Top),
+            Action::LookFront => look(self, StandardView::Front),
+            Action::LookSide => look(self, StandardView::Side),
+            Action::Home => self.camera.iter_mut().for_each(|c| c.camera = c.home),
+            Action::Frame => self.frame_selection(),
+            Action::TogglePlay => self.clock.playing = !self.clock.playing,
+            Action::ClearSelection => self.selected = None,
+            Action::AddBeat => match self.selected_object {
+                Some(object) => {
+                    self.add_beat(object);
+                }
+                None => self.message = Some("a beat moves the local pieces of a blending spline: select one".into()),
+            },
+            Action::Screenshot | Action::Quit | Action::FrameTimes | Action::Help => return Some(action),
+        }
+        None
     }
 
     /// Opens another document; a document that does not parse leaves the current one and
