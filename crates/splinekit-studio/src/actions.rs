@@ -48,6 +48,10 @@ pub enum Action {
     AddBeat,
     /// Clear the selection.
     ClearSelection,
+    /// Select every shown handle of the selected object.
+    SelectAll,
+    /// Move the selection along world axis `.0` by `.1` snapping steps.
+    Nudge(usize, i32),
 }
 
 /// The menus of the menu bar.
@@ -83,6 +87,20 @@ pub struct ActionSpec {
 const NONE: Modifiers = Modifiers::NONE;
 const CTRL: Modifiers = Modifiers::COMMAND;
 const CTRL_SHIFT: Modifiers = Modifiers { shift: true, ..Modifiers::COMMAND };
+const SHIFT: Modifiers = Modifiers::SHIFT;
+
+/// A nudge of the selection by the snapping step (undoable, in no menu).
+const fn nudge(action: Action, label: &'static str, keys: &'static [(Modifiers, Key)]) -> ActionSpec {
+    ActionSpec {
+        action,
+        label,
+        help: "move the selection by the snapping step (Shift: ten steps)",
+        keys,
+        menu: None,
+        panel: false,
+        undoable: true,
+    }
+}
 
 /// Every action of the studio, in menu order.
 pub const ACTIONS: &[ActionSpec] = &[
@@ -149,6 +167,27 @@ pub const ACTIONS: &[ActionSpec] = &[
         panel: false,
         undoable: false,
     },
+    ActionSpec {
+        action: Action::SelectAll,
+        label: "Select all",
+        help: "select every handle of the selected object",
+        keys: &[(NONE, Key::A)],
+        menu: Some(Menu::Edit),
+        panel: false,
+        undoable: false,
+    },
+    nudge(Action::Nudge(0, -1), "Nudge −x", &[(NONE, Key::ArrowLeft)]),
+    nudge(Action::Nudge(0, 1), "Nudge +x", &[(NONE, Key::ArrowRight)]),
+    nudge(Action::Nudge(1, 1), "Nudge +y", &[(NONE, Key::ArrowUp)]),
+    nudge(Action::Nudge(1, -1), "Nudge −y", &[(NONE, Key::ArrowDown)]),
+    nudge(Action::Nudge(2, 1), "Nudge +z", &[(NONE, Key::PageUp)]),
+    nudge(Action::Nudge(2, -1), "Nudge −z", &[(NONE, Key::PageDown)]),
+    nudge(Action::Nudge(0, -10), "Nudge −x ×10", &[(SHIFT, Key::ArrowLeft)]),
+    nudge(Action::Nudge(0, 10), "Nudge +x ×10", &[(SHIFT, Key::ArrowRight)]),
+    nudge(Action::Nudge(1, 10), "Nudge +y ×10", &[(SHIFT, Key::ArrowUp)]),
+    nudge(Action::Nudge(1, -10), "Nudge −y ×10", &[(SHIFT, Key::ArrowDown)]),
+    nudge(Action::Nudge(2, 10), "Nudge +z ×10", &[(SHIFT, Key::PageUp)]),
+    nudge(Action::Nudge(2, -10), "Nudge −z ×10", &[(SHIFT, Key::PageDown)]),
     ActionSpec {
         action: Action::LookTop,
         label: "Top",
@@ -226,10 +265,12 @@ pub const ACTIONS: &[ActionSpec] = &[
 /// Keys held while a drag starts in the 3-D view (read by [`crate::viewport`]), for the
 /// help overlay.
 pub const HELD_KEYS: &[(&str, &str)] = &[
-    ("drag a handle", "move it in the view plane"),
+    ("click a handle", "select it (Shift + click: add it or take it out)"),
+    ("Ctrl + drag on empty space", "select the handles in a box (Ctrl + Shift: add them)"),
+    ("drag a handle", "move it in the view plane (a handle of the selection: all of it)"),
     ("X / Y / Z + drag", "move along that axis"),
-    ("R + drag", "rotate a local piece about its origin"),
-    ("S + drag", "scale a local piece about its origin"),
+    ("R + drag", "rotate a local piece about its origin (a selection about its centroid)"),
+    ("S + drag", "scale a local piece about its origin (a selection about its centroid)"),
     ("drag on empty space", "orbit"),
     ("Shift + drag, middle drag", "pan"),
     ("wheel", "zoom"),

@@ -18,6 +18,7 @@ use crate::gpu::Gpu;
 use crate::options::Options;
 use crate::panels::{FileFields, SIDE_WIDTH, animation_panel, help_overlay, menu_bar, objects_panel, properties_panel};
 use crate::report::{handle_report, widget_report};
+use crate::snapping::snapping_panel;
 use crate::studio::Studio;
 use crate::view_camera::Projector;
 use crate::viewport::{ViewFrame, ViewInput, view};
@@ -167,7 +168,11 @@ impl App {
             ui.label(text);
         });
         egui::Panel::left("objects").exact_size(SIDE_WIDTH).resizable(false).show(ui, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| objects_panel(ui, &mut self.studio));
+            egui::ScrollArea::vertical().show(ui, |ui| {
+                objects_panel(ui, &mut self.studio);
+                ui.separator();
+                snapping_panel(ui, &mut self.studio.snapping);
+            });
         });
         egui::Panel::right("properties").exact_size(SIDE_WIDTH).resizable(false).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| properties_panel(ui, &mut self.studio));

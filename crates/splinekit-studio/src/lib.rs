@@ -44,6 +44,8 @@ pub mod live_view;
 pub mod options;
 pub mod panels;
 pub mod report;
+pub mod selection;
+pub mod snapping;
 pub mod studio;
 pub mod transform_edit;
 pub mod view_camera;
