@@ -52,6 +52,13 @@ pub enum Action {
     SelectAll,
     /// Move the selection along world axis `.0` by `.1` snapping steps.
     Nudge(usize, i32),
+    /// The next click on the selected curve inserts a knot there.
+    InsertKnot,
+    /// The next click on the selected curve removes the knot nearest it (within the
+    /// tolerance).
+    RemoveKnot,
+    /// Raise the selected curve's degree by one.
+    ElevateDegree,
 }
 
 /// The menus of the menu bar.
@@ -88,6 +95,7 @@ const NONE: Modifiers = Modifiers::NONE;
 const CTRL: Modifiers = Modifiers::COMMAND;
 const CTRL_SHIFT: Modifiers = Modifiers { shift: true, ..Modifiers::COMMAND };
 const SHIFT: Modifiers = Modifiers::SHIFT;
+const ALT: Modifiers = Modifiers::ALT;
 
 /// A nudge of the selection by the snapping step (undoable, in no menu).
 const fn nudge(action: Action, label: &'static str, keys: &'static [(Modifiers, Key)]) -> ActionSpec {
@@ -175,6 +183,33 @@ pub const ACTIONS: &[ActionSpec] = &[
         menu: Some(Menu::Edit),
         panel: false,
         undoable: false,
+    },
+    ActionSpec {
+        action: Action::InsertKnot,
+        label: "Insert knot",
+        help: "click on the selected B-spline, NURBS or Bézier curve: a knot there (the curve does not change)",
+        keys: &[(NONE, Key::K)],
+        menu: Some(Menu::Edit),
+        panel: true,
+        undoable: true,
+    },
+    ActionSpec {
+        action: Action::RemoveKnot,
+        label: "Remove knot",
+        help: "click on the selected curve: its knot nearest there goes, if the curve moves by at most the tolerance",
+        keys: &[(ALT, Key::K)],
+        menu: Some(Menu::Edit),
+        panel: true,
+        undoable: true,
+    },
+    ActionSpec {
+        action: Action::ElevateDegree,
+        label: "Elevate degree",
+        help: "raise the selected curve's degree by one (the curve does not change)",
+        keys: &[(NONE, Key::E)],
+        menu: Some(Menu::Edit),
+        panel: true,
+        undoable: true,
     },
     nudge(Action::Nudge(0, -1), "Nudge −x", &[(NONE, Key::ArrowLeft)]),
     nudge(Action::Nudge(0, 1), "Nudge +x", &[(NONE, Key::ArrowRight)]),
@@ -271,6 +306,7 @@ pub const HELD_KEYS: &[(&str, &str)] = &[
     ("X / Y / Z + drag", "move along that axis"),
     ("R + drag", "rotate a local piece about its origin (a selection about its centroid)"),
     ("S + drag", "scale a local piece about its origin (a selection about its centroid)"),
+    ("W + drag up / down", "raise / lower the weight of a NURBS control point"),
     ("drag on empty space", "orbit"),
     ("Shift + drag, middle drag", "pan"),
     ("wheel", "zoom"),

@@ -26,6 +26,9 @@ pub enum GestureKind {
     Rotate,
     /// Scale about the local origin (local pieces only).
     Scale,
+    /// Change the weight of a NURBS or rational Bézier control point (held W): dragging
+    /// up multiplies it by e^(Δy/100) for Δy pixels, down divides.
+    Weight,
 }
 
 /// The value a handle had when the drag started.
@@ -40,6 +43,24 @@ enum Start {
         path: Vec<usize>,
         inverse: [[f64; 3]; 3],
     },
+    /// A control point's weight and where it is in the document.
+    Weight {
+        pointer: String,
+        w: f64,
+    },
+}
+
+/// Where the weight of a control-point handle sits in its object's document, and its
+/// value: `/shape/weights/i` of a NURBS or rational Bézier curve, `/shape/weights/i/j` of
+/// a NURBS net. `None` for handles of shapes without weights.
+pub fn weight_of(scene: &SceneDocument, handle: &Handle) -> Option<(String, f64)> {
+    let pointer = match handle.kind {
+        crate::handles::HandleKind::ControlPoint(i, "control_points") => format!("/shape/weights/{i}"),
+        crate::handles::HandleKind::NetPoint(i, j) => format!("/shape/weights/{i}/{j}"),
+        _ => return None,
+    };
+    let w = scene.objects.get(handle.object)?.to_value().pointer(&pointer)?.as_f64()?;
+    Some((pointer, w))
 }
 
 /// A drag in progress.
@@ -83,7 +104,10 @@ impl Gesture {
         mouse: [f64; 2],
     ) -> Option<Gesture> {
         let (handle_px, depth) = projector.project(handle.position)?;
-        let start = if handle.kind.is_local() {
+        let weight = (kind == GestureKind::Weight).then(|| weight_of(scene, handle)).flatten();
+        let start = if let Some((pointer, w)) = weight {
+            Start::Weight { pointer, w }
+        } else if handle.kind.is_local() {
             Start::Transform(transform_of(scene, handle))
         } else if let Some(path) = handle.kind.point_path() {
             let (rest, inverse) = local_points_of(scene, handle, time)?;
@@ -91,7 +115,12 @@ impl Gesture {
         } else {
             Start::Coordinates(coordinates_of(scene, handle)?)
         };
-        let kind = if handle.kind.is_local() { kind } else { GestureKind::Move(move_axis(kind)) };
+        let kind = match (&start, kind) {
+            (Start::Weight { .. }, _) => GestureKind::Weight,
+            (_, GestureKind::Weight) => GestureKind::Move(None),
+            _ if handle.kind.is_local() => kind,
+            _ => GestureKind::Move(move_axis(kind)),
+        };
         Some(Gesture { handle: handle.clone(), kind, start, start_mouse: mouse, handle_px, depth, group: None })
     }
 
@@ -166,10 +195,16 @@ impl Gesture {
                 GestureKind::Move(axis) => GroupMove::Translate(self.delta(projector, mouse, axis, snap)),
                 GestureKind::Rotate => GroupMove::Rotate { center: *center, axis, angle: self.angle(mouse) },
                 GestureKind::Scale => GroupMove::Scale { center: *center, factor: self.factor(mouse) },
+                // A weight drag changes one handle's weight, never a group's.
+                GestureKind::Weight => GroupMove::Translate([0.0; 3]),
             };
             return group.edit(&map);
         }
         let value = match (&self.start, self.kind) {
+            (Start::Weight { pointer, w }, _) => {
+                let w = w * ((self.start_mouse[1] - mouse[1]) / 100.0).exp();
+                return Ok(Edit::Set { object: self.handle.object, pointer: pointer.clone(), value: Some(w.into()) });
+            }
             (Start::Transform(t), GestureKind::Move(axis)) => {
                 to_json(&translated(t, &self.delta(projector, mouse, axis, snap), dim))
             }
@@ -180,7 +215,7 @@ impl Gesture {
                 let angle = if dim == 2 { angle * axis[2].signum() } else { angle };
                 to_json(&rotated(t, &field, axis, angle, dim, self.handle.origin)?)
             }
-            (Start::Transform(t), GestureKind::Scale) => to_json(&scaled(t, self.factor(mouse))),
+            (Start::Transform(t), GestureKind::Scale | GestureKind::Weight) => to_json(&scaled(t, self.factor(mouse))),
             (Start::Coordinates(c), kind) => {
                 let delta = self.delta(projector, mouse, move_axis(kind), snap);
                 let moved: Vec<f64> =

@@ -39,6 +39,7 @@ pub mod gesture;
 pub mod gpu;
 pub mod handles;
 pub mod history;
+pub mod knot_edit;
 pub mod live_surfaces;
 pub mod live_view;
 pub mod options;

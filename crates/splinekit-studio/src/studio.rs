@@ -17,6 +17,7 @@ use crate::edit::{Edit, EditError};
 use crate::gesture::{Gesture, GestureKind};
 use crate::handles::{Handle, HandleKind, handles_with};
 use crate::history::History;
+use crate::knot_edit::{self, KnotTool};
 use crate::live_surfaces::LiveSurfaces;
 use crate::live_view::{self, Changes, KeptPolyline, Lattice};
 use crate::selection::{GroupMove, GroupStart, Selection, in_box};
@@ -143,6 +144,10 @@ pub struct Studio {
     pub selection: Selection,
     /// What a moved handle snaps to, and the nudge step.
     pub snapping: Snapping,
+    /// What the next click on the selected curve does to its knots (`None`: selects).
+    pub knot_tool: Option<KnotTool>,
+    /// How far a knot removal may move the curve (world units).
+    pub knot_tolerance: f64,
     /// The handle under the cursor.
     pub hovered: Option<Handle>,
     /// The drag in progress.
@@ -185,6 +190,8 @@ impl Studio {
             selected: None,
             selection: Selection::default(),
             snapping: Snapping::default(),
+            knot_tool: None,
+            knot_tolerance: 1e-3,
             hovered: None,
             gesture: None,
             clock: Clock::new(),
@@ -243,6 +250,74 @@ impl Studio {
     pub fn select_object(&mut self, object: Option<usize>) {
         self.selected_object = object.filter(|&i| i < self.scene.objects.len());
         self.clear_selection();
+    }
+
+    /// The selected object when it is a curve the knot edits work on (else a message).
+    fn curve_object(&self) -> Result<usize, String> {
+        let object = self.selected_object.ok_or("select a B-spline, NURBS or Bézier curve first")?;
+        match &self.scene.objects[object].shape {
+            ShapeDocument::Curve(_) => Ok(object),
+            ShapeDocument::Surface(_) => Err("knot edits from the window work on curves".into()),
+        }
+    }
+
+    /// Applies an edit made elsewhere (one undo step), or shows why there is none.
+    fn apply_or_say(&mut self, edit: Result<Edit, String>) {
+        match edit {
+            Ok(edit) => {
+                if self.edit(edit, false) {
+                    self.refresh_selection();
+                }
+            }
+            Err(e) => self.message = Some(e),
+        }
+    }
+
+    /// Arms a knot tool: the next click on the selected curve uses it.
+    fn arm(&mut self, tool: KnotTool) {
+        match self.curve_object() {
+            Ok(_) => {
+                self.knot_tool = Some(tool);
+                self.message = Some(match tool {
+                    KnotTool::Insert => "click on the curve where the knot goes (Escape: cancel)".into(),
+                    KnotTool::Remove => "click on the curve near the knot to remove (Escape: cancel)".into(),
+                });
+            }
+            Err(e) => self.message = Some(e),
+        }
+    }
+
+    /// A click at `mouse` with a knot tool armed: the tool's edit at the clicked parameter
+    /// of the selected curve (one undo step); a click off the curve leaves the tool armed.
+    pub fn knot_click(&mut self, tool: KnotTool, projector: &Projector, mouse: [f64; 2]) {
+        let object = match self.curve_object() {
+            Ok(o) => o,
+            Err(e) => {
+                self.knot_tool = None;
+                self.message = Some(e);
+                return;
+            }
+        };
+        let shape = &self.scene.objects[object].shape;
+        let at = knot_edit::curve_samples(shape, knot_edit::SAMPLES)
+            .map(|samples| knot_edit::parameter_at(&samples, projector, mouse));
+        let u = match at {
+            Ok(Some(u)) => u,
+            Ok(None) => {
+                self.message = Some("click on the curve itself (Escape: cancel)".into());
+                return;
+            }
+            Err(e) => {
+                self.message = Some(e);
+                return;
+            }
+        };
+        let edit = match tool {
+            KnotTool::Insert => knot_edit::insert(shape, object, u),
+            KnotTool::Remove => knot_edit::remove(shape, object, u, self.knot_tolerance),
+        };
+        self.knot_tool = None;
+        self.apply_or_say(edit);
     }
 
     /// Selects no handle.
@@ -357,7 +432,16 @@ impl Studio {
             Action::Home => self.camera.iter_mut().for_each(|c| c.camera = c.home),
             Action::Frame => self.frame_selection(),
             Action::TogglePlay => self.clock.playing = !self.clock.playing,
-            Action::ClearSelection => self.clear_selection(),
+            Action::ClearSelection => {
+                self.knot_tool = None;
+                self.clear_selection();
+            }
+            Action::InsertKnot => self.arm(KnotTool::Insert),
+            Action::RemoveKnot => self.arm(KnotTool::Remove),
+            Action::ElevateDegree => {
+                let edit = self.curve_object().and_then(|o| knot_edit::elevate(&self.scene.objects[o].shape, o));
+                self.apply_or_say(edit);
+            }
             Action::SelectAll => self.select_all(),
             Action::Nudge(axis, steps) => self.nudge(axis, steps),
             Action::AddBeat => match self.selected_object {
@@ -658,7 +742,7 @@ impl Studio {
         let Some(h) = self.pick(projector, mouse) else { return false };
         self.selected_object = Some(h.object);
         let time = self.time();
-        if self.selection.handles.len() > 1 && self.selection.contains(&h) {
+        if self.selection.handles.len() > 1 && self.selection.contains(&h) && kind != GestureKind::Weight {
             let group = self.selection.handles.clone();
             self.gesture = Gesture::start_group(&self.scene, time, projector, &h, &group, kind, mouse);
         } else {

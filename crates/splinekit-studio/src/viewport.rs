@@ -1,7 +1,8 @@
 //! The 3-D view inside the egui layout: shows the rendered texture and turns the mouse and
 //! keys into studio actions. Left drag on a handle moves it (held X/Y/Z: along that axis;
-//! held R: rotates, S: scales about the local origin); left drag elsewhere orbits, middle
-//! or Shift+left drag pans, the wheel zooms; a click selects the handle under the cursor
+//! held R: rotates, S: scales about the local origin; W: changes a control point's
+//! weight); left drag elsewhere orbits, middle or Shift+left drag pans, the wheel zooms; a
+//! click selects the handle under the cursor (with a knot tool armed: edits the knots there)
 //! (Shift+click adds or removes it), Ctrl+drag on empty space selects the handles in a box
 //! (Ctrl+Shift: adds them). A drag of a handle of a selection of several moves them all.
 
@@ -58,7 +59,9 @@ pub fn view(ui: &mut egui::Ui, studio: &mut Studio, input: ViewInput<'_>) -> Vie
 fn gesture_kind(ui: &egui::Ui) -> GestureKind {
     ui.input(|i| {
         let held = |k| i.key_down(k);
-        if held(egui::Key::R) {
+        if held(egui::Key::W) {
+            GestureKind::Weight
+        } else if held(egui::Key::R) {
             GestureKind::Rotate
         } else if held(egui::Key::S) && !i.modifiers.command {
             GestureKind::Scale
@@ -136,8 +139,13 @@ fn mouse(
         studio.end_drag();
     }
     if response.clicked() {
-        let picked = cursor.and_then(|c| studio.pick(projector, c));
-        studio.click(picked, shift);
+        match (studio.knot_tool, cursor) {
+            (Some(tool), Some(c)) => studio.knot_click(tool, projector, c),
+            _ => {
+                let picked = cursor.and_then(|c| studio.pick(projector, c));
+                studio.click(picked, shift);
+            }
+        }
     }
     let scroll = ui.input(|i| i.smooth_scroll_delta.y);
     if response.hovered()
