@@ -59,6 +59,10 @@ pub enum Action {
     RemoveKnot,
     /// Raise the selected curve's degree by one.
     ElevateDegree,
+    /// Show or hide the curvature comb of the curves.
+    ToggleComb,
+    /// Show or hide the continuity at knots and junctions.
+    ToggleContinuity,
 }
 
 /// The menus of the menu bar.
@@ -273,6 +277,24 @@ pub const ACTIONS: &[ActionSpec] = &[
         label: "Play / pause",
         help: "play or pause the animation",
         keys: &[(NONE, Key::Space)],
+        menu: Some(Menu::View),
+        panel: false,
+        undoable: false,
+    },
+    ActionSpec {
+        action: Action::ToggleComb,
+        label: "Curvature comb",
+        help: "show or hide the curvature comb of every curve (its scale in the Analysis panel)",
+        keys: &[(NONE, Key::C)],
+        menu: Some(Menu::View),
+        panel: false,
+        undoable: false,
+    },
+    ActionSpec {
+        action: Action::ToggleContinuity,
+        label: "Continuity",
+        help: "mark G0/G1/G2 at the knots and junctions of curves (numbers in the Analysis panel)",
+        keys: &[(NONE, Key::G)],
         menu: Some(Menu::View),
         panel: false,
         undoable: false,

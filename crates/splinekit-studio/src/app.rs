@@ -13,6 +13,7 @@ use winit::event_loop::ActiveEventLoop;
 use winit::window::{Window, WindowId};
 
 use crate::actions::{Action, pressed};
+use crate::analysis::analysis_panel;
 use crate::command::Command;
 use crate::gpu::Gpu;
 use crate::options::Options;
@@ -172,6 +173,8 @@ impl App {
                 objects_panel(ui, &mut self.studio);
                 ui.separator();
                 snapping_panel(ui, &mut self.studio.snapping);
+                ui.separator();
+                analysis_panel(ui, &mut self.studio.analysis, self.studio.selected_object);
             });
         });
         egui::Panel::right("properties").exact_size(SIDE_WIDTH).resizable(false).show(ui, |ui| {

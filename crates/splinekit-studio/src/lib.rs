@@ -29,6 +29,7 @@
 #![warn(missing_docs)]
 
 pub mod actions;
+pub mod analysis;
 pub mod app;
 pub mod clock;
 pub mod command;

@@ -10,6 +10,7 @@ use splinekit_scene::ShapeDocument;
 use splinekit_scene::scenes::SceneDocument;
 
 use crate::actions::Action;
+use crate::analysis::Analysis;
 use crate::clock::Clock;
 use crate::command::{Command, FieldEdit};
 use crate::document;
@@ -148,6 +149,8 @@ pub struct Studio {
     pub knot_tool: Option<KnotTool>,
     /// How far a knot removal may move the curve (world units).
     pub knot_tolerance: f64,
+    /// The curvature comb and continuity drawn over the view.
+    pub analysis: Analysis,
     /// The handle under the cursor.
     pub hovered: Option<Handle>,
     /// The drag in progress.
@@ -192,6 +195,7 @@ impl Studio {
             snapping: Snapping::default(),
             knot_tool: None,
             knot_tolerance: 1e-3,
+            analysis: Analysis::default(),
             hovered: None,
             gesture: None,
             clock: Clock::new(),
@@ -436,6 +440,8 @@ impl Studio {
                 self.knot_tool = None;
                 self.clear_selection();
             }
+            Action::ToggleComb => self.analysis.comb = !self.analysis.comb,
+            Action::ToggleContinuity => self.analysis.continuity = !self.analysis.continuity,
             Action::InsertKnot => self.arm(KnotTool::Insert),
             Action::RemoveKnot => self.arm(KnotTool::Remove),
             Action::ElevateDegree => {
@@ -582,11 +588,13 @@ impl Studio {
 
     /// The scene as the 3-D view draws it at `size` pixels: composed as `splinekit render`
     /// composes it (during a drag brought up to date in place, [`crate::live_view`]), with
-    /// the view camera (fitted on the first frame); with `overlays`, the handles and the
+    /// the view camera (fitted on the first frame), the analysis asked for (comb,
+    /// continuity, [`Analysis`]); with `overlays`, the handles and the
     /// selected local Bézier's net, the hovered and selected handles drawn larger. The
     /// changes since the last call come with it.
     pub fn view_scene(&mut self, size: (u32, u32), overlays: bool) -> Result<ViewScene<'_>, String> {
         let aspect = size.0.max(1) as f32 / size.1.max(1) as f32;
+        let time = self.time();
         self.compose(aspect)?;
         self.follow_handles();
         let Some(cache) = self.cache.as_ref() else { return Err("nothing composed".into()) };
@@ -604,6 +612,7 @@ impl Studio {
             painter_order: rs.painter_order,
             ..Default::default()
         };
+        self.analysis.overlay(&self.scene, time, &mut overlay);
         if overlays {
             overlay_handles(
                 &self.handles,
