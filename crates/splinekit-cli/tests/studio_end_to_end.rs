@@ -503,7 +503,8 @@ fn plane_curve(dir: &Path, name: &str, weights: Option<Value>) -> PathBuf {
         shape["type"] = "nurbs".into();
         shape["weights"] = w;
     }
-    let scene = serde_json::json!({"type": "scene", "objects": [{"shape": shape, "control_net": true}], "size": [600, 600]});
+    let scene =
+        serde_json::json!({"type": "scene", "objects": [{"shape": shape, "control_net": true}], "size": [600, 600]});
     let doc = dir.join(name);
     std::fs::write(&doc, scene.to_string()).expect("written");
     doc
@@ -540,7 +541,10 @@ fn samples(shape: &ShapeDocument, n: usize) -> Vec<(f64, [f64; 2])> {
         type Output = Vec<(f64, [f64; 2])>;
         fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Self::Output {
             let d = c.domain();
-            (0..=self.0).map(|i| d.lerp(i as f64 / self.0 as f64)).map(|t| (t, [c.point(t)[0], c.point(t)[1]])).collect()
+            (0..=self.0)
+                .map(|i| d.lerp(i as f64 / self.0 as f64))
+                .map(|t| (t, [c.point(t)[0], c.point(t)[1]]))
+                .collect()
         }
     }
     let ShapeDocument::Curve(c) = shape else { panic!("a curve") };
@@ -610,7 +614,10 @@ fn three_boxed_points_move_together() {
     let child = studio(&doc, &dir, "report.json", &[]);
     let (report, window) = focused_window(&dir.join("report.json"));
     let ps: Vec<(f64, f64)> = (1..=3).map(|i| control_point(&report, i)).collect();
-    let lo = (ps.iter().map(|p| p.0).fold(f64::INFINITY, f64::min) - 12.0, ps.iter().map(|p| p.1).fold(f64::INFINITY, f64::min) - 12.0);
+    let lo = (
+        ps.iter().map(|p| p.0).fold(f64::INFINITY, f64::min) - 12.0,
+        ps.iter().map(|p| p.1).fold(f64::INFINITY, f64::min) - 12.0,
+    );
     let hi = (ps.iter().map(|p| p.0).fold(0.0, f64::max) + 12.0, ps.iter().map(|p| p.1).fold(0.0, f64::max) + 12.0);
     drag(&window, |f| (lo.0 + f * (hi.0 - lo.0), lo.1 + f * (hi.1 - lo.1)), 6, Some("ctrl"));
     let from = ps[1];
@@ -620,12 +627,16 @@ fn three_boxed_points_move_together() {
     let saved = wait_for_json(&doc, moved, "the saved document with moved points");
     xdotool(&["key", "ctrl+q"]);
     wait(child, "the studio");
-    let pts: Vec<[f64; 2]> = serde_json::from_value(saved["objects"][0]["shape"]["control_points"].clone()).expect("points");
+    let pts: Vec<[f64; 2]> =
+        serde_json::from_value(saved["objects"][0]["shape"]["control_points"].clone()).expect("points");
     let start = [[0.0, 0.0], [1.0, 2.0], [2.0, -1.0], [3.0, 2.0], [4.0, -0.5], [5.0, 1.0]];
     let d = [pts[2][0] - start[2][0], pts[2][1] - start[2][1]];
     assert!(d[0] > 0.1 && d[1] > 0.1, "moved right and up: {d:?}");
     for i in 1..=3 {
-        assert!((pts[i][0] - start[i][0] - d[0]).abs() < 1e-9 && (pts[i][1] - start[i][1] - d[1]).abs() < 1e-9, "point {i}");
+        assert!(
+            (pts[i][0] - start[i][0] - d[0]).abs() < 1e-9 && (pts[i][1] - start[i][1] - d[1]).abs() < 1e-9,
+            "point {i}"
+        );
     }
     assert_eq!((pts[0], pts[4], pts[5]), (start[0], start[4], start[5]), "the others stay");
     std::fs::remove_dir_all(&dir).ok();
@@ -653,7 +664,8 @@ fn the_curvature_comb_is_toggled_with_c() {
     assert!(status.expect("render runs").success());
     let read = |p: &Path| Image::from_png(&std::fs::read(p).expect("written")).expect("a PNG");
     let (window, headless) = (read(&view), read(&render));
-    let purple = |img: &Image| img.rgba.chunks(4).filter(|p| p[0] > 100 && p[0] < 190 && p[1] < 90 && p[2] > 150).count();
+    let purple =
+        |img: &Image| img.rgba.chunks(4).filter(|p| p[0] > 100 && p[0] < 190 && p[1] < 90 && p[2] > 150).count();
     assert!(purple(&window) > 500, "the comb is drawn: {} purple pixels", purple(&window));
     assert_eq!(purple(&headless), 0);
     if let Ok(out) = std::env::var("STUDIO_E2E_KEEP") {

@@ -38,7 +38,8 @@ pub struct StyleDoc {
     /// Blending splines: draw the local curves or patches in their own colours.
     #[serde(default)]
     pub local_pieces: bool,
-    /// Surfaces: colour by `gaussian` or `mean` curvature, or by the `u` or `v` parameter.
+    /// Surfaces: colour by `gaussian` or `mean` curvature, by the `u` or `v` parameter,
+    /// or show `zebra` stripes or `isophotes` (reflection lines to read continuity from).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub color_map: Option<ColorMapDoc>,
     /// Grid cells per direction for surfaces, segments for curves (default: adaptive
@@ -96,12 +97,46 @@ impl Default for StyleDoc {
 /// Colour maps for surfaces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
-#[allow(missing_docs)]
 pub enum ColorMapDoc {
+    /// Gaussian curvature (blue negative, white zero, red positive).
     Gaussian,
+    /// Mean curvature.
     Mean,
+    /// The u parameter.
     U,
+    /// The v parameter.
     V,
+    /// Black and white stripes of the angle of the normal from the yz-plane, 15° each: the
+    /// reflection of parallel light bars; kinks in the stripes show tangent (G1) breaks,
+    /// sudden turns curvature (G2) breaks.
+    Zebra,
+    /// Thin dark lines where N·L is a multiple of 0.1 for a fixed light L ∝ (1, 1, 2), on the
+    /// shape's colour.
+    Isophotes,
+}
+
+impl ColorMapDoc {
+    /// Every colour map, in the order the studio offers them.
+    pub const ALL: [ColorMapDoc; 6] = [
+        ColorMapDoc::Gaussian,
+        ColorMapDoc::Mean,
+        ColorMapDoc::U,
+        ColorMapDoc::V,
+        ColorMapDoc::Zebra,
+        ColorMapDoc::Isophotes,
+    ];
+
+    /// The name in documents.
+    pub fn name(self) -> &'static str {
+        match self {
+            ColorMapDoc::Gaussian => "gaussian",
+            ColorMapDoc::Mean => "mean",
+            ColorMapDoc::U => "u",
+            ColorMapDoc::V => "v",
+            ColorMapDoc::Zebra => "zebra",
+            ColorMapDoc::Isophotes => "isophotes",
+        }
+    }
 }
 
 /// One object of a scene: `{"shape": {…}, "points": [[x, y, z], …], …style…}`.

@@ -120,10 +120,8 @@ fn comb_of<const D: usize>(c: &dyn Curve<D>, scale: f64) -> (Vec<([f64; 3], [f64
 fn diagonal(points: impl Iterator<Item = [f64; 3]>) -> f64 {
     let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     for p in points {
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
+        lo = [0, 1, 2].map(|k| lo[k].min(p[k]));
+        hi = [0, 1, 2].map(|k| hi[k].max(p[k]));
     }
     (0..3).map(|k| (hi[k] - lo[k]).max(0.0).powi(2)).sum::<f64>().sqrt()
 }

@@ -66,10 +66,8 @@ impl Snapping {
             }
         }
         if self.grid {
-            for i in 0..dimension.min(3) {
-                if free[i] {
-                    q[i] = round_to(q[i], self.step);
-                }
+            for (x, _) in q.iter_mut().zip(free).take(dimension.min(3)).filter(|(_, f)| *f) {
+                *x = round_to(*x, self.step);
             }
         }
         q

@@ -8,6 +8,7 @@
 use serde_json::{Value, json};
 use splinekit::curve::Curve;
 use splinekit_scene::bfunctions::BFunctionDoc;
+use splinekit_scene::scenes::ColorMapDoc;
 use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument};
 
 use super::fields::{count, error_label, number, read, toggle, write};
@@ -33,6 +34,9 @@ pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
     ui.label(format!("objects[{object}]: {ty}"));
     ui.separator();
     style(ui, studio, object);
+    if matches!(studio.scene.objects[object].shape, ShapeDocument::Surface(_)) {
+        color_map(ui, studio, object);
+    }
     ui.separator();
     match ty.as_str() {
         "bspline" | "nurbs" => {
@@ -76,6 +80,25 @@ fn knot_edits(ui: &mut egui::Ui, studio: &mut Studio) {
         ui.add(egui::DragValue::new(&mut studio.knot_tolerance).range(0.0..=1e6).speed(1e-4).max_decimals(6))
             .labelled_by(name.id);
     });
+}
+
+/// The colour map of a surface: none, curvature, parameter, zebra stripes or isophotes.
+fn color_map(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
+    let current = studio.scene.objects[object].style.color_map;
+    let mut chosen = current;
+    let combo = egui::ComboBox::from_label("colour map")
+        .selected_text(current.map_or("none", ColorMapDoc::name))
+        .show_ui(ui, |ui| {
+            ui.selectable_value(&mut chosen, None, "none");
+            for m in ColorMapDoc::ALL {
+                ui.selectable_value(&mut chosen, Some(m), m.name());
+            }
+        });
+    studio.widgets.push(("colour map".into(), super::rect(&combo.response)));
+    if chosen != current {
+        write(studio, object, "/color_map", chosen.map(|m| m.name().into()));
+    }
+    error_label(ui, studio, "/color_map");
 }
 
 fn style(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
