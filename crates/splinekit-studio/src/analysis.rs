@@ -70,6 +70,9 @@ impl Junction {
     }
 }
 
+/// Comb teeth: (foot on the curve, tip).
+type Teeth = Vec<([f64; 3], [f64; 3])>;
+
 fn to3<const D: usize>(p: &Point<D>) -> [f64; 3] {
     [0, 1, 2].map(|k| if k < D { p[k] } else { 0.0 })
 }
@@ -100,7 +103,7 @@ fn junction<const D: usize>(c: &dyn Curve<D>, t: f64, size: f64) -> Junction {
 
 /// Comb teeth (foot, tip) of `c` with tips at −κN·length, and the curve's size (the
 /// diagonal of its samples' box).
-fn comb_of<const D: usize>(c: &dyn Curve<D>, scale: f64) -> (Vec<([f64; 3], [f64; 3])>, f64) {
+fn comb_of<const D: usize>(c: &dyn Curve<D>, scale: f64) -> (Teeth, f64) {
     let domain = c.domain();
     let mut out = [Point::<D>::zeros(); 3];
     let samples: Vec<([f64; 3], Point<D>)> = (0..=COMB_TEETH)
@@ -155,10 +158,10 @@ fn junction_parameters(doc: &CurveDocument) -> Vec<f64> {
 }
 
 /// The comb (teeth) and the junctions of one curve document posed as built.
-fn analyse(doc: &CurveDocument, comb_scale: Option<f64>) -> (Vec<([f64; 3], [f64; 3])>, Vec<Junction>) {
+fn analyse(doc: &CurveDocument, comb_scale: Option<f64>) -> (Teeth, Vec<Junction>) {
     struct Analyse<'a>(Option<f64>, &'a [f64]);
     impl DimensionVisitor<Curves> for Analyse<'_> {
-        type Output = (Vec<([f64; 3], [f64; 3])>, Vec<Junction>);
+        type Output = (Teeth, Vec<Junction>);
         fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Self::Output {
             let (teeth, size) = comb_of(c, self.0.unwrap_or(0.0));
             let junctions = self.1.iter().map(|&t| junction(c, t, size)).collect();
