@@ -31,18 +31,32 @@ def xdotool(*args):
     return subprocess.run(["xdotool", *args], check=True, capture_output=True, text=True).stdout.strip()
 
 
-def wait_for(path, ready, what, timeout=120):
-    start = time.time()
+def wait_for(path, ready, timeout):
+    """The report at `path` once `ready` accepts it, or None after `timeout` seconds; the
+    last report read comes back too (to say what the window did show)."""
+    start, last = time.time(), None
     while time.time() - start < timeout:
         try:
             with open(path) as f:
-                v = json.load(f)
-            if ready(v):
-                return v
+                last = json.load(f)
+            if ready(last):
+                return last, last
         except (OSError, ValueError):
             pass
         time.sleep(0.1)
-    sys.exit(f"timed out waiting for {what}")
+    return None, last
+
+
+def shown(report):
+    """The handles a report lists, as `kind index` (kinds with their index ranges)."""
+    if report is None:
+        return "no handle report at all (the window did not draw a frame)"
+    kinds = {}
+    for h in report.get("handles", []):
+        kinds.setdefault(h["kind"], []).append(h["index"])
+    if not kinds:
+        return "no handles (is the object drawn with local_pieces or control_net?)"
+    return "; ".join(f"{k}: {len(v)} handles, first {v[0]}, last {v[-1]}" for k, v in kinds.items())
 
 
 def main():
@@ -57,9 +71,17 @@ def main():
     def find(v):
         return next((h for h in v.get("handles", []) if h["kind"] == kind and h["index"] == want), None)
 
-    h = find(wait_for(report, find, f"{kind} {index}"))
-    time.sleep(2.0)
-    h = find(wait_for(report, find, f"{kind} {index}"))
+    timeout = float(os.environ.get("HANDLE_TIMEOUT", "60"))
+    found, last = wait_for(report, find, timeout)
+    if found is not None:
+        time.sleep(2.0)
+        found, last = wait_for(report, find, timeout)
+    if found is None:
+        child.kill()
+        child.wait()
+        sys.exit(f"gave up after {timeout:.0f} s: the window shows no handle {kind} {sys.argv[3]} of {doc}; "
+                 f"it shows {shown(last)}")
+    h = find(found)
     window = xdotool("search", "--sync", "--name", "splinekit studio").splitlines()[0]
     xdotool("windowfocus", "--sync", window)
     x0, y0 = h["x"], h["y"]

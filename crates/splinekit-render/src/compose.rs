@@ -55,7 +55,7 @@ pub fn compose_with<'a>(
     surfaces: &SurfaceFor<'a>,
 ) -> Result<RenderScene, DocumentError> {
     let mut out = RenderScene {
-        background: [scene.background[0], scene.background[1], scene.background[2], 1.0],
+        background: [scene.background[0] as f32, scene.background[1] as f32, scene.background[2] as f32, 1.0],
         ..Default::default()
     };
     for i in 0..scene.objects.len() {
@@ -122,13 +122,12 @@ fn compose_object(
     out: &mut RenderScene,
 ) -> Result<ObjectItems, DocumentError> {
     let obj = &scene.objects[index];
-    let color = obj
-        .style
-        .color
-        .as_ref()
-        .map_or(PALETTE[index % PALETTE.len()], |c| [c[0], c[1], c[2], *c.get(3).unwrap_or(&1.0)]);
+    let color =
+        obj.style.color.as_ref().map_or(PALETTE[index % PALETTE.len()], |c| {
+            [c[0], c[1], c[2], *c.get(3).unwrap_or(&1.0)].map(|x| x as f32)
+        });
     let color = match time {
-        Some(t) if obj.style.color_cycle => hue_turned(color, (t / scene.animation.duration) as f32),
+        Some(t) if obj.style.color_cycle => hue_turned(color, (t / scene.clock().duration) as f32),
         _ => color,
     };
     let start = (out.meshes.len(), out.lines.len(), out.points.len());
@@ -325,7 +324,7 @@ impl DimensionVisitor<Curves> for CurveLine<'_> {
             None => Polyline::adaptive_with_limit(c, curve_tolerance(c)?, CURVE_POINTS)?,
         };
         let points = polyline_points(&poly.params, &poly.points);
-        Ok(LineItem { points, closed: poly.closed, color: self.color, width: self.obj.style.line_width })
+        Ok(LineItem { points, closed: poly.closed, color: self.color, width: self.obj.style.line_width as f32 })
     }
 }
 
@@ -382,7 +381,7 @@ pub fn local_curve_items<const D: usize>(
             f32x3(to3(&v[0]))
         })
         .collect();
-    let line = LineItem { points: pts, closed: false, color: local_color(k, n), width: style.line_width * 0.6 };
+    let line = LineItem { points: pts, closed: false, color: local_color(k, n), width: style.line_width as f32 * 0.6 };
     let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
     (line, PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 })
 }
@@ -447,18 +446,27 @@ impl DimensionVisitor<Surfaces> for SurfaceMesh<'_> {
                 let values: Vec<f64> = mesh
                     .uvs
                     .iter()
-                    .map(|t| {
+                    .zip(&mesh.normals)
+                    .map(|(t, n)| {
                         let (u, v) = (du.lerp(t[0]), dv.lerp(t[1]));
+                        let n = *n;
                         match map {
                             ColorMapDoc::U => t[0],
                             ColorMapDoc::V => t[1],
                             ColorMapDoc::Gaussian => s.curvatures(u, v).map_or(0.0, |c| c.gaussian),
                             ColorMapDoc::Mean => s.curvatures(u, v).map_or(0.0, |c| c.mean),
+                            ColorMapDoc::Zebra => n[0].clamp(-1.0, 1.0).asin(),
+                            ColorMapDoc::Isophotes => {
+                                let l = [1.0, 1.0, 2.0].map(|x: f64| x / 6f64.sqrt());
+                                n[0] * l[0] + n[1] * l[1] + n[2] * l[2]
+                            }
                         }
                     })
                     .collect();
                 match map {
                     ColorMapDoc::U | ColorMapDoc::V => values.iter().map(|&x| sequential(x as f32)).collect(),
+                    ColorMapDoc::Zebra => values.iter().map(|&a| zebra(a)).collect(),
+                    ColorMapDoc::Isophotes => values.iter().map(|&x| isophote(x, self.color)).collect(),
                     _ => {
                         // Symmetric range at the 95th percentile of |value|: blue < 0 < red.
                         let mut mags: Vec<f64> = values.iter().map(|x| x.abs()).filter(|x| x.is_finite()).collect();
@@ -532,6 +540,23 @@ fn hue_turned(c: [f32; 4], turns: f32) -> [f32; 4] {
 }
 
 /// Blue (−1) – white (0) – red (+1).
+/// Zebra stripes of the normal's angle `a` (radians) from the yz-plane: white and black,
+/// 15° each (white from 0° to 15°), a clipped sine so that colours interpolated between
+/// vertices keep the stripes' edges smooth.
+fn zebra(a: f64) -> [f32; 4] {
+    let s = (std::f64::consts::PI * a / 15f64.to_radians()).sin();
+    let g = (0.5 + 0.5 * (2.5 * s).clamp(-1.0, 1.0)) as f32;
+    let g = 0.05 + 0.9 * g;
+    [g, g, g, 1.0]
+}
+
+/// The shape's colour with a dark line where N·L (`x`) is within 0.012 of a multiple of 0.1.
+fn isophote(x: f64, color: [f32; 4]) -> [f32; 4] {
+    let step = 0.1;
+    let off = (x / step - (x / step).round()).abs() * step;
+    if off < 0.012 { [0.05, 0.05, 0.05, 1.0] } else { color }
+}
+
 fn diverging(x: f32) -> [f32; 4] {
     let x = x.clamp(-1.0, 1.0);
     if x < 0.0 {
@@ -554,7 +579,24 @@ fn sequential(x: f32) -> [f32; 4] {
 
 #[cfg(test)]
 mod tests {
-    use super::hue_turned;
+    use super::{hue_turned, isophote, zebra};
+
+    #[test]
+    fn zebra_stripes_and_isophotes_follow_the_normal() {
+        let (white, black) = (zebra(7.5f64.to_radians()), zebra(-7.5f64.to_radians()));
+        assert_eq!((white[0], black[0]), (0.95, 0.05), "stripes change at 0°");
+        assert_eq!(zebra(22.5f64.to_radians()), black, "15° to 30°: the next stripe");
+        let c = [0.2, 0.4, 0.8, 1.0];
+        assert_eq!(isophote(0.3001, c), [0.05, 0.05, 0.05, 1.0]);
+        assert_eq!(isophote(0.35, c), c);
+        // A sphere in zebra: both stripes, a vertex colour each.
+        let doc = r#"{"type": "scene", "objects": [{"shape": {"type": "sphere"}, "color_map": "zebra"}]}"#;
+        let scene = splinekit_scene::SceneOrShape::from_json(doc).expect("valid").into_scene();
+        let rs = super::compose(&scene, None, 1.0).expect("composes");
+        let colors = &rs.meshes[0].colors;
+        assert_eq!(colors.len(), rs.meshes[0].positions.len());
+        assert!(colors.iter().any(|c| c[0] > 0.9) && colors.iter().any(|c| c[0] < 0.1), "both stripes");
+    }
 
     #[test]
     fn a_third_of_a_turn_takes_red_to_green_and_a_whole_turn_back() {

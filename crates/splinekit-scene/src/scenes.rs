@@ -15,7 +15,7 @@ use crate::ShapeDocument;
 use crate::error::{DocumentError, Result};
 use crate::json::{fields, kind, nested, split_type};
 
-fn default_line_width() -> f32 {
+fn default_line_width() -> f64 {
     2.5
 }
 
@@ -25,10 +25,10 @@ fn default_line_width() -> f32 {
 pub struct StyleDoc {
     /// sRGB colour [r, g, b] or [r, g, b, a] in [0, 1] (default: from a palette by index).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub color: Option<Vec<f32>>,
+    pub color: Option<Vec<f64>>,
     /// Width of curves in pixels (default 2.5).
     #[serde(default = "default_line_width")]
-    pub line_width: f32,
+    pub line_width: f64,
     /// Surfaces: draw parameter lines over the shading.
     #[serde(default)]
     pub wireframe: bool,
@@ -38,7 +38,8 @@ pub struct StyleDoc {
     /// Blending splines: draw the local curves or patches in their own colours.
     #[serde(default)]
     pub local_pieces: bool,
-    /// Surfaces: colour by `gaussian` or `mean` curvature, or by the `u` or `v` parameter.
+    /// Surfaces: colour by `gaussian` or `mean` curvature, by the `u` or `v` parameter,
+    /// or show `zebra` stripes or `isophotes` (reflection lines to read continuity from).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub color_map: Option<ColorMapDoc>,
     /// Grid cells per direction for surfaces, segments for curves (default: adaptive
@@ -96,12 +97,46 @@ impl Default for StyleDoc {
 /// Colour maps for surfaces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
-#[allow(missing_docs)]
 pub enum ColorMapDoc {
+    /// Gaussian curvature (blue negative, white zero, red positive).
     Gaussian,
+    /// Mean curvature.
     Mean,
+    /// The u parameter.
     U,
+    /// The v parameter.
     V,
+    /// Black and white stripes of the angle of the normal from the yz-plane, 15° each: the
+    /// reflection of parallel light bars; kinks in the stripes show tangent (G1) breaks,
+    /// sudden turns curvature (G2) breaks.
+    Zebra,
+    /// Thin dark lines where N·L is a multiple of 0.1 for a fixed light L ∝ (1, 1, 2), on the
+    /// shape's colour.
+    Isophotes,
+}
+
+impl ColorMapDoc {
+    /// Every colour map, in the order the studio offers them.
+    pub const ALL: [ColorMapDoc; 6] = [
+        ColorMapDoc::Gaussian,
+        ColorMapDoc::Mean,
+        ColorMapDoc::U,
+        ColorMapDoc::V,
+        ColorMapDoc::Zebra,
+        ColorMapDoc::Isophotes,
+    ];
+
+    /// The name in documents.
+    pub fn name(self) -> &'static str {
+        match self {
+            ColorMapDoc::Gaussian => "gaussian",
+            ColorMapDoc::Mean => "mean",
+            ColorMapDoc::U => "u",
+            ColorMapDoc::V => "v",
+            ColorMapDoc::Zebra => "zebra",
+            ColorMapDoc::Isophotes => "isophotes",
+        }
+    }
 }
 
 /// One object of a scene: `{"shape": {…}, "points": [[x, y, z], …], …style…}`.
@@ -231,7 +266,7 @@ fn seven_tenths() -> f64 {
 }
 
 /// The animation clock of a scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct AnimationDoc {
     /// Length in seconds (default 1).
@@ -271,32 +306,34 @@ pub struct SceneDocument {
     pub lights: Vec<LightDoc>,
     /// Background sRGB colour (default white).
     #[serde(default = "white", deserialize_with = "white_if_null")]
-    pub background: [f32; 3],
+    pub background: [f64; 3],
     /// Image size in pixels (default 800×600).
     #[serde(default = "default_size", deserialize_with = "default_size_if_null")]
     pub size: [u32; 2],
     /// Draw x, y, z axes.
     #[serde(default)]
     pub axes: bool,
-    /// The animation clock (default 1 s at 20 fps).
-    #[serde(default, deserialize_with = "default_animation_if_null")]
-    pub animation: AnimationDoc,
+    /// The animation clock as the document gives it (`None`: none given, the default
+    /// clock of [`SceneDocument::clock`]; kept apart so that writing the scene back adds
+    /// no block the document did not have).
+    #[serde(default, deserialize_with = "animation_or_null")]
+    pub animation: Option<AnimationDoc>,
 }
 
-fn white() -> [f32; 3] {
+fn white() -> [f64; 3] {
     [1.0, 1.0, 1.0]
 }
 fn default_size() -> [u32; 2] {
     [800, 600]
 }
-fn white_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<[f32; 3], D::Error> {
+fn white_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<[f64; 3], D::Error> {
     Ok(Option::deserialize(d)?.unwrap_or_else(white))
 }
 fn default_size_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<[u32; 2], D::Error> {
     Ok(Option::deserialize(d)?.unwrap_or_else(default_size))
 }
-fn default_animation_if_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<AnimationDoc, D::Error> {
-    Ok(Option::deserialize(d)?.unwrap_or_default())
+fn animation_or_null<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<Option<AnimationDoc>, D::Error> {
+    Option::deserialize(d)
 }
 
 /// Largest image side of a scene.
@@ -351,7 +388,7 @@ impl SceneDocument {
         if background.iter().any(|c| !(0.0..=1.0).contains(c)) {
             return Err(DocumentError::new("background", format!("colours are in [0, 1], got {background:?}")));
         }
-        let a = &self.animation;
+        let a = self.clock();
         if !(a.duration > 0.0 && a.duration <= 600.0 && a.fps > 0.0 && a.fps <= 100.0) {
             return Err(DocumentError::new(
                 "animation",
@@ -384,7 +421,7 @@ impl SceneDocument {
             background: white(),
             size: default_size(),
             axes: false,
-            animation: AnimationDoc::default(),
+            animation: None,
         }
     }
 
@@ -406,8 +443,15 @@ impl SceneDocument {
         if self.axes {
             doc.insert("axes".into(), true.into());
         }
-        doc.insert("animation".into(), serde_json::to_value(&self.animation).unwrap_or(Value::Null));
+        if let Some(a) = &self.animation {
+            doc.insert("animation".into(), serde_json::to_value(a).unwrap_or(Value::Null));
+        }
         Value::Object(doc)
+    }
+
+    /// The animation clock: the document's, else 1 s at 20 fps.
+    pub fn clock(&self) -> AnimationDoc {
+        self.animation.unwrap_or_default()
     }
 
     /// Whether any object carries an animation.

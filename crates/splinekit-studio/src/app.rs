@@ -12,11 +12,14 @@ use winit::event::WindowEvent;
 use winit::event_loop::ActiveEventLoop;
 use winit::window::{Window, WindowId};
 
+use crate::actions::{Action, pressed};
+use crate::analysis::analysis_panel;
+use crate::command::Command;
 use crate::gpu::Gpu;
-use crate::keys::{Command, shortcuts};
 use crate::options::Options;
-use crate::panels::{FileFields, MenuAction, SIDE_WIDTH, animation_panel, menu_bar, objects_panel, properties_panel};
+use crate::panels::{FileFields, SIDE_WIDTH, animation_panel, help_overlay, menu_bar, objects_panel, properties_panel};
 use crate::report::{handle_report, widget_report};
+use crate::snapping::snapping_panel;
 use crate::studio::Studio;
 use crate::view_camera::Projector;
 use crate::viewport::{ViewFrame, ViewInput, view};
@@ -35,6 +38,8 @@ pub struct App {
     frames: usize,
     /// Frame-time overlay on, and the last frame's timings (ms): whole frame, scene.
     overlay: bool,
+    /// The help overlay (`?`) shown.
+    help: bool,
     timings: (f64, f64),
     last_frame: Instant,
     files: FileFields,
@@ -66,6 +71,7 @@ impl App {
             view: ViewFrame::default(),
             frames: 0,
             overlay: false,
+            help: false,
             timings: (0.0, 0.0),
             last_frame: Instant::now(),
             files,
@@ -95,7 +101,7 @@ impl App {
     fn redraw(&mut self, event_loop: &ActiveEventLoop) {
         let (Some(window), Some(_)) = (self.window.clone(), self.gpu.as_ref()) else { return };
         let start = Instant::now();
-        self.studio.clock.tick(self.studio.scene.animation.duration);
+        self.studio.clock.tick(self.studio.scene.clock().duration);
         let raw = match self.egui_state.as_mut() {
             Some(s) => s.take_egui_input(&window),
             None => return,
@@ -107,7 +113,10 @@ impl App {
             s.handle_platform_output(&window, output.platform_output.clone());
         }
         for c in commands {
-            self.command(c);
+            self.studio.queue(c);
+        }
+        for action in self.studio.run_commands() {
+            self.window_action(action);
         }
         let scene_start = Instant::now();
         if let Err(e) = self.draw_view() {
@@ -148,19 +157,25 @@ impl App {
 
     /// The panels around the view; returns the commands asked for by menu and keys.
     fn panels(&mut self, ui: &mut egui::Ui) -> Vec<Command> {
-        let mut out: Vec<Command> = shortcuts(ui.ctx());
+        let mut out: Vec<Command> = pressed(ui.ctx()).into_iter().map(Command::Action).collect();
         egui::Panel::top("menu").show(ui, |ui| {
-            if let Some(a) = menu_bar(ui, &mut self.files, &mut self.overlay) {
-                out.push(Command::Menu(a));
-            }
+            let on = [(Action::FrameTimes, self.overlay), (Action::Help, self.help)];
+            out.extend(menu_bar(ui, &mut self.files, &on));
         });
+        help_overlay(ui.ctx(), &mut self.help);
         egui::Panel::bottom("status").exact_size(56.0).resizable(false).show(ui, |ui| {
             animation_panel(ui, &mut self.studio);
             let text = self.studio.message.clone().unwrap_or_else(|| "ready".into());
             ui.label(text);
         });
         egui::Panel::left("objects").exact_size(SIDE_WIDTH).resizable(false).show(ui, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| objects_panel(ui, &mut self.studio));
+            egui::ScrollArea::vertical().show(ui, |ui| {
+                objects_panel(ui, &mut self.studio);
+                ui.separator();
+                snapping_panel(ui, &mut self.studio.snapping);
+                ui.separator();
+                analysis_panel(ui, &mut self.studio.analysis, self.studio.selected_object);
+            });
         });
         egui::Panel::right("properties").exact_size(SIDE_WIDTH).resizable(false).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| properties_panel(ui, &mut self.studio));
@@ -245,25 +260,20 @@ impl App {
         Ok(())
     }
 
-    /// Carries out a command of the menu or the keyboard.
-    fn command(&mut self, command: Command) {
-        let studio = &mut self.studio;
-        match command {
-            Command::Menu(MenuAction::Open(path)) => studio.open(PathBuf::from(path)),
-            Command::Menu(MenuAction::Save) => studio.save(),
-            Command::Menu(MenuAction::Export(path)) => studio.export_selected(&PathBuf::from(path)),
-            Command::Menu(MenuAction::Undo) => studio.undo(),
-            Command::Menu(MenuAction::Redo) => studio.redo(),
-            Command::Menu(MenuAction::Look(v)) => studio.camera.iter_mut().for_each(|c| c.look_from(v)),
-            Command::Menu(MenuAction::Home) => studio.camera.iter_mut().for_each(|c| c.camera = c.home),
-            Command::Menu(MenuAction::Frame) => studio.frame_selection(),
-            Command::Menu(MenuAction::Screenshot) => {
+    /// Carries out an action only the window can (the studio runs the others).
+    fn window_action(&mut self, action: Action) {
+        match action {
+            Action::Screenshot => {
                 let done = self.screenshot();
                 self.studio.message = Some(done.map_or_else(|e| e, |p| format!("screenshot {}", p.display())));
             }
             // Closed after this frame is painted, so that its screenshots show it.
-            Command::Menu(MenuAction::Quit) | Command::Quit => self.quitting = true,
-            Command::TogglePlay => studio.clock.playing = !studio.clock.playing,
+            Action::Quit => self.quitting = true,
+            Action::FrameTimes => self.overlay = !self.overlay,
+            Action::Help => self.help = !self.help,
+            other => {
+                self.studio.run_action(other);
+            }
         }
     }
 }

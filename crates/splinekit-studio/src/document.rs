@@ -33,3 +33,41 @@ pub fn write(scene: &SceneDocument, path: &Path) -> Result<(), String> {
 pub fn save_path(opened: Option<&Path>) -> PathBuf {
     opened.map_or_else(|| PathBuf::from("studio.json"), Path::to_path_buf)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::{Value, json};
+
+    /// A document with numbers that f32 cannot hold (0.9, 0.1, 0.95), saved and read back:
+    /// the saved file holds the same numbers, no `animation` block, and saving again
+    /// writes the same bytes.
+    #[test]
+    fn saving_keeps_the_numbers_given_and_adds_no_animation() {
+        let text = r#"{"type": "scene", "objects": [{"shape": {"type": "bspline", "degree": 2,
+            "knots": [0, 0, 0, 0.1, 1, 1, 1], "control_points": [[0, 0], [0.3, 0.7], [1.1, 0.9], [2, 0]]},
+            "color": [0.9, 0.25, 0.55, 0.7], "line_width": 2.1, "control_net": true}],
+            "background": [0.95, 0.9, 0.85], "size": [640, 480]}"#;
+        let dir = std::env::temp_dir().join(format!("splinekit-studio-save-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("a temporary directory");
+        let (first, second) = (dir.join("first.json"), dir.join("second.json"));
+        write(&parse(text).expect("valid"), &first).expect("saved");
+        let saved: Value = serde_json::from_str(&std::fs::read_to_string(&first).expect("read")).expect("JSON");
+        let object = &saved["objects"][0];
+        assert_eq!(object["color"], json!([0.9, 0.25, 0.55, 0.7]));
+        assert_eq!(object["line_width"], json!(2.1));
+        assert_eq!(object["shape"]["knots"][3], json!(0.1));
+        assert_eq!(object["shape"]["control_points"][1], json!([0.3, 0.7]));
+        assert_eq!(saved["background"], json!([0.95, 0.9, 0.85]));
+        assert!(saved.get("animation").is_none(), "{saved}");
+        write(&read(&first).expect("reads back"), &second).expect("saved again");
+        let bytes = |p: &Path| std::fs::read(p).expect("read");
+        assert_eq!(bytes(&first), bytes(&second));
+        // A document that has a clock keeps it.
+        let clocked = text.replacen(r#""size""#, r#""animation": {"duration": 2.5, "fps": 24}, "size""#, 1);
+        write(&parse(&clocked).expect("valid"), &first).expect("saved");
+        let saved: Value = serde_json::from_str(&std::fs::read_to_string(&first).expect("read")).expect("JSON");
+        assert_eq!(saved["animation"], json!({"duration": 2.5, "fps": 24.0}));
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}

@@ -33,6 +33,8 @@ pub enum Edit {
         /// Which object.
         index: usize,
     },
+    /// Several edits as one (a selection moved together): applied in order, all or none.
+    Batch(Vec<Edit>),
 }
 
 /// Why an edit was refused (the document is unchanged).
@@ -87,12 +89,34 @@ impl Edit {
                 let object = Box::new(scene.objects.remove(*index));
                 Ok(Edit::Insert { index: *index, object })
             }
+            Edit::Batch(edits) => {
+                let mut undos: Vec<Edit> = Vec::with_capacity(edits.len());
+                for e in edits {
+                    match e.apply_with(scene, check) {
+                        Ok(undo) => undos.push(undo),
+                        Err(err) => {
+                            // Back to where the batch started: each undo restores a state
+                            // that was valid.
+                            for u in undos.iter().rev() {
+                                u.apply(scene).ok();
+                            }
+                            return Err(err);
+                        }
+                    }
+                }
+                undos.reverse();
+                Ok(Edit::Batch(undos))
+            }
         }
     }
 
     /// Whether this edit and `other` change the same value (a drag is one edit).
     pub fn same_target(&self, other: &Edit) -> bool {
-        matches!((self, other), (Edit::Set { object: a, pointer: p, .. }, Edit::Set { object: b, pointer: q, .. }) if a == b && p == q)
+        match (self, other) {
+            (Edit::Set { object: a, pointer: p, .. }, Edit::Set { object: b, pointer: q, .. }) => a == b && p == q,
+            (Edit::Batch(x), Edit::Batch(y)) => x.len() == y.len() && x.iter().zip(y).all(|(a, b)| a.same_target(b)),
+            _ => false,
+        }
     }
 }
 

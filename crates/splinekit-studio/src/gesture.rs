@@ -13,6 +13,7 @@ use splinekit_scene::transforms::TransformDoc;
 
 use crate::edit::{Edit, EditError};
 use crate::handles::{Handle, coordinates_of, local_points_of, transform_of};
+use crate::selection::{GroupMove, GroupStart};
 use crate::transform_edit::{rotated, scaled, translated};
 use crate::view_camera::Projector;
 
@@ -25,6 +26,9 @@ pub enum GestureKind {
     Rotate,
     /// Scale about the local origin (local pieces only).
     Scale,
+    /// Change the weight of a NURBS or rational Bézier control point (held W): dragging
+    /// up multiplies it by e^(Δy/100) for Δy pixels, down divides.
+    Weight,
 }
 
 /// The value a handle had when the drag started.
@@ -39,6 +43,24 @@ enum Start {
         path: Vec<usize>,
         inverse: [[f64; 3]; 3],
     },
+    /// A control point's weight and where it is in the document.
+    Weight {
+        pointer: String,
+        w: f64,
+    },
+}
+
+/// Where the weight of a control-point handle sits in its object's document, and its
+/// value: `/shape/weights/i` of a NURBS or rational Bézier curve, `/shape/weights/i/j` of
+/// a NURBS net. `None` for handles of shapes without weights.
+pub fn weight_of(scene: &SceneDocument, handle: &Handle) -> Option<(String, f64)> {
+    let pointer = match handle.kind {
+        crate::handles::HandleKind::ControlPoint(i, "control_points") => format!("/shape/weights/{i}"),
+        crate::handles::HandleKind::NetPoint(i, j) => format!("/shape/weights/{i}/{j}"),
+        _ => return None,
+    };
+    let w = scene.objects.get(handle.object)?.to_value().pointer(&pointer)?.as_f64()?;
+    Some((pointer, w))
 }
 
 /// A drag in progress.
@@ -50,8 +72,12 @@ pub struct Gesture {
     pub kind: GestureKind,
     start: Start,
     start_mouse: [f64; 2],
+    /// The pivot's screen position: the handle's, or the selection's centroid's.
     handle_px: [f64; 2],
     depth: f64,
+    /// With several handles selected: their values when the drag started, and their
+    /// centroid (the pivot of turns and scalings).
+    group: Option<(GroupStart, [f64; 3])>,
 }
 
 impl Gesture {
@@ -78,7 +104,10 @@ impl Gesture {
         mouse: [f64; 2],
     ) -> Option<Gesture> {
         let (handle_px, depth) = projector.project(handle.position)?;
-        let start = if handle.kind.is_local() {
+        let weight = (kind == GestureKind::Weight).then(|| weight_of(scene, handle)).flatten();
+        let start = if let Some((pointer, w)) = weight {
+            Start::Weight { pointer, w }
+        } else if handle.kind.is_local() {
             Start::Transform(transform_of(scene, handle))
         } else if let Some(path) = handle.kind.point_path() {
             let (rest, inverse) = local_points_of(scene, handle, time)?;
@@ -86,41 +115,115 @@ impl Gesture {
         } else {
             Start::Coordinates(coordinates_of(scene, handle)?)
         };
-        let kind = if handle.kind.is_local() { kind } else { GestureKind::Move(move_axis(kind)) };
-        Some(Gesture { handle: handle.clone(), kind, start, start_mouse: mouse, handle_px, depth })
+        let kind = match (&start, kind) {
+            (Start::Weight { .. }, _) => GestureKind::Weight,
+            (_, GestureKind::Weight) => GestureKind::Move(None),
+            _ if handle.kind.is_local() => kind,
+            _ => GestureKind::Move(move_axis(kind)),
+        };
+        Some(Gesture { handle: handle.clone(), kind, start, start_mouse: mouse, handle_px, depth, group: None })
+    }
+
+    /// A drag of `handle` that moves every handle of `group` (the selection, `handle`
+    /// among them) with it: moving translates them all, rotating and scaling turn and
+    /// scale their positions about their centroid ([`GroupMove`]). `None` when a value
+    /// cannot be read or the centroid is behind the eye.
+    pub fn start_group(
+        scene: &SceneDocument,
+        time: Option<f64>,
+        projector: &Projector,
+        handle: &Handle,
+        group: &[Handle],
+        kind: GestureKind,
+        mouse: [f64; 2],
+    ) -> Option<Gesture> {
+        let (_, depth) = projector.project(handle.position)?;
+        let centroid = crate::selection::centroid(group)?;
+        let (handle_px, _) = projector.project(centroid)?;
+        let values = GroupStart::read(scene, time, group)?;
+        let start = Start::Coordinates(handle.position.to_vec());
+        Some(Gesture {
+            handle: handle.clone(),
+            kind,
+            start,
+            start_mouse: mouse,
+            handle_px,
+            depth,
+            group: Some((values, centroid)),
+        })
+    }
+
+    /// Whether the drag moves a selection of several handles.
+    pub fn is_group(&self) -> bool {
+        self.group.is_some()
     }
 
     /// The edit that puts the handle where the cursor at `mouse` says.
     pub fn edit_at(&self, projector: &Projector, mouse: [f64; 2]) -> Result<Edit, EditError> {
+        self.edit_snapped(projector, mouse, &|p| p)
+    }
+
+    /// The turn (radians about the axis towards the eye) the cursor at `mouse` has swept
+    /// about the pivot since the drag started.
+    fn angle(&self, mouse: [f64; 2]) -> f64 {
+        let sweep = |m: [f64; 2]| (m[1] - self.handle_px[1]).atan2(m[0] - self.handle_px[0]);
+        // Screen y points down: a clockwise sweep on screen is a negative turn about
+        // the axis towards the eye.
+        -(sweep(mouse) - sweep(self.start_mouse))
+    }
+
+    /// The ratio of the cursor's distances from the pivot now and when the drag started.
+    fn factor(&self, mouse: [f64; 2]) -> f64 {
+        let dist = |m: [f64; 2]| (m[0] - self.handle_px[0]).hypot(m[1] - self.handle_px[1]);
+        (dist(mouse) / dist(self.start_mouse).max(1.0)).max(1e-3)
+    }
+
+    /// [`Self::edit_at`], the dragged handle's new position passed through `snap` when
+    /// moving (the others of a selection move with it by the same displacement).
+    pub fn edit_snapped(
+        &self,
+        projector: &Projector,
+        mouse: [f64; 2],
+        snap: &dyn Fn([f64; 3]) -> [f64; 3],
+    ) -> Result<Edit, EditError> {
         let field = self.handle.kind.field();
         let dim = self.handle.dimension;
+        if let Some((group, center)) = &self.group {
+            let d = projector.view_direction();
+            let axis = if dim == 2 { [0.0, 0.0, -d[2].signum()] } else { [-d[0], -d[1], -d[2]] };
+            let map = match self.kind {
+                GestureKind::Move(axis) => GroupMove::Translate(self.delta(projector, mouse, axis, snap)),
+                GestureKind::Rotate => GroupMove::Rotate { center: *center, axis, angle: self.angle(mouse) },
+                GestureKind::Scale => GroupMove::Scale { center: *center, factor: self.factor(mouse) },
+                // A weight drag changes one handle's weight, never a group's.
+                GestureKind::Weight => GroupMove::Translate([0.0; 3]),
+            };
+            return group.edit(&map);
+        }
         let value = match (&self.start, self.kind) {
+            (Start::Weight { pointer, w }, _) => {
+                let w = w * ((self.start_mouse[1] - mouse[1]) / 100.0).exp();
+                return Ok(Edit::Set { object: self.handle.object, pointer: pointer.clone(), value: Some(w.into()) });
+            }
             (Start::Transform(t), GestureKind::Move(axis)) => {
-                to_json(&translated(t, &self.delta(projector, mouse, axis), dim))
+                to_json(&translated(t, &self.delta(projector, mouse, axis, snap), dim))
             }
             (Start::Transform(t), GestureKind::Rotate) => {
-                let sweep = |m: [f64; 2]| (m[1] - self.handle_px[1]).atan2(m[0] - self.handle_px[0]);
-                // Screen y points down: a clockwise sweep on screen is a negative turn about
-                // the axis towards the eye.
-                let angle = -(sweep(mouse) - sweep(self.start_mouse));
                 let d = projector.view_direction();
                 let axis = [-d[0], -d[1], -d[2]];
+                let angle = self.angle(mouse);
                 let angle = if dim == 2 { angle * axis[2].signum() } else { angle };
                 to_json(&rotated(t, &field, axis, angle, dim, self.handle.origin)?)
             }
-            (Start::Transform(t), GestureKind::Scale) => {
-                let dist = |m: [f64; 2]| (m[0] - self.handle_px[0]).hypot(m[1] - self.handle_px[1]);
-                let factor = dist(mouse) / dist(self.start_mouse).max(1.0);
-                to_json(&scaled(t, factor.max(1e-3)))
-            }
+            (Start::Transform(t), GestureKind::Scale | GestureKind::Weight) => to_json(&scaled(t, self.factor(mouse))),
             (Start::Coordinates(c), kind) => {
-                let delta = self.delta(projector, mouse, move_axis(kind));
+                let delta = self.delta(projector, mouse, move_axis(kind), snap);
                 let moved: Vec<f64> =
                     c.iter().enumerate().map(|(i, x)| x + if i < dim { delta[i] } else { 0.0 }).collect();
                 Value::from(moved)
             }
             (Start::LocalPoints { rest, path, inverse }, kind) => {
-                let d = self.delta(projector, mouse, move_axis(kind));
+                let d = self.delta(projector, mouse, move_axis(kind), snap);
                 let q = inverse.map(|row| row[0] * d[0] + row[1] * d[1] + row[2] * d[2]);
                 let mut value = rest.clone();
                 let point = path.iter().try_fold(&mut value, |v, &i| v.get_mut(i)).and_then(Value::as_array_mut);
@@ -137,22 +240,33 @@ impl Gesture {
     }
 
     /// The world displacement from the drag's start to `mouse` at the handle's depth, kept
-    /// to one axis when asked.
-    fn delta(&self, projector: &Projector, mouse: [f64; 2], axis: Option<usize>) -> [f64; 3] {
+    /// to one axis when asked, such that the handle lands where `snap` puts it.
+    fn delta(
+        &self,
+        projector: &Projector,
+        mouse: [f64; 2],
+        axis: Option<usize>,
+        snap: &dyn Fn([f64; 3]) -> [f64; 3],
+    ) -> [f64; 3] {
         let a = projector.unproject(self.start_mouse, self.depth);
         let b = projector.unproject(mouse, self.depth);
-        let mut d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-        if let Some(k) = axis {
-            for (i, x) in d.iter_mut().enumerate() {
-                if i != k {
-                    *x = 0.0;
+        let keep = |mut d: [f64; 3]| {
+            if let Some(k) = axis {
+                for (i, x) in d.iter_mut().enumerate() {
+                    if i != k {
+                        *x = 0.0;
+                    }
                 }
             }
-        }
-        if self.handle.dimension == 2 {
-            d[2] = 0.0;
-        }
-        d
+            if self.handle.dimension == 2 {
+                d[2] = 0.0;
+            }
+            d
+        };
+        let d = keep([b[0] - a[0], b[1] - a[1], b[2] - a[2]]);
+        let p = self.handle.position;
+        let q = snap([p[0] + d[0], p[1] + d[1], p[2] + d[2]]);
+        keep([q[0] - p[0], q[1] - p[1], q[2] - p[2]])
     }
 }
 

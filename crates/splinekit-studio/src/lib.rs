@@ -13,6 +13,9 @@
 //!   matrix ([`view_camera::Projector`]). Moving a local piece edits its `transforms` entry
 //!   as the format applies it (scale, rotate, translate about the origin,
 //!   [`transform_edit`]).
+//! - One registry of actions ([`actions`]: label, shortcut, menu, panel button, undoable)
+//!   feeds the menus, the key bindings and the help overlay (`?`); menus, keys and panels
+//!   all ask through [`command::Command`]s that the studio runs in one place.
 //! - Ctrl+S writes an ordinary scene document with the view's camera.
 //! - [`live_surfaces`] keeps the window's blending-spline surfaces evaluated: after a frame
 //!   moves only the rectangles it affects are re-evaluated, and it owns the one built
@@ -25,8 +28,11 @@
 
 #![warn(missing_docs)]
 
+pub mod actions;
+pub mod analysis;
 pub mod app;
 pub mod clock;
+pub mod command;
 pub mod document;
 pub mod edit;
 pub mod export;
@@ -34,12 +40,14 @@ pub mod gesture;
 pub mod gpu;
 pub mod handles;
 pub mod history;
-pub mod keys;
+pub mod knot_edit;
 pub mod live_surfaces;
 pub mod live_view;
 pub mod options;
 pub mod panels;
 pub mod report;
+pub mod selection;
+pub mod snapping;
 pub mod studio;
 pub mod transform_edit;
 pub mod view_camera;

@@ -9,15 +9,21 @@ use splinekit_render::{LineItem, PointItem, RenderScene, compose_with};
 use splinekit_scene::ShapeDocument;
 use splinekit_scene::scenes::SceneDocument;
 
+use crate::actions::Action;
+use crate::analysis::Analysis;
 use crate::clock::Clock;
+use crate::command::{Command, FieldEdit};
 use crate::document;
 use crate::edit::{Edit, EditError};
 use crate::gesture::{Gesture, GestureKind};
 use crate::handles::{Handle, HandleKind, handles_with};
 use crate::history::History;
+use crate::knot_edit::{self, KnotTool};
 use crate::live_surfaces::LiveSurfaces;
 use crate::live_view::{self, Changes, KeptPolyline, Lattice};
-use crate::view_camera::{Projector, ViewCamera};
+use crate::selection::{GroupMove, GroupStart, Selection, in_box};
+use crate::snapping::Snapping;
+use crate::view_camera::{Projector, StandardView, ViewCamera};
 
 /// The scene as last composed, and what it was composed from.
 struct Composed {
@@ -73,8 +79,15 @@ fn union(a: Option<([f32; 3], [f32; 3])>, b: Option<([f32; 3], [f32; 3])>) -> Op
 
 /// The handles (patch origins and control points, which the renderer does not mark), the
 /// control polygon of the selected local Bézier curve or the net (rows and columns) of the
-/// selected Bézier patch, and the selected and hovered handles drawn larger.
-fn overlay_handles(handles: &[Handle], selected: Option<&Handle>, hovered: Option<&Handle>, rs: &mut RenderScene) {
+/// selected Bézier patch, and the selected handles (the last picked largest) and the hovered
+/// one drawn larger.
+fn overlay_handles(
+    handles: &[Handle],
+    selected: Option<&Handle>,
+    selection: &Selection,
+    hovered: Option<&Handle>,
+    rs: &mut RenderScene,
+) {
     let mut rows: Vec<Vec<[f32; 3]>> = Vec::new();
     let mut columns: Vec<Vec<[f32; 3]>> = Vec::new();
     for h in handles.iter().filter(|h| h.kind.point_path().is_some() && h.shown_with(selected)) {
@@ -97,6 +110,10 @@ fn overlay_handles(handles: &[Handle], selected: Option<&Handle>, hovered: Optio
     for h in handles.iter().filter(|h| !matches!(h.kind, HandleKind::LocalCurve(_)) && h.shown_with(selected)) {
         let position = h.position.map(|x| x as f32);
         rs.points.push(PointItem { position, color: [0.15, 0.15, 0.15, 1.0], size: 7.0 });
+    }
+    for h in &selection.handles {
+        let position = h.position.map(|x| x as f32);
+        rs.points.push(PointItem { position, color: [0.95, 0.45, 0.0, 1.0], size: 11.0 });
     }
     for (h, color, size) in [(selected, [1.0, 0.55, 0.0, 1.0], 14.0), (hovered, [1.0, 0.85, 0.1, 1.0], 12.0)] {
         if let Some(h) = h {
@@ -121,8 +138,19 @@ pub struct Studio {
     pub camera: Option<ViewCamera>,
     /// The selected object.
     pub selected_object: Option<usize>,
-    /// The selected handle.
+    /// The selected handle picked last (its local's control points are shown; the
+    /// Properties panel edits it).
     pub selected: Option<Handle>,
+    /// Every selected handle ([`crate::selection`]), `selected` among them.
+    pub selection: Selection,
+    /// What a moved handle snaps to, and the nudge step.
+    pub snapping: Snapping,
+    /// What the next click on the selected curve does to its knots (`None`: selects).
+    pub knot_tool: Option<KnotTool>,
+    /// How far a knot removal may move the curve (world units).
+    pub knot_tolerance: f64,
+    /// The curvature comb and continuity drawn over the view.
+    pub analysis: Analysis,
     /// The handle under the cursor.
     pub hovered: Option<Handle>,
     /// The drag in progress.
@@ -149,6 +177,8 @@ pub struct Studio {
     pub live: LiveSurfaces,
     /// What changed in the composition since the last [`Studio::view_scene`].
     changes: Changes,
+    /// Commands queued by the panels, run by [`Studio::run_commands`].
+    commands: Vec<Command>,
 }
 
 impl Studio {
@@ -161,6 +191,11 @@ impl Studio {
             camera: None,
             selected_object: None,
             selected: None,
+            selection: Selection::default(),
+            snapping: Snapping::default(),
+            knot_tool: None,
+            knot_tolerance: 1e-3,
+            analysis: Analysis::default(),
             hovered: None,
             gesture: None,
             clock: Clock::new(),
@@ -173,7 +208,257 @@ impl Studio {
             cache: None,
             live: LiveSurfaces::default(),
             changes: Changes::All,
+            commands: Vec::new(),
         }
+    }
+
+    /// Queues a command (panels ask through this; the window runs the queue after the
+    /// panels are drawn).
+    pub fn queue(&mut self, command: Command) {
+        self.commands.push(command);
+    }
+
+    /// Runs the queued commands in order; returns the actions only the window can carry
+    /// out (screenshots, closing, overlays), in order.
+    pub fn run_commands(&mut self) -> Vec<Action> {
+        let mut left = Vec::new();
+        for c in std::mem::take(&mut self.commands) {
+            left.extend(self.run(c));
+        }
+        left
+    }
+
+    /// Runs one command; returns its action when only the window can carry it out.
+    pub fn run(&mut self, command: Command) -> Option<Action> {
+        match command {
+            Command::Action(a) => return self.run_action(a),
+            Command::Open(path) => self.open(PathBuf::from(path)),
+            Command::Export(path) => self.export_selected(std::path::Path::new(&path)),
+            Command::Edit(FieldEdit { edit, field, select }) => {
+                let done = self.edit(edit, false);
+                self.field_error = match (done, field) {
+                    (false, Some(f)) => self.message.clone().map(|m| (f, m)),
+                    _ => None,
+                };
+                if let (true, Some(object)) = (done, select) {
+                    self.select_object(object);
+                }
+            }
+            Command::SelectObject(object) => self.select_object(object),
+        }
+        None
+    }
+
+    /// Selects object `object` (none: `None`; an index past the end selects none) and no
+    /// handle.
+    pub fn select_object(&mut self, object: Option<usize>) {
+        self.selected_object = object.filter(|&i| i < self.scene.objects.len());
+        self.clear_selection();
+    }
+
+    /// The selected object when it is a curve the knot edits work on (else a message).
+    fn curve_object(&self) -> Result<usize, String> {
+        let object = self.selected_object.ok_or("select a B-spline, NURBS or Bézier curve first")?;
+        match &self.scene.objects[object].shape {
+            ShapeDocument::Curve(_) => Ok(object),
+            ShapeDocument::Surface(_) => Err("knot edits from the window work on curves".into()),
+        }
+    }
+
+    /// Applies an edit made elsewhere (one undo step), or shows why there is none.
+    fn apply_or_say(&mut self, edit: Result<Edit, String>) {
+        match edit {
+            Ok(edit) => {
+                if self.edit(edit, false) {
+                    self.refresh_selection();
+                }
+            }
+            Err(e) => self.message = Some(e),
+        }
+    }
+
+    /// Arms a knot tool: the next click on the selected curve uses it.
+    fn arm(&mut self, tool: KnotTool) {
+        match self.curve_object() {
+            Ok(_) => {
+                self.knot_tool = Some(tool);
+                self.message = Some(match tool {
+                    KnotTool::Insert => "click on the curve where the knot goes (Escape: cancel)".into(),
+                    KnotTool::Remove => "click on the curve near the knot to remove (Escape: cancel)".into(),
+                });
+            }
+            Err(e) => self.message = Some(e),
+        }
+    }
+
+    /// A click at `mouse` with a knot tool armed: the tool's edit at the clicked parameter
+    /// of the selected curve (one undo step); a click off the curve leaves the tool armed.
+    pub fn knot_click(&mut self, tool: KnotTool, projector: &Projector, mouse: [f64; 2]) {
+        let object = match self.curve_object() {
+            Ok(o) => o,
+            Err(e) => {
+                self.knot_tool = None;
+                self.message = Some(e);
+                return;
+            }
+        };
+        let shape = &self.scene.objects[object].shape;
+        let at = knot_edit::curve_samples(shape, knot_edit::SAMPLES)
+            .map(|samples| knot_edit::parameter_at(&samples, projector, mouse));
+        let u = match at {
+            Ok(Some(u)) => u,
+            Ok(None) => {
+                self.message = Some("click on the curve itself (Escape: cancel)".into());
+                return;
+            }
+            Err(e) => {
+                self.message = Some(e);
+                return;
+            }
+        };
+        let edit = match tool {
+            KnotTool::Insert => knot_edit::insert(shape, object, u),
+            KnotTool::Remove => knot_edit::remove(shape, object, u, self.knot_tolerance),
+        };
+        self.knot_tool = None;
+        self.apply_or_say(edit);
+    }
+
+    /// Selects no handle.
+    pub fn clear_selection(&mut self) {
+        self.selected = None;
+        self.selection = Selection::default();
+    }
+
+    /// A click on `picked` (none: empty space): selects it alone, or with `add` (Shift)
+    /// adds it to the selection or removes it. A click on empty space without `add`
+    /// clears the selection.
+    pub fn click(&mut self, picked: Option<Handle>, add: bool) {
+        match (picked, add) {
+            (Some(h), true) => {
+                self.selected_object = Some(h.object);
+                self.selected =
+                    if self.selection.toggle(h.clone()) { Some(h) } else { self.selection.handles.last().cloned() };
+            }
+            (Some(h), false) => {
+                self.selected_object = Some(h.object);
+                self.selection = Selection { handles: vec![h.clone()] };
+                self.selected = Some(h);
+            }
+            (None, true) => {}
+            (None, false) => self.clear_selection(),
+        }
+    }
+
+    /// Selects the shown handles whose projection lies in the box with corners `a` and `b`
+    /// (view pixels); with `add`, in addition to the selection.
+    pub fn box_select(&mut self, projector: &Projector, a: [f64; 2], b: [f64; 2], add: bool) {
+        let inside = in_box(self.shown_handles(), projector, a, b);
+        if !add {
+            self.selection = Selection::default();
+        }
+        self.selection.extend(inside);
+        self.selected = self.selection.handles.last().cloned();
+        if let Some(h) = &self.selected {
+            self.selected_object = Some(h.object);
+        }
+    }
+
+    /// Selects every shown handle of the selected object.
+    pub fn select_all(&mut self) {
+        let Some(object) = self.selected_object else {
+            self.message = Some("select all: select an object first".into());
+            return;
+        };
+        let all: Vec<Handle> = self.shown_handles().filter(|h| h.object == object).cloned().collect();
+        self.selection.extend(all);
+        if self.selected.is_none() {
+            self.selected = self.selection.handles.last().cloned();
+        }
+    }
+
+    /// The selected handles (the selection, else the last picked).
+    fn selected_handles(&self) -> Vec<Handle> {
+        if self.selection.handles.is_empty() {
+            self.selected.iter().cloned().collect()
+        } else {
+            self.selection.handles.clone()
+        }
+    }
+
+    /// Moves the selection by `steps` snapping steps along world axis `axis`: one edit.
+    pub fn nudge(&mut self, axis: usize, steps: i32) {
+        let handles = self.selected_handles();
+        if handles.is_empty() {
+            self.message = Some("nudge: select handles first".into());
+            return;
+        }
+        if axis == 2 && handles.iter().all(|h| h.dimension == 2) {
+            self.message = Some("nudge: a plane shape has no z".into());
+            return;
+        }
+        let mut d = [0.0; 3];
+        d[axis] = self.snapping.step * f64::from(steps);
+        let edit = GroupStart::read(&self.scene, self.time(), &handles)
+            .ok_or_else(|| "nudge: the selection's values cannot be read".to_string())
+            .and_then(|g| g.edit(&GroupMove::Translate(d)).map_err(|e| e.to_string()));
+        match edit {
+            Ok(edit) => {
+                if self.edit(edit, false) {
+                    self.refresh_selection();
+                }
+            }
+            Err(e) => self.message = Some(e),
+        }
+    }
+
+    /// Brings the selected handles to their places in the document as it is now.
+    fn refresh_selection(&mut self) {
+        if let Ok(now) = self.visible_handles() {
+            self.selection.follow(&now);
+            if let Some(sel) = &self.selected {
+                self.selected = now.into_iter().find(|h| h.object == sel.object && h.kind == sel.kind);
+            }
+        }
+    }
+
+    /// Carries out an action of the registry; returns it when only the window can
+    /// (screenshots, closing, overlays).
+    pub fn run_action(&mut self, action: Action) -> Option<Action> {
+        let look = |studio: &mut Studio, v| studio.camera.iter_mut().for_each(|c| c.look_from(v));
+        match action {
+            Action::Save => self.save(),
+            Action::Undo => self.undo(),
+            Action::Redo => self.redo(),
+            Action::LookTop => look(self, StandardView::Top),
+            Action::LookFront => look(self, StandardView::Front),
+            Action::LookSide => look(self, StandardView::Side),
+            Action::Home => self.camera.iter_mut().for_each(|c| c.camera = c.home),
+            Action::Frame => self.frame_selection(),
+            Action::TogglePlay => self.clock.playing = !self.clock.playing,
+            Action::ClearSelection => {
+                self.knot_tool = None;
+                self.clear_selection();
+            }
+            Action::ToggleComb => self.analysis.comb = !self.analysis.comb,
+            Action::ToggleContinuity => self.analysis.continuity = !self.analysis.continuity,
+            Action::InsertKnot => self.arm(KnotTool::Insert),
+            Action::RemoveKnot => self.arm(KnotTool::Remove),
+            Action::ElevateDegree => {
+                let edit = self.curve_object().and_then(|o| knot_edit::elevate(&self.scene.objects[o].shape, o));
+                self.apply_or_say(edit);
+            }
+            Action::SelectAll => self.select_all(),
+            Action::Nudge(axis, steps) => self.nudge(axis, steps),
+            Action::AddBeat => match self.selected_object {
+                Some(object) => {
+                    self.add_beat(object);
+                }
+                None => self.message = Some("a beat moves the local pieces of a blending spline: select one".into()),
+            },
+            Action::Screenshot | Action::Quit | Action::FrameTimes | Action::Help => return Some(action),
+        }
+        None
     }
 
     /// Opens another document; a document that does not parse leaves the current one and
@@ -251,12 +536,14 @@ impl Studio {
     pub fn undo(&mut self) {
         let done = self.history.undo(&mut self.scene);
         self.report(done, "nothing to undo");
+        self.refresh_selection();
     }
 
     /// Redoes the last undone edit.
     pub fn redo(&mut self) {
         let done = self.history.redo(&mut self.scene);
         self.report(done, "nothing to redo");
+        self.refresh_selection();
     }
 
     fn report(&mut self, done: Result<bool, EditError>, nothing: &str) {
@@ -301,11 +588,13 @@ impl Studio {
 
     /// The scene as the 3-D view draws it at `size` pixels: composed as `splinekit render`
     /// composes it (during a drag brought up to date in place, [`crate::live_view`]), with
-    /// the view camera (fitted on the first frame); with `overlays`, the handles and the
+    /// the view camera (fitted on the first frame), the analysis asked for (comb,
+    /// continuity, [`Analysis`]); with `overlays`, the handles and the
     /// selected local Bézier's net, the hovered and selected handles drawn larger. The
     /// changes since the last call come with it.
     pub fn view_scene(&mut self, size: (u32, u32), overlays: bool) -> Result<ViewScene<'_>, String> {
         let aspect = size.0.max(1) as f32 / size.1.max(1) as f32;
+        let time = self.time();
         self.compose(aspect)?;
         self.follow_handles();
         let Some(cache) = self.cache.as_ref() else { return Err("nothing composed".into()) };
@@ -323,8 +612,15 @@ impl Studio {
             painter_order: rs.painter_order,
             ..Default::default()
         };
+        self.analysis.overlay(&self.scene, time, &mut overlay);
         if overlays {
-            overlay_handles(&self.handles, self.selected.as_ref(), self.hovered.as_ref(), &mut overlay);
+            overlay_handles(
+                &self.handles,
+                self.selected.as_ref(),
+                &self.selection,
+                self.hovered.as_ref(),
+                &mut overlay,
+            );
         }
         let bounds = union(cache.bounds, overlay.bounds());
         self.bounds = bounds;
@@ -395,6 +691,7 @@ impl Studio {
             self.handles.iter().find(|n| n.object == h.object && n.kind == h.kind).cloned()
         };
         (self.selected, self.hovered) = (find(&self.selected), find(&self.hovered));
+        self.selection.follow(&self.handles);
     }
 
     /// The handles the view may show and pick: local pieces (origins and Bézier control
@@ -448,18 +745,39 @@ impl Studio {
     }
 
     /// Starts dragging the handle under `mouse`; `false` when there is none.
+    /// Starts dragging the handle under `mouse`; `false` when there is none. A handle of
+    /// a selection of several drags the whole selection; another becomes the selection.
     pub fn begin_drag(&mut self, projector: &Projector, mouse: [f64; 2], kind: GestureKind) -> bool {
         let Some(h) = self.pick(projector, mouse) else { return false };
         self.selected_object = Some(h.object);
-        self.gesture = Gesture::start_at(&self.scene, self.time(), projector, &h, kind, mouse);
+        let time = self.time();
+        if self.selection.handles.len() > 1 && self.selection.contains(&h) && kind != GestureKind::Weight {
+            let group = self.selection.handles.clone();
+            self.gesture = Gesture::start_group(&self.scene, time, projector, &h, &group, kind, mouse);
+        } else {
+            self.gesture = Gesture::start_at(&self.scene, time, projector, &h, kind, mouse);
+            self.selection = Selection { handles: vec![h.clone()] };
+        }
         self.selected = Some(h);
         self.gesture.is_some()
     }
 
-    /// Moves the drag to `mouse`: one edit, merged with the drag's earlier ones.
+    /// Moves the drag to `mouse`: one edit, merged with the drag's earlier ones; the
+    /// dragged handle snaps as [`Self::snapping`] says (to handles outside the selection).
     pub fn drag_to(&mut self, projector: &Projector, mouse: [f64; 2]) {
         let Some(g) = &self.gesture else { return };
-        match g.edit_at(projector, mouse) {
+        let snapping = self.snapping;
+        let targets: Vec<[f64; 3]> = if snapping.handles {
+            self.shown_handles()
+                .filter(|h| !self.selection.contains(h) && **h != g.handle)
+                .map(|h| h.position)
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let dimension = g.handle.dimension;
+        let snap = |p: [f64; 3]| if snapping.any() { snapping.snap(p, dimension, &targets, projector) } else { p };
+        match g.edit_snapped(projector, mouse, &snap) {
             Ok(edit) => {
                 self.edit(edit, true);
             }
@@ -471,11 +789,6 @@ impl Studio {
     pub fn end_drag(&mut self) {
         self.gesture = None;
         self.history.close();
-        if let Some(sel) = &self.selected {
-            self.selected = self
-                .visible_handles()
-                .ok()
-                .and_then(|hs| hs.into_iter().find(|h| h.object == sel.object && h.kind == sel.kind));
-        }
+        self.refresh_selection();
     }
 }

@@ -1,7 +1,10 @@
 //! The 3-D view inside the egui layout: shows the rendered texture and turns the mouse and
 //! keys into studio actions. Left drag on a handle moves it (held X/Y/Z: along that axis;
-//! held R: rotates, S: scales about the local origin); left drag elsewhere orbits, middle
-//! or Shift+left drag pans, the wheel zooms; a click selects the handle under the cursor.
+//! held R: rotates, S: scales about the local origin; W: changes a control point's
+//! weight); left drag elsewhere orbits, middle or Shift+left drag pans, the wheel zooms; a
+//! click selects the handle under the cursor (with a knot tool armed: edits the knots there)
+//! (Shift+click adds or removes it), Ctrl+drag on empty space selects the handles in a box
+//! (Ctrl+Shift: adds them). A drag of a handle of a selection of several moves them all.
 
 use crate::gesture::GestureKind;
 use crate::studio::Studio;
@@ -56,7 +59,9 @@ pub fn view(ui: &mut egui::Ui, studio: &mut Studio, input: ViewInput<'_>) -> Vie
 fn gesture_kind(ui: &egui::Ui) -> GestureKind {
     ui.input(|i| {
         let held = |k| i.key_down(k);
-        if held(egui::Key::R) {
+        if held(egui::Key::W) {
+            GestureKind::Weight
+        } else if held(egui::Key::R) {
             GestureKind::Rotate
         } else if held(egui::Key::S) && !i.modifiers.command {
             GestureKind::Scale
@@ -85,14 +90,33 @@ fn mouse(
     if studio.gesture.is_none() {
         studio.hovered = cursor.and_then(|c| studio.pick(projector, c));
     }
-    let panning = ui.input(|i| i.modifiers.shift) || response.dragged_by(egui::PointerButton::Middle);
+    let (ctrl, shift) = ui.input(|i| (i.modifiers.command, i.modifiers.shift));
+    let panning = !ctrl && shift || response.dragged_by(egui::PointerButton::Middle);
+    let band_id = response.id.with("box select");
     if response.drag_started_by(egui::PointerButton::Primary)
         && !panning
         && let Some(start) = ui.input(|i| i.pointer.press_origin())
     {
-        studio.begin_drag(projector, to_px(start), gesture_kind(ui));
+        let started = studio.begin_drag(projector, to_px(start), gesture_kind(ui));
+        if !started && ctrl {
+            ui.data_mut(|d| d.insert_temp(band_id, to_px(start)));
+        }
     }
-    if response.dragged() {
+    let band: Option<[f64; 2]> = ui.data(|d| d.get_temp(band_id));
+    if let Some(a) = band {
+        if let Some(b) = ui.input(|i| i.pointer.latest_pos()) {
+            let from = egui::pos2(a[0] as f32 / ppp + rect.left(), a[1] as f32 / ppp + rect.top());
+            let stroke = egui::Stroke::new(1.0, egui::Color32::from_rgb(230, 120, 0));
+            ui.painter().rect_stroke(egui::Rect::from_two_pos(from, b), 0.0, stroke, egui::StrokeKind::Inside);
+            if response.drag_stopped() {
+                studio.box_select(projector, a, to_px(b), shift);
+            }
+        }
+        if response.drag_stopped() || !response.dragged() {
+            ui.data_mut(|d| d.remove::<[f64; 2]>(band_id));
+        }
+    }
+    if response.dragged() && band.is_none() {
         let delta = response.drag_delta() * ppp;
         match (&studio.gesture, studio.camera.as_mut()) {
             (Some(_), _) => {
@@ -115,9 +139,12 @@ fn mouse(
         studio.end_drag();
     }
     if response.clicked() {
-        studio.selected = cursor.and_then(|c| studio.pick(projector, c));
-        if let Some(h) = &studio.selected {
-            studio.selected_object = Some(h.object);
+        match (studio.knot_tool, cursor) {
+            (Some(tool), Some(c)) => studio.knot_click(tool, projector, c),
+            _ => {
+                let picked = cursor.and_then(|c| studio.pick(projector, c));
+                studio.click(picked, shift);
+            }
         }
     }
     let scroll = ui.input(|i| i.smooth_scroll_delta.y);

@@ -7,6 +7,14 @@ use splinekit_scene::ShapeDocument;
 use splinekit_studio::panels::{objects_panel, properties_panel};
 use splinekit_studio::studio::Studio;
 
+/// A harness frame: the panel drawn, then the commands it queued run (as the window does).
+fn panel(draw: fn(&mut egui::Ui, &mut Studio)) -> impl FnMut(&mut egui::Ui, &mut Studio) {
+    move |ui, s| {
+        draw(ui, s);
+        assert!(s.run_commands().is_empty(), "panels ask for no window actions");
+    }
+}
+
 fn heart() -> Studio {
     let text =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/scenes/heart_local_curves.json"))
@@ -23,7 +31,7 @@ fn bfunction(studio: &Studio) -> String {
 
 #[test]
 fn properties_toggle_styles_and_switch_the_bfunction_and_back() {
-    let mut h = Harness::new_ui_state(|ui, s: &mut Studio| properties_panel(ui, s), heart());
+    let mut h = Harness::new_ui_state(panel(properties_panel), heart());
     h.run();
     h.get_by_label("control polygon / net").click();
     h.run();
@@ -44,7 +52,7 @@ fn properties_toggle_styles_and_switch_the_bfunction_and_back() {
 
 #[test]
 fn objects_are_duplicated_and_deleted_from_the_panel() {
-    let mut h = Harness::new_ui_state(|ui, s: &mut Studio| objects_panel(ui, s), heart());
+    let mut h = Harness::new_ui_state(panel(objects_panel), heart());
     h.run();
     h.get_by_label("Duplicate").click();
     h.run();
@@ -69,7 +77,7 @@ fn the_knot_style_switches_at_once_and_undoes_in_one_step() {
         "control_points": [[0, 0], [1, 1], [2, 0], [3, 1]]}"#;
     let mut studio = Studio::new(splinekit_studio::document::parse(text).expect("valid"), None);
     studio.selected_object = Some(0);
-    let mut h = Harness::new_ui_state(|ui, s: &mut Studio| properties_panel(ui, s), studio);
+    let mut h = Harness::new_ui_state(panel(properties_panel), studio);
     h.run();
     let shape = |s: &Studio| s.scene.objects[0].to_value()["shape"].clone();
     h.get_by_label("knots").click();

@@ -147,11 +147,11 @@ pub fn run_animate(args: &AnimateArgs) -> Result<()> {
             }
             v
         }
-        None => scene.animation.fps,
+        None => scene.clock().fps,
     };
     let frames = match &args.frames {
         Some(n) => super::eval::parse_count("--frames", n, 2000)?,
-        None => scene.animation.frames_at(fps),
+        None => scene.clock().frames_at(fps),
     };
     if frames == 0 {
         bail!("--frames: need at least one frame");

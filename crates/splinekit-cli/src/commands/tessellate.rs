@@ -90,7 +90,7 @@ fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, ex
     if !matches!(ext, "gltf" | "glb") {
         bail!("-o: scenes are written as .gltf or .glb, not '{}'", args.output);
     }
-    let (frames, fps) = if scene.is_animated() { (scene.animation.frames(), scene.animation.fps) } else { (1, 1.0) };
+    let (frames, fps) = if scene.is_animated() { (scene.clock().frames(), scene.clock().fps) } else { (1, 1.0) };
     let frame = crate::budget::scene_frame(scene)?;
     crate::budget::current().check(
         if frames > 1 { "animation" } else { "objects" },

@@ -114,8 +114,7 @@ fn rendered(folder: &Folder, renderer: &Renderer) -> Result<Vec<Entry>> {
             Ok((*name, SceneDocument::parse(&v).map_err(|e| anyhow!("scene {name}: {e}"))?, *caption))
         })
         .collect::<Result<_>>()?;
-    let work: u64 =
-        docs.iter().map(|(_, d, _)| if d.is_animated() { 1 + d.animation.frames() as u64 } else { 1 }).sum();
+    let work: u64 = docs.iter().map(|(_, d, _)| if d.is_animated() { 1 + d.clock().frames() as u64 } else { 1 }).sum();
     let bar = progress(work, "gallery");
     let mut rendered = Vec::new();
     for (name, doc, caption) in &docs {
@@ -178,8 +177,8 @@ fn render_scene(
     let glb = format!("{name}.glb");
     let start = |camera, period| ViewStart { camera, size, background: doc.background, period };
     if doc.is_animated() {
-        let fps = doc.animation.fps;
-        let frames = doc.animation.frames();
+        let fps = doc.clock().fps;
+        let frames = doc.clock().frames();
         let camera = animation_camera(doc, size)?;
         let mut images = Vec::with_capacity(frames);
         for k in 0..frames {

@@ -1,8 +1,10 @@
 //! Field widgets bound to a JSON pointer of the selected object's document: a change is
-//! one edit; a refused change shows the library's message under the field.
+//! one edit (queued as a command); a refused change shows the library's message under the
+//! field.
 
 use serde_json::Value;
 
+use crate::command::{Command, FieldEdit};
 use crate::edit::Edit;
 use crate::studio::Studio;
 
@@ -11,10 +13,10 @@ pub fn read(studio: &Studio, object: usize, pointer: &str) -> Option<Value> {
     studio.scene.objects.get(object)?.to_value().pointer(pointer).cloned()
 }
 
-/// Sets the value at `pointer`; on refusal remembers the message for that field.
+/// Asks to set the value at `pointer` (a refusal's message is shown under that field).
 pub fn write(studio: &mut Studio, object: usize, pointer: &str, value: Option<Value>) {
-    let ok = studio.edit(Edit::Set { object, pointer: pointer.into(), value }, false);
-    studio.field_error = if ok { None } else { studio.message.clone().map(|m| (pointer.to_string(), m)) };
+    let edit = Edit::Set { object, pointer: pointer.into(), value };
+    studio.queue(Command::Edit(FieldEdit::of_field(edit, pointer)));
 }
 
 /// The message under a field, when its last change was refused.

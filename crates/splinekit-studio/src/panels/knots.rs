@@ -12,6 +12,7 @@ use splinekit::basis::KnotVector;
 use splinekit_scene::DocumentError;
 
 use super::fields::{error_label, read};
+use crate::command::{Command, FieldEdit};
 use crate::edit::Edit;
 use crate::studio::Studio;
 
@@ -149,14 +150,17 @@ pub fn knot_style(ui: &mut egui::Ui, studio: &mut Studio, object: usize, axis: K
     let key = format!("/shape/{}", axis.knots);
     if let Some(style) = chosen.filter(|_| chosen != current) {
         let within = format!("objects[{object}].shape");
-        let result = restyled(&shape, axis, style).map_err(|e| e.within(&within).to_string()).and_then(|value| {
-            let edit = Edit::Set { object, pointer: "/shape".into(), value: Some(value) };
-            if studio.edit(edit, false) { Ok(()) } else { Err(studio.message.clone().unwrap_or_default()) }
-        });
-        studio.field_error = result.err().map(|m| {
-            studio.message = Some(m.clone());
-            (key.clone(), m)
-        });
+        match restyled(&shape, axis, style) {
+            Ok(value) => {
+                let edit = Edit::Set { object, pointer: "/shape".into(), value: Some(value) };
+                studio.queue(Command::Edit(FieldEdit::of_field(edit, &key)));
+            }
+            Err(e) => {
+                let m = e.within(&within).to_string();
+                studio.message = Some(m.clone());
+                studio.field_error = Some((key.clone(), m));
+            }
+        }
     }
     error_label(ui, studio, &key);
 }

@@ -1,32 +1,9 @@
-//! The menu bar: File (open a path, save), Edit (undo, redo), View (standard views, home,
-//! frame the selection, the frame-time overlay).
+//! The menu bar, drawn from the action registry ([`crate::actions::ACTIONS`]): File (the
+//! open and export path fields, then its actions), Edit and View, each entry with its
+//! shortcut.
 
-use crate::view_camera::StandardView;
-
-/// What the menu asked for (carried out by the window, which owns the camera and files).
-#[derive(Debug, Clone, PartialEq)]
-pub enum MenuAction {
-    /// Open the document at this path.
-    Open(String),
-    /// Save (Ctrl+S).
-    Save,
-    /// Export the selected object to this mesh file.
-    Export(String),
-    /// Undo (Ctrl+Z).
-    Undo,
-    /// Redo (Ctrl+Shift+Z).
-    Redo,
-    /// Look from a standard direction.
-    Look(StandardView),
-    /// Back to the first camera (Home).
-    Home,
-    /// Frame the selection (F).
-    Frame,
-    /// Save a screenshot of the 3-D view (F12).
-    Screenshot,
-    /// Close the window.
-    Quit,
-}
+use crate::actions::{ACTIONS, Action, Menu, menu_label};
+use crate::command::Command;
 
 /// The text fields of the File menu.
 #[derive(Debug, Clone, Default)]
@@ -37,55 +14,47 @@ pub struct FileFields {
     pub export: String,
 }
 
-/// The menu bar; `files` holds File's path fields, `overlay` the frame-time overlay toggle.
-pub fn menu_bar(ui: &mut egui::Ui, files: &mut FileFields, overlay: &mut bool) -> Option<MenuAction> {
-    let mut action = None;
+/// The registry's actions of `menu` as buttons (toggles in `on` as checkboxes showing
+/// their state); the one clicked.
+fn entries(ui: &mut egui::Ui, menu: Menu, on: &[(Action, bool)]) -> Option<Command> {
+    let mut clicked = None;
+    for s in ACTIONS.iter().filter(|s| s.menu == Some(menu)) {
+        let response = match on.iter().find(|(a, _)| *a == s.action) {
+            Some(&(_, mut state)) => ui.checkbox(&mut state, menu_label(s.action)),
+            None => ui.button(menu_label(s.action)),
+        };
+        if response.on_hover_text(s.help).clicked() {
+            clicked = Some(Command::Action(s.action));
+        }
+    }
+    clicked
+}
+
+/// The menu bar; `files` holds File's path fields, `on` the state of toggled actions (the
+/// frame-time overlay, …). Returns the command asked for.
+pub fn menu_bar(ui: &mut egui::Ui, files: &mut FileFields, on: &[(Action, bool)]) -> Option<Command> {
+    let mut command = None;
     egui::MenuBar::new().ui(ui, |ui| {
         ui.menu_button("File", |ui| {
             ui.label("Open a scene or shape document:");
             let field = ui.text_edit_singleline(&mut files.open);
             if ui.button("Open").clicked() || field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
-                action = Some(MenuAction::Open(files.open.clone()));
+                command = Some(Command::Open(files.open.clone()));
             }
             ui.separator();
             ui.label("Export the selected object (.obj .stl .stla .ply .gltf .glb):");
             ui.text_edit_singleline(&mut files.export);
             if ui.button("Export").clicked() {
-                action = Some(MenuAction::Export(files.export.clone()));
+                command = Some(Command::Export(files.export.clone()));
             }
             ui.separator();
-            for (label, a) in [
-                ("Save  Ctrl+S", MenuAction::Save),
-                ("Screenshot  F12", MenuAction::Screenshot),
-                ("Quit  Ctrl+Q", MenuAction::Quit),
-            ] {
-                if ui.button(label).clicked() {
-                    action = Some(a);
-                }
-            }
+            command = entries(ui, Menu::File, on).or(command.take());
         });
-        ui.menu_button("Edit", |ui| {
-            for (label, a) in [("Undo  Ctrl+Z", MenuAction::Undo), ("Redo  Ctrl+Shift+Z", MenuAction::Redo)] {
-                if ui.button(label).clicked() {
-                    action = Some(a);
-                }
-            }
-        });
-        ui.menu_button("View", |ui| {
-            let views = [
-                ("Top  7", MenuAction::Look(StandardView::Top)),
-                ("Front  1", MenuAction::Look(StandardView::Front)),
-                ("Side  3", MenuAction::Look(StandardView::Side)),
-                ("Home", MenuAction::Home),
-                ("Frame selection  F", MenuAction::Frame),
-            ];
-            for (label, a) in views {
-                if ui.button(label).clicked() {
-                    action = Some(a);
-                }
-            }
-            ui.checkbox(overlay, "frame time");
-        });
+        for (name, menu) in [("Edit", Menu::Edit), ("View", Menu::View)] {
+            ui.menu_button(name, |ui| {
+                command = entries(ui, menu, on).or(command.take());
+            });
+        }
     });
-    action
+    command
 }

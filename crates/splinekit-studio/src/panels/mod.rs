@@ -1,10 +1,12 @@
 //! The egui panels around the 3-D view: the menu bar, Objects, Properties, Animation and
-//! the status line. Each panel reads the document as JSON and changes it only through
-//! [`crate::edit::Edit`]s, so every change can be undone and a refused value leaves the
+//! the status line, and the help overlay. Each panel reads the document as JSON and asks
+//! for changes only by queuing [`crate::command::Command`]s (edits of the document,
+//! actions of the registry), so every change can be undone and a refused value leaves the
 //! document as it was, its message next to the field.
 
 mod animation;
 mod fields;
+mod help;
 pub mod knots;
 mod menu;
 mod objects;
@@ -12,7 +14,8 @@ mod plot;
 mod properties;
 
 pub use animation::animation_panel;
-pub use menu::{FileFields, MenuAction, menu_bar};
+pub use help::help_overlay;
+pub use menu::{FileFields, menu_bar};
 pub use objects::objects_panel;
 pub use properties::properties_panel;
 

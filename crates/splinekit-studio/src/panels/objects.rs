@@ -7,6 +7,7 @@ use splinekit_scene::scenes::SceneObject;
 use splinekit_scene::{CurveDocument, SurfaceDocument};
 
 use super::fields::{read, write};
+use crate::command::{Command, FieldEdit};
 use crate::edit::Edit;
 use crate::studio::Studio;
 
@@ -24,8 +25,7 @@ pub fn objects_panel(ui: &mut egui::Ui, studio: &mut Studio) {
             let label = ui.selectable_label(studio.selected_object == Some(i), format!("{i}: {ty}"));
             studio.widgets.push((format!("object {i}"), super::rect(&label)));
             if label.clicked() {
-                studio.selected_object = Some(i);
-                studio.selected = None;
+                studio.queue(Command::SelectObject(Some(i)));
             }
         });
     }
@@ -35,16 +35,12 @@ pub fn objects_panel(ui: &mut egui::Ui, studio: &mut Studio) {
             && let Some(i) = selected
         {
             let object = Box::new(studio.scene.objects[i].clone());
-            if studio.edit(Edit::Insert { index: i + 1, object }, false) {
-                studio.selected_object = Some(i + 1);
-            }
+            studio.queue(Command::Edit(FieldEdit::selecting(Edit::Insert { index: i + 1, object }, Some(i + 1))));
         }
         if ui.add_enabled(selected.is_some(), egui::Button::new("Delete")).clicked()
             && let Some(i) = selected
-            && studio.edit(Edit::Remove { index: i }, false)
         {
-            studio.selected_object = None;
-            studio.selected = None;
+            studio.queue(Command::Edit(FieldEdit::selecting(Edit::Remove { index: i }, None)));
         }
     });
     add_menu(ui, studio);
@@ -89,9 +85,8 @@ fn add(studio: &mut Studio, shape: serde_json::Value) {
     match SceneObject::from_value(object) {
         Ok(object) => {
             let index = studio.scene.objects.len();
-            if studio.edit(Edit::Insert { index, object: Box::new(object) }, false) {
-                studio.selected_object = Some(index);
-            }
+            let edit = Edit::Insert { index, object: Box::new(object) };
+            studio.queue(Command::Edit(FieldEdit::selecting(edit, Some(index))));
         }
         Err(e) => studio.message = Some(e.to_string()),
     }

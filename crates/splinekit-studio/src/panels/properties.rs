@@ -8,11 +8,15 @@
 use serde_json::{Value, json};
 use splinekit::curve::Curve;
 use splinekit_scene::bfunctions::BFunctionDoc;
+use splinekit_scene::scenes::ColorMapDoc;
 use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument};
 
 use super::fields::{count, error_label, number, read, toggle, write};
 use super::knots::{CURVE, NET_U, NET_V, knot_style};
 use super::plot::bfunction_plot;
+use crate::actions::{ACTIONS, Action};
+use crate::command::Command;
+use crate::knot_edit::KnotTool;
 use crate::studio::Studio;
 
 /// The B-functions of the format with their default parameters.
@@ -30,12 +34,17 @@ pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
     ui.label(format!("objects[{object}]: {ty}"));
     ui.separator();
     style(ui, studio, object);
+    if matches!(studio.scene.objects[object].shape, ShapeDocument::Surface(_)) {
+        color_map(ui, studio, object);
+    }
     ui.separator();
     match ty.as_str() {
         "bspline" | "nurbs" => {
             count(ui, studio, object, "/shape/degree", "degree", 3);
             knot_style(ui, studio, object, CURVE, "knots");
+            knot_edits(ui, studio);
         }
+        "bezier" | "rational_bezier" => knot_edits(ui, studio),
         "bspline_surface" | "nurbs_surface" => {
             count(ui, studio, object, "/shape/degree_u", "degree u", 3);
             count(ui, studio, object, "/shape/degree_v", "degree v", 3);
@@ -47,6 +56,49 @@ pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
         _ => {}
     }
     selected_handle(ui, studio);
+}
+
+/// The registry's panel actions (insert and remove a knot, elevate the degree) as
+/// buttons, and the tolerance of a removal.
+fn knot_edits(ui: &mut egui::Ui, studio: &mut Studio) {
+    ui.horizontal_wrapped(|ui| {
+        for s in ACTIONS.iter().filter(|s| s.panel) {
+            let armed = match s.action {
+                Action::InsertKnot => studio.knot_tool == Some(KnotTool::Insert),
+                Action::RemoveKnot => studio.knot_tool == Some(KnotTool::Remove),
+                _ => false,
+            };
+            let button = ui.add(egui::Button::new(s.label).selected(armed)).on_hover_text(s.help);
+            studio.widgets.push((s.label.to_lowercase(), super::rect(&button)));
+            if button.clicked() {
+                studio.queue(Command::Action(s.action));
+            }
+        }
+    });
+    ui.horizontal(|ui| {
+        let name = ui.label("removal tolerance");
+        ui.add(egui::DragValue::new(&mut studio.knot_tolerance).range(0.0..=1e6).speed(1e-4).max_decimals(6))
+            .labelled_by(name.id);
+    });
+}
+
+/// The colour map of a surface: none, curvature, parameter, zebra stripes or isophotes.
+fn color_map(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
+    let current = studio.scene.objects[object].style.color_map;
+    let mut chosen = current;
+    let combo = egui::ComboBox::from_label("colour map")
+        .selected_text(current.map_or("none", ColorMapDoc::name))
+        .show_ui(ui, |ui| {
+            ui.selectable_value(&mut chosen, None, "none");
+            for m in ColorMapDoc::ALL {
+                ui.selectable_value(&mut chosen, Some(m), m.name());
+            }
+        });
+    studio.widgets.push(("colour map".into(), super::rect(&combo.response)));
+    if chosen != current {
+        write(studio, object, "/color_map", chosen.map(|m| m.name().into()));
+    }
+    error_label(ui, studio, "/color_map");
 }
 
 fn style(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
@@ -192,7 +244,7 @@ fn bfunction(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
 }
 
 /// The selected handle's value for exact entry (translation of a local piece, or the
-/// coordinates of a control point).
+/// coordinates of a control point and, of NURBS and rational Béziers, its weight).
 fn selected_handle(ui: &mut egui::Ui, studio: &mut Studio) {
     let Some(h) = studio.selected.clone() else { return };
     ui.separator();
@@ -217,6 +269,9 @@ fn selected_handle(ui: &mut egui::Ui, studio: &mut Studio) {
         write(studio, h.object, &coords, Some(values.into()));
     }
     error_label(ui, studio, &coords);
+    if let Some((pointer, w)) = crate::gesture::weight_of(&studio.scene, &h) {
+        number(ui, studio, h.object, &pointer, "weight", w);
+    }
 }
 
 /// The rest-frame coordinates of a local Bézier's control point for exact entry: a change

@@ -1,0 +1,88 @@
+//! Knot and weight edits from the window, without a window (issue 22): the Properties
+//! panel's Insert knot arms the tool, a click on the curve inserts a knot there with the
+//! curve unchanged (one undo step), E raises the degree, a W-drag changes one weight.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use serde_json::Value;
+use splinekit_render::RenderScene;
+use splinekit_studio::actions::Action;
+use splinekit_studio::gesture::GestureKind;
+use splinekit_studio::handles::HandleKind;
+use splinekit_studio::knot_edit::{KnotTool, curve_samples};
+use splinekit_studio::panels::properties_panel;
+use splinekit_studio::studio::Studio;
+use splinekit_studio::view_camera::Projector;
+
+const NURBS: &str = r#"{"type": "scene", "objects": [{"shape": {"type": "nurbs", "degree": 2,
+    "knots": [0, 0, 0, 1, 2, 2, 2], "control_points": [[0, 0], [1, 2], [3, -1], [4, 1]],
+    "weights": [1, 0.7, 2, 1]}, "control_net": true}], "size": [600, 600]}"#;
+
+fn studio() -> (Studio, Projector) {
+    let mut studio = Studio::new(splinekit_studio::document::parse(NURBS).expect("valid"), None);
+    studio.selected_object = Some(0);
+    let rs: RenderScene = studio.render_scene((600, 600), false).expect("composes");
+    (studio, Projector::new(&rs, (600, 600)))
+}
+
+fn shape(studio: &Studio) -> Value {
+    studio.scene.objects[0].to_value()["shape"].clone()
+}
+
+fn samples(studio: &Studio) -> Vec<(f64, [f64; 3])> {
+    curve_samples(&studio.scene.objects[0].shape, 300).expect("samples")
+}
+
+#[test]
+fn the_panel_arms_the_tool_and_a_click_on_the_curve_inserts_a_knot_there() {
+    let (studio, projector) = studio();
+    let before = samples(&studio);
+    let mut h = Harness::new_ui_state(
+        |ui, s: &mut Studio| {
+            properties_panel(ui, s);
+            s.run_commands();
+        },
+        studio,
+    );
+    h.run();
+    h.get_by_label("Insert knot").click();
+    h.run();
+    assert_eq!(h.state().knot_tool, Some(KnotTool::Insert));
+    let studio = h.state_mut();
+    // A click off the curve keeps the tool; one on the curve at t ≈ 1.4 inserts there.
+    studio.knot_click(KnotTool::Insert, &projector, [1.0, 1.0]);
+    assert_eq!(shape(studio)["knots"].as_array().map(Vec::len), Some(7));
+    let (t, p) = before[210];
+    let (px, _) = projector.project(p).expect("in view");
+    studio.knot_click(KnotTool::Insert, &projector, px);
+    let knots: Vec<f64> = serde_json::from_value(shape(studio)["knots"].clone()).expect("knots");
+    assert_eq!(knots.len(), 8);
+    assert!(knots.iter().any(|k| (k - t).abs() < 0.01), "{knots:?} has {t}");
+    for ((_, a), (_, b)) in before.iter().zip(samples(studio)) {
+        assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-12), "the curve is unchanged");
+    }
+    studio.undo();
+    assert_eq!(shape(studio)["knots"].as_array().map(Vec::len), Some(7), "one undo step");
+    studio.run_action(Action::ElevateDegree);
+    assert_eq!(shape(studio)["degree"], serde_json::json!(3));
+    for ((_, a), (_, b)) in before.iter().zip(samples(studio)) {
+        assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-9), "the curve is unchanged");
+    }
+}
+
+#[test]
+fn a_w_drag_changes_one_weight_and_the_panel_shows_it() {
+    let (mut studio, projector) = studio();
+    let h = studio.handles.iter().find(|h| h.kind == HandleKind::ControlPoint(1, "control_points")).expect("shown");
+    let (p, _) = projector.project(h.position).expect("in view");
+    assert!(studio.begin_drag(&projector, p, GestureKind::Weight));
+    studio.drag_to(&projector, [p[0], p[1] - 100.0]);
+    studio.end_drag();
+    let w: Vec<f64> = serde_json::from_value(shape(&studio)["weights"].clone()).expect("weights");
+    assert!((w[1] - 0.7 * std::f64::consts::E).abs() < 1e-12, "{w:?}");
+    assert_eq!((w[0], w[2], w[3]), (1.0, 2.0, 1.0));
+    assert_eq!(shape(&studio)["control_points"][1], serde_json::json!([1.0, 2.0]), "the point stays");
+    let mut h = Harness::new_ui_state(|ui, s: &mut Studio| properties_panel(ui, s), studio);
+    h.run();
+    assert!(h.query_by_label("weight").is_some());
+}
