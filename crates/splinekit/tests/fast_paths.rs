@@ -560,3 +560,56 @@ fn grid_normals_every_width_in_each_direction() {
         }
     }
 }
+
+/// Blending-spline surfaces: the Bézier grid path (`eval_grid_with_normals`: Bernstein
+/// bases once per row and column, nets contracted once per column) against the surface's
+/// general evaluation at each point (patches evaluated, then blended by the Leibniz rule),
+/// open and closed, patch degrees 1–5 each way.
+fn check_blending_grid(model: usize, counts: (usize, usize), degrees: (usize, usize), closed: (bool, bool), order: Order, seed: u64) {
+    use splinekit::basis::BFunction;
+    use splinekit::blend::{BlendingSplineSurface, BlendingSurfaceOptions, PatchKind};
+    use splinekit::surface::model::{Plane, Sphere, Torus};
+    use std::sync::Arc;
+    let model: Arc<dyn Surface<3>> = match model {
+        0 => Arc::new(Torus::new(3.0, 1.0).unwrap()),
+        1 => Arc::new(Sphere::new(1.5).unwrap()),
+        _ => Arc::new(Plane::new(Point::<3>::zeros(), Point::<3>::new(2.0, 0.0, 0.5), Point::<3>::new(0.0, 1.0, 0.0)).unwrap()),
+    };
+    let options = BlendingSurfaceOptions {
+        local: PatchKind::Bezier(degrees.0, degrees.1),
+        bfunction: BFunction::erbs_default(),
+        closed_u: Some(closed.0),
+        closed_v: Some(closed.1),
+    };
+    let s = BlendingSplineSurface::from_model(model, counts, &options).unwrap();
+    let mut rng = Rng(seed);
+    let axis = |d: splinekit::Interval| PlainAxis::open(1, &[d.start, d.end]);
+    let us = parameters(&mut rng, &axis(s.domain_u()), 4, order);
+    let vs = parameters(&mut rng, &axis(s.domain_v()), 3, order);
+    let (mut points, mut normals) = (vec![Point::<3>::zeros(); us.len() * vs.len()], vec![Point::<3>::zeros(); us.len() * vs.len()]);
+    s.eval_grid_with_normals(&us, &vs, &mut points, &mut normals);
+    let mut out = [Point::<3>::zeros(); 4];
+    for (a, &u) in us.iter().enumerate() {
+        for (b, &v) in vs.iter().enumerate() {
+            let k = a * vs.len() + b;
+            s.eval_partials(u, v, 1, 1, &mut out);
+            let c = |p: &Point<3>| vec![p[0], p[1], p[2]];
+            let what = || format!("blending grid {counts:?} {degrees:?} closed {closed:?} at ({u}, {v})");
+            assert_close(&points[k], &c(&out[0]), 1e-12, &what);
+            let n = (normals[k] != Point::<3>::zeros()).then_some(normals[k]);
+            check_normal(n, &[c(&out[0]), c(&out[2]), c(&out[1])], &what);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(6), failure_persistence: None, ..ProptestConfig::default() })]
+
+    #[test]
+    fn blending_surface_grids_match_their_general_evaluation(
+        model in 0usize..3, nu in 3usize..=5, nv in 3usize..=5, du in 1usize..=5, dv in 1usize..=5,
+        closed: (bool, bool), order in order_kind(), seed: u64,
+    ) {
+        check_blending_grid(model, (nu, nv), (du, dv), closed, order, seed);
+    }
+}
