@@ -104,7 +104,8 @@ fn json_to_step(args: &ConvertArgs) -> Result<()> {
     let doc = SceneOrShape::from_json(&text).map_err(|e| anyhow!("{e}"))?;
     let name = stem(&args.input);
     let (step, exported) = export_document(&doc, &name, args.tolerance, &header(&name)).map_err(|e| anyhow!("{e}"))?;
-    splinekit_scene::write_file(&args.output, step.as_bytes()).map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
+    splinekit_scene::write_file(&args.output, step.as_bytes())
+        .map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
     for e in &exported {
         eprintln!("{}: {}", e.item.name, describe(e));
     }

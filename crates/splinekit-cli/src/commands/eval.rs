@@ -288,7 +288,9 @@ fn prepare(doc: ShapeDocument, args: &EvalArgs, order: usize) -> Result<Answer> 
             let dimension = c.dimension()?;
             check_curve_request(&curve_params(at.as_deref(), samples, arc_length), order, dimension, &cost)?;
             let curve = c.build()?;
-            Ok(Box::new(move |out: &mut JsonOut| curve.visit(EvalCurve { params: curve_params(at.as_deref(), samples, arc_length), order, out })))
+            Ok(Box::new(move |out: &mut JsonOut| {
+                curve.visit(EvalCurve { params: curve_params(at.as_deref(), samples, arc_length), order, out })
+            }))
         }
         ShapeDocument::Surface(s) => {
             if args.samples.is_some() || args.arc_length {

@@ -181,10 +181,11 @@ impl KnotVector {
 #[inline]
 pub fn find_span(knots: &[f64], degree: usize, n: usize, t: f64, side: Side) -> usize {
     let interior = &knots[degree + 1..n];
-    let mut span = degree + match side {
-        Side::Right => interior.partition_point(|&k| k <= t),
-        Side::Left => interior.partition_point(|&k| k < t),
-    };
+    let mut span = degree
+        + match side {
+            Side::Right => interior.partition_point(|&k| k <= t),
+            Side::Left => interior.partition_point(|&k| k < t),
+        };
     // The search lands on an empty span only at an end of the domain whose knot is repeated
     // inside [t_p, t_n] (unclamped knots: t_{n−1} = t_n, or t_p = t_{p+1}); the limit there
     // is the last (first) non-empty span's.

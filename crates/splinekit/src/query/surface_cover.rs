@@ -196,7 +196,9 @@ impl<const D: usize> SurfacePatch<D> {
     pub fn halves<S: Surface<D> + ?Sized>(&self, surface: &S, along_v: bool) -> [Self; 2] {
         let (u, v) = (self.u(), self.v());
         std::array::from_fn(|h| {
-            let half = |i: Interval| if h == 0 { Interval::new(i.start, i.lerp(0.5)) } else { Interval::new(i.lerp(0.5), i.end) };
+            let half = |i: Interval| {
+                if h == 0 { Interval::new(i.start, i.lerp(0.5)) } else { Interval::new(i.lerp(0.5), i.end) }
+            };
             if along_v { Self::new(surface, u, half(v)) } else { Self::new(surface, half(u), v) }
         })
     }

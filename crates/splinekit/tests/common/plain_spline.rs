@@ -104,9 +104,8 @@ impl PlainAxis {
         let k = &self.knots;
         let m = k.len();
         // Degree 0: the indicator of the span, derivatives 0.
-        let mut d: Vec<Vec<f64>> = (0..=order)
-            .map(|j| (0..m - 1).map(|i| if j == 0 && i == span { 1.0 } else { 0.0 }).collect())
-            .collect();
+        let mut d: Vec<Vec<f64>> =
+            (0..=order).map(|j| (0..m - 1).map(|i| if j == 0 && i == span { 1.0 } else { 0.0 }).collect()).collect();
         let quotient = |x: f64, y: f64| if y != 0.0 { x / y } else { 0.0 };
         for q in 1..=self.degree {
             let mut next = vec![vec![0.0; m - q - 1]; order + 1];
@@ -136,7 +135,14 @@ pub fn choose(n: usize, k: usize) -> f64 {
 
 /// Σ_i D^k N_i(t) P_i for k ≤ order (points as coordinate vectors), with the weights w_i
 /// when given (then the rational curve's derivatives).
-pub fn curve(axis: &PlainAxis, points: &[Vec<f64>], weights: Option<&[f64]>, t: f64, side: Limit, order: usize) -> Vec<Vec<f64>> {
+pub fn curve(
+    axis: &PlainAxis,
+    points: &[Vec<f64>],
+    weights: Option<&[f64]>,
+    t: f64,
+    side: Limit,
+    order: usize,
+) -> Vec<Vec<f64>> {
     let dim = points[0].len();
     let b = axis.basis_at(t, side, order);
     let w = |i: usize| weights.map_or(1.0, |w| w[axis.point_index(i)]);
