@@ -400,12 +400,15 @@ for n, expect in ((100, OK), (10000, EITHER)):
 scene = {"type": "scene", "objects": [{"shape": {"type": "sphere"}, "style": {"density": 2048}} for _ in range(100)]}
 case("render 100 spheres at density 2048", ["render", doc_file("dense_scene.json", scene), "-o", out("dense.png")], REFUSED,
      "objects", output=out("dense.png"))
-for size, expect in (("64x48", OK), ("0x10", REFUSED), ("9000x9000", REFUSED), ("8192x8192", REFUSED), ("abc", REFUSED),
+# 8192x8192, the documented largest image, fits the default budget (issue 20): it is a
+# --full case below (about 40 s and 3 GB in a debug build).
+for size, expect in (("64x48", OK), ("0x10", REFUSED), ("9000x9000", REFUSED), ("abc", REFUSED),
                      ("18446744073709551616x2", REFUSED)):
     o = out(f"render_{size}.png")
     case(f"render --size {size}", ["render", torus, "-o", o, "--size", size], expect, "--size", output=o)
+# One frame of the largest image fits the budget; twenty do not, and the frames are named.
 case("animate --size 8192x8192", ["animate", "examples/scenes/beating_heart.json", "-o", out("big.gif"), "--size", "8192x8192"],
-     REFUSED, "--size", output=out("big.gif"))
+     REFUSED, "frames of 8192x8192", output=out("big.gif"))
 case("animate 4 frames", ["animate", "examples/scenes/beating_heart.json", "-o", out("heart.gif"), "--size", "96x64",
                           "--frames", "4"], OK, output=out("heart.gif"))
 for frames in ("0", "100000000", "-2", "nan"):
@@ -461,6 +464,42 @@ cyc_step = doc_file("cycle.step", "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=LI
 case("convert a STEP file with a cycle", ["convert", cyc_step, "-o", out("cycle.json")], REFUSED, "#", output=out("cycle.json"))
 case("convert a truncated STEP file", ["convert", doc_file("trunc.step", "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=CART"),
                                        "-o", out("trunc.json")], REFUSED, "line", output=out("trunc.json"))
+
+# ---------------------------------------------------------------- the edges of issue 20
+# A degree-5 surface in v (the grid's row path overran an 8-value array), a line through a
+# sphere's poles, a horn torus in STL, shapes with nothing to mesh, a scene where one shape
+# was expected, the largest documented image, a full device behind a link.
+deg5 = doc_file("degree5.json", {"type": "bspline_surface", "degree_u": 3, "degree_v": 5,
+                                 "knots_u": [0] * 4 + [1] * 4, "knots_v": [0] * 6 + [1] * 6,
+                                 "control_points": [[[i, j, math.sin(0.7 * (i + j))] for j in range(6)] for i in range(4)]})
+case("tessellate a degree-5 surface", ["tessellate", deg5, "-o", out("deg5.obj")], OK, output=out("deg5.obj"))
+case("eval a degree-5 surface on a grid", ["eval", deg5, "--grid", "9,9", "--derivatives", "1"], OK)
+case("render a degree-5 surface", ["render", deg5, "-o", out("deg5.png"), "--size", "64x48"], OK, output=out("deg5.png"))
+axis = doc_file("axis.json", {"type": "line", "from": [0, 0, -3], "to": [0, 0, 3]})
+case("intersect a line through the poles with a sphere", ["intersect", axis, sphere], OK)
+horn = doc_file("horn.json", {"type": "torus", "major_radius": 1, "minor_radius": 1})
+case("tessellate a horn torus to STL", ["tessellate", horn, "-o", out("horn.stl")], OK, output=out("horn.stl"))
+case("tessellate a horn torus to glb", ["tessellate", horn, "-o", out("horn.glb")], OK, output=out("horn.glb"))
+covered = doc_file("covered.json", {"type": "trimmed", "surface": {"type": "plane"}, "holes": [
+    {"type": "catmull_rom", "points": [[-0.5, -0.5], [1.5, -0.5], [1.5, 1.5], [-0.5, 1.5]], "closed": True}]})
+case("tessellate a trimmed surface its holes cover", ["tessellate", covered, "-o", out("covered.obj")], REFUSED,
+     "trim leaves nothing", output=out("covered.obj"))
+point_patch = doc_file("point_patch.json", {"type": "bezier_surface", "control_points": [[[1, 1, 1]] * 2] * 2})
+case("tessellate a Bézier patch that is one point", ["tessellate", point_patch, "-o", out("point.obj")], REFUSED,
+     "single point", output=out("point.obj"))
+pieces = doc_file("pieces.json", {"type": "scene", "objects": [{"shape": {"type": "circle"}},
+                                                               {"shape": {"type": "line", "from": [0, 0], "to": [1, 1]}}]})
+case("eval a scene of pieces (offset's output)", ["eval", pieces, "--samples", "100", "--derivatives", "2"], OK)
+case("eval a scene with --grid", ["eval", pieces, "--grid", "3,3"], REFUSED, "objects[0].shape: --grid")
+case("refine a scene", ["refine", pieces, "--elevate", "1"], REFUSED, "a scene of 2 objects")
+case("render the largest documented image, 8192x8192", ["render", sphere, "-o", out("huge.png"), "--size", "8192x8192"], OK,
+     output=out("huge.png"), full=True)
+case("render one pixel past the largest image", ["render", sphere, "-o", out("past.png"), "--size", "8193x8193"], REFUSED,
+     "--size", output=out("past.png"))
+if os.path.exists("/dev/full"):
+    full_json = out("full.json")
+    os.symlink("/dev/full", full_json)
+    case("eval into a full device behind a link", ["eval", circle, "--samples", "5000", "-o", full_json], REFUSED, "-o")
 
 # ---------------------------------------------------------------- malformed documents, every command
 malformed = ['', '{', '[]', '{"type":"nope"}', '{"type":"bspline"}', '{"type":"circle","radius":"1"}',

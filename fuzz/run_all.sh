@@ -9,7 +9,7 @@ mkdir -p logs
 export RUSTC_BOOTSTRAP=1
 sanitizer=${FUZZ_SANITIZER:-address}
 cargo fuzz build -O -s "$sanitizer"
-for target in document evaluate obj_subdivision mesh_writers; do
+for target in document evaluate obj_subdivision mesh_writers fast_paths; do
     mkdir -p "corpus/$target"
     cargo fuzz run -O -s "$sanitizer" "$target" "corpus/$target" "seeds/$target" -- \
         -runs="$runs" -max_total_time="$seconds" -max_len=8192 -rss_limit_mb=2048 -timeout=20 \

@@ -36,10 +36,18 @@ pub fn read_text(path: &str, what: &str) -> Result<String> {
     Ok(text)
 }
 
-/// Reads and parses a shape document.
+/// Reads and parses a shape document; a scene (what `splinekit offset` prints for an
+/// offset of several pieces) is refused with its object count, since the command answers
+/// for one shape (`splinekit eval` takes scenes and answers per object).
 pub fn read_shape(path: &str) -> Result<ShapeDocument> {
     let text = read_text(path, "SHAPE")?;
-    Ok(ShapeDocument::from_json(&text)?)
+    match splinekit_scene::SceneOrShape::from_json(&text)? {
+        splinekit_scene::SceneOrShape::Shape(doc) => Ok(doc),
+        splinekit_scene::SceneOrShape::Scene(scene) => bail!(
+            "SHAPE: a scene of {} objects, but this command takes one shape (pick one of its \"objects\"; `splinekit eval` answers for each)",
+            scene.objects.len()
+        ),
+    }
 }
 
 /// Reads points: a JSON array of points (or `{"points": [...]}`), or CSV text with one

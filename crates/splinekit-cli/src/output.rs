@@ -3,8 +3,11 @@
 //! Large results are streamed: [`JsonOut`] writes numbers as they come (each checked to
 //! be finite, since JSON has no infinity and serde_json would print `null`), through a
 //! buffer, so the memory of the output does not grow with the number of values. A write
-//! error, or a value that is not finite, ends the command with exit status 2; a partly
-//! written output file is removed. Standard output is held in memory up to
+//! error, or a value that is not finite, ends the command with exit status 2. Files are
+//! written through [`splinekit_scene::OutputFile`]: a regular file is replaced only when the
+//! whole result is written (a failure leaves the old file as it was and removes only the
+//! temporary file), and devices, FIFOs and symbolic links are written in place and never
+//! removed. Standard output is held in memory up to
 //! [`STDOUT_HOLD`] bytes, so a command that fails before producing that much prints
 //! nothing at all (CONTRACT.md section 3); only a larger result that fails part-way is
 //! left cut off mid-way (not valid JSON).
@@ -13,6 +16,7 @@ use std::io::{BufWriter, Write};
 
 use anyhow::{Result, anyhow, bail};
 use serde_json::Value;
+use splinekit_scene::OutputFile;
 
 /// Fails if any number in `value` is not finite (serde_json would print it as null),
 /// naming `what` the value is and the path inside it.
@@ -58,7 +62,7 @@ pub const STDOUT_HOLD: usize = 16 << 20;
 enum Sink {
     /// Standard output: bytes held until [`STDOUT_HOLD`] is reached or the output finishes.
     Stdout(Vec<u8>),
-    File(BufWriter<std::fs::File>, String),
+    File(BufWriter<OutputFile>, String),
 }
 
 /// A streaming JSON writer (see the module documentation).
@@ -73,7 +77,7 @@ impl JsonOut {
         const BUFFER: usize = 1 << 16;
         let sink = match output {
             Some(path) if path != "-" => {
-                let file = std::fs::File::create(path).map_err(|e| anyhow!("-o: cannot write '{path}': {e}"))?;
+                let file = OutputFile::create(path).map_err(|e| anyhow!("-o: cannot write '{path}': {e}"))?;
                 Sink::File(BufWriter::with_capacity(BUFFER, file), path.to_string())
             }
             _ => Sink::Stdout(Vec::with_capacity(BUFFER)),
@@ -83,10 +87,8 @@ impl JsonOut {
 
     fn fail(&mut self, e: std::io::Error) -> anyhow::Error {
         match self.sink.take() {
-            Some(Sink::File(_, path)) => {
-                let _ = std::fs::remove_file(&path);
-                anyhow!("-o: cannot write '{path}': {e}")
-            }
+            // Dropping the output removes its temporary file, never the target.
+            Some(Sink::File(_, path)) => anyhow!("-o: cannot write '{path}': {e}"),
             _ => anyhow!("cannot write standard output: {e}"),
         }
     }
@@ -131,27 +133,24 @@ impl JsonOut {
         self.raw(b"]")
     }
 
-    /// Drops the output after an error: a partly written file is removed, standard output
-    /// still held back is never written.
+    /// Drops the output after an error: a file being written is abandoned (the target left
+    /// as it was), standard output still held back is never written.
     pub fn abandon(&mut self) {
-        if let Some(Sink::File(_, path)) = self.sink.take() {
-            let _ = std::fs::remove_file(&path);
-        }
+        self.sink = None;
     }
 
-    /// Flushes everything; a write error here is an error too.
+    /// Flushes everything and puts a file in place; a write error here is an error too.
     pub fn finish(mut self) -> Result<()> {
-        let result = match self.sink.as_mut() {
-            Some(Sink::Stdout(held)) => write_stdout(held).and_then(|()| std::io::stdout().flush()),
-            Some(Sink::File(w, _)) => w.flush(),
-            None => return Ok(()),
-        };
-        match result {
-            Ok(()) => {
-                self.sink = None;
-                Ok(())
-            }
-            Err(e) => Err(self.fail(e)),
+        match self.sink.take() {
+            Some(Sink::Stdout(mut held)) => write_stdout(&mut held)
+                .and_then(|()| std::io::stdout().flush())
+                .map_err(|e| anyhow!("cannot write standard output: {e}")),
+            Some(Sink::File(w, path)) => w
+                .into_inner()
+                .map_err(|e| e.into_error())
+                .and_then(OutputFile::commit)
+                .map_err(|e| anyhow!("-o: cannot write '{path}': {e}")),
+            None => Ok(()),
         }
     }
 }

@@ -19,11 +19,23 @@ use splinekit::{Error, Result};
 use crate::triangle_mesh::TriangleMesh;
 
 /// Runs the steps above; fails when nothing is left (a grid too coarse for the surface).
+/// A surface that is one point wherever the mesh sampled it (a Bézier patch whose control
+/// points are all one point) is named as such, not blamed on `field`.
 pub(crate) fn finish(mesh: &mut TriangleMesh, field: &str) -> Result<()> {
+    let single_point = match mesh.bounds() {
+        Some((lo, hi)) if lo == hi => Some(lo),
+        _ => None,
+    };
     collapse_single_precision_edges(mesh);
     mesh.triangles.retain(|[a, b, c]| a != b && b != c && a != c);
     drop_unused_vertices(mesh);
     if mesh.triangles.is_empty() {
+        if let Some(p) = single_point {
+            return Err(Error::invalid(
+                "surface",
+                format!("the surface is the single point ({}, {}, {}): it has no area to mesh", p[0], p[1], p[2]),
+            ));
+        }
         return Err(Error::invalid(
             field,
             "too coarse for this surface: every triangle collapsed to a point or a line",
@@ -46,7 +58,9 @@ fn collapse_single_precision_edges(mesh: &mut TriangleMesh) {
         .positions
         .iter()
         .map(|p| {
-            let p = p.map(|x| x as f32);
+            // `+ 0.0` turns −0 into +0: one point for the file, though not bit for bit (the
+            // pinch of a horn torus has both).
+            let p = p.map(|x| x as f32 + 0.0);
             p.iter().all(|x| x.is_finite()).then(|| p.map(f32::to_bits))
         })
         .collect();

@@ -239,6 +239,12 @@ fn triangulate<const D: usize, S: Surface<D> + ?Sized>(
         let tri = vs.map(|v| vertices.id(&mut mesh, v.fix().index(), [v.position().x, v.position().y]));
         mesh.triangles.push(tri);
     }
+    if mesh.triangles.is_empty() {
+        return Err(Error::invalid(
+            "holes",
+            "the trim leaves nothing of the surface: its holes cover the whole region inside the outer loop",
+        ));
+    }
     crate::mesh_cleanup::finish(&mut mesh, field)?;
     Ok(mesh)
 }

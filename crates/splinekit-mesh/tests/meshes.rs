@@ -333,3 +333,51 @@ fn adaptive_meshes_estimate_their_size_before_refining() {
     assert!(refused.unwrap_err().to_string().contains("estimated"));
     assert!(started.elapsed().as_secs_f64() < 5.0, "refusal is immediate (probe only)");
 }
+
+/// Issue 20: a horn torus (major radius = minor radius) meets itself at the centre, where
+/// the tube's innermost vertices are one point in 32-bit floats (−0 and +0 among them).
+/// STL and glTF used to refuse its mesh; now the mesher merges them (−0 and +0 are one
+/// point) and the writers leave out any triangle whose corners still meet in f32 (a mesh
+/// made elsewhere), writing the rest.
+#[test]
+fn a_horn_torus_is_written_without_collapsed_triangles() {
+    let torus = Torus::new(1.0, 1.0).unwrap();
+    let mut m = regular(&torus, 48, 24, MeshOptions::default()).unwrap();
+    let check = |m: &TriangleMesh, expected: usize| {
+        for bytes in [
+            common::bytes(|out| stl::write_stl_binary(m, out)),
+            common::bytes(|out| stl::write_stl_ascii(m, "horn", out)),
+        ] {
+            let tris = stl::read_stl(&bytes).unwrap();
+            assert_eq!(tris.len(), expected);
+            for (_, c) in &tris {
+                assert!(c[0] != c[1] && c[1] != c[2] && c[2] != c[0], "{c:?}");
+                for p in c {
+                    // (√(x² + y²) − R)² + z² = r² with R = r = 1.
+                    let (x, y, z) = (p[0] as f64, p[1] as f64, p[2] as f64);
+                    let q = (x.hypot(y) - 1.0).powi(2) + z * z;
+                    assert!((q - 1.0).abs() < 1e-6, "{p:?} is off the torus");
+                }
+            }
+        }
+        let glb = GltfScene::single("horn", GltfGeometry::Mesh(m.clone()), [1.0; 4]).to_glb().unwrap();
+        assert!(glb.len() > 1000);
+    };
+    let whole = m.triangles.len();
+    check(&m, whole);
+    // A sliver at the pinch whose two corners differ only below f32's resolution: left out.
+    let n = m.positions.len() as u32;
+    m.positions.extend([[0.0, 0.0, 0.0], [1e-50, 0.0, 0.0], [0.0, 0.0, 2.0]]);
+    m.normals.extend([[0.0, 0.0, 1.0]; 3]);
+    if !m.uvs.is_empty() {
+        m.uvs.extend([[0.0, 0.0]; 3]);
+    }
+    if !m.colors.is_empty() {
+        m.colors.extend([[1.0; 4]; 3]);
+    }
+    m.triangles.push([n, n + 1, n + 2]);
+    check(&m, whole);
+    // The formats of f64 (OBJ) keep it.
+    let back = obj::read_obj(&common::text(|out| obj::write_obj(&m, "horn", out))).unwrap();
+    assert_eq!(back.triangles.len(), whole + 1);
+}

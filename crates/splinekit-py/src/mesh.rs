@@ -87,7 +87,8 @@ impl PyMesh {
             }
         }
         .or_value_error()?;
-        std::fs::write(&path, bytes).map_err(|e| value_error(format!("path: cannot write '{}': {e}", path.display())))
+        splinekit_scene::write_file(&path, &bytes)
+            .map_err(|e| value_error(format!("path: cannot write '{}': {e}", path.display())))
     }
     fn __repr__(&self) -> String {
         format!("<splinekit Mesh of {} vertices, {} triangles>", self.mesh.positions.len(), self.mesh.triangles.len())

@@ -62,7 +62,8 @@ fn draw(
             renderer.render(&rs, size.0, size.1).map_err(|e| PyRuntimeError::new_err(format!("render: {e}")))?;
         Ok(image.to_png())
     })?;
-    std::fs::write(path, png).map_err(|e| value_error(format!("path: cannot write '{}': {e}", path.display())))
+    splinekit_scene::write_file(path, &png)
+        .map_err(|e| value_error(format!("path: cannot write '{}': {e}", path.display())))
 }
 
 #[cfg(not(feature = "render"))]

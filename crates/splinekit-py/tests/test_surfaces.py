@@ -59,6 +59,28 @@ def test_paired_evaluation_shapes_and_normals():
     assert s.weights.shape == (8, 7) and len(s.knots) == 2
 
 
+def test_grid_normals_of_high_degrees_match_ndbspline():
+    # Issue 20: degree 4 or 5 in v ended in "range end index 10 out of range for slice of
+    # length 8" on the grid path of normals; every degree up to 7 each way against scipy.
+    rng = np.random.default_rng(20)
+    for p, q in [(3, 4), (3, 5), (5, 5), (2, 7), (7, 2)]:
+        nu, nv = p + 3, q + 2
+        ku = np.concatenate([[0] * (p + 1), np.sort(rng.uniform(0, 1, nu - p - 1)), [1] * (p + 1)])
+        kv = np.concatenate([[0] * (q + 1), np.sort(rng.uniform(0, 1, nv - q - 1)), [1] * (q + 1)])
+        cp = rng.normal(size=(nu, nv, 3))
+        s = sk.BSplineSurface(ku, kv, cp, p, q)
+        ref = NdBSpline((ku, kv), cp, (p, q))
+        u, v = np.linspace(0, 1, 7), np.linspace(0, 1, 6)
+        uu, vv = np.meshgrid(u, v, indexing="ij")
+        xi = np.stack([uu.ravel(), vv.ravel()], axis=1)
+        cross = np.cross(ref(xi, nu=(1, 0)), ref(xi, nu=(0, 1))).reshape(7, 6, 3)
+        want = cross / np.linalg.norm(cross, axis=2)[:, :, None]
+        points, normals = s.points_and_normals(u, v)
+        np.testing.assert_allclose(points, ref(xi).reshape(7, 6, 3), atol=1e-10)
+        np.testing.assert_allclose(normals, want, atol=1e-8)
+        np.testing.assert_allclose(s.normals(u, v), want, atol=1e-8)
+
+
 def test_bezier_surface_and_closest_point():
     cp = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]
     s = sk.BezierSurface(cp)

@@ -31,9 +31,10 @@ impl Image {
         }
         out
     }
-    /// Writes a PNG file.
+    /// Writes a PNG file (through [`splinekit_scene::write_file`]: a failure leaves what was
+    /// at `path` as it was).
     pub fn save_png(&self, path: &std::path::Path) -> std::io::Result<()> {
-        std::fs::File::create(path)?.write_all(&self.to_png())
+        splinekit_scene::write_file(path, &self.to_png())
     }
     /// Reads a PNG (8-bit RGBA or RGB).
     pub fn from_png(bytes: &[u8]) -> Result<Image, String> {

@@ -26,8 +26,9 @@ pub enum RenderError {
     Readback(String),
 }
 
-/// Largest image side.
-pub const MAX_SIDE: u32 = 8192;
+/// Largest image side (its one home is the budget's [`splinekit_scene::budget::MAX_IMAGE_SIDE`],
+/// which the default work budget admits as a square image).
+pub const MAX_SIDE: u32 = splinekit_scene::budget::MAX_IMAGE_SIDE;
 const SAMPLES: u32 = 4;
 const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;

@@ -20,7 +20,8 @@ use crate::error::{DocumentError, Result};
 mod render;
 
 pub use render::{
-    MAX_DRAWN_CURVE_POINTS, MAX_RENDER_BUFFER, RENDER_BYTES_PER_PIXEL, RENDER_WORK_PER_PIXEL, RenderFields,
+    MAX_DRAWN_CURVE_POINTS, MAX_IMAGE_SIDE, MAX_RENDER_BUFFER, RENDER_BYTES_PER_PIXEL, RENDER_WORK_PER_PIXEL,
+    RenderFields,
 };
 
 /// Memory in bytes and work in operations.

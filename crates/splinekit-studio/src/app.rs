@@ -221,8 +221,7 @@ impl App {
         let text = report.to_string();
         if text != self.last_report {
             // Written whole to a temporary file, then renamed: a reader never sees half.
-            let tmp = path.with_extension("tmp");
-            if std::fs::write(&tmp, &text).and_then(|()| std::fs::rename(&tmp, path)).is_ok() {
+            if splinekit_scene::write_file(path, text.as_bytes()).is_ok() {
                 self.last_report = text;
             }
         }
@@ -254,7 +253,7 @@ impl App {
             let scene: Vec<f64> = self.frame_log.iter().map(|f| f.1).collect();
             let dragging: Vec<bool> = self.frame_log.iter().map(|f| f.2).collect();
             let text = serde_json::json!({"work_ms": work, "scene_ms": scene, "dragging": dragging}).to_string();
-            std::fs::write(path, text)
+            splinekit_scene::write_file(path, text.as_bytes())
                 .map_err(|e| format!("--report-frame-times: cannot write {}: {e}", path.display()))?;
         }
         Ok(())

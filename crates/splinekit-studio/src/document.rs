@@ -26,7 +26,8 @@ pub fn parse(text: &str) -> Result<SceneDocument, String> {
 /// Writes the scene as pretty JSON.
 pub fn write(scene: &SceneDocument, path: &Path) -> Result<(), String> {
     let text = serde_json::to_string_pretty(&scene.to_value()).map_err(|e| e.to_string())?;
-    std::fs::write(path, text + "\n").map_err(|e| format!("{}: cannot write: {e}", path.display()))
+    splinekit_scene::write_file(path, (text + "\n").as_bytes())
+        .map_err(|e| format!("{}: cannot write: {e}", path.display()))
 }
 
 /// Where Ctrl+S writes: the file opened, or `studio.json` for the starter scene.

@@ -576,7 +576,7 @@ impl Studio {
             return;
         };
         let written = crate::export::export(object, self.time(), path).and_then(|bytes| {
-            std::fs::write(path, bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
+            splinekit_scene::write_file(path, &bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
         });
         self.message = Some(written.map_or_else(|e| e, |()| format!("exported {}", path.display())));
     }

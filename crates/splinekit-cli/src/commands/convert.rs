@@ -104,7 +104,8 @@ fn json_to_step(args: &ConvertArgs) -> Result<()> {
     let doc = SceneOrShape::from_json(&text).map_err(|e| anyhow!("{e}"))?;
     let name = stem(&args.input);
     let (step, exported) = export_document(&doc, &name, args.tolerance, &header(&name)).map_err(|e| anyhow!("{e}"))?;
-    std::fs::write(&args.output, step).map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
+    splinekit_scene::write_file(&args.output, step.as_bytes())
+        .map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
     for e in &exported {
         eprintln!("{}: {}", e.item.name, describe(e));
     }
@@ -150,7 +151,7 @@ fn json_to_step(args: &ConvertArgs) -> Result<()> {
             items.push(item);
         }
         let report = json!({ "items": items });
-        std::fs::write(path, serde_json::to_string(&report)?)
+        splinekit_scene::write_file(path, serde_json::to_string(&report)?.as_bytes())
             .map_err(|e| anyhow!("--report: cannot write '{path}': {e}"))?;
     }
     Ok(())
@@ -174,7 +175,7 @@ fn step_to_any(args: &ConvertArgs, output: Format) -> Result<()> {
         Format::Step => {
             let items: Vec<_> = imported.items.iter().map(|(item, _)| item.clone()).collect();
             let name = stem(&args.input);
-            std::fs::write(&args.output, write_step(&items, &name, &header(&name)))
+            splinekit_scene::write_file(&args.output, write_step(&items, &name, &header(&name)).as_bytes())
                 .map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
         }
         Format::Json => {

@@ -5,9 +5,9 @@ use clap::Args;
 use splinekit::Point;
 use splinekit::curve::{Curve, Interval};
 use splinekit_scene::budget::{Cost, ShapeCost};
-use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument};
+use splinekit_scene::{Curves, DimensionVisitor, SceneOrShape, ShapeDocument};
 
-use crate::input::{parse_numbers, read_shape};
+use crate::input::{parse_numbers, read_text};
 use crate::output::JsonOut;
 
 /// Most parameters one call may evaluate.
@@ -179,7 +179,7 @@ impl DimensionVisitor<Curves> for EvalCurve<'_> {
             }
             out.raw(b"]")?;
         }
-        out.raw(b"]}\n")
+        out.raw(b"]}")
     }
 }
 
@@ -207,10 +207,65 @@ fn check_curve_request(params: &Params, order: usize, dimension: usize, cost: &S
 pub fn run(args: &EvalArgs) -> Result<()> {
     let order = parse_count("--derivatives", &args.derivatives, MAX_DERIVATIVES)?;
     let time = args.time.as_deref().map(parse_time).transpose()?;
-    let mut doc = read_shape(&args.shape)?;
-    if let Some(t) = time {
-        doc.set_time(t);
+    let text = read_text(&args.shape, "SHAPE")?;
+    match SceneOrShape::from_json(&text)? {
+        SceneOrShape::Shape(mut doc) => {
+            if let Some(t) = time {
+                doc.set_time(t);
+            }
+            let write = prepare(doc, args, order)?;
+            let mut out = JsonOut::create(args.output.as_deref())?;
+            write(&mut out)?;
+            out.raw(b"\n")?;
+            out.finish()
+        }
+        // A scene (`splinekit offset` prints one when the offset has several pieces):
+        // every object is checked and built before anything is written, then answered in
+        // order as `{"objects": [ANSWER, ...]}`, each ANSWER what the object alone gives.
+        SceneOrShape::Scene(scene) => {
+            let writes = scene
+                .objects
+                .into_iter()
+                .enumerate()
+                .map(|(i, object)| {
+                    let mut doc = object.shape;
+                    if let Some(t) = time {
+                        doc.set_time(t);
+                    }
+                    prepare(doc, args, order).map_err(|e| anyhow!("objects[{i}].shape: {e}"))
+                })
+                .collect::<Result<Vec<_>>>()?;
+            let mut out = JsonOut::create(args.output.as_deref())?;
+            out.raw(b"{\"objects\":[")?;
+            for (i, write) in writes.into_iter().enumerate() {
+                if i > 0 {
+                    out.raw(b",")?;
+                }
+                write(&mut out).map_err(|e| anyhow!("objects[{i}].shape: {e}"))?;
+            }
+            out.raw(b"]}\n")?;
+            out.finish()
+        }
     }
+}
+
+/// The parameters asked for: the `--at` list when given, else `samples` (at equal arc
+/// length with `arc_length`).
+fn curve_params(at: Option<&[f64]>, samples: usize, arc_length: bool) -> Params<'_> {
+    match at {
+        Some(list) => Params::List(list),
+        None if arc_length => Params::ArcLength(samples),
+        None => Params::Samples(samples),
+    }
+}
+
+/// Writes one shape's answer (a JSON object, no line break) once the output is open.
+type Answer = Box<dyn FnOnce(&mut JsonOut) -> Result<()>>;
+
+/// Checks the request for one shape against the options and the budget and builds the
+/// shape; the answer is written later, so that a scene writes nothing when any of its
+/// objects is refused.
+fn prepare(doc: ShapeDocument, args: &EvalArgs, order: usize) -> Result<Answer> {
     match doc {
         ShapeDocument::Curve(c) => {
             if args.grid.is_some() {
@@ -220,23 +275,22 @@ pub fn run(args: &EvalArgs) -> Result<()> {
             if at.as_ref().is_some_and(|a| a.len() > MAX_SAMPLES) {
                 bail!("--at: more than {MAX_SAMPLES} parameters");
             }
-            let params = match (&at, &args.samples) {
-                (Some(list), _) => Params::List(list),
+            let (samples, arc_length) = match (&at, &args.samples) {
+                (Some(_), _) => (0, false),
                 (None, Some(s)) => match parse_count("--samples", s, MAX_SAMPLES)? {
                     0 => bail!("--samples: must be at least 1"),
-                    n if args.arc_length => Params::ArcLength(n),
-                    n => Params::Samples(n),
+                    n => (n, args.arc_length),
                 },
                 (None, None) => bail!("give --at T,... or --samples N"),
             };
             let cost = c.cost();
             crate::budget::check_shape(&cost)?;
             let dimension = c.dimension()?;
-            check_curve_request(&params, order, dimension, &cost)?;
+            check_curve_request(&curve_params(at.as_deref(), samples, arc_length), order, dimension, &cost)?;
             let curve = c.build()?;
-            let mut out = JsonOut::create(args.output.as_deref())?;
-            curve.visit(EvalCurve { params, order, out: &mut out })?;
-            out.finish()
+            Ok(Box::new(move |out: &mut JsonOut| {
+                curve.visit(EvalCurve { params: curve_params(at.as_deref(), samples, arc_length), order, out })
+            }))
         }
         ShapeDocument::Surface(s) => {
             if args.samples.is_some() || args.arc_length {
@@ -252,9 +306,10 @@ pub fn run(args: &EvalArgs) -> Result<()> {
             let request = super::eval_surface::EvalSurface { at: at.as_deref(), grid, order };
             request.check_budget(s.dimension()?, &cost)?;
             let surface = s.build()?;
-            let mut out = JsonOut::create(args.output.as_deref())?;
-            surface.visit(super::eval_surface::SurfaceOutput { request, out: &mut out })?;
-            out.finish()
+            Ok(Box::new(move |out: &mut JsonOut| {
+                let request = super::eval_surface::EvalSurface { at: at.as_deref(), grid, order };
+                surface.visit(super::eval_surface::SurfaceOutput { request, out })
+            }))
         }
     }
 }

@@ -3,7 +3,7 @@
 use anyhow::{Result, bail};
 use splinekit::Point;
 use splinekit::curve::Interval;
-use splinekit::surface::{Surface, unit_normal};
+use splinekit::surface::{Surface, normal_or_limit};
 use splinekit_scene::budget::{Cost, ShapeCost};
 use splinekit_scene::{DimensionVisitor, Surfaces};
 
@@ -19,34 +19,6 @@ pub struct EvalSurface<'a> {
 
 fn spread(n: usize, d: Interval) -> Vec<f64> {
     (0..n).map(|i| super::eval::spread(i, n, d)).collect()
-}
-
-/// The unit normal at (u, v), or its limit from just inside the domain where S_u × S_v
-/// vanishes (poles, apexes); `None` if the surface is degenerate around the point.
-fn normal_or_limit<const D: usize>(
-    s: &dyn Surface<D>,
-    u: f64,
-    v: f64,
-    su: &Point<D>,
-    sv: &Point<D>,
-) -> Option<Point<D>> {
-    if let Some(n) = unit_normal(su, sv) {
-        return Some(n);
-    }
-    let (du, dv) = (s.domain_u(), s.domain_v());
-    let (hu, hv) = (1e-7 * du.length(), 1e-7 * dv.length());
-    let inside = |x: f64, d: &Interval| x >= d.start && x <= d.end;
-    for (a, b) in [(0.0, hv), (0.0, -hv), (hu, 0.0), (-hu, 0.0), (hu, hv), (-hu, -hv), (hu, -hv), (-hu, hv)] {
-        let (x, y) = (u + a, v + b);
-        if inside(x, &du) && inside(y, &dv) {
-            let mut o = [Point::<D>::zeros(); 4];
-            s.eval_partials(x, y, 1, 1, &mut o);
-            if let Some(n) = unit_normal(&o[2], &o[1]) {
-                return Some(n);
-            }
-        }
-    }
-    None
 }
 
 /// Parameter pairs and the partials at each.
@@ -190,6 +162,6 @@ impl DimensionVisitor<Surfaces> for SurfaceOutput<'_> {
                 }
             })?;
         }
-        out.raw(b"}\n")
+        out.raw(b"}")
     }
 }

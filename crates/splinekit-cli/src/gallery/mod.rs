@@ -68,7 +68,7 @@ impl Folder<'_> {
     /// Writes the file `name` in the folder.
     fn write(&self, name: &str, bytes: &[u8]) -> Result<()> {
         let path = self.0.join(name);
-        std::fs::write(&path, bytes).with_context(|| format!("-o: cannot write '{}'", path.display()))
+        splinekit_scene::write_file(&path, bytes).with_context(|| format!("-o: cannot write '{}'", path.display()))
     }
 
     /// Creates the folder `name` in the gallery if missing.

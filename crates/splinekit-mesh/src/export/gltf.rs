@@ -7,7 +7,7 @@
 
 use serde_json::{Value, json};
 
-use super::representable::{ExportError, Precision, check_mesh, check_value};
+use super::representable::{ExportError, Precision, check_mesh, check_value, single_precision_triangles};
 use crate::triangle_mesh::TriangleMesh;
 
 /// An animation frame: time in seconds, vertex positions, vertex normals.
@@ -151,12 +151,14 @@ impl GltfScene {
         let named = |what| Named { object: k, name: &obj.name, what };
         Ok(match &obj.geometry {
             GltfGeometry::Mesh(m) => {
-                check_mesh(m, Precision::Single, "glTF").map_err(|e| match e {
-                    ExportError::Unrepresentable { field, message } => {
-                        ExportError::Unrepresentable { field: format!("{} {field}", named("mesh")), message }
-                    }
-                    other => other,
-                })?;
+                let m = &*single_precision_triangles(m, "glTF")
+                    .and_then(|m| check_mesh(&m, Precision::Single, "glTF").map(|()| m))
+                    .map_err(|e| match e {
+                        ExportError::Unrepresentable { field, message } => {
+                            ExportError::Unrepresentable { field: format!("{} {field}", named("mesh")), message }
+                        }
+                        other => other,
+                    })?;
                 let mut attrs =
                     json!({"POSITION": b.floats(&m.positions, "VEC3", true, Some(34962), named("POSITION"))?});
                 if m.normals.len() == m.positions.len() {

@@ -123,6 +123,32 @@ pub fn one_line(name: &str) -> String {
     name.replace(|c: char| c.is_control(), "_")
 }
 
+/// The mesh as a format of 32-bit floats (STL, glTF) stores it: a triangle two of whose
+/// corners are one point in f32 has no area in the file (the pinch of a horn torus, whose
+/// tube meets itself at the centre; a cone's apex), so it is dropped and the rest written.
+/// Borrowed when no triangle is dropped; refused (with the first such triangle named)
+/// when every triangle would be, the mesh being too fine or too small for its distance
+/// from the origin. Triangles referring past the vertices are left for [`check_mesh`].
+pub fn single_precision_triangles<'m>(
+    mesh: &'m crate::TriangleMesh,
+    format: &str,
+) -> Result<std::borrow::Cow<'m, crate::TriangleMesh>, ExportError> {
+    let n = mesh.positions.len();
+    let single = |i: u32| mesh.positions[i as usize].map(|x| x as f32);
+    let collapsed = |tri: &[u32; 3]| {
+        tri.iter().all(|&i| (i as usize) < n)
+            && (0..3).any(|k| tri[k] != tri[(k + 1) % 3] && single(tri[k]) == single(tri[(k + 1) % 3]))
+    };
+    if !mesh.triangles.iter().any(collapsed) {
+        return Ok(std::borrow::Cow::Borrowed(mesh));
+    }
+    let kept: Vec<[u32; 3]> = mesh.triangles.iter().filter(|t| !collapsed(t)).copied().collect();
+    if kept.is_empty() {
+        check_single_precision_triangles(mesh, format)?;
+    }
+    Ok(std::borrow::Cow::Owned(crate::TriangleMesh { triangles: kept, ..mesh.clone() }))
+}
+
 /// Refuses a triangle two of whose corners are one point in 32-bit floats (a mesh too fine
 /// for its distance from the origin, or too small): it would be degenerate in the file.
 fn check_single_precision_triangles(mesh: &crate::TriangleMesh, format: &str) -> Result<(), ExportError> {

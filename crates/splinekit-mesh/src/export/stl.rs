@@ -1,11 +1,12 @@
 //! STL: binary (80-byte header, triangle count, 50 bytes per triangle: normal and three
 //! vertices as f32, attribute count) and ASCII (`solid … facet normal … endsolid`). STL has
 //! no shared vertices: each triangle carries its own corners and face normal. Both kinds
-//! store 32-bit floats, so coordinates beyond ±f32::MAX are refused.
+//! store 32-bit floats, so coordinates beyond ±f32::MAX are refused, and triangles whose
+//! corners meet in 32-bit floats are left out (`single_precision_triangles`).
 
 use std::io::Write;
 
-use super::representable::{ExportError, Precision, check_mesh, one_line};
+use super::representable::{ExportError, Precision, check_mesh, one_line, single_precision_triangles};
 use crate::triangle_mesh::{TriangleMesh, norm, normalize};
 
 /// A triangle read from STL: face normal and three corners.
@@ -24,6 +25,7 @@ fn facet_normal(mesh: &TriangleMesh, t: usize) -> [f64; 3] {
 
 /// Writes the mesh as binary STL to `out` (give it a buffered writer).
 pub fn write_stl_binary(mesh: &TriangleMesh, mut out: impl Write) -> Result<(), ExportError> {
+    let mesh = &*single_precision_triangles(mesh, "STL")?;
     check_mesh(mesh, Precision::Single, "STL")?;
     let count = u32::try_from(mesh.triangles.len()).map_err(|_| ExportError::Unrepresentable {
         field: "triangles".into(),
@@ -48,6 +50,7 @@ pub fn write_stl_binary(mesh: &TriangleMesh, mut out: impl Write) -> Result<(), 
 
 /// Writes the mesh as ASCII STL to `out` (give it a buffered writer).
 pub fn write_stl_ascii(mesh: &TriangleMesh, name: &str, mut out: impl Write) -> Result<(), ExportError> {
+    let mesh = &*single_precision_triangles(mesh, "STL")?;
     check_mesh(mesh, Precision::Single, "STL")?;
     let name = one_line(name);
     writeln!(out, "solid {name}")?;

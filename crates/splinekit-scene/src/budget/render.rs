@@ -9,8 +9,16 @@ use crate::{SceneDocument, ShapeDocument};
 /// Bytes the renderer holds per pixel of an image: 4× multisampled colour and depth,
 /// the resolved image, its read-back copy and the image kept.
 pub const RENDER_BYTES_PER_PIXEL: f64 = 4.0 * 4.0 + 4.0 * 4.0 + 4.0 + 4.0 + 4.0;
-/// Work of one pixel of a software render (rasterising, resolving, encoding).
-pub const RENDER_WORK_PER_PIXEL: f64 = 200.0;
+/// Work of one pixel of a software render (rasterising four samples, resolving, reading
+/// back, encoding): 128 operations. One image of the largest size, [`MAX_IMAGE_SIDE`]² =
+/// 6.7·10⁷ pixels, is then 8.6·10⁹ operations — within the default work budget
+/// ([`super::DEFAULT_MAX_WORK`], 10¹⁰) with room for a scene's meshes, so the documented
+/// largest image renders without raising a limit (a test pins this agreement).
+pub const RENDER_WORK_PER_PIXEL: f64 = 128.0;
+/// The largest image side the renderer draws (`splinekit_render::renderer::MAX_SIDE`,
+/// `render --size`, Python's `size`); a square image of this side fits
+/// [`MAX_RENDER_BUFFER`] exactly (a row of 8192 · 4 bytes is a multiple of 256).
+pub const MAX_IMAGE_SIDE: u32 = 8192;
 /// The largest buffer the renderer's device accepts (wgpu's default limit, 256 MiB): the
 /// read-back of one image must fit it.
 pub const MAX_RENDER_BUFFER: f64 = 256.0 * 1024.0 * 1024.0;
@@ -67,7 +75,7 @@ impl Budget {
             return Err(DocumentError::new(
                 fields.size,
                 format!(
-                    "a {}x{} image needs a read-back buffer of {}, more than the renderer's limit of {} (at most about 8000x8000 pixels)",
+                    "a {}x{} image needs a read-back buffer of {}, more than the renderer's limit of {} (at most {MAX_IMAGE_SIDE}x{MAX_IMAGE_SIDE} pixels)",
                     size.0,
                     size.1,
                     Bytes(row * size.1 as f64),
@@ -109,6 +117,19 @@ mod tests {
         assert_eq!(e.path, "size");
         assert!(e.message.contains("9000x9000") && e.message.contains("268.4 MB"), "{e}");
         assert!(Budget::machine().check_render(&s, (800, 600), 1, FIELDS).is_ok());
+    }
+
+    /// The limits agree: the largest image the renderer draws, MAX_IMAGE_SIDE², fits the
+    /// read-back buffer and the default work budget (docs/format.md, README: Limits), with
+    /// any memory that holds its 3 GB; one pixel more each way does not fit the buffer.
+    #[test]
+    fn the_largest_documented_image_fits_the_default_budget() {
+        let s = scene(r#"{"type":"sphere","radius":1}"#);
+        let budget = Budget { max_bytes: 4e9, max_work: crate::budget::DEFAULT_MAX_WORK };
+        let side = MAX_IMAGE_SIDE;
+        budget.check_render(&s, (side, side), 1, FIELDS).unwrap();
+        let e = budget.check_render(&s, (side + 1, side + 1), 1, FIELDS).unwrap_err();
+        assert!(e.message.contains("read-back buffer"), "{e}");
     }
 
     #[test]

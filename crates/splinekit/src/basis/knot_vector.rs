@@ -181,11 +181,27 @@ impl KnotVector {
 #[inline]
 pub fn find_span(knots: &[f64], degree: usize, n: usize, t: f64, side: Side) -> usize {
     let interior = &knots[degree + 1..n];
-    let count = match side {
-        Side::Right => interior.partition_point(|&k| k <= t),
-        Side::Left => interior.partition_point(|&k| k < t),
-    };
-    degree + count
+    let mut span = degree
+        + match side {
+            Side::Right => interior.partition_point(|&k| k <= t),
+            Side::Left => interior.partition_point(|&k| k < t),
+        };
+    // The search lands on an empty span only at an end of the domain whose knot is repeated
+    // inside [t_p, t_n] (unclamped knots: t_{n−1} = t_n, or t_p = t_{p+1}); the limit there
+    // is the last (first) non-empty span's.
+    match side {
+        Side::Right => {
+            while span > degree && knots[span] >= knots[span + 1] {
+                span -= 1;
+            }
+        }
+        Side::Left => {
+            while span + 1 < n && knots[span] >= knots[span + 1] {
+                span += 1;
+            }
+        }
+    }
+    span
 }
 
 /// Advances a span found for an earlier parameter to the span of `t` (sorted batches);
@@ -197,6 +213,11 @@ pub fn advance_span(knots: &[f64], degree: usize, n: usize, mut span: usize, t: 
     }
     while span + 1 < n && knots[span + 1] <= t {
         span += 1;
+    }
+    // At the end of the domain the last span may be empty (t_{n−1} = t_n): step back to
+    // the last non-empty one, as `find_span` does.
+    while span > degree && knots[span] >= knots[span + 1] {
+        span -= 1;
     }
     span
 }

@@ -183,7 +183,7 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
                     pairs.push((h, ps.clone()));
                 }
             } else {
-                for q in ps.split(sc, self.surface) {
+                for q in ps.split_around_points(sc, self.surface) {
                     pairs.push((pc.clone(), q));
                 }
             }
@@ -196,12 +196,13 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
     /// nearest point pair, which may lie outside the tiny pair that found it). Records the
     /// point and returns true when the shapes meet within the tolerance there.
     fn newton(&mut self, (it, iu, iv): (Interval, Interval, Interval), contact: bool) -> bool {
+        // From the pair's centre; a contact's steps may leave the pair (not the domains).
+        let mut x = Vector3::new(it.lerp(0.5), iu.lerp(0.5), iv.lerp(0.5));
         let (it, iu, iv) = if contact {
             (self.curve.domain(), self.surface.domain_u(), self.surface.domain_v())
         } else {
             (it, iu, iv)
         };
-        let mut x = Vector3::new(it.lerp(0.5), iu.lerp(0.5), iv.lerp(0.5));
         let mut jet = Jet::at(self.curve, self.surface, &x);
         for _ in 0..MAX_NEWTON_ITERATIONS {
             let j = Matrix3::from_columns(&[jet.dc, -jet.su, -jet.sv]);
@@ -224,9 +225,13 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
         if gap.is_nan() || gap > self.tolerance {
             return false;
         }
-        let normal = jet.su.cross(&jet.sv);
-        let (nt, nn) = (jet.dc.norm(), normal.norm());
-        let cosine = if nt > 0.0 && nn > 0.0 { jet.dc.dot(&normal).abs() / (nt * nn) } else { 0.0 };
+        // At a pole or apex S_u × S_v vanishes: the limit normal from just inside decides.
+        let normal = crate::surface::normal_or_limit(self.surface, x[1], x[2], &jet.su, &jet.sv);
+        let nt = jet.dc.norm();
+        let cosine = match normal {
+            Some(n) if nt > 0.0 => jet.dc.dot(&n).abs() / nt,
+            _ => 0.0,
+        };
         let kind = if cosine > TANGENT_SINE { IntersectionKind::Crossing } else { IntersectionKind::Tangent };
         self.found.push(CurveSurfaceIntersection { t: x[0], u: x[1], v: x[2], point: (jet.c + jet.s) * 0.5, kind });
         true
@@ -322,5 +327,33 @@ mod tests {
         assert_eq!(r.len(), 1, "{r:?}");
         assert_eq!(r[0].kind, IntersectionKind::Tangent);
         assert!((r[0].point - Point::<3>::new(0.0, 2.0, 0.0)).norm() < 1e-6, "{:?}", r[0]);
+    }
+
+    /// Issue 20: a line through both poles meets the sphere at the poles (it used to give
+    /// up after 400 000 pairs: every patch around a pole holds the pole, and splitting
+    /// them across it doubled them per level). Also a slanted line through one pole, and
+    /// the exact NURBS sphere, whose poles are repeated control points.
+    #[test]
+    fn lines_through_the_poles_meet_the_sphere_at_the_poles() {
+        let sphere = Sphere::new(2.0).unwrap();
+        let axis = Line::new(Point::<3>::new(0.0, 0.0, -3.0), Point::<3>::new(0.0, 0.0, 3.0)).unwrap();
+        let r = intersect_curve_surface(&axis, &sphere, 1e-9).unwrap();
+        assert_eq!(r.len(), 2, "{r:?}");
+        for (p, z) in r.iter().zip([-2.0, 2.0]) {
+            assert!((p.point - Point::<3>::new(0.0, 0.0, z)).norm() < 1e-9, "{p:?}");
+            assert_eq!(p.kind, IntersectionKind::Crossing, "{p:?}");
+        }
+        // Through the north pole and (2, 0, 0) on the equator.
+        let slanted = Line::new(Point::<3>::new(-1.0, 0.0, 3.0), Point::<3>::new(3.0, 0.0, -1.0)).unwrap();
+        let r = intersect_curve_surface(&slanted, &sphere, 1e-9).unwrap();
+        assert_eq!(r.len(), 2, "{r:?}");
+        assert!((r[0].point - Point::<3>::new(0.0, 0.0, 2.0)).norm() < 1e-9, "{r:?}");
+        assert!((r[1].point - Point::<3>::new(2.0, 0.0, 0.0)).norm() < 1e-9, "{r:?}");
+        let nurbs = crate::surface::NurbsSurface::sphere(2.0).unwrap();
+        let r = intersect_curve_surface(&axis, &nurbs, 1e-9).unwrap();
+        assert_eq!(r.len(), 2, "{r:?}");
+        for (p, z) in r.iter().zip([-2.0, 2.0]) {
+            assert!((p.point - Point::<3>::new(0.0, 0.0, z)).norm() < 1e-9, "{p:?}");
+        }
     }
 }

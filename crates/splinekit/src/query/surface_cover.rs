@@ -170,6 +170,39 @@ impl<const D: usize> SurfacePatch<D> {
         })
     }
 
+    /// Which direction to halve a patch with an edge collapsed to a point (a sphere's pole,
+    /// a cone's apex): `Some(true)` halves v when an edge v = const is a point, `Some(false)`
+    /// halves u when an edge u = const is; `None` when no edge is (or both directions have
+    /// one). An edge is a point when its three samples lie within 10⁻⁹ of the patch's
+    /// diagonal of each other. Splitting such a patch across the point would multiply the
+    /// patches that all hold the point with every level; halving only the other way keeps
+    /// their number.
+    pub fn collapsed_split(&self) -> Option<bool> {
+        let spread = |k: [usize; 3]| {
+            let (a, b, c) = (&self.grid[k[0]].point, &self.grid[k[1]].point, &self.grid[k[2]].point);
+            (a - b).norm().max((a - c).norm()).max((b - c).norm())
+        };
+        let eps = 1e-9 * self.bounds.diagonal();
+        let v_edge = spread([0, 3, 6]) <= eps || spread([2, 5, 8]) <= eps;
+        let u_edge = spread([0, 1, 2]) <= eps || spread([6, 7, 8]) <= eps;
+        match (v_edge, u_edge) {
+            (true, false) => Some(true),
+            (false, true) => Some(false),
+            _ => None,
+        }
+    }
+
+    /// The two halves in v (`along_v`) or in u, low half first (12 new evaluations).
+    pub fn halves<S: Surface<D> + ?Sized>(&self, surface: &S, along_v: bool) -> [Self; 2] {
+        let (u, v) = (self.u(), self.v());
+        std::array::from_fn(|h| {
+            let half = |i: Interval| {
+                if h == 0 { Interval::new(i.start, i.lerp(0.5)) } else { Interval::new(i.lerp(0.5), i.end) }
+            };
+            if along_v { Self::new(surface, u, half(v)) } else { Self::new(surface, half(u), v) }
+        })
+    }
+
     /// Whether the box says something useful: the error radius is small beside the patch
     /// (or at rounding level).
     pub fn is_tame(&self) -> bool {
@@ -280,6 +313,22 @@ impl<'a, const D: usize> SearchPatch<'a, D> {
                 c.map(|i| SearchPatch::Cached(&cover.nodes[i as usize]))
             }
             _ => self.patch().split(surface).map(|p| SearchPatch::Owned(Box::new(p))),
+        }
+    }
+
+    /// As [`SearchPatch::split`], but a patch with an edge collapsed to a point is halved
+    /// only the other way ([`SurfacePatch::collapsed_split`]): the pieces of a search that
+    /// meets a pole stay as many as the patches around it instead of doubling per level.
+    pub fn split_around_points<S: Surface<D> + ?Sized>(
+        &self,
+        cover: &'a SurfaceCover<D>,
+        surface: &S,
+    ) -> Vec<SearchPatch<'a, D>> {
+        match self.patch().collapsed_split() {
+            Some(along_v) => {
+                self.patch().halves(surface, along_v).into_iter().map(|p| SearchPatch::Owned(Box::new(p))).collect()
+            }
+            None => self.split(cover, surface).into_iter().collect(),
         }
     }
 }

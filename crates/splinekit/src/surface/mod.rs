@@ -24,5 +24,5 @@ pub use iso_curve::{Direction, IsoCurve};
 pub use nurbs_surface::NurbsSurface;
 pub use placed::PlacedSurface;
 pub use samples::SurfaceGridSamples;
-pub use traits::{Curvatures, FundamentalForms, Surface, TrimLoops, unit_normal};
+pub use traits::{Curvatures, FundamentalForms, Surface, TrimLoops, normal_or_limit, unit_normal};
 pub use trimmed::TrimmedSurface;

@@ -253,18 +253,18 @@ fn row_first<const W: usize, T: Coefficient>(
     f: &mut impl FnMut(usize, T, T, T),
 ) {
     for (b, &base) in v_spans.iter().enumerate() {
-        let nb: &[f64; 8] = &{
-            let mut a = [0.0; 8];
-            a[..2 * W].copy_from_slice(&v_basis[b * 2 * W..(b + 1) * 2 * W]);
-            a
-        };
+        // The basis values M_r(v) and their derivatives M_r′(v), W of each, as arrays of
+        // the compile-time length (any W: no fixed-size scratch to overflow).
+        let nb = &v_basis[b * 2 * W..(b + 1) * 2 * W];
+        let m0: &[f64; W] = nb[..W].try_into().expect("W basis values");
+        let m1: &[f64; W] = nb[W..].try_into().expect("W basis derivatives");
         let c0: &[T; W] = iso0[base..base + W].try_into().expect("W coefficients");
         let c1: &[T; W] = iso1[base..base + W].try_into().expect("W coefficients");
         let (mut s, mut s_u, mut s_v) = (T::zero(), T::zero(), T::zero());
         for r in 0..W {
-            s += c0[r] * nb[r];
-            s_v += c0[r] * nb[W + r];
-            s_u += c1[r] * nb[r];
+            s += c0[r] * m0[r];
+            s_v += c0[r] * m1[r];
+            s_u += c1[r] * m0[r];
         }
         f(row + b, s, s_u, s_v);
     }

@@ -234,6 +234,36 @@ pub fn unit_normal<const D: usize>(a: &Point<D>, b: &Point<D>) -> Option<Point<D
     unit_normal_rescaled(a, b)
 }
 
+/// The unit normal at (u, v) from the partials `su`, `sv` there, or where S_u × S_v
+/// vanishes (poles, apexes) its limit from just inside the domain: the normal at
+/// (u, v) moved by 10⁻⁷ of the domain along v, then u, then the diagonals; `None` if the
+/// surface is degenerate all around the point (or outside ℝ³).
+pub fn normal_or_limit<const D: usize, S: Surface<D> + ?Sized>(
+    s: &S,
+    u: f64,
+    v: f64,
+    su: &Point<D>,
+    sv: &Point<D>,
+) -> Option<Point<D>> {
+    if let Some(n) = unit_normal(su, sv) {
+        return Some(n);
+    }
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    let (hu, hv) = (1e-7 * du.length(), 1e-7 * dv.length());
+    let inside = |x: f64, d: &Interval| x >= d.start && x <= d.end;
+    for (a, b) in [(0.0, hv), (0.0, -hv), (hu, 0.0), (-hu, 0.0), (hu, hv), (-hu, -hv), (hu, -hv), (-hu, hv)] {
+        let (x, y) = (u + a, v + b);
+        if inside(x, &du) && inside(y, &dv) {
+            let mut o = [Point::<D>::zeros(); 4];
+            s.eval_partials(x, y, 1, 1, &mut o);
+            if let Some(n) = unit_normal(&o[2], &o[1]) {
+                return Some(n);
+            }
+        }
+    }
+    None
+}
+
 #[inline(always)]
 fn cross<const D: usize>(a: &Point<D>, b: &Point<D>) -> Point<D> {
     let mut n = Point::<D>::zeros();
