@@ -30,7 +30,7 @@ pub struct ViewStart {
     /// The picture's size in pixels (the view keeps its aspect).
     pub size: (u32, u32),
     /// Background colour (sRGB, 0 to 1).
-    pub background: [f32; 3],
+    pub background: [f64; 3],
     /// The animation's period in seconds (frames / fps, as the GIF loops), for animated
     /// figures.
     pub period: Option<f64>,
