@@ -11,11 +11,14 @@ use splinekit::{Interval, Point};
 
 use crate::errors::value_error;
 
-/// `ob` as a C-contiguous float64 array: itself when it already is one, else
-/// `numpy.asarray(ob, dtype=float64, order="C")` (which keeps numbers 0-d).
+/// `ob` as an aligned C-contiguous float64 array: itself when it already is one, else
+/// `numpy.asarray(ob, dtype=float64, order="C")` (which keeps numbers 0-d), copied when
+/// that is not aligned (arrays unpickled from out-of-band buffers or received over a
+/// network, as Dask's are, may start at any byte).
 pub fn contiguous<'py>(ob: &Bound<'py, PyAny>) -> PyResult<PyReadonlyArrayDyn<'py, f64>> {
     if let Ok(a) = ob.cast::<PyArrayDyn<f64>>()
         && a.is_c_contiguous()
+        && a.is_aligned()
     {
         return Ok(a.readonly());
     }
@@ -23,8 +26,11 @@ pub fn contiguous<'py>(ob: &Bound<'py, PyAny>) -> PyResult<PyReadonlyArrayDyn<'p
     let kwargs = pyo3::types::PyDict::new(ob.py());
     kwargs.set_item("dtype", np.getattr("float64")?)?;
     kwargs.set_item("order", "C")?;
-    let converted = np.call_method("asarray", (ob,), Some(&kwargs))?;
-    Ok(converted.cast_into::<PyArrayDyn<f64>>()?.readonly())
+    let converted = np.call_method("asarray", (ob,), Some(&kwargs))?.cast_into::<PyArrayDyn<f64>>()?;
+    if converted.is_aligned() {
+        return Ok(converted.readonly());
+    }
+    Ok(converted.call_method0("copy")?.cast_into::<PyArrayDyn<f64>>()?.readonly())
 }
 
 /// Numbers read from an argument: the values, the shape, and whether it was a scalar.
