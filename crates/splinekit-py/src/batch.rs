@@ -44,7 +44,10 @@ fn item_error(field: &str, i: usize, e: PyErr, py: Python<'_>) -> PyErr {
 /// so the curves and reports are bit for bit the loop's. A bad set raises the single
 /// call's ``ValueError`` with its index first (``point_sets[3]: points: …``).
 #[pyfunction]
-#[pyo3(signature = (point_sets, degree, n_control_points = None, params = Choice::Name("chord".into()), knots = Choice::Name("averaged".into()), closed = false, weights = None, fix_ends = false, threads = None))]
+#[pyo3(
+    signature = (point_sets, degree, n_control_points = None, params = Choice::Name("chord".into()), knots = Choice::Name("averaged".into()), closed = false, weights = None, fix_ends = false, threads = None),
+    text_signature = "(point_sets, degree, n_control_points=None, params='chord', knots='averaged', closed=False, weights=None, fix_ends=False, threads=None)"
+)]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_many<'py>(
     py: Python<'py>,

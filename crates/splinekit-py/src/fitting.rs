@@ -270,7 +270,10 @@ impl FitRequest {
 /// residuals; ``fix_ends`` makes the curve start and end at the first and last points.
 /// Returns a ``BSpline`` whose ``fit_report`` holds the errors.
 #[pyfunction]
-#[pyo3(signature = (points, degree, n_control_points = None, params = Choice::Name("chord".into()), knots = Choice::Name("averaged".into()), closed = false, weights = None, fix_ends = false))]
+#[pyo3(
+    signature = (points, degree, n_control_points = None, params = Choice::Name("chord".into()), knots = Choice::Name("averaged".into()), closed = false, weights = None, fix_ends = false),
+    text_signature = "(points, degree, n_control_points=None, params='chord', knots='averaged', closed=False, weights=None, fix_ends=False)"
+)]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
     py: Python<'py>,

@@ -42,7 +42,7 @@ class BFunction:
             return NotImplemented
         return self.document == other.document
 
-    __hash__ = None
+    __hash__ = None  # type: ignore[assignment]  # equal by a mutable document: unhashable
 
 
 def _from_document(document):
