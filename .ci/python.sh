@@ -64,7 +64,7 @@ part "the sdist holds the sources, builds and installs"
 tar -tzf "$sdist" > "$root/target/sdist-files.txt"
 for f in pyproject.toml Cargo.lock crates/splinekit-py/Cargo.toml crates/splinekit-py/src/lib.rs \
     crates/splinekit/src/lib.rs crates/splinekit-scene/src/lib.rs crates/splinekit-mesh/src/lib.rs \
-    crates/splinekit-py/python/splinekit/__init__.py crates/splinekit-py/python/splinekit/_splinekit.pyi; do
+    python/splinekit/__init__.py python/splinekit/_splinekit.pyi; do
     grep -q "^splinekit-[0-9.]*/$f$" "$root/target/sdist-files.txt" || { echo "python.sh: the sdist lacks $f" >&2; exit 1; }
 done
 # Built by pip from the sdist alone (maturin from the build venv), in debug: the
