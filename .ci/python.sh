@@ -27,7 +27,7 @@ part "wheel and sdist (maturin build --profile python: release optimisation, no 
 dist="$root/target/dist"
 rm -rf "$dist"
 maturin build --profile python --quiet -m crates/splinekit-py/Cargo.toml -o "$dist"
-maturin sdist --quiet -m crates/splinekit-py/Cargo.toml -o "$dist"
+maturin sdist -m crates/splinekit-py/Cargo.toml -o "$dist"
 wheel="$(ls "$dist"/splinekit-*-cp39-abi3-*.whl)"
 sdist="$(ls "$dist"/splinekit-*.tar.gz)"
 ls -l "$wheel" "$sdist"
