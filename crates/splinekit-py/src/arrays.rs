@@ -11,11 +11,14 @@ use splinekit::{Interval, Point};
 
 use crate::errors::value_error;
 
-/// `ob` as a C-contiguous float64 array: itself when it already is one, else
-/// `numpy.asarray(ob, dtype=float64, order="C")` (which keeps numbers 0-d).
+/// `ob` as an aligned C-contiguous float64 array: itself when it already is one, else
+/// `numpy.asarray(ob, dtype=float64, order="C")` (which keeps numbers 0-d), copied when
+/// that is not aligned (arrays unpickled from out-of-band buffers or received over a
+/// network, as Dask's are, may start at any byte).
 pub fn contiguous<'py>(ob: &Bound<'py, PyAny>) -> PyResult<PyReadonlyArrayDyn<'py, f64>> {
     if let Ok(a) = ob.cast::<PyArrayDyn<f64>>()
         && a.is_c_contiguous()
+        && a.is_aligned()
     {
         return Ok(a.readonly());
     }
@@ -23,8 +26,11 @@ pub fn contiguous<'py>(ob: &Bound<'py, PyAny>) -> PyResult<PyReadonlyArrayDyn<'p
     let kwargs = pyo3::types::PyDict::new(ob.py());
     kwargs.set_item("dtype", np.getattr("float64")?)?;
     kwargs.set_item("order", "C")?;
-    let converted = np.call_method("asarray", (ob,), Some(&kwargs))?;
-    Ok(converted.cast_into::<PyArrayDyn<f64>>()?.readonly())
+    let converted = np.call_method("asarray", (ob,), Some(&kwargs))?.cast_into::<PyArrayDyn<f64>>()?;
+    if converted.is_aligned() {
+        return Ok(converted.readonly());
+    }
+    Ok(converted.call_method0("copy")?.cast_into::<PyArrayDyn<f64>>()?.readonly())
 }
 
 /// Numbers read from an argument: the values, the shape, and whether it was a scalar.
@@ -191,8 +197,8 @@ const CHUNK_ROWS: usize = 2048;
 /// A raw pointer that may cross into the GIL-free closure (the array it points into is
 /// kept alive by the caller and written by one thread).
 struct SendPtr(*mut f64);
-// SAFETY: used only inside `filled_rows`, which writes disjoint chunks from one thread
-// while the owning array is alive.
+// SAFETY: used only by `RowWriter`, whose users write disjoint chunks (each by one
+// thread) while the owning array is alive.
 unsafe impl Send for SendPtr {}
 unsafe impl Sync for SendPtr {}
 
@@ -214,23 +220,64 @@ pub fn filled_rows<'py>(
     row_len: usize,
     fill: impl Fn(std::ops::Range<usize>, &mut [f64]) + Send + Sync,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    // SAFETY: a new C-contiguous array of `rows · row_len` f64 (checked below); every chunk
-    // is zeroed through the raw pointer before a slice of it exists.
-    let out = unsafe { PyArrayDyn::<f64>::new(py, shape, false) };
-    assert_eq!(out.len(), rows * row_len, "shape holds the rows");
-    let base = SendPtr(out.data());
+    let (out, writer) = unfilled_rows(py, shape, rows, row_len);
     py.detach(|| {
-        for start in (0..rows).step_by(CHUNK_ROWS) {
-            let end = (start + CHUNK_ROWS).min(rows);
-            let len = (end - start) * row_len;
-            // SAFETY: [start, end) rows lie inside the array and no other slice of them exists.
-            let chunk = unsafe {
-                let p = base.get().add(start * row_len);
-                p.write_bytes(0, len);
-                std::slice::from_raw_parts_mut(p, len)
-            };
-            fill(start..end, chunk);
+        for range in writer.chunks() {
+            // SAFETY: each chunk range once, from this thread.
+            fill(range.clone(), unsafe { writer.chunk(range) });
         }
     });
     Ok(out)
+}
+
+/// A new C-contiguous float64 array of `shape` (leading axis `rows` rows of `row_len`
+/// values) not yet written, and the [`RowWriter`] that writes it chunk by chunk (the
+/// chunks of [`filled_rows`], so batch calls compute exactly what single calls do).
+pub fn unfilled_rows<'py>(
+    py: Python<'py>,
+    shape: &[usize],
+    rows: usize,
+    row_len: usize,
+) -> (Bound<'py, PyArrayDyn<f64>>, RowWriter) {
+    // SAFETY: a new C-contiguous array of `rows · row_len` f64 (checked below); every
+    // chunk is zeroed through the raw pointer before a slice of it exists (`RowWriter::chunk`).
+    let out = unsafe { PyArrayDyn::<f64>::new(py, shape, false) };
+    assert_eq!(out.len(), rows * row_len, "shape holds the rows");
+    let writer = RowWriter { base: SendPtr(out.data()), rows, row_len };
+    (out, writer)
+}
+
+/// Writes the rows of a new array (from [`unfilled_rows`]) in chunks of [`CHUNK_ROWS`] rows,
+/// from any thread, the GIL released; the caller keeps the array alive meanwhile.
+pub struct RowWriter {
+    base: SendPtr,
+    rows: usize,
+    row_len: usize,
+}
+
+impl RowWriter {
+    /// The row ranges of the chunks, in order.
+    pub fn chunks(&self) -> impl Iterator<Item = std::ops::Range<usize>> + use<> {
+        let rows = self.rows;
+        (0..rows).step_by(CHUNK_ROWS).map(move |start| start..(start + CHUNK_ROWS).min(rows))
+    }
+
+    /// The values of the rows `range`, zeroed.
+    ///
+    /// # Safety
+    /// `range` lies within the rows, the array is alive, and no other slice of these rows
+    /// exists while this one does (each chunk is written once, by one thread).
+    // Disjoint chunks handed to several threads from one shared writer, as
+    // `split_at_mut` would if the chunks were known up front.
+    #[allow(clippy::mut_from_ref)]
+    pub unsafe fn chunk(&self, range: std::ops::Range<usize>) -> &mut [f64] {
+        assert!(range.start <= range.end && range.end <= self.rows, "rows of the array");
+        let len = range.len() * self.row_len;
+        // SAFETY: inside the array (asserted), not aliased (the caller's promise).
+        unsafe {
+            let p = self.base.get().add(range.start * self.row_len);
+            p.write_bytes(0, len);
+            std::slice::from_raw_parts_mut(p, len)
+        }
+    }
 }

@@ -98,28 +98,85 @@ impl PyCurve {
         (field, order): (&str, usize),
         all: bool,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let job = self.evaluation(t, (field, order), all)?;
+        let (shape, rows, row) = job.layout();
+        let task = job.task();
+        filled_rows(py, &shape, rows, row, |rows, out| task.fill(rows, out))
+    }
+
+    /// Checks an evaluation of the derivatives of `order` (all orders up to it when `all`)
+    /// at the parameters `t` (order, parameters, budget) and returns it, to be run.
+    pub fn evaluation<'a, 'py>(
+        &'a self,
+        t: &Bound<'py, PyAny>,
+        (field, order): (&str, usize),
+        all: bool,
+    ) -> PyResult<Evaluation<'a, 'py>> {
         check_order(field, order)?;
         let numbers = Numbers::new(t)?;
-        let params = numbers.list("t")?;
-        self.check_params("t", params)?;
-        let (n, d) = (params.len(), self.dimension());
+        let n = numbers.list("t")?.len();
+        self.check_params("t", numbers.values())?;
+        let d = self.dimension();
         self.check_budget(n, if all { (order + 1) * d } else { d }, (field, order))?;
-        let mut shape: Vec<usize> = if numbers.is_scalar() { vec![] } else { vec![n] };
-        shape.extend(if all { vec![order + 1, d] } else { vec![d] });
-        let row = if all { (order + 1) * d } else { d };
-        let curve = &self.curve;
-        filled_rows(py, &shape, n, row, |rows, out| {
-            let params = &params[rows];
-            if all || order == 0 {
-                return curve.visit(EvalInto { params, order, out });
-            }
-            // All orders up to `order`, then the last of each block.
-            let mut blocks = vec![0.0; params.len() * (order + 1) * d];
-            curve.visit(EvalInto { params, order, out: &mut blocks });
-            for (o, block) in out.chunks_exact_mut(d).zip(blocks.chunks_exact((order + 1) * d)) {
-                o.copy_from_slice(&block[order * d..]);
-            }
-        })
+        Ok(Evaluation { curve: &self.curve, numbers, order, all, d })
+    }
+}
+
+/// A checked evaluation of a curve at parameters (see [`PyCurve::evaluation`]).
+pub struct Evaluation<'a, 'py> {
+    curve: &'a AnyCurve,
+    numbers: Numbers<'py>,
+    order: usize,
+    all: bool,
+    d: usize,
+}
+
+impl Evaluation<'_, '_> {
+    /// The parameters.
+    pub fn params(&self) -> &[f64] {
+        self.numbers.values()
+    }
+
+    /// The output's shape, its number of rows (parameters) and the values per row.
+    pub fn layout(&self) -> (Vec<usize>, usize, usize) {
+        let (n, d, order) = (self.params().len(), self.d, self.order);
+        let mut shape: Vec<usize> = if self.numbers.is_scalar() { vec![] } else { vec![n] };
+        shape.extend(if self.all { vec![order + 1, d] } else { vec![d] });
+        let row = if self.all { (order + 1) * d } else { d };
+        (shape, n, row)
+    }
+
+    /// The part that may cross threads (the curve, the parameters, the orders), without
+    /// the Python objects.
+    pub fn task(&self) -> EvalTask<'_> {
+        EvalTask { curve: self.curve, params: self.params(), order: self.order, all: self.all, d: self.d }
+    }
+}
+
+/// The thread-safe part of an [`Evaluation`]: the curve, the parameters, what to compute.
+#[derive(Clone, Copy)]
+pub struct EvalTask<'a> {
+    curve: &'a AnyCurve,
+    params: &'a [f64],
+    order: usize,
+    all: bool,
+    d: usize,
+}
+
+impl EvalTask<'_> {
+    /// Writes the rows `rows` of the result into `out`.
+    pub fn fill(&self, rows: std::ops::Range<usize>, out: &mut [f64]) {
+        let (order, d) = (self.order, self.d);
+        let params = &self.params[rows];
+        if self.all || order == 0 {
+            return self.curve.visit(EvalInto { params, order, out });
+        }
+        // All orders up to `order`, then the last of each block.
+        let mut blocks = vec![0.0; params.len() * (order + 1) * d];
+        self.curve.visit(EvalInto { params, order, out: &mut blocks });
+        for (o, block) in out.chunks_exact_mut(d).zip(blocks.chunks_exact((order + 1) * d)) {
+            o.copy_from_slice(&block[order * d..]);
+        }
     }
 }
 

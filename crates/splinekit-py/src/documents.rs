@@ -17,8 +17,8 @@ use crate::surface_kinds::surface_object;
 #[pyclass(frozen, module = "splinekit", name = "Scene")]
 pub struct PyScene {
     /// The document as given (scenes are read, not rewritten, so this is what round-trips).
-    value: Value,
-    doc: SceneDocument,
+    pub(crate) value: Value,
+    pub(crate) doc: SceneDocument,
 }
 
 #[pymethods]

@@ -8,7 +8,7 @@ use splinekit::fit::{
     self as kfit, Fit, FitOptions, FitWithKnotsOptions, InterpolationOptions, KnotPlacement, Parametrization,
 };
 use splinekit_scene::refine::bspline_doc;
-use splinekit_scene::with_dimension;
+use splinekit_scene::{CurveDocument, with_dimension};
 
 use crate::arrays::{Numbers, as_points, check_finite};
 use crate::curve::PyCurve;
@@ -51,6 +51,26 @@ impl FitReport {
     }
     fn __repr__(&self) -> String {
         format!("<FitReport {}>", self.__str__())
+    }
+    /// The pickle state: the three numbers and the parameters (exact doubles).
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyTuple>> {
+        let restore = py.import("splinekit._splinekit")?.getattr("_restore")?;
+        let state = (self.rms_error, self.max_error, self.condition_estimate, self.params.clone());
+        ("fit_report", state, py.None()).into_pyobject(py).and_then(|args| (restore, args).into_pyobject(py))
+    }
+    /// The same errors, condition estimate and parameters.
+    fn __eq__(&self, other: PyRef<'_, FitReport>) -> bool {
+        (self.rms_error, self.max_error, self.condition_estimate)
+            == (other.rms_error, other.max_error, other.condition_estimate)
+            && self.params == other.params
+    }
+}
+
+impl FitReport {
+    /// The report of a `__reduce__` state `(rms_error, max_error, condition_estimate, params)`.
+    pub fn from_state(state: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let (rms_error, max_error, condition_estimate, params) = state.extract()?;
+        Ok(FitReport { rms_error, max_error, condition_estimate, params })
     }
 }
 
@@ -98,30 +118,69 @@ fn check_degree(p: usize) -> PyResult<()> {
 /// A fit's error, its field named as the Python argument: the kernel's `control_points`
 /// is `n_control_points` here (as the command line names it `--control-points`), the
 /// rest of the line unchanged.
-fn fit_error(e: splinekit::Error) -> PyErr {
+fn fit_error(e: splinekit::Error) -> String {
     let message = e.to_string();
     match message.strip_prefix("control_points:") {
-        Some(rest) => value_error(format!("n_control_points:{rest}")),
-        None => value_error(message),
+        Some(rest) => format!("n_control_points:{rest}"),
+        None => message,
     }
 }
 
-/// Refuses a fit of `m` points of dimension `d` whose least-squares solve would not fit
-/// the budget (see [`splinekit_scene::budget::least_squares_fit`]). More control points
-/// than points are left to the fit, which refuses them before allocating.
-fn check_fit_budget(request: &FitRequest, m: usize, d: usize) -> PyResult<()> {
-    let n = match (&request.control_points, &request.knots) {
-        (Some(n), _) => *n,
-        (None, Err(knots)) => knots.len().saturating_sub(request.degree + 1),
-        (None, Ok(_)) => return Ok(()),
-    };
-    if n > m {
-        return Ok(());
+impl FitRequest {
+    /// Reads `fit`'s keyword arguments (names or numbers), checked.
+    pub fn new(
+        degree: usize,
+        control_points: Option<usize>,
+        params: Choice<'_>,
+        knots: Choice<'_>,
+        closed: bool,
+        weights: Option<&Bound<'_, PyAny>>,
+        fix_ends: bool,
+    ) -> PyResult<Self> {
+        check_degree(degree)?;
+        let params = match params {
+            Choice::Name(n) => Ok(parametrization(&n)?),
+            Choice::Values(v) => Err(numbers_of("params", &v)?),
+        };
+        let knots = match knots {
+            Choice::Name(n) => Ok(placement(&n)?),
+            Choice::Values(v) => Err(numbers_of("knots", &v)?),
+        };
+        let weights = weights.map(|w| numbers_of("weights", w)).transpose()?;
+        Ok(FitRequest { degree, control_points, params, knots, closed, weights, fix_ends })
     }
-    let p = request.degree;
-    let cost = splinekit_scene::budget::least_squares_fit(m as f64, n as f64, p, d);
-    let what = format!("a degree-{p} fit of {m} points with {n} control points");
-    crate::budget::current()?.check("points", &what, cost).or_value_error()
+
+    /// Refuses a fit of `m` points of dimension `d` whose least-squares solve would not
+    /// fit the budget (see [`splinekit_scene::budget::least_squares_fit`]). More control
+    /// points than points are left to the fit, which refuses them before allocating.
+    pub fn check_budget(&self, m: usize, d: usize) -> PyResult<()> {
+        let n = match (&self.control_points, &self.knots) {
+            (Some(n), _) => *n,
+            (None, Err(knots)) => knots.len().saturating_sub(self.degree + 1),
+            (None, Ok(_)) => return Ok(()),
+        };
+        if n > m {
+            return Ok(());
+        }
+        let p = self.degree;
+        let cost = splinekit_scene::budget::least_squares_fit(m as f64, n as f64, p, d);
+        let what = format!("a degree-{p} fit of {m} points with {n} control points");
+        crate::budget::current()?.check("points", &what, cost).or_value_error()
+    }
+}
+
+/// The fit of the C-ordered coordinates `values` of points of dimension `d` (any thread,
+/// no GIL): the B-spline's document and the report, or the error's message.
+pub fn fitted(request: FitRequest, values: &[f64], d: usize) -> Result<(CurveDocument, FitReport), String> {
+    with_dimension!(d, "points", D => {
+        let f = request.run(as_points::<D>(values)).map_err(fit_error)?;
+        let report = FitReport { rms_error: f.rms_error, max_error: f.max_error, condition_estimate: f.condition_estimate, params: f.params };
+        Ok((bspline_doc(&f.curve), report))
+    }, or dimension_error)
+}
+
+fn dimension_error(e: splinekit_scene::DocumentError) -> String {
+    e.to_string()
 }
 
 /// Owned numbers of a 1-D argument, checked finite.
@@ -133,7 +192,8 @@ fn numbers_of(field: &str, ob: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
 }
 
 /// Everything `fit` was asked for, read from Python.
-struct FitRequest {
+#[derive(Clone)]
+pub struct FitRequest {
     degree: usize,
     control_points: Option<usize>,
     params: Result<Parametrization, Vec<f64>>,
@@ -210,7 +270,10 @@ impl FitRequest {
 /// residuals; ``fix_ends`` makes the curve start and end at the first and last points.
 /// Returns a ``BSpline`` whose ``fit_report`` holds the errors.
 #[pyfunction]
-#[pyo3(signature = (points, degree, n_control_points = None, params = Choice::Name("chord".into()), knots = Choice::Name("averaged".into()), closed = false, weights = None, fix_ends = false))]
+#[pyo3(
+    signature = (points, degree, n_control_points = None, params = Choice::Name("chord".into()), knots = Choice::Name("averaged".into()), closed = false, weights = None, fix_ends = false),
+    text_signature = "(points, degree, n_control_points=None, params='chord', knots='averaged', closed=False, weights=None, fix_ends=False)"
+)]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
     py: Python<'py>,
@@ -223,26 +286,12 @@ pub fn fit<'py>(
     weights: Option<&Bound<'py, PyAny>>,
     fix_ends: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
-    check_degree(degree)?;
-    let params = match params {
-        Choice::Name(n) => Ok(parametrization(&n)?),
-        Choice::Values(v) => Err(numbers_of("params", &v)?),
-    };
-    let knots = match knots {
-        Choice::Name(n) => Ok(placement(&n)?),
-        Choice::Values(v) => Err(numbers_of("knots", &v)?),
-    };
-    let weights = weights.map(|w| numbers_of("weights", w)).transpose()?;
-    let request = FitRequest { degree, control_points: n_control_points, params, knots, closed, weights, fix_ends };
+    let request = FitRequest::new(degree, n_control_points, params, knots, closed, weights, fix_ends)?;
     let data = Numbers::new(points)?;
     let (m, d) = data.rows("points")?;
-    check_fit_budget(&request, m, d)?;
+    request.check_budget(m, d)?;
     let values = data.values();
-    let (doc, report) = with_dimension!(d, "points", D => {
-        let f = py.detach(|| request.run(as_points::<D>(values))).map_err(fit_error)?;
-        let report = FitReport { rms_error: f.rms_error, max_error: f.max_error, condition_estimate: f.condition_estimate, params: f.params };
-        Ok::<_, PyErr>((bspline_doc(&f.curve), report))
-    }, or value_error)?;
+    let (doc, report) = py.detach(|| fitted(request, values, d)).map_err(value_error)?;
     wrap(py, PyCurve::new(doc)?, Some(Py::new(py, report)?))
 }
 

@@ -4,9 +4,12 @@
 //! curves and surfaces of every kind the shape documents describe, evaluated from and into
 //! numpy arrays by the splinekit kernel, fitting and interpolation, documents in and out.
 //! Every error is a `ValueError` with the command line's one-line message; batch work runs
-//! with the GIL released.
+//! with the GIL released, and `fit_many` / `evaluate_many` spread many shapes over every
+//! core. Every object pickles and copies (its state is its shape document) and compares
+//! with `==`.
 
 mod arrays;
+mod batch;
 mod blending;
 mod budget;
 mod curve;
@@ -21,6 +24,7 @@ mod mesh;
 mod render;
 mod surface;
 mod surface_kinds;
+mod travel;
 
 use pyo3::prelude::*;
 
@@ -45,6 +49,9 @@ fn _splinekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fitting::interpolate, m)?)?;
     m.add_function(wrap_pyfunction!(documents::load, m)?)?;
     m.add_function(wrap_pyfunction!(render::render, m)?)?;
+    m.add_function(wrap_pyfunction!(batch::fit_many, m)?)?;
+    m.add_function(wrap_pyfunction!(batch::evaluate_many, m)?)?;
+    m.add_function(wrap_pyfunction!(travel::_restore, m)?)?;
     m.add("HAS_RENDER", cfg!(feature = "render"))?;
     Ok(())
 }

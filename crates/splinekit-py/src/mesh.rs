@@ -31,7 +31,7 @@ const EXPORT_COLOR: [f32; 4] = [0.12, 0.37, 0.75, 1.0];
 /// [0, 1]² over the domain.
 #[pyclass(frozen, module = "splinekit", name = "Mesh")]
 pub struct PyMesh {
-    mesh: TriangleMesh,
+    pub(crate) mesh: TriangleMesh,
 }
 
 fn rows<'py, const N: usize, T: numpy::Element + Copy>(

@@ -15,7 +15,7 @@ use crate::errors::value_error;
 /// ``time`` seconds. Raises ``RuntimeError`` when no graphics adapter exists (install a
 /// GPU driver or Mesa) or when the package was built without the ``render`` feature.
 #[pyfunction]
-#[pyo3(signature = (obj, path, size = (800, 600), time = None))]
+#[pyo3(signature = (obj, path, size = (800, 600), time = None), text_signature = "(obj, path, size=(800, 600), time=None)")]
 pub fn render(
     py: Python<'_>,
     obj: &Bound<'_, PyAny>,

@@ -9,7 +9,7 @@ use splinekit::surface::{Surface, unit_normal};
 use splinekit_scene::budget::{Cost, F64};
 use splinekit_scene::{AnySurface, DimensionVisitor, SurfaceDocument, Surfaces};
 
-use crate::arrays::{Numbers, as_points_mut, check_params, filled};
+use crate::arrays::{Numbers, RowWriter, as_points_mut, check_params, filled, unfilled_rows};
 use crate::budget;
 use crate::errors::{OrValueError, value_error};
 
@@ -89,17 +89,19 @@ impl DimensionVisitor<Surfaces> for WithNormals<'_> {
 }
 
 /// The parameters of one call: u and v values, their output shape, grid or paired.
-struct Request<'py> {
+pub struct Request<'py> {
     u: Numbers<'py>,
     v: Numbers<'py>,
     grid: bool,
 }
 
 impl<'py> Request<'py> {
-    fn us(&self) -> &[f64] {
+    /// The u parameters.
+    pub fn us(&self) -> &[f64] {
         self.u.values()
     }
-    fn vs(&self) -> &[f64] {
+    /// The v parameters.
+    pub fn vs(&self) -> &[f64] {
         self.v.values()
     }
     /// Evaluation sites: Nu·Nv on a grid, N paired.
@@ -173,8 +175,28 @@ impl PySurface {
         filled(py, &shape, |out| surface.visit(Partials { us, vs, grid, k, out }))
     }
 
+    /// The grid evaluation S(u × v) of `__call__`, checked, as its request and a new
+    /// (sites, 1, D) array not yet written: `fill_grid` writes it (from any thread) and
+    /// `shaped` gives the result of `__call__`.
+    pub fn grid_evaluation<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<(Request<'py>, Bound<'py, PyArrayDyn<f64>>, RowWriter)> {
+        let r = self.request(u, v, true)?;
+        self.check_budget(&r, 0, 1)?;
+        let (array, writer) = unfilled_rows(py, &[r.count(), 1, self.dimension()], 1, r.count() * self.dimension());
+        Ok((r, array, writer))
+    }
+
+    /// Writes S on the grid `us` × `vs` into `out` (as `__call__` does).
+    pub fn fill_grid(&self, us: &[f64], vs: &[f64], out: &mut [f64]) {
+        self.surface.visit(Partials { us, vs, grid: true, k: 0, out })
+    }
+
     /// Reshapes (sites, D) blocks to the request's leading shape.
-    fn shaped<'py>(&self, r: &Request<'py>, a: Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    pub fn shaped<'py>(&self, r: &Request<'py>, a: Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         let mut shape = r.shape();
         shape.push(self.dimension());
         let np = a.py().import("numpy")?;

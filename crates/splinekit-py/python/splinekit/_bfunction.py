@@ -32,6 +32,24 @@ class BFunction:
     def __repr__(self):
         return f"BFunction({self.document!r})"
 
+    # Travels as its document (pickle, copy, deepcopy) and compares by it: the rebuilt
+    # B-function is the same function, bit for bit.
+    def __reduce__(self):
+        return (_from_document, (dict(self.document),))
+
+    def __eq__(self, other):
+        if not isinstance(other, BFunction):
+            return NotImplemented
+        return self.document == other.document
+
+    __hash__ = None  # type: ignore[assignment]  # equal by a mutable document: unhashable
+
+
+def _from_document(document):
+    """The ``BFunction`` of a document ``{"type": kind, **params}`` (what pickle calls)."""
+    params = dict(document)
+    return BFunction(params.pop("type"), **params)
+
 
 def bfunction(kind="erbs", **params):
     """The B-function of ``kind`` with ``params`` as a callable ``B(t, nu=0)`` (see
