@@ -1,7 +1,7 @@
 //! One parameter direction of a tensor-product spline: degree, knots, periodic unrolling
 //! and span search.
 
-use crate::basis::{KnotVector, Side, find_span};
+use crate::basis::{KnotVector, Side, advance_span, advance_span_side, find_span};
 use crate::curve::Interval;
 use crate::curve::span_kernel::ReciprocalKnotDifferences;
 use crate::error::{Error, Result};
@@ -127,30 +127,35 @@ impl SplineAxis {
     #[inline]
     pub fn span_side(&self, t: f64, side: Side) -> usize {
         let (p, n) = (self.degree, self.eval_count());
-        let k = &self.eval_knots;
-        let Some((a, inv_h)) = self.uniform else {
-            return find_span(k, p, n, t, side);
-        };
-        let mut s = (p + ((t - a) * inv_h).max(0.0) as usize).min(n - 1);
-        match side {
-            Side::Right => {
-                while s > p && k[s] > t {
-                    s -= 1;
-                }
-                while s + 1 < n && k[s + 1] <= t {
-                    s += 1;
-                }
-            }
-            Side::Left => {
-                while s > p && k[s] >= t {
-                    s -= 1;
-                }
-                while s + 1 < n && k[s + 1] < t {
-                    s += 1;
-                }
-            }
+        match self.uniform {
+            Some(_) => advance_span_side(&self.eval_knots, p, n, self.uniform_estimate(t), t, side),
+            None => find_span(&self.eval_knots, p, n, t, side),
         }
-        s
+    }
+    /// The span of `t` (right limit) searched from `hint`, the span of an earlier parameter
+    /// of a batch: for uniform knots from the direct estimate p + ⌊(t − t_p)/h⌋ instead
+    /// (then O(1)), otherwise by galloping from the hint ([`advance_span`]), O(1) for sorted
+    /// batches and O(log n) in any order. The estimate is only a starting point: the span
+    /// returned satisfies t_s ≤ t < t_{s+1} by exact comparison with the knots.
+    #[inline]
+    pub fn span_from(&self, hint: usize, t: f64) -> usize {
+        let hint = if self.uniform.is_some() { self.uniform_estimate(t) } else { hint };
+        advance_span(&self.eval_knots, self.degree, self.eval_count(), hint, t)
+    }
+    /// Whether the knots of the domain are uniform (to [`PARAMETER_RELATIVE`]), detected
+    /// once at construction; spans are then located by arithmetic.
+    pub fn is_uniform(&self) -> bool {
+        self.uniform.is_some()
+    }
+    /// p + ⌊(t − t_p)/h⌋ clamped to [p, N − 1] for uniform knots of spacing h (p otherwise).
+    #[inline(always)]
+    fn uniform_estimate(&self, t: f64) -> usize {
+        let (p, n) = (self.degree, self.eval_count());
+        match self.uniform {
+            // `as usize` saturates: NaN and negative values give 0.
+            Some((a, inv_h)) => p + ((t - a) * inv_h).min((n - 1 - p) as f64) as usize,
+            None => p,
+        }
     }
     /// Distinct knots of the domain, both ends included.
     pub fn breakpoints(&self) -> Vec<f64> {
