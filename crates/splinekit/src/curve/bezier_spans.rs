@@ -104,8 +104,8 @@ impl<T: Coefficient> BezierSpans<T> {
     /// Batch evaluation: `out[i·(order+1) + k]` = c^{(k)}(map(`params[i]`)), in any order of
     /// the parameters. `map` brings a parameter into the domain; `locate(hint, t)` returns
     /// the span of t (t_s ≤ t < t_{s+1}, the last span at the end of the domain) given the
-    /// span of the previous parameter — [`crate::basis::SplineAxis::span_from`]: O(1) for
-    /// uniform knots and sorted batches, O(log n) in any order. Monomorphised on the degree;
+    /// span of the previous parameter ([`crate::basis::SplineAxis::span`]: O(1) for knots
+    /// spread about evenly, O(log n) at worst, in any order). Monomorphised on the degree;
     /// a span's points are loaded once per run of parameters inside it.
     pub fn eval_many(
         &self,

@@ -18,8 +18,9 @@ use crate::error::{Error, Result, check_points_finite};
 ///   knot of multiplicity m — including the seam. The given n + p + 1 knots must repeat
 ///   their spacing with period n (t_{j+n} − t_j = T for j = 0 … p).
 ///
-/// Evaluation finds the span (in O(1) for uniform knots, by binary search otherwise, or
-/// incrementally in sorted batches) and evaluates the span's Bézier form (degrees 1 … 7)
+/// Evaluation finds the span (a guess by arithmetic for uniform knots or from a bucket table
+/// otherwise, verified against the knots by galloping search: O(1) for evenly spread knots,
+/// O(log n) at worst, in any order of the parameters) and evaluates the span's Bézier form (degrees 1 … 7)
 /// or the p + 1 non-zero basis functions.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BSplineCurve<const D: usize> {
@@ -198,15 +199,14 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
         let axis = &self.axis;
         if let Some(spans) = &self.spans {
             let map = |t: f64| axis.normalise(t);
-            let locate = |hint: usize, t: f64| axis.span_from(hint, t);
+            let locate = |_: usize, t: f64| axis.span(t);
             spans.eval_many(params, order, &mut out[..params.len() * (order + 1)], map, locate);
             return;
         }
         let w = order + 1;
-        let mut span = self.degree();
         for (i, &t) in params.iter().enumerate() {
             let t = self.normalise(t, Side::Right);
-            span = axis.span_from(span, t);
+            let span = axis.span(t);
             self.eval_on(span, t, &mut out[i * w..(i + 1) * w]);
         }
     }
