@@ -142,23 +142,42 @@ impl<T: Coefficient> BezierSpans<T> {
             // points can stay in registers.
             for (&t, o) in params.iter().zip(out.iter_mut()) {
                 let t = map(t);
-                at.locate(self, t, &locate);
-                *o = bernstein_sum::<W, T>(&at.points, (t - at.start) * at.inv_h);
+                *o = match at.find(self, t, &locate) {
+                    None => bernstein_sum::<W, T>(&at.points, (t - at.start) * at.inv_h),
+                    Some(j) => {
+                        let (b, start, inv_h) = self.span_at::<W>(j);
+                        bernstein_sum::<W, T>(b, (t - start) * inv_h)
+                    }
+                };
             }
             return;
         }
         for (&t, o) in params.iter().zip(out.chunks_exact_mut(w)) {
             let t = map(t);
-            at.locate(self, t, &locate);
-            eval_fixed::<W, T>(&at.points, (t - at.start) * at.inv_h, at.inv_h, o);
+            match at.find(self, t, &locate) {
+                None => eval_fixed::<W, T>(&at.points, (t - at.start) * at.inv_h, at.inv_h, o),
+                Some(j) => {
+                    let (b, start, inv_h) = self.span_at::<W>(j);
+                    eval_fixed::<W, T>(b, (t - start) * inv_h, inv_h, o)
+                }
+            }
         }
+    }
+
+    /// The Bézier points, start and 1/h of span index j (counted from the first span).
+    #[inline(always)]
+    fn span_at<const W: usize>(&self, j: usize) -> (&[T; W], f64, f64) {
+        let (start, _, inv_h) = self.frames[j];
+        (self.points[j * W..(j + 1) * W].try_into().expect("W points"), start, inv_h)
     }
 }
 
-/// The span of the last parameter of a batch: its index, knot interval [start, end),
-/// 1/(end − start) and Bézier points.
+/// The span of the batch's current run of parameters: its index, knot interval
+/// [start, end), 1/(end − start) and Bézier points (copied, to stay in registers).
 struct SpanCursor<const W: usize, T> {
     span: usize,
+    /// The span of the last parameter evaluated in place.
+    missed: usize,
     start: f64,
     end: f64,
     inv_h: f64,
@@ -171,6 +190,7 @@ impl<const W: usize, T: Coefficient> SpanCursor<W, T> {
     fn first(spans: &BezierSpans<T>) -> Self {
         let mut at = SpanCursor {
             span: spans.first_span,
+            missed: usize::MAX,
             start: 0.0,
             end: 0.0,
             inv_h: 0.0,
@@ -190,14 +210,23 @@ impl<const W: usize, T: Coefficient> SpanCursor<W, T> {
         self.points = spans.points[j * W..(j + 1) * W].try_into().expect("W points");
     }
 
-    /// Moves to the span of `t` unless t is still in the current one (the span of the end
-    /// of the domain is the last).
+    /// Where to evaluate t: `None` in the cursor's span, moved there when t left it for the
+    /// next span or for the span of the previous miss (a sorted batch, forwards or
+    /// backwards); otherwise `Some(j)`, the index of t's span to read in place, leaving the
+    /// cursor (random order: no copy of a span that serves one parameter).
     #[inline(always)]
-    fn locate(&mut self, spans: &BezierSpans<T>, t: f64, locate: &impl Fn(usize, f64) -> usize) {
+    fn find(&mut self, spans: &BezierSpans<T>, t: f64, locate: &impl Fn(usize, f64) -> usize) -> Option<usize> {
         let last = self.span + 1 == spans.first_span + spans.frames.len();
-        if !(t >= self.start && (t < self.end || last)) {
-            self.load(spans, locate(self.span, t));
+        if t >= self.start && (t < self.end || last) {
+            return None;
         }
+        let span = locate(self.span, t);
+        if span == self.span + 1 || span == self.missed {
+            self.load(spans, span);
+            return None;
+        }
+        self.missed = span;
+        Some(span - spans.first_span)
     }
 }
 
