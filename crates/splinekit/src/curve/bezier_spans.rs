@@ -139,7 +139,8 @@ impl<T: Coefficient> BezierSpans<T> {
         let mut at = SpanCursor::<W, T>::first(self);
         if order == 0 {
             // Points only: a loop without the derivative differences, so that the span's
-            // points can stay in registers.
+            // points can stay in registers. (Non-temporal stores for large outputs were
+            // tried: slower here than ordinary ones.)
             for (&t, o) in params.iter().zip(out.iter_mut()) {
                 let t = map(t);
                 *o = match at.find(self, t, &locate) {
@@ -246,8 +247,10 @@ fn powers<const W: usize>(u: f64) -> ([f64; W], [f64; W]) {
 /// The Bernstein sum Σ_{i ≤ q} C(q,i) uⁱ (1−u)^{q−i} b_i from the powers of u and 1 − u.
 #[inline(always)]
 fn bernstein<const W: usize, T: Coefficient>(b: &[T; W], up: &[f64; W], sp: &[f64; W], q: usize) -> T {
-    let mut acc = T::zero();
-    for i in 0..=q {
+    // Starting from the first term (not from zero, which the compiler may not fold away
+    // because 0 + (−0) = +0).
+    let mut acc = b[0] * (BINOMIAL[q][0] * up[0] * sp[q]);
+    for i in 1..=q {
         acc += b[i] * (BINOMIAL[q][i] * up[i] * sp[q - i]);
     }
     acc

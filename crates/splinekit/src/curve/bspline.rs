@@ -198,7 +198,9 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
     fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
         let axis = &self.axis;
         if let Some(spans) = &self.spans {
-            let map = |t: f64| axis.normalise(t);
+            // The domain and the kind of axis, read once for the batch.
+            let (domain, periodic) = (axis.domain(), axis.is_periodic());
+            let map = |t: f64| if periodic { domain.wrap_periodic(t, Side::Right) } else { domain.clamp(t) };
             let locate = |_: usize, t: f64| axis.span(t);
             spans.eval_many(params, order, &mut out[..params.len() * (order + 1)], map, locate);
             return;
