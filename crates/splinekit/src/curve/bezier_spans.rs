@@ -101,6 +101,28 @@ impl<T: Coefficient> BezierSpans<T> {
 }
 
 impl<T: Coefficient> BezierSpans<T> {
+    /// The point c(t) on span `span` (which contains t): the Bernstein sum alone, without
+    /// the derivative machinery of [`BezierSpans::eval`] (the same value as its `out[0]`).
+    #[inline]
+    pub fn point(&self, span: usize, t: f64) -> T {
+        let j = span - self.first_span;
+        match self.degree {
+            1 => self.point_fixed::<2>(j, t),
+            2 => self.point_fixed::<3>(j, t),
+            3 => self.point_fixed::<4>(j, t),
+            4 => self.point_fixed::<5>(j, t),
+            5 => self.point_fixed::<6>(j, t),
+            6 => self.point_fixed::<7>(j, t),
+            _ => self.point_fixed::<8>(j, t),
+        }
+    }
+
+    #[inline(always)]
+    fn point_fixed<const W: usize>(&self, j: usize, t: f64) -> T {
+        let (b, start, inv_h) = self.span_at::<W>(j);
+        bernstein_sum::<W, T>(b, (t - start) * inv_h)
+    }
+
     /// Batch evaluation: `out[i·(order+1) + k]` = c^{(k)}(map(`params[i]`)), in any order of
     /// the parameters. `map` brings a parameter into the domain; `locate(hint, t)` returns
     /// the span of t (t_s ≤ t < t_{s+1}, the last span at the end of the domain) given the

@@ -195,6 +195,22 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
         self.eval_on(span, t, out);
     }
 
+    /// c(t) alone: on the Bézier-span path the span's Bernstein sum without the derivative
+    /// machinery of [`Curve::eval_side`] (the same value as its `out[0]`).
+    #[inline]
+    fn point(&self, t: f64) -> Point<D> {
+        let t = self.normalise(t, Side::Right);
+        let span = self.span_of(t, Side::Right);
+        match &self.spans {
+            Some(b) => b.point(span, t),
+            None => {
+                let mut out = [Point::<D>::zeros()];
+                self.eval_on(span, t, &mut out);
+                out[0]
+            }
+        }
+    }
+
     fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
         let axis = &self.axis;
         if let Some(spans) = &self.spans {
@@ -307,6 +323,7 @@ mod tests {
                             for (i, &t) in params.iter().enumerate() {
                                 c.eval(t, &mut single);
                                 c.eval_de_boor(t, Side::Right, &mut reference);
+                                assert_eq!(c.point(t), single[0], "{kind} p {p}: point({t}) differs from eval");
                                 let mut tol = 1e-13 * scale;
                                 for k in 0..w {
                                     let r = reference[k];
