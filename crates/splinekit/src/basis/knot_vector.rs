@@ -334,7 +334,11 @@ mod tests {
                         for side in [Side::Right, Side::Left] {
                             let want = find_span(&k, p, n, t, side);
                             for hint in [0, p, (p + n) / 2, n - 1, n + 5, usize::MAX / 2] {
-                                assert_eq!(advance_span_side(&k, p, n, hint, t, side), want, "p {p} n {n} t {t} hint {hint}");
+                                assert_eq!(
+                                    advance_span_side(&k, p, n, hint, t, side),
+                                    want,
+                                    "p {p} n {n} t {t} hint {hint}"
+                                );
                             }
                             // A hint a few spans off in either direction.
                             let near = want.saturating_sub(3).max(p);

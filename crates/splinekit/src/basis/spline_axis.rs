@@ -47,7 +47,13 @@ impl SpanGuide {
         let (a, b) = (knots[p], knots[n]);
         let buckets = n - p;
         let h = (b - a) / buckets as f64;
-        let mut guide = SpanGuide { start: a, buckets_per_unit: 1.0 / h, last_bucket: buckets - 1, uniform: false, table: Vec::new() };
+        let mut guide = SpanGuide {
+            start: a,
+            buckets_per_unit: 1.0 / h,
+            last_bucket: buckets - 1,
+            uniform: false,
+            table: Vec::new(),
+        };
         guide.uniform = (p..=n).all(|i| (knots[i] - (a + (i - p) as f64 * h)).abs() <= 0.25 * h);
         if guide.uniform || u32::try_from(n).is_err() {
             return guide;

@@ -329,7 +329,10 @@ mod tests {
                                     let r = reference[k];
                                     let (b, s) = (batch[i * w + k], single[k]);
                                     let what = format!("{kind} p {p} n {n} {order_of_params} t {t} order {k}");
-                                    assert!((b - r).norm() <= tol.max(1e-13 * r.norm()), "{what}: batch {b} vs de Boor {r}");
+                                    assert!(
+                                        (b - r).norm() <= tol.max(1e-13 * r.norm()),
+                                        "{what}: batch {b} vs de Boor {r}"
+                                    );
                                     assert_eq!(b, s, "{what}: batch differs from the single evaluation");
                                     tol *= 2.0 * p.saturating_sub(k).max(1) as f64 / h_min;
                                 }

@@ -41,7 +41,5 @@ pub fn eval_many<const D: usize, C: Curve<D> + Sync + ?Sized>(
     }
     // A few chunks per thread, so a slow thread (a busy core) does not hold up the rest.
     let chunk = params.len().div_ceil(4 * threads).max(MIN_CHUNK);
-    out.par_chunks_mut(chunk * w)
-        .zip(params.par_chunks(chunk))
-        .for_each(|(o, t)| curve.eval_many(t, order, o));
+    out.par_chunks_mut(chunk * w).zip(params.par_chunks(chunk)).for_each(|(o, t)| curve.eval_many(t, order, o));
 }
