@@ -3,8 +3,9 @@ timings including the numpy conversions (best of --repeat runs).
 
     python bench/python/bench.py [--repeat 3] [--quick]
 
-Workloads (issue 12): a cubic 3-D B-spline with 1000 control points at 10⁶ sorted
-parameters (points; points and 2 derivatives), the least-squares fit of 10⁶ samples with
+Workloads (issues 12 and 20): a cubic 3-D B-spline with 1000 control points at 10⁶ sorted
+parameters (points; points and 2 derivatives); points at random parameters (10⁶), and with
+10⁵ control points at sorted (10⁶) and random (2·10⁴) parameters; the least-squares fit of 10⁶ samples with
 1000 control points, and a bicubic 100 × 100 B-spline surface on a 1000 × 1000 grid with
 unit normals. Each line prints the time per evaluation and the peer's time as a multiple of
 splinekit's; results are checked to agree before they are timed.
@@ -87,6 +88,19 @@ def curve_workloads(args):
         t_some = best(lambda: [curve.derivative(some, k) for k in range(3)], args.repeat)[0]
         peers.append(("splipy (10⁵ params, scaled)", t_some * m / some.size))
     report("curve points + 2 derivatives", m, t_ours, peers)
+
+    # Any order of the parameters, and many control points (issue 20): span search must not
+    # walk the knots.
+    for n in (1000, 100_000):
+        knots, cp = clamped_uniform(n), rng.normal(size=(n, 3))
+        ours, ref = sk.BSpline(knots, cp, 3), BSpline(knots, cp, 3)
+        for order in ("sorted", "random"):
+            count = m if order == "sorted" or n <= 1000 else max(1, m // 50)
+            t = np.linspace(0.0, 1.0, count) if order == "sorted" else rng.random(count)
+            np.testing.assert_allclose(ours(t), ref(t), atol=1e-10)
+            t_ours, _ = best(lambda: ours(t), args.repeat)
+            t_ref, _ = best(lambda: ref(t), args.repeat)
+            report(f"curve points, {n} cp, {count} {order} params", count, t_ours, [("scipy", t_ref)])
 
 
 def fit_workload(args):

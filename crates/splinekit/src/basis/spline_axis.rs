@@ -1,7 +1,7 @@
 //! One parameter direction of a tensor-product spline: degree, knots, periodic unrolling
 //! and span search.
 
-use crate::basis::{KnotVector, Side, find_span};
+use crate::basis::{KnotVector, Side, advance_span, advance_span_side};
 use crate::curve::Interval;
 use crate::curve::span_kernel::ReciprocalKnotDifferences;
 use crate::error::{Error, Result};
@@ -21,7 +21,63 @@ pub struct SplineAxis {
     periodic: bool,
     eval_knots: Vec<f64>,
     inv: ReciprocalKnotDifferences,
-    uniform: Option<(f64, f64)>,
+    guide: SpanGuide,
+}
+
+/// Where a span search starts: the domain [t_p, t_N] cut into B = N − p equal buckets,
+/// bucket b = ⌊(t − t_p)·B/(t_N − t_p)⌋. For uniform knots bucket b is span p + b (direct
+/// arithmetic); otherwise a table holds the span of each bucket's start. Either way the
+/// guess is then verified exactly against the knots by [`advance_span`] (galloping), so the
+/// guide affects speed only: O(1) for knots spread about evenly, O(log N) at worst.
+#[derive(Debug, Clone, PartialEq)]
+struct SpanGuide {
+    start: f64,
+    buckets_per_unit: f64,
+    last_bucket: usize,
+    uniform: bool,
+    /// The span of the start of each bucket; empty for uniform knots (and for more than
+    /// 2³² spans, where the arithmetic guess p + b is only a starting point).
+    table: Vec<u32>,
+}
+
+impl SpanGuide {
+    /// Detects uniform knots (every knot of the domain within h/4 of t_p + (i − p)h, so the
+    /// arithmetic guess is at most one span off) or tabulates the buckets' spans.
+    fn new(knots: &[f64], p: usize, n: usize) -> Self {
+        let (a, b) = (knots[p], knots[n]);
+        let buckets = n - p;
+        let h = (b - a) / buckets as f64;
+        let mut guide = SpanGuide {
+            start: a,
+            buckets_per_unit: 1.0 / h,
+            last_bucket: buckets - 1,
+            uniform: false,
+            table: Vec::new(),
+        };
+        guide.uniform = (p..=n).all(|i| (knots[i] - (a + (i - p) as f64 * h)).abs() <= 0.25 * h);
+        if guide.uniform || u32::try_from(n).is_err() {
+            return guide;
+        }
+        let mut span = p;
+        guide.table = (0..buckets)
+            .map(|k| {
+                span = advance_span(knots, p, n, span, a + k as f64 * h);
+                span as u32
+            })
+            .collect();
+        guide
+    }
+
+    /// The guessed span of t (any t; NaN guesses the first span).
+    #[inline(always)]
+    fn guess(&self, t: f64, p: usize) -> usize {
+        // `as usize` saturates: NaN and negative values give 0.
+        let k = ((t - self.start) * self.buckets_per_unit).min(self.last_bucket as f64) as usize;
+        match self.table.get(k) {
+            Some(&s) => s as usize,
+            None => p + k,
+        }
+    }
 }
 
 impl SplineAxis {
@@ -66,11 +122,8 @@ impl SplineAxis {
         };
         let n_eval = if periodic { count + p } else { count };
         let inv = ReciprocalKnotDifferences::new(&eval_knots, p);
-        let h = (eval_knots[n_eval] - eval_knots[p]) / (n_eval - p) as f64;
-        let uniform = (p..n_eval)
-            .all(|i| ((eval_knots[i + 1] - eval_knots[i]) - h).abs() <= PARAMETER_RELATIVE * h)
-            .then(|| (eval_knots[p], 1.0 / h));
-        Ok(SplineAxis { degree, knots, count, periodic, eval_knots, inv, uniform })
+        let guide = SpanGuide::new(&eval_knots, p, n_eval);
+        Ok(SplineAxis { degree, knots, count, periodic, eval_knots, inv, guide })
     }
 
     /// Degree p.
@@ -123,34 +176,18 @@ impl SplineAxis {
         self.span_side(t, Side::Right)
     }
     /// The span s ∈ [p, N − 1] of `t` (in the domain): t_s ≤ t < t_{s+1} (`Right`) or
-    /// t_s < t ≤ t_{s+1} (`Left`). O(1) for uniform knots, binary search otherwise.
+    /// t_s < t ≤ t_{s+1} (`Left`). Guessed by arithmetic (uniform knots) or a bucket table,
+    /// then verified against the knots by galloping search: O(1) for evenly spread knots,
+    /// O(log N) at worst.
     #[inline]
     pub fn span_side(&self, t: f64, side: Side) -> usize {
         let (p, n) = (self.degree, self.eval_count());
-        let k = &self.eval_knots;
-        let Some((a, inv_h)) = self.uniform else {
-            return find_span(k, p, n, t, side);
-        };
-        let mut s = (p + ((t - a) * inv_h).max(0.0) as usize).min(n - 1);
-        match side {
-            Side::Right => {
-                while s > p && k[s] > t {
-                    s -= 1;
-                }
-                while s + 1 < n && k[s + 1] <= t {
-                    s += 1;
-                }
-            }
-            Side::Left => {
-                while s > p && k[s] >= t {
-                    s -= 1;
-                }
-                while s + 1 < n && k[s + 1] < t {
-                    s += 1;
-                }
-            }
-        }
-        s
+        advance_span_side(&self.eval_knots, p, n, self.guide.guess(t, p), t, side)
+    }
+    /// Whether the knots of the domain are uniform (each within a quarter span of t_p + i·h),
+    /// detected once at construction: spans are then guessed by arithmetic.
+    pub fn is_uniform(&self) -> bool {
+        self.guide.uniform
     }
     /// Distinct knots of the domain, both ends included.
     pub fn breakpoints(&self) -> Vec<f64> {
@@ -162,5 +199,49 @@ impl SplineAxis {
     #[inline]
     pub fn wrap_index(&self, i: usize) -> usize {
         i % self.count
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::basis::find_span;
+
+    #[test]
+    fn guided_spans_are_the_binary_search_spans() {
+        // Uniform (as i/N, inexact in floating point, for large N), clustered, and with
+        // repeated knots; clamped, unclamped and periodic.
+        let mut cases: Vec<(usize, Vec<f64>, usize, bool)> = Vec::new();
+        for n in [4, 10, 1000, 100_000] {
+            let p = 3;
+            let mut k = vec![0.0; p + 1];
+            k.extend((1..n - p).map(|i| i as f64 / (n - p) as f64));
+            k.extend([1.0; 4]);
+            cases.push((p, k, n, false));
+        }
+        let clustered: Vec<f64> = (0..60).map(|i| if i < 50 { i as f64 * 1e-9 } else { (i - 49) as f64 }).collect();
+        cases.push((2, clustered, 57, false));
+        cases.push((2, vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 3.0, 3.0, 3.0, 4.0, 4.0, 4.0], 9, false));
+        let gaps = [1.0, 5.0, 0.5, 2.0, 9.0, 1.0, 0.25, 3.0, 1.5];
+        let periodic: Vec<f64> = (0..12).scan(0.0, |x, i| Some(std::mem::replace(x, *x + gaps[i % 9]))).collect();
+        cases.push((2, periodic, 9, true));
+        for (p, k, n, periodic) in cases {
+            let axis = SplineAxis::new(p, k, n, periodic, "knots").unwrap();
+            let (ek, ne) = (axis.eval_knots(), axis.eval_count());
+            let d = axis.domain();
+            let mut ts: Vec<f64> = ek[p..=ne].to_vec();
+            ts.extend((0..2000).map(|i| d.start + (d.end - d.start) * ((i * 7919) % 2000) as f64 / 1999.0));
+            ts.extend(ek[p..=ne].iter().map(|&x| x.next_up().min(d.end)));
+            ts.extend(ek[p..=ne].iter().map(|&x| x.next_down().max(d.start)));
+            for &t in &ts {
+                for side in [Side::Right, Side::Left] {
+                    assert_eq!(axis.span_side(t, side), find_span(ek, p, ne, t, side), "n {n} t {t} {side:?}");
+                }
+            }
+        }
+        let uniform = SplineAxis::new(3, (0..20).map(|i| i as f64 / 3.0).collect(), 16, false, "knots").unwrap();
+        assert!(uniform.is_uniform());
+        let squares = SplineAxis::new(3, (0..20).map(|i| (i * i) as f64).collect(), 16, false, "knots").unwrap();
+        assert!(!squares.is_uniform());
     }
 }

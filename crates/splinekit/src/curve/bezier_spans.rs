@@ -34,8 +34,9 @@ const BINOMIAL: [[f64; 8]; 8] = {
 pub struct BezierSpans<T> {
     degree: usize,
     first_span: usize,
-    /// (t_s, 1/h) per span (1/h = 0 for empty spans, which are never evaluated).
-    frames: Vec<(f64, f64)>,
+    /// (t_s, t_{s+1}, 1/h) per span, h = t_{s+1} − t_s (1/h = 0 for empty spans, which
+    /// are never evaluated).
+    frames: Vec<(f64, f64, f64)>,
     /// p + 1 control points per span.
     points: Vec<T>,
 }
@@ -55,7 +56,7 @@ impl<T: Coefficient> BezierSpans<T> {
         let mut args = [0.0; 8];
         for s in p..n {
             let h = knots[s + 1] - knots[s];
-            frames.push((knots[s], if h > 0.0 { 1.0 / h } else { 0.0 }));
+            frames.push((knots[s], knots[s + 1], if h > 0.0 { 1.0 / h } else { 0.0 }));
             for k in 0..=p {
                 if h <= 0.0 {
                     points.push(T::zero());
@@ -84,7 +85,7 @@ impl<T: Coefficient> BezierSpans<T> {
     pub fn eval(&self, span: usize, t: f64, out: &mut [T]) {
         let w = self.degree + 1;
         let i = span - self.first_span;
-        let (start, inv_h) = self.frames[i];
+        let (start, _, inv_h) = self.frames[i];
         let u = (t - start) * inv_h;
         let b = &self.points[i * w..(i + 1) * w];
         match self.degree {
@@ -100,88 +101,155 @@ impl<T: Coefficient> BezierSpans<T> {
 }
 
 impl<T: Coefficient> BezierSpans<T> {
-    /// Sorted-batch evaluation: `out[i·(order+1) + k]` = c^{(k)}(map(`params[i]`)).
-    /// `knots` are the spline's knots (for span advance); `map` brings a parameter into the
-    /// domain. Monomorphised on the degree; a span's points are loaded once per run of
-    /// parameters inside it. Unsorted input is correct, only slower.
-    pub fn eval_many(&self, knots: &[f64], params: &[f64], order: usize, out: &mut [T], map: impl Fn(f64) -> f64) {
+    /// The point c(t) on span `span` (which contains t): the Bernstein sum alone, without
+    /// the derivative machinery of [`BezierSpans::eval`] (the same value as its `out[0]`).
+    #[inline]
+    pub fn point(&self, span: usize, t: f64) -> T {
+        let j = span - self.first_span;
         match self.degree {
-            1 => self.eval_many_fixed::<2>(knots, params, order, out, map),
-            2 => self.eval_many_fixed::<3>(knots, params, order, out, map),
-            3 => self.eval_many_fixed::<4>(knots, params, order, out, map),
-            4 => self.eval_many_fixed::<5>(knots, params, order, out, map),
-            5 => self.eval_many_fixed::<6>(knots, params, order, out, map),
-            6 => self.eval_many_fixed::<7>(knots, params, order, out, map),
-            _ => self.eval_many_fixed::<8>(knots, params, order, out, map),
+            1 => self.point_fixed::<2>(j, t),
+            2 => self.point_fixed::<3>(j, t),
+            3 => self.point_fixed::<4>(j, t),
+            4 => self.point_fixed::<5>(j, t),
+            5 => self.point_fixed::<6>(j, t),
+            6 => self.point_fixed::<7>(j, t),
+            _ => self.point_fixed::<8>(j, t),
+        }
+    }
+
+    #[inline(always)]
+    fn point_fixed<const W: usize>(&self, j: usize, t: f64) -> T {
+        let (b, start, inv_h) = self.span_at::<W>(j);
+        bernstein_sum::<W, T>(b, (t - start) * inv_h)
+    }
+
+    /// Batch evaluation: `out[i·(order+1) + k]` = c^{(k)}(map(`params[i]`)), in any order of
+    /// the parameters. `map` brings a parameter into the domain; `locate(hint, t)` returns
+    /// the span of t (t_s ≤ t < t_{s+1}, the last span at the end of the domain) given the
+    /// span of the previous parameter ([`crate::basis::SplineAxis::span`]: O(1) for knots
+    /// spread about evenly, O(log n) at worst, in any order). Monomorphised on the degree;
+    /// a span's points are loaded once per run of parameters inside it.
+    pub fn eval_many(
+        &self,
+        params: &[f64],
+        order: usize,
+        out: &mut [T],
+        map: impl Fn(f64) -> f64,
+        locate: impl Fn(usize, f64) -> usize,
+    ) {
+        match self.degree {
+            1 => self.eval_many_fixed::<2>(params, order, out, map, locate),
+            2 => self.eval_many_fixed::<3>(params, order, out, map, locate),
+            3 => self.eval_many_fixed::<4>(params, order, out, map, locate),
+            4 => self.eval_many_fixed::<5>(params, order, out, map, locate),
+            5 => self.eval_many_fixed::<6>(params, order, out, map, locate),
+            6 => self.eval_many_fixed::<7>(params, order, out, map, locate),
+            _ => self.eval_many_fixed::<8>(params, order, out, map, locate),
         }
     }
 
     #[inline(always)]
     fn eval_many_fixed<const W: usize>(
         &self,
-        knots: &[f64],
         params: &[f64],
         order: usize,
         out: &mut [T],
         map: impl Fn(f64) -> f64,
+        locate: impl Fn(usize, f64) -> usize,
     ) {
-        let p = W - 1;
         let w = order + 1;
-        let mut at = SpanCursor::<W, T>::first(self, knots);
+        let mut at = SpanCursor::<W, T>::first(self);
         if order == 0 {
             // Points only: a loop without the derivative differences, so that the span's
-            // points can stay in registers.
+            // points can stay in registers. (Non-temporal stores for large outputs were
+            // tried: slower here than ordinary ones.)
             for (&t, o) in params.iter().zip(out.iter_mut()) {
                 let t = map(t);
-                at.locate(self, knots, p, t);
-                *o = bernstein_sum::<W, T>(&at.points, (t - at.frame.0) * at.frame.1);
+                *o = match at.find(self, t, &locate) {
+                    None => bernstein_sum::<W, T>(&at.points, (t - at.start) * at.inv_h),
+                    Some(j) => {
+                        let (b, start, inv_h) = self.span_at::<W>(j);
+                        bernstein_sum::<W, T>(b, (t - start) * inv_h)
+                    }
+                };
             }
             return;
         }
         for (&t, o) in params.iter().zip(out.chunks_exact_mut(w)) {
             let t = map(t);
-            at.locate(self, knots, p, t);
-            eval_fixed::<W, T>(&at.points, (t - at.frame.0) * at.frame.1, at.frame.1, o);
+            match at.find(self, t, &locate) {
+                None => eval_fixed::<W, T>(&at.points, (t - at.start) * at.inv_h, at.inv_h, o),
+                Some(j) => {
+                    let (b, start, inv_h) = self.span_at::<W>(j);
+                    eval_fixed::<W, T>(b, (t - start) * inv_h, inv_h, o)
+                }
+            }
         }
+    }
+
+    /// The Bézier points, start and 1/h of span index j (counted from the first span).
+    #[inline(always)]
+    fn span_at<const W: usize>(&self, j: usize) -> (&[T; W], f64, f64) {
+        let (start, _, inv_h) = self.frames[j];
+        (self.points[j * W..(j + 1) * W].try_into().expect("W points"), start, inv_h)
     }
 }
 
-/// The span of the last parameter of a sorted batch: its index, knot interval, Bézier
-/// points and frame.
+/// The span of the batch's current run of parameters: its index, knot interval
+/// [start, end), 1/(end − start) and Bézier points (copied, to stay in registers).
 struct SpanCursor<const W: usize, T> {
     span: usize,
-    lo: f64,
-    hi: f64,
+    /// The span of the last parameter evaluated in place.
+    missed: usize,
+    start: f64,
+    end: f64,
+    inv_h: f64,
     points: [T; W],
-    frame: (f64, f64),
 }
 
 impl<const W: usize, T: Coefficient> SpanCursor<W, T> {
     /// The first span.
     #[inline(always)]
-    fn first(spans: &BezierSpans<T>, knots: &[f64]) -> Self {
-        let p = W - 1;
-        SpanCursor {
-            span: p,
-            lo: knots[p],
-            hi: knots[p + 1],
-            points: spans.points[..W].try_into().expect("W points"),
-            frame: spans.frames[0],
-        }
+    fn first(spans: &BezierSpans<T>) -> Self {
+        let mut at = SpanCursor {
+            span: spans.first_span,
+            missed: usize::MAX,
+            start: 0.0,
+            end: 0.0,
+            inv_h: 0.0,
+            points: [T::zero(); W],
+        };
+        at.load(spans, spans.first_span);
+        at
     }
 
-    /// Moves to the span of `t` (a monotone walk from the current one when t is past it).
+    /// Loads span `span`.
     #[inline(always)]
-    fn locate(&mut self, spans: &BezierSpans<T>, knots: &[f64], p: usize, t: f64) {
-        let n = spans.frames.len() + p;
-        if !(t >= self.lo && (t < self.hi || self.span + 1 == n)) {
-            self.span = crate::basis::advance_span(knots, p, n, self.span, t);
-            self.lo = knots[self.span];
-            self.hi = knots[self.span + 1];
-            let j = self.span - p;
-            self.points = spans.points[j * W..(j + 1) * W].try_into().expect("W points");
-            self.frame = spans.frames[j];
+    fn load(&mut self, spans: &BezierSpans<T>, span: usize) {
+        let j = span - spans.first_span;
+        let (start, end, inv_h) = spans.frames[j];
+        self.span = span;
+        (self.start, self.end, self.inv_h) = (start, end, inv_h);
+        self.points = spans.points[j * W..(j + 1) * W].try_into().expect("W points");
+    }
+
+    /// Where to evaluate t: `None` in the cursor's span, moved there when t left it for the
+    /// next span or for the span of the previous miss (a sorted batch, forwards or
+    /// backwards); otherwise `Some(j)`, the index of t's span to read in place, leaving the
+    /// cursor (random order: no copy of a span that serves one parameter).
+    #[inline(always)]
+    fn find(&mut self, spans: &BezierSpans<T>, t: f64, locate: &impl Fn(usize, f64) -> usize) -> Option<usize> {
+        let last = self.span + 1 == spans.first_span + spans.frames.len();
+        if t >= self.start && (t < self.end || last) {
+            return None;
         }
+        let span = locate(self.span, t);
+        if span == self.span + 1 || span == self.missed {
+            self.load(spans, span);
+            return None;
+        }
+        self.missed = span;
+        Some(span - spans.first_span)
     }
 }
 
@@ -201,8 +269,10 @@ fn powers<const W: usize>(u: f64) -> ([f64; W], [f64; W]) {
 /// The Bernstein sum Σ_{i ≤ q} C(q,i) uⁱ (1−u)^{q−i} b_i from the powers of u and 1 − u.
 #[inline(always)]
 fn bernstein<const W: usize, T: Coefficient>(b: &[T; W], up: &[f64; W], sp: &[f64; W], q: usize) -> T {
-    let mut acc = T::zero();
-    for i in 0..=q {
+    // Starting from the first term (not from zero, which the compiler may not fold away
+    // because 0 + (−0) = +0).
+    let mut acc = b[0] * (BINOMIAL[q][0] * up[0] * sp[q]);
+    for i in 1..=q {
         acc += b[i] * (BINOMIAL[q][i] * up[i] * sp[q - i]);
     }
     acc

@@ -1,7 +1,7 @@
 //! B-spline curves of any degree: c(t) = Σ_i N_{i,p}(t) P_i on [t_p, t_n].
 
 use crate::Point;
-use crate::basis::{KnotVector, Side, SplineAxis, advance_span};
+use crate::basis::{KnotVector, Side, SplineAxis};
 use crate::curve::bezier_spans::BezierSpans;
 use crate::curve::span_kernel::{ReciprocalKnotDifferences, eval_on_span};
 use crate::curve::{Curve, Interval};
@@ -18,8 +18,9 @@ use crate::error::{Error, Result, check_points_finite};
 ///   knot of multiplicity m — including the seam. The given n + p + 1 knots must repeat
 ///   their spacing with period n (t_{j+n} − t_j = T for j = 0 … p).
 ///
-/// Evaluation finds the span (in O(1) for uniform knots, by binary search otherwise, or
-/// incrementally in sorted batches) and evaluates the span's Bézier form (degrees 1 … 7)
+/// Evaluation finds the span (a guess by arithmetic for uniform knots or from a bucket table
+/// otherwise, verified against the knots by galloping search: O(1) for evenly spread knots,
+/// O(log n) at worst, in any order of the parameters) and evaluates the span's Bézier form (degrees 1 … 7)
 /// or the p + 1 non-zero basis functions.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BSplineCurve<const D: usize> {
@@ -194,23 +195,152 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
         self.eval_on(span, t, out);
     }
 
+    /// c(t) alone: on the Bézier-span path the span's Bernstein sum without the derivative
+    /// machinery of [`Curve::eval_side`] (the same value as its `out[0]`).
+    #[inline]
+    fn point(&self, t: f64) -> Point<D> {
+        let t = self.normalise(t, Side::Right);
+        let span = self.span_of(t, Side::Right);
+        match &self.spans {
+            Some(b) => b.point(span, t),
+            None => {
+                let mut out = [Point::<D>::zeros()];
+                self.eval_on(span, t, &mut out);
+                out[0]
+            }
+        }
+    }
+
     fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
-        let (knots, pts) = self.evaluation_data();
+        let axis = &self.axis;
         if let Some(spans) = &self.spans {
-            let map = |t: f64| self.axis.normalise(t);
-            spans.eval_many(knots, params, order, &mut out[..params.len() * (order + 1)], map);
+            // The domain and the kind of axis, read once for the batch.
+            let (domain, periodic) = (axis.domain(), axis.is_periodic());
+            let map = |t: f64| if periodic { domain.wrap_periodic(t, Side::Right) } else { domain.clamp(t) };
+            let locate = |_: usize, t: f64| axis.span(t);
+            spans.eval_many(params, order, &mut out[..params.len() * (order + 1)], map, locate);
             return;
         }
-        let (p, n, w) = (self.degree(), pts.len(), order + 1);
-        let mut span = p;
+        let w = order + 1;
         for (i, &t) in params.iter().enumerate() {
             let t = self.normalise(t, Side::Right);
-            span = advance_span(knots, p, n, span, t);
+            let span = axis.span(t);
             self.eval_on(span, t, &mut out[i * w..(i + 1) * w]);
         }
     }
 
     fn breakpoints(&self) -> Vec<f64> {
         self.axis.breakpoints()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// xorshift64: a deterministic stream in [0, 1).
+    fn stream(seed: u64) -> impl FnMut() -> f64 {
+        let mut s = seed;
+        move || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    /// Curves of degree p with n control points: clamped uniform, periodic uniform,
+    /// non-uniform with repeated interior knots (clamped and unclamped), non-uniform
+    /// periodic.
+    fn curves(p: usize, n: usize, next: &mut impl FnMut() -> f64) -> Vec<(&'static str, BSplineCurve<3>)> {
+        let pts: Vec<Point<3>> = (0..n).map(|_| Point::<3>::new(next() * 4.0 - 2.0, next(), next() * 10.0)).collect();
+        let mut out = vec![("clamped uniform", BSplineCurve::clamped_uniform(p, pts.clone()).unwrap())];
+        if p > 0 {
+            out.push(("periodic uniform", BSplineCurve::periodic_uniform(p, pts.clone()).unwrap()));
+        }
+        // Interior knots with multiplicities up to p (a double knot at a third of the way).
+        let mut k = vec![0.0; p + 1];
+        let mut x = 0.0;
+        while k.len() < n {
+            x += 0.2 + next();
+            let m = if k.len() == n / 3 { p.max(1) } else { 1 };
+            for _ in 0..m.min(n - k.len()) {
+                k.push(x);
+            }
+        }
+        x += 0.2 + next();
+        k.extend(std::iter::repeat_n(x, p + 1));
+        out.push(("clamped non-uniform", BSplineCurve::new(p, k.clone(), pts.clone()).unwrap()));
+        let unclamped: Vec<f64> = (0..n + p + 1).map(|i| i as f64 + 0.5 * next()).collect();
+        out.push(("unclamped non-uniform", BSplineCurve::new(p, unclamped, pts.clone()).unwrap()));
+        if p > 0 && n > p {
+            // Periodic with spacing repeating every n knots.
+            let gaps: Vec<f64> = (0..n).map(|_| 0.3 + next()).collect();
+            let mut kp = vec![0.0];
+            for i in 0..n + p {
+                kp.push(kp[i] + gaps[i % n]);
+            }
+            out.push(("periodic non-uniform", BSplineCurve::new_periodic(p, kp, pts).unwrap()));
+        }
+        out
+    }
+
+    /// Parameter sets: sorted, reversed, random, repeated, knots and domain ends, outside.
+    fn parameter_sets(c: &BSplineCurve<3>, next: &mut impl FnMut() -> f64) -> Vec<(&'static str, Vec<f64>)> {
+        let d = c.domain();
+        let len = d.end - d.start;
+        let sorted: Vec<f64> = (0..=100).map(|i| d.start + len * i as f64 / 100.0).collect();
+        let reversed: Vec<f64> = sorted.iter().rev().copied().collect();
+        let random: Vec<f64> = (0..100).map(|_| d.start - 0.1 * len + 1.2 * len * next()).collect();
+        let repeated: Vec<f64> = (0..20).flat_map(|_| [d.start + 0.3 * len, d.end, d.start + 0.7 * len]).collect();
+        let mut knots: Vec<f64> = c.knots().to_vec();
+        knots.extend([d.start, d.end, d.start - len, d.end + len]);
+        let mut jumbled = knots.clone();
+        jumbled.reverse();
+        knots.extend(jumbled);
+        vec![("sorted", sorted), ("reversed", reversed), ("random", random), ("repeated", repeated), ("knots", knots)]
+    }
+
+    /// The batch path (Bézier spans with a span cursor for degrees 1 … 7, the Cox–de Boor
+    /// kernel above, uniform-knot arithmetic or galloping span search) against the plain
+    /// de Boor evaluation at each parameter, degrees 0 … 12, derivative orders 0, 1 and 4.
+    #[test]
+    fn batches_in_any_order_match_de_boor() {
+        let mut next = stream(0x9E3779B97F4A7C15);
+        for p in 0..=12 {
+            for n in [p + 1, 3 * p + 9] {
+                for (kind, c) in curves(p, n, &mut next) {
+                    let scale = c.control_points().iter().map(|q| q.norm()).fold(0.0, f64::max).max(1.0);
+                    // |c⁽ᵏ⁾| ≤ Π_{j<k} 2(p − j)/h_min · max |P|: the scale of the k-th derivative.
+                    let h_min = c.breakpoints().windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
+                    for (order_of_params, params) in parameter_sets(&c, &mut next) {
+                        for order in [0, 1, 4] {
+                            let w = order + 1;
+                            let mut batch = vec![Point::<3>::zeros(); params.len() * w];
+                            c.eval_many(&params, order, &mut batch);
+                            let mut single = vec![Point::<3>::zeros(); w];
+                            let mut reference = vec![Point::<3>::zeros(); w];
+                            for (i, &t) in params.iter().enumerate() {
+                                c.eval(t, &mut single);
+                                c.eval_de_boor(t, Side::Right, &mut reference);
+                                assert_eq!(c.point(t), single[0], "{kind} p {p}: point({t}) differs from eval");
+                                let mut tol = 1e-13 * scale;
+                                for k in 0..w {
+                                    let r = reference[k];
+                                    let (b, s) = (batch[i * w + k], single[k]);
+                                    let what = format!("{kind} p {p} n {n} {order_of_params} t {t} order {k}");
+                                    assert!(
+                                        (b - r).norm() <= tol.max(1e-13 * r.norm()),
+                                        "{what}: batch {b} vs de Boor {r}"
+                                    );
+                                    assert_eq!(b, s, "{what}: batch differs from the single evaluation");
+                                    tol *= 2.0 * p.saturating_sub(k).max(1) as f64 / h_min;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
     }
 }

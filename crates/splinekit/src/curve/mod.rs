@@ -8,6 +8,8 @@ pub mod circle_frame;
 pub mod hermite;
 pub mod model;
 pub mod nurbs;
+#[cfg(feature = "parallel")]
+pub mod parallel;
 pub mod rational;
 pub mod rational_bezier;
 pub mod reparametrized;
