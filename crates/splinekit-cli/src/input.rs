@@ -77,7 +77,7 @@ pub fn parse_points(text: &str) -> Result<Vec<Vec<f64>>> {
             bail!("points[{i}][{j}]: coordinate is not finite ({v})");
         }
         for (j, &v) in p.iter().enumerate() {
-            splinekit_scene::points::check_magnitude(&format!("points[{i}][{j}]"), v)?;
+            splinekit_scene::points::check_magnitude(format_args!("points[{i}][{j}]"), v)?;
         }
     }
     Ok(pts)

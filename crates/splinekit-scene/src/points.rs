@@ -25,7 +25,7 @@ pub fn dimension_of(field: &str, points: &[Vec<f64>]) -> Result<usize> {
                     format!("coordinate is not finite ({v})"),
                 ));
             }
-            check_magnitude(&format!("{field}[{i}][{j}]"), *v)?;
+            check_magnitude(format_args!("{field}[{i}][{j}]"), *v)?;
         }
     }
     Ok(d)
@@ -45,7 +45,7 @@ pub fn to_point<const D: usize>(field: &str, p: &[f64]) -> Result<Point<D>> {
         return Err(DocumentError::new(format!("{field}[{j}]"), format!("coordinate is not finite ({v})")));
     }
     for (j, v) in p.iter().enumerate() {
-        check_magnitude(&format!("{field}[{j}]"), *v)?;
+        check_magnitude(format_args!("{field}[{j}]"), *v)?;
     }
     Ok(Point::<D>::from_column_slice(p))
 }
@@ -59,16 +59,16 @@ pub fn from_points<const D: usize>(points: &[Point<D>]) -> Vec<Vec<f64>> {
 pub fn check_finite_list(field: &str, values: &[f64]) -> Result<()> {
     match values.iter().enumerate().find(|(_, v)| !v.is_finite()) {
         Some((i, v)) => Err(DocumentError::new(format!("{field}[{i}]"), format!("value is not finite ({v})"))),
-        None => values.iter().enumerate().try_for_each(|(i, v)| check_magnitude(&format!("{field}[{i}]"), *v)),
+        None => values.iter().enumerate().try_for_each(|(i, v)| check_magnitude(format_args!("{field}[{i}]"), *v)),
     }
 }
 
 /// Refuses a number beyond ±[`MAX_MAGNITUDE`](crate::budget::MAX_MAGNITUDE), where
 /// evaluation would overflow.
-pub fn check_magnitude(field: &str, v: f64) -> Result<()> {
+pub fn check_magnitude(field: impl std::fmt::Display, v: f64) -> Result<()> {
     if v.abs() > crate::budget::MAX_MAGNITUDE {
         return Err(DocumentError::new(
-            field,
+            field.to_string(),
             format!(
                 "{v:e} is beyond ±{:e}, where evaluating the shape would overflow double precision",
                 crate::budget::MAX_MAGNITUDE

@@ -46,6 +46,11 @@ pub use interval::{Interval, ParamRect};
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
 
+/// The crate's own README (its crates.io page), compiled and run as doctests.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct CrateReadmeDoctests;
+
 /// A point (or vector) in ℝᴰ.
 pub type Point<const D: usize> = nalgebra::SVector<f64, D>;
 
