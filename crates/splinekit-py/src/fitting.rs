@@ -52,10 +52,13 @@ impl FitReport {
     fn __repr__(&self) -> String {
         format!("<FitReport {}>", self.__str__())
     }
-    /// The pickle state: the three numbers and the parameters (exact doubles).
+    /// The pickle state: the three numbers and the parameters, the latter as the bytes of
+    /// their little-endian doubles (exact, and one copy instead of a float object each).
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyTuple>> {
         let restore = py.import("splinekit._splinekit")?.getattr("_restore")?;
-        let state = (self.rms_error, self.max_error, self.condition_estimate, self.params.clone());
+        let bytes: Vec<u8> = self.params.iter().flat_map(|t| t.to_le_bytes()).collect();
+        let params = pyo3::types::PyBytes::new(py, &bytes);
+        let state = (self.rms_error, self.max_error, self.condition_estimate, params);
         ("fit_report", state, py.None()).into_pyobject(py).and_then(|args| (restore, args).into_pyobject(py))
     }
     /// The same errors, condition estimate and parameters.
@@ -67,9 +70,24 @@ impl FitReport {
 }
 
 impl FitReport {
-    /// The report of a `__reduce__` state `(rms_error, max_error, condition_estimate, params)`.
+    /// The report of a `__reduce__` state `(rms_error, max_error, condition_estimate, params)`,
+    /// `params` the bytes of little-endian doubles (or, as pickles of 0.1.0 before this
+    /// change hold it, a list of floats).
     pub fn from_state(state: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let (rms_error, max_error, condition_estimate, params) = state.extract()?;
+        let (rms_error, max_error, condition_estimate, raw): (f64, f64, f64, Bound<'_, PyAny>) = state.extract()?;
+        let params = match raw.cast::<pyo3::types::PyBytes>() {
+            Ok(bytes) => {
+                let bytes = bytes.as_bytes();
+                if bytes.len() % 8 != 0 {
+                    return Err(value_error(format!(
+                        "state: the parameters take {} bytes, not a whole number of doubles (8 bytes each)",
+                        bytes.len()
+                    )));
+                }
+                bytes.chunks_exact(8).map(|b| f64::from_le_bytes(b.try_into().expect("8 bytes"))).collect()
+            }
+            Err(_) => raw.extract()?,
+        };
         Ok(FitReport { rms_error, max_error, condition_estimate, params })
     }
 }

@@ -120,6 +120,17 @@ def test_a_fitted_curve_keeps_its_report():
     assert sk.BSpline(fitted.knots, fitted.control_points, fitted.degree).fit_report is None
 
 
+def test_a_fit_report_state_holds_its_parameters_as_exact_bytes():
+    report = OBJECTS["fit"].fit_report
+    restore, (tag, state, extra) = report.__reduce__()
+    params = state[3]
+    assert isinstance(params, bytes) and params == report.params.astype("<f8").tobytes()
+    # A list of floats (the state pickles of 0.1.0 held) restores the same report.
+    assert restore(tag, (*state[:3], report.params.tolist()), extra) == report
+    with pytest.raises(ValueError, match="^state: the parameters take 12 bytes, not a whole number of doubles"):
+        restore(tag, (*state[:3], bytes(12)), extra)
+
+
 def test_a_transformed_blending_spline_travels_with_its_frames():
     curve = sk.load(HEART)
     before = pickle.dumps(curve, protocol=5)
