@@ -36,17 +36,89 @@ pub fn read_text(path: &str, what: &str) -> Result<String> {
     Ok(text)
 }
 
-/// Reads and parses a shape document; a scene (what `splinekit offset` prints for an
-/// offset of several pieces) is refused with its object count, since the command answers
-/// for one shape (`splinekit eval` takes scenes and answers per object).
+/// Reads and parses a shape document; a scene is refused with its object count, for the
+/// commands that compare or combine shapes (`intersect`), where "each object" has no one
+/// meaning. The commands that answer for one shape take scenes through [`read_shapes`].
 pub fn read_shape(path: &str) -> Result<ShapeDocument> {
     let text = read_text(path, "SHAPE")?;
     match splinekit_scene::SceneOrShape::from_json(&text)? {
         splinekit_scene::SceneOrShape::Shape(doc) => Ok(doc),
         splinekit_scene::SceneOrShape::Scene(scene) => bail!(
-            "SHAPE: a scene of {} objects, but this command takes one shape (pick one of its \"objects\"; `splinekit eval` answers for each)",
+            "SHAPE: a scene of {} objects, but this command takes one shape (pick one of its \"objects\")",
             scene.objects.len()
         ),
+    }
+}
+
+/// What a command that answers for one shape reads: a shape document, or a scene (what
+/// `splinekit offset` prints for an offset of several pieces) whose objects it answers for
+/// one by one.
+pub enum Shapes {
+    /// One shape document.
+    One(ShapeDocument),
+    /// A scene: its objects' shapes in order, and its JSON as written (for the commands
+    /// that write a scene back, keeping the camera, lights and styles).
+    Scene(Vec<ShapeDocument>, Value),
+}
+
+/// Reads and parses a shape document or a scene.
+pub fn read_shapes(path: &str) -> Result<Shapes> {
+    let text = read_text(path, "SHAPE")?;
+    match splinekit_scene::SceneOrShape::from_json(&text)? {
+        splinekit_scene::SceneOrShape::Shape(doc) => Ok(Shapes::One(doc)),
+        splinekit_scene::SceneOrShape::Scene(scene) => {
+            let value: Value = serde_json::from_str(&text).context("SHAPE: invalid JSON")?;
+            Ok(Shapes::Scene(scene.objects.into_iter().map(|o| o.shape).collect(), value))
+        }
+    }
+}
+
+impl Shapes {
+    /// The answer for one shape, or `{"objects": [ANSWER, …]}` for a scene, each ANSWER
+    /// what the object alone gives. Every object is answered before anything is returned,
+    /// and an error names the object (`objects[2].shape: …`).
+    pub fn answer_each(self, mut answer: impl FnMut(ShapeDocument) -> Result<Value>) -> Result<Value> {
+        match self {
+            Shapes::One(doc) => answer(doc),
+            Shapes::Scene(docs, _) => {
+                let answers = docs
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, doc)| answer(doc).map_err(|e| anyhow!("objects[{i}].shape: {e}")))
+                    .collect::<Result<Vec<_>>>()?;
+                Ok(serde_json::json!({ "objects": answers }))
+            }
+        }
+    }
+
+    /// The shape that `make` gives for one shape, or for a scene the same scene (camera,
+    /// lights, background, styles as written) with each object's shape replaced by what
+    /// `make` gives for it. When `make` gives a scene (an offset of several pieces), its
+    /// objects take the place of the one object, each with that object's style and points.
+    /// An error names the object.
+    pub fn map_each(self, mut make: impl FnMut(ShapeDocument) -> Result<Value>) -> Result<Value> {
+        match self {
+            Shapes::One(doc) => make(doc),
+            Shapes::Scene(docs, mut scene) => {
+                let written = scene.get_mut("objects").and_then(Value::as_array_mut).map(std::mem::take);
+                let written = written.ok_or_else(|| anyhow!("SHAPE: the scene has no \"objects\" list"))?;
+                let mut objects = Vec::with_capacity(written.len());
+                for (i, (doc, mut object)) in docs.into_iter().zip(written).enumerate() {
+                    let made = make(doc).map_err(|e| anyhow!("objects[{i}].shape: {e}"))?;
+                    let pieces: Vec<Value> = if made.get("type").and_then(Value::as_str) == Some("scene") {
+                        made["objects"].as_array().into_iter().flatten().map(|o| o["shape"].clone()).collect()
+                    } else {
+                        vec![made]
+                    };
+                    for piece in pieces {
+                        object["shape"] = piece;
+                        objects.push(object.clone());
+                    }
+                }
+                scene["objects"] = Value::Array(objects);
+                Ok(scene)
+            }
+        }
     }
 }
 

@@ -184,6 +184,69 @@ fn eval_answers_a_scene_per_object() {
     // that cannot is named.
     let mixed = r#"{"type":"scene","objects":[{"shape":{"type":"circle"}},{"shape":{"type":"sphere"}}]}"#;
     assert_bad(&["eval", "-", "--samples", "3"], mixed, "objects[1].shape: --samples");
-    // Commands that take one shape name the scene instead of "unknown shape type".
-    assert_bad(&["refine", "-", "--insert", "0.5"], &text, "a scene of 2 objects");
+    // `intersect`, which combines two shapes, names the scene instead of "unknown shape type".
+    let dir = std::env::temp_dir().join(format!("splinekit-edges-scene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("scene.json");
+    std::fs::write(&path, &text).unwrap();
+    let path = path.to_str().unwrap();
+    assert_bad(&["intersect", path, path], "", "a scene of 2 objects");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The other commands that answer for one shape take a scene too: the queries (`project`,
+/// `section`) answer `{"objects": [ANSWER, ...]}`, each ANSWER what the object alone gives;
+/// the commands that make shapes (`offset`, `refine`) write the scene back with each
+/// object's shape replaced, its style and the scene's background kept. An object a command
+/// cannot take is named.
+#[test]
+fn one_shape_commands_answer_a_scene_per_object() {
+    let curve = r#"{"type":"bspline","degree":2,"knots":[0,0,0,1,1,1],"control_points":[[0,0,0],[1,2,0],[2,0,0]]}"#;
+    let scene = format!(
+        r#"{{"type":"scene","objects":[{{"shape":{curve},"color":[1,0,0]}},{{"shape":{{"type":"sphere"}},"wireframe":true}}],"background":[0.5,0.5,0.5]}}"#
+    );
+    let alone = |args: &[&str], i: usize| {
+        let shape: serde_json::Value = serde_json::from_str(&scene).unwrap();
+        ok_json(args, &shape["objects"][i]["shape"].to_string())
+    };
+
+    let project = ["project", "-", "--point", "0.5,0.25,2"];
+    let v = ok_json(&project, &scene);
+    assert_eq!(v["objects"].as_array().unwrap().len(), 2, "{v}");
+    for i in 0..2 {
+        assert_eq!(v["objects"][i], alone(&project, i), "project, object {i}");
+    }
+
+    let offset = ["offset", "-", "--distance", "0.1"];
+    let v = ok_json(&offset, &scene);
+    assert_eq!(v["type"], "scene");
+    assert_eq!(v["background"], serde_json::json!([0.5, 0.5, 0.5]));
+    assert_eq!(v["objects"][0]["color"], serde_json::json!([1, 0, 0]));
+    assert_eq!(v["objects"][1]["wireframe"], true);
+    for i in 0..2 {
+        assert_eq!(v["objects"][i]["shape"], alone(&offset, i), "offset, object {i}");
+    }
+    // An offset of several pieces gives as many objects, each with its object's style.
+    let ellipse = r#"{"type":"scene","objects":[{"shape":{"type":"ellipse","a":3,"b":1},"color":[0,0,1]}]}"#;
+    let v = ok_json(&["offset", "-", "--distance", "-0.6"], ellipse);
+    let pieces = v["objects"].as_array().unwrap();
+    assert_eq!(pieces.len(), 2, "{v}");
+    assert!(pieces.iter().all(|o| o["color"] == serde_json::json!([0, 0, 1]) && o["shape"]["type"] == "bspline"));
+
+    let spheres = r#"{"type":"scene","objects":[{"shape":{"type":"sphere"}},{"shape":{"type":"torus"}}]}"#;
+    let section = ["section", "-", "--plane", "0,0,0/0,0,1"];
+    let v = ok_json(&section, spheres);
+    let counts: Vec<usize> =
+        (0..2).map(|i| v["objects"][i]["sections"][0]["curves"].as_array().unwrap().len()).collect();
+    assert_eq!(counts, [1, 2], "the sphere's equator; the torus's two circles: {v}");
+    assert_bad(&section, &scene, "objects[0].shape: SURFACE: section cuts surfaces, this document is a curve");
+
+    let curves = format!(r#"{{"type":"scene","objects":[{{"shape":{curve}}},{{"shape":{curve},"color":[0,1,0]}}]}}"#);
+    let refine = ["refine", "-", "--elevate", "1"];
+    let v = ok_json(&refine, &curves);
+    for i in 0..2 {
+        assert_eq!(v["objects"][i]["shape"]["degree"], 3, "{v}");
+    }
+    assert_eq!(v["objects"][1]["color"], serde_json::json!([0, 1, 0]));
+    assert_bad(&refine, &scene, "objects[1].shape: type: refine works on");
 }

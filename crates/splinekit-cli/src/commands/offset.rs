@@ -17,12 +17,13 @@ use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument, SurfaceDocument};
 
 use crate::budget;
 use crate::commands::intersect::positive;
-use crate::input::{parse_numbers, read_shape};
+use crate::input::{parse_numbers, read_shapes};
 use crate::output::{check_finite, write_json};
 
 #[derive(Args, Debug)]
 pub struct OffsetArgs {
-    /// Curve or surface document (JSON file, or - for standard input).
+    /// Curve or surface document (JSON file, or - for standard input), or a scene of them,
+    /// written back as the scene of their offsets.
     pub shape: String,
     /// Signed distance d: curves to the right of their direction (T × N), surfaces along
     /// S_u × S_v; negative for the other side.
@@ -93,51 +94,55 @@ pub fn run(args: &OffsetArgs) -> Result<()> {
             ref other => bail!("--normal: expected X,Y,Z, got {} numbers", other.len()),
         },
     };
-    let doc = read_shape(&args.shape)?;
-    let cost = doc.cost();
-    budget::check_shape(&cost)?;
-    let value = match doc {
-        ShapeDocument::Curve(c) => {
-            // At most MAX_TOTAL_PIECES pieces of 8 samples (each a point and two derivatives)
-            // over all the approximations of the offset, all of them held at the most.
-            let work = MAX_TOTAL_PIECES as f64 * 8.0 * 3.0 * cost.eval;
-            let request = Cost::new(MAX_TOTAL_PIECES as f64 * 200.0, work);
-            budget::check_request("--tolerance", "the offset's refinement", &cost, request)?;
-            c.build()?.visit(OffsetCurve { distance, tolerance, normal })?
-        }
-        ShapeDocument::Surface(s) => {
-            if normal.is_some() {
-                bail!("--normal: only curves take a plane normal; a surface is offset along its own normal");
+    let offset = |doc: ShapeDocument| -> Result<Value> {
+        let cost = doc.cost();
+        budget::check_shape(&cost)?;
+        Ok(match doc {
+            ShapeDocument::Curve(c) => {
+                // At most MAX_TOTAL_PIECES pieces of 8 samples (each a point and two derivatives)
+                // over all the approximations of the offset, all of them held at the most.
+                let work = MAX_TOTAL_PIECES as f64 * 8.0 * 3.0 * cost.eval;
+                let request = Cost::new(MAX_TOTAL_PIECES as f64 * 200.0, work);
+                budget::check_request("--tolerance", "the offset's refinement", &cost, request)?;
+                c.build()?.visit(OffsetCurve { distance, tolerance, normal })?
             }
-            let dim = s.dimension()?;
-            if dim != 3 {
-                bail!("SHAPE: surface offsets are of 3-D surfaces, this one is {dim}-D");
+            ShapeDocument::Surface(s) => {
+                if normal.is_some() {
+                    bail!("--normal: only curves take a plane normal; a surface is offset along its own normal");
+                }
+                let dim = s.dimension()?;
+                if dim != 3 {
+                    bail!("SHAPE: surface offsets are of 3-D surfaces, this one is {dim}-D");
+                }
+                // The last grid and those before it (a third more), at its nodes and midpoints,
+                // each a point and a normal (up to nine evaluations at a singular point).
+                let samples = 4.0 * 1.34 * MAX_GRID_POINTS as f64;
+                let request = Cost::new(samples * 200.0, samples * 12.0 * cost.eval);
+                budget::check_request("--tolerance", "the offset's refinement", &cost, request)?;
+                let surface = s.build_in::<3>().map_err(|e| anyhow!("SHAPE: {e}"))?;
+                let off = offset_surface(surface.as_ref(), distance, tolerance).map_err(flagged)?;
+                eprintln!(
+                    "offset: max error {:.3e} (tolerance {:e}), {} × {} grid",
+                    off.max_error, tolerance, off.grid.0, off.grid.1
+                );
+                let b = &off.surface;
+                let (ku, kv) = b.knots();
+                let doc = SurfaceDocument::BsplineSurface(BSplineSurfaceDoc {
+                    degree_u: b.degrees().0,
+                    degree_v: b.degrees().1,
+                    knots_u: ku.to_vec(),
+                    knots_v: kv.to_vec(),
+                    control_points: b.control_points().iter().map(|row| from_points(row)).collect(),
+                    periodic_u: false,
+                    periodic_v: false,
+                });
+                doc.to_value()
             }
-            // The last grid and those before it (a third more), at its nodes and midpoints,
-            // each a point and a normal (up to nine evaluations at a singular point).
-            let samples = 4.0 * 1.34 * MAX_GRID_POINTS as f64;
-            let request = Cost::new(samples * 200.0, samples * 12.0 * cost.eval);
-            budget::check_request("--tolerance", "the offset's refinement", &cost, request)?;
-            let surface = s.build_in::<3>().map_err(|e| anyhow!("SHAPE: {e}"))?;
-            let off = offset_surface(surface.as_ref(), distance, tolerance).map_err(flagged)?;
-            eprintln!(
-                "offset: max error {:.3e} (tolerance {:e}), {} × {} grid",
-                off.max_error, tolerance, off.grid.0, off.grid.1
-            );
-            let b = &off.surface;
-            let (ku, kv) = b.knots();
-            let doc = SurfaceDocument::BsplineSurface(BSplineSurfaceDoc {
-                degree_u: b.degrees().0,
-                degree_v: b.degrees().1,
-                knots_u: ku.to_vec(),
-                knots_v: kv.to_vec(),
-                control_points: b.control_points().iter().map(|row| from_points(row)).collect(),
-                periodic_u: false,
-                periodic_v: false,
-            });
-            doc.to_value()
-        }
+        })
     };
+    // A scene becomes the scene of its objects' offsets (an offset of several pieces gives
+    // as many objects, each with the style of the one it came from).
+    let value = read_shapes(&args.shape)?.map_each(offset)?;
     check_finite(&value, "control_points")?;
     write_json(&value, args.output.as_deref())
 }

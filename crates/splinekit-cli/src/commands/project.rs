@@ -10,7 +10,7 @@ use splinekit::query::{CurveProjector, SurfaceProjector};
 use splinekit::surface::Surface;
 use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument, Surfaces};
 
-use crate::input::{parse_numbers, read_points, read_shape};
+use crate::input::{parse_numbers, read_points, read_shapes};
 use crate::output::{check_finite, write_json};
 
 /// Most points one call may project.
@@ -19,7 +19,8 @@ pub const MAX_POINTS: usize = 1_000_000;
 #[derive(Args, Debug)]
 #[command(group(clap::ArgGroup::new("query").required(true).args(["point", "points"])))]
 pub struct ProjectArgs {
-    /// Shape document (JSON file, or - for standard input).
+    /// Shape document (JSON file, or - for standard input); a scene is answered object by
+    /// object (`{"objects": [ANSWER, …]}`).
     pub shape: String,
     /// The point to project, X,Y or X,Y,Z (as many coordinates as the shape has).
     #[arg(long, allow_hyphen_values = true)]
@@ -71,9 +72,9 @@ fn coords<const D: usize>(p: &Point<D>) -> Vec<f64> {
     p.iter().copied().collect()
 }
 
-struct ProjectCurve(Query, bool);
+struct ProjectCurve<'a>(&'a Query, bool);
 
-impl DimensionVisitor<Curves> for ProjectCurve {
+impl DimensionVisitor<Curves> for ProjectCurve<'_> {
     type Output = Result<Value>;
     fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Result<Value> {
         let projector = CurveProjector::new(curve);
@@ -92,9 +93,9 @@ impl DimensionVisitor<Curves> for ProjectCurve {
     }
 }
 
-struct ProjectSurface(Query, bool);
+struct ProjectSurface<'a>(&'a Query, bool);
 
-impl DimensionVisitor<Surfaces> for ProjectSurface {
+impl DimensionVisitor<Surfaces> for ProjectSurface<'_> {
     type Output = Result<Value>;
     fn visit<const D: usize>(self, surface: &dyn Surface<D>) -> Result<Value> {
         let projector = SurfaceProjector::new(surface);
@@ -127,10 +128,11 @@ pub fn run(args: &ProjectArgs) -> Result<()> {
         bail!("--points: {} points is more than the limit of {MAX_POINTS}", points.len());
     }
     let query = Query { points, all: args.all, accuracy };
-    let value = match read_shape(&args.shape)? {
-        ShapeDocument::Curve(c) => c.build()?.visit(ProjectCurve(query, single))?,
-        ShapeDocument::Surface(s) => s.build()?.visit(ProjectSurface(query, single))?,
-    };
+    // A scene is answered object by object: `{"objects": [ANSWER, …]}`.
+    let value = read_shapes(&args.shape)?.answer_each(|doc| match doc {
+        ShapeDocument::Curve(c) => c.build()?.visit(ProjectCurve(&query, single)),
+        ShapeDocument::Surface(s) => s.build()?.visit(ProjectSurface(&query, single)),
+    })?;
     check_finite(&value, "result")?;
     write_json(&value, args.output.as_deref())
 }

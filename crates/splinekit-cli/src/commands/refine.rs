@@ -5,13 +5,14 @@ use clap::Args;
 use splinekit_scene::ShapeDocument;
 use splinekit_scene::refine::{Refinement, refine};
 
-use crate::input::{parse_numbers, read_shape};
+use crate::input::{parse_numbers, read_shapes};
 use crate::output::{check_finite, write_json};
 
 #[derive(Args, Debug)]
 #[command(group(clap::ArgGroup::new("operation").required(true).args(["insert", "elevate", "remove"])))]
 pub struct RefineArgs {
-    /// Shape document (bezier, rational_bezier, bspline or nurbs; - for standard input).
+    /// Shape document (bezier, rational_bezier, bspline or nurbs; - for standard input), or
+    /// a scene of them, written back with each object refined.
     pub shape: String,
     /// Knots to insert, comma-separated; repeat a value to insert it several times.
     #[arg(long, allow_hyphen_values = true)]
@@ -43,18 +44,21 @@ pub fn run(args: &RefineArgs) -> Result<()> {
     } else {
         bail!("refine: give one of --insert, --elevate, --remove");
     };
-    let ShapeDocument::Curve(doc) = read_shape(&args.shape)? else {
-        bail!(
-            "type: refine works on bezier, rational_bezier, bspline and nurbs curve documents; surface refinement is not on the command line yet"
-        );
-    };
-    let out = refine(&doc, &r).map_err(|e| named_by_flag(&e.to_string(), &r))?;
-    if let Refinement::Remove { knots, .. } = &r {
-        if out.removed < knots.len() {
-            eprintln!("refine: removed {} of {} knots within the tolerance", out.removed, knots.len());
+    // A scene becomes the scene of its objects refined, each with its style.
+    let v = read_shapes(&args.shape)?.map_each(|doc| {
+        let ShapeDocument::Curve(doc) = doc else {
+            bail!(
+                "type: refine works on bezier, rational_bezier, bspline and nurbs curve documents; surface refinement is not on the command line yet"
+            );
+        };
+        let out = refine(&doc, &r).map_err(|e| named_by_flag(&e.to_string(), &r))?;
+        if let Refinement::Remove { knots, .. } = &r {
+            if out.removed < knots.len() {
+                eprintln!("refine: removed {} of {} knots within the tolerance", out.removed, knots.len());
+            }
         }
-    }
-    let v = out.document.to_value();
+        Ok(out.document.to_value())
+    })?;
     check_finite(&v, "control_points")?;
     write_json(&v, args.output.as_deref())
 }

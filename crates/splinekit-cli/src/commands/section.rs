@@ -10,7 +10,7 @@ use splinekit::surface::Surface;
 use splinekit::surface::model::Plane;
 
 use crate::commands::intersect::{branches_json, positive};
-use crate::input::{parse_numbers, read_shape};
+use crate::input::{parse_numbers, read_shapes};
 use crate::output::{check_finite, write_json};
 use splinekit_scene::ShapeDocument;
 
@@ -19,7 +19,8 @@ pub const MAX_LEVELS: usize = 100;
 
 #[derive(Args, Debug)]
 pub struct SectionArgs {
-    /// Surface document (JSON file, or - for standard input); 3-D.
+    /// Surface document (JSON file, or - for standard input); 3-D. A scene of surfaces is
+    /// answered object by object (`{"objects": [{"sections": …}, …]}`).
     pub surface: String,
     /// The cutting plane as OX,OY,OZ/NX,NY,NZ (a point on it and its normal).
     #[arg(long, allow_hyphen_values = true)]
@@ -87,7 +88,22 @@ pub fn run(args: &SectionArgs) -> Result<()> {
     if args.levels == 0 || args.levels > MAX_LEVELS {
         bail!("--levels: expected 1 … {MAX_LEVELS}, got {}", args.levels);
     }
-    let ShapeDocument::Surface(doc) = read_shape(&args.surface)? else {
+    // A scene is answered object by object: `{"objects": [ANSWER, …]}`.
+    let value = read_shapes(&args.surface)?.answer_each(|doc| section(doc, &o, &n, args.levels, tolerance, chord))?;
+    check_finite(&value, "result")?;
+    write_json(&value, args.output.as_deref())
+}
+
+/// The sections of one surface document: `{"sections": [{origin, normal, curves}, …]}`.
+fn section(
+    doc: ShapeDocument,
+    o: &Point<3>,
+    n: &Point<3>,
+    count: usize,
+    tolerance: f64,
+    chord: f64,
+) -> Result<serde_json::Value> {
+    let ShapeDocument::Surface(doc) = doc else {
         bail!("SURFACE: section cuts surfaces, this document is a curve");
     };
     let dim = doc.dimension()?;
@@ -95,10 +111,10 @@ pub fn run(args: &SectionArgs) -> Result<()> {
         bail!("SURFACE: sections are of 3-D surfaces, this one is {dim}-D");
     }
     let surface = doc.build_in::<3>().map_err(|e| anyhow!("SURFACE: {e}"))?;
-    let (cuts, centre, size) = levels(surface.as_ref(), &o, &n, args.levels);
+    let (cuts, centre, size) = levels(surface.as_ref(), o, n, count);
     let mut sections = Vec::with_capacity(cuts.len());
     for h in cuts {
-        let plane = big_plane(&o, &n, h, &centre, size)?;
+        let plane = big_plane(o, n, h, &centre, size)?;
         let branches = intersect_surfaces(surface.as_ref(), &plane, tolerance, chord)?;
         let curves: Vec<serde_json::Value> = branches_json(&branches, chord)?
             .into_iter()
@@ -115,7 +131,5 @@ pub fn run(args: &SectionArgs) -> Result<()> {
         let origin = o + n * h;
         sections.push(json!({"origin": [origin.x, origin.y, origin.z], "normal": [n.x, n.y, n.z], "curves": curves}));
     }
-    let value = json!({ "sections": sections });
-    check_finite(&value, "result")?;
-    write_json(&value, args.output.as_deref())
+    Ok(json!({ "sections": sections }))
 }
