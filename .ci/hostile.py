@@ -491,7 +491,12 @@ pieces = doc_file("pieces.json", {"type": "scene", "objects": [{"shape": {"type"
                                                                {"shape": {"type": "line", "from": [0, 0], "to": [1, 1]}}]})
 case("eval a scene of pieces (offset's output)", ["eval", pieces, "--samples", "100", "--derivatives", "2"], OK)
 case("eval a scene with --grid", ["eval", pieces, "--grid", "3,3"], REFUSED, "objects[0].shape: --grid")
-case("refine a scene", ["refine", pieces, "--elevate", "1"], REFUSED, "a scene of 2 objects")
+case("refine a scene of model curves", ["refine", pieces, "--elevate", "1"], REFUSED,
+     "objects[0].shape: type: refine works on")
+case("project onto a scene of a 3-D and a 2-D curve", ["project", pieces, "--point", "0.5,2,0"], REFUSED,
+     "objects[1].shape: --point: the shape is 2-D")
+case("offset a scene of pieces", ["offset", pieces, "--distance", "0.1"], OK)
+case("intersect a scene with itself", ["intersect", pieces, pieces], REFUSED, "a scene of 2 objects")
 case("render the largest documented image, 8192x8192", ["render", sphere, "-o", out("huge.png"), "--size", "8192x8192"], OK,
      output=out("huge.png"), full=True)
 case("render one pixel past the largest image", ["render", sphere, "-o", out("past.png"), "--size", "8193x8193"], REFUSED,
