@@ -1,22 +1,40 @@
-//! `splinekit subdivide-surface`: Catmull–Clark or Doo–Sabin subdivision of a polygon mesh
-//! read from OBJ, written as OBJ (polygons) or, triangulated, as STL, PLY, glTF or glb.
+//! `splinekit subdivide-surface`: Catmull–Clark, Loop, bilinear or Doo–Sabin subdivision
+//! of a polygon mesh read from OBJ, written as OBJ (polygons) or, triangulated, as STL,
+//! PLY, glTF or glb. `--limit` moves every vertex of the result onto the limit surface
+//! (limit masks) and writes the limit normals (`vn` in OBJ); vertices keep their order, so
+//! `--steps 0 --limit` gives the cage's own limit points in input order.
+//!
+//! Creases come from OpenSubdiv's OBJ tags: `t crease 2/1 A B S` makes the edge between
+//! vertices A and B (0-based, as OpenSubdiv's shapes write them) of sharpness S.
 
 use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
+use splinekit::Point;
+use splinekit::subdivision::surface::{BoundaryRule, Cage, Crease, Scheme as KernelScheme, SubdivisionSurface};
+use splinekit_mesh::TriangleMesh;
 use splinekit_mesh::export::{GltfGeometry, GltfScene, ply, stl};
-use splinekit_mesh::subdivision_surface::{SurfaceScheme, read_obj_polygons, write_obj_polygons};
+use splinekit_mesh::subdivision_surface::{PolygonMesh, SurfaceScheme, read_obj_polygons, write_obj_polygons};
 
 use crate::input::read_text;
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum Scheme {
     CatmullClark,
+    Loop,
+    Bilinear,
     DooSabin,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum Boundary {
+    EdgeOnly,
+    EdgeAndCorner,
 }
 
 #[derive(Args, Debug)]
 pub struct SubdivideSurfaceArgs {
-    /// Control mesh as OBJ (v and f lines; any polygons), or - for standard input.
+    /// Control mesh as OBJ (v and f lines; any polygons; `t crease 2/1 A B S` tags), or -
+    /// for standard input.
     pub mesh: String,
     /// The scheme.
     #[arg(long, value_enum)]
@@ -24,9 +42,39 @@ pub struct SubdivideSurfaceArgs {
     /// Number of subdivision steps.
     #[arg(long, default_value = "3")]
     pub steps: String,
+    /// Put every vertex of the result on the limit surface and write limit normals
+    /// (Catmull–Clark, Loop, bilinear).
+    #[arg(long)]
+    pub limit: bool,
+    /// Loop: split polygons into triangle fans first instead of refusing them.
+    #[arg(long)]
+    pub triangulate: bool,
+    /// Boundary rule: edge-only (boundary vertices smoothed) or edge-and-corner (corners
+    /// of a single face interpolated).
+    #[arg(long, value_enum, default_value = "edge-only")]
+    pub boundary: Boundary,
     /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals).
     #[arg(short, long)]
     pub output: String,
+}
+
+/// `t crease 2/1 A B S` tags of an OBJ text (0-based vertex indices).
+pub fn read_obj_creases(text: &str) -> std::result::Result<Vec<Crease>, String> {
+    let mut creases = Vec::new();
+    for (k, line) in text.lines().enumerate() {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        if words.len() >= 2 && words[0] == "t" && words[1] == "crease" {
+            let bad = || format!("line {}: a crease tag is `t crease 2/1 A B SHARPNESS`, got '{}'", k + 1, line.trim());
+            if words.len() != 6 || words[2] != "2/1" {
+                return Err(bad());
+            }
+            let a: u32 = words[3].parse().map_err(|_| bad())?;
+            let b: u32 = words[4].parse().map_err(|_| bad())?;
+            let s: f64 = words[5].parse().map_err(|_| bad())?;
+            creases.push(Crease { a, b, sharpness: s });
+        }
+    }
+    Ok(creases)
 }
 
 pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
@@ -35,12 +83,13 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         bail!("-o: writes .obj, .stl, .ply, .gltf or .glb, not '{}'", args.output);
     }
     let steps = super::eval::parse_count("--steps", &args.steps, 10)?;
-    let mesh = read_obj_polygons(&read_text(&args.mesh, "mesh")?).map_err(|e| anyhow!("mesh: {e}"))?;
+    let text = read_text(&args.mesh, "mesh")?;
+    let mesh = read_obj_polygons(&text).map_err(|e| anyhow!("mesh: {e}"))?;
     if mesh.faces.is_empty() {
         bail!("mesh: no faces (f lines) found");
     }
     // Each step makes about four corners of every corner (an n-gon becomes n quads); a
-    // corner holds its point, its place in a face and its hash-map entries.
+    // corner holds its point, its place in a face and its adjacency entries.
     let corners: f64 = mesh.faces.iter().map(|f| f.len() as f64).sum();
     let out_corners = corners * 4f64.powi(steps as i32);
     crate::budget::current().check(
@@ -48,26 +97,104 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         &format!("{steps} steps on {} faces", mesh.faces.len()),
         splinekit_scene::budget::Cost::new(out_corners * 200.0, out_corners * 300.0),
     )?;
-    let scheme = match args.scheme {
-        Scheme::CatmullClark => SurfaceScheme::CatmullClark,
-        Scheme::DooSabin => SurfaceScheme::DooSabin,
-    };
-    let out = mesh.subdivide(scheme, steps).map_err(|e| anyhow!("mesh: {e}"))?;
     let name = std::path::Path::new(&args.output).file_stem().and_then(|s| s.to_str()).unwrap_or("mesh").to_string();
+    let kernel = match args.scheme {
+        Scheme::DooSabin => {
+            if args.limit {
+                bail!("--limit: Doo–Sabin has no limit masks here; use catmull-clark, loop or bilinear");
+            }
+            let out = mesh.subdivide(SurfaceScheme::DooSabin, steps).map_err(|e| anyhow!("mesh: {e}"))?;
+            return write(&out, None, &name, &ext, &args.output);
+        }
+        Scheme::CatmullClark => KernelScheme::CatmullClark,
+        Scheme::Loop => KernelScheme::Loop,
+        Scheme::Bilinear => KernelScheme::Bilinear,
+    };
+    let creases = read_obj_creases(&text).map_err(|e| anyhow!("mesh: {e}"))?;
+    let cage = Cage::new(mesh.vertices.iter().map(|p| Point::<3>::new(p[0], p[1], p[2])).collect(), &mesh.faces)
+        .with_creases(creases)
+        .with_boundary(match args.boundary {
+            Boundary::EdgeOnly => BoundaryRule::EdgeOnly,
+            Boundary::EdgeAndCorner => BoundaryRule::EdgeAndCorner,
+        });
+    let surface = SubdivisionSurface::new(cage, kernel, args.triangulate).map_err(|e| anyhow!("mesh: {e}"))?;
+    let result = surface.subdivide(steps).map_err(|e| anyhow!("mesh: {e}"))?;
+    let c = result.cage();
+    let faces: Vec<Vec<u32>> = (0..c.face_count()).map(|f| c.face(f).to_vec()).collect();
+    let mut out = PolygonMesh { vertices: c.vertices.iter().map(|p| [p.x, p.y, p.z]).collect(), faces };
+    let mut normals = None;
+    if args.limit {
+        let frames = result.limit_frames().map_err(|e| anyhow!("mesh: {e}"))?;
+        out.vertices = frames.iter().map(|f| [f.position.x, f.position.y, f.position.z]).collect();
+        normals = Some(frames.iter().map(|f| [f.normal.x, f.normal.y, f.normal.z]).collect::<Vec<_>>());
+    }
+    write(&out, normals, &name, &ext, &args.output)
+}
+
+fn write(out: &PolygonMesh, normals: Option<Vec<[f64; 3]>>, name: &str, ext: &str, path: &str) -> Result<()> {
     let mut bytes = Vec::new();
-    match ext.as_str() {
-        "obj" => write_obj_polygons(&out, &name, &mut bytes),
+    match ext {
+        "obj" => match &normals {
+            None => write_obj_polygons(out, name, &mut bytes),
+            Some(n) => write_obj_with_normals(out, n, name, &mut bytes),
+        },
         other => {
-            let t = out.triangulate();
+            let t = match normals {
+                None => out.triangulate(),
+                Some(n) => {
+                    let mut t = TriangleMesh { positions: out.vertices.clone(), normals: n, ..Default::default() };
+                    for f in &out.faces {
+                        for k in 1..f.len() - 1 {
+                            t.triangles.push([f[0], f[k], f[k + 1]]);
+                        }
+                    }
+                    t
+                }
+            };
             match other {
                 "stl" => stl::write_stl_binary(&t, &mut bytes),
                 "ply" => ply::write_ply(&t, &mut bytes),
-                _ => GltfScene::single(&name, GltfGeometry::Mesh(t), super::tessellate::EXPORT_COLOR)
+                _ => GltfScene::single(name, GltfGeometry::Mesh(t), super::tessellate::EXPORT_COLOR)
                     .to_file_bytes(other)
                     .map(|b| bytes = b),
             }
         }
     }
     .map_err(|e| anyhow!("{e}"))?;
-    crate::output::write_bytes(&bytes, Some(&args.output))
+    crate::output::write_bytes(&bytes, Some(path))
+}
+
+/// OBJ with one `vn` per vertex and faces `f a//a b//b ...`.
+fn write_obj_with_normals(
+    mesh: &PolygonMesh,
+    normals: &[[f64; 3]],
+    name: &str,
+    out: &mut Vec<u8>,
+) -> std::result::Result<(), splinekit_mesh::export::ExportError> {
+    use std::io::Write;
+    splinekit_mesh::export::representable::check_vectors(
+        &mesh.vertices,
+        splinekit_mesh::export::representable::Precision::Double,
+        "OBJ",
+        "vertices",
+    )?;
+    writeln!(
+        out,
+        "# splinekit subdivision surface (limit positions and normals)\no {}",
+        splinekit_mesh::export::representable::one_line(name)
+    )?;
+    for v in &mesh.vertices {
+        writeln!(out, "v {} {} {}", v[0], v[1], v[2])?;
+    }
+    for n in normals {
+        writeln!(out, "vn {} {} {}", n[0], n[1], n[2])?;
+    }
+    for f in &mesh.faces {
+        out.write_all(b"f")?;
+        for &i in f {
+            write!(out, " {}//{}", i + 1, i + 1)?;
+        }
+        out.write_all(b"\n")?;
+    }
+    Ok(())
 }
