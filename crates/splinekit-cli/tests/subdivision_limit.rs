@@ -131,6 +131,13 @@ fn schemes_creases_and_boundaries() {
     for (x, want) in v[7].iter().zip([2.0 / 3.0, 2.0 / 3.0, 1.0]) {
         assert!((x - want).abs() < 1e-15, "{:?}", v[7]);
     }
+    // The crease splits the normals: the top face's corners and the side faces' corners at
+    // the four top vertices each get their own `vn` (8 vertex normals + 8 side ones).
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(lines(&text, "vn ").len(), 16);
+    assert!(text.contains("f 5//5 6//6 8//8 7//7") && text.contains("f 1//1 2//2 6//9 5//10"), "{text}");
+    let n = lines(&text, "vn ");
+    assert!(n[8][2] < n[5][2] - 0.1, "the side's normal at the crease leans outward: {:?} vs {:?}", n[8], n[5]);
     // An open grid of one quad: edge-only smooths its corners, edge-and-corner keeps them.
     let quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
     let o = run(

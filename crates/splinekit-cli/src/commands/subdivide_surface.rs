@@ -104,7 +104,7 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
                 bail!("--limit: Doo–Sabin has no limit masks here; use catmull-clark, loop or bilinear");
             }
             let out = mesh.subdivide(SurfaceScheme::DooSabin, steps).map_err(|e| anyhow!("mesh: {e}"))?;
-            return write(&out, None, &name, &ext, &args.output);
+            return write(&out, &name, &ext, &args.output);
         }
         Scheme::CatmullClark => KernelScheme::CatmullClark,
         Scheme::Loop => KernelScheme::Loop,
@@ -119,38 +119,110 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         });
     let surface = SubdivisionSurface::new(cage, kernel, args.triangulate).map_err(|e| anyhow!("mesh: {e}"))?;
     let result = surface.subdivide(steps).map_err(|e| anyhow!("mesh: {e}"))?;
+    if args.limit {
+        let m = limit_mesh(&result).map_err(|e| anyhow!("mesh: {e}"))?;
+        let mut bytes = Vec::new();
+        match ext.as_str() {
+            "obj" => write_obj_with_normals(&m, &name, &mut bytes),
+            other => {
+                let t = m.triangles();
+                match other {
+                    "stl" => stl::write_stl_binary(&t, &mut bytes),
+                    "ply" => ply::write_ply(&t, &mut bytes),
+                    _ => GltfScene::single(&name, GltfGeometry::Mesh(t), super::tessellate::EXPORT_COLOR)
+                        .to_file_bytes(other)
+                        .map(|b| bytes = b),
+                }
+            }
+        }
+        .map_err(|e| anyhow!("{e}"))?;
+        return crate::output::write_bytes(&bytes, Some(&args.output));
+    }
     let c = result.cage();
     let faces: Vec<Vec<u32>> = (0..c.face_count()).map(|f| c.face(f).to_vec()).collect();
-    let mut out = PolygonMesh { vertices: c.vertices.iter().map(|p| [p.x, p.y, p.z]).collect(), faces };
-    let mut normals = None;
-    if args.limit {
-        let frames = result.limit_frames().map_err(|e| anyhow!("mesh: {e}"))?;
-        out.vertices = frames.iter().map(|f| [f.position.x, f.position.y, f.position.z]).collect();
-        normals = Some(frames.iter().map(|f| [f.normal.x, f.normal.y, f.normal.z]).collect::<Vec<_>>());
-    }
-    write(&out, normals, &name, &ext, &args.output)
+    let out = PolygonMesh { vertices: c.vertices.iter().map(|p| [p.x, p.y, p.z]).collect(), faces };
+    write(&out, &name, &ext, &args.output)
 }
 
-fn write(out: &PolygonMesh, normals: Option<Vec<[f64; 3]>>, name: &str, ext: &str, path: &str) -> Result<()> {
+/// A mesh on the limit surface: limit positions (one per vertex, in order), normals (one
+/// per vertex, in order, then one more per face corner on the far side of a sharp crease),
+/// and faces as (vertex, normal) corners.
+pub struct LimitMesh {
+    pub positions: Vec<[f64; 3]>,
+    pub normals: Vec<[f64; 3]>,
+    pub faces: Vec<Vec<(u32, u32)>>,
+}
+
+/// The limit mesh of a subdivided surface's vertices.
+pub fn limit_mesh(s: &SubdivisionSurface) -> splinekit::Result<LimitMesh> {
+    let frames = s.limit_frames()?;
+    let corners = s.limit_corner_normals(&frames);
+    let arr = |p: &Point<3>| [p.x, p.y, p.z];
+    let mut m = LimitMesh {
+        positions: frames.iter().map(|f| arr(&f.position)).collect(),
+        normals: frames.iter().map(|f| arr(&f.normal)).collect(),
+        faces: Vec::with_capacity(s.cage().face_count()),
+    };
+    let c = s.cage();
+    for f in 0..c.face_count() {
+        let start = c.face_offsets[f] as usize;
+        let face = c
+            .face(f)
+            .iter()
+            .enumerate()
+            .map(|(k, &v)| {
+                let n = corners[start + k];
+                if (n - frames[v as usize].normal).norm() == 0.0 {
+                    (v, v)
+                } else {
+                    m.normals.push(arr(&n));
+                    (v, m.normals.len() as u32 - 1)
+                }
+            })
+            .collect();
+        m.faces.push(face);
+    }
+    Ok(m)
+}
+
+impl LimitMesh {
+    /// Triangle fans with one mesh vertex per (position, normal) pair.
+    pub fn triangles(&self) -> TriangleMesh {
+        let mut t = TriangleMesh {
+            positions: self.positions.clone(),
+            normals: self.normals[..self.positions.len()].to_vec(),
+            ..Default::default()
+        };
+        let mut extra = std::collections::HashMap::new();
+        for face in &self.faces {
+            let ids: Vec<u32> = face
+                .iter()
+                .map(|&(v, n)| {
+                    if v == n {
+                        v
+                    } else {
+                        *extra.entry(n).or_insert_with(|| {
+                            t.positions.push(self.positions[v as usize]);
+                            t.normals.push(self.normals[n as usize]);
+                            t.positions.len() as u32 - 1
+                        })
+                    }
+                })
+                .collect();
+            for k in 1..ids.len() - 1 {
+                t.triangles.push([ids[0], ids[k], ids[k + 1]]);
+            }
+        }
+        t
+    }
+}
+
+fn write(out: &PolygonMesh, name: &str, ext: &str, path: &str) -> Result<()> {
     let mut bytes = Vec::new();
     match ext {
-        "obj" => match &normals {
-            None => write_obj_polygons(out, name, &mut bytes),
-            Some(n) => write_obj_with_normals(out, n, name, &mut bytes),
-        },
+        "obj" => write_obj_polygons(out, name, &mut bytes),
         other => {
-            let t = match normals {
-                None => out.triangulate(),
-                Some(n) => {
-                    let mut t = TriangleMesh { positions: out.vertices.clone(), normals: n, ..Default::default() };
-                    for f in &out.faces {
-                        for k in 1..f.len() - 1 {
-                            t.triangles.push([f[0], f[k], f[k + 1]]);
-                        }
-                    }
-                    t
-                }
-            };
+            let t = out.triangulate();
             match other {
                 "stl" => stl::write_stl_binary(&t, &mut bytes),
                 "ply" => ply::write_ply(&t, &mut bytes),
@@ -164,35 +236,26 @@ fn write(out: &PolygonMesh, normals: Option<Vec<[f64; 3]>>, name: &str, ext: &st
     crate::output::write_bytes(&bytes, Some(path))
 }
 
-/// OBJ with one `vn` per vertex and faces `f a//a b//b ...`.
+/// OBJ of a limit mesh: `v` per vertex, `vn` per normal, faces `f v//n …`.
 fn write_obj_with_normals(
-    mesh: &PolygonMesh,
-    normals: &[[f64; 3]],
+    mesh: &LimitMesh,
     name: &str,
     out: &mut Vec<u8>,
 ) -> std::result::Result<(), splinekit_mesh::export::ExportError> {
+    use splinekit_mesh::export::representable::{Precision, check_vectors, one_line};
     use std::io::Write;
-    splinekit_mesh::export::representable::check_vectors(
-        &mesh.vertices,
-        splinekit_mesh::export::representable::Precision::Double,
-        "OBJ",
-        "vertices",
-    )?;
-    writeln!(
-        out,
-        "# splinekit subdivision surface (limit positions and normals)\no {}",
-        splinekit_mesh::export::representable::one_line(name)
-    )?;
-    for v in &mesh.vertices {
+    check_vectors(&mesh.positions, Precision::Double, "OBJ", "vertices")?;
+    writeln!(out, "# splinekit subdivision surface (limit positions and normals)\no {}", one_line(name))?;
+    for v in &mesh.positions {
         writeln!(out, "v {} {} {}", v[0], v[1], v[2])?;
     }
-    for n in normals {
+    for n in &mesh.normals {
         writeln!(out, "vn {} {} {}", n[0], n[1], n[2])?;
     }
     for f in &mesh.faces {
         out.write_all(b"f")?;
-        for &i in f {
-            write!(out, " {}//{}", i + 1, i + 1)?;
+        for &(v, n) in f {
+            write!(out, " {}//{}", v + 1, n + 1)?;
         }
         out.write_all(b"\n")?;
     }

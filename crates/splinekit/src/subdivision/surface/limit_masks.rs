@@ -62,12 +62,30 @@ pub fn mask_ready(topo: &Topology, v: u32, scheme: MaskScheme) -> bool {
     edges_ok && faces_ok && !topo.outgoing(v).is_empty()
 }
 
-/// The limit frame at v (call only where [`mask_ready`] holds).
+/// The limit frame at v (call only where [`mask_ready`] holds). At an interior crease or
+/// corner vertex the tangent plane is that of the sector counter-clockwise after its first
+/// sharp edge; [`limit_frame_in_sector`] gives the others.
 pub fn limit_frame(cage: &Cage, topo: &Topology, v: u32, scheme: MaskScheme) -> LimitFrame {
+    limit_frame_in_sector(cage, topo, v, scheme, 0)
+}
+
+/// The limit frame at v on the side of the face of v's outgoing half-edge number `corner`
+/// (counter-clockwise order): where sharp edges split the surface at v into sectors, each
+/// has its own tangent plane (the position is the same).
+pub fn limit_frame_in_sector(cage: &Cage, topo: &Topology, v: u32, scheme: MaskScheme, corner: usize) -> LimitFrame {
     let vs = &cage.vertices;
     let p = vs[v as usize];
-    let edges = topo.vertex_edges(v);
-    let out = topo.outgoing(v);
+    let mut edges = topo.vertex_edges(v);
+    let mut out = topo.outgoing(v).to_vec();
+    if !topo.vertex_boundary[v as usize] && !out.is_empty() {
+        // Turn the fan so that it starts at the last sharp edge at or before `corner`.
+        let n = out.len();
+        let k = corner % n;
+        if let Some(s0) = (0..n).map(|d| (k + n - d) % n).find(|&i| topo.edge_sharpness(edges[i].0) > 0.0) {
+            edges.rotate_left(s0);
+            out.rotate_left(s0);
+        }
+    }
     let e = |i: usize| vs[edges[i].1 as usize];
     let d = |i: usize| vs[topo.dest(topo.next(out[i])) as usize];
     let sharp: Vec<usize> = (0..edges.len()).filter(|&i| topo.edge_sharpness(edges[i].0) > 0.0).collect();

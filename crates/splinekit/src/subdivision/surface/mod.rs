@@ -186,6 +186,29 @@ impl SubdivisionSurface {
         Err(Error::invalid(format!("vertices[{v}]"), "the limit masks did not apply after 64 local steps"))
     }
 
+    /// The limit normal at every face corner (`face_offsets` order): the vertex's normal,
+    /// except at a vertex where sharp edges split the surface, where each corner takes the
+    /// normal of its own side of the crease.
+    pub fn limit_corner_normals(&self, frames: &[LimitFrame]) -> Vec<crate::Point<3>> {
+        let topo = &self.topology;
+        let ms = self.mask_scheme();
+        (0..self.cage.face_vertices.len() as u32)
+            .map(|h| {
+                let v = topo.origin(h);
+                let frame = frames[v as usize];
+                let split = !topo.vertex_boundary[v as usize]
+                    && topo.vertex_edges(v).iter().filter(|&&(e, _)| topo.sharpness[e as usize] > 0.0).count() >= 2;
+                match ms {
+                    Some(ms) if split && limit_masks::mask_ready(topo, v, ms) => {
+                        let k = topo.outgoing(v).iter().position(|&x| x == h).unwrap_or(0);
+                        limit_masks::limit_frame_in_sector(&self.cage, topo, v, ms, k).normal
+                    }
+                    _ => frame.normal,
+                }
+            })
+            .collect()
+    }
+
     /// Limit frames of all vertices, in order.
     pub fn limit_frames(&self) -> Result<Vec<LimitFrame>> {
         (0..self.cage.vertices.len() as u32).map(|v| self.limit_frame(v)).collect()
