@@ -23,7 +23,7 @@ fn assert_bad(args: &[&str], stdin: &str, must_contain: &str) {
     assert!(o.stderr.contains(must_contain), "{args:?}: {:?} lacks {must_contain:?}", o.stderr);
 }
 
-fn lines<'a>(text: &'a str, tag: &str) -> Vec<Vec<f64>> {
+fn lines(text: &str, tag: &str) -> Vec<Vec<f64>> {
     text.lines()
         .filter(|l| l.starts_with(tag))
         .map(|l| l.split_whitespace().skip(1).map(|x| x.parse().unwrap()).collect())

@@ -7,9 +7,35 @@
 //! boundary vertex, at the outgoing boundary half-edge.
 
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 
 use super::cage::{Cage, INFINITE_SHARPNESS};
 use crate::{Error, Result};
+
+/// A multiplicative hash for vertex-index pairs (the Fx hash of rustc): the default
+/// SipHash costs more than the rest of a subdivision step.
+#[derive(Default, Clone, Copy)]
+pub struct PairHasher(u64);
+
+impl Hasher for PairHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(b as u64);
+        }
+    }
+    fn write_u32(&mut self, x: u32) {
+        self.write_u64(x as u64);
+    }
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+}
+
+/// A hash map keyed by directed edges (or any vertex-index pairs).
+pub type PairMap<V> = HashMap<(u32, u32), V, BuildHasherDefault<PairHasher>>;
 
 /// No half-edge (the twin of a boundary half-edge).
 pub const NONE: u32 = u32::MAX;
@@ -67,7 +93,7 @@ impl Topology {
             face_offsets: cage.face_offsets.clone(),
             face_vertices: cage.face_vertices.clone(),
         };
-        let mut directed: HashMap<(u32, u32), u32> = HashMap::with_capacity(nh);
+        let mut directed: PairMap<u32> = PairMap::with_capacity_and_hasher(nh, Default::default());
         for h in 0..nh as u32 {
             let (a, b) = (topo.origin(h), topo.dest(h));
             if a == b {
