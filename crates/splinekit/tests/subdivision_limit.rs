@@ -437,3 +437,61 @@ fn a_step_keeps_vertex_order_and_counts() {
     assert_eq!(&b1.cage().vertices[..8], &b.cage().vertices[..]);
     close(b.evaluate(1, 0.5, 0.5).unwrap().position, p(0.0, 0.0, 1.0), 1e-15, "bilinear centre");
 }
+
+/// Loop along a boundary: the limit curve of an open triangulated grid's border is the
+/// uniform cubic B-spline of its boundary vertices (the crease rules (1, 6, 1)/8 and
+/// midpoints are cubic B-spline subdivision), and points just inside converge to it.
+#[test]
+fn loop_boundary_limit_is_the_cubic_bspline_of_the_border() {
+    let n = 6u32;
+    let q = grid(n, bumpy);
+    let mut faces = Vec::new();
+    for f in 0..q.face_count() {
+        let c = q.face(f);
+        faces.push(vec![c[0], c[1], c[2]]);
+        faces.push(vec![c[0], c[2], c[3]]);
+    }
+    let s = SubdivisionSurface::new(Cage::new(q.vertices.clone(), &faces), Scheme::Loop, false).unwrap();
+    let pts: Vec<Point<3>> = (0..=n).map(|i| q.vertices[i as usize]).collect();
+    let knots: Vec<f64> = (-3..=(n as i32 + 1)).map(f64::from).collect();
+    let curve = BSplineCurve::new(3, knots[..pts.len() + 4].to_vec(), pts).unwrap();
+    for i in 2..4u32 {
+        // Triangle 2i = (c0, c1, c2) of quad (i, 0): its edge c0→c1 (v = 0) is the border.
+        for &t in &[0.3, 0.5] {
+            let e = s.evaluate(2 * i as usize, t, 0.0).unwrap();
+            close(e.position, curve.point(i as f64 - 1.0 + t), 1e-14, "boundary point");
+            let inside = s.evaluate(2 * i as usize, t, 1e-9).unwrap();
+            assert!((inside.position - e.position).norm() < 1e-7);
+            assert!(inside.normal.dot(&e.normal) > 0.999, "{:?} vs {:?}", inside.normal, e.normal);
+        }
+    }
+}
+
+/// At a vertex on an infinitely sharp crease each side has its own tangent plane: the
+/// evaluation at the vertex from a face on either side gives that side's normal, the one
+/// its own regular patch gives a little way off the vertex along the crease.
+#[test]
+fn crease_vertex_normals_belong_to_their_side() {
+    let n = 8u32;
+    let mut cage = grid(n, bumpy);
+    let row = 4u32;
+    cage.creases =
+        (0..n).map(|i| Crease { a: row * (n + 1) + i, b: row * (n + 1) + i + 1, sharpness: f64::INFINITY }).collect();
+    // A valence-5 twist: not needed; the crease vertices are regular crease vertices, so the
+    // patches give exact normals at the vertex too; compare them with the sector masks.
+    let s = SubdivisionSurface::new(cage, Scheme::CatmullClark, false).unwrap();
+    let v = row * (n + 1) + 4;
+    let t = s.topology();
+    let frames = s.limit_frames().unwrap();
+    let corners = s.limit_corner_normals(&frames);
+    let below = s.evaluate(((row - 1) * n + 4) as usize, 0.0, 1.0).unwrap(); // corner c3 of the face below
+    let above = s.evaluate((row * n + 4) as usize, 0.0, 0.0).unwrap(); // corner c0 of the face above
+    assert!((below.normal - above.normal).norm() > 1e-3);
+    for (h, nrm) in corners.iter().enumerate() {
+        if t.origin(h as u32) == v {
+            let f = t.he_face[h] as u32;
+            let expected = if f < row * n { below.normal } else { above.normal };
+            close(*nrm, expected, 1e-13, "sector normal");
+        }
+    }
+}

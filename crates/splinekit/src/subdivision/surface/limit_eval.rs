@@ -17,7 +17,7 @@
 use super::box_spline::loop_basis;
 use super::cage::Cage;
 use super::catmull_clark::catmull_clark_step;
-use super::limit_masks::{MaskScheme, limit_frame, mask_ready};
+use super::limit_masks::{MaskScheme, limit_frame_in_sector, mask_ready};
 use super::local::{one_ring_faces, sub_cage};
 use super::loop_scheme::loop_step;
 use super::regular_patch::{catmull_clark_grid, cubic_bspline_basis, loop_points};
@@ -61,7 +61,9 @@ pub enum EvalScheme {
 
 /// Local subdivision stops here and takes the nearest corner's limit mask: the distance
 /// in parameter is then below 2⁻¹²⁰, and the point within λ¹²⁰ ≤ 0.66¹²⁰ ≈ 10⁻²² of it
-/// in units of the cage.
+/// in units of the cage. Points on a Loop boundary or infinitely sharp crease (where no
+/// child is ever a regular box-spline patch) end here, exact in position to that bound,
+/// with the mask's normal and without partials.
 const MAX_LEVELS: usize = 120;
 
 fn unit(c: Point<3>) -> Point<3> {
@@ -82,6 +84,7 @@ pub(crate) fn evaluate_local(
 ) -> Result<LimitSample> {
     // jac[c][a] = ∂(child coordinate c)/∂(root coordinate a).
     let mut jac = [[1.0, 0.0], [0.0, 1.0]];
+    let mut offset = Point::<3>::zeros();
     let mask_scheme = match scheme {
         EvalScheme::CatmullClark => MaskScheme::CatmullClark,
         EvalScheme::Loop => MaskScheme::Loop,
@@ -93,7 +96,9 @@ pub(crate) fn evaluate_local(
     for level in 0..=MAX_LEVELS {
         let topo = Topology::new(&cage)?;
         if use_patches && let Some(local) = regular(&cage, &topo, face, scheme, u, v) {
-            return Ok(to_root(local, jac));
+            let mut r = to_root(local, jac);
+            r.position += offset;
+            return Ok(r);
         }
         let nearest = (0..corners.len())
             .min_by(|&a, &b| {
@@ -104,11 +109,21 @@ pub(crate) fn evaluate_local(
         let at_corner = corners[nearest] == (u, v);
         let vertex = topo.origin(topo.face_start(face) + nearest as u32);
         if (at_corner || level == MAX_LEVELS) && mask_ready(&topo, vertex, mask_scheme) {
-            let f = limit_frame(&cage, &topo, vertex, mask_scheme);
-            return Ok(LimitSample { position: f.position, normal: f.normal, partials: None });
+            // The tangent plane on this face's side of any crease through the vertex.
+            let h = topo.face_start(face) + nearest as u32;
+            let sector = topo.outgoing(vertex).iter().position(|&x| x == h).unwrap_or(0);
+            let f = limit_frame_in_sector(&cage, &topo, vertex, mask_scheme, sector);
+            return Ok(LimitSample { position: f.position + offset, normal: f.normal, partials: None });
         }
         let ring = one_ring_faces(&topo, face);
-        let (local, _) = sub_cage(&cage, &topo, &ring);
+        let (mut local, _) = sub_cage(&cage, &topo, &ring);
+        // Subdivision commutes with translation: keep the neighbourhood near the origin so
+        // its shrinking differences keep their relative precision (tangents at deep levels).
+        let o = local.vertices[0];
+        for p in &mut local.vertices {
+            *p -= o;
+        }
+        offset += o;
         let local_topo = Topology::new(&local)?;
         // Face 0 of `local` is `face`; its children come first in the refined cage.
         let (child, a, b) = match scheme {
