@@ -477,8 +477,8 @@ fn crease_vertex_normals_belong_to_their_side() {
     let row = 4u32;
     cage.creases =
         (0..n).map(|i| Crease { a: row * (n + 1) + i, b: row * (n + 1) + i + 1, sharpness: f64::INFINITY }).collect();
-    // A valence-5 twist: not needed; the crease vertices are regular crease vertices, so the
-    // patches give exact normals at the vertex too; compare them with the sector masks.
+    // The crease vertices are regular crease vertices, so the phantom-point patches give
+    // the exact normal at the vertex on each side; the sector masks must agree.
     let s = SubdivisionSurface::new(cage, Scheme::CatmullClark, false).unwrap();
     let v = row * (n + 1) + 4;
     let t = s.topology();
@@ -489,7 +489,7 @@ fn crease_vertex_normals_belong_to_their_side() {
     assert!((below.normal - above.normal).norm() > 1e-3);
     for (h, nrm) in corners.iter().enumerate() {
         if t.origin(h as u32) == v {
-            let f = t.he_face[h] as u32;
+            let f = t.he_face[h];
             let expected = if f < row * n { below.normal } else { above.normal };
             close(*nrm, expected, 1e-13, "sector normal");
         }
