@@ -175,3 +175,33 @@ fn bad_subdivision_input_is_refused_in_one_line() {
     assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "-o", o], &negative, "sharpness");
     assert!(!out.exists());
 }
+
+/// `--at FACE,U,V` prints the exact limit: the cube's face centre at 68/81 with its
+/// partials (a regular point), its corner (±½, ±½, ±½) without (an extraordinary vertex).
+#[test]
+fn at_evaluates_the_limit_exactly() {
+    let o =
+        run(&["subdivide-surface", "-", "--scheme", "catmull-clark", "--at", "1,0.5,0.5", "--at", "1,0,0"], &cube());
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let v: serde_json::Value = serde_json::from_str(&o.stdout).unwrap();
+    let z = v[0]["position"][2].as_f64().unwrap();
+    assert!((z - 68.0 / 81.0).abs() < 1e-15, "{z}");
+    assert!((v[0]["normal"][2].as_f64().unwrap() - 1.0).abs() < 1e-15);
+    assert!(v[0]["partials"]["du"].is_array());
+    assert!(v[1]["partials"].is_null());
+    for c in 0..3 {
+        assert!((v[1]["position"][c].as_f64().unwrap().abs() - 0.5).abs() < 1e-15);
+    }
+    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "--at", "1,0.5"], &cube(), "FACE,U,V");
+    assert_bad(
+        &["subdivide-surface", "-", "--scheme", "catmull-clark", "--at", "6,0.5,0.5"],
+        &cube(),
+        "6 does not exist",
+    );
+    assert_bad(
+        &["subdivide-surface", "-", "--scheme", "loop", "--triangulate", "--at", "0,0.8,0.8"],
+        &cube(),
+        "outside",
+    );
+    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark"], &cube(), "-o");
+}

@@ -53,9 +53,42 @@ pub struct SubdivideSurfaceArgs {
     /// of a single face interpolated).
     #[arg(long, value_enum, default_value = "edge-only")]
     pub boundary: Boundary,
-    /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals).
+    /// Evaluate the limit surface exactly at FACE,U,V (a cage face and parameters in it;
+    /// repeatable) and print JSON: position, normal and partials (null at an extraordinary
+    /// vertex). Catmull–Clark, Loop and bilinear; the cage as read, `--steps` not applied.
+    #[arg(long, value_name = "FACE,U,V")]
+    pub at: Vec<String>,
+    /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals);
+    /// with --at, the JSON file (default standard output).
     #[arg(short, long)]
-    pub output: String,
+    pub output: Option<String>,
+}
+
+/// Parses `FACE,U,V`.
+fn parse_at(s: &str) -> Result<(usize, f64, f64)> {
+    let bad = || anyhow!("--at: expected FACE,U,V (a face index and two finite numbers), got '{s}'");
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 3 {
+        return Err(bad());
+    }
+    let face: usize = parts[0].parse().map_err(|_| bad())?;
+    let u: f64 = parts[1].parse().map_err(|_| bad())?;
+    let v: f64 = parts[2].parse().map_err(|_| bad())?;
+    if !u.is_finite() || !v.is_finite() {
+        return Err(bad());
+    }
+    Ok((face, u, v))
+}
+
+fn sample_json(s: &splinekit::subdivision::surface::LimitSample) -> serde_json::Value {
+    let a = |p: &Point<3>| serde_json::json!([p.x, p.y, p.z]);
+    serde_json::json!({
+        "position": a(&s.position),
+        "normal": a(&s.normal),
+        "partials": s.partials.map(|d| serde_json::json!({
+            "du": a(&d.du), "dv": a(&d.dv), "duu": a(&d.duu), "duv": a(&d.duv), "dvv": a(&d.dvv)
+        })),
+    })
 }
 
 /// `t crease 2/1 A B S` tags of an OBJ text (0-based vertex indices).
@@ -78,9 +111,15 @@ pub fn read_obj_creases(text: &str) -> std::result::Result<Vec<Crease>, String> 
 }
 
 pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
-    let ext = args.output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
-    if !matches!(ext.as_str(), "obj" | "stl" | "ply" | "gltf" | "glb") {
-        bail!("-o: writes .obj, .stl, .ply, .gltf or .glb, not '{}'", args.output);
+    let at: Vec<(usize, f64, f64)> = args.at.iter().map(|s| parse_at(s)).collect::<Result<_>>()?;
+    let output = match (&args.output, at.is_empty()) {
+        (Some(o), _) => o.clone(),
+        (None, false) => String::new(),
+        (None, true) => bail!("-o: an output file is needed (or --at FACE,U,V to evaluate)"),
+    };
+    let ext = output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
+    if at.is_empty() && !matches!(ext.as_str(), "obj" | "stl" | "ply" | "gltf" | "glb") {
+        bail!("-o: writes .obj, .stl, .ply, .gltf or .glb, not '{output}'");
     }
     let steps = super::eval::parse_count("--steps", &args.steps, 10)?;
     let text = read_text(&args.mesh, "mesh")?;
@@ -97,14 +136,17 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         &format!("{steps} steps on {} faces", mesh.faces.len()),
         splinekit_scene::budget::Cost::new(out_corners * 200.0, out_corners * 300.0),
     )?;
-    let name = std::path::Path::new(&args.output).file_stem().and_then(|s| s.to_str()).unwrap_or("mesh").to_string();
+    let name = std::path::Path::new(&output).file_stem().and_then(|s| s.to_str()).unwrap_or("mesh").to_string();
     let kernel = match args.scheme {
         Scheme::DooSabin => {
+            if !at.is_empty() {
+                bail!("--at: Doo–Sabin has no exact evaluation here; use catmull-clark, loop or bilinear");
+            }
             if args.limit {
                 bail!("--limit: Doo–Sabin has no limit masks here; use catmull-clark, loop or bilinear");
             }
             let out = mesh.subdivide(SurfaceScheme::DooSabin, steps).map_err(|e| anyhow!("mesh: {e}"))?;
-            return write(&out, &name, &ext, &args.output);
+            return write(&out, &name, &ext, &output);
         }
         Scheme::CatmullClark => KernelScheme::CatmullClark,
         Scheme::Loop => KernelScheme::Loop,
@@ -118,6 +160,14 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
             Boundary::EdgeAndCorner => BoundaryRule::EdgeAndCorner,
         });
     let surface = SubdivisionSurface::new(cage, kernel, args.triangulate).map_err(|e| anyhow!("mesh: {e}"))?;
+    if !at.is_empty() {
+        let mut samples = Vec::with_capacity(at.len());
+        for (k, &(face, u, v)) in at.iter().enumerate() {
+            let s = surface.evaluate(face, u, v).map_err(|e| anyhow!("--at[{k}]: {e}"))?;
+            samples.push(sample_json(&s));
+        }
+        return crate::output::write_json(&serde_json::Value::Array(samples), args.output.as_deref());
+    }
     let result = surface.subdivide(steps).map_err(|e| anyhow!("mesh: {e}"))?;
     if args.limit {
         let m = limit_mesh(&result).map_err(|e| anyhow!("mesh: {e}"))?;
@@ -136,12 +186,12 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
             }
         }
         .map_err(|e| anyhow!("{e}"))?;
-        return crate::output::write_bytes(&bytes, Some(&args.output));
+        return crate::output::write_bytes(&bytes, Some(&output));
     }
     let c = result.cage();
     let faces: Vec<Vec<u32>> = (0..c.face_count()).map(|f| c.face(f).to_vec()).collect();
     let out = PolygonMesh { vertices: c.vertices.iter().map(|p| [p.x, p.y, p.z]).collect(), faces };
-    write(&out, &name, &ext, &args.output)
+    write(&out, &name, &ext, &output)
 }
 
 /// A mesh on the limit surface: limit positions (one per vertex, in order), normals (one

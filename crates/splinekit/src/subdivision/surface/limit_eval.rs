@@ -6,8 +6,9 @@
 //! into it. Each child halves the parameter distances, so after about log₂(1/d) steps a
 //! point at distance d from an irregular corner lies in a regular child, where the limit
 //! is a polynomial patch evaluated exactly ([`super::regular_patch`]). A point that is
-//! itself an irregular corner takes the vertex's limit mask (position and normal; the
-//! parametric partials do not exist there). Partials are carried back through the affine
+//! itself an irregular vertex (still a corner of an irregular child two steps after it
+//! became a corner) takes the vertex's limit mask (position and normal; the parametric
+//! partials do not exist there). Partials are carried back through the affine
 //! maps: with child = A·parent + b, ∂ₐP = Σ_c A_ca ∂_cP′ and ∂ₐ∂_bP = Σ A_ca A_db ∂_c∂_dP′.
 //!
 //! Parameters: Catmull–Clark and bilinear quads (c₀, c₁, c₂, c₃) put c₀ at (0, 0), c₁ at
@@ -85,6 +86,7 @@ pub(crate) fn evaluate_local(
     // jac[c][a] = ∂(child coordinate c)/∂(root coordinate a).
     let mut jac = [[1.0, 0.0], [0.0, 1.0]];
     let mut offset = Point::<3>::zeros();
+    let mut corner_levels = 0;
     let mask_scheme = match scheme {
         EvalScheme::CatmullClark => MaskScheme::CatmullClark,
         EvalScheme::Loop => MaskScheme::Loop,
@@ -108,7 +110,14 @@ pub(crate) fn evaluate_local(
             .unwrap_or(0);
         let at_corner = corners[nearest] == (u, v);
         let vertex = topo.origin(topo.face_start(face) + nearest as u32);
-        if (at_corner || level == MAX_LEVELS) && mask_ready(&topo, vertex, mask_scheme) {
+        if at_corner {
+            corner_levels += 1;
+        }
+        // At a corner, two more steps put a regular vertex inside a regular patch (with
+        // partials); a vertex still irregular then never will be, and takes its mask.
+        if ((at_corner && (corner_levels > 2 || !use_patches)) || level == MAX_LEVELS)
+            && mask_ready(&topo, vertex, mask_scheme)
+        {
             // The tangent plane on this face's side of any crease through the vertex.
             let h = topo.face_start(face) + nearest as u32;
             let sector = topo.outgoing(vertex).iter().position(|&x| x == h).unwrap_or(0);
