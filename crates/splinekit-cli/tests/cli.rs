@@ -735,7 +735,9 @@ fn subdivide_surface_writes_meshes_and_refuses_bad_ones() {
         "v 0 0 0\nf 1 2 3\n",
         "line 2",
     );
-    assert_bad(&["subdivide-surface", "-", "--scheme", "loop", "-o", obj.to_str().unwrap()], &cube, "scheme");
+    // Loop takes triangles: the cube's quads are refused unless --triangulate.
+    assert_bad(&["subdivide-surface", "-", "--scheme", "loop", "-o", obj.to_str().unwrap()], &cube, "triangulation");
+    assert_bad(&["subdivide-surface", "-", "--scheme", "spline", "-o", obj.to_str().unwrap()], &cube, "scheme");
     std::fs::remove_dir_all(&dir).ok();
 }
 

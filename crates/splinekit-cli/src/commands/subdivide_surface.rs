@@ -1,22 +1,40 @@
-//! `splinekit subdivide-surface`: Catmull–Clark or Doo–Sabin subdivision of a polygon mesh
-//! read from OBJ, written as OBJ (polygons) or, triangulated, as STL, PLY, glTF or glb.
+//! `splinekit subdivide-surface`: Catmull–Clark, Loop, bilinear or Doo–Sabin subdivision
+//! of a polygon mesh read from OBJ, written as OBJ (polygons) or, triangulated, as STL,
+//! PLY, glTF or glb. `--limit` moves every vertex of the result onto the limit surface
+//! (limit masks) and writes the limit normals (`vn` in OBJ); vertices keep their order, so
+//! `--steps 0 --limit` gives the cage's own limit points in input order.
+//!
+//! Creases come from OpenSubdiv's OBJ tags: `t crease 2/1 A B S` makes the edge between
+//! vertices A and B (0-based, as OpenSubdiv's shapes write them) of sharpness S.
 
 use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
+use splinekit::Point;
+use splinekit::subdivision::surface::{BoundaryRule, Cage, Crease, Scheme as KernelScheme, SubdivisionSurface};
+use splinekit_mesh::TriangleMesh;
 use splinekit_mesh::export::{GltfGeometry, GltfScene, ply, stl};
-use splinekit_mesh::subdivision_surface::{SurfaceScheme, read_obj_polygons, write_obj_polygons};
+use splinekit_mesh::subdivision_surface::{PolygonMesh, SurfaceScheme, read_obj_polygons, write_obj_polygons};
 
 use crate::input::read_text;
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum Scheme {
     CatmullClark,
+    Loop,
+    Bilinear,
     DooSabin,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum Boundary {
+    EdgeOnly,
+    EdgeAndCorner,
 }
 
 #[derive(Args, Debug)]
 pub struct SubdivideSurfaceArgs {
-    /// Control mesh as OBJ (v and f lines; any polygons), or - for standard input.
+    /// Control mesh as OBJ (v and f lines; any polygons; `t crease 2/1 A B S` tags), or -
+    /// for standard input.
     pub mesh: String,
     /// The scheme.
     #[arg(long, value_enum)]
@@ -24,23 +42,93 @@ pub struct SubdivideSurfaceArgs {
     /// Number of subdivision steps.
     #[arg(long, default_value = "3")]
     pub steps: String,
-    /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals).
+    /// Put every vertex of the result on the limit surface and write limit normals
+    /// (Catmull–Clark, Loop, bilinear).
+    #[arg(long)]
+    pub limit: bool,
+    /// Loop: split polygons into triangle fans first instead of refusing them.
+    #[arg(long)]
+    pub triangulate: bool,
+    /// Boundary rule: edge-only (boundary vertices smoothed) or edge-and-corner (corners
+    /// of a single face interpolated).
+    #[arg(long, value_enum, default_value = "edge-only")]
+    pub boundary: Boundary,
+    /// Evaluate the limit surface exactly at FACE,U,V (a cage face and parameters in it;
+    /// repeatable) and print JSON: position, normal and partials (null at an extraordinary
+    /// vertex). Catmull–Clark, Loop and bilinear; the cage as read, `--steps` not applied.
+    #[arg(long, value_name = "FACE,U,V")]
+    pub at: Vec<String>,
+    /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals);
+    /// with --at, the JSON file (default standard output).
     #[arg(short, long)]
-    pub output: String,
+    pub output: Option<String>,
+}
+
+/// Parses `FACE,U,V`.
+fn parse_at(s: &str) -> Result<(usize, f64, f64)> {
+    let bad = || anyhow!("--at: expected FACE,U,V (a face index and two finite numbers), got '{s}'");
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 3 {
+        return Err(bad());
+    }
+    let face: usize = parts[0].parse().map_err(|_| bad())?;
+    let u: f64 = parts[1].parse().map_err(|_| bad())?;
+    let v: f64 = parts[2].parse().map_err(|_| bad())?;
+    if !u.is_finite() || !v.is_finite() {
+        return Err(bad());
+    }
+    Ok((face, u, v))
+}
+
+fn sample_json(s: &splinekit::subdivision::surface::LimitSample) -> serde_json::Value {
+    let a = |p: &Point<3>| serde_json::json!([p.x, p.y, p.z]);
+    serde_json::json!({
+        "position": a(&s.position),
+        "normal": a(&s.normal),
+        "partials": s.partials.map(|d| serde_json::json!({
+            "du": a(&d.du), "dv": a(&d.dv), "duu": a(&d.duu), "duv": a(&d.duv), "dvv": a(&d.dvv)
+        })),
+    })
+}
+
+/// `t crease 2/1 A B S` tags of an OBJ text (0-based vertex indices).
+pub fn read_obj_creases(text: &str) -> std::result::Result<Vec<Crease>, String> {
+    let mut creases = Vec::new();
+    for (k, line) in text.lines().enumerate() {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        if words.len() >= 2 && words[0] == "t" && words[1] == "crease" {
+            let bad = || format!("line {}: a crease tag is `t crease 2/1 A B SHARPNESS`, got '{}'", k + 1, line.trim());
+            if words.len() != 6 || words[2] != "2/1" {
+                return Err(bad());
+            }
+            let a: u32 = words[3].parse().map_err(|_| bad())?;
+            let b: u32 = words[4].parse().map_err(|_| bad())?;
+            let s: f64 = words[5].parse().map_err(|_| bad())?;
+            creases.push(Crease { a, b, sharpness: s });
+        }
+    }
+    Ok(creases)
 }
 
 pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
-    let ext = args.output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
-    if !matches!(ext.as_str(), "obj" | "stl" | "ply" | "gltf" | "glb") {
-        bail!("-o: writes .obj, .stl, .ply, .gltf or .glb, not '{}'", args.output);
+    let at: Vec<(usize, f64, f64)> = args.at.iter().map(|s| parse_at(s)).collect::<Result<_>>()?;
+    let output = match (&args.output, at.is_empty()) {
+        (Some(o), _) => o.clone(),
+        (None, false) => String::new(),
+        (None, true) => bail!("-o: an output file is needed (or --at FACE,U,V to evaluate)"),
+    };
+    let ext = output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
+    if at.is_empty() && !matches!(ext.as_str(), "obj" | "stl" | "ply" | "gltf" | "glb") {
+        bail!("-o: writes .obj, .stl, .ply, .gltf or .glb, not '{output}'");
     }
     let steps = super::eval::parse_count("--steps", &args.steps, 10)?;
-    let mesh = read_obj_polygons(&read_text(&args.mesh, "mesh")?).map_err(|e| anyhow!("mesh: {e}"))?;
+    let text = read_text(&args.mesh, "mesh")?;
+    let mesh = read_obj_polygons(&text).map_err(|e| anyhow!("mesh: {e}"))?;
     if mesh.faces.is_empty() {
         bail!("mesh: no faces (f lines) found");
     }
     // Each step makes about four corners of every corner (an n-gon becomes n quads); a
-    // corner holds its point, its place in a face and its hash-map entries.
+    // corner holds its point, its place in a face and its adjacency entries.
     let corners: f64 = mesh.faces.iter().map(|f| f.len() as f64).sum();
     let out_corners = corners * 4f64.powi(steps as i32);
     crate::budget::current().check(
@@ -48,26 +136,178 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         &format!("{steps} steps on {} faces", mesh.faces.len()),
         splinekit_scene::budget::Cost::new(out_corners * 200.0, out_corners * 300.0),
     )?;
-    let scheme = match args.scheme {
-        Scheme::CatmullClark => SurfaceScheme::CatmullClark,
-        Scheme::DooSabin => SurfaceScheme::DooSabin,
+    let name = std::path::Path::new(&output).file_stem().and_then(|s| s.to_str()).unwrap_or("mesh").to_string();
+    let kernel = match args.scheme {
+        Scheme::DooSabin => {
+            if !at.is_empty() {
+                bail!("--at: Doo–Sabin has no exact evaluation here; use catmull-clark, loop or bilinear");
+            }
+            if args.limit {
+                bail!("--limit: Doo–Sabin has no limit masks here; use catmull-clark, loop or bilinear");
+            }
+            let out = mesh.subdivide(SurfaceScheme::DooSabin, steps).map_err(|e| anyhow!("mesh: {e}"))?;
+            return write(&out, &name, &ext, &output);
+        }
+        Scheme::CatmullClark => KernelScheme::CatmullClark,
+        Scheme::Loop => KernelScheme::Loop,
+        Scheme::Bilinear => KernelScheme::Bilinear,
     };
-    let out = mesh.subdivide(scheme, steps).map_err(|e| anyhow!("mesh: {e}"))?;
-    let name = std::path::Path::new(&args.output).file_stem().and_then(|s| s.to_str()).unwrap_or("mesh").to_string();
+    let creases = read_obj_creases(&text).map_err(|e| anyhow!("mesh: {e}"))?;
+    let cage = Cage::new(mesh.vertices.iter().map(|p| Point::<3>::new(p[0], p[1], p[2])).collect(), &mesh.faces)
+        .with_creases(creases)
+        .with_boundary(match args.boundary {
+            Boundary::EdgeOnly => BoundaryRule::EdgeOnly,
+            Boundary::EdgeAndCorner => BoundaryRule::EdgeAndCorner,
+        });
+    let surface = SubdivisionSurface::new(cage, kernel, args.triangulate).map_err(|e| anyhow!("mesh: {e}"))?;
+    if !at.is_empty() {
+        let mut samples = Vec::with_capacity(at.len());
+        for (k, &(face, u, v)) in at.iter().enumerate() {
+            let s = surface.evaluate(face, u, v).map_err(|e| anyhow!("--at[{k}]: {e}"))?;
+            samples.push(sample_json(&s));
+        }
+        return crate::output::write_json(&serde_json::Value::Array(samples), args.output.as_deref());
+    }
+    let result = surface.subdivide(steps).map_err(|e| anyhow!("mesh: {e}"))?;
+    if args.limit {
+        let m = limit_mesh(&result).map_err(|e| anyhow!("mesh: {e}"))?;
+        let mut bytes = Vec::new();
+        match ext.as_str() {
+            "obj" => write_obj_with_normals(&m, &name, &mut bytes),
+            other => {
+                let t = m.triangles();
+                match other {
+                    "stl" => stl::write_stl_binary(&t, &mut bytes),
+                    "ply" => ply::write_ply(&t, &mut bytes),
+                    _ => GltfScene::single(&name, GltfGeometry::Mesh(t), super::tessellate::EXPORT_COLOR)
+                        .to_file_bytes(other)
+                        .map(|b| bytes = b),
+                }
+            }
+        }
+        .map_err(|e| anyhow!("{e}"))?;
+        return crate::output::write_bytes(&bytes, Some(&output));
+    }
+    let c = result.cage();
+    let faces: Vec<Vec<u32>> = (0..c.face_count()).map(|f| c.face(f).to_vec()).collect();
+    let out = PolygonMesh { vertices: c.vertices.iter().map(|p| [p.x, p.y, p.z]).collect(), faces };
+    write(&out, &name, &ext, &output)
+}
+
+/// A mesh on the limit surface: limit positions (one per vertex, in order), normals (one
+/// per vertex, in order, then one more per face corner on the far side of a sharp crease),
+/// and faces as (vertex, normal) corners.
+pub struct LimitMesh {
+    pub positions: Vec<[f64; 3]>,
+    pub normals: Vec<[f64; 3]>,
+    pub faces: Vec<Vec<(u32, u32)>>,
+}
+
+/// The limit mesh of a subdivided surface's vertices.
+pub fn limit_mesh(s: &SubdivisionSurface) -> splinekit::Result<LimitMesh> {
+    let frames = s.limit_frames()?;
+    let corners = s.limit_corner_normals(&frames);
+    let arr = |p: &Point<3>| [p.x, p.y, p.z];
+    let mut m = LimitMesh {
+        positions: frames.iter().map(|f| arr(&f.position)).collect(),
+        normals: frames.iter().map(|f| arr(&f.normal)).collect(),
+        faces: Vec::with_capacity(s.cage().face_count()),
+    };
+    let c = s.cage();
+    for f in 0..c.face_count() {
+        let start = c.face_offsets[f] as usize;
+        let face = c
+            .face(f)
+            .iter()
+            .enumerate()
+            .map(|(k, &v)| {
+                let n = corners[start + k];
+                if (n - frames[v as usize].normal).norm() == 0.0 {
+                    (v, v)
+                } else {
+                    m.normals.push(arr(&n));
+                    (v, m.normals.len() as u32 - 1)
+                }
+            })
+            .collect();
+        m.faces.push(face);
+    }
+    Ok(m)
+}
+
+impl LimitMesh {
+    /// Triangle fans with one mesh vertex per (position, normal) pair.
+    pub fn triangles(&self) -> TriangleMesh {
+        let mut t = TriangleMesh {
+            positions: self.positions.clone(),
+            normals: self.normals[..self.positions.len()].to_vec(),
+            ..Default::default()
+        };
+        let mut extra = std::collections::HashMap::new();
+        for face in &self.faces {
+            let ids: Vec<u32> = face
+                .iter()
+                .map(|&(v, n)| {
+                    if v == n {
+                        v
+                    } else {
+                        *extra.entry(n).or_insert_with(|| {
+                            t.positions.push(self.positions[v as usize]);
+                            t.normals.push(self.normals[n as usize]);
+                            t.positions.len() as u32 - 1
+                        })
+                    }
+                })
+                .collect();
+            for k in 1..ids.len() - 1 {
+                t.triangles.push([ids[0], ids[k], ids[k + 1]]);
+            }
+        }
+        t
+    }
+}
+
+fn write(out: &PolygonMesh, name: &str, ext: &str, path: &str) -> Result<()> {
     let mut bytes = Vec::new();
-    match ext.as_str() {
-        "obj" => write_obj_polygons(&out, &name, &mut bytes),
+    match ext {
+        "obj" => write_obj_polygons(out, name, &mut bytes),
         other => {
             let t = out.triangulate();
             match other {
                 "stl" => stl::write_stl_binary(&t, &mut bytes),
                 "ply" => ply::write_ply(&t, &mut bytes),
-                _ => GltfScene::single(&name, GltfGeometry::Mesh(t), super::tessellate::EXPORT_COLOR)
+                _ => GltfScene::single(name, GltfGeometry::Mesh(t), super::tessellate::EXPORT_COLOR)
                     .to_file_bytes(other)
                     .map(|b| bytes = b),
             }
         }
     }
     .map_err(|e| anyhow!("{e}"))?;
-    crate::output::write_bytes(&bytes, Some(&args.output))
+    crate::output::write_bytes(&bytes, Some(path))
+}
+
+/// OBJ of a limit mesh: `v` per vertex, `vn` per normal, faces `f v//n …`.
+fn write_obj_with_normals(
+    mesh: &LimitMesh,
+    name: &str,
+    out: &mut Vec<u8>,
+) -> std::result::Result<(), splinekit_mesh::export::ExportError> {
+    use splinekit_mesh::export::representable::{Precision, check_vectors, one_line};
+    use std::io::Write;
+    check_vectors(&mesh.positions, Precision::Double, "OBJ", "vertices")?;
+    writeln!(out, "# splinekit subdivision surface (limit positions and normals)\no {}", one_line(name))?;
+    for v in &mesh.positions {
+        writeln!(out, "v {} {} {}", v[0], v[1], v[2])?;
+    }
+    for n in &mesh.normals {
+        writeln!(out, "vn {} {} {}", n[0], n[1], n[2])?;
+    }
+    for f in &mesh.faces {
+        out.write_all(b"f")?;
+        for &(v, n) in f {
+            write!(out, " {}//{}", v + 1, n + 1)?;
+        }
+        out.write_all(b"\n")?;
+    }
+    Ok(())
 }

@@ -1,0 +1,207 @@
+//! `splinekit subdivide-surface` with the schemes, creases and `--limit` of issue 24.
+
+mod common;
+use common::run;
+
+fn cube() -> String {
+    std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/meshes/cube.obj")).unwrap()
+}
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("splinekit-subdiv-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Exit 2, nothing on standard output, one line naming `must_contain`.
+fn assert_bad(args: &[&str], stdin: &str, must_contain: &str) {
+    let o = run(args, stdin);
+    assert_eq!(o.code, 2, "{args:?}: exit {} (stderr {:?})", o.code, o.stderr);
+    assert!(o.stdout.is_empty(), "{args:?}: printed {:?}", o.stdout);
+    assert_eq!(o.stderr.lines().count(), 1, "{args:?}: stderr {:?}", o.stderr);
+    assert!(o.stderr.starts_with("error: ") && !o.stderr.contains("panicked"), "{:?}", o.stderr);
+    assert!(o.stderr.contains(must_contain), "{args:?}: {:?} lacks {must_contain:?}", o.stderr);
+}
+
+fn lines(text: &str, tag: &str) -> Vec<Vec<f64>> {
+    text.lines()
+        .filter(|l| l.starts_with(tag))
+        .map(|l| l.split_whitespace().skip(1).map(|x| x.parse().unwrap()).collect())
+        .collect()
+}
+
+/// `--steps 0 --limit` gives the cube's limit points in input order: (±½, ±½, ±½) (the
+/// valence-3 mask (9v + 4Σe + Σd)/24), with normals along them.
+#[test]
+fn steps_zero_limit_gives_the_cage_limit_points_in_order() {
+    let dir = temp_dir("zero");
+    let out = dir.join("limit.obj");
+    let o = run(
+        &[
+            "subdivide-surface",
+            "-",
+            "--scheme",
+            "catmull-clark",
+            "--steps",
+            "0",
+            "--limit",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        &cube(),
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let text = std::fs::read_to_string(&out).unwrap();
+    let cage = lines(&cube(), "v ");
+    let v = lines(&text, "v ");
+    let n = lines(&text, "vn ");
+    assert_eq!(v.len(), 8);
+    assert_eq!(n.len(), 8);
+    for i in 0..8 {
+        for c in 0..3 {
+            assert!((v[i][c] - cage[i][c] / 2.0).abs() < 1e-15, "vertex {i}: {:?}", v[i]);
+            assert!((n[i][c] - cage[i][c] / 3f64.sqrt()).abs() < 1e-15, "normal {i}: {:?}", n[i]);
+        }
+    }
+    assert!(text.contains("f 1//1 3//3 4//4 2//2"));
+    // Two steps: the face centre vertex (index 8 + face) is at the limit 68/81.
+    let o = run(
+        &[
+            "subdivide-surface",
+            "-",
+            "--scheme",
+            "catmull-clark",
+            "--steps",
+            "2",
+            "--limit",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        &cube(),
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let v = lines(&std::fs::read_to_string(&out).unwrap(), "v ");
+    assert!(v.iter().any(|p| p[0].abs() < 1e-15 && p[1].abs() < 1e-15 && (p[2] - 68.0 / 81.0).abs() < 1e-15));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Loop on triangles, bilinear, OBJ crease tags and boundary rules from the command line.
+#[test]
+fn schemes_creases_and_boundaries() {
+    let dir = temp_dir("schemes");
+    let out = dir.join("out.obj");
+    let o = run(
+        &["subdivide-surface", "-", "--scheme", "loop", "--triangulate", "--steps", "1", "-o", out.to_str().unwrap()],
+        &cube(),
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let text = std::fs::read_to_string(&out).unwrap();
+    // 12 triangles → 48; 8 + 18 edges vertices.
+    assert_eq!(lines(&text, "f ").len(), 48);
+    assert_eq!(lines(&text, "v ").len(), 26);
+    let o = run(
+        &["subdivide-surface", "-", "--scheme", "bilinear", "--steps", "1", "--limit", "-o", out.to_str().unwrap()],
+        &cube(),
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let v = lines(&std::fs::read_to_string(&out).unwrap(), "v ");
+    assert_eq!(v[7], vec![1.0, 1.0, 1.0], "bilinear keeps the cage's vertices");
+    // An infinitely sharp crease ring around the cube's top face (OBJ tags, 0-based): the
+    // top corners have two sharp edges, so they are crease vertices with the limit
+    // (e₀ + 4v + e₁)/6 of the cubic B-spline crease curve: for (1, 1, 1) with crease
+    // neighbours (−1, 1, 1) and (1, −1, 1), (2/3, 2/3, 1).
+    let creased =
+        format!("{}t crease 2/1 4 5 10\nt crease 2/1 5 7 10\nt crease 2/1 7 6 10\nt crease 2/1 6 4 10\n", cube());
+    let o = run(
+        &[
+            "subdivide-surface",
+            "-",
+            "--scheme",
+            "catmull-clark",
+            "--steps",
+            "0",
+            "--limit",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        &creased,
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let v = lines(&std::fs::read_to_string(&out).unwrap(), "v ");
+    for (x, want) in v[7].iter().zip([2.0 / 3.0, 2.0 / 3.0, 1.0]) {
+        assert!((x - want).abs() < 1e-15, "{:?}", v[7]);
+    }
+    // The crease splits the normals: the top face's corners and the side faces' corners at
+    // the four top vertices each get their own `vn` (8 vertex normals + 8 side ones).
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(lines(&text, "vn ").len(), 16);
+    assert!(text.contains("f 5//5 6//6 8//8 7//7") && text.contains("f 1//1 2//2 6//9 5//10"), "{text}");
+    let n = lines(&text, "vn ");
+    assert!(n[8][2] < n[5][2] - 0.1, "the side's normal at the crease leans outward: {:?} vs {:?}", n[8], n[5]);
+    // An open grid of one quad: edge-only smooths its corners, edge-and-corner keeps them.
+    let quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+    let o = run(
+        &[
+            "subdivide-surface",
+            "-",
+            "--scheme",
+            "catmull-clark",
+            "--steps",
+            "0",
+            "--limit",
+            "--boundary",
+            "edge-and-corner",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        quad,
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert_eq!(lines(&std::fs::read_to_string(&out).unwrap(), "v ")[2], vec![1.0, 1.0, 0.0]);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn bad_subdivision_input_is_refused_in_one_line() {
+    let out = std::env::temp_dir().join("splinekit-subdiv-never.obj");
+    let o = out.to_str().unwrap();
+    assert_bad(&["subdivide-surface", "-", "--scheme", "doo-sabin", "--limit", "-o", o], &cube(), "--limit");
+    assert_bad(&["subdivide-surface", "-", "--scheme", "loop", "-o", o], &cube(), "faces[0]");
+    let bad_tag = format!("{}t crease 2/1 0 1\n", cube());
+    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "-o", o], &bad_tag, "crease");
+    let not_edge = format!("{}t crease 2/1 0 7 2\n", cube());
+    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "-o", o], &not_edge, "creases[0]");
+    let negative = format!("{}t crease 2/1 0 1 -2\n", cube());
+    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "-o", o], &negative, "sharpness");
+    assert!(!out.exists());
+}
+
+/// `--at FACE,U,V` prints the exact limit: the cube's face centre at 68/81 with its
+/// partials (a regular point), its corner (±½, ±½, ±½) without (an extraordinary vertex).
+#[test]
+fn at_evaluates_the_limit_exactly() {
+    let o =
+        run(&["subdivide-surface", "-", "--scheme", "catmull-clark", "--at", "1,0.5,0.5", "--at", "1,0,0"], &cube());
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let v: serde_json::Value = serde_json::from_str(&o.stdout).unwrap();
+    let z = v[0]["position"][2].as_f64().unwrap();
+    assert!((z - 68.0 / 81.0).abs() < 1e-15, "{z}");
+    assert!((v[0]["normal"][2].as_f64().unwrap() - 1.0).abs() < 1e-15);
+    assert!(v[0]["partials"]["du"].is_array());
+    assert!(v[1]["partials"].is_null());
+    for c in 0..3 {
+        assert!((v[1]["position"][c].as_f64().unwrap().abs() - 0.5).abs() < 1e-15);
+    }
+    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "--at", "1,0.5"], &cube(), "FACE,U,V");
+    assert_bad(
+        &["subdivide-surface", "-", "--scheme", "catmull-clark", "--at", "6,0.5,0.5"],
+        &cube(),
+        "6 does not exist",
+    );
+    assert_bad(
+        &["subdivide-surface", "-", "--scheme", "loop", "--triangulate", "--at", "0,0.8,0.8"],
+        &cube(),
+        "outside",
+    );
+    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark"], &cube(), "-o");
+}

@@ -1,0 +1,175 @@
+//! Regular patches: where a face and its 1-ring are regular, the limit surface on the
+//! face is a polynomial patch of fixed control points.
+//!
+//! - Catmull–Clark: a quad whose four corners are smooth of valence 4 is the uniform
+//!   bicubic B-spline patch of its 4×4 neighbourhood (Catmull and Clark 1978). Along an
+//!   infinitely sharp edge or boundary the same holds with the row beyond the edge
+//!   replaced by phantom points 2pᵢ − qᵢ (the reflection through the edge row), which
+//!   reproduces the crease rules (1, 6, 1)/8 and (1, 1)/2; a corner vertex between two
+//!   sharp edges of the face takes both reflections. This is the construction of
+//!   OpenSubdiv's regular boundary patches.
+//! - Loop: a triangle whose three corners are smooth of valence 6 is the quartic
+//!   three-direction box-spline patch of its 12 neighbours (Stam 1998), see
+//!   [`super::box_spline`].
+
+use super::cage::Cage;
+use super::creases::{VertexRule, is_boundary_corner, rule_for};
+use super::topology::{NONE, Topology};
+use crate::Point;
+
+/// Sharpness class of an edge: Some(false) smooth, Some(true) infinitely sharp or
+/// boundary, None semi-sharp.
+fn class(topo: &Topology, e: u32) -> Option<bool> {
+    let s = topo.edge_sharpness(e);
+    if s == 0.0 {
+        Some(false)
+    } else if s.is_infinite() {
+        Some(true)
+    } else {
+        None
+    }
+}
+
+/// The 4×4 B-spline control grid (first index along u) of quad face f if it is regular,
+/// with c₀ at grid (1, 1), c₁ at (2, 1), c₂ at (2, 2), c₃ at (1, 2).
+pub fn catmull_clark_grid(cage: &Cage, topo: &Topology, f: u32) -> Option<[[Point<3>; 4]; 4]> {
+    if topo.face_len(f) != 4 {
+        return None;
+    }
+    let h0 = topo.face_start(f);
+    let hs = [h0, h0 + 1, h0 + 2, h0 + 3];
+    let mut sharp = [false; 4];
+    for k in 0..4 {
+        sharp[k] = class(topo, topo.he_edge[hs[k] as usize])?;
+    }
+    let quad = |h: u32| h != NONE && topo.face_len(topo.he_face[h as usize]) == 4;
+    for k in 0..4 {
+        let c = topo.origin(hs[k]);
+        let mut n_sharp = 0;
+        for (e, _) in topo.vertex_edges(c) {
+            if class(topo, e)? {
+                n_sharp += 1;
+            }
+        }
+        let (a, b) = (sharp[k], sharp[(k + 3) % 4]);
+        match rule_for(n_sharp, is_boundary_corner(topo, c, cage.boundary)) {
+            VertexRule::Smooth => {
+                if n_sharp != 0 || topo.outgoing(c).len() != 4 || !topo.outgoing(c).iter().all(|&h| quad(h)) {
+                    return None;
+                }
+            }
+            VertexRule::Crease => {
+                if a == b {
+                    return None;
+                }
+                if a {
+                    // C and the face across h_{k−1}, then the crease goes on.
+                    let t = topo.twin[hs[(k + 3) % 4] as usize];
+                    if !quad(t) || !class(topo, topo.he_edge[topo.prev(t) as usize])? {
+                        return None;
+                    }
+                } else {
+                    let t = topo.twin[hs[k] as usize];
+                    if !quad(t) || !class(topo, topo.he_edge[topo.next(t) as usize])? {
+                        return None;
+                    }
+                }
+            }
+            VertexRule::Corner => {
+                if !(a && b) {
+                    return None;
+                }
+            }
+        }
+    }
+    const P: [(i32, i32); 4] = [(1, 1), (2, 1), (2, 2), (1, 2)];
+    const N: [(i32, i32); 4] = [(0, -1), (1, 0), (0, 1), (-1, 0)];
+    let add = |a: (i32, i32), b: (i32, i32)| (a.0 + b.0, a.1 + b.1);
+    let sub = |a: (i32, i32), b: (i32, i32)| (a.0 - b.0, a.1 - b.1);
+    let mut g = [[Point::<3>::zeros(); 4]; 4];
+    let vs = &cage.vertices;
+    let set = |g: &mut [[Point<3>; 4]; 4], at: (i32, i32), p: Point<3>| g[at.0 as usize][at.1 as usize] = p;
+    let get = |g: &[[Point<3>; 4]; 4], at: (i32, i32)| g[at.0 as usize][at.1 as usize];
+    for k in 0..4 {
+        set(&mut g, P[k], vs[topo.origin(hs[k]) as usize]);
+    }
+    for k in 0..4 {
+        if !sharp[k] {
+            let t = topo.twin[hs[k] as usize];
+            set(&mut g, add(P[k], N[k]), vs[topo.dest(topo.next(t)) as usize]);
+            set(&mut g, add(P[(k + 1) % 4], N[k]), vs[topo.dest(topo.next(topo.next(t))) as usize]);
+        }
+    }
+    for k in 0..4 {
+        if !sharp[k] && !sharp[(k + 3) % 4] {
+            let t = topo.twin[hs[k] as usize];
+            let s = topo.twin[topo.next(t) as usize];
+            set(&mut g, add(add(P[k], N[k]), N[(k + 3) % 4]), vs[topo.dest(topo.next(topo.next(s))) as usize]);
+        }
+    }
+    for k in 0..4 {
+        if sharp[k] {
+            for c in [P[k], P[(k + 1) % 4]] {
+                let p = get(&g, c) * 2.0 - get(&g, sub(c, N[k]));
+                set(&mut g, add(c, N[k]), p);
+            }
+        }
+    }
+    for k in 0..4 {
+        let (nk, nl) = (N[k], N[(k + 3) % 4]);
+        let q = add(add(P[k], nk), nl);
+        if sharp[k] {
+            let p = get(&g, sub(q, nk)) * 2.0 - get(&g, sub(sub(q, nk), nk));
+            set(&mut g, q, p);
+        } else if sharp[(k + 3) % 4] {
+            let p = get(&g, sub(q, nl)) * 2.0 - get(&g, sub(sub(q, nl), nl));
+            set(&mut g, q, p);
+        }
+    }
+    Some(g)
+}
+
+/// The uniform cubic B-spline basis on [0, 1] and its first two derivatives:
+/// B₀ = (1 − t)³/6, B₁ = (3t³ − 6t² + 4)/6, B₂ = (−3t³ + 3t² + 3t + 1)/6, B₃ = t³/6.
+pub fn cubic_bspline_basis(t: f64) -> [[f64; 4]; 3] {
+    let s = 1.0 - t;
+    [
+        [
+            s * s * s / 6.0,
+            (3.0 * t * t * t - 6.0 * t * t + 4.0) / 6.0,
+            (-3.0 * t * t * t + 3.0 * t * t + 3.0 * t + 1.0) / 6.0,
+            t * t * t / 6.0,
+        ],
+        [-s * s / 2.0, 1.5 * t * t - 2.0 * t, -1.5 * t * t + t + 0.5, t * t / 2.0],
+        [s, 3.0 * t - 2.0, 1.0 - 3.0 * t, t],
+    ]
+}
+
+/// The 12 control points of regular triangle f (Loop): its corners c₀, c₁, c₂, then for
+/// each corner k the three neighbours of cₖ outside the face that follow, counter-clockwise,
+/// the edge to cₖ₋₁ (the third of these is also the first of corner k + 1's... see the
+/// module doc of [`super::box_spline`]).
+pub fn loop_points(topo: &Topology, f: u32) -> Option<[u32; 12]> {
+    if topo.face_len(f) != 3 {
+        return None;
+    }
+    let h0 = topo.face_start(f);
+    let mut r = [0u32; 12];
+    for k in 0..3u32 {
+        let h = h0 + k;
+        let c = topo.origin(h);
+        let out = topo.outgoing(c);
+        if topo.vertex_boundary[c as usize] || out.len() != 6 {
+            return None;
+        }
+        if topo.vertex_edges(c).iter().any(|&(e, _)| topo.sharpness[e as usize] != 0.0) {
+            return None;
+        }
+        let i = out.iter().position(|&x| x == h)?;
+        r[k as usize] = c;
+        for m in 0..3 {
+            r[3 + 3 * k as usize + m] = topo.dest(out[(i + 2 + m) % 6]);
+        }
+    }
+    Some(r)
+}
