@@ -22,6 +22,7 @@ mod json_value;
 mod knot_ops;
 mod mesh;
 mod render;
+mod subdivision;
 mod surface;
 mod surface_kinds;
 mod travel;
@@ -45,6 +46,7 @@ fn _splinekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<documents::PyScene>()?;
     m.add_class::<fitting::FitReport>()?;
     m.add_class::<mesh::PyMesh>()?;
+    m.add_class::<subdivision::PySubdivisionSurface>()?;
     m.add_function(wrap_pyfunction!(fitting::fit, m)?)?;
     m.add_function(wrap_pyfunction!(fitting::interpolate, m)?)?;
     m.add_function(wrap_pyfunction!(documents::load, m)?)?;

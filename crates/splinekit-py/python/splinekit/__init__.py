@@ -1,7 +1,8 @@
 """splinekit: curves and surfaces from numpy.
 
 Bézier, rational Bézier, B-spline, NURBS, Hermite and Catmull–Rom curves, B-spline,
-NURBS and Bézier surfaces, least-squares fitting and interpolation, and every shape and
+NURBS and Bézier surfaces, Catmull–Clark, Loop and bilinear subdivision surfaces,
+least-squares fitting and interpolation, and every shape and
 scene document of the ``splinekit`` command line (docs/format.md), evaluated by the
 splinekit kernel (Rust). Arrays in, float64 C-contiguous arrays out; bad input raises
 ``ValueError`` with the command line's one-line message.
@@ -22,6 +23,7 @@ from ._splinekit import (
     NURBSSurface,
     RationalBezier,
     Scene,
+    SubdivisionSurface,
     Surface,
     evaluate_many,
     fit,
@@ -46,6 +48,7 @@ __all__ = [
     "NURBSSurface",
     "RationalBezier",
     "Scene",
+    "SubdivisionSurface",
     "Surface",
     "bfunction",
     "evaluate_many",
