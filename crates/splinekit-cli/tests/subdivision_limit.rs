@@ -205,3 +205,33 @@ fn at_evaluates_the_limit_exactly() {
     );
     assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark"], &cube(), "-o");
 }
+
+/// `-o OUT.step`: the cube's 8 extraordinary vertices leave, after 3 levels, 2 × 72 exact
+/// bicubic patches (regular faces of levels 2 and 3) and 24 bilinear ones (the faces at
+/// the extraordinary vertices); Loop and --steps 0 are refused.
+#[test]
+fn step_export_writes_bicubic_patches() {
+    let dir = temp_dir("step");
+    let out = dir.join("cube.step");
+    let o = run(
+        &["subdivide-surface", "-", "--scheme", "catmull-clark", "--steps", "3", "-o", out.to_str().unwrap()],
+        &cube(),
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(text.starts_with("ISO-10303-21;"), "{}", &text[..40]);
+    let degrees = |d: &str| {
+        text.lines()
+            .filter(|l| l.contains("B_SPLINE_SURFACE_WITH_KNOTS(") && l.contains(&format!(")',{d},{d},")))
+            .count()
+    };
+    assert_eq!((degrees("3"), degrees("1")), (144, 24));
+    let step = out.to_str().unwrap();
+    assert_bad(&["subdivide-surface", "-", "--scheme", "loop", "--triangulate", "-o", step], &cube(), "not loop");
+    assert_bad(
+        &["subdivide-surface", "-", "--scheme", "catmull-clark", "--steps", "0", "-o", step],
+        &cube(),
+        "at least 1",
+    );
+    assert_bad(&["subdivide-surface", "-", "--scheme", "doo-sabin", "-o", step], &cube(), "not doo-sabin");
+}

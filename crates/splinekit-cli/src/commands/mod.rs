@@ -13,5 +13,6 @@ pub mod render;
 pub mod section;
 pub mod subdivide;
 pub mod subdivide_surface;
+pub mod subdivide_surface_step;
 pub mod tessellate;
 pub mod view;

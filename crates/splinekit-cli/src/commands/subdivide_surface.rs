@@ -58,8 +58,10 @@ pub struct SubdivideSurfaceArgs {
     /// vertex). Catmull–Clark, Loop and bilinear; the cage as read, `--steps` not applied.
     #[arg(long, value_name = "FACE,U,V")]
     pub at: Vec<String>,
-    /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals);
-    /// with --at, the JSON file (default standard output).
+    /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals),
+    /// .step (Catmull–Clark limit surface: exact bicubic patches on regular faces, faces at
+    /// extraordinary vertices subdivided --steps times, the rest bilinear through limit
+    /// points); with --at, the JSON file (default standard output).
     #[arg(short, long)]
     pub output: Option<String>,
 }
@@ -118,8 +120,8 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         (None, true) => bail!("-o: an output file is needed (or --at FACE,U,V to evaluate)"),
     };
     let ext = output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
-    if at.is_empty() && !matches!(ext.as_str(), "obj" | "stl" | "ply" | "gltf" | "glb") {
-        bail!("-o: writes .obj, .stl, .ply, .gltf or .glb, not '{output}'");
+    if at.is_empty() && !matches!(ext.as_str(), "obj" | "stl" | "ply" | "gltf" | "glb" | "step") {
+        bail!("-o: writes .obj, .stl, .ply, .gltf, .glb or .step, not '{output}'");
     }
     let steps = super::eval::parse_count("--steps", &args.steps, 10)?;
     let text = read_text(&args.mesh, "mesh")?;
@@ -141,6 +143,9 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         Scheme::DooSabin => {
             if !at.is_empty() {
                 bail!("--at: Doo–Sabin has no exact evaluation here; use catmull-clark, loop or bilinear");
+            }
+            if ext == "step" {
+                bail!("-o: STEP export is for catmull-clark (exact bicubic patches), not doo-sabin");
             }
             if args.limit {
                 bail!("--limit: Doo–Sabin has no limit masks here; use catmull-clark, loop or bilinear");
@@ -167,6 +172,9 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
             samples.push(sample_json(&s));
         }
         return crate::output::write_json(&serde_json::Value::Array(samples), args.output.as_deref());
+    }
+    if ext == "step" {
+        return write_step(&surface, steps, &name, &output);
     }
     let result = surface.subdivide(steps).map_err(|e| anyhow!("mesh: {e}"))?;
     if args.limit {
@@ -265,6 +273,26 @@ impl LimitMesh {
         }
         t
     }
+}
+
+/// The limit surface as STEP: one Bézier surface per patch of
+/// [`super::subdivide_surface_step::limit_patches`].
+fn write_step(surface: &SubdivisionSurface, depth: usize, name: &str, path: &str) -> Result<()> {
+    use super::subdivide_surface_step::{limit_patches, patches_document};
+    if surface.scheme() != KernelScheme::CatmullClark {
+        bail!("-o: STEP export is for catmull-clark (exact bicubic patches), not {}", surface.scheme().name());
+    }
+    if depth == 0 {
+        bail!("--steps: STEP export subdivides the faces at extraordinary vertices --steps times, at least 1, got 0");
+    }
+    let patches = limit_patches(surface, depth).map_err(|e| anyhow!("mesh: {e}"))?;
+    let doc =
+        splinekit_scene::SceneDocument::from_value(patches_document(&patches)).map_err(|e| anyhow!("mesh: {e}"))?;
+    let header = splinekit_step::part21::writer::HeaderInfo { name: name.to_string(), ..Default::default() };
+    let (text, _) =
+        splinekit_step::documents::export_document(&splinekit_scene::SceneOrShape::Scene(doc), name, 1e-6, &header)
+            .map_err(|e| anyhow!("{path}: {e}"))?;
+    crate::output::write_bytes(text.as_bytes(), Some(path))
 }
 
 fn write(out: &PolygonMesh, name: &str, ext: &str, path: &str) -> Result<()> {
