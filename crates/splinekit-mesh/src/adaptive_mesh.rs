@@ -10,24 +10,13 @@ use splinekit::surface::{Surface, unit_normal};
 use splinekit::{Error, Point, Result};
 
 use crate::boundary_gluing::{Gluing, Node};
-use crate::surface_mesh::{MAX_VERTICES, MeshOptions, lattice_param, to3};
+pub use crate::mesh_options::AdaptiveTolerance;
+use crate::mesh_options::{MAX_VERTICES, MeshOptions, lattice_param, to3};
 use crate::triangle_mesh::{TriangleMesh, norm, sub};
 
 /// Levels below the initial grid at which [`adaptive_with_limit`] probes the surface to
 /// estimate the size of the mesh before refining (8 × 8 base cells make a 32 × 32 probe).
 const PROBE_LEVELS: u32 = 2;
-
-/// Tolerances of the adaptive mesh.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct AdaptiveTolerance {
-    /// Largest distance of the surface from a cell's flat approximation (at the cell centre
-    /// and edge midpoints).
-    pub chord_height: f64,
-    /// Largest angle in radians between the normals at a cell's corners and centre.
-    pub normal_angle: f64,
-    /// Deepest quad-tree level below the initial grid.
-    pub max_depth: u32,
-}
 
 /// An adaptive mesh: an initial grid of `base` = (n_u, n_v) cells, each split in four while
 /// it is farther than the chord height from flat or its normals turn more than the angle

@@ -18,7 +18,7 @@ use splinekit::Point;
 use splinekit::curve::Interval;
 use splinekit::surface::{Surface, unit_normal};
 
-use crate::surface_mesh::to3;
+use crate::mesh_options::to3;
 use crate::triangle_mesh::norm;
 
 /// Samples along each side used to decide how it is glued.

@@ -11,6 +11,7 @@ pub mod adaptive_mesh;
 pub mod boundary_gluing;
 pub mod export;
 mod mesh_cleanup;
+pub mod mesh_options;
 pub mod polyline;
 pub mod subdivision_surface;
 pub mod surface_mesh;

@@ -11,44 +11,15 @@
 //! loops as constraints ([`crate::trimmed_mesh`]); adaptive meshes are in
 //! [`crate::adaptive_mesh`].
 
-use splinekit::curve::Interval;
 use splinekit::surface::Surface;
 use splinekit::{Error, Point, Result};
 
 use crate::boundary_gluing::{Gluing, Node};
 use crate::triangle_mesh::TriangleMesh;
 
-pub use crate::adaptive_mesh::{AdaptiveTolerance, adaptive, adaptive_with_limit};
-
-/// Most vertices a surface mesh may have.
-pub const MAX_VERTICES: usize = 20_000_000;
-
-/// The first three coordinates of a point (missing ones 0).
-pub fn to3<const D: usize>(p: &Point<D>) -> [f64; 3] {
-    let mut q = [0.0; 3];
-    for (k, v) in q.iter_mut().enumerate().take(D.min(3)) {
-        *v = p[k];
-    }
-    q
-}
-
-/// Options for surface meshes.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MeshOptions {
-    /// Store normalised (u, v) per vertex (duplicating seam vertices of closed surfaces).
-    pub uv: bool,
-}
-
-impl Default for MeshOptions {
-    fn default() -> Self {
-        MeshOptions { uv: true }
-    }
-}
-
-/// The parameter of lattice point `k` of `n` cells over `d` (the ends exactly).
-pub(crate) fn lattice_param(d: Interval, k: i64, n: i64) -> f64 {
-    if k == n { d.end } else { d.lerp(k as f64 / n as f64) }
-}
+pub use crate::adaptive_mesh::{adaptive, adaptive_with_limit};
+use crate::mesh_options::lattice_param;
+pub use crate::mesh_options::{AdaptiveTolerance, MAX_VERTICES, MeshOptions, to3};
 
 /// The regular mesh with `nu` × `nv` cells (two triangles each, one where a cell touches a
 /// pole).

@@ -11,9 +11,8 @@ use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 use splinekit::surface::{Surface, TrimLoops, unit_normal};
 use splinekit::{Error, Point, Result};
 
-use crate::adaptive_mesh::AdaptiveTolerance;
 use crate::boundary_gluing::{Gluing, Node};
-use crate::surface_mesh::{MeshOptions, lattice_param, to3};
+use crate::mesh_options::{AdaptiveTolerance, MeshOptions, lattice_param, to3};
 use crate::triangle_mesh::{TriangleMesh, cross, norm, sub};
 
 type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;

@@ -5,6 +5,7 @@
 
 use pyo3::prelude::*;
 use pyo3::types::PyList;
+use splinekit::curve::bezier::bezier_knots;
 use splinekit::curve::{BSplineCurve, BezierCurve, NurbsCurve, RationalBezierCurve};
 use splinekit_scene::curves::{BezierDoc, RationalBezierDoc};
 use splinekit_scene::points::{from_points, to_points};
@@ -26,19 +27,24 @@ enum Spline<const D: usize> {
 }
 
 fn spline<const D: usize>(doc: &CurveDocument) -> PyResult<Spline<D>> {
-    let clamped = |p: usize| [vec![0.0; p + 1], vec![1.0; p + 1]].concat();
     Ok(match doc {
         CurveDocument::Bspline(d) => Spline::Polynomial(d.curve::<D>().or_value_error()?),
         CurveDocument::Nurbs(d) => Spline::Rational(d.curve::<D>().or_value_error()?),
         CurveDocument::Bezier(d) => {
             let b = BezierCurve::<D>::new(to_points(&d.control_points)).or_value_error()?;
             Spline::Polynomial(
-                BSplineCurve::new(b.degree(), clamped(b.degree()), b.control_points().to_vec()).or_value_error()?,
+                BSplineCurve::new(b.degree(), bezier_knots(b.degree()), b.control_points().to_vec())
+                    .or_value_error()?,
             )
         }
         CurveDocument::RationalBezier(d) => {
             let b = RationalBezierCurve::<D>::new(to_points(&d.control_points), d.weights.clone()).or_value_error()?;
-            let n = NurbsCurve::new(b.degree(), clamped(b.degree()), b.control_points().to_vec(), b.weights().to_vec());
+            let n = NurbsCurve::new(
+                b.degree(),
+                bezier_knots(b.degree()),
+                b.control_points().to_vec(),
+                b.weights().to_vec(),
+            );
             Spline::Rational(n.or_value_error()?)
         }
         other => {

@@ -1,6 +1,7 @@
 //! Refinement of spline documents: knot insertion, degree elevation, knot removal. The
 //! result is a document of the same curve.
 
+use splinekit::curve::bezier::bezier_knots;
 use splinekit::curve::{BSplineCurve, BezierCurve, NurbsCurve, RationalBezierCurve};
 
 use crate::curves::{BSplineDoc, BezierDoc, CurveDocument, NurbsDoc, RationalBezierDoc};
@@ -161,9 +162,7 @@ fn refine_in<const D: usize>(doc: &CurveDocument, r: &Refinement) -> Result<Refi
         CurveDocument::RationalBezier(d) => {
             let b = RationalBezierCurve::new(to_points::<D>(&d.control_points), d.weights.clone())?;
             let p = b.degree();
-            let mut knots = vec![0.0; p + 1];
-            knots.extend(vec![1.0; p + 1]);
-            let n = NurbsCurve::new(p, knots, b.control_points().to_vec(), b.weights().to_vec())?;
+            let n = NurbsCurve::new(p, bezier_knots(p), b.control_points().to_vec(), b.weights().to_vec())?;
             let out = refine_nurbs(n, r)?;
             match (r, out.document) {
                 // A single elevated segment is still one rational Bézier curve.

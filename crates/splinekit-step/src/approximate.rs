@@ -19,7 +19,7 @@
 use std::collections::HashMap;
 
 use splinekit::Point;
-use splinekit::basis::Side;
+use splinekit::basis::{Side, binomial};
 use splinekit::curve::{BSplineCurve, Curve};
 use splinekit::surface::{BSplineSurface, Surface};
 
@@ -54,10 +54,6 @@ pub struct Fitted<T> {
     pub spline: T,
     /// max |spline(t) − model(t)| as measured.
     pub max_deviation: f64,
-}
-
-fn binomial(n: usize, k: usize) -> f64 {
-    (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
 }
 
 /// T[i][j] = C(i, j)/C(m, j) · h^j / j!: Bézier points from Taylor derivatives at the start.

@@ -14,6 +14,7 @@
 
 use splinekit::Point;
 use splinekit::basis::Side;
+use splinekit::curve::bezier::bezier_knots;
 use splinekit::curve::{Curve as KernelCurve, Interval};
 use splinekit::surface::Surface as KernelSurface;
 use splinekit_scene::bfunctions::BFunctionDoc;
@@ -219,7 +220,6 @@ pub fn export_curve(doc: &CurveDocument, name: &str, relative_tolerance: f64) ->
         map: ParamMap::IDENTITY,
         domain,
     };
-    let clamped_bezier = |n: usize| [vec![0.0; n], vec![1.0; n]].concat();
     Ok(match doc {
         CurveDocument::Bspline(d) => {
             exact(Curve::Spline(spline_curve(d.degree, &d.knots, &d.control_points, None, d.periodic)?))
@@ -229,11 +229,11 @@ pub fn export_curve(doc: &CurveDocument, name: &str, relative_tolerance: f64) ->
         }
         CurveDocument::Bezier(d) => {
             let n = d.control_points.len();
-            exact(Curve::Spline(spline_curve(n - 1, &clamped_bezier(n), &d.control_points, None, false)?))
+            exact(Curve::Spline(spline_curve(n - 1, &bezier_knots(n - 1), &d.control_points, None, false)?))
         }
         CurveDocument::RationalBezier(d) => {
             let n = d.control_points.len();
-            exact(Curve::Spline(spline_curve(n - 1, &clamped_bezier(n), &d.control_points, Some(&d.weights), false)?))
+            exact(Curve::Spline(spline_curve(n - 1, &bezier_knots(n - 1), &d.control_points, Some(&d.weights), false)?))
         }
         CurveDocument::Line(d) => {
             let (from, to) = (p3(&d.from)?, p3(&d.to)?);
@@ -342,7 +342,6 @@ fn profile(doc: &CurveDocument, relative_tolerance: f64) -> Result<(Curve, Form,
 /// its parameters; `None` for the kinds without one of their own.
 fn elementary_surface(doc: &SurfaceDocument) -> Result<Option<(Surface, ParamMap)>> {
     let id = ParamMap::IDENTITY;
-    let clamped_bezier = |n: usize| [vec![0.0; n], vec![1.0; n]].concat();
     Ok(Some(match doc {
         SurfaceDocument::BsplineSurface(d) => {
             let degrees = (d.degree_u, d.degree_v);
@@ -358,7 +357,7 @@ fn elementary_surface(doc: &SurfaceDocument) -> Result<Option<(Surface, ParamMap
         }
         SurfaceDocument::BezierSurface(d) => {
             let (nu, nv) = (d.control_points.len(), d.control_points.first().map_or(0, Vec::len));
-            let (ku, kv) = (clamped_bezier(nu), clamped_bezier(nv));
+            let (ku, kv) = (bezier_knots(nu - 1), bezier_knots(nv - 1));
             let net = spline_surface((nu - 1, nv - 1), &ku, &kv, &d.control_points, None, (false, false))?;
             (Surface::Spline(net), id)
         }

@@ -18,6 +18,13 @@ pub struct BezierCurve<const D: usize> {
     control_points: Vec<Point<D>>,
 }
 
+/// The knots of a Bézier curve of degree p as a clamped B-spline over [0, 1]: p + 1 zeros
+/// then p + 1 ones. A Bézier curve (rational or not, or each direction of a Bézier
+/// surface) is the one-span B-spline (NURBS) on them with the same control points.
+pub fn bezier_knots(degree: usize) -> Vec<f64> {
+    [vec![0.0; degree + 1], vec![1.0; degree + 1]].concat()
+}
+
 impl<const D: usize> BezierCurve<D> {
     /// A Bézier curve through its control points (at least one).
     ///

@@ -108,7 +108,7 @@ impl<'c, C: ?Sized> ArcLengthTable<'c, C> {
             let speed = self.curve.derivative(t, 1).norm();
             let newton = t - f / speed;
             t = if speed > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
-            if hi - lo <= 4.0 * f64::EPSILON * t.abs().max(1.0) {
+            if hi - lo <= crate::query::newton::ROUNDING_STEP * t.abs().max(1.0) {
                 return Ok(t);
             }
         }

@@ -10,7 +10,7 @@
 use crate::Point;
 use crate::error::{Error, Result};
 use crate::fit::{Fit, FitOptions, fit};
-use crate::query::surface_intersection::IntersectionBranch;
+use crate::query::branch::IntersectionBranch;
 
 impl IntersectionBranch {
     /// A cubic B-spline within `tolerance` (> 0) of every point of the branch where the

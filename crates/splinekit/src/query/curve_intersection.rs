@@ -25,6 +25,7 @@ use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result};
 use crate::query::bounds::Aabb;
 use crate::query::curve_cover::{CurveCover, SearchPiece};
+use crate::query::newton::{self, Step, cap, settled_all};
 use crate::query::tangent_cone::TangentCone;
 
 /// Sine of the angle below which an intersection counts as a tangential contact.
@@ -39,9 +40,6 @@ pub const TANGENT_RESOLUTION: f64 = 1e-6;
 /// Overlapping stretches shorter than this fraction of the curves' size are tangential
 /// contacts.
 pub const MIN_OVERLAP: f64 = 1e-3;
-
-/// Gauss–Newton iterations for one intersection.
-const MAX_NEWTON_ITERATIONS: usize = 60;
 
 /// How two curves meet at an isolated point.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -243,12 +241,12 @@ impl<'c, const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized> Search<'c, 
     /// `contact` (pieces smaller than the tolerance, whose tangents may be parallel) the
     /// nearest pair of points is sought over the whole domains.
     fn newton(&mut self, ia: Interval, ib: Interval, contact: bool) {
-        let (mut s, mut t) = (ia.lerp(0.5), ib.lerp(0.5));
+        let start = [ia.lerp(0.5), ib.lerp(0.5)];
         // A contact is the nearest pair of points, which may lie outside the tiny pieces
         // that found it: search the whole domains, so that all of them find the same one.
-        let (ia, ib) = if contact { (self.a.domain(), self.b.domain()) } else { (ia, ib) };
+        let ranges = if contact { [self.a.domain(), self.b.domain()] } else { [ia, ib] };
         let (mut oa, mut ob) = ([Point::<D>::zeros(); 2], [Point::<D>::zeros(); 2]);
-        for _ in 0..MAX_NEWTON_ITERATIONS {
+        let [s, t] = newton::iterate(cap::CURVE_CURVE, start, |&[s, t]| {
             self.a.eval(s, &mut oa);
             self.b.eval(t, &mut ob);
             let f = oa[0] - ob[0];
@@ -258,18 +256,13 @@ impl<'c, const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized> Search<'c, 
             let (r1, r2) = (-da.dot(&f), -db.dot(&f));
             let det = m11 * m22 - m12 * m12;
             if det.is_nan() || det <= 1e-300 || det.is_infinite() {
-                break;
+                return Step::Stop;
             }
             let (ds, dt) = ((m22 * r1 - m12 * r2) / det, (m11 * r2 - m12 * r1) / det);
-            let (ns, nt) = (ia.clamp(s + ds), ib.clamp(t + dt));
-            let done = (ns - s).abs() <= 4.0 * f64::EPSILON * s.abs().max(ia.length())
-                && (nt - t).abs() <= 4.0 * f64::EPSILON * t.abs().max(ib.length());
-            s = ns;
-            t = nt;
-            if done {
-                break;
-            }
-        }
+            let next = [ranges[0].clamp(s + ds), ranges[1].clamp(t + dt)];
+            Step::To(next, settled_all(&[s, t], &next, &ranges))
+        })
+        .expect("Gauss–Newton on c_a = c_b never abandons");
         self.a.eval(s, &mut oa);
         self.b.eval(t, &mut ob);
         let gap = (oa[0] - ob[0]).norm();
@@ -294,8 +287,10 @@ impl<'c, const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized> Search<'c, 
         }
         let tol = self.tolerance;
         let far = (f64::NAN, f64::INFINITY);
-        let near_b = |p: &Point<D>| if box_b.distance_to(p) > tol { far } else { nearest_in(self.b, ib, p) };
-        let near_a = |p: &Point<D>| if box_a.distance_to(p) > tol { far } else { nearest_in(self.a, ia, p) };
+        let near_b =
+            |p: &Point<D>| if box_b.distance_to(p) > tol { far } else { newton::polish_on_curve(self.b, ib, p) };
+        let near_a =
+            |p: &Point<D>| if box_a.distance_to(p) > tol { far } else { newton::polish_on_curve(self.a, ia, p) };
         let samples_a: Vec<f64> = (0..=4).map(|k| ia.lerp(k as f64 / 4.0)).collect();
         let on_a: Vec<(f64, f64)> = [ib.start, ib.end].iter().map(|&t| near_a(&self.b.point(t))).collect();
         let (first, last) = (near_b(&self.a.point(ia.start)), near_b(&self.a.point(ia.end)));
@@ -393,35 +388,6 @@ impl<'c, const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized> Search<'c, 
 fn cover_size<const D: usize>(cover: &CurveCover<D>) -> f64 {
     let roots = &cover.nodes[..cover.roots];
     roots.iter().fold(roots[0].piece.bounds, |b, n| b.union(&n.piece.bounds)).diagonal()
-}
-
-/// The parameter in `range` of the point of `curve` nearest to `p`, and the distance:
-/// samples, then Newton steps on (c − p)·c′ clamped to the range.
-fn nearest_in<const D: usize, C: Curve<D> + ?Sized>(curve: &C, range: Interval, p: &Point<D>) -> (f64, f64) {
-    let mut t = (0..=8)
-        .map(|k| {
-            let t = range.lerp(k as f64 / 8.0);
-            (t, (curve.point(t) - p).norm())
-        })
-        .min_by(|x, y| x.1.total_cmp(&y.1))
-        .unwrap()
-        .0;
-    let mut o = [Point::<D>::zeros(); 3];
-    for _ in 0..30 {
-        curve.eval(t, &mut o);
-        let r = o[0] - p;
-        let h = o[1].norm_squared() + r.dot(&o[2]);
-        if h.is_nan() || h <= 0.0 {
-            break;
-        }
-        let next = range.clamp(t - r.dot(&o[1]) / h);
-        if (next - t).abs() <= 4.0 * f64::EPSILON * t.abs().max(range.length()) {
-            t = next;
-            break;
-        }
-        t = next;
-    }
-    (t, (curve.point(t) - p).norm())
 }
 
 /// |sin| of the angle between two vectors (Lagrange identity, any dimension); 0 when one

@@ -31,6 +31,7 @@ use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result};
 use crate::query::curve_cover::{CurveCover, SearchPiece};
 use crate::query::curve_intersection::{IntersectionKind, MIN_OVERLAP, TANGENT_RESOLUTION, TANGENT_SINE};
+use crate::query::newton::{self, Settle, Step, cap, settled_all};
 use crate::query::normal_cone::{normal_cone, transversal};
 use crate::query::project_curve::MIN_WIDTH;
 use crate::query::surface_cover::{SearchPatch, SurfaceCover};
@@ -40,9 +41,6 @@ use nalgebra::{Matrix3, Vector3};
 
 /// The most (piece, patch) pairs one intersection examines before it reports an error.
 pub const MAX_PAIRS: usize = 400_000;
-
-/// Newton iterations for one intersection.
-const MAX_NEWTON_ITERATIONS: usize = 40;
 
 /// A point where a curve meets a surface.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -197,30 +195,25 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
     /// point and returns true when the shapes meet within the tolerance there.
     fn newton(&mut self, (it, iu, iv): (Interval, Interval, Interval), contact: bool) -> bool {
         // From the pair's centre; a contact's steps may leave the pair (not the domains).
-        let mut x = Vector3::new(it.lerp(0.5), iu.lerp(0.5), iv.lerp(0.5));
-        let (it, iu, iv) = if contact {
-            (self.curve.domain(), self.surface.domain_u(), self.surface.domain_v())
+        let x0 = [it.lerp(0.5), iu.lerp(0.5), iv.lerp(0.5)];
+        let ranges = if contact {
+            [self.curve.domain(), self.surface.domain_u(), self.surface.domain_v()]
         } else {
-            (it, iu, iv)
+            [it, iu, iv]
         };
-        let mut jet = Jet::at(self.curve, self.surface, &x);
-        for _ in 0..MAX_NEWTON_ITERATIONS {
+        let x = newton::iterate(cap::CURVE_SURFACE, x0, |x| {
+            let jet = Jet::at(self.curve, self.surface, &Vector3::from(*x));
             let j = Matrix3::from_columns(&[jet.dc, -jet.su, -jet.sv]);
             let scale = j.amax().max(f64::MIN_POSITIVE);
             let Ok(step) = j.svd(true, true).solve(&(jet.c - jet.s), 1e-13 * scale) else {
-                break;
+                return Step::Stop;
             };
-            let next = Vector3::new(it.clamp(x[0] - step[0]), iu.clamp(x[1] - step[1]), iv.clamp(x[2] - step[2]));
-            let moved = (next - x).abs();
-            let done = moved[0] <= 4.0 * f64::EPSILON * x[0].abs().max(it.length())
-                && moved[1] <= 4.0 * f64::EPSILON * x[1].abs().max(iu.length())
-                && moved[2] <= 4.0 * f64::EPSILON * x[2].abs().max(iv.length());
-            x = next;
-            jet = Jet::at(self.curve, self.surface, &x);
-            if done {
-                break;
-            }
-        }
+            let next: [f64; 3] = std::array::from_fn(|k| ranges[k].clamp(x[k] - step[k]));
+            Step::To(next, settled_all(x, &next, &ranges))
+        })
+        .expect("Newton on c = S never abandons");
+        let x = Vector3::from(x);
+        let jet = Jet::at(self.curve, self.surface, &x);
         let gap = (jet.c - jet.s).norm();
         if gap.is_nan() || gap > self.tolerance {
             return false;
@@ -242,25 +235,9 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
     fn lies_in(&self, it: Interval, iu: Interval, iv: Interval) -> bool {
         [0.25, 0.5, 0.75].iter().all(|&s| {
             let p = self.curve.point(it.lerp(s));
-            let (mut u, mut v) = (iu.lerp(0.5), iv.lerp(0.5));
-            let mut o = [Point::<3>::zeros(); 4];
-            for _ in 0..MAX_NEWTON_ITERATIONS {
-                self.surface.eval_partials(u, v, 1, 1, &mut o);
-                let (r, su, sv) = (p - o[0], o[2], o[1]);
-                let (a, b, c) = (su.dot(&su), su.dot(&sv), sv.dot(&sv));
-                let det = a * c - b * b;
-                if !(det.is_finite() && det > 0.0) {
-                    break;
-                }
-                let (gu, gv) = (su.dot(&r), sv.dot(&r));
-                let next = (iu.clamp(u + (c * gu - b * gv) / det), iv.clamp(v + (a * gv - b * gu) / det));
-                let moved = (next.0 - u).abs() <= 4.0 * f64::EPSILON * u.abs().max(iu.length())
-                    && (next.1 - v).abs() <= 4.0 * f64::EPSILON * v.abs().max(iv.length());
-                (u, v) = next;
-                if moved {
-                    break;
-                }
-            }
+            let start = (iu.lerp(0.5), iv.lerp(0.5));
+            let ((u, v), _) =
+                newton::polish_on_surface(self.surface, &p, start, (iu, iv), cap::CURVE_SURFACE, Settle::Rounding);
             (self.surface.point(u, v) - p).norm() <= self.tolerance
         })
     }

@@ -13,6 +13,8 @@
 
 use crate::Point;
 use crate::curve::Interval;
+use crate::query::newton::{self, NEGLIGIBLE_STEP, QUADRATIC_STEP, Step, cap, scaled_small};
+pub use crate::query::surface_pair::{MarchPoint, Marcher};
 use crate::query::touching;
 use crate::surface::Surface;
 use nalgebra::{Matrix2, Matrix4, Vector2, Vector4};
@@ -27,25 +29,8 @@ pub const ALONG_BOUNDARY: f64 = 1e-3;
 /// How often one step may be halved before marching stops.
 pub const MAX_HALVINGS: usize = 40;
 
-/// Newton iterations of one correction.
-const MAX_NEWTON_ITERATIONS: usize = 20;
-
 /// Sine of the angle between the normals below which the surfaces count as tangent.
 pub const TANGENT_NORMAL_SINE: f64 = 1e-8;
-
-/// A point of the intersection curve: parameters on both surfaces, the point, the tangent.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MarchPoint {
-    /// (u_a, v_a, u_b, v_b).
-    pub x: [f64; 4],
-    /// S_a(u_a, v_a).
-    pub point: Point<3>,
-    /// Unit tangent N_a × N_b.
-    pub tangent: Point<3>,
-    /// The first partials there: (∂S_a/∂u, ∂S_a/∂v, ∂S_b/∂u, ∂S_b/∂v), which the next
-    /// step's predictor uses.
-    pub partials: [Point<3>; 4],
-}
 
 /// Which curve a march follows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -69,20 +54,6 @@ pub enum StepEnd {
     StepLimit,
 }
 
-/// The two surfaces, their domains and closedness, and the tolerances.
-pub struct Marcher<'s, A: ?Sized, B: ?Sized> {
-    /// First surface.
-    pub a: &'s A,
-    /// Second surface.
-    pub b: &'s B,
-    /// Distance within which S_a and S_b must agree at every point.
-    pub tolerance: f64,
-    /// Chord error allowed between the polyline and the curve.
-    pub chord: f64,
-    /// The longest step.
-    pub max_step: f64,
-}
-
 /// S, S_u, S_v of both surfaces.
 struct Frames {
     a: [Point<3>; 3],
@@ -90,25 +61,6 @@ struct Frames {
 }
 
 impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
-    /// The four parameters' domains and whether each is closed.
-    pub fn domains(&self) -> [(Interval, bool); 4] {
-        [
-            (self.a.domain_u(), self.a.is_closed_u()),
-            (self.a.domain_v(), self.a.is_closed_v()),
-            (self.b.domain_u(), self.b.is_closed_u()),
-            (self.b.domain_v(), self.b.is_closed_v()),
-        ]
-    }
-
-    /// x with closed parameters wrapped into their domains.
-    pub fn wrap(&self, x: [f64; 4]) -> [f64; 4] {
-        let d = self.domains();
-        std::array::from_fn(|k| {
-            let (i, closed) = d[k];
-            if closed && i.length() > 0.0 { i.start + (x[k] - i.start).rem_euclid(i.length()) } else { x[k] }
-        })
-    }
-
     fn frames(&self, x: &[f64; 4]) -> Frames {
         let (mut oa, mut ob) = ([Point::<3>::zeros(); 4], [Point::<3>::zeros(); 4]);
         self.a.eval_partials(x[0], x[1], 1, 1, &mut oa);
@@ -147,9 +99,9 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
         t: &Point<3>,
         hold: Option<(usize, f64)>,
     ) -> Option<([f64; 4], Frames)> {
-        let mut x = self.wrap(x);
+        let x = self.wrap(x);
         let mut f = self.frames(&x);
-        for _ in 0..MAX_NEWTON_ITERATIONS {
+        let x = newton::iterate(cap::MARCH, x, |x| {
             let g = f.a[0] - f.b[0];
             let mut j = Matrix4::<f64>::zeros();
             for r in 0..3 {
@@ -169,21 +121,19 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
                     (f.a[0] - q).dot(t)
                 }
             };
-            let step = j.lu().solve(&Vector4::new(g.x, g.y, g.z, last))?;
+            let Some(step) = j.lu().solve(&Vector4::new(g.x, g.y, g.z, last)) else {
+                return Step::Fail;
+            };
             let size = step.amax();
             if !size.is_finite() {
-                return None;
+                return Step::Fail;
             }
-            for k in 0..4 {
-                x[k] -= step[k];
-            }
-            x = self.wrap(x);
-            f = self.frames(&x);
-            let scale = 1.0 + x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-            if size <= 1e-14 * scale || (size <= 1e-8 * scale && (f.a[0] - f.b[0]).norm() <= self.tolerance) {
-                break;
-            }
-        }
+            let next = self.wrap(std::array::from_fn(|k| x[k] - step[k]));
+            f = self.frames(&next);
+            let done = scaled_small(size, &next, NEGLIGIBLE_STEP)
+                || (scaled_small(size, &next, QUADRATIC_STEP) && (f.a[0] - f.b[0]).norm() <= self.tolerance);
+            Step::To(next, done)
+        })?;
         ((f.a[0] - f.b[0]).norm() <= self.tolerance).then_some((x, f))
     }
 
@@ -192,36 +142,37 @@ impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Marcher<'_, A, B> {
     /// parameters are also clamped to their domains): the nearby point of the intersection
     /// curve, or `None` when the iteration leaves `within`, the Jacobian loses rank or the
     /// surfaces do not agree within the tolerance at the end.
-    pub fn converge(&self, mut x: [f64; 4], within: &[Interval; 4]) -> Option<[f64; 4]> {
+    pub fn converge(&self, x: [f64; 4], within: &[Interval; 4]) -> Option<[f64; 4]> {
         let d = self.domains();
-        for _ in 0..MAX_NEWTON_ITERATIONS {
-            let f = self.frames(&x);
+        let x = newton::iterate(cap::MARCH, x, |x| {
+            let f = self.frames(x);
             let g = f.a[0] - f.b[0];
             let cols = [f.a[1], f.a[2], -f.b[1], -f.b[2]];
             let mut jjt = nalgebra::Matrix3::<f64>::zeros();
             for c in &cols {
                 jjt += c * c.transpose();
             }
-            let y = jjt.cholesky()?.solve(&g);
+            let Some(y) = jjt.cholesky().map(|c| c.solve(&g)) else {
+                return Step::Fail;
+            };
+            let mut next = *x;
             let mut size = 0.0f64;
             for k in 0..4 {
                 let step = cols[k].dot(&y);
                 size = size.max(step.abs());
-                x[k] -= step;
-                if !(x[k] >= within[k].start && x[k] <= within[k].end) {
-                    return None;
+                next[k] -= step;
+                if !(next[k] >= within[k].start && next[k] <= within[k].end) {
+                    return Step::Fail;
                 }
                 if !d[k].1 {
-                    x[k] = d[k].0.clamp(x[k]);
+                    next[k] = d[k].0.clamp(next[k]);
                 }
             }
             if !size.is_finite() {
-                return None;
+                return Step::Fail;
             }
-            if size <= 1e-14 * (1.0 + x.iter().fold(0.0f64, |m, v| m.max(v.abs()))) {
-                break;
-            }
-        }
+            Step::To(next, scaled_small(size, &next, NEGLIGIBLE_STEP))
+        })?;
         let x = self.wrap(x);
         let f = self.frames(&x);
         ((f.a[0] - f.b[0]).norm() <= self.tolerance).then_some(x)

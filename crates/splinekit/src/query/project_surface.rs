@@ -33,6 +33,7 @@ use crate::error::Result;
 use crate::query::best_first::Ranked;
 use crate::query::bounds::Aabb;
 use crate::query::curve_cover::{CurveCover, ROUNDING};
+use crate::query::newton::{self, Step, cap, settled_all};
 use crate::query::project_curve::{CurveProjector, check_query};
 use crate::query::slope::{DUPLICATE_DISTANCE, ZERO_SLOPE, is_rounding_sized};
 use crate::query::surface_cover::{SearchPatch, SurfaceCover, SurfacePatch};
@@ -50,9 +51,6 @@ pub const DEGENERATE_WIDTH: f64 = 1.0 / 64.0;
 
 /// The most patches one query examines.
 pub const MAX_PATCHES: usize = 200_000;
-
-/// Newton iterations allowed for one stationary point.
-const MAX_NEWTON_ITERATIONS: usize = 100;
 
 /// The nearest point of a surface to a query point, or one local minimum of the distance.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -310,9 +308,9 @@ impl<'s, const D: usize, S: Surface<D> + ?Sized> SurfaceProjector<'s, D, S> {
     /// to the patch and halved until f decreases.
     fn newton(&self, p: &SurfacePatch<D>, q: &Point<D>) -> Stationary<D> {
         let (ru, rv) = (p.u(), p.v());
-        let (mut u, mut v) = (p.grid[4].u, p.grid[4].v);
         let f_at = |u: f64, v: f64| 0.5 * (self.surface.point(u, v) - q).norm_squared();
-        for _ in 0..MAX_NEWTON_ITERATIONS {
+        let ranges = [ru, rv];
+        let [u, v] = newton::iterate(cap::PROJECT_SURFACE, [p.grid[4].u, p.grid[4].v], |&[u, v]| {
             let local = self.second_order(u, v, q);
             let (a, b, c) = local.hessian;
             let det = a * c - b * b;
@@ -324,25 +322,17 @@ impl<'s, const D: usize, S: Surface<D> + ?Sized> SurfaceProjector<'s, D, S> {
                 (gu / scale, gv / scale)
             };
             let f0 = 0.5 * local.distance * local.distance;
-            let mut step = None;
-            for _ in 0..40 {
-                let (nu, nv) = (ru.clamp(u - du), rv.clamp(v - dv));
-                if f_at(nu, nv) <= f0 {
-                    step = Some((nu, nv));
-                    break;
+            for _ in 0..cap::LINE_SEARCH {
+                let next = [ru.clamp(u - du), rv.clamp(v - dv)];
+                if f_at(next[0], next[1]) <= f0 {
+                    return Step::To(next, settled_all(&[u, v], &next, &ranges));
                 }
                 du *= 0.5;
                 dv *= 0.5;
             }
-            let Some((nu, nv)) = step else { break };
-            let small = (nu - u).abs() <= 4.0 * f64::EPSILON * ru.length().max(u.abs())
-                && (nv - v).abs() <= 4.0 * f64::EPSILON * rv.length().max(v.abs());
-            u = nu;
-            v = nv;
-            if small {
-                break;
-            }
-        }
+            Step::Stop
+        })
+        .expect("projected Newton never abandons");
         let local = self.second_order(u, v, q);
         let found = NearestOnSurface::at(u, v, local.point, q);
         let zero = ZERO_SLOPE * (found.distance + local.point.amax()).max(f64::MIN_POSITIVE);

@@ -23,9 +23,11 @@
 
 use crate::Point;
 use crate::error::{Error, Result};
-use crate::query::bounds::Aabb;
-use crate::query::march::{Contact, MarchPoint, Marcher, StepEnd};
+pub use crate::query::branch::{EarlyStop, IntersectionBranch};
+use crate::query::branch::{near_polyline, segment_distance};
+use crate::query::march::{Contact, StepEnd};
 use crate::query::surface_cover::SurfaceCover;
+use crate::query::surface_pair::{MarchPoint, Marcher};
 use crate::query::surface_seeds::pair_seeds;
 use crate::surface::Surface;
 
@@ -34,35 +36,6 @@ pub const MAX_POINTS: usize = 200_000;
 
 /// The most branches one intersection reports.
 pub const MAX_BRANCHES: usize = 1000;
-
-/// Why a branch stopped before it closed or left through a boundary.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum EarlyStop {
-    /// The surfaces' normals became parallel (they touch).
-    Tangential,
-    /// No step down to the halving limit met the chord error.
-    StepLimit,
-    /// The branch reached [`MAX_POINTS`] points.
-    PointLimit,
-}
-
-/// One branch of the intersection curve: a polyline in 3-D and in both parameter planes.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct IntersectionBranch {
-    /// Points on both surfaces (within the tolerance), the chord error from the curve.
-    pub points: Vec<Point<3>>,
-    /// (u, v) on the first surface at each point.
-    pub params_a: Vec<[f64; 2]>,
-    /// (u, v) on the second surface at each point.
-    pub params_b: Vec<[f64; 2]>,
-    /// Whether the branch is a closed loop (its last point repeats the first).
-    pub closed: bool,
-    /// Why marching stopped early, in either direction, if it did.
-    pub early_stop: Option<EarlyStop>,
-    /// Whether the surfaces touch along the branch (their normals are parallel at every
-    /// point) rather than cross.
-    pub tangent: bool,
-}
 
 /// Every branch of the intersection curve of `a` and `b` (see the module documentation):
 /// points agree on both surfaces within `tolerance` (> 0), and the polylines are within
@@ -104,32 +77,6 @@ fn extent<S: Surface<3> + ?Sized>(s: &S) -> f64 {
     let pts: Vec<Point<3>> =
         (0..81).map(|k| s.point(du.lerp((k / 9) as f64 / 8.0), dv.lerp((k % 9) as f64 / 8.0))).collect();
     crate::query::bounds::Aabb::around(&pts, 0.0).diagonal()
-}
-
-/// Whether `q` lies within `reach` of a segment of the polyline (runs of 16 segments whose
-/// box is farther are skipped).
-pub(crate) fn near_polyline(points: &[Point<3>], q: &Point<3>, reach: f64) -> bool {
-    if points.len() == 1 {
-        return (points[0] - q).norm() <= reach;
-    }
-    let mut start = 0;
-    while start + 1 < points.len() {
-        let end = (start + 17).min(points.len());
-        let run = &points[start..end];
-        if Aabb::around(run, 0.0).distance_to(q) <= reach
-            && run.windows(2).any(|w| segment_distance(&w[0], &w[1], q) <= reach)
-        {
-            return true;
-        }
-        start = end - 1;
-    }
-    false
-}
-
-fn segment_distance(p: &Point<3>, r: &Point<3>, q: &Point<3>) -> f64 {
-    let d = r - p;
-    let s = if d.norm_squared() > 0.0 { ((q - p).dot(&d) / d.norm_squared()).clamp(0.0, 1.0) } else { 0.0 };
-    (p + d * s - q).norm()
 }
 
 /// The branch of the given contact through `seed`: forward, and backward unless it closed.

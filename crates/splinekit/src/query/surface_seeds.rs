@@ -37,10 +37,12 @@
 use crate::Point;
 use crate::curve::Interval;
 use crate::error::{Error, Result};
-use crate::query::march::{MarchPoint, Marcher};
+pub use crate::query::branch::coincidence;
+use crate::query::branch::{IntersectionBranch, near_polyline};
+use crate::query::newton::{self, NEGLIGIBLE_STEP, Settle, cap};
 use crate::query::normal_cone::normal_cone;
 use crate::query::surface_cover::{SearchPatch, SurfaceCover, SurfacePatch};
-use crate::query::surface_intersection::{IntersectionBranch, near_polyline};
+use crate::query::surface_pair::{MarchPoint, Marcher};
 use crate::query::tangent_cone::{TangentCone, angle};
 use crate::query::touching;
 use crate::surface::Surface;
@@ -104,34 +106,14 @@ where
     let (iu, iv) = (grown(b.u()), grown(b.v()));
     [4usize, 0, 2, 6, 8].iter().all(|&k| {
         let p = a.grid[k].point;
-        let (mut u, mut v) = (b.u().lerp(0.5), b.v().lerp(0.5));
-        let mut o = [Point::<3>::zeros(); 4];
-        for _ in 0..20 {
-            m.b.eval_partials(u, v, 1, 1, &mut o);
-            let (r, su, sv) = (p - o[0], o[2], o[1]);
-            let (e, f, g) = (su.dot(&su), su.dot(&sv), sv.dot(&sv));
-            let det = e * g - f * f;
-            if !(det.is_finite() && det > 0.0) {
-                return false;
-            }
-            let (gu, gv) = (su.dot(&r), sv.dot(&r));
-            let next = (iu.clamp(u + (g * gu - f * gv) / det), iv.clamp(v + (e * gv - f * gu) / det));
-            let still = (next.0 - u).abs() <= 1e-14 * (1.0 + u.abs()) && (next.1 - v).abs() <= 1e-14 * (1.0 + v.abs());
-            (u, v) = next;
-            if still {
-                break;
-            }
+        let start = (b.u().lerp(0.5), b.v().lerp(0.5));
+        let ((u, v), singular) =
+            newton::polish_on_surface(m.b, &p, start, (iu, iv), cap::SEED_POLISH, Settle::Relative(NEGLIGIBLE_STEP));
+        if singular {
+            return false;
         }
         (m.b.point(u, v) - p).norm() <= m.tolerance
     })
-}
-
-/// The error for surfaces that coincide over a region around (u, v) on the first.
-pub fn coincidence(u: f64, v: f64) -> Error {
-    Error::numerical(
-        "surface intersection",
-        format!("the surfaces coincide over a region (about ({u:.6}, {v:.6}) on the first)"),
-    )
 }
 
 /// The parameter box of a patch grown by its width on each side.

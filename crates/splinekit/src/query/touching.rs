@@ -29,8 +29,9 @@
 use crate::Point;
 use crate::curve::Interval;
 use crate::error::Result;
-use crate::query::march::{MarchPoint, Marcher};
-use crate::query::surface_seeds::coincidence;
+use crate::query::branch::coincidence;
+use crate::query::newton::{self, QUADRATIC_STEP, Step, cap, scaled_small};
+use crate::query::surface_pair::{MarchPoint, Marcher};
 use crate::surface::Surface;
 use nalgebra::{SMatrix, SVector};
 
@@ -39,9 +40,6 @@ pub const TOUCH_SINE: f64 = 1e-7;
 
 /// Singular values of the scaled Jacobian at most this fraction of the largest count as zero.
 pub const KERNEL: f64 = 1e-6;
-
-/// Gauss–Newton iterations of one search or correction.
-const MAX_ITERATIONS: usize = 30;
 
 /// S, S_u, S_v, S_uu, S_uv, S_vv at (u, v).
 fn frame<S: Surface<3> + ?Sized>(s: &S, u: f64, v: f64) -> [Point<3>; 6] {
@@ -230,8 +228,8 @@ fn iterate<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(
     let domains = m.domains();
     let wrap = |x: [f64; 4]| if within.is_some() { x } else { m.wrap(x) };
     x = wrap(x);
-    for _ in 0..MAX_ITERATIONS {
-        let sys = System::at(m, &x);
+    let x = newton::iterate(cap::TOUCHING, x, |x| {
+        let sys = System::at(m, x);
         let fifth = constraint.as_ref().map(|&Plane { q, t, hold }| match hold {
             Some((k, value)) => {
                 let mut row = [0.0; 4];
@@ -240,24 +238,25 @@ fn iterate<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(
             }
             None => ([sys.a[1].dot(t), sys.a[2].dot(t), 0.0, 0.0], (sys.a[0] - q).dot(t)),
         });
-        let d = step(&sys, fifth)?;
+        let Some(d) = step(&sys, fifth) else {
+            return Step::Fail;
+        };
+        let mut next = *x;
         let mut size = 0.0f64;
         for k in 0..4 {
-            x[k] -= d[k];
+            next[k] -= d[k];
             size = size.max(d[k].abs());
-            if within.is_some_and(|w| !(x[k] >= w[k].start && x[k] <= w[k].end)) {
-                return None;
+            if within.is_some_and(|w| !(next[k] >= w[k].start && next[k] <= w[k].end)) {
+                return Step::Fail;
             }
             if !domains[k].1 {
-                x[k] = domains[k].0.clamp(x[k]);
+                next[k] = domains[k].0.clamp(next[k]);
             }
         }
-        x = wrap(x);
+        let next = wrap(next);
         // Quadratic convergence: a step below 10⁻⁸ of the scale leaves an error of the
         // order of its square.
-        if size <= 1e-8 * (1.0 + x.iter().fold(0.0f64, |m, v| m.max(v.abs()))) {
-            break;
-        }
-    }
+        Step::To(next, scaled_small(size, &next, QUADRATIC_STEP))
+    })?;
     Some(m.wrap(x))
 }

@@ -445,7 +445,7 @@ fn polish<C: Curve<2> + ?Sized>(raw: &RawOffset<'_, C>, start: (f64, f64), dom: 
         let da = (f.x * j1.y - j1.x * f.y) / det;
         let db = (j0.x * f.y - f.x * j0.y) / det;
         (a, b) = (a - da, b - db);
-        if da.abs().max(db.abs()) <= 4.0 * f64::EPSILON * dom.length() {
+        if da.abs().max(db.abs()) <= crate::query::newton::ROUNDING_STEP * dom.length() {
             break;
         }
     }

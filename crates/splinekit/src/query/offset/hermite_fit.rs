@@ -26,18 +26,10 @@ use crate::curve::{BSplineCurve, Curve, HermiteCurve, Interval};
 use crate::error::{Error, Result};
 use crate::query::offset::check_resolvable;
 use crate::query::offset::raw_curve::{RawOffset, RawSample};
+pub use crate::query::offset::{MAX_PIECES, MAX_TOTAL_PIECES};
 
 /// The fewest pieces an interval is cut into.
 pub const MIN_PIECES: usize = 8;
-
-/// The most pieces one approximation may have, besides four per span of the curve.
-pub const MAX_PIECES: usize = 10_000;
-
-/// The most pieces all the approximations of one offset may have together (the whole raw
-/// offset, its arcs between cusps, the pairs of arcs next to each cusp and the kept
-/// stretches), so that an offset with many cusps cannot multiply the work of one
-/// approximation by their number.
-pub const MAX_TOTAL_PIECES: usize = 4 * MAX_PIECES;
 
 /// Pieces are not halved below this fraction of the interval.
 pub const MIN_WIDTH: f64 = 1e-12;

@@ -35,6 +35,15 @@ pub(crate) fn check_arguments(distance: f64, tolerance: f64) -> Result<()> {
 /// error measured is rounding.
 pub const MIN_RELATIVE_TOLERANCE: f64 = 1e-13;
 
+/// The most pieces one approximation may have, besides four per span of the curve.
+pub const MAX_PIECES: usize = 10_000;
+
+/// The most pieces all the approximations of one offset may have together (the whole raw
+/// offset, its arcs between cusps, the pairs of arcs next to each cusp and the kept
+/// stretches), so that an offset with many cusps cannot multiply the work of one
+/// approximation by their number.
+pub const MAX_TOTAL_PIECES: usize = 4 * MAX_PIECES;
+
 /// Refuses a tolerance below what double precision resolves on coordinates up to `scale`.
 pub(crate) fn check_resolvable(tolerance: f64, scale: f64) -> Result<()> {
     if tolerance < MIN_RELATIVE_TOLERANCE * scale || !scale.is_finite() {

@@ -39,15 +39,15 @@ pub struct RawOffset<'c, C: ?Sized> {
     pub distance: f64,
     /// Pieces its approximations may still use, all of them together (the whole offset,
     /// its arcs between cusps and its kept stretches): see
-    /// [`MAX_TOTAL_PIECES`](crate::query::offset::hermite_fit::MAX_TOTAL_PIECES).
+    /// [`MAX_TOTAL_PIECES`](crate::query::offset::MAX_TOTAL_PIECES).
     pub pieces_left: Cell<usize>,
 }
 
 impl<'c, C: ?Sized> RawOffset<'c, C> {
     /// The raw offset of `curve` at `distance`, its approximations allowed
-    /// [`MAX_TOTAL_PIECES`](crate::query::offset::hermite_fit::MAX_TOTAL_PIECES) pieces.
+    /// [`MAX_TOTAL_PIECES`](crate::query::offset::MAX_TOTAL_PIECES) pieces.
     pub fn new(curve: &'c C, distance: f64) -> Self {
-        RawOffset { curve, distance, pieces_left: Cell::new(crate::query::offset::hermite_fit::MAX_TOTAL_PIECES) }
+        RawOffset { curve, distance, pieces_left: Cell::new(crate::query::offset::MAX_TOTAL_PIECES) }
     }
 }
 
