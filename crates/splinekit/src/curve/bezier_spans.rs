@@ -14,7 +14,7 @@ use crate::curve::span_kernel::ReciprocalKnotDifferences;
 /// Highest degree served by the Bézier-span path.
 pub const MAX_DEGREE: usize = 7;
 
-const BINOMIAL: [[f64; 8]; 8] = {
+pub(crate) const BINOMIAL: [[f64; 8]; 8] = {
     let mut t = [[0.0; 8]; 8];
     let mut n = 0;
     while n < 8 {
@@ -255,7 +255,7 @@ impl<const W: usize, T: Coefficient> SpanCursor<W, T> {
 
 /// The powers uᵏ and (1 − u)ᵏ, k < W.
 #[inline(always)]
-fn powers<const W: usize>(u: f64) -> ([f64; W], [f64; W]) {
+pub(crate) fn powers<const W: usize>(u: f64) -> ([f64; W], [f64; W]) {
     let s = 1.0 - u;
     let mut up = [1.0f64; W];
     let mut sp = [1.0f64; W];
@@ -268,7 +268,7 @@ fn powers<const W: usize>(u: f64) -> ([f64; W], [f64; W]) {
 
 /// The Bernstein sum Σ_{i ≤ q} C(q,i) uⁱ (1−u)^{q−i} b_i from the powers of u and 1 − u.
 #[inline(always)]
-fn bernstein<const W: usize, T: Coefficient>(b: &[T; W], up: &[f64; W], sp: &[f64; W], q: usize) -> T {
+pub(crate) fn bernstein<const W: usize, T: Coefficient>(b: &[T; W], up: &[f64; W], sp: &[f64; W], q: usize) -> T {
     // Starting from the first term (not from zero, which the compiler may not fold away
     // because 0 + (−0) = +0).
     let mut acc = b[0] * (BINOMIAL[q][0] * up[0] * sp[q]);
