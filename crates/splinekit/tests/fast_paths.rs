@@ -4,14 +4,17 @@
 //!
 //! Pinned paths (docs/fast-paths.md lists them with these tests):
 //! * curves: the Bézier-span cache (`BezierSpans`, degrees 1–7) and its sorted-batch
-//!   cursor (`eval_many`, points-only and derivative loops), the monomorphised triangular
+//!   cursor (`eval_many`, points-only and derivative loops), the blocked batch of four
+//!   parameters in step (`eval_many_lanes`, orders 0–2, AVX2 at run time), the
+//!   batch of blending-spline curves (`curve_batch`), the monomorphised triangular
 //!   kernel (`span_kernel::eval_fixed`, W ≤ 8) and its dynamic fallback, uniform-knot span
 //!   arithmetic, periodic unrolling, left and right limits, the rational (homogeneous)
 //!   paths of NURBS curves, the array paths of `bezier_derivatives` (≤ 8 coefficients,
 //!   ≤ 4 outputs) in Bézier and rational Bézier curves;
 //! * surfaces: the tensor-product point path (`TensorSpline::eval_partials`), the grid
 //!   path (`eval_grid`), the row path of grids with normals (`eval_grid_first`, unrolled
-//!   W-term sums for W = 2…6 and the generic loop beyond), NURBS grids, Bézier patches,
+//!   W-term sums for W = 2…6 and the generic loop beyond; for B-spline surfaces
+//!   `eval_grid_points_normals`, W = 2…8, AVX2 at run time), NURBS grids, Bézier patches,
 //!   the parallel grids (feature `parallel`), and the Bézier grid path of blending-spline
 //!   surfaces against their own general evaluation;
 //! * degrees 1–12 in each direction, derivative orders 0–4, clamped, unclamped and
@@ -268,6 +271,33 @@ fn check_curve<const D: usize>(case: &CurveCase) {
                 assert_close(&many[i * (order + 1) + j], &want[j], tolerance(p, j, spread), &|| {
                     format!("{case:?} knots {kn:?}: eval_many #{i} ({t}) order {j} of {order}")
                 });
+            }
+        }
+    }
+    // The blocked batch of B-spline curves (`BezierSpans::eval_many_lanes`: four
+    // parameters of one span in step, orders 0 … 2, AVX2 where the CPU has it): a dense
+    // batch (many parameters per span, so that blocks inside a span occur in every order
+    // of parameters but the random one) against the truth, and bit for bit against the
+    // single evaluation at each parameter.
+    let dense = parameters(&mut rng, &axis, 8 * n, case.params);
+    for order in 0..=2 {
+        let mut many = vec![Point::<D>::zeros(); dense.len() * (order + 1)];
+        curve.eval_many(&dense, order, &mut many);
+        let mut single = vec![Point::<D>::zeros(); order + 1];
+        for (i, &t) in dense.iter().enumerate() {
+            let want = plain::curve(&axis, &points, w, t, Limit::Right, order);
+            curve.eval_side(t, Side::Right, &mut single);
+            for j in 0..=order {
+                let got = &many[i * (order + 1) + j];
+                assert_close(got, &want[j], tolerance(p, j, spread), &|| {
+                    format!("{case:?} knots {kn:?}: dense eval_many #{i} ({t}) order {j} of {order}")
+                });
+                if !case.rational {
+                    assert_eq!(
+                        *got, single[j],
+                        "{case:?}: dense eval_many #{i} ({t}) order {j} differs from eval_side"
+                    );
+                }
             }
         }
     }
