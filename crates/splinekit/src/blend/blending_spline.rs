@@ -571,6 +571,6 @@ impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
             LocalCurve::General(_) => None,
         };
         let general = |t: f64, o: &mut [Point<D>]| self.eval_side(t, Side::Right, o);
-        curve_batch::eval_many(&self.knots, &self.bfunction, degree, local, general, params, order, out);
+        curve_batch::eval_many(&self.knots, &self.bfunction, local, general, params, order, out);
     }
 }

@@ -104,19 +104,19 @@ struct Pieces<const W: usize, const D: usize> {
 }
 
 /// Writes `out[i·(order+1) + j]` = f^{(j)}(`params[i]`) for a spline whose locals
-/// `local(k)` are mostly Bézier curves of degree `degree`; parameters on an interval whose
-/// locals are not (`local` gives `None` or another degree) go to `general`. Needs
-/// 1 ≤ degree ≤ [`MAX_DEGREE`] and order ≤ [`MAX_ORDER`].
+/// `local(k)` are mostly Bézier curves of the degree d of local 0; parameters on an
+/// interval whose locals are not (`local` gives `None` or another degree) go to `general`.
+/// Needs 1 ≤ d ≤ [`MAX_DEGREE`] and order ≤ [`MAX_ORDER`].
 pub(crate) fn eval_many<'a, const D: usize>(
     knots: &BlendKnots,
     bfunction: &BFunction,
-    degree: usize,
     local: impl Fn(usize) -> Option<BezierLocal<'a, D>>,
     general: impl Fn(f64, &mut [Point<D>]),
     params: &[f64],
     order: usize,
     out: &mut [Point<D>],
 ) {
+    let degree = local(0).map_or(0, |l| l.points.len().saturating_sub(1));
     debug_assert!((1..=MAX_DEGREE).contains(&degree) && order <= MAX_ORDER);
     // Monomorphised on the degree and on the number of outputs, so that every sum unrolls.
     macro_rules! by_order {
