@@ -4,14 +4,17 @@
 //!
 //! Pinned paths (docs/fast-paths.md lists them with these tests):
 //! * curves: the Bézier-span cache (`BezierSpans`, degrees 1–7) and its sorted-batch
-//!   cursor (`eval_many`, points-only and derivative loops), the monomorphised triangular
+//!   cursor (`eval_many`, points-only and derivative loops), the blocked batch of four
+//!   parameters in step (`eval_many_lanes`, orders 0–2, AVX2 at run time), the
+//!   batch of blending-spline curves (`curve_batch`), the monomorphised triangular
 //!   kernel (`span_kernel::eval_fixed`, W ≤ 8) and its dynamic fallback, uniform-knot span
 //!   arithmetic, periodic unrolling, left and right limits, the rational (homogeneous)
 //!   paths of NURBS curves, the array paths of `bezier_derivatives` (≤ 8 coefficients,
 //!   ≤ 4 outputs) in Bézier and rational Bézier curves;
 //! * surfaces: the tensor-product point path (`TensorSpline::eval_partials`), the grid
 //!   path (`eval_grid`), the row path of grids with normals (`eval_grid_first`, unrolled
-//!   W-term sums for W = 2…6 and the generic loop beyond), NURBS grids, Bézier patches,
+//!   W-term sums for W = 2…6 and the generic loop beyond; for B-spline surfaces
+//!   `eval_grid_points_normals`, W = 2…8, AVX2 at run time), NURBS grids, Bézier patches,
 //!   the parallel grids (feature `parallel`), and the Bézier grid path of blending-spline
 //!   surfaces against their own general evaluation;
 //! * degrees 1–12 in each direction, derivative orders 0–4, clamped, unclamped and
@@ -268,6 +271,33 @@ fn check_curve<const D: usize>(case: &CurveCase) {
                 assert_close(&many[i * (order + 1) + j], &want[j], tolerance(p, j, spread), &|| {
                     format!("{case:?} knots {kn:?}: eval_many #{i} ({t}) order {j} of {order}")
                 });
+            }
+        }
+    }
+    // The blocked batch of B-spline curves (`BezierSpans::eval_many_lanes`: four
+    // parameters of one span in step, orders 0 … 2, AVX2 where the CPU has it): a dense
+    // batch (many parameters per span, so that blocks inside a span occur in every order
+    // of parameters but the random one) against the truth, and bit for bit against the
+    // single evaluation at each parameter.
+    let dense = parameters(&mut rng, &axis, 8 * n, case.params);
+    for order in 0..=2 {
+        let mut many = vec![Point::<D>::zeros(); dense.len() * (order + 1)];
+        curve.eval_many(&dense, order, &mut many);
+        let mut single = vec![Point::<D>::zeros(); order + 1];
+        for (i, &t) in dense.iter().enumerate() {
+            let want = plain::curve(&axis, &points, w, t, Limit::Right, order);
+            curve.eval_side(t, Side::Right, &mut single);
+            for j in 0..=order {
+                let got = &many[i * (order + 1) + j];
+                assert_close(got, &want[j], tolerance(p, j, spread), &|| {
+                    format!("{case:?} knots {kn:?}: dense eval_many #{i} ({t}) order {j} of {order}")
+                });
+                if !case.rational {
+                    assert_eq!(
+                        *got, single[j],
+                        "{case:?}: dense eval_many #{i} ({t}) order {j} differs from eval_side"
+                    );
+                }
             }
         }
     }
@@ -635,5 +665,136 @@ proptest! {
         closed: (bool, bool), order in order_kind(), seed: u64,
     ) {
         check_blending_grid(model, (nu, nv), (du, dv), closed, order, seed);
+    }
+}
+
+/// Blending-spline curves: the batch path (`BlendingSplineCurve::eval_many`: Bézier locals
+/// of one degree ≤ 7, orders ≤ 4, each interval's locals prepared once per run of
+/// parameters, Bernstein sums of scaled differences) against the curve's general
+/// evaluation at each parameter (`eval_side`: de Casteljau on each local, then the Leibniz
+/// blend), open and closed, local degrees 1–8 (8: the general path), orders 0–5 (5: the
+/// general path), edited splines (a moved frame, edited control points, an inserted local)
+/// and explicit non-Bézier locals, with several B-functions.
+#[allow(clippy::too_many_arguments)]
+fn check_blending_curve(
+    model: usize,
+    count: usize,
+    degree: usize,
+    order: usize,
+    closed: bool,
+    edit: usize,
+    bfunction: usize,
+    params: Order,
+    seed: u64,
+) {
+    use splinekit::basis::BFunction;
+    use splinekit::blend::{BlendingCurveOptions, BlendingSplineCurve, LocalKind};
+    use splinekit::curve::model::{Heart, Helix, Lissajous};
+    use splinekit::frame::Affine;
+    use std::sync::Arc;
+    let model: Arc<dyn Curve<3>> = match model {
+        0 => Arc::new(Helix::new(1.0, 0.7, 2.0).unwrap()),
+        1 => Arc::new(Heart::new(1.5).unwrap()),
+        _ => Arc::new(Lissajous::new([1.0, 2.0, 0.5], [3.0, 2.0, 1.0], 0.3).unwrap()),
+    };
+    let bfunction = match bfunction {
+        0 => BFunction::erbs_default(),
+        1 => BFunction::polynomial(2).unwrap(),
+        2 => BFunction::Trigonometric,
+        _ => BFunction::Linear,
+    };
+    let options = BlendingCurveOptions {
+        local: LocalKind::Bezier(degree),
+        bfunction,
+        closed: Some(closed),
+        ..Default::default()
+    };
+    let mut rng = Rng(seed);
+    let mut c = BlendingSplineCurve::from_model(model.clone(), count, &options).unwrap();
+    match edit {
+        0 => {}
+        1 => {
+            let k = rng.below(count);
+            let frame = Affine::translation(Point::<3>::new(0.3, -0.2, 0.5)).after(&Affine::uniform_scale(1.3));
+            c.set_transform(k, frame);
+        }
+        2 => {
+            let k = rng.below(count);
+            let mut p = c.local_bezier_points(k).unwrap().to_vec();
+            for q in &mut p {
+                *q += Point::<3>::new(rng.range(-0.5, 0.5), rng.range(-0.5, 0.5), rng.range(-0.5, 0.5));
+            }
+            c.set_local_bezier_points(k, p).unwrap();
+        }
+        3 => {
+            let d = c.domain();
+            c.insert_local(d.start + 0.37 * d.length()).unwrap();
+        }
+        _ => {
+            // Explicit locals: the model itself on every support (no Bézier locals).
+            let knots = c.knots().clone();
+            let locals = (0..knots.count()).map(|_| model.clone()).collect();
+            c = BlendingSplineCurve::from_locals(knots, locals, options.bfunction.clone()).unwrap();
+        }
+    }
+    let d = c.domain();
+    let mut t: Vec<f64> = (0..40).map(|_| rng.range(d.start, d.end)).collect();
+    t.extend(c.knots().values());
+    t.extend([d.start, d.end, d.start - 0.3 * d.length(), d.end + 0.6 * d.length()]);
+    t.sort_by(f64::total_cmp);
+    match params {
+        Order::Sorted => {}
+        Order::Reversed => t.reverse(),
+        Order::Random => {
+            for i in (1..t.len()).rev() {
+                t.swap(i, rng.below(i + 1));
+            }
+        }
+        Order::Repeated => t = t.iter().flat_map(|&x| [x, x, x]).chain(t.clone()).collect(),
+    }
+    let w = order + 1;
+    let mut batch = vec![Point::<3>::zeros(); t.len() * w];
+    c.eval_many(&t, order, &mut batch);
+    let mut reference = vec![Point::<3>::zeros(); t.len() * w];
+    for (&x, o) in t.iter().zip(reference.chunks_exact_mut(w)) {
+        c.eval_side(x, Side::Right, o);
+    }
+    // Both paths round the locals' control points P to a few ulps (the batch restricts
+    // each local to the interval, the general path runs de Casteljau on the whole local);
+    // a j-th derivative multiplies such errors by the growth of j-th differences,
+    // Π_{i<j} 2(d + 4 − i)/h on the narrowest interval h (d + 4 bounds the local's
+    // degree and the B-function's share of the Leibniz sum).
+    let points = (0..c.local_count())
+        .filter_map(|k| c.local_bezier_world_points(k))
+        .flatten()
+        .map(|p| p.amax())
+        .fold(1.0, f64::max);
+    let h = c.knots().values().windows(2).map(|k| k[1] - k[0]).filter(|&g| g > 0.0).fold(f64::INFINITY, f64::min);
+    let growth = |j: usize| (0..j).map(|i| 2.0 * (degree + 4 - i) as f64 / h).product::<f64>();
+    let scale: Vec<f64> =
+        (0..w).map(|j| reference.iter().skip(j).step_by(w).map(|p| p.amax()).fold(1.0, f64::max)).collect();
+    let tol: Vec<f64> = (0..w).map(|j| 1e-12 * scale[j] + 64.0 * f64::EPSILON * points * growth(j)).collect();
+    for (i, &x) in t.iter().enumerate() {
+        for j in 0..w {
+            let (got, want) = (batch[i * w + j], reference[i * w + j]);
+            assert!(
+                (got - want).amax() <= tol[j],
+                "blending curve {count} locals of degree {degree}, closed {closed}, edit {edit}: order {j} at {x}: \
+                 {got:?} vs {want:?} (tolerance {:e})",
+                tol[j]
+            );
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(48), failure_persistence: None, ..ProptestConfig::default() })]
+
+    #[test]
+    fn blending_curve_batches_match_their_general_evaluation(
+        model in 0usize..3, count in 3usize..=12, degree in 1usize..=8, order in 0usize..=5, closed: bool,
+        edit in 0usize..5, bfunction in 0usize..4, params in order_kind(), seed: u64,
+    ) {
+        check_blending_curve(model, count, degree, order, closed, edit, bfunction, params, seed);
     }
 }

@@ -168,6 +168,16 @@ impl BFunction {
         }
     }
 
+    /// [`Self::eval`] into an array of K values (B, B′, …, B^{(K−1)}): the same values, with
+    /// the ERBS table's fast polynomials unrolled for K (the batch paths of blending splines).
+    #[inline]
+    pub fn eval_array<const K: usize>(&self, t: f64, out: &mut [f64; K]) {
+        match self {
+            BFunction::Erbs(table) => table.eval_array(t.clamp(0.0, 1.0), out),
+            _ => self.eval(t, out),
+        }
+    }
+
     /// B(t).
     pub fn value(&self, t: f64) -> f64 {
         let mut o = [0.0];

@@ -310,10 +310,11 @@ impl ErbsTable {
     /// The fast path on cell i (out.len() ≤ FAST_ORDER + 1): the cell's polynomial p and
     /// its stored derivative polynomials by Estrin's scheme (independent, short dependency
     /// chains), then B = p, 1 − p, e^p or 1 − e^p by the cell's mode.
-    #[inline]
+    #[inline(always)]
     fn eval_fast(&self, i: usize, t: f64, out: &mut [f64]) {
         let r = 0.5 / FAST_CELLS as f64;
-        let x = (t - (2 * i + 1) as f64 * r) / r;
+        // 1/r = 2·FAST_CELLS is a power of two: the product is the quotient, exactly.
+        let x = (t - (2 * i + 1) as f64 * r) * (1.0 / r);
         let c = &self.fast[i];
         let x2 = x * x;
         let x4 = x2 * x2;
@@ -385,6 +386,19 @@ impl ErbsTable {
     /// polynomials where they apply, else quadrature and jets.
     pub(crate) fn eval(&self, t: f64, out: &mut [f64]) {
         if out.len() <= FAST_ORDER + 1 && !out.is_empty() && t > 0.0 && t < 1.0 {
+            let i = ((t * FAST_CELLS as f64) as usize).min(FAST_CELLS - 1);
+            if self.fast_mode[i] != FastMode::Exact {
+                return self.eval_fast(i, t, out);
+            }
+        }
+        self.eval_exact(t, out)
+    }
+
+    /// [`Self::eval`] with the number of outputs K known at compile time (the batch paths),
+    /// so that only the K polynomials asked for are evaluated and every loop unrolls.
+    #[inline]
+    pub(crate) fn eval_array<const K: usize>(&self, t: f64, out: &mut [f64; K]) {
+        if K <= FAST_ORDER + 1 && K > 0 && t > 0.0 && t < 1.0 {
             let i = ((t * FAST_CELLS as f64) as usize).min(FAST_CELLS - 1);
             if self.fast_mode[i] != FastMode::Exact {
                 return self.eval_fast(i, t, out);

@@ -20,6 +20,7 @@ use std::sync::Arc;
 use smallvec::{SmallVec, smallvec};
 
 use super::animation::Track;
+use super::curve_batch::{self, BezierLocal};
 use super::hermite::{IntervalBezier, hermite_bezier};
 use super::knots::BlendKnots;
 use super::leibniz::blend_derivatives;
@@ -545,5 +546,31 @@ impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
         let mut bf: SmallVec<[f64; 8]> = smallvec![0.0; n];
         self.bfunction.eval(span.w, &mut bf);
         blend_derivatives(&a, &b, &bf, 1.0 / span.width, out);
+    }
+
+    /// Bézier locals of one degree d ≤ 7 and orders ≤ 4: the batch path of
+    /// [`super::curve_batch`] (each interval's two locals prepared once per run of
+    /// parameters in it, Bernstein sums of their scaled differences); intervals with other
+    /// locals, and other splines, evaluate each parameter as [`Curve::eval_side`] does.
+    fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
+        let w = order + 1;
+        let degree = match &self.locals[0].curve {
+            LocalCurve::Bezier { world, .. } => world.curve().degree(),
+            LocalCurve::General(_) => 0,
+        };
+        if order > curve_batch::MAX_ORDER || !(1..=curve_batch::MAX_DEGREE).contains(&degree) {
+            for (&t, o) in params.iter().zip(out.chunks_exact_mut(w)) {
+                self.eval_side(t, Side::Right, o);
+            }
+            return;
+        }
+        let local = |k: usize| match &self.locals[k].curve {
+            LocalCurve::Bezier { world, .. } => {
+                Some(BezierLocal { points: world.curve().control_points(), support: world.domain() })
+            }
+            LocalCurve::General(_) => None,
+        };
+        let general = |t: f64, o: &mut [Point<D>]| self.eval_side(t, Side::Right, o);
+        curve_batch::eval_many(&self.knots, &self.bfunction, local, general, params, order, out);
     }
 }

@@ -5,6 +5,7 @@ pub mod animation;
 pub mod bfunction_curve;
 pub mod blending_spline;
 pub mod blending_surface;
+mod curve_batch;
 pub mod hermite;
 pub mod knots;
 pub mod leibniz;

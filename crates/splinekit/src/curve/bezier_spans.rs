@@ -8,13 +8,13 @@
 //! All Bernstein weights are positive and sum to one, so the evaluation error stays at a
 //! few ulps of the control points, like de Boor's; it needs no knot access and no division.
 
-use crate::Coefficient;
 use crate::curve::span_kernel::ReciprocalKnotDifferences;
+use crate::{Coefficient, Point};
 
 /// Highest degree served by the Bézier-span path.
 pub const MAX_DEGREE: usize = 7;
 
-const BINOMIAL: [[f64; 8]; 8] = {
+pub(crate) const BINOMIAL: [[f64; 8]; 8] = {
     let mut t = [[0.0; 8]; 8];
     let mut n = 0;
     while n < 8 {
@@ -161,8 +161,8 @@ impl<T: Coefficient> BezierSpans<T> {
         let mut at = SpanCursor::<W, T>::first(self);
         if order == 0 {
             // Points only: a loop without the derivative differences, so that the span's
-            // points can stay in registers. (Non-temporal stores for large outputs were
-            // tried: slower here than ordinary ones.)
+            // points can stay in registers (points in ℝᴰ have a faster loop still,
+            // `eval_many_points`).
             for (&t, o) in params.iter().zip(out.iter_mut()) {
                 let t = map(t);
                 *o = match at.find(self, t, &locate) {
@@ -192,6 +192,119 @@ impl<T: Coefficient> BezierSpans<T> {
     fn span_at<const W: usize>(&self, j: usize) -> (&[T; W], f64, f64) {
         let (start, _, inv_h) = self.frames[j];
         (self.points[j * W..(j + 1) * W].try_into().expect("W points"), start, inv_h)
+    }
+}
+
+impl<const D: usize> BezierSpans<Point<D>> {
+    /// [`BezierSpans::eval_many`] for points in ℝᴰ and orders 0 … [`MAX_LANE_ORDER`]: the
+    /// same values, bit for bit, by blocks of parameters evaluated in step (see `lanes`),
+    /// compiled for AVX2 where the CPU has it (chosen at run time; the portable build
+    /// stays SSE2); higher orders go to [`BezierSpans::eval_many`].
+    pub fn eval_many_lanes(
+        &self,
+        params: &[f64],
+        order: usize,
+        out: &mut [Point<D>],
+        map: impl Fn(f64) -> f64,
+        locate: impl Fn(usize, f64) -> usize,
+    ) {
+        macro_rules! fixed {
+            ($w:literal, $k:literal) => {{
+                #[cfg(target_arch = "x86_64")]
+                if std::arch::is_x86_feature_detected!("avx2") {
+                    // SAFETY: the CPU has AVX2 (checked just above).
+                    return unsafe { self.lanes_avx2::<$w, $k>(params, out, map, locate) };
+                }
+                self.lanes::<$w, $k>(params, out, map, locate)
+            }};
+        }
+        macro_rules! by_order {
+            ($w:literal) => {
+                match order {
+                    0 => fixed!($w, 1),
+                    1 => fixed!($w, 2),
+                    _ => fixed!($w, 3),
+                }
+            };
+        }
+        if order > MAX_LANE_ORDER {
+            return self.eval_many(params, order, out, map, locate);
+        }
+        match self.degree {
+            1 => by_order!(2),
+            2 => by_order!(3),
+            3 => by_order!(4),
+            4 => by_order!(5),
+            5 => by_order!(6),
+            6 => by_order!(7),
+            _ => by_order!(8),
+        }
+    }
+
+    /// [`Self::lanes`] compiled for AVX2 (four lanes of doubles): the same operations in
+    /// the same order, so the same bits as the portable build (Rust never contracts a
+    /// product and a sum into a fused multiply-add), wider instructions.
+    ///
+    /// # Safety
+    /// The CPU must support AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn lanes_avx2<const W: usize, const K: usize>(
+        &self,
+        params: &[f64],
+        out: &mut [Point<D>],
+        map: impl Fn(f64) -> f64,
+        locate: impl Fn(usize, f64) -> usize,
+    ) {
+        self.lanes::<W, K>(params, out, map, locate)
+    }
+
+    /// The batch of K = order + 1 outputs per parameter by blocks of [`LANES`] parameters:
+    /// a block inside the cursor's span is evaluated lane by lane in step (powers,
+    /// Bernstein weights and sums as arrays over the lanes, which vectorise), any other
+    /// block one parameter at a time with the cursor, as [`BezierSpans::eval_many`] does.
+    /// Every value is computed by the operations of `eval_fixed` (`bernstein_sum` for
+    /// points) in their order, so the result does not depend on the blocking.
+    /// (Non-temporal stores for large outputs were tried: slower here than ordinary ones.)
+    #[inline(always)]
+    fn lanes<const W: usize, const K: usize>(
+        &self,
+        params: &[f64],
+        out: &mut [Point<D>],
+        map: impl Fn(f64) -> f64,
+        locate: impl Fn(usize, f64) -> usize,
+    ) {
+        let mut at = SpanCursor::<W, Point<D>>::first(self);
+        let last_span = self.first_span + self.frames.len() - 1;
+        let one = |at: &mut SpanCursor<W, Point<D>>, t: f64, o: &mut [Point<D>]| {
+            let t = map(t);
+            let (b, start, inv_h) = match at.find(self, t, &locate) {
+                None => (&at.points, at.start, at.inv_h),
+                Some(j) => self.span_at::<W>(j),
+            };
+            let u = (t - start) * inv_h;
+            if K == 1 {
+                o[0] = bernstein_sum::<W, Point<D>>(b, u);
+            } else {
+                eval_fixed::<W, Point<D>>(b, u, inv_h, o);
+            }
+        };
+        let mut blocks = params.chunks_exact(LANES).zip(out.chunks_exact_mut(LANES * K));
+        for (raw, os) in &mut blocks {
+            let ts: [f64; LANES] = std::array::from_fn(|l| map(raw[l]));
+            let inside = ts.iter().all(|&t| t >= at.start && (t < at.end || at.span == last_span));
+            if inside {
+                bernstein_lanes::<W, K, D>(&at.points, at.start, at.inv_h, &ts, os);
+            } else {
+                for (&t, o) in raw.iter().zip(os.chunks_exact_mut(K)) {
+                    one(&mut at, t, o);
+                }
+            }
+        }
+        let rest = params.len() - params.len() % LANES;
+        for (&t, o) in params[rest..].iter().zip(out[rest * K..].chunks_exact_mut(K)) {
+            one(&mut at, t, o);
+        }
     }
 }
 
@@ -255,7 +368,7 @@ impl<const W: usize, T: Coefficient> SpanCursor<W, T> {
 
 /// The powers uᵏ and (1 − u)ᵏ, k < W.
 #[inline(always)]
-fn powers<const W: usize>(u: f64) -> ([f64; W], [f64; W]) {
+pub(crate) fn powers<const W: usize>(u: f64) -> ([f64; W], [f64; W]) {
     let s = 1.0 - u;
     let mut up = [1.0f64; W];
     let mut sp = [1.0f64; W];
@@ -268,7 +381,7 @@ fn powers<const W: usize>(u: f64) -> ([f64; W], [f64; W]) {
 
 /// The Bernstein sum Σ_{i ≤ q} C(q,i) uⁱ (1−u)^{q−i} b_i from the powers of u and 1 − u.
 #[inline(always)]
-fn bernstein<const W: usize, T: Coefficient>(b: &[T; W], up: &[f64; W], sp: &[f64; W], q: usize) -> T {
+pub(crate) fn bernstein<const W: usize, T: Coefficient>(b: &[T; W], up: &[f64; W], sp: &[f64; W], q: usize) -> T {
     // Starting from the first term (not from zero, which the compiler may not fold away
     // because 0 + (−0) = +0).
     let mut acc = b[0] * (BINOMIAL[q][0] * up[0] * sp[q]);
@@ -276,6 +389,74 @@ fn bernstein<const W: usize, T: Coefficient>(b: &[T; W], up: &[f64; W], sp: &[f6
         acc += b[i] * (BINOMIAL[q][i] * up[i] * sp[q - i]);
     }
     acc
+}
+
+/// Highest derivative order of [`BezierSpans::eval_many_lanes`]'s blocked loop.
+pub const MAX_LANE_ORDER: usize = 2;
+
+/// Parameters evaluated in step by [`BezierSpans::eval_many_lanes`].
+const LANES: usize = 4;
+
+/// `eval_fixed` (K outputs; [`bernstein_sum`] for K = 1) at LANES parameters of one span
+/// (start, 1/h, points `b`) into `out` (K per parameter), each lane and coordinate by the
+/// same operations in the same order (so with the same result), laid out lane-innermost
+/// so that they vectorise.
+#[inline(always)]
+fn bernstein_lanes<const W: usize, const K: usize, const D: usize>(
+    b: &[Point<D>; W],
+    start: f64,
+    inv_h: f64,
+    ts: &[f64; LANES],
+    out: &mut [Point<D>],
+) {
+    let p = W - 1;
+    let u: [f64; LANES] = std::array::from_fn(|l| (ts[l] - start) * inv_h);
+    let mut up = [[1.0f64; LANES]; W];
+    let mut sp = [[1.0f64; LANES]; W];
+    for k in 1..W {
+        for l in 0..LANES {
+            up[k][l] = up[k - 1][l] * u[l];
+            sp[k][l] = sp[k - 1][l] * (1.0 - u[l]);
+        }
+    }
+    let mut d = *b;
+    let mut scale = 1.0;
+    for k in 0..K {
+        if k > p {
+            for l in 0..LANES {
+                out[l * K + k] = Point::<D>::zeros();
+            }
+            continue;
+        }
+        if k > 0 {
+            for i in 0..W - k {
+                d[i] = d[i + 1] - d[i];
+            }
+            scale *= (p - k + 1) as f64 * inv_h;
+        }
+        let q = p - k;
+        let mut weights = [[0.0f64; LANES]; W];
+        for (i, wi) in weights.iter_mut().enumerate().take(q + 1) {
+            for l in 0..LANES {
+                wi[l] = BINOMIAL[q][i] * up[i][l] * sp[q - i][l];
+            }
+        }
+        let mut acc = [[0.0f64; LANES]; D];
+        for (c, ac) in acc.iter_mut().enumerate() {
+            for l in 0..LANES {
+                ac[l] = d[0][c] * weights[0][l];
+            }
+            for i in 1..=q {
+                for l in 0..LANES {
+                    ac[l] += d[i][c] * weights[i][l];
+                }
+            }
+        }
+        for l in 0..LANES {
+            let v = Point::<D>::from_fn(|c, _| acc[c][l]);
+            out[l * K + k] = if k == 0 { v } else { v * scale };
+        }
+    }
 }
 
 /// c(u) = Σ_k C(p,k) uᵏ (1−u)^{p−k} b_k, p = W − 1.

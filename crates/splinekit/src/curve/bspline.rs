@@ -218,7 +218,8 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
             let (domain, periodic) = (axis.domain(), axis.is_periodic());
             let map = |t: f64| if periodic { domain.wrap_periodic(t, Side::Right) } else { domain.clamp(t) };
             let locate = |_: usize, t: f64| axis.span(t);
-            spans.eval_many(params, order, &mut out[..params.len() * (order + 1)], map, locate);
+            let out = &mut out[..params.len() * (order + 1)];
+            spans.eval_many_lanes(params, order, out, map, locate);
             return;
         }
         let w = order + 1;

@@ -3,8 +3,8 @@
 use crate::basis::KnotVector;
 use crate::curve::BSplineCurve;
 use crate::error::Result;
+use crate::surface::Surface;
 use crate::surface::tensor::{TensorSpline, net_axes, net_shape, tensor_surface_domains};
-use crate::surface::{Surface, unit_normal};
 use crate::{Interval, Point};
 
 /// A tensor-product B-spline surface of degrees (p, q). The net's first index runs along
@@ -126,9 +126,6 @@ impl<const D: usize> Surface<D> for BSplineSurface<D> {
         self.spline.eval_grid(us, vs, du, dv, out)
     }
     fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
-        self.spline.eval_grid_first(us, vs, |k, s, su, sv| {
-            points[k] = s;
-            normals[k] = unit_normal(&su, &sv).unwrap_or_else(Point::<D>::zeros);
-        });
+        self.spline.eval_grid_points_normals(us, vs, points, normals);
     }
 }

@@ -241,6 +241,146 @@ impl<T: Coefficient> TensorSpline<T> {
     }
 }
 
+impl<const D: usize> TensorSpline<crate::Point<D>> {
+    /// Grid of points and unit normals (the layout of
+    /// [`crate::surface::Surface::eval_grid_with_normals`]) of a non-rational spline: the
+    /// scheme of [`TensorSpline::eval_grid_first`] — v-basis and its derivative once per
+    /// column, the isocurve coefficients C(u) = Σ_r N_r(u) row_r and C′(u) once per row —
+    /// with the three W-term sums S = Σ_r M_r C_r, S_v = Σ_r M_r′ C_r, S_u = Σ_r M_r C′_r
+    /// on plain coordinate arrays and the point and normal written straight into the
+    /// output (no partials handed to a callback, so nothing is spilled on the way). For
+    /// v-degrees up to 7 the sums unroll; the normal is S_u × S_v/|S_u × S_v| (D = 3), as
+    /// [`crate::surface::unit_normal`] computes it, with its fallbacks where it vanishes;
+    /// zero where there is none.
+    pub fn eval_grid_points_normals(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        points: &mut [crate::Point<D>],
+        normals: &mut [crate::Point<D>],
+    ) {
+        let wv = self.v.degree() + 1;
+        if wv > 8 {
+            return self.eval_grid_first(us, vs, |k, s, su, sv| {
+                points[k] = s;
+                normals[k] = crate::surface::unit_normal(&su, &sv).unwrap_or_else(crate::Point::<D>::zeros);
+            });
+        }
+        macro_rules! fixed {
+            ($w:literal) => {{
+                #[cfg(target_arch = "x86_64")]
+                if std::arch::is_x86_feature_detected!("avx2") {
+                    // SAFETY: the CPU has AVX2 (checked just above).
+                    return unsafe { self.grid_points_normals_avx2::<$w>(us, vs, points, normals) };
+                }
+                self.grid_points_normals::<$w>(us, vs, points, normals)
+            }};
+        }
+        match wv {
+            2 => fixed!(2),
+            3 => fixed!(3),
+            4 => fixed!(4),
+            5 => fixed!(5),
+            6 => fixed!(6),
+            7 => fixed!(7),
+            _ => fixed!(8),
+        }
+    }
+
+    /// [`Self::grid_points_normals`] compiled for AVX2: the same operations in the same
+    /// order (no fused multiply-adds), so the same bits, wider instructions.
+    ///
+    /// # Safety
+    /// The CPU must support AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn grid_points_normals_avx2<const W: usize>(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        points: &mut [crate::Point<D>],
+        normals: &mut [crate::Point<D>],
+    ) {
+        self.grid_points_normals::<W>(us, vs, points, normals)
+    }
+
+    /// [`Self::eval_grid_points_normals`] with W = p_v + 1 known at compile time.
+    #[inline(always)]
+    fn grid_points_normals<const W: usize>(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        points: &mut [crate::Point<D>],
+        normals: &mut [crate::Point<D>],
+    ) {
+        let pu = self.u.degree();
+        let (wu, pv) = (pu + 1, W - 1);
+        let nve = self.v.eval_count();
+        // Per column: the first coefficient index and M_r(v), M_r′(v).
+        let mut columns: Vec<(usize, [f64; W], [f64; W])> = Vec::with_capacity(vs.len());
+        let mut scratch = [0.0; 16];
+        for &v in vs {
+            let v = self.v.normalise(v);
+            let sv = self.v.span(v);
+            basis_derivatives(self.v.eval_knots(), pv, sv, v, 1, &mut scratch[..2 * W]);
+            let m0: [f64; W] = scratch[..W].try_into().expect("W basis values");
+            let m1: [f64; W] = scratch[W..2 * W].try_into().expect("W basis derivatives");
+            columns.push((sv - pv, m0, m1));
+        }
+        let mut iso0 = vec![[0.0; D]; nve];
+        let mut iso1 = vec![[0.0; D]; nve];
+        let mut nu_basis = vec![0.0; 2 * wu];
+        let rows = points.chunks_exact_mut(vs.len()).zip(normals.chunks_exact_mut(vs.len()));
+        for (&u, (prow, nrow)) in us.iter().zip(rows) {
+            let u = self.u.normalise(u);
+            let su = self.u.span(u);
+            basis_derivatives(self.u.eval_knots(), pu, su, u, 1, &mut nu_basis);
+            iso0.fill([0.0; D]);
+            iso1.fill([0.0; D]);
+            for (r, row) in self.net[(su - pu) * nve..(su + 1) * nve].chunks_exact(nve).enumerate() {
+                let (n0, n1) = (nu_basis[r], nu_basis[wu + r]);
+                for ((x0, x1), y) in iso0.iter_mut().zip(iso1.iter_mut()).zip(row) {
+                    for c in 0..D {
+                        x0[c] += y[c] * n0;
+                        x1[c] += y[c] * n1;
+                    }
+                }
+            }
+            for ((base, m0, m1), (p, n)) in columns.iter().zip(prow.iter_mut().zip(nrow.iter_mut())) {
+                let c0: &[[f64; D]; W] = iso0[*base..*base + W].try_into().expect("W coefficients");
+                let c1: &[[f64; D]; W] = iso1[*base..*base + W].try_into().expect("W coefficients");
+                let (mut s, mut s_u, mut s_v) = ([0.0; D], [0.0; D], [0.0; D]);
+                for r in 0..W {
+                    for c in 0..D {
+                        s[c] += c0[r][c] * m0[r];
+                        s_v[c] += c0[r][c] * m1[r];
+                        s_u[c] += c1[r][c] * m0[r];
+                    }
+                }
+                *p = crate::Point::<D>::from(s);
+                *n = normal(&s_u, &s_v);
+            }
+        }
+    }
+}
+
+/// The unit normal S_u × S_v/|S_u × S_v| from coordinate arrays, as
+/// [`crate::surface::unit_normal`] computes it (its fallbacks where |S_u × S_v|² is not a
+/// normal positive number; zero outside ℝ³ or where there is no normal).
+#[inline(always)]
+fn normal<const D: usize>(a: &[f64; D], b: &[f64; D]) -> crate::Point<D> {
+    if D == 3 {
+        let n = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+        let len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        if len2 > f64::MIN_POSITIVE && len2.is_finite() {
+            let inv = 1.0 / len2.sqrt();
+            return crate::Point::<D>::from_fn(|i, _| n[i] * inv);
+        }
+    }
+    let (a, b) = (crate::Point::<D>::from(*a), crate::Point::<D>::from(*b));
+    crate::surface::unit_normal(&a, &b).unwrap_or_else(crate::Point::<D>::zeros)
+}
+
 /// One grid row of [`TensorSpline::eval_grid_first`] with the v-order W known at compile
 /// time, so the W-term sums unroll.
 #[inline(always)]
