@@ -6,8 +6,8 @@
 # no rustc, and there runs the whole pytest suite (scipy and geomdl oracles, pickling
 # across processes, Dask on a two-worker LocalCluster, the README's example), the stub
 # check (mypy.stubtest) and a quick pass of the benchmark. Then the sdist builds and
-# installs (a debug build reusing the workspace's compiled dependencies: what is checked
-# is that the sdist holds everything a build needs), and the render test runs on a debug
+# installs (a debug build in a fresh target folder: what is checked is that the sdist
+# holds everything a build needs), and the render test runs on a debug
 # build with the `render` feature (which reuses the workspace's debug build of wgpu).
 # The error tests compare messages with the command-line binary given as $1 (default
 # target/debug/splinekit). Each part prints the seconds it took.
@@ -68,10 +68,13 @@ for f in pyproject.toml Cargo.lock crates/splinekit-py/Cargo.toml crates/splinek
     python/splinekit/__init__.py python/splinekit/_splinekit.pyi; do
     grep -q "^splinekit-[0-9.]*/$f$" "$root/target/sdist-files.txt" || { echo "python.sh: the sdist lacks $f" >&2; exit 1; }
 done
-# Built by pip from the sdist alone (maturin from the build venv), in debug: the
-# registry dependencies compiled for the workspace's tests are reused.
-rm -rf "$root/target/sdist-wheel"
-CARGO_TARGET_DIR="$root/target" MATURIN_PEP517_ARGS="--profile dev" "$python" -m pip wheel --quiet \
+# Built by pip from the sdist alone (maturin from the build venv), in debug, in a target
+# folder of its own made afresh: the sdist's files carry old times, so a target folder
+# that already holds a build of the same crates would take that build as up to date even
+# where the sources have changed since (cargo hashes a path crate by its place in the
+# workspace, which is the same in the sdist).
+rm -rf "$root/target/sdist-wheel" "$root/target/sdist-build"
+CARGO_TARGET_DIR="$root/target/sdist-build" MATURIN_PEP517_ARGS="--profile dev" "$python" -m pip wheel --quiet \
     --disable-pip-version-check --no-build-isolation --no-deps "$sdist" -w "$root/target/sdist-wheel"
 env PATH="$bare_path" "$fresh/bin/pip" install --quiet --disable-pip-version-check --force-reinstall --no-deps \
     "$root"/target/sdist-wheel/splinekit-*.whl
