@@ -10,6 +10,7 @@
 pub mod adaptive_mesh;
 pub mod boundary_gluing;
 pub mod export;
+pub mod limit_mesh;
 mod mesh_cleanup;
 pub mod mesh_options;
 pub mod polyline;

@@ -113,3 +113,45 @@ fn bad_meshes_are_refused_and_obj_round_trips() {
     assert_eq!(read_obj_polygons(&text).unwrap(), cube());
     assert!(read_obj_polygons("v 0 0 0\nf 1 2 3\n").unwrap_err().contains("line 2"));
 }
+
+/// The limit mesh's triangles along sharp creases: every corner of every face keeps its
+/// position and its own normal, the cage's vertices come first in order, and a vertex is
+/// copied once for each other normal it has (corners on one side of a crease share it):
+/// the cube with its four top edges sharp, after one step.
+#[test]
+fn limit_triangles_split_vertices_once_per_crease_side() {
+    use splinekit::Point;
+    use splinekit::subdivision::surface::{Cage, Crease, Scheme, SubdivisionSurface};
+    use splinekit_mesh::limit_mesh::limit_mesh;
+
+    let c = cube();
+    let cage = Cage::new(c.vertices.iter().map(|p| Point::<3>::new(p[0], p[1], p[2])).collect(), &c.faces)
+        .with_creases(
+            [(4, 5), (5, 7), (7, 6), (6, 4)].map(|(a, b)| Crease { a, b, sharpness: f64::INFINITY }).to_vec(),
+        );
+    let s = SubdivisionSurface::new(cage, Scheme::CatmullClark, false).unwrap().subdivide(1).unwrap();
+    let m = limit_mesh(&s).unwrap();
+    let t = m.triangles();
+    let vertices = s.cage().vertices.len();
+    assert_eq!(&t.positions[..vertices], &m.positions[..]);
+    assert!(m.normals.len() > vertices, "the sharp edges give corners normals of their own");
+    // Each (position, normal) pair once.
+    let mut pairs: Vec<_> =
+        t.positions.iter().zip(&t.normals).map(|(p, n)| (p.map(f64::to_bits), n.map(f64::to_bits))).collect();
+    let count = pairs.len();
+    pairs.sort();
+    pairs.dedup();
+    assert_eq!(pairs.len(), count, "no vertex copied twice with one normal");
+    // Every triangle corner is a face corner: its position and normal.
+    let mut fan = t.triangles.iter();
+    for face in &m.faces {
+        for k in 1..face.len() - 1 {
+            let tri = fan.next().expect("one triangle per fan step");
+            for (id, &(v, n)) in tri.iter().zip([face[0], face[k], face[k + 1]].iter()) {
+                assert_eq!(t.positions[*id as usize], m.positions[v as usize]);
+                assert_eq!(t.normals[*id as usize], m.normals[n as usize]);
+            }
+        }
+    }
+    assert!(fan.next().is_none());
+}

@@ -18,6 +18,7 @@ use pyo3::types::{PyDict, PyTuple};
 use splinekit::Point;
 use splinekit::subdivision::surface::{BoundaryRule, Cage, Crease, LimitSample, Scheme, SubdivisionSurface as Kernel};
 use splinekit_mesh::TriangleMesh;
+use splinekit_mesh::limit_mesh::limit_mesh;
 
 use splinekit_scene::budget::Cost;
 
@@ -90,46 +91,6 @@ fn sample_dict<'py>(py: Python<'py>, s: &LimitSample) -> PyResult<Bound<'py, PyD
         None => d.set_item("partials", py.None())?,
     }
     Ok(d)
-}
-
-/// The triangle mesh of a surface's cage on the limit surface: limit positions and
-/// normals per vertex (vertex order kept), a vertex repeated with its own normal at each
-/// face corner on the far side of a sharp crease, polygons split into fans.
-fn limit_triangles(s: &Kernel) -> splinekit::Result<TriangleMesh> {
-    let frames = s.limit_frames()?;
-    let corners = s.limit_corner_normals(&frames);
-    let arr = |p: &Point<3>| [p.x, p.y, p.z];
-    let mut m = TriangleMesh {
-        positions: frames.iter().map(|f| arr(&f.position)).collect(),
-        normals: frames.iter().map(|f| arr(&f.normal)).collect(),
-        ..Default::default()
-    };
-    let c = s.cage();
-    let mut split = std::collections::HashMap::new();
-    for f in 0..c.face_count() {
-        let start = c.face_offsets[f] as usize;
-        let ids: Vec<u32> = c
-            .face(f)
-            .iter()
-            .enumerate()
-            .map(|(k, &v)| {
-                let n = corners[start + k];
-                if (n - frames[v as usize].normal).norm() == 0.0 {
-                    return v;
-                }
-                let key = (v, arr(&n).map(f64::to_bits));
-                *split.entry(key).or_insert_with(|| {
-                    m.positions.push(arr(&frames[v as usize].position));
-                    m.normals.push(arr(&n));
-                    m.positions.len() as u32 - 1
-                })
-            })
-            .collect();
-        for k in 1..ids.len() - 1 {
-            m.triangles.push([ids[0], ids[k], ids[k + 1]]);
-        }
-    }
-    Ok(m)
 }
 
 impl PySubdivisionSurface {
@@ -273,7 +234,7 @@ impl PySubdivisionSurface {
             .detach(|| -> splinekit::Result<TriangleMesh> {
                 let r = s.subdivide(steps)?;
                 if limit {
-                    return limit_triangles(&r);
+                    return limit_mesh(&r).map(|m| m.triangles());
                 }
                 let c = r.cage();
                 let poly = splinekit_mesh::subdivision_surface::PolygonMesh {

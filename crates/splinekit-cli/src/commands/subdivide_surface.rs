@@ -11,8 +11,8 @@ use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
 use splinekit::Point;
 use splinekit::subdivision::surface::{BoundaryRule, Cage, Crease, Scheme as KernelScheme, SubdivisionSurface};
-use splinekit_mesh::TriangleMesh;
 use splinekit_mesh::export::{GltfGeometry, GltfScene, ply, stl};
+use splinekit_mesh::limit_mesh::{LimitMesh, limit_mesh};
 use splinekit_mesh::subdivision_surface::{PolygonMesh, SurfaceScheme, read_obj_polygons, write_obj_polygons};
 
 use crate::input::read_text;
@@ -200,79 +200,6 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
     let faces: Vec<Vec<u32>> = (0..c.face_count()).map(|f| c.face(f).to_vec()).collect();
     let out = PolygonMesh { vertices: c.vertices.iter().map(|p| [p.x, p.y, p.z]).collect(), faces };
     write(&out, &name, &ext, &output)
-}
-
-/// A mesh on the limit surface: limit positions (one per vertex, in order), normals (one
-/// per vertex, in order, then one more per face corner on the far side of a sharp crease),
-/// and faces as (vertex, normal) corners.
-pub struct LimitMesh {
-    pub positions: Vec<[f64; 3]>,
-    pub normals: Vec<[f64; 3]>,
-    pub faces: Vec<Vec<(u32, u32)>>,
-}
-
-/// The limit mesh of a subdivided surface's vertices.
-pub fn limit_mesh(s: &SubdivisionSurface) -> splinekit::Result<LimitMesh> {
-    let frames = s.limit_frames()?;
-    let corners = s.limit_corner_normals(&frames);
-    let arr = |p: &Point<3>| [p.x, p.y, p.z];
-    let mut m = LimitMesh {
-        positions: frames.iter().map(|f| arr(&f.position)).collect(),
-        normals: frames.iter().map(|f| arr(&f.normal)).collect(),
-        faces: Vec::with_capacity(s.cage().face_count()),
-    };
-    let c = s.cage();
-    for f in 0..c.face_count() {
-        let start = c.face_offsets[f] as usize;
-        let face = c
-            .face(f)
-            .iter()
-            .enumerate()
-            .map(|(k, &v)| {
-                let n = corners[start + k];
-                if (n - frames[v as usize].normal).norm() == 0.0 {
-                    (v, v)
-                } else {
-                    m.normals.push(arr(&n));
-                    (v, m.normals.len() as u32 - 1)
-                }
-            })
-            .collect();
-        m.faces.push(face);
-    }
-    Ok(m)
-}
-
-impl LimitMesh {
-    /// Triangle fans with one mesh vertex per (position, normal) pair.
-    pub fn triangles(&self) -> TriangleMesh {
-        let mut t = TriangleMesh {
-            positions: self.positions.clone(),
-            normals: self.normals[..self.positions.len()].to_vec(),
-            ..Default::default()
-        };
-        let mut extra = std::collections::HashMap::new();
-        for face in &self.faces {
-            let ids: Vec<u32> = face
-                .iter()
-                .map(|&(v, n)| {
-                    if v == n {
-                        v
-                    } else {
-                        *extra.entry(n).or_insert_with(|| {
-                            t.positions.push(self.positions[v as usize]);
-                            t.normals.push(self.normals[n as usize]);
-                            t.positions.len() as u32 - 1
-                        })
-                    }
-                })
-                .collect();
-            for k in 1..ids.len() - 1 {
-                t.triangles.push([ids[0], ids[k], ids[k + 1]]);
-            }
-        }
-        t
-    }
 }
 
 /// The limit surface as STEP: one Bézier surface per patch of

@@ -11,7 +11,8 @@ use splinekit_mesh::export::{GltfGeometry, GltfScene};
 use splinekit_mesh::subdivision_surface::{PolygonMesh, SurfaceScheme, read_obj_polygons};
 use splinekit_render::{Camera, Image, LineItem, MeshItem, PointItem, RenderScene, Renderer};
 
-use crate::commands::subdivide_surface::{limit_mesh, read_obj_creases};
+use crate::commands::subdivide_surface::read_obj_creases;
+use splinekit_mesh::limit_mesh::limit_mesh;
 
 /// A rendered figure: file stem, caption, picture, glb bytes, the picture's camera.
 pub type Figure = (String, String, Image, Vec<u8>, Camera);
