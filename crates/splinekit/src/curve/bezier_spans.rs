@@ -401,6 +401,12 @@ const LANES: usize = 4;
 /// (start, 1/h, points `b`) into `out` (K per parameter), each lane and coordinate by the
 /// same operations in the same order (so with the same result), laid out lane-innermost
 /// so that they vectorise.
+///
+/// The control points are first transposed to one array per coordinate, so that the
+/// differences Δᵏb stay in registers (differencing the points in place in memory made the
+/// reads straddle the copy's stores: a store-forwarding stall that took a third of the
+/// first-derivative batch), and each derivative level is its own call with a constant
+/// degree, so that every loop has constant bounds and unrolls.
 #[inline(always)]
 fn bernstein_lanes<const W: usize, const K: usize, const D: usize>(
     b: &[Point<D>; W],
@@ -409,6 +415,7 @@ fn bernstein_lanes<const W: usize, const K: usize, const D: usize>(
     ts: &[f64; LANES],
     out: &mut [Point<D>],
 ) {
+    let out = &mut out[..LANES * K];
     let p = W - 1;
     let u: [f64; LANES] = std::array::from_fn(|l| (ts[l] - start) * inv_h);
     let mut up = [[1.0f64; LANES]; W];
@@ -419,44 +426,80 @@ fn bernstein_lanes<const W: usize, const K: usize, const D: usize>(
             sp[k][l] = sp[k - 1][l] * (1.0 - u[l]);
         }
     }
-    let mut d = *b;
+    let mut d: [[f64; W]; D] = std::array::from_fn(|c| std::array::from_fn(|i| b[i][c]));
+    let level0 = lane_level::<W, D>(&d, &up, &sp, p);
+    for l in 0..LANES {
+        out[l * K] = Point::<D>::from_fn(|c, _| level0[c][l]);
+    }
     let mut scale = 1.0;
-    for k in 0..K {
-        if k > p {
-            for l in 0..LANES {
-                out[l * K + k] = Point::<D>::zeros();
-            }
-            continue;
-        }
-        if k > 0 {
-            for i in 0..W - k {
-                d[i] = d[i + 1] - d[i];
-            }
-            scale *= (p - k + 1) as f64 * inv_h;
-        }
-        let q = p - k;
-        let mut weights = [[0.0f64; LANES]; W];
-        for (i, wi) in weights.iter_mut().enumerate().take(q + 1) {
-            for l in 0..LANES {
-                wi[l] = BINOMIAL[q][i] * up[i][l] * sp[q - i][l];
-            }
-        }
-        let mut acc = [[0.0f64; LANES]; D];
-        for (c, ac) in acc.iter_mut().enumerate() {
-            for l in 0..LANES {
-                ac[l] = d[0][c] * weights[0][l];
-            }
-            for i in 1..=q {
-                for l in 0..LANES {
-                    ac[l] += d[i][c] * weights[i][l];
-                }
-            }
-        }
+    // k = 1, 2 (K ≤ 3), written out so that q = p − k is a constant of each call.
+    if K > 1 {
+        lane_derivative::<W, K, D>(1, &mut d, &mut scale, inv_h, &up, &sp, out);
+    }
+    if K > 2 {
+        lane_derivative::<W, K, D>(2, &mut d, &mut scale, inv_h, &up, &sp, out);
+    }
+}
+
+/// Level k ≥ 1 of [`bernstein_lanes`]: Δᵏb from Δᵏ⁻¹b in `d` (per coordinate), the scale
+/// p!/(p−k)! h⁻ᵏ, and the degree-(p−k) Bernstein sums into output k of every lane (zero
+/// when k > p).
+#[inline(always)]
+fn lane_derivative<const W: usize, const K: usize, const D: usize>(
+    k: usize,
+    d: &mut [[f64; W]; D],
+    scale: &mut f64,
+    inv_h: f64,
+    up: &[[f64; LANES]; W],
+    sp: &[[f64; LANES]; W],
+    out: &mut [Point<D>],
+) {
+    let p = W - 1;
+    if k > p {
         for l in 0..LANES {
-            let v = Point::<D>::from_fn(|c, _| acc[c][l]);
-            out[l * K + k] = if k == 0 { v } else { v * scale };
+            out[l * K + k] = Point::<D>::zeros();
+        }
+        return;
+    }
+    for dc in d.iter_mut() {
+        for i in 0..W - k {
+            dc[i] = dc[i + 1] - dc[i];
         }
     }
+    *scale *= (p - k + 1) as f64 * inv_h;
+    let level = lane_level::<W, D>(d, up, sp, p - k);
+    for l in 0..LANES {
+        out[l * K + k] = Point::<D>::from_fn(|c, _| level[c][l] * *scale);
+    }
+}
+
+/// The degree-q Bernstein sums Σ_{i ≤ q} C(q,i) uⁱ(1−u)^{q−i} d_i of each coordinate at
+/// every lane, by the operations of [`bernstein`] in its order.
+#[inline(always)]
+fn lane_level<const W: usize, const D: usize>(
+    d: &[[f64; W]; D],
+    up: &[[f64; LANES]; W],
+    sp: &[[f64; LANES]; W],
+    q: usize,
+) -> [[f64; LANES]; D] {
+    let mut weights = [[0.0f64; LANES]; W];
+    for (i, wi) in weights.iter_mut().enumerate().take(q + 1) {
+        for l in 0..LANES {
+            wi[l] = BINOMIAL[q][i] * up[i][l] * sp[q - i][l];
+        }
+    }
+    let mut acc = [[0.0f64; LANES]; D];
+    for (ac, dc) in acc.iter_mut().zip(d) {
+        for l in 0..LANES {
+            ac[l] = dc[0] * weights[0][l];
+        }
+        for i in 1..=q {
+            for l in 0..LANES {
+                ac[l] += dc[i] * weights[i][l];
+            }
+        }
+    }
+    acc
 }
 
 /// c(u) = Σ_k C(p,k) uᵏ (1−u)^{p−k} b_k, p = W − 1.
