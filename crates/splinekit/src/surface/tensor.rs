@@ -251,7 +251,8 @@ impl<const D: usize> TensorSpline<crate::Point<D>> {
     /// output (no partials handed to a callback, so nothing is spilled on the way). For
     /// v-degrees up to 7 the sums unroll; the normal is S_u × S_v/|S_u × S_v| (D = 3), as
     /// [`crate::surface::unit_normal`] computes it, with its fallbacks where it vanishes;
-    /// zero where there is none.
+    /// zero where there is none. Points of more than [`PADDED`] coordinates and v-degrees
+    /// above 7 go through [`TensorSpline::eval_grid_first`].
     pub fn eval_grid_points_normals(
         &self,
         us: &[f64],
@@ -260,7 +261,10 @@ impl<const D: usize> TensorSpline<crate::Point<D>> {
         normals: &mut [crate::Point<D>],
     ) {
         let wv = self.v.degree() + 1;
-        if wv > 8 {
+        if us.is_empty() || vs.is_empty() {
+            return;
+        }
+        if wv > 8 || D > PADDED {
             return self.eval_grid_first(us, vs, |k, s, su, sv| {
                 points[k] = s;
                 normals[k] = crate::surface::unit_normal(&su, &sv).unwrap_or_else(crate::Point::<D>::zeros);
@@ -304,7 +308,12 @@ impl<const D: usize> TensorSpline<crate::Point<D>> {
         self.grid_points_normals::<W>(us, vs, points, normals)
     }
 
-    /// [`Self::eval_grid_points_normals`] with W = p_v + 1 known at compile time.
+    /// [`Self::eval_grid_points_normals`] with W = p_v + 1 known at compile time, for
+    /// D ≤ [`PADDED`]: the isocurve coefficients are kept as [`PADDED`]-wide arrays (unused
+    /// coordinates zero), so that each of the three W-term sums is one [`PADDED`]-wide
+    /// multiply and add per term, which the compiler emits as single vector instructions.
+    /// Each coordinate sees the operations of [`TensorSpline::eval_grid_first`]'s sums in
+    /// their order (the padding lanes are computed and dropped).
     #[inline(always)]
     fn grid_points_normals<const W: usize>(
         &self,
@@ -313,8 +322,7 @@ impl<const D: usize> TensorSpline<crate::Point<D>> {
         points: &mut [crate::Point<D>],
         normals: &mut [crate::Point<D>],
     ) {
-        let pu = self.u.degree();
-        let (wu, pv) = (pu + 1, W - 1);
+        let (pu, pv) = (self.u.degree(), W - 1);
         let nve = self.v.eval_count();
         // Per column: the first coefficient index and M_r(v), M_r′(v).
         let mut columns: Vec<(usize, [f64; W], [f64; W])> = Vec::with_capacity(vs.len());
@@ -327,62 +335,8 @@ impl<const D: usize> TensorSpline<crate::Point<D>> {
             let m1: [f64; W] = scratch[W..2 * W].try_into().expect("W basis derivatives");
             columns.push((sv - pv, m0, m1));
         }
-        if D <= PADDED {
-            return self.grid_points_normals_padded::<W>(us, &columns, points, normals);
-        }
-        let mut iso0 = vec![[0.0; D]; nve];
-        let mut iso1 = vec![[0.0; D]; nve];
-        let mut nu_basis = vec![0.0; 2 * wu];
-        let rows = points.chunks_exact_mut(vs.len()).zip(normals.chunks_exact_mut(vs.len()));
-        for (&u, (prow, nrow)) in us.iter().zip(rows) {
-            let u = self.u.normalise(u);
-            let su = self.u.span(u);
-            basis_derivatives(self.u.eval_knots(), pu, su, u, 1, &mut nu_basis);
-            iso0.fill([0.0; D]);
-            iso1.fill([0.0; D]);
-            for (r, row) in self.net[(su - pu) * nve..(su + 1) * nve].chunks_exact(nve).enumerate() {
-                let (n0, n1) = (nu_basis[r], nu_basis[wu + r]);
-                for ((x0, x1), y) in iso0.iter_mut().zip(iso1.iter_mut()).zip(row) {
-                    for c in 0..D {
-                        x0[c] += y[c] * n0;
-                        x1[c] += y[c] * n1;
-                    }
-                }
-            }
-            for ((base, m0, m1), (p, n)) in columns.iter().zip(prow.iter_mut().zip(nrow.iter_mut())) {
-                let c0: &[[f64; D]; W] = iso0[*base..*base + W].try_into().expect("W coefficients");
-                let c1: &[[f64; D]; W] = iso1[*base..*base + W].try_into().expect("W coefficients");
-                let (mut s, mut s_u, mut s_v) = ([0.0; D], [0.0; D], [0.0; D]);
-                for r in 0..W {
-                    for c in 0..D {
-                        s[c] += c0[r][c] * m0[r];
-                        s_v[c] += c0[r][c] * m1[r];
-                        s_u[c] += c1[r][c] * m0[r];
-                    }
-                }
-                *p = crate::Point::<D>::from(s);
-                *n = normal(&s_u, &s_v);
-            }
-        }
-    }
-
-    /// [`Self::grid_points_normals`] for D ≤ [`PADDED`]: the isocurve coefficients are kept
-    /// as [`PADDED`]-wide arrays (unused coordinates zero), so that each of the three
-    /// W-term sums is one [`PADDED`]-wide multiply and add per term, which the compiler
-    /// emits as single vector instructions, and the normal is formed from the first three
-    /// coordinates of the vectors. Each coordinate still sees the operations of the plain
-    /// path in their order (the padding lanes are computed and dropped), so the bits agree.
-    #[inline(always)]
-    fn grid_points_normals_padded<const W: usize>(
-        &self,
-        us: &[f64],
-        columns: &[(usize, [f64; W], [f64; W])],
-        points: &mut [crate::Point<D>],
-        normals: &mut [crate::Point<D>],
-    ) {
-        let pu = self.u.degree();
         let wu = pu + 1;
-        let nve = self.v.eval_count();
+        let columns = &columns[..];
         let columns_len = columns.len();
         let mut iso0 = vec![[0.0; PADDED]; nve];
         let mut iso1 = vec![[0.0; PADDED]; nve];
