@@ -14,6 +14,7 @@ mod trimmed;
 use serde_json::Value;
 use splinekit::surface::model::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
+    dupin_cyclide,
 };
 
 pub use crate::blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
@@ -74,6 +75,8 @@ macro_rules! surface_kinds {
                 Apple(AppleDoc) = "apple", python(base),
                 /// The heart curve turned about its axis.
                 HeartSurface(HeartSurfaceDoc) = "heart_surface", python(base),
+                /// Dupin cyclide.
+                DupinCyclide(DupinCyclideDoc) = "dupin_cyclide", python(fields "DupinCyclide"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.
@@ -253,4 +256,22 @@ model_document! {
     }
     build(|d| HeartSurface::new(d.scale))
     exact(|_d| SurfaceForm::Approximate)
+}
+
+model_document! {
+    /// `{"type":"dupin_cyclide","a":3,"c":1,"mu":2}`: the Dupin cyclide of a > c ≥ 0 and μ
+    /// (b² = a² − c²), exactly its rational biquadratic form on [0, 2π]²: the point at (u, v)
+    /// is (μ (c − a cos θ cos ψ) + b² cos θ, b sin θ (a − μ cos ψ), b sin ψ (c cos θ − μ))
+    /// / (a − c cos θ cos ψ) at the angles θ(u), ψ(v) of the nine-point NURBS circle (θ = u
+    /// at multiples of π/2); a ring cyclide for c < μ < a.
+    pub struct DupinCyclideDoc in Surfaces {
+        /// a (default 3).
+        pub a: f64 = 3.0,
+        /// c, 0 ≤ c < a (default 1).
+        pub c: f64 = 1.0,
+        /// μ (default 2).
+        pub mu: f64 = 2.0,
+    }
+    build(|d| dupin_cyclide(d.a, d.c, d.mu))
+    exact(|d| SurfaceForm::Spline(crate::views::NetView::of_nurbs(&dupin_cyclide(d.a, d.c, d.mu)?)))
 }
