@@ -4,9 +4,10 @@
 //! message is the command line's.
 
 use numpy::{PyArray1, PyArray2};
+use pyo3::PyClass;
 use pyo3::prelude::*;
 use serde_json::{Map, Value};
-use splinekit_scene::CurveDocument;
+use splinekit_scene::{CurveDocument, SplineView};
 
 use crate::curve::PyCurve;
 use crate::errors::{OrValueError, value_error};
@@ -38,60 +39,25 @@ pub fn points_array<'py>(py: Python<'py>, points: &[Vec<f64>]) -> PyResult<Bound
     PyArray2::from_vec2(py, points).map_err(value_error)
 }
 
-/// The control points, knots, weights and degree a spline document has.
-struct SplineFields<'a> {
-    control_points: &'a [Vec<f64>],
-    knots: Option<&'a [f64]>,
-    weights: Option<&'a [f64]>,
-    degree: usize,
-}
-
-fn spline_fields(doc: &CurveDocument) -> Option<SplineFields<'_>> {
-    Some(match doc {
-        CurveDocument::Bspline(d) => {
-            SplineFields { control_points: &d.control_points, knots: Some(&d.knots), weights: None, degree: d.degree }
-        }
-        CurveDocument::Nurbs(d) => SplineFields {
-            control_points: &d.control_points,
-            knots: Some(&d.knots),
-            weights: Some(&d.weights),
-            degree: d.degree,
-        },
-        CurveDocument::Bezier(d) => SplineFields {
-            control_points: &d.control_points,
-            knots: None,
-            weights: None,
-            degree: d.control_points.len().saturating_sub(1),
-        },
-        CurveDocument::RationalBezier(d) => SplineFields {
-            control_points: &d.control_points,
-            knots: None,
-            weights: Some(&d.weights),
-            degree: d.control_points.len().saturating_sub(1),
-        },
-        _ => return None,
-    })
-}
-
 /// Properties shared by the four control-point kinds (the base class's document).
 #[pymethods]
 impl PyCurve {
     /// The control points P_i, shape (n, D) (Bézier, rational Bézier, B-spline, NURBS).
     #[getter]
     fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        points_array(py, self.fields("control_points")?.control_points)
+        points_array(py, &self.fields("control_points")?.control_points)
     }
     /// The knot vector t_0 … t_{n+p}, shape (n + p + 1,) (B-spline and NURBS).
     #[getter]
     fn knots<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let knots = self.fields("knots")?.knots.ok_or_else(|| no_field(&self.doc, "knots"))?;
-        Ok(PyArray1::from_slice(py, knots))
+        Ok(PyArray1::from_slice(py, &knots))
     }
     /// The weights w_i > 0, shape (n,) (rational kinds; 1 for the others).
     #[getter]
     fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let f = self.fields("weights")?;
-        let w = f.weights.map(<[f64]>::to_vec).unwrap_or_else(|| vec![1.0; f.control_points.len()]);
+        let w = f.weights.map(|w| w.to_vec()).unwrap_or_else(|| vec![1.0; f.control_points.len()]);
         Ok(PyArray1::from_vec(py, w))
     }
     /// The degree p.
@@ -102,8 +68,8 @@ impl PyCurve {
 }
 
 impl PyCurve {
-    fn fields(&self, name: &str) -> PyResult<SplineFields<'_>> {
-        spline_fields(&self.doc).ok_or_else(|| no_field(&self.doc, name))
+    fn fields(&self, name: &str) -> PyResult<SplineView<'_>> {
+        self.doc.spline().ok_or_else(|| no_field(&self.doc, name))
     }
 }
 
@@ -251,43 +217,59 @@ pub fn curve_object(py: Python<'_>, doc: CurveDocument) -> PyResult<Bound<'_, Py
     wrap(py, PyCurve::new(doc)?, None)
 }
 
-/// The Python object of a built curve: its kind's class (a `BSpline` carries the fit
-/// `report` when it has one), else a plain `Curve`.
-pub fn wrap(py: Python<'_>, curve: PyCurve, report: Option<Py<FitReport>>) -> PyResult<Bound<'_, PyAny>> {
-    let kind = Kind::of(&curve.doc);
-    let init = PyClassInitializer::from(curve);
-    Ok(match kind {
-        Kind::Bspline => Bound::new(py, init.add_subclass(PyBSpline { report }))?.into_any(),
-        Kind::Nurbs => Bound::new(py, init.add_subclass(PyNurbs))?.into_any(),
-        Kind::Bezier => Bound::new(py, init.add_subclass(PyBezier))?.into_any(),
-        Kind::RationalBezier => Bound::new(py, init.add_subclass(PyRationalBezier))?.into_any(),
-        Kind::Hermite => Bound::new(py, init.add_subclass(PyHermite))?.into_any(),
-        Kind::CatmullRom => Bound::new(py, init.add_subclass(PyCatmullRom))?.into_any(),
-        Kind::Other => Bound::new(py, init)?.into_any(),
-    })
+/// A hand-written curve class, made for a built curve (a `BSpline` keeps the fit report).
+pub trait OwnClass: PyClass<BaseType = PyCurve> {
+    /// The class's part of the object.
+    fn made(report: Option<Py<FitReport>>) -> Self;
 }
 
-/// Which Python class a curve document gets.
-enum Kind {
-    Bspline,
-    Nurbs,
-    Bezier,
-    RationalBezier,
-    Hermite,
-    CatmullRom,
-    Other,
-}
-
-impl Kind {
-    fn of(doc: &CurveDocument) -> Kind {
-        match doc {
-            CurveDocument::Bspline(_) => Kind::Bspline,
-            CurveDocument::Nurbs(_) => Kind::Nurbs,
-            CurveDocument::Bezier(_) => Kind::Bezier,
-            CurveDocument::RationalBezier(_) => Kind::RationalBezier,
-            CurveDocument::Hermite(_) => Kind::Hermite,
-            CurveDocument::CatmullRom(_) => Kind::CatmullRom,
-            _ => Kind::Other,
-        }
+impl OwnClass for PyBSpline {
+    fn made(report: Option<Py<FitReport>>) -> Self {
+        PyBSpline { report }
     }
+}
+
+macro_rules! own_classes {
+    ($($class:ident),+) => {
+        $( impl OwnClass for $class {
+            fn made(_report: Option<Py<FitReport>>) -> Self {
+                $class
+            }
+        } )+
+    };
+}
+own_classes!(PyNurbs, PyBezier, PyRationalBezier, PyHermite, PyCatmullRom);
+
+/// The hand-written classes by the name of their kind's variant (`python(own)` in the
+/// registry).
+mod own {
+    pub use super::PyBSpline as Bspline;
+    pub use super::PyBezier as Bezier;
+    pub use super::PyCatmullRom as CatmullRom;
+    pub use super::PyHermite as Hermite;
+    pub use super::PyNurbs as Nurbs;
+    pub use super::PyRationalBezier as RationalBezier;
+}
+
+/// How a curve object of a kind is made: its base object, the fit report.
+type Maker =
+    for<'py> fn(Python<'py>, PyClassInitializer<PyCurve>, Option<Py<FitReport>>) -> PyResult<Bound<'py, PyAny>>;
+
+/// The base class of curve kinds.
+#[allow(dead_code)] // the base of the classes of kinds declared `python(fields "…")`
+type Base = PyCurve;
+
+/// The base object of a curve document given as keyword arguments.
+#[allow(dead_code)] // used by the classes of kinds declared `python(fields "…")`
+fn base_object(ty: &str, fields: Option<&Bound<'_, pyo3::types::PyDict>>) -> PyResult<PyClassInitializer<PyCurve>> {
+    base(crate::kind_classes::kwargs_document(ty, fields)?)
+}
+
+splinekit_scene::curve_kinds!(crate::kind_classes::python_classes);
+
+/// The Python object of a built curve: its kind's class (a `BSpline` carries the fit
+/// `report` when it has one).
+pub fn wrap(py: Python<'_>, curve: PyCurve, report: Option<Py<FitReport>>) -> PyResult<Bound<'_, PyAny>> {
+    let make = maker(&curve.doc);
+    make(py, PyClassInitializer::from(curve), report)
 }

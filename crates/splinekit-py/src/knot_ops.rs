@@ -27,18 +27,25 @@ enum Spline<const D: usize> {
 }
 
 fn spline<const D: usize>(doc: &CurveDocument) -> PyResult<Spline<D>> {
-    Ok(match doc {
-        CurveDocument::Bspline(d) => Spline::Polynomial(d.curve::<D>().or_value_error()?),
-        CurveDocument::Nurbs(d) => Spline::Rational(d.curve::<D>().or_value_error()?),
-        CurveDocument::Bezier(d) => {
-            let b = BezierCurve::<D>::new(to_points(&d.control_points)).or_value_error()?;
+    let Some(view) = doc.spline() else {
+        return Err(value_error(format!(
+            "type: this works on bezier, rational_bezier, bspline and nurbs curves, not {}",
+            doc.type_name()
+        )));
+    };
+    Ok(match (&view.knots, &view.weights) {
+        (Some(knots), None) => Spline::Polynomial(view.bspline::<D>(knots).or_value_error()?),
+        (Some(knots), Some(weights)) => Spline::Rational(view.nurbs::<D>(knots, weights).or_value_error()?),
+        (None, None) => {
+            let b = BezierCurve::<D>::new(to_points(&view.control_points)).or_value_error()?;
             Spline::Polynomial(
                 BSplineCurve::new(b.degree(), bezier_knots(b.degree()), b.control_points().to_vec())
                     .or_value_error()?,
             )
         }
-        CurveDocument::RationalBezier(d) => {
-            let b = RationalBezierCurve::<D>::new(to_points(&d.control_points), d.weights.clone()).or_value_error()?;
+        (None, Some(weights)) => {
+            let b =
+                RationalBezierCurve::<D>::new(to_points(&view.control_points), weights.to_vec()).or_value_error()?;
             let n = NurbsCurve::new(
                 b.degree(),
                 bezier_knots(b.degree()),
@@ -46,12 +53,6 @@ fn spline<const D: usize>(doc: &CurveDocument) -> PyResult<Spline<D>> {
                 b.weights().to_vec(),
             );
             Spline::Rational(n.or_value_error()?)
-        }
-        other => {
-            return Err(value_error(format!(
-                "type: this works on bezier, rational_bezier, bspline and nurbs curves, not {}",
-                other.type_name()
-            )));
         }
     })
 }

@@ -19,6 +19,7 @@ mod documents;
 mod errors;
 mod fitting;
 mod json_value;
+mod kind_classes;
 mod knot_ops;
 mod mesh;
 mod render;
@@ -43,6 +44,9 @@ fn _splinekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<surface_kinds::PyBSplineSurface>()?;
     m.add_class::<surface_kinds::PyNurbsSurface>()?;
     m.add_class::<surface_kinds::PyBezierSurface>()?;
+    let mut fields_classes = curve_kinds::add_classes(m)?;
+    fields_classes.extend(surface_kinds::add_classes(m)?);
+    m.add("_FIELDS_CLASSES", fields_classes)?;
     m.add_class::<documents::PyScene>()?;
     m.add_class::<fitting::FitReport>()?;
     m.add_class::<mesh::PyMesh>()?;

@@ -4,10 +4,11 @@
 
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods};
 use pyo3::prelude::*;
-use splinekit_scene::SurfaceDocument;
+use splinekit_scene::{NetView, SurfaceDocument};
 
 use crate::curve_kinds::document;
 use crate::errors::{OrValueError, value_error};
+use crate::fitting::FitReport;
 use crate::surface::PySurface;
 
 /// Knots in u and in v.
@@ -22,45 +23,9 @@ fn flag<'py>(py: Python<'py>, b: bool) -> PyResult<Bound<'py, PyAny>> {
     Ok(b.into_pyobject(py)?.to_owned().into_any())
 }
 
-/// The net and knots of a control-net document.
-struct NetFields<'a> {
-    control_points: &'a [Vec<Vec<f64>>],
-    knots: Option<(&'a [f64], &'a [f64])>,
-    weights: Option<&'a [Vec<f64>]>,
-    degrees: (usize, usize),
-}
-
-fn net_fields(doc: &SurfaceDocument) -> Option<NetFields<'_>> {
-    Some(match doc {
-        SurfaceDocument::BsplineSurface(d) => NetFields {
-            control_points: &d.control_points,
-            knots: Some((&d.knots_u, &d.knots_v)),
-            weights: None,
-            degrees: (d.degree_u, d.degree_v),
-        },
-        SurfaceDocument::NurbsSurface(d) => NetFields {
-            control_points: &d.control_points,
-            knots: Some((&d.knots_u, &d.knots_v)),
-            weights: Some(&d.weights),
-            degrees: (d.degree_u, d.degree_v),
-        },
-        SurfaceDocument::BezierSurface(d) => {
-            let rows = d.control_points.len();
-            let cols = d.control_points.first().map_or(0, Vec::len);
-            NetFields {
-                control_points: &d.control_points,
-                knots: None,
-                weights: None,
-                degrees: (rows.saturating_sub(1), cols.saturating_sub(1)),
-            }
-        }
-        _ => return None,
-    })
-}
-
 impl PySurface {
-    fn net(&self, name: &str) -> PyResult<NetFields<'_>> {
-        net_fields(&self.doc).ok_or_else(|| {
+    fn net(&self, name: &str) -> PyResult<NetView<'_>> {
+        self.doc.spline().ok_or_else(|| {
             pyo3::exceptions::PyAttributeError::new_err(format!("a {} surface has no {name}", self.doc.type_name()))
         })
     }
@@ -72,6 +37,7 @@ impl PySurface {
     #[getter]
     fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let net = self.net("control_points")?.control_points;
+        let net = &net[..];
         let (nu, nv, d) = (net.len(), net[0].len(), net[0][0].len());
         let flat: Vec<f64> = net.iter().flatten().flatten().copied().collect();
         PyArray1::from_vec(py, flat).reshape(vec![nu, nv, d]).map_err(value_error)
@@ -83,7 +49,7 @@ impl PySurface {
             .net("knots")?
             .knots
             .ok_or_else(|| pyo3::exceptions::PyAttributeError::new_err("a Bézier surface has no knots"))?;
-        Ok((PyArray1::from_slice(py, u), PyArray1::from_slice(py, v)))
+        Ok((PyArray1::from_slice(py, &u), PyArray1::from_slice(py, &v)))
     }
     /// The weights w_ij, shape (nu, nv) (1 for non-rational nets).
     #[getter]
@@ -212,19 +178,49 @@ impl PyBezierSurface {
     }
 }
 
-/// The Python object of a surface document: its kind's class, else a plain `Surface`.
-pub fn surface_object(py: Python<'_>, doc: SurfaceDocument) -> PyResult<Bound<'_, PyAny>> {
-    let kind = match &doc {
-        SurfaceDocument::BsplineSurface(_) => 1,
-        SurfaceDocument::NurbsSurface(_) => 2,
-        SurfaceDocument::BezierSurface(_) => 3,
-        _ => 0,
+/// A hand-written surface class (made for a built surface).
+pub trait OwnClass: pyo3::PyClass<BaseType = PySurface> {
+    /// The class's part of the object.
+    fn made(report: Option<Py<FitReport>>) -> Self;
+}
+
+macro_rules! own_classes {
+    ($($class:ident),+) => {
+        $( impl OwnClass for $class {
+            fn made(_report: Option<Py<FitReport>>) -> Self {
+                $class
+            }
+        } )+
     };
-    let init = PyClassInitializer::from(PySurface::new(doc)?);
-    Ok(match kind {
-        1 => Bound::new(py, init.add_subclass(PyBSplineSurface))?.into_any(),
-        2 => Bound::new(py, init.add_subclass(PyNurbsSurface))?.into_any(),
-        3 => Bound::new(py, init.add_subclass(PyBezierSurface))?.into_any(),
-        _ => Bound::new(py, init)?.into_any(),
-    })
+}
+own_classes!(PyBSplineSurface, PyNurbsSurface, PyBezierSurface);
+
+/// The hand-written classes by the name of their kind's variant (`python(own)` in the
+/// registry).
+mod own {
+    pub use super::PyBSplineSurface as BsplineSurface;
+    pub use super::PyBezierSurface as BezierSurface;
+    pub use super::PyNurbsSurface as NurbsSurface;
+}
+
+/// How a surface object of a kind is made from its base object (surfaces have no fit report).
+type Maker =
+    for<'py> fn(Python<'py>, PyClassInitializer<PySurface>, Option<Py<FitReport>>) -> PyResult<Bound<'py, PyAny>>;
+
+/// The base class of surface kinds.
+#[allow(dead_code)] // the base of the classes of kinds declared `python(fields "…")`
+type Base = PySurface;
+
+/// The base object of a surface document given as keyword arguments.
+#[allow(dead_code)] // used by the classes of kinds declared `python(fields "…")`
+fn base_object(ty: &str, fields: Option<&Bound<'_, pyo3::types::PyDict>>) -> PyResult<PyClassInitializer<PySurface>> {
+    base(crate::kind_classes::kwargs_document(ty, fields)?)
+}
+
+splinekit_scene::surface_kinds!(crate::kind_classes::python_classes);
+
+/// The Python object of a surface document: its kind's class (the registry's `python(…)`).
+pub fn surface_object(py: Python<'_>, doc: SurfaceDocument) -> PyResult<Bound<'_, PyAny>> {
+    let make = maker(&doc);
+    make(py, PyClassInitializer::from(PySurface::new(doc)?), None)
 }

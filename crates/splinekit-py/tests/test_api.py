@@ -29,9 +29,11 @@ def public(cls):
 
 def test_stubs_match_the_module():
     classes, functions = stub_names()
-    runtime = {n for n in dir(_splinekit) if not n.startswith("_")}
+    # The classes the registry makes from a kind's fields come with no hand-written stub.
+    made = set(_splinekit._FIELDS_CLASSES)
+    runtime = {n for n in dir(_splinekit) if not n.startswith("_")} - made
     runtime_classes = {n for n in runtime if inspect.isclass(getattr(_splinekit, n))}
-    assert runtime_classes == set(classes)
+    assert runtime_classes == set(classes) - made
     assert {n for n in runtime if callable(getattr(_splinekit, n))} - runtime_classes == functions
     for name, methods in classes.items():
         cls = getattr(_splinekit, name)

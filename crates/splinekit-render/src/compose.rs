@@ -235,7 +235,7 @@ fn object(
 fn decorate(decoration: Decoration<'_>, style: &StyleDoc, out: &mut RenderScene) -> Result<(), DocumentError> {
     match decoration {
         Decoration::None => {}
-        Decoration::ControlPolygon { points, closed } => {
+        Decoration::ControlPolygon { points, closed, .. } => {
             if style.control_net {
                 polygon(points, closed, out);
             }

@@ -80,6 +80,10 @@ pub enum BFunctionDoc {
 }
 
 impl BFunctionDoc {
+    /// Every `type` of B-function, the default (ERBS) first.
+    pub const TYPES: [&'static str; 7] =
+        ["erbs", "polynomial", "trigonometric", "half_cosine", "rational", "beta", "linear"];
+
     /// Parses a B-function object.
     pub fn parse(value: &Value) -> Result<Self> {
         Self::from_value(value.clone())

@@ -18,52 +18,68 @@ pub use splines::{BSplineDoc, BezierDoc, CatmullRomDoc, HermiteDoc, LineDoc, Nur
 use crate::defaults::is_false;
 use crate::dimension::Curves;
 use crate::error::{DocumentError, Result};
+use crate::forms::CurveForm;
 use crate::json::split_type;
-use crate::registry::{document_kinds, model_document};
+use crate::registry::model_document;
 
-document_kinds! {
-    /// A curve shape document: `{"type": "…", …fields…}`.
-    pub enum CurveDocument of Curves {
-        /// Bézier curve.
-        Bezier(BezierDoc) = "bezier",
-        /// Rational Bézier curve.
-        RationalBezier(RationalBezierDoc) = "rational_bezier",
-        /// B-spline curve.
-        Bspline(BSplineDoc) = "bspline",
-        /// NURBS curve.
-        Nurbs(NurbsDoc) = "nurbs",
-        /// Cubic Hermite spline.
-        Hermite(HermiteDoc) = "hermite",
-        /// Catmull–Rom spline.
-        CatmullRom(CatmullRomDoc) = "catmull_rom",
-        /// Line segment.
-        Line(LineDoc) = "line",
-        /// Circle.
-        Circle(CircleDoc) = "circle",
-        /// Ellipse.
-        Ellipse(EllipseDoc) = "ellipse",
-        /// Circular helix.
-        Helix(HelixDoc) = "helix",
-        /// Heart curve.
-        Heart(HeartDoc) = "heart",
-        /// Rose curve.
-        Rose(RoseDoc) = "rose",
-        /// Lissajous figure.
-        Lissajous(LissajousDoc) = "lissajous",
-        /// Trefoil knot.
-        Trefoil(TrefoilDoc) = "trefoil",
-        /// Butterfly curve.
-        Butterfly(ButterflyDoc) = "butterfly",
-        /// Hypotrochoid or epitrochoid (spirograph curve).
-        Trochoid(TrochoidDoc) = "trochoid",
-        /// A B-function as a 1-D curve.
-        Bfunction(BFunctionShapeDoc) = "bfunction",
-        /// Blend of two curves.
-        Blend(BlendDoc) = "blend",
-        /// Blending-spline curve.
-        BlendingSpline(BlendingSplineDoc) = "blending_spline",
-    }
+/// The registry of curve kinds: `curve_kinds!(callback)` calls the macro `callback` with the
+/// list, in the syntax of `document_kinds!` (see [`crate::registry`]). This crate makes
+/// the document enum of it; front ends make their per-kind code of it (the Python
+/// classes), so that every kind appears in each of them.
+///
+/// Each line is `Variant(Doc) = "type", python(CLASS),` where CLASS is the kind's Python
+/// class: `base` (the plain `Curve`), `own` (splinekit-py's hand-written class named
+/// after the variant) or `fields "Name"` (a class `Name` whose constructor takes the
+/// document's fields as keyword arguments).
+#[macro_export]
+macro_rules! curve_kinds {
+    ($callback:path) => {
+        $callback! {
+            /// A curve shape document: `{"type": "…", …fields…}`.
+            pub enum CurveDocument of Curves {
+                /// Bézier curve.
+                Bezier(BezierDoc) = "bezier", python(own),
+                /// Rational Bézier curve.
+                RationalBezier(RationalBezierDoc) = "rational_bezier", python(own),
+                /// B-spline curve.
+                Bspline(BSplineDoc) = "bspline", python(own),
+                /// NURBS curve.
+                Nurbs(NurbsDoc) = "nurbs", python(own),
+                /// Cubic Hermite spline.
+                Hermite(HermiteDoc) = "hermite", python(own),
+                /// Catmull–Rom spline.
+                CatmullRom(CatmullRomDoc) = "catmull_rom", python(own),
+                /// Line segment.
+                Line(LineDoc) = "line", python(base),
+                /// Circle.
+                Circle(CircleDoc) = "circle", python(base),
+                /// Ellipse.
+                Ellipse(EllipseDoc) = "ellipse", python(base),
+                /// Circular helix.
+                Helix(HelixDoc) = "helix", python(base),
+                /// Heart curve.
+                Heart(HeartDoc) = "heart", python(base),
+                /// Rose curve.
+                Rose(RoseDoc) = "rose", python(base),
+                /// Lissajous figure.
+                Lissajous(LissajousDoc) = "lissajous", python(base),
+                /// Trefoil knot.
+                Trefoil(TrefoilDoc) = "trefoil", python(base),
+                /// Butterfly curve.
+                Butterfly(ButterflyDoc) = "butterfly", python(base),
+                /// Hypotrochoid or epitrochoid (spirograph curve).
+                Trochoid(TrochoidDoc) = "trochoid", python(base),
+                /// A B-function as a 1-D curve.
+                Bfunction(BFunctionShapeDoc) = "bfunction", python(base),
+                /// Blend of two curves.
+                Blend(BlendDoc) = "blend", python(base),
+                /// Blending-spline curve.
+                BlendingSpline(BlendingSplineDoc) = "blending_spline", python(base),
+            }
+        }
+    };
 }
+crate::curve_kinds!(crate::registry::document_kinds);
 
 /// The curve `type` names, for messages.
 pub const CURVE_TYPES: &[&str] = CurveDocument::TYPES;
@@ -93,6 +109,7 @@ model_document! {
         pub radius: f64 = 1.0,
     }
     build(|d| Circle::new(d.radius))
+    exact(|d| CurveForm::Circle { radius: d.radius })
 }
 
 model_document! {
@@ -104,6 +121,7 @@ model_document! {
         pub b: f64 = 1.0,
     }
     build(|d| Ellipse::new(d.a, d.b))
+    exact(|d| CurveForm::Ellipse { a: d.a, b: d.b })
 }
 
 model_document! {
@@ -117,6 +135,7 @@ model_document! {
         pub turns: f64 = 3.0,
     }
     build(|d| Helix::new(d.radius, d.pitch, d.turns))
+    exact(|_d| CurveForm::Approximate)
 }
 
 model_document! {
@@ -126,6 +145,7 @@ model_document! {
         pub scale: f64 = 1.0,
     }
     build(|d| Heart::new(d.scale))
+    exact(|_d| CurveForm::Approximate)
 }
 
 model_document! {
@@ -140,6 +160,7 @@ model_document! {
         pub planar: bool = false,
     }
     build(|d| Rose::new(d.radius, d.n, d.planar))
+    exact(|_d| CurveForm::Approximate)
 }
 
 model_document! {
@@ -153,6 +174,7 @@ model_document! {
         pub delta: f64 = std::f64::consts::FRAC_PI_2,
     }
     build(|d| Lissajous::new(d.amplitudes, d.frequencies, d.delta))
+    exact(|_d| CurveForm::Approximate)
 }
 
 model_document! {
@@ -162,6 +184,7 @@ model_document! {
         pub scale: f64 = 1.0,
     }
     build(|d| Trefoil::new(d.scale))
+    exact(|_d| CurveForm::Approximate)
 }
 
 model_document! {
@@ -171,6 +194,7 @@ model_document! {
         pub scale: f64 = 1.0,
     }
     build(|d| Butterfly::new(d.scale))
+    exact(|_d| CurveForm::Approximate)
 }
 
 model_document! {
@@ -201,6 +225,7 @@ model_document! {
             Some(turns) => Trochoid::with_turns(rolling, d.fixed_radius, d.rolling_radius, d.distance, turns),
         }
     })
+    exact(|_d| CurveForm::Approximate)
 }
 
 /// Where the circle of a trochoid rolls: `"inside"` or `"outside"` the fixed circle.

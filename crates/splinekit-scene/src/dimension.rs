@@ -6,6 +6,8 @@
 //! run-time dimension, [`AnyDimension`] holds a built curve or surface of any supported
 //! dimension, and a [`DimensionVisitor`] is handed the shape back at its compile-time D.
 
+use crate::forms::{CurveForm, SurfaceForm};
+use crate::views::{NetView, SplineView};
 use std::any::Any;
 
 use splinekit::curve::Curve;
@@ -57,6 +59,10 @@ pub fn unsupported(field: &str, dimension: usize) -> DocumentError {
 pub trait ShapeFamily {
     /// The shape in dimension D (`dyn Curve<D>` or `dyn Surface<D>`).
     type Shape<const D: usize>: ?Sized + 'static;
+    /// The spline data a document of the family may hold ([`SplineView`] or [`NetView`]).
+    type Spline<'a>;
+    /// The exact forms of the family ([`CurveForm`] or [`SurfaceForm`]).
+    type Form<'a>;
 }
 
 /// Curves: `dyn Curve<D>`.
@@ -69,10 +75,14 @@ pub enum Surfaces {}
 
 impl ShapeFamily for Curves {
     type Shape<const D: usize> = dyn Curve<D>;
+    type Spline<'a> = SplineView<'a>;
+    type Form<'a> = CurveForm<'a>;
 }
 
 impl ShapeFamily for Surfaces {
     type Shape<const D: usize> = dyn Surface<D>;
+    type Spline<'a> = NetView<'a>;
+    type Form<'a> = SurfaceForm<'a>;
 }
 
 /// A boxed curve or surface of a dimension known only at run time.

@@ -142,11 +142,17 @@ pub fn refine(doc: &CurveDocument, r: &Refinement) -> Result<Refined> {
 }
 
 fn refine_in<const D: usize>(doc: &CurveDocument, r: &Refinement) -> Result<Refined> {
-    match doc {
-        CurveDocument::Bspline(d) => refine_bspline(d.curve::<D>()?, r),
-        CurveDocument::Nurbs(d) => refine_nurbs(d.curve::<D>()?, r),
-        CurveDocument::Bezier(d) => {
-            let b = BezierCurve::new(to_points::<D>(&d.control_points))?;
+    let Some(view) = doc.spline() else {
+        return Err(DocumentError::new(
+            "type",
+            format!("refine works on bezier, rational_bezier, bspline and nurbs documents, not {}", doc.type_name()),
+        ));
+    };
+    match (&view.knots, &view.weights) {
+        (Some(knots), None) => refine_bspline(view.bspline::<D>(knots)?, r),
+        (Some(knots), Some(weights)) => refine_nurbs(view.nurbs::<D>(knots, weights)?, r),
+        (None, None) => {
+            let b = BezierCurve::new(to_points::<D>(&view.control_points))?;
             if let Refinement::Elevate(t) = r {
                 let mut e = b;
                 for _ in 0..*t {
@@ -159,8 +165,8 @@ fn refine_in<const D: usize>(doc: &CurveDocument, r: &Refinement) -> Result<Refi
             }
             refine_bspline(BSplineCurve::clamped_uniform(b.degree(), b.control_points().to_vec())?, r)
         }
-        CurveDocument::RationalBezier(d) => {
-            let b = RationalBezierCurve::new(to_points::<D>(&d.control_points), d.weights.clone())?;
+        (None, Some(weights)) => {
+            let b = RationalBezierCurve::new(to_points::<D>(&view.control_points), weights.to_vec())?;
             let p = b.degree();
             let n = NurbsCurve::new(p, bezier_knots(p), b.control_points().to_vec(), b.weights().to_vec())?;
             let out = refine_nurbs(n, r)?;
@@ -176,9 +182,5 @@ fn refine_in<const D: usize>(doc: &CurveDocument, r: &Refinement) -> Result<Refi
                 (_, document) => Ok(Refined { document, removed: out.removed }),
             }
         }
-        other => Err(DocumentError::new(
-            "type",
-            format!("refine works on bezier, rational_bezier, bspline and nurbs documents, not {}", other.type_name()),
-        )),
     }
 }

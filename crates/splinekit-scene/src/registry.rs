@@ -56,6 +56,18 @@ pub trait DocumentKind: KindName + Clone + Serialize + DeserializeOwned {
     /// Poses every animated blending spline in the document, nested ones too, at `time`
     /// (seconds); kinds without animations and without nested documents do nothing.
     fn set_time(&mut self, time: f64);
+
+    /// The control points, knots and weights the document holds, for the operations and
+    /// editors that work on them (refinement, knot operations, Properties); `None` for
+    /// kinds that hold other fields.
+    fn spline(&self) -> Option<<Self::Family as ShapeFamily>::Spline<'_>>;
+
+    /// What the shape is exactly (a spline, a conic, a quadric, …; see [`crate::forms`]):
+    /// what exporters write. An error where the document's numbers make no shape.
+    fn exact_form(&self) -> Result<<Self::Family as ShapeFamily>::Form<'_>>;
+
+    /// Whether editors offer a blending spline of this kind's example (the model shapes).
+    const BLENDING_MODEL: bool;
 }
 
 /// What a scene draws besides a shape when its style asks for control nets
@@ -68,6 +80,9 @@ pub enum Decoration<'a> {
     ControlPolygon {
         /// The points, each of 1 to 4 coordinates.
         points: &'a [Vec<f64>],
+        /// The document field that holds them (`control_points`, or `points` of
+        /// interpolating kinds), for editors that move them.
+        field: &'static str,
         /// Whether the last point joins the first.
         closed: bool,
     },
@@ -102,7 +117,7 @@ macro_rules! document_kinds {
     (
         $(#[$meta:meta])*
         pub enum $Enum:ident of $Family:ty {
-            $( $(#[$variant_meta:meta])* $Variant:ident($Doc:ty) = $name:literal, )+
+            $( $(#[$variant_meta:meta])* $Variant:ident($Doc:ty) = $name:literal, python($($python:tt)*), )+
         }
     ) => {
         $(#[$meta])*
@@ -189,6 +204,28 @@ macro_rules! document_kinds {
                 }
             }
 
+            /// The control points, knots and weights the document holds (see
+            /// [`DocumentKind::spline`](crate::registry::DocumentKind::spline)).
+            pub fn spline(&self) -> Option<<$Family as $crate::dimension::ShapeFamily>::Spline<'_>> {
+                match self {
+                    $( Self::$Variant(d) => $crate::registry::DocumentKind::spline(d), )+
+                }
+            }
+
+            /// What the shape is exactly (see [`crate::forms`]).
+            pub fn exact_form(&self) -> $crate::Result<<$Family as $crate::dimension::ShapeFamily>::Form<'_>> {
+                match self {
+                    $( Self::$Variant(d) => $crate::registry::DocumentKind::exact_form(d), )+
+                }
+            }
+
+            /// Whether editors offer a blending spline of this kind's example.
+            pub fn blending_model(&self) -> bool {
+                match self {
+                    $( Self::$Variant(_) => <$Doc as $crate::registry::DocumentKind>::BLENDING_MODEL, )+
+                }
+            }
+
             /// The document as JSON.
             pub fn to_value(&self) -> serde_json::Value {
                 serde_json::to_value(self).expect("documents serialise")
@@ -242,8 +279,10 @@ impl ModelFamily for Surfaces {
 
 /// Declares a model shape's document: a struct of fields that all have defaults (given
 /// after `=`; they are the struct's `Default` and serde's for missing fields), and its
-/// [`DocumentKind`]: 3-D, built as `build(|d| …)` from the document `d`; its example is
-/// its default document, and it has nothing to decorate or pose.
+/// [`DocumentKind`]: 3-D, built as `build(|d| …)` from the document `d`, exactly the form
+/// `exact(|d| …)` (a [`crate::forms`] value; `?` may refuse the document); its example is
+/// its default document, it holds no spline, has nothing to decorate or pose, and editors
+/// offer blending splines of it.
 ///
 /// ```text
 /// model_document! {
@@ -253,6 +292,7 @@ impl ModelFamily for Surfaces {
 ///         pub radius: f64 = 1.0,
 ///     }
 ///     build(|d| Circle::new(d.radius))
+///     exact(|d| CurveForm::Circle { radius: d.radius })
 /// }
 /// ```
 macro_rules! model_document {
@@ -262,6 +302,7 @@ macro_rules! model_document {
             $( $(#[$field_meta:meta])* pub $field:ident: $ty:ty = $default:expr, )+
         }
         build(|$d:ident| $build:expr)
+        exact(|$e:ident| $exact:expr)
     ) => {
         $(#[$meta])*
         #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -301,6 +342,14 @@ macro_rules! model_document {
                 $crate::registry::Decoration::None
             }
             fn set_time(&mut self, _time: f64) {}
+            fn spline(&self) -> Option<<$family as $crate::dimension::ShapeFamily>::Spline<'_>> {
+                None
+            }
+            fn exact_form(&self) -> $crate::Result<<$family as $crate::dimension::ShapeFamily>::Form<'_>> {
+                let $e = self;
+                Ok($exact)
+            }
+            const BLENDING_MODEL: bool = true;
         }
     };
 }

@@ -14,6 +14,7 @@ mod trimmed;
 use serde_json::Value;
 use splinekit::surface::model::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
+    dupin_cyclide,
 };
 
 pub use crate::blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
@@ -24,61 +25,79 @@ pub use trimmed::TrimmedDoc;
 
 use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
+use crate::forms::SurfaceForm;
 use crate::json::split_type;
 use crate::points::to_point;
-use crate::registry::{document_kinds, model_document};
+use crate::registry::model_document;
 
-document_kinds! {
-    /// A surface shape document: `{"type": "…", …fields…}`.
-    pub enum SurfaceDocument of Surfaces {
-        /// Tensor-product Bézier surface.
-        BezierSurface(BezierSurfaceDoc) = "bezier_surface",
-        /// Tensor-product B-spline surface.
-        BsplineSurface(BSplineSurfaceDoc) = "bspline_surface",
-        /// NURBS surface.
-        NurbsSurface(NurbsSurfaceDoc) = "nurbs_surface",
-        /// Plane.
-        Plane(PlaneDoc) = "plane",
-        /// Cylinder.
-        Cylinder(CylinderDoc) = "cylinder",
-        /// Cone.
-        Cone(ConeDoc) = "cone",
-        /// Sphere.
-        Sphere(SphereDoc) = "sphere",
-        /// Torus.
-        Torus(TorusDoc) = "torus",
-        /// Möbius strip.
-        Mobius(MobiusDoc) = "mobius",
-        /// Figure-8 Klein bottle.
-        KleinBottle(KleinBottleDoc) = "klein_bottle",
-        /// Enneper's minimal surface.
-        Enneper(EnneperDoc) = "enneper",
-        /// Helicoid.
-        Helicoid(HelicoidDoc) = "helicoid",
-        /// Seashell.
-        Seashell(SeashellDoc) = "seashell",
-        /// Apple.
-        Apple(AppleDoc) = "apple",
-        /// The heart curve turned about its axis.
-        HeartSurface(HeartSurfaceDoc) = "heart_surface",
-        /// Surface of revolution.
-        Revolution(RevolutionDoc) = "revolution",
-        /// Ruled surface between two curves.
-        Ruled(RuledDoc) = "ruled",
-        /// Extrusion of a curve.
-        Extrusion(ExtrusionDoc) = "extrusion",
-        /// Coons patch of four boundary curves.
-        Coons(CoonsDoc) = "coons",
-        /// Sweep of a profile along a path.
-        Sweep(SweepDoc) = "sweep",
-        /// Trimmed surface.
-        Trimmed(TrimmedDoc) = "trimmed",
-        /// A surface moved rigidly into a frame.
-        Placed(PlacedDoc) = "placed",
-        /// Blending-spline surface.
-        BlendingSplineSurface(BlendingSplineSurfaceDoc) = "blending_spline_surface",
-    }
+/// The registry of surface kinds: `surface_kinds!(callback)` calls the macro `callback` with the
+/// list, in the syntax of `document_kinds!` (see [`crate::registry`]). This crate makes
+/// the document enum of it; front ends make their per-kind code of it (the Python
+/// classes), so that every kind appears in each of them.
+///
+/// Each line is `Variant(Doc) = "type", python(CLASS),` where CLASS is the kind's Python
+/// class: `base` (the plain `Surface`), `own` (splinekit-py's hand-written class named
+/// after the variant) or `fields "Name"` (a class `Name` whose constructor takes the
+/// document's fields as keyword arguments).
+#[macro_export]
+macro_rules! surface_kinds {
+    ($callback:path) => {
+        $callback! {
+            /// A surface shape document: `{"type": "…", …fields…}`.
+            pub enum SurfaceDocument of Surfaces {
+                /// Tensor-product Bézier surface.
+                BezierSurface(BezierSurfaceDoc) = "bezier_surface", python(own),
+                /// Tensor-product B-spline surface.
+                BsplineSurface(BSplineSurfaceDoc) = "bspline_surface", python(own),
+                /// NURBS surface.
+                NurbsSurface(NurbsSurfaceDoc) = "nurbs_surface", python(own),
+                /// Plane.
+                Plane(PlaneDoc) = "plane", python(base),
+                /// Cylinder.
+                Cylinder(CylinderDoc) = "cylinder", python(base),
+                /// Cone.
+                Cone(ConeDoc) = "cone", python(base),
+                /// Sphere.
+                Sphere(SphereDoc) = "sphere", python(base),
+                /// Torus.
+                Torus(TorusDoc) = "torus", python(base),
+                /// Möbius strip.
+                Mobius(MobiusDoc) = "mobius", python(base),
+                /// Figure-8 Klein bottle.
+                KleinBottle(KleinBottleDoc) = "klein_bottle", python(base),
+                /// Enneper's minimal surface.
+                Enneper(EnneperDoc) = "enneper", python(base),
+                /// Helicoid.
+                Helicoid(HelicoidDoc) = "helicoid", python(base),
+                /// Seashell.
+                Seashell(SeashellDoc) = "seashell", python(base),
+                /// Apple.
+                Apple(AppleDoc) = "apple", python(base),
+                /// The heart curve turned about its axis.
+                HeartSurface(HeartSurfaceDoc) = "heart_surface", python(base),
+                /// Dupin cyclide.
+                DupinCyclide(DupinCyclideDoc) = "dupin_cyclide", python(fields "DupinCyclide"),
+                /// Surface of revolution.
+                Revolution(RevolutionDoc) = "revolution", python(base),
+                /// Ruled surface between two curves.
+                Ruled(RuledDoc) = "ruled", python(base),
+                /// Extrusion of a curve.
+                Extrusion(ExtrusionDoc) = "extrusion", python(base),
+                /// Coons patch of four boundary curves.
+                Coons(CoonsDoc) = "coons", python(base),
+                /// Sweep of a profile along a path.
+                Sweep(SweepDoc) = "sweep", python(base),
+                /// Trimmed surface.
+                Trimmed(TrimmedDoc) = "trimmed", python(base),
+                /// A surface moved rigidly into a frame.
+                Placed(PlacedDoc) = "placed", python(base),
+                /// Blending-spline surface.
+                BlendingSplineSurface(BlendingSplineSurfaceDoc) = "blending_spline_surface", python(base),
+            }
+        }
+    };
 }
+crate::surface_kinds!(crate::registry::document_kinds);
 
 /// The surface `type` names, for messages.
 pub const SURFACE_TYPES: &[&str] = SurfaceDocument::TYPES;
@@ -108,6 +127,7 @@ model_document! {
         pub v_axis: Vec<f64> = vec![0.0, 1.0, 0.0],
     }
     build(|d| Plane::new(to_point("origin", &d.origin)?, to_point("u_axis", &d.u_axis)?, to_point("v_axis", &d.v_axis)?))
+    exact(|d| SurfaceForm::Plane { origin: &d.origin, u_axis: &d.u_axis, v_axis: &d.v_axis })
 }
 
 model_document! {
@@ -119,6 +139,7 @@ model_document! {
         pub height: f64 = 1.0,
     }
     build(|d| Cylinder::new(d.radius, d.height))
+    exact(|d| SurfaceForm::Cylinder { radius: d.radius, height: d.height })
 }
 
 model_document! {
@@ -130,6 +151,7 @@ model_document! {
         pub height: f64 = 2.0,
     }
     build(|d| Cone::new(d.radius, d.height))
+    exact(|d| SurfaceForm::Cone { radius: d.radius, height: d.height })
 }
 
 model_document! {
@@ -139,6 +161,7 @@ model_document! {
         pub radius: f64 = 1.0,
     }
     build(|d| Sphere::new(d.radius))
+    exact(|d| SurfaceForm::Sphere { radius: d.radius })
 }
 
 model_document! {
@@ -150,6 +173,7 @@ model_document! {
         pub minor_radius: f64 = 1.0,
     }
     build(|d| Torus::new(d.major_radius, d.minor_radius))
+    exact(|d| SurfaceForm::Torus { major_radius: d.major_radius, minor_radius: d.minor_radius })
 }
 
 model_document! {
@@ -161,6 +185,7 @@ model_document! {
         pub half_width: f64 = 0.5,
     }
     build(|d| MobiusStrip::new(d.radius, d.half_width))
+    exact(|_d| SurfaceForm::Approximate)
 }
 
 model_document! {
@@ -170,6 +195,7 @@ model_document! {
         pub radius: f64 = 3.0,
     }
     build(|d| KleinBottle::new(d.radius))
+    exact(|_d| SurfaceForm::Approximate)
 }
 
 model_document! {
@@ -179,6 +205,7 @@ model_document! {
         pub extent: f64 = 2.0,
     }
     build(|d| Enneper::new(d.extent))
+    exact(|_d| SurfaceForm::Approximate)
 }
 
 model_document! {
@@ -192,6 +219,7 @@ model_document! {
         pub turns: f64 = 2.0,
     }
     build(|d| Helicoid::new(d.radius, d.pitch, d.turns))
+    exact(|_d| SurfaceForm::Approximate)
 }
 
 model_document! {
@@ -207,6 +235,7 @@ model_document! {
         pub turns: f64 = 2.0,
     }
     build(|d| Seashell::new(d.a, d.b, d.c, d.turns))
+    exact(|_d| SurfaceForm::Approximate)
 }
 
 model_document! {
@@ -216,6 +245,7 @@ model_document! {
         pub scale: f64 = 1.0,
     }
     build(|d| Apple::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
 }
 
 model_document! {
@@ -225,4 +255,23 @@ model_document! {
         pub scale: f64 = 1.0,
     }
     build(|d| HeartSurface::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}
+
+model_document! {
+    /// `{"type":"dupin_cyclide","a":3,"c":1,"mu":2}`: the Dupin cyclide of a > c ≥ 0 and μ
+    /// (b² = a² − c²), exactly its rational biquadratic form on [0, 2π]²: the point at (u, v)
+    /// is (μ (c − a cos θ cos ψ) + b² cos θ, b sin θ (a − μ cos ψ), b sin ψ (c cos θ − μ))
+    /// / (a − c cos θ cos ψ) at the angles θ(u), ψ(v) of the nine-point NURBS circle (θ = u
+    /// at multiples of π/2); a ring cyclide for c < μ < a.
+    pub struct DupinCyclideDoc in Surfaces {
+        /// a (default 3).
+        pub a: f64 = 3.0,
+        /// c, 0 ≤ c < a (default 1).
+        pub c: f64 = 1.0,
+        /// μ (default 2).
+        pub mu: f64 = 2.0,
+    }
+    build(|d| dupin_cyclide(d.a, d.c, d.mu))
+    exact(|d| SurfaceForm::Spline(crate::views::NetView::of_nurbs(&dupin_cyclide(d.a, d.c, d.mu)?)))
 }

@@ -194,10 +194,10 @@ fn posing_reaches_animations_nested_in_other_documents() {
 fn decorations_are_the_documents_own_points_and_pieces() {
     for doc in CurveDocument::examples() {
         match (&doc, doc.decoration()) {
-            (CurveDocument::Bezier(d), Decoration::ControlPolygon { points, closed }) => {
+            (CurveDocument::Bezier(d), Decoration::ControlPolygon { points, closed, .. }) => {
                 assert!(points == d.control_points.as_slice() && !closed)
             }
-            (CurveDocument::CatmullRom(d), Decoration::ControlPolygon { points, closed }) => {
+            (CurveDocument::CatmullRom(d), Decoration::ControlPolygon { points, closed, .. }) => {
                 assert!(points == d.points.as_slice() && closed == d.closed)
             }
             (CurveDocument::BlendingSpline(d), Decoration::LocalCurves(e)) => assert!(std::ptr::eq(d, e)),

@@ -34,3 +34,38 @@ fn exports_exactly_agrees_with_the_export() {
     }
     assert!(exact >= 14 && approximated >= 6, "{exact} exact, {approximated} approximated");
 }
+
+/// Every kind of the registry: what its declared exact form promises, the export does (an
+/// exact kind's example leaves exactly, measured at 0 deviation; the others are approximated
+/// or, blending splines, exact as polynomials).
+#[test]
+fn every_kinds_example_exports_as_its_form_says() {
+    use splinekit_scene::{CurveDocument, CurveForm, SurfaceDocument, SurfaceForm};
+    // STEP geometry is 2-D or 3-D (a B-function is a 1-D curve).
+    for doc in CurveDocument::examples().into_iter().filter(|d| matches!(d.dimension(), Ok(2 | 3))) {
+        let promised = !matches!(doc.exact_form().unwrap(), CurveForm::Approximate | CurveForm::BlendingSpline(_));
+        let e = export_shape(&ShapeDocument::Curve(doc.clone()), "x", 1e-4).unwrap();
+        if promised {
+            assert_eq!((e.form.clone(), e.max_deviation), (Form::Exact, 0.0), "{}", doc.type_name());
+        }
+    }
+    for doc in SurfaceDocument::examples() {
+        let form = doc.exact_form().unwrap();
+        let promised = matches!(
+            form,
+            SurfaceForm::Spline(_)
+                | SurfaceForm::Plane { .. }
+                | SurfaceForm::Cylinder { .. }
+                | SurfaceForm::Cone { .. }
+                | SurfaceForm::Sphere { .. }
+                | SurfaceForm::Torus { .. }
+        );
+        let e = export_shape(&ShapeDocument::Surface(doc.clone()), "x", 1e-4).unwrap();
+        if promised {
+            assert_eq!((e.form.clone(), e.max_deviation), (Form::Exact, 0.0), "{}", doc.type_name());
+        }
+        if matches!(form, SurfaceForm::Approximate) {
+            assert_eq!(e.form, Form::Approximated, "{}", doc.type_name());
+        }
+    }
+}

@@ -131,19 +131,16 @@ pub fn handles_with<'a>(
             shape.set_time(t);
         }
         let within = |e: DocumentError| e.within(&format!("objects[{object}].shape"));
-        let (decoration, field) = match &shape {
-            ShapeDocument::Curve(c) => {
-                let interpolating = matches!(c.type_name(), "hermite" | "catmull_rom");
-                (c.decoration(), if interpolating { "points" } else { "control_points" })
-            }
-            ShapeDocument::Surface(s) => (s.decoration(), "control_points"),
+        let decoration = match &shape {
+            ShapeDocument::Curve(c) => c.decoration(),
+            ShapeDocument::Surface(s) => s.decoration(),
         };
         let mut push = |kind, p: &[f64], o: &[f64], dimension| {
             out.push(Handle { object, kind, position: to3(p), origin: to3(o), dimension })
         };
         match decoration {
             Decoration::None => {}
-            Decoration::ControlPolygon { points, .. } => {
+            Decoration::ControlPolygon { points, field, .. } => {
                 for (i, p) in points.iter().enumerate() {
                     push(HandleKind::ControlPoint(i, field), p, p, p.len().min(3));
                 }

@@ -27,11 +27,11 @@ pub enum KnotTool {
     Remove,
 }
 
-/// The curve document of object `object`'s shape, when it is one `refine` works on.
+/// The curve document of object `object`'s shape, when it is one `refine` works on: one
+/// whose kind declares a spline view.
 fn refinable(shape: &ShapeDocument) -> Result<&CurveDocument, String> {
     match shape {
-        ShapeDocument::Curve(c @ (CurveDocument::Bspline(_) | CurveDocument::Nurbs(_))) => Ok(c),
-        ShapeDocument::Curve(c @ (CurveDocument::Bezier(_) | CurveDocument::RationalBezier(_))) => Ok(c),
+        ShapeDocument::Curve(c) if c.spline().is_some() => Ok(c),
         ShapeDocument::Curve(c) => {
             Err(format!("knot edits work on bezier, rational_bezier, bspline and nurbs curves, not {}", c.type_name()))
         }

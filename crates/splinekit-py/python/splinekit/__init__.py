@@ -58,3 +58,10 @@ __all__ = [
     "load",
     "render",
 ]
+
+# The classes the registry of kinds makes from a kind's document fields (a line
+# `python(fields "Name")` in splinekit-scene's lists), e.g. ``splinekit.DupinCyclide``.
+from . import _splinekit as _native  # noqa: E402
+
+for _name in _native._FIELDS_CLASSES:
+    globals()[_name] = getattr(_native, _name)

@@ -288,6 +288,13 @@ fn local_curves_kind(with_model: bool, got: &str) -> DocumentError {
 
 impl DocumentKind for BlendingSplineDoc {
     type Family = Curves;
+    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
+        Ok(crate::forms::CurveForm::BlendingSpline(self))
+    }
+    const BLENDING_MODEL: bool = false;
 
     /// Checks `local_curves` against `model`/`knots` on the JSON first (the message names
     /// its JSON kind), then the fields, then [`BlendingSplineDoc::source`].

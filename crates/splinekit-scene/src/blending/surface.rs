@@ -149,6 +149,13 @@ impl BlendingSplineSurfaceDoc {
 
 impl DocumentKind for BlendingSplineSurfaceDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::BlendingSpline(self))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         self.model.dimension().map_err(|e| e.within("model"))
     }

@@ -21,6 +21,13 @@ pub struct BFunctionShapeDoc {
 
 impl DocumentKind for BFunctionShapeDoc {
     type Family = Curves;
+    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
+        Ok(crate::forms::CurveForm::Approximate)
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         Ok(1)
     }
@@ -64,6 +71,13 @@ impl BlendDoc {
 
 impl DocumentKind for BlendDoc {
     type Family = Curves;
+    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
+        Ok(crate::forms::CurveForm::Approximate)
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         let a = self.first.dimension().map_err(|e| e.within("first"))?;
         let b = self.second.dimension().map_err(|e| e.within("second"))?;

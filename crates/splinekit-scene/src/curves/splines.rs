@@ -24,6 +24,19 @@ pub struct BezierDoc {
 
 impl DocumentKind for BezierDoc {
     type Family = Curves;
+    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+        Some(crate::views::SplineView {
+            degree: self.control_points.len().saturating_sub(1),
+            control_points: std::borrow::Cow::Borrowed(&self.control_points),
+            knots: None,
+            weights: None,
+            periodic: false,
+        })
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
+        Ok(crate::forms::CurveForm::Spline(self.spline().expect("a spline kind")))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         dimension_of("control_points", &self.control_points)
     }
@@ -39,7 +52,7 @@ impl DocumentKind for BezierDoc {
         BezierDoc { control_points: vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![3.0, 2.0], vec![4.0, 0.0]] }
     }
     fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, closed: false }
+        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: false }
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -56,6 +69,19 @@ pub struct RationalBezierDoc {
 
 impl DocumentKind for RationalBezierDoc {
     type Family = Curves;
+    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+        Some(crate::views::SplineView {
+            degree: self.control_points.len().saturating_sub(1),
+            control_points: std::borrow::Cow::Borrowed(&self.control_points),
+            knots: None,
+            weights: Some(std::borrow::Cow::Borrowed(&self.weights)),
+            periodic: false,
+        })
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
+        Ok(crate::forms::CurveForm::Spline(self.spline().expect("a spline kind")))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         dimension_of("control_points", &self.control_points)
     }
@@ -76,7 +102,7 @@ impl DocumentKind for RationalBezierDoc {
         }
     }
     fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, closed: false }
+        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: false }
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -99,19 +125,25 @@ pub struct BSplineDoc {
 impl BSplineDoc {
     /// The kernel curve in dimension D (the document's).
     pub fn curve<const D: usize>(&self) -> Result<BSplineCurve<D>> {
-        check_degree("degree", self.degree)?;
-        check_finite_list("knots", &self.knots)?;
-        let points = to_points::<D>(&self.control_points);
-        Ok(if self.periodic {
-            BSplineCurve::new_periodic(self.degree, self.knots.clone(), points)?
-        } else {
-            BSplineCurve::new(self.degree, self.knots.clone(), points)?
-        })
+        self.spline().expect("a spline kind").bspline(&self.knots)
     }
 }
 
 impl DocumentKind for BSplineDoc {
     type Family = Curves;
+    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+        Some(crate::views::SplineView {
+            degree: self.degree,
+            control_points: std::borrow::Cow::Borrowed(&self.control_points),
+            knots: Some(std::borrow::Cow::Borrowed(&self.knots)),
+            weights: None,
+            periodic: self.periodic,
+        })
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
+        Ok(crate::forms::CurveForm::Spline(self.spline().expect("a spline kind")))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         dimension_of("control_points", &self.control_points)
     }
@@ -143,7 +175,7 @@ impl DocumentKind for BSplineDoc {
         }
     }
     fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, closed: self.periodic }
+        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: self.periodic }
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -168,21 +200,25 @@ pub struct NurbsDoc {
 impl NurbsDoc {
     /// The kernel curve in dimension D (the document's).
     pub fn curve<const D: usize>(&self) -> Result<NurbsCurve<D>> {
-        check_degree("degree", self.degree)?;
-        check_finite_list("knots", &self.knots)?;
-        check_finite_list("weights", &self.weights)?;
-        let points = to_points::<D>(&self.control_points);
-        let (knots, weights) = (self.knots.clone(), self.weights.clone());
-        Ok(if self.periodic {
-            NurbsCurve::new_periodic(self.degree, knots, points, weights)?
-        } else {
-            NurbsCurve::new(self.degree, knots, points, weights)?
-        })
+        self.spline().expect("a spline kind").nurbs(&self.knots, &self.weights)
     }
 }
 
 impl DocumentKind for NurbsDoc {
     type Family = Curves;
+    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+        Some(crate::views::SplineView {
+            degree: self.degree,
+            control_points: std::borrow::Cow::Borrowed(&self.control_points),
+            knots: Some(std::borrow::Cow::Borrowed(&self.knots)),
+            weights: Some(std::borrow::Cow::Borrowed(&self.weights)),
+            periodic: self.periodic,
+        })
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
+        Ok(crate::forms::CurveForm::Spline(self.spline().expect("a spline kind")))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         dimension_of("control_points", &self.control_points)
     }
@@ -217,7 +253,7 @@ impl DocumentKind for NurbsDoc {
         }
     }
     fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, closed: self.periodic }
+        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: self.periodic }
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -237,6 +273,13 @@ pub struct HermiteDoc {
 
 impl DocumentKind for HermiteDoc {
     type Family = Curves;
+    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
+        Ok(crate::forms::CurveForm::Approximate)
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         dimension_of("points", &self.points)
     }
@@ -265,7 +308,7 @@ impl DocumentKind for HermiteDoc {
         }
     }
     fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.points, closed: false }
+        Decoration::ControlPolygon { points: &self.points, field: "points", closed: false }
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -286,6 +329,13 @@ pub struct CatmullRomDoc {
 
 impl DocumentKind for CatmullRomDoc {
     type Family = Curves;
+    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
+        Ok(crate::forms::CurveForm::Approximate)
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         dimension_of("points", &self.points)
     }
@@ -304,7 +354,7 @@ impl DocumentKind for CatmullRomDoc {
         }
     }
     fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.points, closed: self.closed }
+        Decoration::ControlPolygon { points: &self.points, field: "points", closed: self.closed }
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -321,6 +371,13 @@ pub struct LineDoc {
 
 impl DocumentKind for LineDoc {
     type Family = Curves;
+    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
+        Ok(crate::forms::CurveForm::Line { from: &self.from, to: &self.to })
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         dimension_of("from", std::slice::from_ref(&self.from))
     }

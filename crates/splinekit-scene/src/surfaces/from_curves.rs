@@ -33,6 +33,13 @@ pub struct RevolutionDoc {
 
 impl DocumentKind for RevolutionDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::Revolution(self))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         Ok(3)
     }
@@ -83,6 +90,13 @@ pub struct RuledDoc {
 
 impl DocumentKind for RuledDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::Approximate)
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         same_dimension(&[("first", &self.first), ("second", &self.second)])
     }
@@ -122,6 +136,13 @@ pub struct ExtrusionDoc {
 
 impl DocumentKind for ExtrusionDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::Extrusion(self))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         let dim = self.curve.dimension().map_err(|e| e.within("curve"))?;
         if self.direction.len() != dim {
@@ -194,6 +215,13 @@ pub struct CoonsDoc {
 
 impl DocumentKind for CoonsDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::Approximate)
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         same_dimension(&[("bottom", &self.bottom), ("top", &self.top), ("left", &self.left), ("right", &self.right)])
     }
@@ -255,6 +283,13 @@ pub struct SweepDoc {
 
 impl DocumentKind for SweepDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::Approximate)
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         Ok(3)
     }

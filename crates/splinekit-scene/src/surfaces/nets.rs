@@ -22,6 +22,20 @@ pub struct BezierSurfaceDoc {
 
 impl DocumentKind for BezierSurfaceDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        let (rows, cols) = (self.control_points.len(), self.control_points.first().map_or(0, Vec::len));
+        Some(crate::views::NetView {
+            degrees: (rows.saturating_sub(1), cols.saturating_sub(1)),
+            control_points: std::borrow::Cow::Borrowed(&self.control_points),
+            knots: None,
+            weights: None,
+            periodic: (false, false),
+        })
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::Spline(self.spline().expect("a spline kind")))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         net_dimension("control_points", &self.control_points)
     }
@@ -76,6 +90,19 @@ pub struct BSplineSurfaceDoc {
 
 impl DocumentKind for BSplineSurfaceDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        Some(crate::views::NetView {
+            degrees: (self.degree_u, self.degree_v),
+            control_points: std::borrow::Cow::Borrowed(&self.control_points),
+            knots: Some((std::borrow::Cow::Borrowed(&self.knots_u), std::borrow::Cow::Borrowed(&self.knots_v))),
+            weights: None,
+            periodic: (self.periodic_u, self.periodic_v),
+        })
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::Spline(self.spline().expect("a spline kind")))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         net_dimension("control_points", &self.control_points)
     }
@@ -139,6 +166,19 @@ pub struct NurbsSurfaceDoc {
 
 impl DocumentKind for NurbsSurfaceDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        Some(crate::views::NetView {
+            degrees: (self.degree_u, self.degree_v),
+            control_points: std::borrow::Cow::Borrowed(&self.control_points),
+            knots: Some((std::borrow::Cow::Borrowed(&self.knots_u), std::borrow::Cow::Borrowed(&self.knots_v))),
+            weights: Some(std::borrow::Cow::Borrowed(&self.weights)),
+            periodic: (self.periodic_u, self.periodic_v),
+        })
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::Spline(self.spline().expect("a spline kind")))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         net_dimension("control_points", &self.control_points)
     }

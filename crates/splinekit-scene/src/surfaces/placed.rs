@@ -48,6 +48,13 @@ fn three(field: &str, v: &[f64]) -> Result<[f64; 3]> {
 
 impl DocumentKind for PlacedDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::Placed(self))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         match self.surface.dimension().map_err(|e| e.within("surface"))? {
             3 => Ok(3),

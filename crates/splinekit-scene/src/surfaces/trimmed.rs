@@ -40,6 +40,13 @@ fn trimming_loop(c: &CurveDocument, field: &str) -> Result<Box<dyn Curve<2>>> {
 
 impl DocumentKind for TrimmedDoc {
     type Family = Surfaces;
+    fn spline(&self) -> Option<crate::views::NetView<'_>> {
+        None
+    }
+    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
+        Ok(crate::forms::SurfaceForm::Trimmed(self))
+    }
+    const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
         self.surface.dimension().map_err(|e| e.within("surface"))
     }

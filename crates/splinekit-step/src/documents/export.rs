@@ -19,7 +19,7 @@ use splinekit::curve::{Curve as KernelCurve, Interval};
 use splinekit::surface::Surface as KernelSurface;
 use splinekit_scene::bfunctions::BFunctionDoc;
 use splinekit_scene::blending::{BlendingSource, BlendingSplineDoc, LocalDoc, LocalPatchDoc};
-use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
+use splinekit_scene::{CurveDocument, CurveForm, ShapeDocument, SplineView, SurfaceDocument, SurfaceForm};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
 use crate::approximate::{
@@ -141,9 +141,9 @@ fn bfunction_degree(b: &BFunctionDoc) -> Option<usize> {
 
 /// The degree of a local curve document that is a polynomial in its parameter.
 fn polynomial_local_degree(c: &CurveDocument) -> Option<usize> {
-    match c {
-        CurveDocument::Bezier(b) => Some(b.control_points.len().saturating_sub(1)),
-        CurveDocument::Line(_) => Some(1),
+    match c.exact_form().ok()? {
+        CurveForm::Spline(v) if v.knots.is_none() && v.weights.is_none() => Some(v.degree),
+        CurveForm::Line { .. } => Some(1),
         _ => None,
     }
 }
@@ -220,23 +220,15 @@ pub fn export_curve(doc: &CurveDocument, name: &str, relative_tolerance: f64) ->
         map: ParamMap::IDENTITY,
         domain,
     };
-    Ok(match doc {
-        CurveDocument::Bspline(d) => {
-            exact(Curve::Spline(spline_curve(d.degree, &d.knots, &d.control_points, None, d.periodic)?))
-        }
-        CurveDocument::Nurbs(d) => {
-            exact(Curve::Spline(spline_curve(d.degree, &d.knots, &d.control_points, Some(&d.weights), d.periodic)?))
-        }
-        CurveDocument::Bezier(d) => {
-            let n = d.control_points.len();
-            exact(Curve::Spline(spline_curve(n - 1, &bezier_knots(n - 1), &d.control_points, None, false)?))
-        }
-        CurveDocument::RationalBezier(d) => {
-            let n = d.control_points.len();
-            exact(Curve::Spline(spline_curve(n - 1, &bezier_knots(n - 1), &d.control_points, Some(&d.weights), false)?))
-        }
-        CurveDocument::Line(d) => {
-            let (from, to) = (p3(&d.from)?, p3(&d.to)?);
+    let spline = |view: &SplineView<'_>| {
+        let knots = view.knots.as_deref().map_or_else(|| bezier_knots(view.degree), <[f64]>::to_vec);
+        let curve = spline_curve(view.degree, &knots, &view.control_points, view.weights.as_deref(), view.periodic)?;
+        Ok::<_, StepError>(exact(Curve::Spline(curve)))
+    };
+    Ok(match doc.exact_form().map_err(|e| plain("document", e))? {
+        CurveForm::Spline(view) => spline(&view)?,
+        CurveForm::Line { from, to } => {
+            let (from, to) = (p3(from)?, p3(to)?);
             // A unit direction, trimmed by length: readers (OpenCASCADE) parametrise lines
             // by arc length whatever the VECTOR's magnitude, so t' = |to − from| t.
             let d: Vec<f64> = (0..3).map(|k| to[k] - from[k]).collect();
@@ -250,11 +242,11 @@ pub fn export_curve(doc: &CurveDocument, name: &str, relative_tolerance: f64) ->
             e.map = ParamMap { u: (len, 0.0), v: (1.0, 0.0) };
             e
         }
-        CurveDocument::Circle(d) => exact(Curve::Circle { axes: Axes::WORLD, radius: d.radius }),
-        CurveDocument::Ellipse(d) => exact(Curve::Ellipse { axes: Axes::WORLD, a: d.a, b: d.b }),
-        other => {
-            let (fitted, form) = match other {
-                CurveDocument::BlendingSpline(b) if blending_polynomial_degree(b).is_some() => {
+        CurveForm::Circle { radius } => exact(Curve::Circle { axes: Axes::WORLD, radius }),
+        CurveForm::Ellipse { a, b } => exact(Curve::Ellipse { axes: Axes::WORLD, a, b }),
+        form @ (CurveForm::BlendingSpline(_) | CurveForm::Approximate) => {
+            let (fitted, form) = match form {
+                CurveForm::BlendingSpline(b) if blending_polynomial_degree(b).is_some() => {
                     let m = blending_polynomial_degree(b).expect("checked");
                     (
                         polynomial_curve(kernel.as_ref(), &kernel.breakpoints(), m)?,
@@ -342,40 +334,36 @@ fn profile(doc: &CurveDocument, relative_tolerance: f64) -> Result<(Curve, Form,
 /// its parameters; `None` for the kinds without one of their own.
 fn elementary_surface(doc: &SurfaceDocument) -> Result<Option<(Surface, ParamMap)>> {
     let id = ParamMap::IDENTITY;
-    Ok(Some(match doc {
-        SurfaceDocument::BsplineSurface(d) => {
-            let degrees = (d.degree_u, d.degree_v);
-            let periodic = (d.periodic_u, d.periodic_v);
-            let net = spline_surface(degrees, &d.knots_u, &d.knots_v, &d.control_points, None, periodic)?;
+    Ok(Some(match doc.exact_form().map_err(|e| plain("document", e))? {
+        SurfaceForm::Spline(view) => {
+            let (p, q) = view.degrees;
+            let (ku, kv) = match &view.knots {
+                Some((ku, kv)) => (ku.to_vec(), kv.to_vec()),
+                None => (bezier_knots(p), bezier_knots(q)),
+            };
+            let weights = view.weights.as_deref();
+            let net = spline_surface((p, q), &ku, &kv, &view.control_points, weights, view.periodic)?;
             (Surface::Spline(net), id)
         }
-        SurfaceDocument::NurbsSurface(d) => {
-            let (degrees, periodic, weights) =
-                ((d.degree_u, d.degree_v), (d.periodic_u, d.periodic_v), Some(d.weights.as_slice()));
-            let net = spline_surface(degrees, &d.knots_u, &d.knots_v, &d.control_points, weights, periodic)?;
-            (Surface::Spline(net), id)
-        }
-        SurfaceDocument::BezierSurface(d) => {
-            let (nu, nv) = (d.control_points.len(), d.control_points.first().map_or(0, Vec::len));
-            let (ku, kv) = (bezier_knots(nu - 1), bezier_knots(nv - 1));
-            let net = spline_surface((nu - 1, nv - 1), &ku, &kv, &d.control_points, None, (false, false))?;
-            (Surface::Spline(net), id)
-        }
-        SurfaceDocument::Plane(d) => plane_surface(&d.origin, &d.u_axis, &d.v_axis)?,
-        SurfaceDocument::Cylinder(d) => (
-            trimmed(Surface::Cylinder { axes: Axes::WORLD, radius: d.radius }, (0.0, TAU), (0.0, d.height)),
-            ParamMap { u: (1.0, 0.0), v: (d.height, 0.0) },
+        SurfaceForm::Plane { origin, u_axis, v_axis } => plane_surface(origin, u_axis, v_axis)?,
+        SurfaceForm::Cylinder { radius, height } => (
+            trimmed(Surface::Cylinder { axes: Axes::WORLD, radius }, (0.0, TAU), (0.0, height)),
+            ParamMap { u: (1.0, 0.0), v: (height, 0.0) },
         ),
-        SurfaceDocument::Cone(d) => cone_surface(d.radius, d.height),
-        SurfaceDocument::Sphere(d) => {
-            (trimmed(Surface::Sphere { axes: Axes::WORLD, radius: d.radius }, (0.0, TAU), (-FRAC_PI_2, FRAC_PI_2)), id)
+        SurfaceForm::Cone { radius, height } => cone_surface(radius, height),
+        SurfaceForm::Sphere { radius } => {
+            (trimmed(Surface::Sphere { axes: Axes::WORLD, radius }, (0.0, TAU), (-FRAC_PI_2, FRAC_PI_2)), id)
         }
-        SurfaceDocument::Torus(d) => {
-            let torus =
-                Surface::Torus { axes: Axes::WORLD, major_radius: d.major_radius, minor_radius: d.minor_radius };
+        SurfaceForm::Torus { major_radius, minor_radius } => {
+            let torus = Surface::Torus { axes: Axes::WORLD, major_radius, minor_radius };
             (trimmed(torus, (0.0, TAU), (0.0, TAU)), id)
         }
-        _ => return Ok(None),
+        SurfaceForm::Revolution(_)
+        | SurfaceForm::Extrusion(_)
+        | SurfaceForm::Trimmed(_)
+        | SurfaceForm::Placed(_)
+        | SurfaceForm::BlendingSpline(_)
+        | SurfaceForm::Approximate => return Ok(None),
     }))
 }
 
@@ -417,8 +405,8 @@ fn swept_surface(
     domain: (Interval, Interval),
     relative_tolerance: f64,
 ) -> Result<Option<(Surface, Form, f64, ParamMap)>> {
-    Ok(Some(match doc {
-        SurfaceDocument::Revolution(d) => {
+    Ok(Some(match doc.exact_form().map_err(|e| plain("document", e))? {
+        SurfaceForm::Revolution(d) => {
             let (c, form, dev) = profile(&d.curve, relative_tolerance)?;
             let axis = p3(&d.axis)?;
             let len = norm([axis[0], axis[1], axis[2]]);
@@ -430,7 +418,7 @@ fn swept_surface(
             };
             (trimmed(rev, (0.0, d.angle), (domain.1.start, domain.1.end)), form, dev, ParamMap::IDENTITY)
         }
-        SurfaceDocument::Extrusion(d) => {
+        SurfaceForm::Extrusion(d) => {
             let (c, form, dev) = profile(&d.curve, relative_tolerance)?;
             // Unit direction, v' = |direction| v (readers parametrise v by length).
             let dir = p3(&d.direction)?;
@@ -447,7 +435,7 @@ fn swept_surface(
 /// with Bézier locals of degrees (d_u, d_v) and a polynomial B-function of degree β is (its
 /// knots are the blending spline's); `None` for other surfaces.
 fn polynomial_blending_degrees(doc: &SurfaceDocument) -> Option<(usize, usize)> {
-    let SurfaceDocument::BlendingSplineSurface(b) = doc else { return None };
+    let Ok(SurfaceForm::BlendingSpline(b)) = doc.exact_form() else { return None };
     let local = b.local.as_ref().unwrap_or(&LocalPatchDoc::Bezier { degree: [3, 3] });
     match (local, b.bfunction.as_ref().and_then(bfunction_degree)) {
         (LocalPatchDoc::Bezier { degree }, Some(beta)) => Some((degree[0] + beta, degree[1] + beta)),
@@ -471,8 +459,8 @@ fn fitted_surface(
         let fitted = polynomial_surface(kernel, &bu, &bv, degrees)?;
         return Ok((fitted, Form::ExactPolynomial { degree: degrees }));
     }
-    let (bu, bv) = match doc {
-        SurfaceDocument::BlendingSplineSurface(_) => knots(),
+    let (bu, bv) = match doc.exact_form() {
+        Ok(SurfaceForm::BlendingSpline(_)) => knots(),
         _ => (uniform_breaks(domain.0, 4), uniform_breaks(domain.1, 4)),
     };
     Ok((hermite_surface(kernel, &bu, &bv, tolerance)?, Form::Approximated))
@@ -480,11 +468,12 @@ fn fitted_surface(
 
 /// Exports a surface document; `relative_tolerance` scales with the surface's size.
 pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64) -> Result<Exported> {
-    if let SurfaceDocument::Trimmed(t) = doc {
+    let form = doc.exact_form().map_err(|e| plain("document", e))?;
+    if let SurfaceForm::Trimmed(t) = form {
         return super::faces::export_trimmed(t, name, relative_tolerance);
     }
     let kernel = kernel_surface(doc)?;
-    if let SurfaceDocument::Placed(p) = doc {
+    if let SurfaceForm::Placed(p) = form {
         return placed_surface(p, name, relative_tolerance);
     }
     let tolerance = relative_tolerance * surface_size(kernel.as_ref());
@@ -531,30 +520,35 @@ pub fn exports_exactly(doc: &ShapeDocument) -> bool {
 }
 
 fn surface_exports_exactly(doc: &SurfaceDocument) -> bool {
-    match doc {
-        SurfaceDocument::Revolution(d) => curve_exports_exactly(&d.curve),
-        SurfaceDocument::Extrusion(d) => curve_exports_exactly(&d.curve),
-        SurfaceDocument::Trimmed(t) => {
+    match doc.exact_form() {
+        Err(_) | Ok(SurfaceForm::Approximate) => false,
+        Ok(SurfaceForm::Revolution(d)) => curve_exports_exactly(&d.curve),
+        Ok(SurfaceForm::Extrusion(d)) => curve_exports_exactly(&d.curve),
+        Ok(SurfaceForm::Trimmed(t)) => {
             super::faces::trimmed_exports_exactly(t, surface_exports_exactly(&t.surface), curve_exports_exactly)
         }
-        SurfaceDocument::Placed(p) => {
-            !matches!(*p.surface, SurfaceDocument::Trimmed(_)) && surface_exports_exactly(&p.surface)
+        Ok(SurfaceForm::Placed(p)) => {
+            !matches!(p.surface.exact_form(), Ok(SurfaceForm::Trimmed(_))) && surface_exports_exactly(&p.surface)
         }
-        other => matches!(elementary_surface(other), Ok(Some(_))) || polynomial_blending_degrees(other).is_some(),
+        Ok(SurfaceForm::BlendingSpline(_)) => polynomial_blending_degrees(doc).is_some(),
+        Ok(
+            SurfaceForm::Spline(_)
+            | SurfaceForm::Plane { .. }
+            | SurfaceForm::Cylinder { .. }
+            | SurfaceForm::Cone { .. }
+            | SurfaceForm::Sphere { .. }
+            | SurfaceForm::Torus { .. },
+        ) => matches!(elementary_surface(doc), Ok(Some(_))),
     }
 }
 
 fn curve_exports_exactly(doc: &CurveDocument) -> bool {
-    match doc {
-        CurveDocument::Bspline(_)
-        | CurveDocument::Nurbs(_)
-        | CurveDocument::Bezier(_)
-        | CurveDocument::RationalBezier(_)
-        | CurveDocument::Line(_)
-        | CurveDocument::Circle(_)
-        | CurveDocument::Ellipse(_) => true,
-        CurveDocument::BlendingSpline(b) => blending_polynomial_degree(b).is_some(),
-        _ => false,
+    match doc.exact_form() {
+        Err(_) | Ok(CurveForm::Approximate) => false,
+        Ok(CurveForm::Spline(_) | CurveForm::Line { .. } | CurveForm::Circle { .. } | CurveForm::Ellipse { .. }) => {
+            true
+        }
+        Ok(CurveForm::BlendingSpline(b)) => blending_polynomial_degree(b).is_some(),
     }
 }
 

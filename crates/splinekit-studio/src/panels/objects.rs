@@ -46,7 +46,8 @@ pub fn objects_panel(ui: &mut egui::Ui, studio: &mut Studio) {
     add_menu(ui, studio);
 }
 
-/// "Add": every curve and surface kind with its example, and blending splines of models.
+/// "Add": every curve and surface kind with its example, and blending splines of the
+/// kinds that declare themselves models (`DocumentKind::BLENDING_MODEL`).
 fn add_menu(ui: &mut egui::Ui, studio: &mut Studio) {
     ui.menu_button("Add…", |ui| {
         ui.menu_button("Curve", |ui| {
@@ -64,16 +65,18 @@ fn add_menu(ui: &mut egui::Ui, studio: &mut Studio) {
             }
         });
         ui.menu_button("Blending spline of", |ui| {
-            for m in ["heart", "circle", "helix", "rose", "trefoil"] {
-                if ui.button(m).clicked() {
-                    add(studio, json!({"type": "blending_spline", "model": {"type": m}, "local_curves": 8}));
+            for m in CurveDocument::examples().into_iter().filter(CurveDocument::blending_model) {
+                if ui.button(m.type_name()).clicked() {
+                    add(
+                        studio,
+                        json!({"type": "blending_spline", "model": {"type": m.type_name()}, "local_curves": 8}),
+                    );
                 }
             }
-            for m in ["torus", "sphere", "cylinder", "plane"] {
-                if ui.button(format!("{m} (surface)")).clicked() {
-                    let shape =
-                        json!({"type": "blending_spline_surface", "model": {"type": m}, "local_surfaces": [4, 4]});
-                    add(studio, shape);
+            for m in SurfaceDocument::examples().into_iter().filter(SurfaceDocument::blending_model) {
+                if ui.button(format!("{} (surface)", m.type_name())).clicked() {
+                    let model = json!({"type": m.type_name()});
+                    add(studio, json!({"type": "blending_spline_surface", "model": model, "local_surfaces": [4, 4]}));
                 }
             }
         });

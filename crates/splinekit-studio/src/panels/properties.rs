@@ -7,9 +7,9 @@
 
 use serde_json::{Value, json};
 use splinekit::curve::Curve;
-use splinekit_scene::bfunctions::BFunctionDoc;
+use splinekit_scene::bfunctions::{BFunctionDoc, ErbsDoc};
 use splinekit_scene::scenes::ColorMapDoc;
-use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument};
+use splinekit_scene::{Curves, Decoration, DimensionVisitor, ShapeDocument};
 
 use super::fields::{count, error_label, number, read, toggle, write};
 use super::knots::{CURVE, NET_U, NET_V, knot_style};
@@ -19,8 +19,40 @@ use crate::command::Command;
 use crate::knot_edit::KnotTool;
 use crate::studio::Studio;
 
-/// The B-functions of the format with their default parameters.
-const BFUNCTIONS: [&str; 7] = ["erbs", "polynomial", "trigonometric", "half_cosine", "rational", "beta", "linear"];
+/// The editors the Properties panel has for a shape, chosen by what its kind declares
+/// (its spline view and what it decorates) rather than by its type name.
+enum Editors {
+    /// Degree, knot style and knot edits: a B-spline or NURBS curve.
+    SplineCurve,
+    /// Knot edits: a (rational) Bézier curve.
+    BezierCurve,
+    /// Degrees and knot styles: a B-spline or NURBS net.
+    SplineNet,
+    /// Locals and B-function of a blending-spline curve.
+    BlendingCurve,
+    /// Locals and B-function of a blending-spline surface.
+    BlendingSurface,
+    /// None besides the style.
+    None,
+}
+
+impl Editors {
+    fn of(shape: &ShapeDocument) -> Editors {
+        match shape {
+            ShapeDocument::Curve(c) => match (c.spline(), c.decoration()) {
+                (Some(view), _) if view.knots.is_some() => Editors::SplineCurve,
+                (Some(_), _) => Editors::BezierCurve,
+                (None, Decoration::LocalCurves(_)) => Editors::BlendingCurve,
+                (None, _) => Editors::None,
+            },
+            ShapeDocument::Surface(s) => match (s.spline(), s.decoration()) {
+                (Some(view), _) if view.knots.is_some() => Editors::SplineNet,
+                (None, Decoration::LocalPatches(_)) => Editors::BlendingSurface,
+                _ => Editors::None,
+            },
+        }
+    }
+}
 
 /// The Properties panel.
 pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
@@ -38,22 +70,22 @@ pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
         color_map(ui, studio, object);
     }
     ui.separator();
-    match ty.as_str() {
-        "bspline" | "nurbs" => {
+    match Editors::of(&studio.scene.objects[object].shape) {
+        Editors::SplineCurve => {
             count(ui, studio, object, "/shape/degree", "degree", 3);
             knot_style(ui, studio, object, CURVE, "knots");
             knot_edits(ui, studio);
         }
-        "bezier" | "rational_bezier" => knot_edits(ui, studio),
-        "bspline_surface" | "nurbs_surface" => {
+        Editors::BezierCurve => knot_edits(ui, studio),
+        Editors::SplineNet => {
             count(ui, studio, object, "/shape/degree_u", "degree u", 3);
             count(ui, studio, object, "/shape/degree_v", "degree v", 3);
             knot_style(ui, studio, object, NET_U, "knots u");
             knot_style(ui, studio, object, NET_V, "knots v");
         }
-        "blending_spline" => blending_curve(ui, studio, object),
-        "blending_spline_surface" => blending_surface(ui, studio, object),
-        _ => {}
+        Editors::BlendingCurve => blending_curve(ui, studio, object),
+        Editors::BlendingSurface => blending_surface(ui, studio, object),
+        Editors::None => {}
     }
     selected_handle(ui, studio);
 }
@@ -215,7 +247,7 @@ fn bfunction(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
     let kind = value.get("type").and_then(Value::as_str).unwrap_or("erbs").to_string();
     let mut chosen = kind.clone();
     egui::ComboBox::from_label("B-function").selected_text(&chosen).show_ui(ui, |ui| {
-        for b in BFUNCTIONS {
+        for b in BFunctionDoc::TYPES {
             ui.selectable_value(&mut chosen, b.to_string(), b);
         }
     });
@@ -223,12 +255,13 @@ fn bfunction(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
         write(studio, object, "/shape/bfunction", Some(json!({"type": chosen})));
     }
     error_label(ui, studio, "/shape/bfunction");
-    let params: &[(&str, f64)] = match kind.as_str() {
-        "erbs" => &[("alpha", 1.0), ("beta", 1.0), ("gamma", 1.0), ("lambda", 0.5)],
-        _ => &[],
+    // ERBS's parameters with the document's defaults (α, β, γ, λ).
+    let params = match kind.as_str() {
+        "erbs" => json!(ErbsDoc::default()).as_object().cloned().unwrap_or_default(),
+        _ => serde_json::Map::new(),
     };
-    for (name, default) in params {
-        number(ui, studio, object, &format!("/shape/bfunction/{name}"), name, *default);
+    for (name, default) in &params {
+        number(ui, studio, object, &format!("/shape/bfunction/{name}"), name, default.as_f64().unwrap_or(0.0));
     }
     if kind == "polynomial" {
         count(ui, studio, object, "/shape/bfunction/smoothness", "smoothness", 1);

@@ -1,9 +1,11 @@
 //! Model surfaces with exact partial derivatives of every order.
 
 pub mod catalog;
+pub mod dupin_cyclide;
 pub mod separable;
 
 pub use catalog::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
 };
+pub use dupin_cyclide::dupin_cyclide;
 pub use separable::{Factor, SeparableSurface, SeparableTerm};
