@@ -317,39 +317,10 @@ pub enum SurfaceScheme {
 }
 
 /// Reads the vertices and polygon faces of an OBJ file (`v` and `f`, 1-based or negative
-/// indices, `v/vt/vn` corners).
+/// indices, `v/vt/vn` corners; the kernel's [`read_obj_cage`](splinekit::subdivision::surface::read_obj_cage)).
 pub fn read_obj_polygons(text: &str) -> std::result::Result<PolygonMesh, String> {
-    let mut m = PolygonMesh::default();
-    for (k, line) in text.lines().enumerate() {
-        let mut words = line.split_whitespace();
-        match words.next() {
-            Some("v") => {
-                let v: std::result::Result<Vec<f64>, _> = words.take(3).map(str::parse).collect();
-                let v = v.map_err(|e| format!("line {}: {e}", k + 1))?;
-                if v.len() != 3 {
-                    return Err(format!("line {}: a vertex needs 3 coordinates", k + 1));
-                }
-                m.vertices.push([v[0], v[1], v[2]]);
-            }
-            Some("f") => {
-                let n = m.vertices.len() as i64;
-                let face: std::result::Result<Vec<u32>, String> = words
-                    .map(|c| {
-                        let i: i64 =
-                            c.split('/').next().unwrap_or("").parse().map_err(|e| format!("line {}: {e}", k + 1))?;
-                        let idx = if i < 0 { n + i } else { i - 1 };
-                        if idx < 0 || idx >= n {
-                            return Err(format!("line {}: vertex {i} does not exist (there are {n})", k + 1));
-                        }
-                        Ok(idx as u32)
-                    })
-                    .collect();
-                m.faces.push(face?);
-            }
-            _ => {}
-        }
-    }
-    Ok(m)
+    let cage = splinekit::subdivision::surface::read_obj_cage(text)?;
+    Ok(PolygonMesh { vertices: cage.vertices, faces: cage.faces })
 }
 
 /// Writes the mesh as OBJ text (polygon faces) to `out` (give it a buffered writer);

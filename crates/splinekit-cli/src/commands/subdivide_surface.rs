@@ -93,23 +93,10 @@ fn sample_json(s: &splinekit::subdivision::surface::LimitSample) -> serde_json::
     })
 }
 
-/// `t crease 2/1 A B S` tags of an OBJ text (0-based vertex indices).
+/// `t crease 2/1 A B S` tags of an OBJ text (0-based vertex indices; the kernel's
+/// [`read_obj_cage`](splinekit::subdivision::surface::read_obj_cage)).
 pub fn read_obj_creases(text: &str) -> std::result::Result<Vec<Crease>, String> {
-    let mut creases = Vec::new();
-    for (k, line) in text.lines().enumerate() {
-        let words: Vec<&str> = line.split_whitespace().collect();
-        if words.len() >= 2 && words[0] == "t" && words[1] == "crease" {
-            let bad = || format!("line {}: a crease tag is `t crease 2/1 A B SHARPNESS`, got '{}'", k + 1, line.trim());
-            if words.len() != 6 || words[2] != "2/1" {
-                return Err(bad());
-            }
-            let a: u32 = words[3].parse().map_err(|_| bad())?;
-            let b: u32 = words[4].parse().map_err(|_| bad())?;
-            let s: f64 = words[5].parse().map_err(|_| bad())?;
-            creases.push(Crease { a, b, sharpness: s });
-        }
-    }
-    Ok(creases)
+    Ok(splinekit::subdivision::surface::read_obj_cage(text)?.creases)
 }
 
 pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
