@@ -103,6 +103,18 @@ pub fn within_tolerance(
         if deviation <= tolerance {
             return Ok((limit_mesh(&level)?.triangles(), deviation, k));
         }
+        // The chord height shrinks by at most about 4 a step, so the steps still needed are at
+        // least log₄(deviation / tolerance): refuse now when their faces would not fit.
+        let more = (deviation / tolerance).log(4.0).ceil().max(1.0);
+        let faces = fine.cage().face_count() as f64 * 4f64.powf(more - 1.0);
+        if faces > max_faces as f64 {
+            return Err(Error::invalid(
+                "tolerance",
+                format!(
+                    "the limit within {tolerance} needs about {faces:.0} faces or more, more than {max_faces} ({k} steps give a mesh within {deviation:.3e})"
+                ),
+            ));
+        }
         reached = Some((k, deviation));
         (level, level_frames) = (fine, fine_frames);
     }
