@@ -190,9 +190,10 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
 }
 
 /// The limit surface as STEP: one Bézier surface per patch of
-/// [`super::subdivide_surface_step::limit_patches`].
+/// [`limit_patches`](splinekit::subdivision::surface::bezier_patches::limit_patches).
 fn write_step(surface: &SubdivisionSurface, depth: usize, name: &str, path: &str) -> Result<()> {
-    use super::subdivide_surface_step::{limit_patches, patches_document};
+    use splinekit::subdivision::surface::bezier_patches::limit_patches;
+    use splinekit_step::documents::subdivision::patches_scene;
     if surface.scheme() != KernelScheme::CatmullClark {
         bail!("-o: STEP export is for catmull-clark (exact bicubic patches), not {}", surface.scheme().name());
     }
@@ -200,8 +201,7 @@ fn write_step(surface: &SubdivisionSurface, depth: usize, name: &str, path: &str
         bail!("--steps: STEP export subdivides the faces at extraordinary vertices --steps times, at least 1, got 0");
     }
     let patches = limit_patches(surface, depth).map_err(|e| anyhow!("mesh: {e}"))?;
-    let doc =
-        splinekit_scene::SceneDocument::from_value(patches_document(&patches)).map_err(|e| anyhow!("mesh: {e}"))?;
+    let doc = patches_scene(&patches).ok_or_else(|| anyhow!("mesh: the limit surface has no patches"))?;
     let header = splinekit_step::part21::writer::HeaderInfo { name: name.to_string(), ..Default::default() };
     let (text, _) =
         splinekit_step::documents::export_document(&splinekit_scene::SceneOrShape::Scene(doc), name, 1e-6, &header)

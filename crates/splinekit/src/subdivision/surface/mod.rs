@@ -4,12 +4,13 @@
 //!
 //! One concept per file: [`cage`] (the data), [`atlas`] (the limit as one parametric surface), [`topology`] (half-edge adjacency),
 //! [`creases`] (sharpness rules), [`catmull_clark`], [`loop_scheme`], [`bilinear`] (one
-//! step each), [`limit_masks`], [`regular_patch`] and [`box_spline`] (polynomial patches
+//! step each), [`bezier_patches`] (the limit as Bézier patches, for STEP), [`limit_masks`], [`regular_patch`] and [`box_spline`] (polynomial patches
 //! on regular faces), [`local`] (neighbourhoods), [`limit_eval`] (exact evaluation) and [`obj_cage`] (reading
 //! a cage from OBJ).
 //! Doo–Sabin steps live with the polygon meshes of `splinekit-mesh`.
 
 pub mod atlas;
+pub mod bezier_patches;
 pub mod bilinear;
 pub mod box_spline;
 pub mod cage;
