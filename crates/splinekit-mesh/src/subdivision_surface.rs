@@ -45,43 +45,14 @@ fn scale(a: [f64; 3], s: f64) -> [f64; 3] {
 }
 
 impl PolygonMesh {
-    /// Checks indices, face sizes and that every edge has at most two faces, used in
-    /// opposite directions (a consistently oriented manifold).
+    /// Checks the mesh as the kernel checks a subdivision cage (one home for the rules,
+    /// [`Topology::new`](splinekit::subdivision::surface::Topology::new)): finite vertices,
+    /// faces of 3 or more existing vertices, every edge in at most two faces used in opposite
+    /// directions (a consistently oriented manifold), the faces at a vertex one fan.
     pub fn validate(&self) -> Result<()> {
-        let n = self.vertices.len() as u32;
-        if let Some(i) = self.vertices.iter().position(|p| !p.iter().all(|x| x.is_finite())) {
-            return Err(Error::invalid(format!("vertices[{i}]"), "coordinates must be finite"));
-        }
-        let mut directed: HashMap<Edge, usize> = HashMap::new();
-        for (f, face) in self.faces.iter().enumerate() {
-            if face.len() < 3 {
-                return Err(Error::invalid(
-                    format!("faces[{f}]"),
-                    format!("a face needs 3 or more vertices, got {}", face.len()),
-                ));
-            }
-            if let Some(&i) = face.iter().find(|&&i| i >= n) {
-                return Err(Error::invalid(
-                    format!("faces[{f}]"),
-                    format!("vertex {i} does not exist (there are {n})"),
-                ));
-            }
-            for k in 0..face.len() {
-                let (a, b) = (face[k], face[(k + 1) % face.len()]);
-                if a == b {
-                    return Err(Error::invalid(format!("faces[{f}]"), format!("vertex {a} repeats along an edge")));
-                }
-                if let Some(g) = directed.insert((a, b), f) {
-                    return Err(Error::invalid(
-                        format!("faces[{f}]"),
-                        format!(
-                            "the edge {a}→{b} is also in faces[{g}]: faces must be oriented consistently, two per edge at most"
-                        ),
-                    ));
-                }
-            }
-        }
-        Ok(())
+        let vertices = self.vertices.iter().map(|p| splinekit::Point::<3>::from(*p)).collect();
+        let cage = splinekit::subdivision::surface::Cage::new(vertices, &self.faces);
+        splinekit::subdivision::surface::Topology::new(&cage).map(|_| ())
     }
 
     fn face_points(&self) -> Vec<[f64; 3]> {
