@@ -12,7 +12,7 @@ random.seed(int(sys.argv[2]) if len(sys.argv) > 2 else 1)
 TMP = tempfile.mkdtemp()
 SVG, OBJ, STL, GLB, PNG = (os.path.join(TMP, "fuzz." + e) for e in ("svg", "obj", "stl", "glb", "png"))
 types = ["bezier","rational_bezier","bspline","nurbs","hermite","catmull_rom","line","circle","ellipse","helix","heart","rose","lissajous","trefoil","butterfly","bfunction","blend","blending_spline",
-         "bezier_surface","bspline_surface","nurbs_surface","plane","cylinder","cone","sphere","torus","mobius","klein_bottle","enneper","helicoid","seashell","apple","heart_surface","revolution","ruled","extrusion","coons","sweep","trimmed","blending_spline_surface"]
+         "bezier_surface","bspline_surface","nurbs_surface","plane","cylinder","cone","sphere","torus","mobius","klein_bottle","enneper","helicoid","seashell","apple","heart_surface","revolution","ruled","extrusion","coons","sweep","trimmed","blending_spline_surface","subdivision_surface"]
 def num():
     return random.choice([0, 1, -1, 0.5, 2, 3, 1e300, -1e300, 1e-300, 7, 100000, -0.0, 1e9, 0.25, 12, "x", None, [], True])
 def pt(d):
@@ -98,6 +98,15 @@ def surface(depth=0):
         if random.random() < 0.3: doc["closed_u"] = random.random() < 0.5
         if random.random() < 0.3: doc["transforms"] = random.choice([{"1,1": {"scale": num()}}, [[{}], [{"translate": pt(3)}]], {"a": {}}, 4])
         if random.random() < 0.3: doc["animation"] = animation(random.choice([[0, 1], [9, 0], 1]))
+    if t == "subdivision_surface":
+        nvert = random.choice([0, 3, 4, 8])
+        doc["vertices"] = pts(nvert, 3 if random.random() < 0.9 else 2)
+        doc["faces"] = [[random.choice([0, 1, 2, 3, 7, -1]) for _ in range(random.choice([2, 3, 4, 5]))] for _ in range(random.choice([0, 1, 2, 6]))]
+        if random.random() < 0.3: doc["scheme"] = random.choice(["catmull-clark", "loop", "bilinear", "doo-sabin"])
+        if random.random() < 0.3: doc["creases"] = [{"edge": [random.choice([0, 1, 9]), random.choice([1, 2])], "sharpness": num()}]
+        if random.random() < 0.2: doc["boundary"] = random.choice(["edge-only", "edge-and-corner", "none"])
+        if random.random() < 0.2: doc["triangulate"] = True
+        if random.random() < 0.1: doc["obj"] = random.choice(["missing.obj", "/dev/null", ""])
     if t == "trimmed": doc.update(surface={"type":"plane"} if random.random()<0.5 else surface(1) if depth < 1 else {"type":"sphere"}, outer=curve(1))
     return doc
 bad = 0

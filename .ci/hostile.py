@@ -358,6 +358,42 @@ huge_obj = doc_file("huge.obj", "v 1e308 0 0\nv 0 1e308 0\nv 0 0 1e308\nv 1e308 
 case("subdivide-surface vertices near 1e308", ["subdivide-surface", huge_obj, "--scheme", "catmull-clark", "--steps", "2",
                                               "-o", out("huge_out.stl")], REFUSED, "v", output=out("huge_out.stl"))
 
+# subdivision_surface documents: the cage inline or from an OBJ file beside the document
+cage_doc = doc_file("cage_doc.json", {"type": "subdivision_surface", "obj": "cube.obj"})
+case("subdivision_surface from an OBJ file: eval", ["eval", cage_doc, "--at", "0.5:0.5,5.5:0.5", "--derivatives", "2"], OK)
+case("subdivision_surface at an extraordinary vertex with partials", ["eval", cage_doc, "--at", "0:0", "--derivatives", "1"],
+     REFUSED, "extraordinary vertex")
+for fmt in ("obj", "stl", "glb"):
+    o = out(f"cage_doc.{fmt}")
+    case(f"subdivision_surface tessellate --tolerance 1e-3 .{fmt}", ["tessellate", cage_doc, "-o", o, "--tolerance", "1e-3"],
+         OK, output=o)
+o = out("cage_doc_tiny.glb")
+case("subdivision_surface tessellate --tolerance 1e-12", ["tessellate", cage_doc, "-o", o, "--tolerance", "1e-12"], REFUSED,
+     "--tolerance", output=o)
+case("subdivision_surface render", ["render", cage_doc, "-o", out("cage_doc.png"), "--size", "96x64"], OK,
+     output=out("cage_doc.png"))
+missing = doc_file("cage_missing.json", {"type": "subdivision_surface", "obj": "no_such_cage.obj"})
+case("subdivision_surface with a missing OBJ file", ["eval", missing, "--at", "0.5:0.5"], REFUSED, "obj")
+both = doc_file("cage_both.json", {"type": "subdivision_surface", "obj": "cube.obj", "vertices": [[0, 0, 0]], "faces": [[0, 0, 0]]})
+case("subdivision_surface with a file and vertices", ["eval", both, "--at", "0.5:0.5"], REFUSED, "obj")
+tri = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
+for name, extra, field in (
+    ("a face index out of range", {"faces": [[0, 1, 7]]}, "faces[0]"),
+    ("2-D vertices", {"vertices": [[0, 0], [1, 0], [0, 1]]}, "vertices[0]"),
+    ("a NaN-like huge vertex", {"vertices": [[1e308, 0, 0], [1, 0, 0], [0, 1, 0]]}, "vertices[0][0]"),
+    ("a face of two vertices", {"faces": [[0, 1]]}, "faces[0]"),
+    ("no faces", {"faces": []}, "faces"),
+    ("a negative sharpness", {"creases": [{"edge": [0, 1], "sharpness": -2}]}, "creases[0].sharpness"),
+    ("a crease that is no edge", {"creases": [{"edge": [0, 0], "sharpness": 2}]}, "creases[0]"),
+    ("an unknown scheme", {"scheme": "butterfly"}, "scheme"),
+    ("Loop on a quad", {"vertices": tri + [[1, 1, 0]], "faces": [[0, 1, 3, 2]], "scheme": "loop"}, "faces[0]"),
+    ("an unknown field", {"steps": 3}, "steps"),
+):
+    doc = {"type": "subdivision_surface", "vertices": tri, "faces": [[0, 1, 2]]}
+    doc.update(extra)
+    case(f"subdivision_surface with {name}", ["eval", doc_file(f"cage_{len(CASES)}.json", doc), "--at", "0.5:0.5"], REFUSED,
+         field)
+
 # ---------------------------------------------------------------- tessellate
 for fmt in ("obj", "stl", "stla", "ply", "gltf", "glb"):
     for shape, name in ((sphere, "sphere"), (torus, "torus")):

@@ -36,12 +36,27 @@ pub fn read_text(path: &str, what: &str) -> Result<String> {
     Ok(text)
 }
 
+/// The folder that paths inside the document at `path` are relative to: the file's own
+/// folder, or the current folder for standard input.
+pub fn document_folder(path: &str) -> std::path::PathBuf {
+    match std::path::Path::new(path).parent() {
+        Some(p) if path != "-" && !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    }
+}
+
+/// Reads and parses a shape or scene document (`what` names the input in errors), reading
+/// the cage files of subdivision surfaces relative to its folder.
+pub fn read_document(path: &str, what: &str) -> Result<splinekit_scene::SceneOrShape> {
+    let text = read_text(path, what)?;
+    Ok(splinekit_scene::SceneOrShape::from_json_in(&text, &document_folder(path))?)
+}
+
 /// Reads and parses a shape document; a scene is refused with its object count, for the
 /// commands that compare or combine shapes (`intersect`), where "each object" has no one
 /// meaning. The commands that answer for one shape take scenes through [`read_shapes`].
 pub fn read_shape(path: &str) -> Result<ShapeDocument> {
-    let text = read_text(path, "SHAPE")?;
-    match splinekit_scene::SceneOrShape::from_json(&text)? {
+    match read_document(path, "SHAPE")? {
         splinekit_scene::SceneOrShape::Shape(doc) => Ok(doc),
         splinekit_scene::SceneOrShape::Scene(scene) => bail!(
             "SHAPE: a scene of {} objects, but this command takes one shape (pick one of its \"objects\")",
@@ -64,7 +79,7 @@ pub enum Shapes {
 /// Reads and parses a shape document or a scene.
 pub fn read_shapes(path: &str) -> Result<Shapes> {
     let text = read_text(path, "SHAPE")?;
-    match splinekit_scene::SceneOrShape::from_json(&text)? {
+    match splinekit_scene::SceneOrShape::from_json_in(&text, &document_folder(path))? {
         splinekit_scene::SceneOrShape::Shape(doc) => Ok(Shapes::One(doc)),
         splinekit_scene::SceneOrShape::Scene(scene) => {
             let value: Value = serde_json::from_str(&text).context("SHAPE: invalid JSON")?;

@@ -267,7 +267,10 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         let surface = ["surface\"", "\"torus\"", "\"revolution\"", "\"coons\"", "\"sweep\"", "\"trimmed\""]
             .iter()
             .any(|k| doc.contains(k));
-        let args: &[&str] = if surface {
+        // A subdivision limit's grid meets extraordinary vertices, where it has no partials.
+        let args: &[&str] = if doc.contains("\"subdivision_surface\"") {
+            &["eval", "-", "--grid", "5,1"]
+        } else if surface {
             &["eval", "-", "--grid", "5,1", "--derivatives", "1"]
         } else {
             &["eval", "-", "--samples", "5", "--derivatives", "1"]

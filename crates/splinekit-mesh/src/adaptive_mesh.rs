@@ -48,6 +48,9 @@ pub fn adaptive_with_limit<const D: usize, S: Surface<D> + ?Sized>(
             format!("must be positive and finite, got {}", tolerance.chord_height),
         ));
     }
+    if let Some(s) = surface.subdivision() {
+        return Ok(crate::subdivision_mesh::within_tolerance(s, tolerance.chord_height, max_leaves)?.0);
+    }
     if tolerance.normal_angle.is_nan()
         || tolerance.normal_angle <= 0.0
         || tolerance.max_depth > 16

@@ -14,6 +14,7 @@ pub mod limit_mesh;
 mod mesh_cleanup;
 pub mod mesh_options;
 pub mod polyline;
+pub mod subdivision_mesh;
 pub mod subdivision_surface;
 pub mod surface_mesh;
 pub mod svg;

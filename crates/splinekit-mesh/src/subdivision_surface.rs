@@ -45,43 +45,14 @@ fn scale(a: [f64; 3], s: f64) -> [f64; 3] {
 }
 
 impl PolygonMesh {
-    /// Checks indices, face sizes and that every edge has at most two faces, used in
-    /// opposite directions (a consistently oriented manifold).
+    /// Checks the mesh as the kernel checks a subdivision cage (one home for the rules,
+    /// [`Topology::new`](splinekit::subdivision::surface::Topology::new)): finite vertices,
+    /// faces of 3 or more existing vertices, every edge in at most two faces used in opposite
+    /// directions (a consistently oriented manifold), the faces at a vertex one fan.
     pub fn validate(&self) -> Result<()> {
-        let n = self.vertices.len() as u32;
-        if let Some(i) = self.vertices.iter().position(|p| !p.iter().all(|x| x.is_finite())) {
-            return Err(Error::invalid(format!("vertices[{i}]"), "coordinates must be finite"));
-        }
-        let mut directed: HashMap<Edge, usize> = HashMap::new();
-        for (f, face) in self.faces.iter().enumerate() {
-            if face.len() < 3 {
-                return Err(Error::invalid(
-                    format!("faces[{f}]"),
-                    format!("a face needs 3 or more vertices, got {}", face.len()),
-                ));
-            }
-            if let Some(&i) = face.iter().find(|&&i| i >= n) {
-                return Err(Error::invalid(
-                    format!("faces[{f}]"),
-                    format!("vertex {i} does not exist (there are {n})"),
-                ));
-            }
-            for k in 0..face.len() {
-                let (a, b) = (face[k], face[(k + 1) % face.len()]);
-                if a == b {
-                    return Err(Error::invalid(format!("faces[{f}]"), format!("vertex {a} repeats along an edge")));
-                }
-                if let Some(g) = directed.insert((a, b), f) {
-                    return Err(Error::invalid(
-                        format!("faces[{f}]"),
-                        format!(
-                            "the edge {a}→{b} is also in faces[{g}]: faces must be oriented consistently, two per edge at most"
-                        ),
-                    ));
-                }
-            }
-        }
-        Ok(())
+        let vertices = self.vertices.iter().map(|p| splinekit::Point::<3>::from(*p)).collect();
+        let cage = splinekit::subdivision::surface::Cage::new(vertices, &self.faces);
+        splinekit::subdivision::surface::Topology::new(&cage).map(|_| ())
     }
 
     fn face_points(&self) -> Vec<[f64; 3]> {
@@ -317,39 +288,10 @@ pub enum SurfaceScheme {
 }
 
 /// Reads the vertices and polygon faces of an OBJ file (`v` and `f`, 1-based or negative
-/// indices, `v/vt/vn` corners).
+/// indices, `v/vt/vn` corners; the kernel's [`read_obj_cage`](splinekit::subdivision::surface::read_obj_cage)).
 pub fn read_obj_polygons(text: &str) -> std::result::Result<PolygonMesh, String> {
-    let mut m = PolygonMesh::default();
-    for (k, line) in text.lines().enumerate() {
-        let mut words = line.split_whitespace();
-        match words.next() {
-            Some("v") => {
-                let v: std::result::Result<Vec<f64>, _> = words.take(3).map(str::parse).collect();
-                let v = v.map_err(|e| format!("line {}: {e}", k + 1))?;
-                if v.len() != 3 {
-                    return Err(format!("line {}: a vertex needs 3 coordinates", k + 1));
-                }
-                m.vertices.push([v[0], v[1], v[2]]);
-            }
-            Some("f") => {
-                let n = m.vertices.len() as i64;
-                let face: std::result::Result<Vec<u32>, String> = words
-                    .map(|c| {
-                        let i: i64 =
-                            c.split('/').next().unwrap_or("").parse().map_err(|e| format!("line {}: {e}", k + 1))?;
-                        let idx = if i < 0 { n + i } else { i - 1 };
-                        if idx < 0 || idx >= n {
-                            return Err(format!("line {}: vertex {i} does not exist (there are {n})", k + 1));
-                        }
-                        Ok(idx as u32)
-                    })
-                    .collect();
-                m.faces.push(face?);
-            }
-            _ => {}
-        }
-    }
-    Ok(m)
+    let cage = splinekit::subdivision::surface::read_obj_cage(text)?;
+    Ok(PolygonMesh { vertices: cage.vertices, faces: cage.faces })
 }
 
 /// Writes the mesh as OBJ text (polygon faces) to `out` (give it a buffered writer);

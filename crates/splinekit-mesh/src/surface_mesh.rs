@@ -9,7 +9,8 @@
 //! either way. The result is finished by [`crate::mesh_cleanup`] (closed meshes face
 //! outward). Trimmed surfaces are triangulated in the parameter plane with their trimming
 //! loops as constraints ([`crate::trimmed_mesh`]); adaptive meshes are in
-//! [`crate::adaptive_mesh`].
+//! [`crate::adaptive_mesh`]; subdivision limits are meshed by subdividing their cage
+//! ([`crate::subdivision_mesh`]).
 
 use splinekit::surface::Surface;
 use splinekit::{Error, Point, Result};
@@ -37,6 +38,10 @@ pub fn regular<const D: usize, S: Surface<D> + ?Sized>(
     }
     if let Some(loops) = surface.trim_loops() {
         return crate::trimmed_mesh::trimmed(surface, &loops, nu.max(nv), options);
+    }
+    if let Some(s) = surface.subdivision() {
+        let steps = crate::subdivision_mesh::steps_for_density(s, nu.max(nv));
+        return crate::subdivision_mesh::limit_triangles(s, steps);
     }
     let (du, dv) = (surface.domain_u(), surface.domain_v());
     let n = (nu as i64, nv as i64);

@@ -516,7 +516,8 @@ fn scene_shape(scene: &str) -> Option<Shape> {
         | "torus_after"
         | "torus_animated"
         | "torus_before"
-        | "torus_gaussian_curvature" => Shape::Closed(None),
+        | "torus_gaussian_curvature"
+        | "subdivision_surfaces" => Shape::Closed(None),
         "beating_heart" | "bspline_polygon" | "heart_local_curves" | "heart_transformed" | "rose_and_blending_copy" => {
             return None;
         }

@@ -71,27 +71,37 @@ pub fn any_document(ob: &Bound<'_, PyAny>) -> PyResult<Value> {
 }
 
 /// The JSON value of a ``load`` argument: a dict (or any JSON-like Python value), JSON
-/// text, or a path (``str`` or ``os.PathLike``) of a JSON file.
+/// text, or a path (``str`` or ``os.PathLike``) of a JSON file. The cage files of
+/// subdivision surfaces (``"obj"``) are read relative to the file's folder, or to the
+/// current folder for a dict or JSON text.
 fn document_value(doc: &Bound<'_, PyAny>) -> PyResult<Value> {
-    let text: Option<String> = if let Ok(s) = doc.extract::<String>() {
+    let read = |path: &std::path::Path| {
+        std::fs::read_to_string(path)
+            .map_err(|e| value_error(format!("document: cannot read '{}': {e}", path.display())))
+    };
+    let (text, path): (Option<String>, Option<std::path::PathBuf>) = if let Ok(s) = doc.extract::<String>() {
         if s.trim_start().starts_with('{') {
-            Some(s)
+            (Some(s), None)
         } else {
-            Some(std::fs::read_to_string(&s).map_err(|e| value_error(format!("document: cannot read '{s}': {e}")))?)
+            let path = std::path::PathBuf::from(&s);
+            (Some(read(&path)?), Some(path))
         }
     } else if doc.hasattr("__fspath__")? {
         let path: std::path::PathBuf = doc.extract()?;
-        Some(
-            std::fs::read_to_string(&path)
-                .map_err(|e| value_error(format!("document: cannot read '{}': {e}", path.display())))?,
-        )
+        (Some(read(&path)?), Some(path))
     } else {
-        None
+        (None, None)
     };
-    match text {
-        Some(t) => parse_json(doc.py(), &t),
-        None => to_value(doc, ""),
-    }
+    let mut value = match text {
+        Some(t) => parse_json(doc.py(), &t)?,
+        None => to_value(doc, "")?,
+    };
+    let folder = match path.as_deref().and_then(std::path::Path::parent) {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    };
+    splinekit_scene::cage_file::read_cage_files(&mut value, &folder).or_value_error()?;
+    Ok(value)
 }
 
 /// JSON text as a value, its numbers read by Python's correctly rounded parser (every

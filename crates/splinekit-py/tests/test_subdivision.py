@@ -217,3 +217,26 @@ def test_bad_arguments_name_the_field():
         sk.SubdivisionSurface([[0, 0, 0], [np.nan, 0, 0], [0, 1, 0]], [[0, 1, 2]])
     with pytest.raises(ValueError, match=r"^steps: "):
         sk.SubdivisionSurface(v, f).subdivide(12)
+
+
+def test_the_shape_document_is_the_exact_limit(tmp_path):
+    """``load`` of a ``subdivision_surface`` document (the cage from an OBJ file beside it,
+    creases from its tags): chart c + u, v is face c at (u, v), bit for bit the kernel's
+    evaluation; ``tessellate`` puts the cage's vertices at their limit points first."""
+    (tmp_path / "cage.obj").write_text((MESHES / "creased_cube.obj").read_text())
+    (tmp_path / "doc.json").write_text(json.dumps({"type": "subdivision_surface", "obj": "cage.obj"}))
+    doc = sk.load(tmp_path / "doc.json")
+    s = surface("creased_cube.obj")
+    for face, u, w in [(0, 0.5, 0.5), (3, 0.25, 0.75), (5, 0.875, 0.125)]:
+        got = np.asarray(doc(face + u, w, grid=False)).reshape(-1)
+        np.testing.assert_array_equal(got, np.asarray(s.evaluate(face, u, w)["position"]))
+    mesh = doc.tessellate(tolerance=1e-2)
+    limit = np.asarray(s.limit_points())
+    np.testing.assert_allclose(mesh.vertices[: len(limit)], limit, rtol=0, atol=1e-14)
+    # The same document inline, and round trips through its dict.
+    inline = sk.load(doc.to_dict())
+    assert inline.to_dict() == doc.to_dict() and "obj" not in doc.to_dict()
+    with pytest.raises(ValueError, match=r"^obj: cannot read the cage file"):
+        sk.load({"type": "subdivision_surface", "obj": str(tmp_path / "missing.obj")})
+    with pytest.raises(ValueError, match=r"^faces\[0\]: vertex 7 does not exist"):
+        sk.load({"type": "subdivision_surface", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "faces": [[0, 1, 7]]})

@@ -252,6 +252,11 @@ fn decorate(decoration: Decoration<'_>, style: &StyleDoc, out: &mut RenderScene)
                 local_patches(d, out)?;
             }
         }
+        Decoration::Cage { vertices, faces } => {
+            if style.control_net {
+                cage(vertices, faces, out);
+            }
+        }
     }
     Ok(())
 }
@@ -335,6 +340,16 @@ fn polygon(points: &[Vec<f64>], closed: bool, out: &mut RenderScene) {
         .collect();
     out.lines.push(LineItem { points: pts.clone(), closed, color: NET, width: 1.5 });
     out.points.extend(pts.iter().map(|&p| PointItem { position: p, color: [0.1, 0.1, 0.1, 1.0], size: 7.0 }));
+}
+
+/// A subdivision cage: each face as a closed polygon, with the vertices.
+fn cage(vertices: &[Vec<f64>], faces: &[Vec<u32>], out: &mut RenderScene) {
+    let at = |p: &Vec<f64>| [p[0] as f32, *p.get(1).unwrap_or(&0.0) as f32, *p.get(2).unwrap_or(&0.0) as f32];
+    for face in faces {
+        let points: Vec<[f32; 3]> = face.iter().filter_map(|&i| vertices.get(i as usize)).map(at).collect();
+        out.lines.push(LineItem { points, closed: true, color: NET, width: 1.5 });
+    }
+    out.points.extend(vertices.iter().map(|p| PointItem { position: at(p), color: [0.1, 0.1, 0.1, 1.0], size: 7.0 }));
 }
 
 /// A control net: its rows and its columns as polygons, with the points.

@@ -9,6 +9,7 @@
 pub mod bfunctions;
 pub mod blending;
 pub mod budget;
+pub mod cage_file;
 pub mod curves;
 mod defaults;
 pub mod dimension;

@@ -92,6 +92,13 @@ pub enum Decoration<'a> {
     LocalCurves(&'a BlendingSplineDoc),
     /// The local patches of a blending-spline surface.
     LocalPatches(&'a BlendingSplineSurfaceDoc),
+    /// The polygon cage of a subdivision surface: its vertices and faces (vertex indices).
+    Cage {
+        /// The vertices, 3-D.
+        vertices: &'a [Vec<f64>],
+        /// The faces.
+        faces: &'a [Vec<u32>],
+    },
 }
 
 /// Declares the document enum of a family from its list of kinds.

@@ -505,6 +505,19 @@ impl SceneOrShape {
     pub fn from_json(text: &str) -> Result<Self> {
         let value: Value =
             serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
+        Self::from_value(value)
+    }
+    /// Parses JSON text read from a file in `folder` (the current folder for standard
+    /// input): as [`Self::from_json`], with the cage files of subdivision surfaces read
+    /// from paths relative to `folder` ([`crate::cage_file`]).
+    pub fn from_json_in(text: &str, folder: &std::path::Path) -> Result<Self> {
+        let mut value: Value =
+            serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
+        crate::cage_file::read_cage_files(&mut value, folder)?;
+        Self::from_value(value)
+    }
+    /// A scene or shape from its JSON value.
+    pub fn from_value(value: Value) -> Result<Self> {
         if value.get("type").and_then(Value::as_str) == Some("scene") {
             Ok(SceneOrShape::Scene(SceneDocument::from_value(value)?))
         } else {

@@ -9,6 +9,7 @@
 mod from_curves;
 mod nets;
 mod placed;
+mod subdivision;
 mod trimmed;
 
 use serde_json::Value;
@@ -21,6 +22,7 @@ pub use crate::blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, RuledDoc, SweepDoc};
 pub use nets::{BSplineSurfaceDoc, BezierSurfaceDoc, NurbsSurfaceDoc};
 pub use placed::PlacedDoc;
+pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
 pub use trimmed::TrimmedDoc;
 
 use crate::dimension::Surfaces;
@@ -93,6 +95,8 @@ macro_rules! surface_kinds {
                 Placed(PlacedDoc) = "placed", python(base),
                 /// Blending-spline surface.
                 BlendingSplineSurface(BlendingSplineSurfaceDoc) = "blending_spline_surface", python(base),
+                /// The limit surface of a subdivision cage.
+                SubdivisionSurface(SubdivisionSurfaceDoc) = "subdivision_surface", python(base),
             }
         }
     };

@@ -12,15 +12,20 @@ pub const STARTER: &str = r#"{"type": "scene", "objects": [{"shape": {"type": "b
   "model": {"type": "heart"}, "local_curves": 10, "local": {"type": "bezier", "degree": 2}},
   "local_pieces": true, "color": [0.9, 0.25, 0.55], "line_width": 3}], "size": [600, 600]}"#;
 
-/// Reads a scene or shape document; the message names the file and the field.
+/// Reads a scene or shape document (cage files of subdivision surfaces relative to its
+/// folder); the message names the file and the field.
 pub fn read(path: &Path) -> Result<SceneDocument, String> {
     let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
-    parse(&text).map_err(|e| format!("{}: {e}", path.display()))
+    let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    SceneOrShape::from_json_in(&text, folder)
+        .map(SceneOrShape::into_scene)
+        .map_err(|e| format!("{}: {e}", path.display()))
 }
 
-/// Parses a scene or shape document from JSON text.
+/// Parses a scene or shape document from JSON text (cage files relative to the current
+/// folder).
 pub fn parse(text: &str) -> Result<SceneDocument, String> {
-    SceneOrShape::from_json(text).map(SceneOrShape::into_scene).map_err(|e| e.to_string())
+    SceneOrShape::from_json_in(text, Path::new(".")).map(SceneOrShape::into_scene).map_err(|e| e.to_string())
 }
 
 /// Writes the scene as pretty JSON.

@@ -2,8 +2,9 @@
 //! blending-spline curve or surface (the frame origin moved by its transform,
 //! o + t), one at each control point of a Bézier local curve or patch of a blending spline
 //! (in the world: its frame applied, o + T(P − o); the view shows those of the selected
-//! local piece only, [`Handle::shown_with`]), and one at each control point of a Bézier,
-//! B-spline or NURBS curve or net.
+//! local piece only, [`Handle::shown_with`]), one at each control point of a Bézier,
+//! B-spline or NURBS curve or net, and one at each cage vertex of a subdivision surface
+//! (`vertices[i]`).
 
 use serde_json::Value;
 use splinekit::blend::BlendingSplineSurface;
@@ -150,6 +151,11 @@ pub fn handles_with<'a>(
                     for (j, p) in row.iter().enumerate() {
                         push(HandleKind::NetPoint(i, j), p, p, p.len().min(3));
                     }
+                }
+            }
+            Decoration::Cage { vertices, .. } => {
+                for (i, p) in vertices.iter().enumerate() {
+                    push(HandleKind::ControlPoint(i, "vertices"), p, p, 3);
                 }
             }
             Decoration::LocalCurves(d) => local_curves(d, &mut push).map_err(within)?,

@@ -101,7 +101,11 @@ fn describe(e: &Exported) -> String {
 
 fn json_to_step(args: &ConvertArgs) -> Result<()> {
     let text = crate::input::read_text(&args.input, "IN")?;
-    let doc = SceneOrShape::from_json(&text).map_err(|e| anyhow!("{e}"))?;
+    let doc =
+        SceneOrShape::from_json_in(&text, &crate::input::document_folder(&args.input)).map_err(|e| anyhow!("{e}"))?;
+    // Subdivision surfaces as their patches, so that each item has its shape for the report.
+    let doc = splinekit_step::documents::subdivision::expand_subdivision_surfaces(&doc, args.tolerance)
+        .map_err(|e| anyhow!("{e}"))?;
     let name = stem(&args.input);
     let (step, exported) = export_document(&doc, &name, args.tolerance, &header(&name)).map_err(|e| anyhow!("{e}"))?;
     splinekit_scene::write_file(&args.output, step.as_bytes())

@@ -208,7 +208,7 @@ pub fn run(args: &EvalArgs) -> Result<()> {
     let order = parse_count("--derivatives", &args.derivatives, MAX_DERIVATIVES)?;
     let time = args.time.as_deref().map(parse_time).transpose()?;
     let text = read_text(&args.shape, "SHAPE")?;
-    match SceneOrShape::from_json(&text)? {
+    match SceneOrShape::from_json_in(&text, &crate::input::document_folder(&args.shape))? {
         SceneOrShape::Shape(mut doc) => {
             if let Some(t) = time {
                 doc.set_time(t);

@@ -59,7 +59,13 @@ impl EvalSurface<'_> {
     fn sample<const D: usize>(&self, s: &dyn Surface<D>, k: usize) -> Result<Samples<D>> {
         let (du, dv) = (s.domain_u(), s.domain_v());
         let w = (k + 1) * (k + 1);
-        Ok(match (self.at, self.grid) {
+        if s.subdivision().is_some() && self.order > 2 {
+            bail!(
+                "--derivatives: the limit of a subdivision surface has partials up to order 2 here, got {}",
+                self.order
+            );
+        }
+        let samples = match (self.at, self.grid) {
             (Some(list), _) => {
                 for &(u, v) in list {
                     let slack = |d: &Interval| 1e-12 * d.length().max(d.start.abs()).max(d.end.abs());
@@ -85,7 +91,21 @@ impl EvalSurface<'_> {
                 (params, values)
             }
             (None, None) => bail!("give --at U:V,... or --grid NU,NV"),
-        })
+        };
+        if s.subdivision().is_some() {
+            let (params, values) = &samples;
+            for (n, &(u, v)) in params.iter().enumerate() {
+                let printed = (0..=k)
+                    .flat_map(|i| (0..=k).map(move |j| (i, j)))
+                    .filter(|&(i, j)| i + j >= 1 && i + j <= self.order);
+                if printed.into_iter().any(|(i, j)| !values[n * w + i * (k + 1) + j].iter().all(|x| x.is_finite())) {
+                    bail!(
+                        "--derivatives: the limit surface has no partials at ({u}, {v}), an extraordinary vertex (its point and normal are given without --derivatives)"
+                    );
+                }
+            }
+        }
+        Ok(samples)
     }
 }
 

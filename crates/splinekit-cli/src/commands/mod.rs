@@ -13,6 +13,5 @@ pub mod render;
 pub mod section;
 pub mod subdivide;
 pub mod subdivide_surface;
-pub mod subdivide_surface_step;
 pub mod tessellate;
 pub mod view;

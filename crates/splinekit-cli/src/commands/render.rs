@@ -66,7 +66,7 @@ fn image_size(arg: Option<&str>, scene: &SceneDocument) -> Result<(u32, u32)> {
 
 pub fn read_scene(path: &str) -> Result<SceneDocument> {
     let text = read_text(path, "scene")?;
-    Ok(SceneOrShape::from_json(&text)?.into_scene())
+    Ok(SceneOrShape::from_json_in(&text, &crate::input::document_folder(path))?.into_scene())
 }
 
 /// Renders one frame of a scene (with `camera`, or the scene's own).

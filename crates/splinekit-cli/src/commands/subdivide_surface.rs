@@ -93,23 +93,10 @@ fn sample_json(s: &splinekit::subdivision::surface::LimitSample) -> serde_json::
     })
 }
 
-/// `t crease 2/1 A B S` tags of an OBJ text (0-based vertex indices).
+/// `t crease 2/1 A B S` tags of an OBJ text (0-based vertex indices; the kernel's
+/// [`read_obj_cage`](splinekit::subdivision::surface::read_obj_cage)).
 pub fn read_obj_creases(text: &str) -> std::result::Result<Vec<Crease>, String> {
-    let mut creases = Vec::new();
-    for (k, line) in text.lines().enumerate() {
-        let words: Vec<&str> = line.split_whitespace().collect();
-        if words.len() >= 2 && words[0] == "t" && words[1] == "crease" {
-            let bad = || format!("line {}: a crease tag is `t crease 2/1 A B SHARPNESS`, got '{}'", k + 1, line.trim());
-            if words.len() != 6 || words[2] != "2/1" {
-                return Err(bad());
-            }
-            let a: u32 = words[3].parse().map_err(|_| bad())?;
-            let b: u32 = words[4].parse().map_err(|_| bad())?;
-            let s: f64 = words[5].parse().map_err(|_| bad())?;
-            creases.push(Crease { a, b, sharpness: s });
-        }
-    }
-    Ok(creases)
+    Ok(splinekit::subdivision::surface::read_obj_cage(text)?.creases)
 }
 
 pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
@@ -203,9 +190,10 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
 }
 
 /// The limit surface as STEP: one Bézier surface per patch of
-/// [`super::subdivide_surface_step::limit_patches`].
+/// [`limit_patches`](splinekit::subdivision::surface::bezier_patches::limit_patches).
 fn write_step(surface: &SubdivisionSurface, depth: usize, name: &str, path: &str) -> Result<()> {
-    use super::subdivide_surface_step::{limit_patches, patches_document};
+    use splinekit::subdivision::surface::bezier_patches::limit_patches;
+    use splinekit_step::documents::subdivision::patches_scene;
     if surface.scheme() != KernelScheme::CatmullClark {
         bail!("-o: STEP export is for catmull-clark (exact bicubic patches), not {}", surface.scheme().name());
     }
@@ -213,8 +201,7 @@ fn write_step(surface: &SubdivisionSurface, depth: usize, name: &str, path: &str
         bail!("--steps: STEP export subdivides the faces at extraordinary vertices --steps times, at least 1, got 0");
     }
     let patches = limit_patches(surface, depth).map_err(|e| anyhow!("mesh: {e}"))?;
-    let doc =
-        splinekit_scene::SceneDocument::from_value(patches_document(&patches)).map_err(|e| anyhow!("mesh: {e}"))?;
+    let doc = patches_scene(&patches).ok_or_else(|| anyhow!("mesh: the limit surface has no patches"))?;
     let header = splinekit_step::part21::writer::HeaderInfo { name: name.to_string(), ..Default::default() };
     let (text, _) =
         splinekit_step::documents::export_document(&splinekit_scene::SceneOrShape::Scene(doc), name, 1e-6, &header)

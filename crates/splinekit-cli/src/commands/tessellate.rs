@@ -120,7 +120,7 @@ fn written(write: impl FnOnce(&mut Vec<u8>) -> Result<(), ExportError>) -> Resul
 pub fn run(args: &TessellateArgs) -> Result<()> {
     let ext = args.output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
     let text = crate::input::read_text(&args.shape, "shape")?;
-    let mut doc = match SceneOrShape::from_json(&text)? {
+    let mut doc = match SceneOrShape::from_json_in(&text, &crate::input::document_folder(&args.shape))? {
         SceneOrShape::Scene(scene) => return write_scene(&scene, args, &ext),
         SceneOrShape::Shape(doc) => doc,
     };

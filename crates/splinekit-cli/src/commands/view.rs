@@ -53,7 +53,7 @@ pub fn run(args: &ViewArgs) -> Result<()> {
     let text = from_stdin.then(|| crate::input::read_text("-", "scene")).transpose()?;
     if let Some(t) = &text {
         // Checked here so that a bad document fails like every command, before a window.
-        splinekit_scene::SceneOrShape::from_json(t)?;
+        splinekit_scene::SceneOrShape::from_json_in(t, std::path::Path::new("."))?;
     }
     let options = splinekit_studio::Options {
         path: args.scene.as_ref().filter(|_| !from_stdin).map(PathBuf::from),

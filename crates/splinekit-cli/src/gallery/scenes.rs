@@ -116,4 +116,9 @@ pub const SCENES: &[(&str, &str, &str)] = &[
     ("seashell", include_str!("../../../../examples/scenes/seashell.json"), "The seashell model surface."),
     ("apple", include_str!("../../../../examples/scenes/apple.json"), "The apple model surface."),
     ("mobius", include_str!("../../../../examples/scenes/mobius.json"), "The Möbius strip model surface."),
+    (
+        "subdivision_surfaces",
+        include_str!("../../../../examples/scenes/subdivision_surfaces.json"),
+        "Two subdivision_surface documents inside their cages: the Catmull–Clark limit of the cube with its top ring infinitely sharp and one bottom edge of sharpness 2.5, and Loop's limit of the cube split into triangle fans, meshed on the exact limit.",
+    ),
 ];

@@ -468,6 +468,11 @@ fn fitted_surface(
 
 /// Exports a surface document; `relative_tolerance` scales with the surface's size.
 pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64) -> Result<Exported> {
+    if let SurfaceDocument::SubdivisionSurface(_) = doc {
+        return Err(StepError::plain(
+            "subdivision_surface: a limit surface is exported as its patches, one item each (export_document)",
+        ));
+    }
     let form = doc.exact_form().map_err(|e| plain("document", e))?;
     if let SurfaceForm::Trimmed(t) = form {
         return super::faces::export_trimmed(t, name, relative_tolerance);

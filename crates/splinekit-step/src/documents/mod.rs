@@ -3,6 +3,7 @@
 
 pub mod export;
 pub mod faces;
+pub mod subdivision;
 
 pub use export::{
     Exported, Form, ParamMap, Sample, export_curve, export_shape, export_surface, exports_exactly, samples,
@@ -24,14 +25,17 @@ pub fn object_name(index: usize, shape: &ShapeDocument) -> String {
 }
 
 /// Exports a scene (one item per object, named after it) or a single shape (named
-/// `name`) as one STEP file; returns the text and what was measured per item.
+/// `name`) as one STEP file; returns the text and what was measured per item. Subdivision
+/// surfaces are first replaced by their patches ([`subdivision::expand_subdivision_surfaces`]),
+/// one item each.
 pub fn export_document(
     doc: &SceneOrShape,
     name: &str,
     relative_tolerance: f64,
     header: &HeaderInfo,
 ) -> Result<(String, Vec<Exported>)> {
-    let exported: Vec<Exported> = match doc {
+    let expanded = subdivision::expand_subdivision_surfaces(doc, relative_tolerance)?;
+    let exported: Vec<Exported> = match &expanded {
         SceneOrShape::Shape(shape) => vec![export_shape(shape, name, relative_tolerance)?],
         SceneOrShape::Scene(scene) => scene
             .objects

@@ -165,6 +165,13 @@ pub trait Surface<const D: usize>: Send + Sync {
         None
     }
 
+    /// For the limit surface of a subdivision surface, the subdivision surface, which
+    /// meshes are made of (its cage subdivided and placed on the limit) rather than of a
+    /// parameter grid; `None` for other surfaces.
+    fn subdivision(&self) -> Option<&crate::subdivision::surface::SubdivisionSurface> {
+        None
+    }
+
     /// The point S(u, v).
     fn point(&self, u: f64, v: f64) -> Point<D> {
         let mut out = [Point::<D>::zeros()];
@@ -248,6 +255,11 @@ pub fn normal_or_limit<const D: usize, S: Surface<D> + ?Sized>(
     if let Some(n) = unit_normal(su, sv) {
         return Some(n);
     }
+    // Surfaces that know their normal where the partials vanish (a subdivision limit's
+    // extraordinary vertices) say so here.
+    if let Some(n) = s.normal(u, v) {
+        return Some(n);
+    }
     let (du, dv) = (s.domain_u(), s.domain_v());
     let (hu, hv) = (1e-7 * du.length(), 1e-7 * dv.length());
     let inside = |x: f64, d: &Interval| x >= d.start && x <= d.end;
@@ -329,6 +341,9 @@ macro_rules! forward_surface {
             }
             fn trim_loops(&self) -> Option<TrimLoops<'_>> {
                 (**self).trim_loops()
+            }
+            fn subdivision(&self) -> Option<&crate::subdivision::surface::SubdivisionSurface> {
+                (**self).subdivision()
             }
             fn breakpoints_u(&self) -> Vec<f64> {
                 (**self).breakpoints_u()

@@ -2,12 +2,15 @@
 //! with sharp and semi-sharp creases and boundary rules, limit masks at vertices, and
 //! exact evaluation of the limit surface at any (face, u, v).
 //!
-//! One concept per file: [`cage`] (the data), [`topology`] (half-edge adjacency),
+//! One concept per file: [`cage`] (the data), [`atlas`] (the limit as one parametric surface), [`topology`] (half-edge adjacency),
 //! [`creases`] (sharpness rules), [`catmull_clark`], [`loop_scheme`], [`bilinear`] (one
-//! step each), [`limit_masks`], [`regular_patch`] and [`box_spline`] (polynomial patches
-//! on regular faces), [`local`] (neighbourhoods) and [`limit_eval`] (exact evaluation).
+//! step each), [`bezier_patches`] (the limit as Bézier patches, for STEP), [`limit_masks`], [`regular_patch`] and [`box_spline`] (polynomial patches
+//! on regular faces), [`local`] (neighbourhoods), [`limit_eval`] (exact evaluation) and [`obj_cage`] (reading
+//! a cage from OBJ).
 //! Doo–Sabin steps live with the polygon meshes of `splinekit-mesh`.
 
+pub mod atlas;
+pub mod bezier_patches;
 pub mod bilinear;
 pub mod box_spline;
 pub mod cage;
@@ -17,12 +20,15 @@ pub mod limit_eval;
 pub mod limit_masks;
 pub mod local;
 pub mod loop_scheme;
+pub mod obj_cage;
 pub mod regular_patch;
 pub mod topology;
 
+pub use atlas::{Chart, LimitAtlas};
 pub use cage::{BoundaryRule, Cage, Crease, INFINITE_SHARPNESS};
 pub use limit_eval::{LimitSample, Partials};
 pub use limit_masks::LimitFrame;
+pub use obj_cage::{ObjCage, read_obj_cage};
 pub use topology::Topology;
 
 use crate::{Error, Result};

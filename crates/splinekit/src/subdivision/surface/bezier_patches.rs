@@ -1,4 +1,4 @@
-//! The Catmull–Clark limit surface as patches for STEP (`subdivide-surface … -o OUT.step`).
+//! The Catmull–Clark limit surface as polynomial patches (for STEP export).
 //!
 //! Where a quad and its 1-ring are regular (every corner smooth of valence 4, or a regular
 //! crease or boundary, see `regular_patch::catmull_clark_grid`), the limit surface on the
@@ -10,11 +10,13 @@
 //! `face_offsets[f] + k` — and their children tried again, down to `depth` steps; the
 //! faces still irregular then (those touching an extraordinary vertex, of size about
 //! 2^−depth) become bilinear patches through the limit points of their corners, which
-//! meet their neighbours' edges at those points.
+//! meet their neighbours' edges at those points. [`LimitPatches::max_deviation`] measures
+//! them: the largest distance between a stand-in's centre and the exact limit at its face's
+//! centre.
 
-use splinekit::Point;
-use splinekit::subdivision::surface::SubdivisionSurface;
-use splinekit::subdivision::surface::regular_patch::catmull_clark_grid;
+use super::SubdivisionSurface;
+use super::regular_patch::catmull_clark_grid;
+use crate::Point;
 
 /// Patches of a limit surface: exact bicubic Bézier patches (`[i][j]`, i along u) and
 /// bilinear patches `[c₀, c₁, c₂, c₃]` (corners in face order) standing in for the
@@ -25,6 +27,9 @@ pub struct LimitPatches {
     pub bicubic: Vec<[[Point<3>; 4]; 4]>,
     /// Bilinear patches through limit points.
     pub bilinear: Vec<[Point<3>; 4]>,
+    /// The largest distance between a bilinear patch's centre and the limit surface at the
+    /// centre of its face (0 without bilinear patches).
+    pub max_deviation: f64,
 }
 
 /// The Bézier points of the uniform cubic B-spline of g on one span.
@@ -45,7 +50,7 @@ pub fn bezier_patch(g: &[[Point<3>; 4]; 4]) -> [[Point<3>; 4]; 4] {
 }
 
 /// The patches of a Catmull–Clark surface, irregular faces subdivided `depth` (≥ 1) times.
-pub fn limit_patches(surface: &SubdivisionSurface, depth: usize) -> splinekit::Result<LimitPatches> {
+pub fn limit_patches(surface: &SubdivisionSurface, depth: usize) -> crate::Result<LimitPatches> {
     let mut out = LimitPatches::default();
     let mut s = surface.clone();
     let mut pending: Vec<u32> = (0..s.cage().face_count() as u32).collect();
@@ -64,6 +69,8 @@ pub fn limit_patches(surface: &SubdivisionSurface, depth: usize) -> splinekit::R
                 for (k, &v) in face.iter().take(4).enumerate() {
                     q[k] = s.limit_frame(v)?.position;
                 }
+                let centre = s.evaluate(f as usize, 0.5, 0.5)?.position;
+                out.max_deviation = out.max_deviation.max(((q[0] + q[1] + q[2] + q[3]) / 4.0 - centre).norm());
                 out.bilinear.push(q);
             }
         }
@@ -76,25 +83,10 @@ pub fn limit_patches(surface: &SubdivisionSurface, depth: usize) -> splinekit::R
     Ok(out)
 }
 
-/// The patches as a scene document of `bezier_surface` objects.
-pub fn patches_document(p: &LimitPatches) -> serde_json::Value {
-    let a = |q: &Point<3>| serde_json::json!([q.x, q.y, q.z]);
-    let mut objects = Vec::with_capacity(p.bicubic.len() + p.bilinear.len());
-    for b in &p.bicubic {
-        let net: Vec<Vec<serde_json::Value>> = b.iter().map(|row| row.iter().map(a).collect()).collect();
-        objects.push(serde_json::json!({"shape": {"type": "bezier_surface", "control_points": net}}));
-    }
-    for q in &p.bilinear {
-        let net = serde_json::json!([[a(&q[0]), a(&q[3])], [a(&q[1]), a(&q[2])]]);
-        objects.push(serde_json::json!({"shape": {"type": "bezier_surface", "control_points": net}}));
-    }
-    serde_json::json!({"type": "scene", "objects": objects})
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use splinekit::subdivision::surface::{Cage, Scheme};
+    use crate::subdivision::surface::{Cage, Scheme};
 
     fn bezier_at(b: &[[Point<3>; 4]; 4], u: f64, v: f64) -> Point<3> {
         let w = |t: f64| [(1.0 - t).powi(3), 3.0 * t * (1.0 - t).powi(2), 3.0 * t * t * (1.0 - t), t.powi(3)];
@@ -172,6 +164,7 @@ mod tests {
             worst
         };
         let (d3, d4) = (deviation(3), deviation(4));
+        assert!((p.max_deviation - d3).abs() < 1e-12, "{} vs {d3}", p.max_deviation);
         eprintln!("cube: bilinear patches within {d3:e} (3 levels), {d4:e} (4 levels) of the limit at their centres");
         // Quadratic in the patch size: a quarter per level or better (0.18 here, near λ² ≈ 0.17
         // of the valence-3 subdominant eigenvalue λ ≈ 0.41).

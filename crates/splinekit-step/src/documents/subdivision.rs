@@ -1,0 +1,104 @@
+//! `subdivision_surface` documents in STEP: the Catmull–Clark limit surface as one Bézier
+//! surface per patch ([`limit_patches`]): exact bicubic patches on regular faces, and
+//! around extraordinary vertices (and semi-sharp creases) faces subdivided until regular,
+//! the last ring of faces at each extraordinary vertex as bilinear patches through limit
+//! points. The depth is the fewest levels (1 to [`MAX_DEPTH`]) whose stand-ins come within
+//! the tolerance (relative to the cage's bounding-box diagonal) of the limit at their
+//! centres, where a bilinear patch between limit points strays most.
+
+use splinekit::Point;
+use splinekit::subdivision::surface::Scheme;
+use splinekit::subdivision::surface::bezier_patches::{LimitPatches, limit_patches};
+use splinekit_scene::surfaces::{BezierSurfaceDoc, SubdivisionSurfaceDoc};
+use splinekit_scene::{SceneDocument, SceneObject, SceneOrShape, ShapeDocument, SurfaceDocument};
+
+use crate::error::{Result, StepError};
+
+/// Most levels of subdivision at extraordinary vertices (each adds a ring of bilinear
+/// stand-ins half the size, about a quarter of the deviation).
+pub const MAX_DEPTH: usize = 6;
+
+/// The patches as `bezier_surface` documents (bicubic, then the bilinear stand-ins).
+pub fn patch_shapes(p: &LimitPatches) -> Vec<ShapeDocument> {
+    let a = |q: &Point<3>| vec![q.x, q.y, q.z];
+    let bezier =
+        |control_points| ShapeDocument::Surface(SurfaceDocument::BezierSurface(BezierSurfaceDoc { control_points }));
+    let mut shapes = Vec::with_capacity(p.bicubic.len() + p.bilinear.len());
+    for b in &p.bicubic {
+        shapes.push(bezier(b.iter().map(|row| row.iter().map(a).collect()).collect()));
+    }
+    for q in &p.bilinear {
+        shapes.push(bezier(vec![vec![a(&q[0]), a(&q[3])], vec![a(&q[1]), a(&q[2])]]));
+    }
+    shapes
+}
+
+/// The patches as a scene of `bezier_surface` objects.
+pub fn patches_scene(p: &LimitPatches) -> Option<SceneDocument> {
+    let shapes = patch_shapes(p);
+    let mut scene = SceneDocument::of_shape(shapes.first()?.clone());
+    let style = scene.objects[0].clone();
+    scene.objects = shapes.into_iter().map(|shape| SceneObject { shape, ..style.clone() }).collect();
+    Some(scene)
+}
+
+/// The patches of a document's limit surface within `relative_tolerance`, and the depth.
+pub fn subdivision_patches(doc: &SubdivisionSurfaceDoc, relative_tolerance: f64) -> Result<(LimitPatches, usize)> {
+    let s = doc.subdivision_surface().map_err(|e| StepError::plain(e.to_string()))?;
+    if s.scheme() != Scheme::CatmullClark {
+        return Err(StepError::plain(format!(
+            "scheme: STEP export of subdivision surfaces is for catmull-clark (exact bicubic patches), not {}",
+            s.scheme().name()
+        )));
+    }
+    let vs = &s.cage().vertices;
+    let (lo, hi) = vs.iter().fold((vs[0], vs[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
+    let tolerance = relative_tolerance * (hi - lo).norm();
+    let mut reached = f64::INFINITY;
+    for depth in 1..=MAX_DEPTH {
+        let patches = limit_patches(&s, depth).map_err(|e| StepError::plain(e.to_string()))?;
+        if patches.max_deviation <= tolerance {
+            return Ok((patches, depth));
+        }
+        reached = patches.max_deviation;
+    }
+    let size = (hi - lo).norm();
+    Err(StepError::plain(format!(
+        "tolerance: the patches at extraordinary vertices come within {reached:.3e} of the limit after {MAX_DEPTH} levels ({:.1e} of the cage's size), not {tolerance:.3e}: ask for a relative tolerance of at least {:.1e}",
+        reached / size,
+        reached / size
+    )))
+}
+
+/// The document with every `subdivision_surface` (a shape, or a scene's object) replaced by
+/// its patches (objects keeping the style of theirs); other documents as they are.
+pub fn expand_subdivision_surfaces(doc: &SceneOrShape, relative_tolerance: f64) -> Result<SceneOrShape> {
+    let patches = |d: &SubdivisionSurfaceDoc| -> Result<Vec<ShapeDocument>> {
+        Ok(patch_shapes(&subdivision_patches(d, relative_tolerance)?.0))
+    };
+    Ok(match doc {
+        SceneOrShape::Shape(ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(d))) => {
+            let mut scene =
+                SceneDocument::of_shape(ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(d.clone())));
+            scene.objects =
+                patches(d)?.into_iter().map(|shape| SceneObject { shape, ..scene.objects[0].clone() }).collect();
+            SceneOrShape::Scene(scene)
+        }
+        SceneOrShape::Scene(scene) => {
+            let mut out = scene.clone();
+            out.objects.clear();
+            for (i, o) in scene.objects.iter().enumerate() {
+                match &o.shape {
+                    ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(d)) => {
+                        let pieces =
+                            patches(d).map_err(|e| StepError::plain(format!("objects[{i}]: {}", e.message)))?;
+                        out.objects.extend(pieces.into_iter().map(|shape| SceneObject { shape, ..o.clone() }));
+                    }
+                    _ => out.objects.push(o.clone()),
+                }
+            }
+            SceneOrShape::Scene(out)
+        }
+        other => other.clone(),
+    })
+}
