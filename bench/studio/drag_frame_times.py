@@ -12,7 +12,11 @@ waits for the handles, drags the handle of the given kind and index (`local_patc
 `local_curve k`) by 120 x 80 pixels in 40 steps, closes the window and prints the median
 and quartiles of the frames drawn during the drag: the whole frame's work (panels, the
 3-D view's composition and drawing, egui's painting and presenting) and of it the 3-D
-view. The window draws only when something changes, so the frames between the button
+view, the panels' layout, egui's tessellation and painting and the present; and the
+process's CPU time a drag frame (all threads, llvmpipe's included: it depends much less on
+the machine's load than the wall times). With `SPLINEKIT_FRAME_STAGES=1` the window waits
+for the device after the 3-D view and after egui's painting, so that the stages do not
+overlap and each time is its own. The window draws only when something changes, so the frames between the button
 going down and up are the drag's.
 """
 
@@ -45,6 +49,13 @@ def wait_for(path, ready, timeout):
             pass
         time.sleep(0.1)
     return None, last
+
+
+def cpu_seconds(pid):
+    """User and system CPU seconds of process `pid` so far, all its threads (/proc)."""
+    with open(f"/proc/{pid}/stat") as f:
+        fields = f.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
 def shown(report):
@@ -87,12 +98,14 @@ def main():
     x0, y0 = h["x"], h["y"]
     xdotool("mousemove", "--window", window, str(round(x0)), str(round(y0)))
     time.sleep(1.0)
+    cpu0 = cpu_seconds(child.pid)
     xdotool("mousedown", "1")
     for s in range(1, steps + 1):
         f = s / steps
         xdotool("mousemove", "--window", window, str(round(x0 + 120 * f)), str(round(y0 + 80 * f)))
         time.sleep(0.25)
     xdotool("mouseup", "1")
+    cpu1 = cpu_seconds(child.pid)
     time.sleep(1.0)
     xdotool("key", "ctrl+q")
     child.wait(timeout=120)
@@ -101,11 +114,19 @@ def main():
     drag = [i for i, d in enumerate(log["dragging"]) if d]
     if len(drag) < 4:
         sys.exit(f"only {len(drag)} frames were drawn during the drag")
-    for name, key in (("whole frame", "work_ms"), ("3-D view", "scene_ms")):
+    stages = (("whole frame", "work_ms"), ("3-D view", "scene_ms"), ("panels (egui layout)", "panels_ms"),
+              ("egui tessellation", "tessellate_ms"), ("egui painting", "paint_ms"), ("present", "present_ms"))
+    for name, key in stages:
+        if key not in log:
+            continue
         xs = [log[key][i] for i in drag]
         q = statistics.quantiles(xs, n=4)
         print(f"{name}: median {statistics.median(xs):.1f} ms, quartiles {q[0]:.1f}-{q[2]:.1f} ms "
               f"over {len(xs)} frames")
+    # Wall times grow with the machine's load; the process's CPU time (all its threads,
+    # llvmpipe's raster threads included) a frame does much less.
+    print(f"CPU time of the process: {1e3 * (cpu1 - cpu0) / len(drag):.1f} ms a drag frame; "
+          f"load average {os.getloadavg()[0]:.2f}")
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 //! The wgpu renderer: one device, three pipelines (meshes, lines, points), offscreen
-//! targets with 4× MSAA and a depth buffer, read back into an [`Image`].
+//! targets with 4× MSAA (or single-sampled, [`Renderer::target_sampled`]) and a depth
+//! buffer, read back into an [`Image`].
 
 use wgpu::util::DeviceExt;
 
@@ -29,7 +30,8 @@ pub enum RenderError {
 /// Largest image side (its one home is the budget's [`splinekit_scene::budget::MAX_IMAGE_SIDE`],
 /// which the default work budget admits as a square image).
 pub const MAX_SIDE: u32 = splinekit_scene::budget::MAX_IMAGE_SIDE;
-const SAMPLES: u32 = 4;
+/// The multisampling of [`Renderer::render`] and of the targets [`Renderer::target`] makes.
+pub const SAMPLES: u32 = 4;
 const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
@@ -38,6 +40,8 @@ pub struct Renderer {
     device: wgpu::Device,
     queue: wgpu::Queue,
     pipelines: Pipelines,
+    /// The pipelines of single-sampled targets, made on first use.
+    single: std::sync::OnceLock<Pipelines>,
     bind_layout: wgpu::BindGroupLayout,
     adapter_name: String,
 }
@@ -55,10 +59,12 @@ struct Pipelines {
 /// The textures a frame is drawn into: multisampled colour and depth, the resolved image
 /// (sRGB; a window can copy it into an `Rgba8Unorm` texture to show the bytes), and the
 /// buffer it is copied into for reading (rows padded to 256 bytes). Made by
-/// [`Renderer::target`]; reused frame after frame while the size stays.
+/// [`Renderer::target`]; reused frame after frame while the size stays. A single-sampled
+/// target has no multisampled colour: it is drawn straight into the image.
 pub struct RenderTarget {
     size: wgpu::Extent3d,
-    msaa: wgpu::Texture,
+    samples: u32,
+    msaa: Option<wgpu::Texture>,
     depth: wgpu::Texture,
     resolved: wgpu::Texture,
     readback: wgpu::Buffer,
@@ -69,6 +75,11 @@ impl RenderTarget {
     /// Width and height in pixels.
     pub fn size(&self) -> (u32, u32) {
         (self.size.width, self.size.height)
+    }
+
+    /// Samples a pixel: [`SAMPLES`], or 1.
+    pub fn samples(&self) -> u32 {
+        self.samples
     }
 
     /// The resolved image: `Rgba8UnormSrgb`, usable as a copy source and texture binding.
@@ -117,8 +128,8 @@ impl Renderer {
     /// of the same adapter); `adapter_name` describes it.
     pub fn from_device(device: wgpu::Device, queue: wgpu::Queue, adapter_name: String) -> Self {
         let bind_layout = bind_layout(&device);
-        let pipelines = Pipelines::new(&device, &bind_layout);
-        Renderer { device, queue, pipelines, bind_layout, adapter_name }
+        let pipelines = Pipelines::new(&device, &bind_layout, SAMPLES);
+        Renderer { device, queue, pipelines, single: std::sync::OnceLock::new(), bind_layout, adapter_name }
     }
 
     /// The device the renderer draws with.
@@ -198,9 +209,15 @@ impl Renderer {
         self.read_back(targets)
     }
 
-    /// The textures and read-back buffer of a `width` × `height` frame; each side in
-    /// 1..=[`MAX_SIDE`].
+    /// The textures and read-back buffer of a `width` × `height` frame with [`SAMPLES`]×
+    /// multisampling; each side in 1..=[`MAX_SIDE`].
     pub fn target(&self, width: u32, height: u32) -> Result<RenderTarget, RenderError> {
+        self.target_sampled(width, height, true)
+    }
+
+    /// [`Self::target`], multisampled or not: a single-sampled frame costs a quarter of
+    /// the rasterisation (a window on a software adapter draws that way while dragging).
+    pub fn target_sampled(&self, width: u32, height: u32, multisampled: bool) -> Result<RenderTarget, RenderError> {
         if !(1..=MAX_SIDE).contains(&width) || !(1..=MAX_SIDE).contains(&height) {
             return Err(RenderError::Invalid(format!(
                 "--size: each side must be between 1 and {MAX_SIDE} pixels, got {width}x{height}"
@@ -223,10 +240,12 @@ impl Renderer {
         let shown = wgpu::TextureUsages::RENDER_ATTACHMENT
             | wgpu::TextureUsages::COPY_SRC
             | wgpu::TextureUsages::TEXTURE_BINDING;
+        let samples = if multisampled { SAMPLES } else { 1 };
         Ok(RenderTarget {
             size,
-            msaa: texture(SAMPLES, COLOR_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT),
-            depth: texture(SAMPLES, DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT),
+            samples,
+            msaa: multisampled.then(|| texture(SAMPLES, COLOR_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT)),
+            depth: texture(samples, DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT),
             resolved: texture(1, COLOR_FORMAT, shown),
             readback: self.device.create_buffer(&wgpu::BufferDescriptor {
                 label: None,
@@ -249,16 +268,26 @@ impl Renderer {
     ) {
         let bg = srgba_to_linear(scene.background);
         let (mv, dv, rv) = (
-            targets.msaa.create_view(&Default::default()),
+            targets.msaa.as_ref().map(|t| t.create_view(&Default::default())),
             targets.depth.create_view(&Default::default()),
             targets.resolved.create_view(&Default::default()),
         );
+        // Multisampled: drawn into the samples, resolved into the image; else into the image.
+        let (view, resolve_target) = match &mv {
+            Some(mv) => (mv, Some(&rv)),
+            None => (&rv, None),
+        };
+        let p = if targets.samples == SAMPLES {
+            &self.pipelines
+        } else {
+            self.single.get_or_init(|| Pipelines::new(&self.device, &self.bind_layout, targets.samples))
+        };
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: None,
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &mv,
+                view,
                 depth_slice: None,
-                resolve_target: Some(&rv),
+                resolve_target,
                 ops: wgpu::Operations {
                     load: wgpu::LoadOp::Clear(wgpu::Color {
                         r: bg[0] as f64,
@@ -279,13 +308,12 @@ impl Renderer {
             multiview_mask: None,
         });
         pass.set_bind_group(0, bind, &[]);
-        pass.set_pipeline(&self.pipelines.mesh);
+        pass.set_pipeline(&p.mesh);
         for m in layers.iter().flat_map(|g| &g.meshes) {
             pass.set_vertex_buffer(0, m.vertices.slice(..));
             pass.set_index_buffer(m.indices.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..m.index_count, 0, 0..1);
         }
-        let p = &self.pipelines;
         let (line, point) = if scene.painter_order { (&p.flat_line, &p.flat_point) } else { (&p.line, &p.point) };
         for (pipeline, lines) in [(line, true), (point, false)] {
             pass.set_pipeline(pipeline);
@@ -358,7 +386,8 @@ fn globals(scene: &RenderScene, bounds: Option<([f32; 3], [f32; 3])>, width: u32
 }
 
 impl Pipelines {
-    fn new(device: &wgpu::Device, bind_layout: &wgpu::BindGroupLayout) -> Self {
+    /// The pipelines drawing into targets of `samples` samples a pixel.
+    fn new(device: &wgpu::Device, bind_layout: &wgpu::BindGroupLayout, samples: u32) -> Self {
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("splinekit shaders"),
             source: wgpu::ShaderSource::Wgsl(include_str!("shaders.wgsl").into()),
@@ -369,7 +398,7 @@ impl Pipelines {
             immediate_size: 0,
         });
         let pipeline = |vs: &str, fs: &str, buffers: &[Option<wgpu::VertexBufferLayout>], depth: Depth| {
-            pipeline(device, &layout, &shader, (vs, fs), buffers, depth)
+            pipeline(device, &layout, &shader, (vs, fs), buffers, depth, samples)
         };
         let mesh_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4];
         let line_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4, 3 => Float32];
@@ -398,7 +427,7 @@ struct Depth {
 }
 
 /// A pipeline of the shader's entry points `vs` and `fs` drawing into the colour and depth
-/// targets with alpha blending and 4× multisampling.
+/// targets with alpha blending and `samples` samples a pixel.
 fn pipeline(
     device: &wgpu::Device,
     layout: &wgpu::PipelineLayout,
@@ -406,6 +435,7 @@ fn pipeline(
     (vs, fs): (&str, &str),
     buffers: &[Option<wgpu::VertexBufferLayout>],
     depth: Depth,
+    samples: u32,
 ) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(vs),
@@ -438,7 +468,7 @@ fn pipeline(
             stencil: Default::default(),
             bias: Default::default(),
         }),
-        multisample: wgpu::MultisampleState { count: SAMPLES, ..Default::default() },
+        multisample: wgpu::MultisampleState { count: samples, ..Default::default() },
         multiview_mask: None,
         cache: None,
     })

@@ -93,3 +93,28 @@ fn lines_have_their_width_and_a_top_camera_frames_a_plane_figure() {
     let bad = r.render(&scene, 0, 10);
     assert!(bad.unwrap_err().to_string().contains("--size"));
 }
+
+/// A single-sampled target draws the same picture as the multisampled one but for the
+/// edges, which it does not smooth: the two differ little on average, the single-sampled
+/// one has only the mesh's shades and no blends of the background with the torus.
+#[test]
+fn a_single_sampled_target_draws_the_same_picture_with_hard_edges() {
+    let r = renderer();
+    let scene = torus_scene();
+    let draw = |multisampled: bool| {
+        let target = r.target_sampled(320, 240, multisampled).unwrap();
+        assert_eq!(target.samples(), if multisampled { splinekit_render::renderer::SAMPLES } else { 1 });
+        r.draw(&scene, &target);
+        r.read(&target).unwrap()
+    };
+    let (smooth, hard) = (draw(true), draw(false));
+    assert_eq!(smooth.rgba, r.render(&scene, 320, 240).unwrap().rgba, "target() is the multisampled target");
+    let diff = hard.mean_difference(&smooth).unwrap();
+    assert!(diff > 0.0 && diff < 1.5, "mean difference {diff}");
+    assert!((hard.coverage() - smooth.coverage()).abs() < 0.01);
+    // Multisampling blends the shapes' edges with what lies behind: more distinct colours.
+    let distinct = |img: &Image| {
+        img.rgba.chunks_exact(4).map(|p| [p[0], p[1], p[2]]).collect::<std::collections::HashSet<_>>().len()
+    };
+    assert!(distinct(&hard) < distinct(&smooth), "hard {} smooth {}", distinct(&hard), distinct(&smooth));
+}

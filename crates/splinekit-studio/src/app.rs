@@ -44,15 +44,30 @@ pub struct App {
     last_frame: Instant,
     files: FileFields,
     last_report: String,
-    /// Each frame's work (panels, scene, present) and scene drawing time in ms, and
-    /// whether a drag was in progress.
-    frame_log: Vec<(f64, f64, bool)>,
+    /// Each frame's times and whether a drag was in progress.
+    frame_log: Vec<FrameLog>,
     /// Close after the frame being drawn.
     quitting: bool,
     /// The whole window as last painted (with `--window-screenshot`).
     window_image: Option<splinekit_render::Image>,
     /// The first error that ended the event loop.
     pub error: Option<String>,
+}
+
+/// One frame's times in ms (see `--report-frame-times`).
+#[derive(Debug, Clone, Copy)]
+struct FrameLog {
+    /// The whole frame's work: panels, the 3-D view, egui's painting and the present.
+    work: f64,
+    /// The panels (egui's layout of the window).
+    panels: f64,
+    /// The 3-D view: composition and drawing.
+    scene: f64,
+    /// egui's tessellation, its painting, the present ([`Gpu::stages`]).
+    tessellate: f64,
+    paint: f64,
+    present: f64,
+    dragging: bool,
 }
 
 impl App {
@@ -109,6 +124,7 @@ impl App {
         let mut commands = Vec::new();
         self.studio.widgets.clear();
         let output = self.egui.clone().run_ui(raw, |ui| commands.extend(self.panels(ui)));
+        let panels_ms = start.elapsed().as_secs_f64() * 1e3;
         if let Some(s) = self.egui_state.as_mut() {
             s.handle_platform_output(&window, output.platform_output.clone());
         }
@@ -133,7 +149,16 @@ impl App {
             }
         }
         self.timings = (self.last_frame.elapsed().as_secs_f64() * 1e3, scene_ms);
-        self.frame_log.push((start.elapsed().as_secs_f64() * 1e3, scene_ms, self.studio.gesture.is_some()));
+        let [_, tessellate, paint, present] = self.gpu.as_ref().map_or([0.0; 4], |g| g.stages);
+        self.frame_log.push(FrameLog {
+            work: start.elapsed().as_secs_f64() * 1e3,
+            panels: panels_ms,
+            scene: scene_ms,
+            tessellate,
+            paint,
+            present,
+            dragging: self.studio.gesture.is_some(),
+        });
         self.last_frame = start;
         self.after_frame(event_loop, &window, repaint_now);
     }
@@ -201,9 +226,11 @@ impl App {
     fn draw_view(&mut self) -> Result<(), String> {
         let Some(gpu) = self.gpu.as_mut() else { return Ok(()) };
         let size = (self.view.rect_px[2].max(1), self.view.rect_px[3].max(1));
+        // On a software adapter a drag is drawn single-sampled, its last frame multisampled.
+        let multisampled = !(gpu.software && self.studio.gesture.is_some());
         let scene = self.studio.view_scene(size, true)?;
         self.projector = Some(Projector::with_bounds(&scene.overlay, scene.bounds, size));
-        gpu.draw_view(&scene, size).map_err(|e| e.to_string())?;
+        gpu.draw_view(&scene, size, multisampled).map_err(|e| e.to_string())?;
         Ok(())
     }
 
@@ -233,7 +260,7 @@ impl App {
         let Some(gpu) = self.gpu.as_mut() else { return Err("no window".into()) };
         let size = (self.view.rect_px[2].max(1), self.view.rect_px[3].max(1));
         let scene = self.studio.view_scene(size, false)?;
-        gpu.draw_view(&scene, size).map_err(|e| e.to_string())?;
+        gpu.draw_view(&scene, size, true).map_err(|e| e.to_string())?;
         let image = gpu.read_view().map_err(|e| e.to_string())?.ok_or("nothing drawn yet")?;
         image.save_png(&path).map_err(|e| format!("--screenshot: cannot write {}: {e}", path.display()))?;
         Ok(path)
@@ -249,10 +276,19 @@ impl App {
             image.save_png(path).map_err(|e| format!("--window-screenshot: cannot write {}: {e}", path.display()))?;
         }
         if let Some(path) = &self.options.report_frame_times {
-            let work: Vec<f64> = self.frame_log.iter().map(|f| f.0).collect();
-            let scene: Vec<f64> = self.frame_log.iter().map(|f| f.1).collect();
-            let dragging: Vec<bool> = self.frame_log.iter().map(|f| f.2).collect();
-            let text = serde_json::json!({"work_ms": work, "scene_ms": scene, "dragging": dragging}).to_string();
+            let log = &self.frame_log;
+            let times = |f: fn(&FrameLog) -> f64| log.iter().map(f).collect::<Vec<f64>>();
+            let dragging: Vec<bool> = log.iter().map(|f| f.dragging).collect();
+            let text = serde_json::json!({
+                "work_ms": times(|f| f.work),
+                "panels_ms": times(|f| f.panels),
+                "scene_ms": times(|f| f.scene),
+                "tessellate_ms": times(|f| f.tessellate),
+                "paint_ms": times(|f| f.paint),
+                "present_ms": times(|f| f.present),
+                "dragging": dragging,
+            })
+            .to_string();
             splinekit_scene::write_file(path, text.as_bytes())
                 .map_err(|e| format!("--report-frame-times: cannot write {}: {e}", path.display()))?;
         }

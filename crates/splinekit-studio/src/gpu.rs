@@ -3,6 +3,11 @@
 //! target (the same pipelines, 4× MSAA and sRGB image as `splinekit render`), copied into
 //! an `Rgba8Unorm` texture that egui shows (egui samples gamma-space bytes; GL has no
 //! sRGB-reinterpreting views), and read back from the target for screenshots.
+//!
+//! On a software adapter (Mesa's llvmpipe) every pixel is shaded on the CPU, so there the
+//! view is drawn single-sampled while a drag is in progress (a quarter of the
+//! rasterisation; the still frame after the drag is multisampled again) and egui paints
+//! without dithering. A hardware adapter draws as before.
 
 use std::sync::Arc;
 
@@ -26,13 +31,23 @@ pub struct Gpu {
     pub renderer: Renderer,
     egui: egui_wgpu::Renderer,
     view: Option<View>,
+    /// The adapter rasterises on the CPU.
+    pub software: bool,
     /// The composed scene's geometry, kept between frames and written in place.
     geometry: Option<Geometry>,
+    /// Wait for the device after each stage, so that [`Gpu::stages`] splits the frame
+    /// (`SPLINEKIT_FRAME_STAGES=1`; for measuring only: it stops the stages overlapping).
+    sync_stages: bool,
+    /// The last frame's stages in ms: the 3-D view's drawing (waited for with
+    /// `sync_stages`), egui's tessellation, egui's painting, the present.
+    pub stages: [f64; 4],
 }
 
-/// The 3-D view's target, the `Rgba8Unorm` copy egui samples, and its egui id.
+/// The 3-D view's target, its single-sampled twin (made on first use), the `Rgba8Unorm`
+/// copy egui samples, and its egui id.
 struct View {
     target: RenderTarget,
+    single: Option<RenderTarget>,
     shown: wgpu::Texture,
     id: egui::TextureId,
 }
@@ -55,6 +70,7 @@ impl Gpu {
         }))
         .map_err(|e| GpuError(format!("no graphics adapter can draw into the window ({e})")))?;
         let name = format!("{} ({:?})", adapter.get_info().name, adapter.get_info().backend);
+        let software = adapter.get_info().device_type == wgpu::DeviceType::Cpu;
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))
             .map_err(|e| GpuError(e.to_string()))?;
         let mut config = surface
@@ -64,9 +80,12 @@ impl Gpu {
         config.format = config.format.remove_srgb_suffix();
         config.present_mode = wgpu::PresentMode::AutoVsync;
         surface.configure(&device, &config);
-        let egui = egui_wgpu::Renderer::new(&device, config.format, egui_wgpu::RendererOptions::default());
+        // Dithering costs a noise function a pixel, which llvmpipe computes on the CPU.
+        let options = egui_wgpu::RendererOptions { dithering: !software, ..Default::default() };
+        let egui = egui_wgpu::Renderer::new(&device, config.format, options);
         let renderer = Renderer::from_device(device, queue, name);
-        Ok(Gpu { surface, config, renderer, egui, view: None, geometry: None })
+        let sync_stages = std::env::var_os("SPLINEKIT_FRAME_STAGES").is_some();
+        Ok(Gpu { surface, config, renderer, egui, view: None, software, geometry: None, sync_stages, stages: [0.0; 4] })
     }
 
     /// Follows a window resize.
@@ -78,29 +97,47 @@ impl Gpu {
         }
     }
 
-    /// Draws the view's scene into the 3-D view's target (resized to `size`), copies it to
-    /// the texture egui shows, and returns that texture's id. The composed scene's geometry
-    /// stays on the device between frames: only the items the view lists as changed are
-    /// written ([`keep_geometry`]); the overlays are uploaded each frame.
-    pub fn draw_view(&mut self, scene: &ViewScene, size: (u32, u32)) -> Result<egui::TextureId, GpuError> {
+    /// Draws the view's scene into the 3-D view's target (resized to `size`; multisampled,
+    /// or with `multisampled` false into the single-sampled one), copies it to the texture
+    /// egui shows, and returns that texture's id. The composed scene's geometry stays on
+    /// the device between frames: only the items the view lists as changed are written
+    /// ([`keep_geometry`]); the overlays are uploaded each frame.
+    pub fn draw_view(
+        &mut self,
+        scene: &ViewScene,
+        size: (u32, u32),
+        multisampled: bool,
+    ) -> Result<egui::TextureId, GpuError> {
         let max = splinekit_render::renderer::MAX_SIDE;
         let size = (size.0.clamp(1, max), size.1.clamp(1, max));
         if self.view.as_ref().is_none_or(|v| v.target.size() != size) {
             self.view = Some(self.new_view(size)?);
         }
+        if !multisampled && let Some(v) = self.view.as_mut().filter(|v| v.single.is_none()) {
+            v.single = Some(self.renderer.target_sampled(size.0, size.1, false).map_err(|e| GpuError(e.to_string()))?);
+        }
         keep_geometry(&self.renderer, &mut self.geometry, scene.composed, &scene.changes);
         let overlay = self.renderer.upload(&scene.overlay);
         let v = self.view.as_ref().expect("made above");
+        let target = if multisampled { &v.target } else { v.single.as_ref().expect("made above") };
         let geometry = self.geometry.as_ref().expect("kept above");
-        self.renderer.draw_layers(&scene.overlay, scene.bounds, &[geometry, &overlay], &v.target);
+        self.renderer.draw_layers(&scene.overlay, scene.bounds, &[geometry, &overlay], target);
         let mut encoder = self.renderer.device().create_command_encoder(&Default::default());
         encoder.copy_texture_to_texture(
-            v.target.resolved().as_image_copy(),
+            target.resolved().as_image_copy(),
             v.shown.as_image_copy(),
             wgpu::Extent3d { width: size.0, height: size.1, depth_or_array_layers: 1 },
         );
         self.renderer.queue().submit([encoder.finish()]);
+        self.wait_if_profiling();
         Ok(v.id)
+    }
+
+    /// With `sync_stages`, waits until the device has done all submitted work.
+    fn wait_if_profiling(&self) {
+        if self.sync_stages {
+            let _ = self.renderer.device().poll(wgpu::PollType::wait_indefinitely());
+        }
     }
 
     /// A view of `size` pixels, re-using the egui texture id of the last one.
@@ -125,7 +162,7 @@ impl Gpu {
             }
             None => self.egui.register_native_texture(device, &view, wgpu::FilterMode::Nearest),
         };
-        Ok(View { target, shown, id })
+        Ok(View { target, single: None, shown, id })
     }
 
     /// The texture of the 3-D view, once drawn.
@@ -133,7 +170,7 @@ impl Gpu {
         self.view.as_ref().map(|v| v.id)
     }
 
-    /// Reads the 3-D view's last image back.
+    /// Reads the 3-D view's last multisampled image back.
     pub fn read_view(&self) -> Result<Option<Image>, GpuError> {
         self.view.as_ref().map(|v| self.renderer.read(&v.target)).transpose().map_err(|e| GpuError(e.to_string()))
     }
@@ -189,12 +226,19 @@ impl Gpu {
         frame: wgpu::SurfaceTexture,
         capture: bool,
     ) -> Result<Option<Image>, GpuError> {
+        let t0 = std::time::Instant::now();
         let jobs = ctx.tessellate(shapes, pixels_per_point);
+        let t1 = std::time::Instant::now();
         let screen =
             egui_wgpu::ScreenDescriptor { size_in_pixels: [self.config.width, self.config.height], pixels_per_point };
         let view = frame.texture.create_view(&Default::default());
         self.paint_into(&view, &jobs, &screen);
+        self.wait_if_profiling();
+        let t2 = std::time::Instant::now();
         self.renderer.queue().present(frame);
+        let t3 = std::time::Instant::now();
+        let ms = |a: std::time::Instant, b: std::time::Instant| (b - a).as_secs_f64() * 1e3;
+        self.stages[1..].copy_from_slice(&[ms(t0, t1), ms(t1, t2), ms(t2, t3)]);
         if !capture {
             return Ok(None);
         }
