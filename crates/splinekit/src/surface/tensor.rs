@@ -386,16 +386,21 @@ impl<const D: usize> TensorSpline<crate::Point<D>> {
                     cross[l] = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
                     len2[l] = cross[l][0] * cross[l][0] + cross[l][1] * cross[l][1] + cross[l][2] * cross[l][2];
                 }
+                // Every lane is normalised without a branch (a branch per lane let the
+                // compiler sink the square root and division into it, one lane at a time);
+                // the lanes without a normal are redone after.
                 for l in 0..NORMAL_BLOCK {
                     inv[l] = 1.0 / len2[l].sqrt();
                 }
                 for l in 0..NORMAL_BLOCK {
-                    ns[l] = if len2[l] > f64::MIN_POSITIVE && len2[l].is_finite() {
-                        crate::Point::<D>::from_fn(|c, _| cross[l][c] * inv[l])
-                    } else {
+                    ns[l] = crate::Point::<D>::from_fn(|c, _| cross[l][c] * inv[l]);
+                }
+                let normalisable = |l: usize| len2[l] > f64::MIN_POSITIVE && len2[l].is_finite();
+                if !(0..NORMAL_BLOCK).all(normalisable) {
+                    for l in (0..NORMAL_BLOCK).filter(|&l| !normalisable(l)) {
                         let (_, s_u, s_v) = &sums[l];
-                        normal::<D>(&std::array::from_fn(|c| s_u[c]), &std::array::from_fn(|c| s_v[c]))
-                    };
+                        ns[l] = normal::<D>(&std::array::from_fn(|c| s_u[c]), &std::array::from_fn(|c| s_v[c]));
+                    }
                 }
             }
             let done = columns.len() - columns.len() % NORMAL_BLOCK;
