@@ -23,6 +23,7 @@ __all__ = [
     "NURBSSurface",
     "BezierSurface",
     "SubdivisionSurface",
+    "DupinCyclide",
     "Scene",
     "FitReport",
     "Mesh",
@@ -33,6 +34,7 @@ __all__ = [
     "fit_many",
     "evaluate_many",
     "_restore",
+    "_FIELDS_CLASSES",
     "HAS_RENDER",
 ]
 
@@ -191,6 +193,15 @@ class NURBSSurface(Surface):
 @final
 class BezierSurface(Surface):
     def __new__(cls, control_points: ArrayLike) -> "BezierSurface": ...
+
+# The classes made from a kind's document fields (a line `python(fields "Name")` in
+# splinekit-scene's registry of kinds); their constructors take the fields as keyword
+# arguments. tests/test_api.py checks that each has its stub here.
+_FIELDS_CLASSES: List[str]
+
+@final
+class DupinCyclide(Surface):
+    def __new__(cls, **fields: Any) -> "DupinCyclide": ...
 
 @final
 class Mesh:
