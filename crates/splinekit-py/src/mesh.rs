@@ -6,7 +6,7 @@ use numpy::{PyArray1, PyArray2, PyArrayDyn, PyArrayMethods};
 use pyo3::prelude::*;
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
-use splinekit_mesh::export::{GltfGeometry, GltfScene, obj, ply, stl};
+use splinekit_mesh::export::by_extension::{MESH_FORMATS, extension, formats_phrase, mesh_bytes, object_name};
 use splinekit_mesh::surface_mesh::{adaptive_with_limit, regular};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, TriangleMesh};
 use splinekit_scene::budget::{polyline, regular_mesh};
@@ -23,8 +23,6 @@ const MAX_CURVE_POINTS: usize = 1_000_000;
 const MAX_DENSITY: usize = 2048;
 /// Most quad-tree leaves of an adaptive mesh.
 const MAX_ADAPTIVE_CELLS: usize = 1_000_000;
-/// The colour of exported glTF objects (linear RGBA, the command line's).
-const EXPORT_COLOR: [f32; 4] = [0.12, 0.37, 0.75, 1.0];
 
 /// A triangle mesh: ``vertices`` (V, 3), ``faces`` (F, 3) int32 counter-clockwise around
 /// their normal, unit vertex ``normals`` (V, 3), surface parameters ``uv`` (V, 2) on
@@ -68,25 +66,15 @@ impl PyMesh {
     /// Writes the mesh; the extension picks the format: .obj (normals and uv), .stl
     /// (binary), .stla (ASCII STL), .ply (ASCII), .gltf or .glb.
     fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
-        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
-        let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("shape").to_string();
-        let mut bytes = Vec::new();
-        match ext.as_str() {
-            "obj" => obj::write_obj(&self.mesh, &name, &mut bytes),
-            "stl" => stl::write_stl_binary(&self.mesh, &mut bytes),
-            "stla" => stl::write_stl_ascii(&self.mesh, &name, &mut bytes),
-            "ply" => ply::write_ply(&self.mesh, &mut bytes),
-            "gltf" | "glb" => GltfScene::single(&name, GltfGeometry::Mesh(self.mesh.clone()), EXPORT_COLOR)
-                .to_file_bytes(&ext)
-                .map(|b| bytes = b),
-            _ => {
-                return Err(value_error(format!(
-                    "path: meshes are written as .obj, .stl, .stla, .ply, .gltf or .glb, not '{}'",
-                    path.display()
-                )));
-            }
+        let ext = extension(&path);
+        if !MESH_FORMATS.contains(&ext.as_str()) {
+            return Err(value_error(format!(
+                "path: meshes are written as {}, not '{}'",
+                formats_phrase(MESH_FORMATS),
+                path.display()
+            )));
         }
-        .or_value_error()?;
+        let bytes = mesh_bytes(self.mesh.clone(), &object_name(&path), &ext).or_value_error()?;
         splinekit_scene::write_file(&path, &bytes)
             .map_err(|e| value_error(format!("path: cannot write '{}': {e}", path.display())))
     }

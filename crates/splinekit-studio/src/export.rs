@@ -8,14 +8,13 @@ use std::path::Path;
 
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
-use splinekit_mesh::export::{ExportError, GltfGeometry, GltfScene, obj, ply, stl};
+use splinekit_mesh::export::by_extension::{
+    MESH_FORMATS, POLYLINE_FORMATS, extension, formats_phrase, mesh_bytes, object_name, polyline_bytes,
+};
 use splinekit_mesh::surface_mesh::{regular, to3};
 use splinekit_mesh::{MeshOptions, Polyline, TriangleMesh};
 use splinekit_scene::scenes::SceneObject;
 use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument, Surfaces};
-
-/// The colour of exported glTF objects (linear RGBA), as `tessellate` gives them.
-const EXPORT_COLOR: [f32; 4] = [0.12, 0.37, 0.75, 1.0];
 
 struct CurvePoints(usize);
 
@@ -36,16 +35,9 @@ impl DimensionVisitor<Surfaces> for SurfaceMesh {
     }
 }
 
-fn written(write: impl FnOnce(&mut Vec<u8>) -> Result<(), ExportError>) -> Result<Vec<u8>, String> {
-    let mut bytes = Vec::new();
-    write(&mut bytes).map_err(|e| e.to_string())?;
-    Ok(bytes)
-}
-
 /// The bytes of `object` (posed at `time`) in the format of `path`'s extension.
 pub fn export(object: &SceneObject, time: Option<f64>, path: &Path) -> Result<Vec<u8>, String> {
-    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
-    let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("shape").to_string();
+    let (ext, name) = (extension(path), object_name(path));
     let mut shape = object.shape.clone();
     if let Some(t) = time {
         shape.set_time(t);
@@ -54,35 +46,19 @@ pub fn export(object: &SceneObject, time: Option<f64>, path: &Path) -> Result<Ve
         ShapeDocument::Curve(c) => {
             let (points, closed) =
                 c.build().map_err(|e| e.to_string())?.visit(CurvePoints(object.style.density.unwrap_or(1000)))?;
-            match ext.as_str() {
-                "obj" => written(|out| obj::write_obj_polyline(&points, closed, &name, out)),
-                "gltf" | "glb" => {
-                    let mut strip = points.clone();
-                    if closed && !points.is_empty() {
-                        strip.push(points[0]);
-                    }
-                    GltfScene::single(&name, GltfGeometry::LineStrip(strip), EXPORT_COLOR)
-                        .to_file_bytes(&ext)
-                        .map_err(|e| e.to_string())
-                }
-                _ => Err(format!("export: curves are written as .obj, .gltf or .glb, not '{}'", path.display())),
+            if !POLYLINE_FORMATS.contains(&ext.as_str()) {
+                let formats = formats_phrase(POLYLINE_FORMATS);
+                return Err(format!("export: curves are written as {formats}, not '{}'", path.display()));
             }
+            polyline_bytes(&points, closed, &name, &ext).map_err(|e| e.to_string())
         }
         ShapeDocument::Surface(s) => {
             let mesh = s.build().map_err(|e| e.to_string())?.visit(SurfaceMesh(object.style.density.unwrap_or(64)))?;
-            match ext.as_str() {
-                "obj" => written(|out| obj::write_obj(&mesh, &name, out)),
-                "stl" => written(|out| stl::write_stl_binary(&mesh, out)),
-                "stla" => written(|out| stl::write_stl_ascii(&mesh, &name, out)),
-                "ply" => written(|out| ply::write_ply(&mesh, out)),
-                "gltf" | "glb" => GltfScene::single(&name, GltfGeometry::Mesh(mesh), EXPORT_COLOR)
-                    .to_file_bytes(&ext)
-                    .map_err(|e| e.to_string()),
-                _ => Err(format!(
-                    "export: surfaces are written as .obj, .stl, .stla, .ply, .gltf or .glb, not '{}'",
-                    path.display()
-                )),
+            if !MESH_FORMATS.contains(&ext.as_str()) {
+                let formats = formats_phrase(MESH_FORMATS);
+                return Err(format!("export: surfaces are written as {formats}, not '{}'", path.display()));
             }
+            mesh_bytes(mesh, &name, &ext).map_err(|e| e.to_string())
         }
     }
 }

@@ -11,7 +11,7 @@ use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
 use splinekit::Point;
 use splinekit::subdivision::surface::{BoundaryRule, Cage, Crease, Scheme as KernelScheme, SubdivisionSurface};
-use splinekit_mesh::export::{GltfGeometry, GltfScene, ply, stl};
+use splinekit_mesh::export::mesh_bytes;
 use splinekit_mesh::limit_mesh::{LimitMesh, limit_mesh};
 use splinekit_mesh::subdivision_surface::{PolygonMesh, SurfaceScheme, read_obj_polygons, write_obj_polygons};
 
@@ -166,19 +166,12 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
     let result = surface.subdivide(steps).map_err(|e| anyhow!("mesh: {e}"))?;
     if args.limit {
         let m = limit_mesh(&result).map_err(|e| anyhow!("mesh: {e}"))?;
-        let mut bytes = Vec::new();
-        match ext.as_str() {
-            "obj" => write_obj_with_normals(&m, &name, &mut bytes),
-            other => {
-                let t = m.triangles();
-                match other {
-                    "stl" => stl::write_stl_binary(&t, &mut bytes),
-                    "ply" => ply::write_ply(&t, &mut bytes),
-                    _ => GltfScene::single(&name, GltfGeometry::Mesh(t), super::tessellate::EXPORT_COLOR)
-                        .to_file_bytes(other)
-                        .map(|b| bytes = b),
-                }
+        let bytes = match ext.as_str() {
+            "obj" => {
+                let mut bytes = Vec::new();
+                write_obj_with_normals(&m, &name, &mut bytes).map(|()| bytes)
             }
+            other => mesh_bytes(m.triangles(), &name, other),
         }
         .map_err(|e| anyhow!("{e}"))?;
         return crate::output::write_bytes(&bytes, Some(&output));
@@ -210,19 +203,12 @@ fn write_step(surface: &SubdivisionSurface, depth: usize, name: &str, path: &str
 }
 
 fn write(out: &PolygonMesh, name: &str, ext: &str, path: &str) -> Result<()> {
-    let mut bytes = Vec::new();
-    match ext {
-        "obj" => write_obj_polygons(out, name, &mut bytes),
-        other => {
-            let t = out.triangulate();
-            match other {
-                "stl" => stl::write_stl_binary(&t, &mut bytes),
-                "ply" => ply::write_ply(&t, &mut bytes),
-                _ => GltfScene::single(name, GltfGeometry::Mesh(t), super::tessellate::EXPORT_COLOR)
-                    .to_file_bytes(other)
-                    .map(|b| bytes = b),
-            }
+    let bytes = match ext {
+        "obj" => {
+            let mut bytes = Vec::new();
+            write_obj_polygons(out, name, &mut bytes).map(|()| bytes)
         }
+        other => mesh_bytes(out.triangulate(), name, other),
     }
     .map_err(|e| anyhow!("{e}"))?;
     crate::output::write_bytes(&bytes, Some(path))

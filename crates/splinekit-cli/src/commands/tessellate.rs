@@ -6,7 +6,7 @@ use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
-use splinekit_mesh::export::{ExportError, GltfGeometry, GltfScene, obj, ply, stl};
+use splinekit_mesh::export::by_extension::{MESH_FORMATS, formats_phrase, mesh_bytes, polyline_bytes};
 use splinekit_mesh::surface_mesh::{adaptive_with_limit, regular, to3};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, Projection, SvgFigure, TriangleMesh};
 use splinekit_scene::budget::ShapeCost;
@@ -102,21 +102,6 @@ fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, ex
     crate::output::write_bytes(&bytes, Some(&args.output))
 }
 
-/// The default colour of exported objects (linear RGBA).
-pub const EXPORT_COLOR: [f32; 4] = [0.12, 0.37, 0.75, 1.0];
-
-/// One object as a .gltf or .glb file.
-fn gltf_file(name: &str, geometry: GltfGeometry, ext: &str) -> Result<Vec<u8>, ExportError> {
-    GltfScene::single(name, geometry, EXPORT_COLOR).to_file_bytes(ext)
-}
-
-/// What a writer puts into a file, or its refusal as one line.
-fn written(write: impl FnOnce(&mut Vec<u8>) -> Result<(), ExportError>) -> Result<Vec<u8>> {
-    let mut bytes = Vec::new();
-    write(&mut bytes).map_err(|e| anyhow!("{e}"))?;
-    Ok(bytes)
-}
-
 pub fn run(args: &TessellateArgs) -> Result<()> {
     let ext = args.output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
     let text = crate::input::read_text(&args.shape, "shape")?;
@@ -147,30 +132,17 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
                     fig.path(&pts, closed, "#1f5fbf", 2.0);
                     fig.render().map_err(|e| anyhow!("{e}"))?.into_bytes()
                 }
-                "obj" => written(|out| obj::write_obj_polyline(&points, closed, &name, out))?,
-                _ => {
-                    let mut strip = points.clone();
-                    if closed && !points.is_empty() {
-                        strip.push(points[0]);
-                    }
-                    gltf_file(&name, GltfGeometry::LineStrip(strip), &ext).map_err(|e| anyhow!("{e}"))?
-                }
+                _ => polyline_bytes(&points, closed, &name, &ext).map_err(|e| anyhow!("{e}"))?,
             }
         }
         ShapeDocument::Surface(s) => {
-            if !matches!(ext.as_str(), "obj" | "stl" | "stla" | "ply" | "gltf" | "glb") {
-                bail!("-o: surfaces are written as .obj, .stl, .stla, .ply, .gltf or .glb, not '{}'", args.output);
+            if !MESH_FORMATS.contains(&ext.as_str()) {
+                bail!("-o: surfaces are written as {}, not '{}'", formats_phrase(MESH_FORMATS), args.output);
             }
             let surface = s.build()?;
             let uv = matches!(ext.as_str(), "obj" | "ply" | "gltf" | "glb");
             let mesh = surface.visit(SurfaceTriangles(args, uv, crate::budget::adaptive_cells(&cost)))?;
-            match ext.as_str() {
-                "obj" => written(|out| obj::write_obj(&mesh, &name, out))?,
-                "stl" => written(|out| stl::write_stl_binary(&mesh, out))?,
-                "stla" => written(|out| stl::write_stl_ascii(&mesh, &name, out))?,
-                "ply" => written(|out| ply::write_ply(&mesh, out))?,
-                _ => gltf_file(&name, GltfGeometry::Mesh(mesh), &ext).map_err(|e| anyhow!("{e}"))?,
-            }
+            mesh_bytes(mesh, &name, &ext).map_err(|e| anyhow!("{e}"))?
         }
     };
     crate::output::write_bytes(&bytes, Some(&args.output))

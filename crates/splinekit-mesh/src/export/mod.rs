@@ -5,11 +5,13 @@
 //! refuses with an [`ExportError`] naming the first one that does not, so no file ever
 //! holds NaN or infinity; write errors of the output are returned, never ignored.
 
+pub mod by_extension;
 pub mod gltf;
 pub mod obj;
 pub mod ply;
 pub mod representable;
 pub mod stl;
 
+pub use by_extension::{EXPORT_COLOR, mesh_bytes, polyline_bytes};
 pub use gltf::{GltfGeometry, GltfObject, GltfScene};
 pub use representable::ExportError;
