@@ -25,21 +25,25 @@ fn creased_cube() -> SubdivisionSurfaceDoc {
     }
 }
 
-/// The cube [−1, 1]³ and the creased cube (size 2√3), down to the default tolerance 10⁻⁶
-/// and 10⁻⁸: the fewest levels whose stand-ins are within the tolerance, and one level
-/// less does not meet it; at 10⁻³ and 10⁻⁶ one STEP item per patch (all exact).
+/// The cube [−1, 1]³ and the creased cube (size 2√3) at the default tolerance 10⁻⁶, the
+/// cube also at 10⁻⁸ (the creased cube's is in splinekit's tests): the fewest levels whose stand-ins are within the tolerance, and one level
+/// less does not meet it; the cube at 10⁻⁶ as one STEP item per patch (all exact).
 #[test]
 fn cubes_export_as_their_patches_within_the_tolerance() {
     let size = 2.0 * 3f64.sqrt();
-    for (name, doc) in [("cube", SubdivisionSurfaceDoc::cube()), ("creased cube", creased_cube())] {
+    for (name, doc, tolerances) in
+        [("cube", SubdivisionSurfaceDoc::cube(), &[1e-6, 1e-8][..]), ("creased cube", creased_cube(), &[1e-6][..])]
+    {
         assert!(!doc.creases.is_empty() || name == "cube");
-        for relative in [1e-3, 1e-6, 1e-8] {
+        for &relative in tolerances {
             let (patches, depth) = subdivision_patches(&doc, relative).unwrap();
             assert!(patches.max_deviation <= relative * size && !patches.bilinear.is_empty());
             let s = doc.subdivision_surface().unwrap();
             assert!(limit_patches(&s, depth - 1).unwrap().max_deviation > relative * size, "{name}: depth {depth}");
-            // (Writing 10⁻⁸'s 1200 patches takes long in a debug build.)
-            if relative >= 1e-6 {
+            // Written at the default tolerance, the cube's (the creased cube's through
+            // `subdivide-surface --tolerance 1e-6` in splinekit-cli; writing a thousand
+            // patches takes long in a debug build).
+            if relative == 1e-6 && name == "cube" {
                 let (text, exported) =
                     export_document(&shape(doc.clone()), "cube", relative, &HeaderInfo::default()).unwrap();
                 assert_eq!(exported.len(), patches.bicubic.len() + patches.bilinear.len());

@@ -4,7 +4,7 @@
 //! regular, the last face at each extraordinary vertex a bilinear patch through limit
 //! points. Each irregular face takes the fewest levels (1 to [`MAX_DEPTH`]) whose stand-in
 //! is within the tolerance (relative to the cage's bounding-box diagonal) of the exact limit
-//! on a 5 × 5 grid of its parameters; a tolerance that 30 levels do not reach is refused
+//! on a 9 × 9 grid of its parameters; a tolerance that 30 levels do not reach is refused
 //! with the one they do.
 
 use splinekit::Point;

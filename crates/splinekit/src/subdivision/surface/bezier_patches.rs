@@ -21,11 +21,15 @@
 //! The faces still irregular when refinement stops (at level ≥ 1, so quads) become
 //! bilinear stand-ins through the limit points of their corners (limit masks), which meet
 //! their neighbours' edges at those points. Each stand-in B is measured against the exact
-//! limit S of its face ([`super::SubdivisionSurface::evaluate`] on the local cage) on a
-//! 5 × 5 grid of (u, v) ∈ {0, ¼, ½, ¾, 1}², edges included (the corners are limit points
-//! and agree by construction): the deviation is max |B(u, v) − S(u, v)|, the distance
-//! between points of the same parameters, an upper bound on both the distance from B(u, v)
-//! to the surface and the gap along a shared edge at the samples. Refinement stops at a
+//! limit S of its face (at each sample, the face's child of the next level containing it:
+//! that child's bicubic patch where it is regular, else [`super::SubdivisionSurface::evaluate`]
+//! on the local cage) on a
+//! 9 × 9 grid of (u, v) ∈ {0, ⅛, …, 1}², edges included (the corners are limit points and
+//! agree by construction): the deviation is max |B(u, v) − S(u, v)|, the distance between
+//! points of the same parameters, an upper bound on both the distance from B(u, v) to the
+//! surface and the gap along a shared edge at the samples. The largest deviation lies on
+//! the edges away from the extraordinary vertex; on the cube the 9 × 9 grid finds it within
+//! 0.6 % of a 33 × 33 grid's (a 5 × 5 grid within 2.7 %). Refinement stops at a
 //! fixed level ([`Refinement::Depth`]) or, per face, at the fewest levels whose stand-in
 //! is within a tolerance ([`Refinement::Tolerance`]). Near an extraordinary vertex of
 //! subdominant eigenvalue λ the limit is c + λᴸ·(its characteristic map) + o(λᴸ) on the
@@ -35,8 +39,9 @@
 //! differences keep their relative precision.
 
 use super::catmull_clark::catmull_clark_step;
+use super::limit_eval::quad_child;
 use super::local::{one_ring_faces, sub_cage};
-use super::regular_patch::catmull_clark_grid;
+use super::regular_patch::{catmull_clark_grid, cubic_bspline_basis};
 use super::topology::Topology;
 use super::{Scheme, SubdivisionSurface};
 use crate::{Error, Point, Result};
@@ -45,8 +50,8 @@ use crate::{Error, Point, Result};
 /// 2⁻³⁰ of their cage face in parameter).
 pub const MAX_DEPTH: usize = 30;
 
-/// The (u, v) samples of a stand-in's deviation: the 5 × 5 grid without its corners.
-const SAMPLES: usize = 5;
+/// The (u, v) samples of a stand-in's deviation: the 9 × 9 grid without its corners.
+const SAMPLES: usize = 9;
 
 /// Patches of a limit surface: exact bicubic Bézier patches (`[i][j]`, i along u) and
 /// bilinear patches `[c₀, c₁, c₂, c₃]` (corners in face order) standing in for the
@@ -161,12 +166,23 @@ fn refine_face(
         out.bicubic.push(bezier_patch(&g).map(|row| row.map(|p| p + offset)));
         return Ok(());
     }
+    // One local step: the 1-ring subdivided once, moved to the origin. Face 0 of the
+    // 1-ring is `face`, so its children are the first faces of the step.
+    let ring = one_ring_faces(topo, face);
+    let (mut local, _) = sub_cage(cage, topo, &ring);
+    let o = local.vertices[0];
+    for p in &mut local.vertices {
+        *p -= o;
+    }
+    let child = catmull_clark_step(&local, &Topology::new(&local)?);
+    let next = SubdivisionSurface::new(child, Scheme::CatmullClark, false)?;
     // From level 1 on every face is a quad.
     if level >= 1 && topo.face_len(face) == 4 {
         let stop_here = level >= max_depth || matches!(refinement, Refinement::Depth(d) if level >= d);
         if stop_here || matches!(refinement, Refinement::Tolerance { .. }) {
             let q = stand_in(s, face)?;
-            let deviation = deviation(s, face, &q)?;
+            // `next` holds the stand-in's points relative to o.
+            let deviation = deviation(&next, &q.map(|p| p - o))?;
             let met = matches!(refinement, Refinement::Tolerance { tolerance, .. } if deviation <= tolerance);
             if stop_here || met {
                 out.max_deviation = out.max_deviation.max(deviation);
@@ -176,15 +192,6 @@ fn refine_face(
             }
         }
     }
-    let ring = one_ring_faces(topo, face);
-    let (mut local, _) = sub_cage(cage, topo, &ring);
-    let o = local.vertices[0];
-    for p in &mut local.vertices {
-        *p -= o;
-    }
-    let child = catmull_clark_step(&local, &Topology::new(&local)?);
-    let next = SubdivisionSurface::new(child, Scheme::CatmullClark, false)?;
-    // Face 0 of the 1-ring is `face`: its children are the first faces of the step.
     for k in 0..topo.face_len(face) {
         refine_face(&next, k, level + 1, offset + o, refinement, max_depth, out)?;
     }
@@ -206,9 +213,13 @@ fn bilinear_at(q: &[Point<3>; 4], u: f64, v: f64) -> Point<3> {
     q[0] * ((1.0 - u) * (1.0 - v)) + q[1] * (u * (1.0 - v)) + q[2] * (u * v) + q[3] * ((1.0 - u) * v)
 }
 
-/// max |B(u, v) − S(u, v)| over the sample grid (without its corners) of stand-in `q` of
-/// quad `face` of `s`.
-fn deviation(s: &SubdivisionSurface, face: u32, q: &[Point<3>; 4]) -> Result<f64> {
+/// max |B(u, v) − S(u, v)| over the sample grid (without its corners) of stand-in `q` of a
+/// quad whose four children are faces 0–3 of `children` (its 1-ring subdivided once):
+/// S at a sample is the child's exact limit at the sample's place in it — its bicubic
+/// patch where the child is regular, else local evaluation.
+fn deviation(children: &SubdivisionSurface, q: &[Point<3>; 4]) -> Result<f64> {
+    let grids: Vec<Option<[[Point<3>; 4]; 4]>> =
+        (0..4).map(|k| catmull_clark_grid(children.cage(), children.topology(), k)).collect();
     let n = SAMPLES - 1;
     let mut worst = 0.0f64;
     for i in 0..=n {
@@ -217,11 +228,29 @@ fn deviation(s: &SubdivisionSurface, face: u32, q: &[Point<3>; 4]) -> Result<f64
                 continue;
             }
             let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
-            let exact = s.evaluate(face as usize, u, v)?.position;
+            let (k, a, b) = quad_child(u, v);
+            let (cu, cv) = (a[0][0] * u + a[0][1] * v + b.0, a[1][0] * u + a[1][1] * v + b.1);
+            let (cu, cv) = (cu.clamp(0.0, 1.0), cv.clamp(0.0, 1.0));
+            let exact = match &grids[k as usize] {
+                Some(g) => bspline_patch_at(g, cu, cv),
+                None => children.evaluate(k as usize, cu, cv)?.position,
+            };
             worst = worst.max((bilinear_at(q, u, v) - exact).norm());
         }
     }
     Ok(worst)
+}
+
+/// The uniform bicubic B-spline patch of grid g at (u, v).
+fn bspline_patch_at(g: &[[Point<3>; 4]; 4], u: f64, v: f64) -> Point<3> {
+    let (bu, bv) = (cubic_bspline_basis(u)[0], cubic_bspline_basis(v)[0]);
+    let mut p = Point::<3>::zeros();
+    for (i, row) in g.iter().enumerate() {
+        for (j, x) in row.iter().enumerate() {
+            p += x * (bu[i] * bv[j]);
+        }
+    }
+    p
 }
 
 #[cfg(test)]
