@@ -208,7 +208,7 @@ fn at_evaluates_the_limit_exactly() {
 
 /// `-o OUT.step`: the cube's 8 extraordinary vertices leave, after 3 levels, 2 × 72 exact
 /// bicubic patches (regular faces of levels 2 and 3) and 24 bilinear ones (the faces at
-/// the extraordinary vertices); Loop and --steps 0 are refused.
+/// the extraordinary vertices); Loop, --steps 0 and more than 30 levels are refused.
 #[test]
 fn step_export_writes_bicubic_patches() {
     let dir = temp_dir("step");
@@ -218,14 +218,10 @@ fn step_export_writes_bicubic_patches() {
         &cube(),
     );
     assert_eq!(o.code, 0, "{}", o.stderr);
+    assert!(o.stderr.contains("144 exact bicubic patches, 24 bilinear stand-ins (down to level 3)"), "{}", o.stderr);
     let text = std::fs::read_to_string(&out).unwrap();
     assert!(text.starts_with("ISO-10303-21;"), "{}", &text[..40]);
-    let degrees = |d: &str| {
-        text.lines()
-            .filter(|l| l.contains("B_SPLINE_SURFACE_WITH_KNOTS(") && l.contains(&format!(")',{d},{d},")))
-            .count()
-    };
-    assert_eq!((degrees("3"), degrees("1")), (144, 24));
+    assert_eq!((degrees(&text, "3"), degrees(&text, "1")), (144, 24));
     let step = out.to_str().unwrap();
     assert_bad(&["subdivide-surface", "-", "--scheme", "loop", "--triangulate", "-o", step], &cube(), "not loop");
     assert_bad(
@@ -233,5 +229,52 @@ fn step_export_writes_bicubic_patches() {
         &cube(),
         "at least 1",
     );
+    assert_bad(
+        &["subdivide-surface", "-", "--scheme", "catmull-clark", "--steps", "31", "-o", step],
+        &cube(),
+        "limit of 30",
+    );
     assert_bad(&["subdivide-surface", "-", "--scheme", "doo-sabin", "-o", step], &cube(), "not doo-sabin");
+}
+
+/// STEP `B_SPLINE_SURFACE_WITH_KNOTS` entities of degree `d` in both directions.
+fn degrees(text: &str, d: &str) -> usize {
+    text.lines().filter(|l| l.contains("B_SPLINE_SURFACE_WITH_KNOTS(") && l.contains(&format!(")',{d},{d},"))).count()
+}
+
+/// `-o OUT.step --tolerance 1e-6` on `creased_cube.obj`: each face at an extraordinary
+/// vertex refined to the fewest levels within 10⁻⁶ of the cage's size (13 at the deepest,
+/// the same patches as `convert` writes for the document); a tolerance 30 levels do not
+/// reach is refused with the one they do, and --tolerance is for STEP only.
+#[test]
+fn step_export_meets_a_tolerance() {
+    let dir = temp_dir("step-tolerance");
+    let out = dir.join("creased.step");
+    let mesh = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/meshes/creased_cube.obj");
+    let o = run(
+        &["subdivide-surface", mesh, "--scheme", "catmull-clark", "--tolerance", "1e-6", "-o", out.to_str().unwrap()],
+        "",
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let text = std::fs::read_to_string(&out).unwrap();
+    let (bicubic, bilinear) = (degrees(&text, "3"), degrees(&text, "1"));
+    assert!(
+        o.stderr
+            .contains(&format!("{bicubic} exact bicubic patches, {bilinear} bilinear stand-ins (down to level 13)")),
+        "{}",
+        o.stderr
+    );
+    let deviation: f64 = o.stderr.split("within ").nth(1).unwrap().split(' ').next().unwrap().parse().unwrap();
+    assert!(deviation <= 1e-6 * 2.0 * 3f64.sqrt() && bilinear == 16, "{}", o.stderr);
+    let step = out.to_str().unwrap();
+    assert_bad(
+        &["subdivide-surface", mesh, "--scheme", "catmull-clark", "--tolerance", "1e-15", "-o", step],
+        "",
+        "--tolerance: the patches at extraordinary vertices come within",
+    );
+    assert_bad(
+        &["subdivide-surface", mesh, "--scheme", "catmull-clark", "--tolerance", "1e-3", "-o", "x.obj"],
+        "",
+        "--tolerance: is for .step output",
+    );
 }

@@ -1,5 +1,6 @@
 //! `subdivision_surface` documents in STEP: exact bicubic patches on regular faces, bilinear
-//! stand-ins within the tolerance around extraordinary vertices.
+//! stand-ins within the tolerance around extraordinary vertices, the faces there refined
+//! locally as deep as the tolerance needs (up to 30 levels).
 
 use splinekit::subdivision::surface::bezier_patches::limit_patches;
 use splinekit_scene::surfaces::{SchemeDoc, SubdivisionSurfaceDoc};
@@ -12,25 +13,69 @@ fn shape(doc: SubdivisionSurfaceDoc) -> SceneOrShape {
     SceneOrShape::Shape(ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(doc)))
 }
 
-/// The cube [−1, 1]³ (size 2√3): the fewest levels whose stand-ins are within the
-/// tolerance, one STEP item per patch, and the level before does not meet it.
-#[test]
-fn the_cube_exports_as_its_patches_within_the_tolerance() {
-    let doc = SubdivisionSurfaceDoc::cube();
-    let size = 2.0 * 3f64.sqrt();
-    for relative in [1e-2, 1e-3] {
-        let (patches, depth) = subdivision_patches(&doc, relative).unwrap();
-        assert!(patches.max_deviation <= relative * size && !patches.bilinear.is_empty());
-        let s = doc.subdivision_surface().unwrap();
-        if depth > 1 {
-            assert!(limit_patches(&s, depth - 1).unwrap().max_deviation > relative * size, "depth {depth}");
-        }
-        let (text, exported) = export_document(&shape(doc.clone()), "cube", relative, &HeaderInfo::default()).unwrap();
-        assert_eq!(exported.len(), patches.bicubic.len() + patches.bilinear.len());
-        assert!(text.matches("B_SPLINE_SURFACE").count() >= exported.len());
+/// `examples/meshes/creased_cube.obj` as a document (its sharp top ring and semi-sharp
+/// bottom edge as the document's creases).
+fn creased_cube() -> SubdivisionSurfaceDoc {
+    let folder = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/meshes"));
+    let doc =
+        SceneOrShape::from_json_in(r#"{"type": "subdivision_surface", "obj": "creased_cube.obj"}"#, folder).unwrap();
+    match doc {
+        SceneOrShape::Shape(ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(d))) => d,
+        other => panic!("not a subdivision surface: {other:?}"),
     }
-    let err = subdivision_patches(&doc, 1e-12).unwrap_err().to_string();
+}
+
+/// The cube [−1, 1]³ and the creased cube (size 2√3) at the default tolerance 10⁻⁶, the
+/// cube also at 10⁻⁸ (the creased cube's is in splinekit's tests): the fewest levels whose stand-ins are within the tolerance, and one level
+/// less does not meet it; the cube at 10⁻⁶ as one STEP item per patch (all exact).
+#[test]
+fn cubes_export_as_their_patches_within_the_tolerance() {
+    let size = 2.0 * 3f64.sqrt();
+    for (name, doc, tolerances) in
+        [("cube", SubdivisionSurfaceDoc::cube(), &[1e-6, 1e-8][..]), ("creased cube", creased_cube(), &[1e-6][..])]
+    {
+        assert!(!doc.creases.is_empty() || name == "cube");
+        for &relative in tolerances {
+            let (patches, depth) = subdivision_patches(&doc, relative).unwrap();
+            assert!(patches.max_deviation <= relative * size && !patches.bilinear.is_empty());
+            let s = doc.subdivision_surface().unwrap();
+            assert!(limit_patches(&s, depth - 1).unwrap().max_deviation > relative * size, "{name}: depth {depth}");
+            // Written at the default tolerance, the cube's (the creased cube's through
+            // `subdivide-surface --tolerance 1e-6` in splinekit-cli; writing a thousand
+            // patches takes long in a debug build).
+            if relative == 1e-6 && name == "cube" {
+                let (text, exported) =
+                    export_document(&shape(doc.clone()), "cube", relative, &HeaderInfo::default()).unwrap();
+                assert_eq!(exported.len(), patches.bicubic.len() + patches.bilinear.len());
+                assert!(exported.iter().all(|e| e.max_deviation == 0.0));
+                assert!(text.matches("B_SPLINE_SURFACE").count() >= exported.len());
+            }
+            eprintln!(
+                "{name} within {relative:e}: depth {depth}, {} exact + {} bilinear patches, deviation {:.2e}",
+                patches.bicubic.len(),
+                patches.bilinear.len(),
+                patches.max_deviation / size
+            );
+        }
+    }
+}
+
+/// A tolerance that 30 levels do not reach is refused naming it and the one they reach,
+/// and asking for that one succeeds.
+#[test]
+fn an_unreachable_tolerance_names_the_reachable_one() {
+    let doc = SubdivisionSurfaceDoc::cube();
+    let err = subdivision_patches(&doc, 1e-15).unwrap_err().to_string();
     assert!(err.contains("tolerance") && err.contains(&format!("after {MAX_DEPTH} levels")), "{err}");
+    assert!(err.contains("relative 1.0e-15"), "{err}");
+    let reachable: f64 = err.rsplit("at least ").next().unwrap().trim().parse().unwrap();
+    assert!(reachable > 1e-15 && reachable < 1e-11, "{err}");
+    let (patches, depth) = subdivision_patches(&doc, reachable).unwrap();
+    assert!(depth <= MAX_DEPTH && patches.max_deviation <= reachable * 2.0 * 3f64.sqrt());
+    for bad in [0.0, -1e-3, f64::NAN] {
+        let err = subdivision_patches(&doc, bad).unwrap_err().to_string();
+        assert!(err.starts_with("tolerance:"), "{err}");
+    }
 }
 
 /// Loop and bilinear limits are refused, naming the scheme.

@@ -10,6 +10,7 @@
 use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
 use splinekit::Point;
+use splinekit::subdivision::surface::bezier_patches::MAX_DEPTH;
 use splinekit::subdivision::surface::{BoundaryRule, Cage, Crease, Scheme as KernelScheme, SubdivisionSurface};
 use splinekit_mesh::export::mesh_bytes;
 use splinekit_mesh::limit_mesh::{LimitMesh, limit_mesh};
@@ -58,10 +59,16 @@ pub struct SubdivideSurfaceArgs {
     /// vertex). Catmull–Clark, Loop and bilinear; the cage as read, `--steps` not applied.
     #[arg(long, value_name = "FACE,U,V")]
     pub at: Vec<String>,
+    /// .step output: refine each face at an extraordinary vertex to the fewest levels whose
+    /// bilinear stand-in is within this tolerance (relative to the cage's bounding-box
+    /// diagonal) of the exact limit, instead of --steps levels.
+    #[arg(long)]
+    pub tolerance: Option<f64>,
     /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals),
     /// .step (Catmull–Clark limit surface: exact bicubic patches on regular faces, faces at
-    /// extraordinary vertices subdivided --steps times, the rest bilinear through limit
-    /// points); with --at, the JSON file (default standard output).
+    /// extraordinary vertices refined locally --steps times (up to 30) or to --tolerance,
+    /// the rest bilinear through limit points); with --at, the JSON file (default standard
+    /// output).
     #[arg(short, long)]
     pub output: Option<String>,
 }
@@ -110,7 +117,12 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
     if at.is_empty() && !matches!(ext.as_str(), "obj" | "stl" | "ply" | "gltf" | "glb" | "step") {
         bail!("-o: writes .obj, .stl, .ply, .gltf, .glb or .step, not '{output}'");
     }
-    let steps = super::eval::parse_count("--steps", &args.steps, 10)?;
+    if args.tolerance.is_some() && ext != "step" {
+        bail!("--tolerance: is for .step output (the depth of the patches at extraordinary vertices), use --steps");
+    }
+    // STEP refines only the faces at extraordinary vertices (linear in the depth).
+    let max_steps = if ext == "step" { MAX_DEPTH } else { 10 };
+    let steps = super::eval::parse_count("--steps", &args.steps, max_steps)?;
     let text = read_text(&args.mesh, "mesh")?;
     let mesh = read_obj_polygons(&text).map_err(|e| anyhow!("mesh: {e}"))?;
     if mesh.faces.is_empty() {
@@ -119,7 +131,8 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
     // Each step makes about four corners of every corner (an n-gon becomes n quads); a
     // corner holds its point, its place in a face and its adjacency entries.
     let corners: f64 = mesh.faces.iter().map(|f| f.len() as f64).sum();
-    let out_corners = corners * 4f64.powi(steps as i32);
+    let out_corners =
+        if ext == "step" { corners * 4.0 * 12.0 * steps as f64 } else { corners * 4f64.powi(steps as i32) };
     crate::budget::current().check(
         "--steps",
         &format!("{steps} steps on {} faces", mesh.faces.len()),
@@ -161,7 +174,7 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         return crate::output::write_json(&serde_json::Value::Array(samples), args.output.as_deref());
     }
     if ext == "step" {
-        return write_step(&surface, steps, &name, &output);
+        return write_step(&surface, steps, args.tolerance, &name, &output);
     }
     let result = surface.subdivide(steps).map_err(|e| anyhow!("mesh: {e}"))?;
     if args.limit {
@@ -183,22 +196,53 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
 }
 
 /// The limit surface as STEP: one Bézier surface per patch of
-/// [`limit_patches`](splinekit::subdivision::surface::bezier_patches::limit_patches).
-fn write_step(surface: &SubdivisionSurface, depth: usize, name: &str, path: &str) -> Result<()> {
+/// [`limit_patches`](splinekit::subdivision::surface::bezier_patches::limit_patches) at
+/// `depth` levels, or of
+/// [`surface_patches`](splinekit_step::documents::subdivision::surface_patches) within a
+/// relative tolerance (what `convert` does for a `subdivision_surface` document); reports
+/// the patches and their deviation on standard error.
+fn write_step(
+    surface: &SubdivisionSurface,
+    depth: usize,
+    tolerance: Option<f64>,
+    name: &str,
+    path: &str,
+) -> Result<()> {
     use splinekit::subdivision::surface::bezier_patches::limit_patches;
-    use splinekit_step::documents::subdivision::patches_scene;
+    use splinekit_step::documents::subdivision::{patches_scene, surface_patches};
     if surface.scheme() != KernelScheme::CatmullClark {
         bail!("-o: STEP export is for catmull-clark (exact bicubic patches), not {}", surface.scheme().name());
     }
-    if depth == 0 {
-        bail!("--steps: STEP export subdivides the faces at extraordinary vertices --steps times, at least 1, got 0");
-    }
-    let patches = limit_patches(surface, depth).map_err(|e| anyhow!("mesh: {e}"))?;
+    let patches = match tolerance {
+        Some(t) => {
+            surface_patches(surface, t)
+                .map_err(|e| match e.to_string().strip_prefix("tolerance: ") {
+                    Some(m) => anyhow!("--tolerance: {m}"),
+                    None => anyhow!("mesh: {e}"),
+                })?
+                .0
+        }
+        None => {
+            if depth == 0 {
+                bail!(
+                    "--steps: STEP export refines the faces at extraordinary vertices --steps times, at least 1, got 0"
+                );
+            }
+            limit_patches(surface, depth).map_err(|e| anyhow!("mesh: {e}"))?
+        }
+    };
     let doc = patches_scene(&patches).ok_or_else(|| anyhow!("mesh: the limit surface has no patches"))?;
     let header = splinekit_step::part21::writer::HeaderInfo { name: name.to_string(), ..Default::default() };
     let (text, _) =
         splinekit_step::documents::export_document(&splinekit_scene::SceneOrShape::Scene(doc), name, 1e-6, &header)
             .map_err(|e| anyhow!("{path}: {e}"))?;
+    eprintln!(
+        "{} exact bicubic patches, {} bilinear stand-ins (down to level {}) within {:.3e} of the limit",
+        patches.bicubic.len(),
+        patches.bilinear.len(),
+        patches.depth(),
+        patches.max_deviation
+    );
     crate::output::write_bytes(text.as_bytes(), Some(path))
 }
 

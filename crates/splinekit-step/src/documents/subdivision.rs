@@ -1,22 +1,24 @@
 //! `subdivision_surface` documents in STEP: the Catmull–Clark limit surface as one Bézier
-//! surface per patch ([`limit_patches`]): exact bicubic patches on regular faces, and
-//! around extraordinary vertices (and semi-sharp creases) faces subdivided until regular,
-//! the last ring of faces at each extraordinary vertex as bilinear patches through limit
-//! points. The depth is the fewest levels (1 to [`MAX_DEPTH`]) whose stand-ins come within
-//! the tolerance (relative to the cage's bounding-box diagonal) of the limit at their
-//! centres, where a bilinear patch between limit points strays most.
+//! surface per patch ([`limit_patches_within`]): exact bicubic patches on regular faces, and
+//! around extraordinary vertices (and semi-sharp creases) faces refined locally until
+//! regular, the last face at each extraordinary vertex a bilinear patch through limit
+//! points. Each irregular face takes the fewest levels (1 to [`MAX_DEPTH`]) whose stand-in
+//! is within the tolerance (relative to the cage's bounding-box diagonal) of the exact limit
+//! on a 9 × 9 grid of its parameters; a tolerance that 30 levels do not reach is refused
+//! with the one they do.
 
 use splinekit::Point;
-use splinekit::subdivision::surface::Scheme;
-use splinekit::subdivision::surface::bezier_patches::{LimitPatches, limit_patches};
+use splinekit::subdivision::surface::bezier_patches::{LimitPatches, limit_patches_within};
+use splinekit::subdivision::surface::{Scheme, SubdivisionSurface};
 use splinekit_scene::surfaces::{BezierSurfaceDoc, SubdivisionSurfaceDoc};
 use splinekit_scene::{SceneDocument, SceneObject, SceneOrShape, ShapeDocument, SurfaceDocument};
 
 use crate::error::{Result, StepError};
 
-/// Most levels of subdivision at extraordinary vertices (each adds a ring of bilinear
-/// stand-ins half the size, about a quarter of the deviation).
-pub const MAX_DEPTH: usize = 6;
+/// Most levels of local refinement at extraordinary vertices (each adds three exact
+/// patches per stand-in and multiplies its deviation by about the subdominant eigenvalue,
+/// 0.41 at valence 3).
+pub use splinekit::subdivision::surface::bezier_patches::MAX_DEPTH;
 
 /// The patches as `bezier_surface` documents (bicubic, then the bilinear stand-ins).
 pub fn patch_shapes(p: &LimitPatches) -> Vec<ShapeDocument> {
@@ -42,32 +44,45 @@ pub fn patches_scene(p: &LimitPatches) -> Option<SceneDocument> {
     Some(scene)
 }
 
-/// The patches of a document's limit surface within `relative_tolerance`, and the depth.
+/// The patches of a document's limit surface within `relative_tolerance`, and the depth
+/// (the deepest level of a stand-in).
 pub fn subdivision_patches(doc: &SubdivisionSurfaceDoc, relative_tolerance: f64) -> Result<(LimitPatches, usize)> {
     let s = doc.subdivision_surface().map_err(|e| StepError::plain(e.to_string()))?;
+    surface_patches(&s, relative_tolerance)
+}
+
+/// The patches of a Catmull–Clark surface within `relative_tolerance` of its cage's
+/// bounding-box diagonal, and the depth (the deepest level of a stand-in); refuses other
+/// schemes and a tolerance that [`MAX_DEPTH`] levels do not reach, naming the one they do.
+pub fn surface_patches(s: &SubdivisionSurface, relative_tolerance: f64) -> Result<(LimitPatches, usize)> {
     if s.scheme() != Scheme::CatmullClark {
         return Err(StepError::plain(format!(
             "scheme: STEP export of subdivision surfaces is for catmull-clark (exact bicubic patches), not {}",
             s.scheme().name()
         )));
     }
+    if !(relative_tolerance > 0.0 && relative_tolerance.is_finite()) {
+        return Err(StepError::plain(format!("tolerance: must be finite and > 0, got {relative_tolerance}")));
+    }
     let vs = &s.cage().vertices;
     let (lo, hi) = vs.iter().fold((vs[0], vs[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
-    let tolerance = relative_tolerance * (hi - lo).norm();
-    let mut reached = f64::INFINITY;
-    for depth in 1..=MAX_DEPTH {
-        let patches = limit_patches(&s, depth).map_err(|e| StepError::plain(e.to_string()))?;
-        if patches.max_deviation <= tolerance {
-            return Ok((patches, depth));
-        }
-        reached = patches.max_deviation;
-    }
     let size = (hi - lo).norm();
-    Err(StepError::plain(format!(
-        "tolerance: the patches at extraordinary vertices come within {reached:.3e} of the limit after {MAX_DEPTH} levels ({:.1e} of the cage's size), not {tolerance:.3e}: ask for a relative tolerance of at least {:.1e}",
-        reached / size,
-        reached / size
-    )))
+    if size == 0.0 {
+        return Err(StepError::plain("vertices: the cage has no extent (all its vertices coincide)"));
+    }
+    let tolerance = relative_tolerance * size;
+    let patches = limit_patches_within(s, tolerance).map_err(|e| StepError::plain(e.to_string()))?;
+    if patches.max_deviation > tolerance {
+        let (reached, relative) = (patches.max_deviation, patches.max_deviation / size);
+        // Rounded up to two digits, so that asking for it succeeds.
+        let unit = 10f64.powf(relative.log10().floor() - 1.0);
+        let reachable = (relative / unit).ceil() * unit;
+        return Err(StepError::plain(format!(
+            "tolerance: the patches at extraordinary vertices come within {reached:.3e} of the limit after {MAX_DEPTH} levels ({relative:.2e} of the cage's size), not {tolerance:.3e} (relative {relative_tolerance:.1e}): ask for a relative tolerance of at least {reachable:.1e}"
+        )));
+    }
+    let depth = patches.depth();
+    Ok((patches, depth))
 }
 
 /// The document with every `subdivision_surface` (a shape, or a scene's object) replaced by

@@ -160,10 +160,10 @@ pub(crate) fn evaluate_local(
     ))
 }
 
-type Affine = (u32, [[f64; 2]; 2], (f64, f64));
+pub(crate) type Affine = (u32, [[f64; 2]; 2], (f64, f64));
 
 /// The child quad of a Catmull–Clark quad containing (u, v) and the map into it.
-fn quad_child(u: f64, v: f64) -> Affine {
+pub(crate) fn quad_child(u: f64, v: f64) -> Affine {
     match (u > 0.5, v > 0.5) {
         (false, false) => (0, [[2.0, 0.0], [0.0, 2.0]], (0.0, 0.0)),
         (true, false) => (1, [[0.0, 2.0], [-2.0, 0.0]], (0.0, 2.0)),
