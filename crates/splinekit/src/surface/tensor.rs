@@ -341,17 +341,28 @@ impl<const D: usize> TensorSpline<crate::Point<D>> {
         let mut iso0 = vec![[0.0; PADDED]; nve];
         let mut iso1 = vec![[0.0; PADDED]; nve];
         let mut nu_basis = vec![0.0; 2 * wu];
+        // The p_u + 1 rows of the net over the current u-span, padded like the isocurve
+        // coefficients (so each row's sums are whole-register operations), copied when the
+        // span changes.
+        let mut span_rows = vec![[0.0; PADDED]; wu * nve];
+        let mut rows_span = usize::MAX;
         let rows = points.chunks_exact_mut(columns_len).zip(normals.chunks_exact_mut(columns_len));
         for (&u, (prow, nrow)) in us.iter().zip(rows) {
             let u = self.u.normalise(u);
             let su = self.u.span(u);
             basis_derivatives(self.u.eval_knots(), pu, su, u, 1, &mut nu_basis);
+            if su != rows_span {
+                for (padded, y) in span_rows.iter_mut().zip(&self.net[(su - pu) * nve..(su + 1) * nve]) {
+                    *padded = std::array::from_fn(|c| if c < D { y[c] } else { 0.0 });
+                }
+                rows_span = su;
+            }
             iso0.fill([0.0; PADDED]);
             iso1.fill([0.0; PADDED]);
-            for (r, row) in self.net[(su - pu) * nve..(su + 1) * nve].chunks_exact(nve).enumerate() {
+            for (r, row) in span_rows.chunks_exact(nve).enumerate() {
                 let (n0, n1) = (nu_basis[r], nu_basis[wu + r]);
                 for ((x0, x1), y) in iso0.iter_mut().zip(iso1.iter_mut()).zip(row) {
-                    for c in 0..D {
+                    for c in 0..PADDED {
                         x0[c] += y[c] * n0;
                         x1[c] += y[c] * n1;
                     }
