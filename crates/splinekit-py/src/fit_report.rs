@@ -1,6 +1,6 @@
 //! The report of a least-squares fit (`splinekit.FitReport`): its errors, the condition
 //! estimate of the QR factor and the data parameters, with pickling. Made by
-//! [`crate::fitting`], carried along by the curve and surface classes.
+//! `fitting.rs`, carried along by the curve and surface classes.
 
 use numpy::PyArray1;
 use pyo3::prelude::*;

@@ -1,7 +1,6 @@
 //! `splinekit.fit` and `splinekit.interpolate`: B-splines from sampled points, by the
 //! kernel functions `splinekit fit` and `splinekit interpolate` call.
 
-use numpy::PyArray1;
 use pyo3::prelude::*;
 use splinekit::Point;
 use splinekit::fit::{

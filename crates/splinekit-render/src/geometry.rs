@@ -9,8 +9,6 @@
 
 use std::ops::Range;
 
-use wgpu::util::DeviceExt;
-
 use crate::scene::{LineItem, MeshItem, PointItem, RenderScene, srgba_to_linear};
 
 /// Floats of one mesh vertex in the vertex buffer: position, normal, linear colour.

@@ -3,7 +3,7 @@
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use splinekit::Point;
-use splinekit::curve::{Curve, Interval};
+use splinekit::curve::Curve;
 use splinekit_scene::budget::{Cost, ShapeCost};
 use splinekit_scene::{Curves, DimensionVisitor, SceneOrShape, ShapeDocument};
 

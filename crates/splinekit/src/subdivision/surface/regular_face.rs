@@ -13,7 +13,14 @@ use super::topology::Topology;
 use crate::Point;
 
 /// Position and partials [P, Pu, Pv, Puu, Puv, Pvv] on a regular face, or None.
-pub(crate) fn regular(cage: &Cage, topo: &Topology, f: u32, scheme: EvalScheme, u: f64, v: f64) -> Option<[Point<3>; 6]> {
+pub(crate) fn regular(
+    cage: &Cage,
+    topo: &Topology,
+    f: u32,
+    scheme: EvalScheme,
+    u: f64,
+    v: f64,
+) -> Option<[Point<3>; 6]> {
     let mut r = [Point::<3>::zeros(); 6];
     match scheme {
         EvalScheme::CatmullClark => {
