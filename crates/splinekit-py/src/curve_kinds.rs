@@ -11,7 +11,7 @@ use splinekit_scene::{CurveDocument, SplineView};
 
 use crate::curve::PyCurve;
 use crate::errors::{OrValueError, value_error};
-use crate::fitting::FitReport;
+use crate::fit_report::FitReport;
 use crate::json_value::to_value;
 
 /// The document `{"type": ty, name: value, …}` from Python arguments (None skipped).

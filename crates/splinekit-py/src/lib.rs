@@ -17,6 +17,7 @@ mod curve_kinds;
 mod curve_queries;
 mod documents;
 mod errors;
+mod fit_report;
 mod fitting;
 mod json_value;
 mod kind_classes;
@@ -48,7 +49,7 @@ fn _splinekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     fields_classes.extend(surface_kinds::add_classes(m)?);
     m.add("_FIELDS_CLASSES", fields_classes)?;
     m.add_class::<documents::PyScene>()?;
-    m.add_class::<fitting::FitReport>()?;
+    m.add_class::<fit_report::FitReport>()?;
     m.add_class::<mesh::PyMesh>()?;
     m.add_class::<subdivision::PySubdivisionSurface>()?;
     m.add_function(wrap_pyfunction!(fitting::fit, m)?)?;

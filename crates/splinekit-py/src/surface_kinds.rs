@@ -8,7 +8,7 @@ use splinekit_scene::{NetView, SurfaceDocument};
 
 use crate::curve_kinds::document;
 use crate::errors::{OrValueError, value_error};
-use crate::fitting::FitReport;
+use crate::fit_report::FitReport;
 use crate::surface::PySurface;
 
 /// Knots in u and in v.

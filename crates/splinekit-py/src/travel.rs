@@ -1,5 +1,5 @@
 //! Objects that travel: `pickle` (any protocol, 5 included), `copy.copy`, `copy.deepcopy`
-//! and `==` for curves, surfaces, scenes and meshes (fit reports: `fitting.rs`).
+//! and `==` for curves, surfaces, scenes and meshes (fit reports: `fit_report.rs`).
 //!
 //! A shape's state is its shape document — the JSON the command line reads — as a dict of
 //! Python floats, which pickle stores as exact doubles; the object is rebuilt from it by
@@ -17,7 +17,7 @@ use crate::curve::PyCurve;
 use crate::curve_kinds::{PyBSpline, wrap};
 use crate::documents::PyScene;
 use crate::errors::{OrValueError, value_error};
-use crate::fitting::FitReport;
+use crate::fit_report::FitReport;
 use crate::json_value::{to_python, to_value};
 use crate::mesh::PyMesh;
 use crate::surface::PySurface;

@@ -4,13 +4,11 @@
 //! line writes just those ([`Geometry::write_mesh_vertices`], [`Geometry::write_line`],
 //! `Queue::write_buffer`), leaving the rest of the buffers as they are; what it then draws
 //! is what uploading the whole changed scene afresh draws, because the buffers hold the
-//! same bytes (the studio's tests read them back, [`Renderer::read_geometry`]).
+//! same bytes (the studio's tests read them back,
+//! [`Renderer::read_geometry`](crate::Renderer::read_geometry)).
 
 use std::ops::Range;
 
-use wgpu::util::DeviceExt;
-
-use crate::renderer::Renderer;
 use crate::scene::{LineItem, MeshItem, PointItem, RenderScene, srgba_to_linear};
 
 /// Floats of one mesh vertex in the vertex buffer: position, normal, linear colour.
@@ -21,7 +19,7 @@ pub const SEGMENT_FLOATS: usize = 12;
 pub const POINT_FLOATS: usize = 8;
 
 /// Buffers that can be written in place and read back.
-const USAGE: wgpu::BufferUsages = wgpu::BufferUsages::COPY_DST.union(wgpu::BufferUsages::COPY_SRC);
+pub(crate) const USAGE: wgpu::BufferUsages = wgpu::BufferUsages::COPY_DST.union(wgpu::BufferUsages::COPY_SRC);
 
 pub(crate) fn bytes<T: Copy>(data: &[T]) -> &[u8] {
     // SAFETY: T is plain f32/u32 data (no padding, no pointers); the slice is read only.
@@ -77,30 +75,30 @@ pub(crate) struct MeshBuffers {
     pub(crate) vertices: wgpu::Buffer,
     pub(crate) indices: wgpu::Buffer,
     pub(crate) index_count: u32,
-    vertex_count: usize,
+    pub(crate) vertex_count: usize,
     /// Its index in the scene's meshes (meshes without triangles are not uploaded).
-    item: usize,
+    pub(crate) item: usize,
 }
 
 /// Instances (segments or points) in one buffer: `count` drawn, room for `capacity`.
 pub(crate) struct Instances {
     pub(crate) buffer: wgpu::Buffer,
     pub(crate) count: u32,
-    capacity: usize,
+    pub(crate) capacity: usize,
 }
 
-/// A scene's geometry on the device ([`Renderer::upload`]; drawn by
-/// [`Renderer::draw_layers`]).
+/// A scene's geometry on the device ([`Renderer::upload`](crate::Renderer::upload); drawn by
+/// [`Renderer::draw_layers`](crate::Renderer::draw_layers)).
 pub struct Geometry {
     pub(crate) meshes: Vec<MeshBuffers>,
     pub(crate) lines: Option<Instances>,
     /// Per line of the scene, its first segment and number of segments.
-    line_runs: Vec<(usize, usize)>,
+    pub(crate) line_runs: Vec<(usize, usize)>,
     pub(crate) points: Option<Instances>,
 }
 
-/// What [`Renderer::read_geometry`] reads back: each uploaded mesh's vertex floats, the
-/// segment floats and the point floats.
+/// What [`Renderer::read_geometry`](crate::Renderer::read_geometry) reads back: each
+/// uploaded mesh's vertex floats, the segment floats and the point floats.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GeometryData {
     /// Per mesh with triangles, its packed vertices.
@@ -163,7 +161,7 @@ impl Geometry {
     /// the line's number of segments is no longer the uploaded one's, its segments from
     /// `segments.start` on and those of every later line are written (moved to follow it)
     /// while the buffer has room for them; `false` (nothing written) when it has not, so
-    /// the caller uploads the lines afresh ([`Renderer::renew_lines`]).
+    /// the caller uploads the lines afresh ([`Renderer::renew_lines`](crate::Renderer::renew_lines)).
     pub fn write_line_segments(
         &mut self,
         queue: &wgpu::Queue,
@@ -235,130 +233,5 @@ impl Geometry {
     pub fn lines_fit(&self, scene: &RenderScene) -> bool {
         scene.lines.len() == self.line_runs.len()
             && scene.lines.iter().zip(&self.line_runs).all(|(l, r)| segment_count(l) == r.1)
-    }
-}
-
-impl Renderer {
-    /// Uploads the meshes, the lines as instanced segments and the points as instanced
-    /// discs, with colours converted to linear; buffers can be written in place and read
-    /// back.
-    pub fn upload(&self, scene: &RenderScene) -> Geometry {
-        let device = self.device();
-        let buffer = |data: &[u8], usage: wgpu::BufferUsages| {
-            device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: None,
-                contents: data,
-                usage: usage | USAGE,
-            })
-        };
-        let mut meshes = Vec::new();
-        for (item, m) in scene.meshes.iter().enumerate() {
-            if m.triangles.is_empty() {
-                continue;
-            }
-            let mut v = Vec::with_capacity(m.positions.len() * MESH_VERTEX_FLOATS);
-            pack_mesh_vertices(m, 0..m.positions.len(), &mut v);
-            let flat: Vec<u32> = m.triangles.iter().flatten().copied().collect();
-            meshes.push(MeshBuffers {
-                vertices: buffer(bytes(&v), wgpu::BufferUsages::VERTEX),
-                indices: buffer(bytes(&flat), wgpu::BufferUsages::INDEX),
-                index_count: flat.len() as u32,
-                vertex_count: m.positions.len(),
-                item,
-            });
-        }
-        let (lines, line_runs) = self.line_instances(scene);
-        Geometry { meshes, lines, line_runs, points: self.point_instances(scene) }
-    }
-
-    /// Uploads the scene's lines afresh into `geometry` (its meshes and points stay).
-    pub fn renew_lines(&self, geometry: &mut Geometry, scene: &RenderScene) {
-        (geometry.lines, geometry.line_runs) = self.line_instances(scene);
-    }
-
-    /// Uploads the scene's points afresh into `geometry` (its meshes and lines stay).
-    pub fn renew_points(&self, geometry: &mut Geometry, scene: &RenderScene) {
-        geometry.points = self.point_instances(scene);
-    }
-
-    fn line_instances(&self, scene: &RenderScene) -> (Option<Instances>, Vec<(usize, usize)>) {
-        let mut segments: Vec<f32> = Vec::new();
-        let mut runs = Vec::with_capacity(scene.lines.len());
-        for l in &scene.lines {
-            runs.push((segments.len() / SEGMENT_FLOATS, segment_count(l)));
-            pack_line(l, &mut segments);
-        }
-        // Room for a quarter more segments: a polyline spliced during a drag may gain some
-        // without the buffer being made again.
-        let room = segments.len() / 4 + 64 * SEGMENT_FLOATS;
-        (self.instances(&segments, SEGMENT_FLOATS, room), runs)
-    }
-
-    fn point_instances(&self, scene: &RenderScene) -> Option<Instances> {
-        let mut points: Vec<f32> = Vec::new();
-        pack_points(&scene.points, &mut points);
-        self.instances(&points, POINT_FLOATS, 0)
-    }
-
-    /// Instances of `data` (`floats` each) in a buffer with `room` floats to spare.
-    fn instances(&self, data: &[f32], floats: usize, room: usize) -> Option<Instances> {
-        if data.is_empty() {
-            return None;
-        }
-        let mut contents = Vec::with_capacity(data.len() + room);
-        contents.extend_from_slice(data);
-        contents.resize(data.len() + room / floats * floats, 0.0);
-        Some(Instances {
-            buffer: self.device().create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: None,
-                contents: bytes(&contents),
-                usage: wgpu::BufferUsages::VERTEX | USAGE,
-            }),
-            count: (data.len() / floats) as u32,
-            capacity: contents.len() / floats,
-        })
-    }
-
-    /// Reads the geometry's buffers back (for tests that check a buffer written in place
-    /// against one uploaded afresh): the instances drawn, not the room after them.
-    pub fn read_geometry(&self, geometry: &Geometry) -> Result<GeometryData, crate::RenderError> {
-        let read = |b: &wgpu::Buffer| self.read_buffer(b);
-        Ok(GeometryData {
-            meshes: geometry.meshes.iter().map(|m| read(&m.vertices)).collect::<Result<_, _>>()?,
-            segments: match &geometry.lines {
-                Some(l) => read(&l.buffer)?[..l.count as usize * SEGMENT_FLOATS].to_vec(),
-                None => Vec::new(),
-            },
-            points: match &geometry.points {
-                Some(p) => read(&p.buffer)?[..p.count as usize * POINT_FLOATS].to_vec(),
-                None => Vec::new(),
-            },
-        })
-    }
-
-    fn read_buffer(&self, source: &wgpu::Buffer) -> Result<Vec<f32>, crate::RenderError> {
-        let device = self.device();
-        let staging = device.create_buffer(&wgpu::BufferDescriptor {
-            label: None,
-            size: source.size(),
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
-        let mut encoder = device.create_command_encoder(&Default::default());
-        encoder.copy_buffer_to_buffer(source, 0, &staging, 0, source.size());
-        self.queue().submit([encoder.finish()]);
-        let slice = staging.slice(..);
-        let (tx, rx) = std::sync::mpsc::channel();
-        slice.map_async(wgpu::MapMode::Read, move |r| {
-            let _ = tx.send(r);
-        });
-        let failed = |e: String| crate::RenderError::Readback(e);
-        device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| failed(e.to_string()))?;
-        rx.recv().map_err(|e| failed(e.to_string()))?.map_err(|e| failed(e.to_string()))?;
-        let data = slice.get_mapped_range().map_err(|e| failed(format!("{e:?}")))?;
-        let floats = data.chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).collect();
-        drop(data);
-        staging.unmap();
-        Ok(floats)
     }
 }

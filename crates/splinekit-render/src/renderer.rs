@@ -8,6 +8,8 @@ use crate::geometry::{Geometry, bytes};
 use crate::image::Image;
 use crate::scene::{RenderScene, srgba_to_linear};
 
+mod upload;
+
 /// Why rendering failed.
 #[derive(Debug, thiserror::Error)]
 pub enum RenderError {

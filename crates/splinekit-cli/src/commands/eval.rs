@@ -3,12 +3,14 @@
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use splinekit::Point;
-use splinekit::curve::{Curve, Interval};
+use splinekit::curve::Curve;
 use splinekit_scene::budget::{Cost, ShapeCost};
 use splinekit_scene::{Curves, DimensionVisitor, SceneOrShape, ShapeDocument};
 
 use crate::input::{parse_numbers, read_text};
 use crate::output::JsonOut;
+
+use super::spread::spread;
 
 /// Most parameters one call may evaluate.
 pub const MAX_SAMPLES: usize = 10_000_000;
@@ -113,17 +115,6 @@ impl Params<'_> {
             Params::ArcLength(n) => 16.0 * *n as f64,
             _ => 0.0,
         }
-    }
-}
-
-/// Sample i of n spread evenly over `dom`, ends included.
-pub(crate) fn spread(i: usize, n: usize, dom: Interval) -> f64 {
-    if n == 1 || i == 0 {
-        dom.start
-    } else if i + 1 == n {
-        dom.end
-    } else {
-        dom.lerp(i as f64 / (n - 1) as f64)
     }
 }
 

@@ -18,7 +18,7 @@ pub struct EvalSurface<'a> {
 }
 
 fn spread(n: usize, d: Interval) -> Vec<f64> {
-    (0..n).map(|i| super::eval::spread(i, n, d)).collect()
+    (0..n).map(|i| super::spread::spread(i, n, d)).collect()
 }
 
 /// Parameter pairs and the partials at each.

@@ -1,4 +1,4 @@
-//! One module per subcommand.
+//! One module per subcommand (and [`spread`], the even parameters two of them share).
 
 pub mod arc_length;
 pub mod convert;
@@ -11,6 +11,7 @@ pub mod project;
 pub mod refine;
 pub mod render;
 pub mod section;
+pub mod spread;
 pub mod subdivide;
 pub mod subdivide_surface;
 pub mod tessellate;

@@ -81,8 +81,7 @@ fn derive() -> [[f64; 15]; 12] {
         }
         let mut rhs = [0.0; 15];
         for (r, &(u, v)) in samples.iter().enumerate() {
-            rhs[r] =
-                evaluate_local(cage.clone(), 0, u, v, EvalScheme::Loop, false).expect("a lattice point").position.x;
+            rhs[r] = evaluate_local(cage.clone(), 0, u, v, EvalScheme::Loop, None).expect("a lattice point").position.x;
         }
         out[k] = solve(m, rhs);
     }

@@ -15,13 +15,11 @@
 //! (1, 0), c₂ at (1, 1), c₃ at (0, 1); Loop triangles put c₀ at (0, 0), c₁ at (1, 0),
 //! c₂ at (0, 1) with u, v ≥ 0, u + v ≤ 1.
 
-use super::box_spline::loop_basis;
 use super::cage::Cage;
 use super::catmull_clark::catmull_clark_step;
 use super::limit_masks::{MaskScheme, limit_frame_in_sector, mask_ready};
 use super::local::{one_ring_faces, sub_cage};
 use super::loop_scheme::loop_step;
-use super::regular_patch::{catmull_clark_grid, cubic_bspline_basis, loop_points};
 use super::topology::Topology;
 use crate::{Error, Point, Result};
 
@@ -72,8 +70,13 @@ fn unit(c: Point<3>) -> Point<3> {
     if n > 0.0 { c / n } else { Point::<3>::zeros() }
 }
 
+/// Position and partials [P, Pu, Pv, Puu, Puv, Pvv] on a regular face, or None: the
+/// polynomial patches of `regular_face.rs`, passed in so that this file does not
+/// depend on the box-spline basis, which is itself derived by evaluating here without them.
+pub(crate) type RegularFace = fn(&Cage, &Topology, u32, EvalScheme, f64, f64) -> Option<[Point<3>; 6]>;
+
 /// Evaluates the limit of `cage` on face `face` at (u, v) by local subdivision
-/// (`use_patches` false: never the polynomial patches, only masks at corners — used to
+/// (`patches` None: never the polynomial patches, only masks at corners — used to
 /// derive the box-spline basis).
 pub(crate) fn evaluate_local(
     mut cage: Cage,
@@ -81,7 +84,7 @@ pub(crate) fn evaluate_local(
     mut u: f64,
     mut v: f64,
     scheme: EvalScheme,
-    use_patches: bool,
+    patches: Option<RegularFace>,
 ) -> Result<LimitSample> {
     // jac[c][a] = ∂(child coordinate c)/∂(root coordinate a).
     let mut jac = [[1.0, 0.0], [0.0, 1.0]];
@@ -97,7 +100,9 @@ pub(crate) fn evaluate_local(
     };
     for level in 0..=MAX_LEVELS {
         let topo = Topology::new(&cage)?;
-        if use_patches && let Some(local) = regular(&cage, &topo, face, scheme, u, v) {
+        if let Some(regular) = patches
+            && let Some(local) = regular(&cage, &topo, face, scheme, u, v)
+        {
             let mut r = to_root(local, jac);
             r.position += offset;
             return Ok(r);
@@ -115,7 +120,7 @@ pub(crate) fn evaluate_local(
         }
         // At a corner, two more steps put a regular vertex inside a regular patch (with
         // partials); a vertex still irregular then never will be, and takes its mask.
-        if ((at_corner && (corner_levels > 2 || !use_patches)) || level == MAX_LEVELS)
+        if ((at_corner && (corner_levels > 2 || patches.is_none())) || level == MAX_LEVELS)
             && mask_ready(&topo, vertex, mask_scheme)
         {
             // The tangent plane on this face's side of any crease through the vertex.
@@ -183,35 +188,6 @@ fn triangle_child(u: f64, v: f64) -> Affine {
     } else {
         (3, [[-2.0, 0.0], [0.0, -2.0]], (1.0, 1.0))
     }
-}
-
-/// Position and partials [P, Pu, Pv, Puu, Puv, Pvv] on a regular face, or None.
-fn regular(cage: &Cage, topo: &Topology, f: u32, scheme: EvalScheme, u: f64, v: f64) -> Option<[Point<3>; 6]> {
-    let mut r = [Point::<3>::zeros(); 6];
-    match scheme {
-        EvalScheme::CatmullClark => {
-            let g = catmull_clark_grid(cage, topo, f)?;
-            let (bu, bv) = (cubic_bspline_basis(u), cubic_bspline_basis(v));
-            let orders = [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)];
-            for (d, &(du, dv)) in orders.iter().enumerate() {
-                for i in 0..4 {
-                    for j in 0..4 {
-                        r[d] += g[i][j] * (bu[du][i] * bv[dv][j]);
-                    }
-                }
-            }
-        }
-        EvalScheme::Loop => {
-            let pts = loop_points(topo, f)?;
-            let w = loop_basis(u, v);
-            for (d, row) in w.iter().enumerate() {
-                for (k, &p) in pts.iter().enumerate() {
-                    r[d] += cage.vertices[p as usize] * row[k];
-                }
-            }
-        }
-    }
-    Some(r)
 }
 
 /// Carries local partials back to the root parameters.

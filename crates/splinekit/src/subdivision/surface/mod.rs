@@ -4,7 +4,7 @@
 //!
 //! One concept per file: [`cage`] (the data), [`atlas`] (the limit as one parametric surface), [`topology`] (half-edge adjacency),
 //! [`creases`] (sharpness rules), [`catmull_clark`], [`loop_scheme`], [`bilinear`] (one
-//! step each), [`bezier_patches`] (the limit as Bézier patches, for STEP), [`limit_masks`], [`regular_patch`] and [`box_spline`] (polynomial patches
+//! step each), [`bezier_patches`] (the limit as Bézier patches, for STEP), [`limit_masks`], [`regular_patch`], [`box_spline`] and `regular_face` (polynomial patches
 //! on regular faces), [`local`] (neighbourhoods), [`limit_eval`] (exact evaluation) and [`obj_cage`] (reading
 //! a cage from OBJ).
 //! Doo–Sabin steps live with the polygon meshes of `splinekit-mesh`.
@@ -21,6 +21,7 @@ pub mod limit_masks;
 pub mod local;
 pub mod loop_scheme;
 pub mod obj_cage;
+mod regular_face;
 pub mod regular_patch;
 pub mod topology;
 
@@ -293,7 +294,7 @@ impl SubdivisionSurface {
         };
         let ring = local::one_ring_faces(topo, face);
         let (sub, _) = local::sub_cage(cage, topo, &ring);
-        evaluate_local(sub, 0, u, v, scheme, true)
+        evaluate_local(sub, 0, u, v, scheme, Some(regular_face::regular))
     }
 }
 
