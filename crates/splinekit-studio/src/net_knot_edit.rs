@@ -24,6 +24,9 @@ pub const GRID: usize = 64;
 /// One surface sample: its parameters (u, v) and world point (z = 0 for plane nets).
 type Sample = ((f64, f64), [f64; 3]);
 
+/// A sample's pixel position and normalised depth; `None` behind the eye.
+type OnScreen = Option<([f64; 2], f64)>;
+
 /// `n` + 1 × `n` + 1 samples over the surface's domain, `grid[i][j]` at the i-th u and j-th v.
 pub fn surface_samples(shape: &ShapeDocument, n: usize) -> Result<Vec<Vec<Sample>>, String> {
     struct Grid(usize);
@@ -68,7 +71,7 @@ fn barycentric(p: [[f64; 2]; 3], m: [f64; 2]) -> Option<[f64; 3]> {
 /// The parameters (u, v) of the front-most point of the sampled surface under `mouse`
 /// (view pixels); `None` off the surface.
 pub fn parameters_at(grid: &[Vec<Sample>], projector: &Projector, mouse: [f64; 2]) -> Option<(f64, f64)> {
-    let projected: Vec<Vec<Option<([f64; 2], f64)>>> =
+    let projected: Vec<Vec<OnScreen>> =
         grid.iter().map(|row| row.iter().map(|&(_, p)| projector.project(p)).collect()).collect();
     let mut best: Option<(f64, (f64, f64))> = None;
     for i in 0..grid.len().saturating_sub(1) {

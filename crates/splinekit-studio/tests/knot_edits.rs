@@ -94,7 +94,10 @@ const NET: &str = r#"{"type": "scene", "objects": [{"shape": {"type": "bspline_s
                        [[2, 0, 0], [2, 1, 0.5], [2, 2, 0.5], [2, 3, 0]]]}, "control_net": true}],
     "size": [600, 600]}"#;
 
-fn net_samples(studio: &Studio) -> Vec<Vec<((f64, f64), [f64; 3])>> {
+/// Rows of ((u, v), world point) samples.
+type Grid = Vec<Vec<((f64, f64), [f64; 3])>>;
+
+fn net_samples(studio: &Studio) -> Grid {
     splinekit_studio::net_knot_edit::surface_samples(&studio.scene.objects[0].shape, 40).expect("samples")
 }
 
