@@ -19,6 +19,7 @@ pub mod json;
 pub mod output_file;
 pub mod points;
 pub mod refine;
+pub mod refine_net;
 pub mod registry;
 pub mod scenes;
 pub mod surfaces;

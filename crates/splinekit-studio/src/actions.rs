@@ -52,7 +52,8 @@ pub enum Action {
     SelectAll,
     /// Move the selection along world axis `.0` by `.1` snapping steps.
     Nudge(usize, i32),
-    /// The next click on the selected curve inserts a knot there.
+    /// The next click on the selected curve inserts a knot there; on a spline surface a
+    /// u-knot (Shift + click: a v-knot) there.
     InsertKnot,
     /// The next click on the selected curve removes the knot nearest it (within the
     /// tolerance).
@@ -191,7 +192,8 @@ pub const ACTIONS: &[ActionSpec] = &[
     ActionSpec {
         action: Action::InsertKnot,
         label: "Insert knot",
-        help: "click on the selected B-spline, NURBS or Bézier curve: a knot there (the curve does not change)",
+        help: "click on the selected B-spline, NURBS or Bézier curve: a knot there; on such a surface: a u-knot \
+               (Shift + click: a v-knot) along the isocurve through the click (the shape does not change)",
         keys: &[(NONE, Key::K)],
         menu: Some(Menu::Edit),
         panel: true,

@@ -5,6 +5,7 @@
 
 use std::path::PathBuf;
 
+use splinekit::surface::iso_curve::Direction;
 use splinekit_render::{LineItem, PointItem, RenderScene, compose_with};
 use splinekit_scene::ShapeDocument;
 use splinekit_scene::scenes::SceneDocument;
@@ -21,6 +22,7 @@ use crate::history::History;
 use crate::knot_edit::{self, KnotTool};
 use crate::live_surfaces::LiveSurfaces;
 use crate::live_view::{self, Changes, KeptPolyline, Lattice};
+use crate::net_knot_edit;
 use crate::selection::{GroupMove, GroupStart, Selection, in_box};
 use crate::snapping::Snapping;
 use crate::view_camera::{Projector, StandardView, ViewCamera};
@@ -261,7 +263,9 @@ impl Studio {
         let object = self.selected_object.ok_or("select a B-spline, NURBS or Bézier curve first")?;
         match &self.scene.objects[object].shape {
             ShapeDocument::Curve(_) => Ok(object),
-            ShapeDocument::Surface(_) => Err("knot edits from the window work on curves".into()),
+            ShapeDocument::Surface(_) => Err("knot removal and degree elevation work on curves; on B-spline, NURBS \
+                 and Bézier surfaces the window inserts knots (K + click)"
+                .into()),
         }
     }
 
@@ -277,8 +281,25 @@ impl Studio {
         }
     }
 
-    /// Arms a knot tool: the next click on the selected curve uses it.
+    /// The selected object when it is a spline net (B-spline, NURBS or Bézier surface):
+    /// knot insertion works on it.
+    fn net_object(&self) -> Option<usize> {
+        let object = self.selected_object?;
+        match &self.scene.objects[object].shape {
+            ShapeDocument::Surface(s) if s.spline().is_some() => Some(object),
+            _ => None,
+        }
+    }
+
+    /// Arms a knot tool: the next click on the selected curve (or, inserting, spline
+    /// surface) uses it.
     fn arm(&mut self, tool: KnotTool) {
+        if tool == KnotTool::Insert && self.net_object().is_some() {
+            self.knot_tool = Some(tool);
+            self.message =
+                Some("click on the surface: a u-knot there (Shift + click: a v-knot; Escape: cancel)".into());
+            return;
+        }
         match self.curve_object() {
             Ok(_) => {
                 self.knot_tool = Some(tool);
@@ -291,9 +312,42 @@ impl Studio {
         }
     }
 
+    /// A click at `mouse` on the selected spline surface with the insert tool armed: a
+    /// u-knot at the clicked u (with `shift`, a v-knot at the clicked v), one undo step; a
+    /// click off the surface leaves the tool armed.
+    fn net_knot_click(&mut self, object: usize, projector: &Projector, mouse: [f64; 2], shift: bool) {
+        let shape = &self.scene.objects[object].shape;
+        let at = net_knot_edit::surface_samples(shape, net_knot_edit::GRID)
+            .map(|grid| net_knot_edit::parameters_at(&grid, projector, mouse));
+        let (u, v) = match at {
+            Ok(Some(uv)) => uv,
+            Ok(None) => {
+                self.message = Some("click on the surface itself (Escape: cancel)".into());
+                return;
+            }
+            Err(e) => {
+                self.message = Some(e);
+                return;
+            }
+        };
+        let edit = if shift {
+            net_knot_edit::insert(shape, object, Direction::V, v)
+        } else {
+            net_knot_edit::insert(shape, object, Direction::U, u)
+        };
+        self.knot_tool = None;
+        self.apply_or_say(edit);
+    }
+
     /// A click at `mouse` with a knot tool armed: the tool's edit at the clicked parameter
-    /// of the selected curve (one undo step); a click off the curve leaves the tool armed.
-    pub fn knot_click(&mut self, tool: KnotTool, projector: &Projector, mouse: [f64; 2]) {
+    /// of the selected curve, or (inserting) at the clicked u of the selected spline
+    /// surface (with `shift`: its v); one undo step. A click off the shape leaves the tool
+    /// armed.
+    pub fn knot_click(&mut self, tool: KnotTool, projector: &Projector, mouse: [f64; 2], shift: bool) {
+        if let (KnotTool::Insert, Some(object)) = (tool, self.net_object()) {
+            self.net_knot_click(object, projector, mouse, shift);
+            return;
+        }
         let object = match self.curve_object() {
             Ok(o) => o,
             Err(e) => {

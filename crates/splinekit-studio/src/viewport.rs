@@ -140,7 +140,7 @@ fn mouse(
     }
     if response.clicked() {
         match (studio.knot_tool, cursor) {
-            (Some(tool), Some(c)) => studio.knot_click(tool, projector, c),
+            (Some(tool), Some(c)) => studio.knot_click(tool, projector, c, shift),
             _ => {
                 let picked = cursor.and_then(|c| studio.pick(projector, c));
                 studio.click(picked, shift);

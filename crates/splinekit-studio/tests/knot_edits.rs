@@ -50,11 +50,11 @@ fn the_panel_arms_the_tool_and_a_click_on_the_curve_inserts_a_knot_there() {
     assert_eq!(h.state().knot_tool, Some(KnotTool::Insert));
     let studio = h.state_mut();
     // A click off the curve keeps the tool; one on the curve at t ≈ 1.4 inserts there.
-    studio.knot_click(KnotTool::Insert, &projector, [1.0, 1.0]);
+    studio.knot_click(KnotTool::Insert, &projector, [1.0, 1.0], false);
     assert_eq!(shape(studio)["knots"].as_array().map(Vec::len), Some(7));
     let (t, p) = before[210];
     let (px, _) = projector.project(p).expect("in view");
-    studio.knot_click(KnotTool::Insert, &projector, px);
+    studio.knot_click(KnotTool::Insert, &projector, px, false);
     let knots: Vec<f64> = serde_json::from_value(shape(studio)["knots"].clone()).expect("knots");
     assert_eq!(knots.len(), 8);
     assert!(knots.iter().any(|k| (k - t).abs() < 0.01), "{knots:?} has {t}");
@@ -85,4 +85,70 @@ fn a_w_drag_changes_one_weight_and_the_panel_shows_it() {
     let mut h = Harness::new_ui_state(|ui, s: &mut Studio| properties_panel(ui, s), studio);
     h.run();
     assert!(h.query_by_label("weight").is_some());
+}
+
+const NET: &str = r#"{"type": "scene", "objects": [{"shape": {"type": "bspline_surface",
+    "degree_u": 2, "degree_v": 3, "knots_u": [0, 0, 0, 1, 1, 1], "knots_v": [0, 0, 0, 0, 1, 1, 1, 1],
+    "control_points": [[[0, 0, 0], [0, 1, 0.5], [0, 2, 0.5], [0, 3, 0]],
+                       [[1, 0, 0.5], [1, 1, 2], [1, 2, 1.5], [1, 3, 0.5]],
+                       [[2, 0, 0], [2, 1, 0.5], [2, 2, 0.5], [2, 3, 0]]]}, "control_net": true}],
+    "size": [600, 600]}"#;
+
+/// Rows of ((u, v), world point) samples.
+type Grid = Vec<Vec<((f64, f64), [f64; 3])>>;
+
+fn net_samples(studio: &Studio) -> Grid {
+    splinekit_studio::net_knot_edit::surface_samples(&studio.scene.objects[0].shape, 40).expect("samples")
+}
+
+fn knots(studio: &Studio, field: &str) -> Vec<f64> {
+    serde_json::from_value(shape(studio)[field].clone()).expect("knots")
+}
+
+#[test]
+fn on_a_spline_surface_a_click_inserts_a_u_knot_and_a_shift_click_a_v_knot() {
+    let mut studio = Studio::new(splinekit_studio::document::parse(NET).expect("valid"), None);
+    studio.selected_object = Some(0);
+    let rs: RenderScene = studio.render_scene((600, 600), false).expect("composes");
+    let projector = Projector::new(&rs, (600, 600));
+    let before = net_samples(&studio);
+    let mut h = Harness::new_ui_state(
+        |ui, s: &mut Studio| {
+            properties_panel(ui, s);
+            s.run_commands();
+        },
+        studio,
+    );
+    h.run();
+    assert!(h.query_by_label("Remove knot").is_none(), "a surface offers insertion only");
+    h.get_by_label("Insert knot").click();
+    h.run();
+    assert_eq!(h.state().knot_tool, Some(KnotTool::Insert));
+    let studio = h.state_mut();
+    // Sample (14, 25) of the 40 × 40 grid: (u, v) = (0.35, 0.625).
+    let ((u, v), p) = before[14][25];
+    let (px, _) = projector.project(p).expect("in view");
+    studio.knot_click(KnotTool::Insert, &projector, px, false);
+    let ku = knots(studio, "knots_u");
+    assert_eq!(ku.len(), 7, "{ku:?}");
+    assert!(ku.iter().any(|k| (k - u).abs() < 0.01), "{ku:?} has {u}");
+    assert_eq!(knots(studio, "knots_v").len(), 8, "v untouched");
+    let same = |studio: &Studio| {
+        for (ra, rb) in before.iter().zip(net_samples(studio)) {
+            for ((_, a), (_, b)) in ra.iter().zip(rb) {
+                assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-12), "the surface is unchanged");
+            }
+        }
+    };
+    same(studio);
+    studio.run_action(Action::InsertKnot);
+    studio.knot_click(KnotTool::Insert, &projector, px, true);
+    let kv = knots(studio, "knots_v");
+    assert_eq!(kv.len(), 9, "{kv:?}");
+    assert!(kv.iter().any(|k| (k - v).abs() < 0.01), "{kv:?} has {v}");
+    same(studio);
+    studio.undo();
+    assert_eq!((knots(studio, "knots_u").len(), knots(studio, "knots_v").len()), (7, 8), "one undo step each");
+    studio.run_action(Action::ElevateDegree);
+    assert!(studio.message.as_deref().is_some_and(|m| m.contains("curves")), "{:?}", studio.message);
 }

@@ -74,14 +74,15 @@ pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
         Editors::SplineCurve => {
             count(ui, studio, object, "/shape/degree", "degree", 3);
             knot_style(ui, studio, object, CURVE, "knots");
-            knot_edits(ui, studio);
+            knot_edits(ui, studio, false);
         }
-        Editors::BezierCurve => knot_edits(ui, studio),
+        Editors::BezierCurve => knot_edits(ui, studio, false),
         Editors::SplineNet => {
             count(ui, studio, object, "/shape/degree_u", "degree u", 3);
             count(ui, studio, object, "/shape/degree_v", "degree v", 3);
             knot_style(ui, studio, object, NET_U, "knots u");
             knot_style(ui, studio, object, NET_V, "knots v");
+            knot_edits(ui, studio, true);
         }
         Editors::BlendingCurve => blending_curve(ui, studio, object),
         Editors::BlendingSurface => blending_surface(ui, studio, object),
@@ -91,10 +92,11 @@ pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
 }
 
 /// The registry's panel actions (insert and remove a knot, elevate the degree) as
-/// buttons, and the tolerance of a removal.
-fn knot_edits(ui: &mut egui::Ui, studio: &mut Studio) {
+/// buttons, and the tolerance of a removal; on a spline `surface` only knot insertion
+/// (a click inserts a u-knot, Shift + click a v-knot).
+fn knot_edits(ui: &mut egui::Ui, studio: &mut Studio, surface: bool) {
     ui.horizontal_wrapped(|ui| {
-        for s in ACTIONS.iter().filter(|s| s.panel) {
+        for s in ACTIONS.iter().filter(|s| s.panel && (!surface || s.action == Action::InsertKnot)) {
             let armed = match s.action {
                 Action::InsertKnot => studio.knot_tool == Some(KnotTool::Insert),
                 Action::RemoveKnot => studio.knot_tool == Some(KnotTool::Remove),
@@ -107,6 +109,10 @@ fn knot_edits(ui: &mut egui::Ui, studio: &mut Studio) {
             }
         }
     });
+    if surface {
+        ui.label("Insert knot, then click: a u-knot (Shift + click: a v-knot)");
+        return;
+    }
     ui.horizontal(|ui| {
         let name = ui.label("removal tolerance");
         ui.add(egui::DragValue::new(&mut studio.knot_tolerance).range(0.0..=1e6).speed(1e-4).max_decimals(6))
