@@ -303,7 +303,9 @@ fn bad_requests_are_refused() {
         let e = refine_patches(&s, r).unwrap_err().to_string();
         assert!(e.contains(field), "{e}");
     }
-    let tri = Cage::new(vec![p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0)], &[vec![0, 1, 2]]);
-    let e = limit_patches(&SubdivisionSurface::new(tri, Scheme::Loop, false).unwrap(), 3).unwrap_err().to_string();
-    assert!(e.contains("scheme") && e.contains("loop"), "{e}");
+    let e =
+        limit_patches(&SubdivisionSurface::new(obj("cube.obj").cage().clone(), Scheme::Bilinear, false).unwrap(), 3)
+            .unwrap_err()
+            .to_string();
+    assert!(e.contains("scheme") && e.contains("bilinear"), "{e}");
 }
