@@ -111,11 +111,14 @@ fn loop_surfaces_export_within_the_tolerance() {
     }
 }
 
-/// The bilinear limit is refused, naming the scheme.
+/// The bilinear limit is its faces: the cube as 6 exact bilinear patches.
 #[test]
-fn bilinear_is_refused() {
+fn bilinear_exports_its_faces() {
     let mut doc = SubdivisionSurfaceDoc::cube();
     doc.scheme = SchemeDoc::Bilinear;
-    let err = export_document(&shape(doc), "x", 1e-3, &HeaderInfo::default()).unwrap_err().to_string();
-    assert!(err.contains("scheme") && err.contains("bilinear"), "{err}");
+    let (patches, depth) = subdivision_patches(&doc, 1e-6).unwrap();
+    assert_eq!((patches.bilinear.len(), patches.max_deviation, depth), (6, 0.0, 0));
+    let (text, exported) = export_document(&shape(doc), "x", 1e-6, &HeaderInfo::default()).unwrap();
+    assert_eq!(exported.len(), 6);
+    assert_eq!(text.matches("B_SPLINE_SURFACE_WITH_KNOTS(").count(), 6);
 }

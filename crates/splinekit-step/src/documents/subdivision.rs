@@ -3,14 +3,15 @@
 //! quads, exact (4, 4) patches with one collapsed edge on regular Loop triangles, and
 //! around extraordinary vertices (and creases, and Loop boundaries) faces refined locally
 //! until regular, the last face at each extraordinary vertex a bilinear patch through limit
-//! points (a flat triangle, one edge collapsed, for Loop). Each irregular face takes the fewest levels (1 to [`MAX_DEPTH`]) whose stand-in
+//! points (a flat triangle, one edge collapsed, for Loop). The bilinear scheme's limit is
+//! its faces, written as bilinear patches. Each irregular face takes the fewest levels (1 to [`MAX_DEPTH`]) whose stand-in
 //! is within the tolerance (relative to the cage's bounding-box diagonal) of the exact limit
 //! on a 9 × 9 grid of its parameters; a tolerance that 30 levels do not reach is refused
 //! with the one they do.
 
 use splinekit::Point;
+use splinekit::subdivision::surface::SubdivisionSurface;
 use splinekit::subdivision::surface::bezier_patches::{LimitPatches, limit_patches_within};
-use splinekit::subdivision::surface::{Scheme, SubdivisionSurface};
 use splinekit_scene::surfaces::{BezierSurfaceDoc, SubdivisionSurfaceDoc};
 use splinekit_scene::{SceneDocument, SceneObject, SceneOrShape, ShapeDocument, SurfaceDocument};
 
@@ -56,15 +57,10 @@ pub fn subdivision_patches(doc: &SubdivisionSurfaceDoc, relative_tolerance: f64)
 }
 
 /// The patches of a Catmull–Clark or Loop surface within `relative_tolerance` of its
-/// cage's bounding-box diagonal, and the depth (the deepest level of a stand-in); refuses
-/// the bilinear scheme and a tolerance that [`MAX_DEPTH`] levels do not reach, naming the
-/// one they do.
+/// cage's bounding-box diagonal (the bilinear scheme: its faces, exactly), and the depth
+/// (the deepest level of a stand-in); refuses a tolerance that [`MAX_DEPTH`] levels do
+/// not reach, naming the one they do.
 pub fn surface_patches(s: &SubdivisionSurface, relative_tolerance: f64) -> Result<(LimitPatches, usize)> {
-    if s.scheme() == Scheme::Bilinear {
-        return Err(StepError::plain(
-            "scheme: STEP export of subdivision surfaces is for catmull-clark and loop, not bilinear",
-        ));
-    }
     if !(relative_tolerance > 0.0 && relative_tolerance.is_finite()) {
         return Err(StepError::plain(format!("tolerance: must be finite and > 0, got {relative_tolerance}")));
     }
@@ -82,7 +78,7 @@ pub fn surface_patches(s: &SubdivisionSurface, relative_tolerance: f64) -> Resul
         let unit = 10f64.powf(relative.log10().floor() - 1.0);
         let reachable = (relative / unit).ceil() * unit;
         return Err(StepError::plain(format!(
-            "tolerance: the patches at extraordinary vertices, creases and boundaries come within {reached:.3e} of the limit after {MAX_DEPTH} levels ({relative:.2e} of the cage's size), not {tolerance:.3e} (relative {relative_tolerance:.1e}): ask for a relative tolerance of at least {reachable:.1e}"
+            "tolerance: the patches at extraordinary vertices come within {reached:.3e} of the limit after {MAX_DEPTH} levels ({relative:.2e} of the cage's size), not {tolerance:.3e} (relative {relative_tolerance:.1e}): ask for a relative tolerance of at least {reachable:.1e}"
         )));
     }
     let depth = patches.depth();

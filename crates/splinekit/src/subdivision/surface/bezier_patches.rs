@@ -78,7 +78,7 @@ pub struct LimitPatches {
     /// regular triangle in the atlas chart, its edge t = 1 collapsed onto the corner c₂
     /// (see [`super::loop_bezier`]).
     pub quartic: Vec<QuarticNet>,
-    /// Bilinear patches through limit points.
+    /// Bilinear patches through limit points (the faces themselves for the bilinear scheme).
     pub bilinear: Vec<[Point<3>; 4]>,
     /// The level of each bilinear patch (its face is 2⁻ˡᵉᵛᵉˡ of a cage face).
     pub levels: Vec<usize>,
@@ -139,14 +139,9 @@ pub fn limit_patches_within(surface: &SubdivisionSurface, tolerance: f64) -> Res
     refine_patches(surface, Refinement::Tolerance { tolerance, max_depth: MAX_DEPTH })
 }
 
-/// The patches of a Catmull–Clark or Loop surface under `refinement`.
+/// The patches of a Catmull–Clark or Loop surface under `refinement` (the bilinear
+/// scheme: its exact bilinear faces, whatever the refinement).
 pub fn refine_patches(surface: &SubdivisionSurface, refinement: Refinement) -> Result<LimitPatches> {
-    if surface.scheme() == Scheme::Bilinear {
-        return Err(Error::invalid(
-            "scheme",
-            "limit patches are for catmull-clark (bicubic) and loop (quartic), not bilinear",
-        ));
-    }
     let max_depth = match refinement {
         Refinement::Depth(d) => d,
         Refinement::Tolerance { tolerance, max_depth } => {
@@ -159,12 +154,37 @@ pub fn refine_patches(surface: &SubdivisionSurface, refinement: Refinement) -> R
     if !(1..=MAX_DEPTH).contains(&max_depth) {
         return Err(Error::invalid("depth", format!("must be 1 to {MAX_DEPTH} levels, got {max_depth}")));
     }
+    if surface.scheme() == Scheme::Bilinear {
+        return Ok(bilinear_faces(surface));
+    }
     let mut out = LimitPatches::default();
     let zero = Point::<3>::zeros();
     for f in 0..surface.cage().face_count() as u32 {
         refine_face(surface, f, 0, zero, refinement, max_depth, &mut out)?;
     }
     Ok(out)
+}
+
+/// The bilinear scheme's limit, exactly: each quad is the bilinear patch of its corners,
+/// each n-gon (n ≠ 4) the n quads of one step (corner, edge midpoint, centroid, edge
+/// midpoint), all in [`LimitPatches::bilinear`] at level 0 with deviation 0.
+fn bilinear_faces(surface: &SubdivisionSurface) -> LimitPatches {
+    let (cage, mut out) = (surface.cage(), LimitPatches::default());
+    for f in 0..cage.face_count() {
+        let c: Vec<Point<3>> = cage.face(f).iter().map(|&v| cage.vertices[v as usize]).collect();
+        let n = c.len();
+        if n == 4 {
+            out.bilinear.push([c[0], c[1], c[2], c[3]]);
+        } else {
+            let centroid = c.iter().fold(Point::<3>::zeros(), |a, p| a + p) / n as f64;
+            for k in 0..n {
+                let (prev, next) = (c[(k + n - 1) % n], c[(k + 1) % n]);
+                out.bilinear.push([c[k], (c[k] + next) * 0.5, centroid, (prev + c[k]) * 0.5]);
+            }
+        }
+    }
+    out.levels = vec![0; out.bilinear.len()];
+    out
 }
 
 /// Pushes the exact patch of `face` (moved by `offset`) if it is regular.
