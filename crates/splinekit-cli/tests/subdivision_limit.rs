@@ -238,7 +238,8 @@ fn step_export_writes_bicubic_patches() {
 
 /// `--scheme loop --triangulate -o OUT.step --tolerance 1e-4`: the fan-split cube as
 /// (4, 4) patches with one collapsed edge and flat triangles (degree 1) within 10⁻⁴ of
-/// the cage's size, as many as reported (the counts of splinekit-step's test of `convert`).
+/// the cage's size, as many as reported (the counts of splinekit-step's test of `convert`);
+/// `--scheme bilinear` writes the six faces.
 #[test]
 fn step_export_of_loop_surfaces() {
     let dir = temp_dir("step-loop");
@@ -264,6 +265,11 @@ fn step_export_of_loop_surfaces() {
     assert!(o.stderr.contains("456 exact quartic patches, 24 bilinear stand-ins (down to level 7)"), "{}", o.stderr);
     let deviation: f64 = o.stderr.split("within ").nth(1).unwrap().split(' ').next().unwrap().parse().unwrap();
     assert!(deviation <= 1e-4 * 2.0 * 3f64.sqrt(), "{}", o.stderr);
+    // The bilinear scheme: its six faces.
+    let o = run(&["subdivide-surface", "-", "--scheme", "bilinear", "-o", out.to_str().unwrap()], &cube());
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert!(o.stderr.contains("6 exact bilinear patches"), "{}", o.stderr);
+    assert_eq!(degrees(&std::fs::read_to_string(&out).unwrap(), "1"), 6);
 }
 
 /// STEP `B_SPLINE_SURFACE_WITH_KNOTS` entities of degree `d` in both directions.
