@@ -276,8 +276,8 @@ fn bilinear_at(q: &[Point<3>; 4], u: f64, v: f64) -> Point<3> {
 
 /// An exact patch of a child: bicubic B-spline grid or quartic Bézier net.
 enum ChildPatch {
-    Bicubic([[Point<3>; 4]; 4]),
-    Quartic(QuarticNet),
+    Bicubic(Box<[[Point<3>; 4]; 4]>),
+    Quartic(Box<QuarticNet>),
 }
 
 /// max |B(s, t) − S(s, t)| over the sample grid (without its corners) of stand-in `q` of a
@@ -291,9 +291,9 @@ fn deviation(children: &SubdivisionSurface, q: &[Point<3>; 4]) -> Result<f64> {
     let patches: Vec<Option<ChildPatch>> = (0..4)
         .map(|k| {
             if is_loop {
-                loop_bezier_patch(cage, topo, k).map(ChildPatch::Quartic)
+                loop_bezier_patch(cage, topo, k).map(|net| ChildPatch::Quartic(Box::new(net)))
             } else {
-                catmull_clark_grid(cage, topo, k).map(ChildPatch::Bicubic)
+                catmull_clark_grid(cage, topo, k).map(|g| ChildPatch::Bicubic(Box::new(g)))
             }
         })
         .collect();
