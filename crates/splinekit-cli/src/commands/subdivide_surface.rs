@@ -146,7 +146,7 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
                 bail!("--at: Doo–Sabin has no exact evaluation here; use catmull-clark, loop or bilinear");
             }
             if ext == "step" {
-                bail!("-o: STEP export is for catmull-clark and loop, not doo-sabin");
+                bail!("-o: STEP export is for catmull-clark, loop and bilinear, not doo-sabin");
             }
             if args.limit {
                 bail!("--limit: Doo–Sabin has no limit masks here; use catmull-clark, loop or bilinear");
