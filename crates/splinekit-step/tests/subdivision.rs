@@ -1,4 +1,5 @@
-//! `subdivision_surface` documents in STEP: exact bicubic patches on regular faces, bilinear
+//! `subdivision_surface` documents in STEP: exact bicubic (Catmull–Clark) and (4, 4)
+//! (Loop) patches on regular faces, bilinear
 //! stand-ins within the tolerance around extraordinary vertices, the faces there refined
 //! locally as deep as the tolerance needs (up to 30 levels).
 
@@ -78,11 +79,46 @@ fn an_unreachable_tolerance_names_the_reachable_one() {
     }
 }
 
-/// Loop and bilinear limits are refused, naming the scheme.
+/// The cube's cage under Loop (its faces split into fans: corners of valence 3 to 6) at
+/// relative 10⁻⁴ and 10⁻⁶: the fewest levels meeting the tolerance, one level less not;
+/// at 10⁻⁴ as one STEP item per patch, the exact (4, 4) patches with a collapsed edge
+/// and the flat triangles written without loss.
 #[test]
-fn only_catmull_clark_exports() {
+fn loop_surfaces_export_within_the_tolerance() {
+    let size = 2.0 * 3f64.sqrt();
+    let mut doc = SubdivisionSurfaceDoc::cube();
+    doc.scheme = SchemeDoc::Loop;
+    doc.triangulate = true;
+    let s = doc.subdivision_surface().unwrap();
+    for relative in [1e-4, 1e-6] {
+        let (patches, depth) = subdivision_patches(&doc, relative).unwrap();
+        assert!(patches.max_deviation <= relative * size && !patches.bilinear.is_empty());
+        assert!(patches.bicubic.is_empty() && !patches.quartic.is_empty());
+        assert!(limit_patches(&s, depth - 1).unwrap().max_deviation > relative * size, "depth {depth}");
+        if relative == 1e-4 {
+            let (text, exported) =
+                export_document(&shape(doc.clone()), "loop cube", relative, &HeaderInfo::default()).unwrap();
+            assert_eq!(exported.len(), patches.quartic.len() + patches.bilinear.len());
+            assert!(exported.iter().all(|e| e.max_deviation == 0.0));
+            assert!(text.matches("B_SPLINE_SURFACE").count() >= exported.len());
+        }
+        eprintln!(
+            "loop cube within {relative:e}: depth {depth}, {} exact + {} stand-ins, deviation {:.2e}",
+            patches.quartic.len(),
+            patches.bilinear.len(),
+            patches.max_deviation / size
+        );
+    }
+}
+
+/// The bilinear limit is its faces: the cube as 6 exact bilinear patches.
+#[test]
+fn bilinear_exports_its_faces() {
     let mut doc = SubdivisionSurfaceDoc::cube();
     doc.scheme = SchemeDoc::Bilinear;
-    let err = export_document(&shape(doc), "x", 1e-3, &HeaderInfo::default()).unwrap_err().to_string();
-    assert!(err.contains("scheme") && err.contains("bilinear"), "{err}");
+    let (patches, depth) = subdivision_patches(&doc, 1e-6).unwrap();
+    assert_eq!((patches.bilinear.len(), patches.max_deviation, depth), (6, 0.0, 0));
+    let (text, exported) = export_document(&shape(doc), "x", 1e-6, &HeaderInfo::default()).unwrap();
+    assert_eq!(exported.len(), 6);
+    assert_eq!(text.matches("B_SPLINE_SURFACE_WITH_KNOTS(").count(), 6);
 }

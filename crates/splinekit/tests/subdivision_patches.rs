@@ -303,7 +303,9 @@ fn bad_requests_are_refused() {
         let e = refine_patches(&s, r).unwrap_err().to_string();
         assert!(e.contains(field), "{e}");
     }
-    let tri = Cage::new(vec![p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0)], &[vec![0, 1, 2]]);
-    let e = limit_patches(&SubdivisionSurface::new(tri, Scheme::Loop, false).unwrap(), 3).unwrap_err().to_string();
-    assert!(e.contains("scheme") && e.contains("loop"), "{e}");
+    // The bilinear scheme's limit is its faces, exactly.
+    let c = s.cage();
+    let p = limit_patches(&SubdivisionSurface::new(c.clone(), Scheme::Bilinear, false).unwrap(), 3).unwrap();
+    assert_eq!((p.bilinear.len(), p.max_deviation, p.depth()), (6, 0.0, 0));
+    assert!((0..6).all(|f| c.face(f).iter().zip(&p.bilinear[f]).all(|(&v, q)| c.vertices[v as usize] == *q)));
 }

@@ -65,10 +65,11 @@ pub struct SubdivideSurfaceArgs {
     #[arg(long)]
     pub tolerance: Option<f64>,
     /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals),
-    /// .step (Catmull–Clark limit surface: exact bicubic patches on regular faces, faces at
-    /// extraordinary vertices refined locally --steps times (up to 30) or to --tolerance,
-    /// the rest bilinear through limit points); with --at, the JSON file (default standard
-    /// output).
+    /// .step (Catmull–Clark or Loop limit surface: exact bicubic, or (4, 4) with one edge
+    /// collapsed, patches on regular faces, faces at extraordinary vertices (and creases,
+    /// Loop boundaries) refined locally --steps times (up to 30) or to --tolerance, the
+    /// rest bilinear, or flat triangles, through limit points; bilinear: its faces); with
+    /// --at, the JSON file (default standard output).
     #[arg(short, long)]
     pub output: Option<String>,
 }
@@ -145,7 +146,7 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
                 bail!("--at: Doo–Sabin has no exact evaluation here; use catmull-clark, loop or bilinear");
             }
             if ext == "step" {
-                bail!("-o: STEP export is for catmull-clark (exact bicubic patches), not doo-sabin");
+                bail!("-o: STEP export is for catmull-clark, loop and bilinear, not doo-sabin");
             }
             if args.limit {
                 bail!("--limit: Doo–Sabin has no limit masks here; use catmull-clark, loop or bilinear");
@@ -210,9 +211,6 @@ fn write_step(
 ) -> Result<()> {
     use splinekit::subdivision::surface::bezier_patches::limit_patches;
     use splinekit_step::documents::subdivision::{patches_scene, surface_patches};
-    if surface.scheme() != KernelScheme::CatmullClark {
-        bail!("-o: STEP export is for catmull-clark (exact bicubic patches), not {}", surface.scheme().name());
-    }
     let patches = match tolerance {
         Some(t) => {
             surface_patches(surface, t)
@@ -236,9 +234,16 @@ fn write_step(
     let (text, _) =
         splinekit_step::documents::export_document(&splinekit_scene::SceneOrShape::Scene(doc), name, 1e-6, &header)
             .map_err(|e| anyhow!("{path}: {e}"))?;
+    let exact = match surface.scheme() {
+        KernelScheme::Loop => format!("{} exact quartic patches", patches.quartic.len()),
+        KernelScheme::Bilinear => {
+            eprintln!("{} exact bilinear patches (the limit is the faces)", patches.bilinear.len());
+            return crate::output::write_bytes(text.as_bytes(), Some(path));
+        }
+        _ => format!("{} exact bicubic patches", patches.bicubic.len()),
+    };
     eprintln!(
-        "{} exact bicubic patches, {} bilinear stand-ins (down to level {}) within {:.3e} of the limit",
-        patches.bicubic.len(),
+        "{exact}, {} bilinear stand-ins (down to level {}) within {:.3e} of the limit",
         patches.bilinear.len(),
         patches.depth(),
         patches.max_deviation

@@ -1,15 +1,17 @@
-//! `subdivision_surface` documents in STEP: the Catmull–Clark limit surface as one Bézier
-//! surface per patch ([`limit_patches_within`]): exact bicubic patches on regular faces, and
-//! around extraordinary vertices (and semi-sharp creases) faces refined locally until
-//! regular, the last face at each extraordinary vertex a bilinear patch through limit
-//! points. Each irregular face takes the fewest levels (1 to [`MAX_DEPTH`]) whose stand-in
+//! `subdivision_surface` documents in STEP: the Catmull–Clark or Loop limit surface as one
+//! Bézier surface per patch ([`limit_patches_within`]): exact bicubic patches on regular
+//! quads, exact (4, 4) patches with one collapsed edge on regular Loop triangles, and
+//! around extraordinary vertices (and creases, and Loop boundaries) faces refined locally
+//! until regular, the last face at each extraordinary vertex a bilinear patch through limit
+//! points (a flat triangle, one edge collapsed, for Loop). The bilinear scheme's limit is
+//! its faces, written as bilinear patches. Each irregular face takes the fewest levels (1 to [`MAX_DEPTH`]) whose stand-in
 //! is within the tolerance (relative to the cage's bounding-box diagonal) of the exact limit
 //! on a 9 × 9 grid of its parameters; a tolerance that 30 levels do not reach is refused
 //! with the one they do.
 
 use splinekit::Point;
+use splinekit::subdivision::surface::SubdivisionSurface;
 use splinekit::subdivision::surface::bezier_patches::{LimitPatches, limit_patches_within};
-use splinekit::subdivision::surface::{Scheme, SubdivisionSurface};
 use splinekit_scene::surfaces::{BezierSurfaceDoc, SubdivisionSurfaceDoc};
 use splinekit_scene::{SceneDocument, SceneObject, SceneOrShape, ShapeDocument, SurfaceDocument};
 
@@ -20,13 +22,16 @@ use crate::error::{Result, StepError};
 /// 0.41 at valence 3).
 pub use splinekit::subdivision::surface::bezier_patches::MAX_DEPTH;
 
-/// The patches as `bezier_surface` documents (bicubic, then the bilinear stand-ins).
+/// The patches as `bezier_surface` documents (bicubic, quartic, then the bilinear stand-ins).
 pub fn patch_shapes(p: &LimitPatches) -> Vec<ShapeDocument> {
     let a = |q: &Point<3>| vec![q.x, q.y, q.z];
     let bezier =
         |control_points| ShapeDocument::Surface(SurfaceDocument::BezierSurface(BezierSurfaceDoc { control_points }));
-    let mut shapes = Vec::with_capacity(p.bicubic.len() + p.bilinear.len());
+    let mut shapes = Vec::with_capacity(p.bicubic.len() + p.quartic.len() + p.bilinear.len());
     for b in &p.bicubic {
+        shapes.push(bezier(b.iter().map(|row| row.iter().map(a).collect()).collect()));
+    }
+    for b in &p.quartic {
         shapes.push(bezier(b.iter().map(|row| row.iter().map(a).collect()).collect()));
     }
     for q in &p.bilinear {
@@ -51,16 +56,11 @@ pub fn subdivision_patches(doc: &SubdivisionSurfaceDoc, relative_tolerance: f64)
     surface_patches(&s, relative_tolerance)
 }
 
-/// The patches of a Catmull–Clark surface within `relative_tolerance` of its cage's
-/// bounding-box diagonal, and the depth (the deepest level of a stand-in); refuses other
-/// schemes and a tolerance that [`MAX_DEPTH`] levels do not reach, naming the one they do.
+/// The patches of a Catmull–Clark or Loop surface within `relative_tolerance` of its
+/// cage's bounding-box diagonal (the bilinear scheme: its faces, exactly), and the depth
+/// (the deepest level of a stand-in); refuses a tolerance that [`MAX_DEPTH`] levels do
+/// not reach, naming the one they do.
 pub fn surface_patches(s: &SubdivisionSurface, relative_tolerance: f64) -> Result<(LimitPatches, usize)> {
-    if s.scheme() != Scheme::CatmullClark {
-        return Err(StepError::plain(format!(
-            "scheme: STEP export of subdivision surfaces is for catmull-clark (exact bicubic patches), not {}",
-            s.scheme().name()
-        )));
-    }
     if !(relative_tolerance > 0.0 && relative_tolerance.is_finite()) {
         return Err(StepError::plain(format!("tolerance: must be finite and > 0, got {relative_tolerance}")));
     }

@@ -1,5 +1,17 @@
-//! The Catmull–Clark limit surface as polynomial patches (for STEP export).
+//! The Catmull–Clark and Loop limit surfaces as polynomial patches (for STEP export).
 //!
+//! Loop works the same way with triangles: a regular triangle (three smooth interior
+//! corners of valence 6) is its quartic box-spline patch written exactly as a Bézier
+//! patch of degree (4, 4) with one collapsed edge ([`super::loop_bezier`]); an irregular
+//! one has four children (one step of its 1-ring, [`super::loop_scheme::loop_step`]), of
+//! which only those at an extraordinary vertex, a crease or a boundary stay irregular; its
+//! stand-in is the flat triangle through the limit points of its corners, the bilinear
+//! patch (c₀, c₁, c₂, c₂), measured in the atlas chart (s, t) ↦ (u, v) = (s(1 − t), t).
+//! Loop boundaries and infinitely sharp creases never become regular box-spline patches,
+//! so their faces are stand-ins at every level; the deviation there falls by about ¼ a
+//! level (the crease curve is a cubic B-spline approximated by chords).
+//!
+//! Catmull–Clark:
 //! Where a quad and its 1-ring are regular (every corner smooth of valence 4, or a regular
 //! crease or boundary, see `regular_patch::catmull_clark_grid`), the limit surface on the
 //! quad is the uniform bicubic B-spline patch of its 4×4 control grid G, written exactly as
@@ -39,8 +51,10 @@
 //! differences keep their relative precision.
 
 use super::catmull_clark::catmull_clark_step;
-use super::limit_eval::quad_child;
+use super::limit_eval::{quad_child, triangle_child};
 use super::local::{one_ring_faces, sub_cage};
+use super::loop_bezier::{QuarticNet, loop_bezier_patch, quartic_at};
+use super::loop_scheme::loop_step;
 use super::regular_patch::{catmull_clark_grid, cubic_bspline_basis};
 use super::topology::Topology;
 use super::{Scheme, SubdivisionSurface};
@@ -58,9 +72,13 @@ const SAMPLES: usize = 9;
 /// faces at extraordinary vertices.
 #[derive(Debug, Default)]
 pub struct LimitPatches {
-    /// Exact bicubic Bézier patches.
+    /// Exact bicubic Bézier patches (Catmull–Clark).
     pub bicubic: Vec<[[Point<3>; 4]; 4]>,
-    /// Bilinear patches through limit points.
+    /// Exact Bézier patches of degree (4, 4) (Loop, `[i][j]` with i along s), each a
+    /// regular triangle in the atlas chart, its edge t = 1 collapsed onto the corner c₂
+    /// (see [`super::loop_bezier`]).
+    pub quartic: Vec<QuarticNet>,
+    /// Bilinear patches through limit points (the faces themselves for the bilinear scheme).
     pub bilinear: Vec<[Point<3>; 4]>,
     /// The level of each bilinear patch (its face is 2⁻ˡᵉᵛᵉˡ of a cage face).
     pub levels: Vec<usize>,
@@ -109,26 +127,21 @@ pub fn bezier_patch(g: &[[Point<3>; 4]; 4]) -> [[Point<3>; 4]; 4] {
     std::array::from_fn(|i| bezier_row([columns[0][i], columns[1][i], columns[2][i], columns[3][i]]))
 }
 
-/// The patches of a Catmull–Clark surface, irregular faces refined locally `depth`
+/// The patches of a Catmull–Clark or Loop surface, irregular faces refined locally `depth`
 /// (1 to [`MAX_DEPTH`]) times.
 pub fn limit_patches(surface: &SubdivisionSurface, depth: usize) -> Result<LimitPatches> {
     refine_patches(surface, Refinement::Depth(depth))
 }
 
-/// The patches of a Catmull–Clark surface, each irregular face refined locally until its
+/// The patches of a Catmull–Clark or Loop surface, each irregular face refined locally until its
 /// stand-in is within `tolerance` of the limit (at most [`MAX_DEPTH`] levels).
 pub fn limit_patches_within(surface: &SubdivisionSurface, tolerance: f64) -> Result<LimitPatches> {
     refine_patches(surface, Refinement::Tolerance { tolerance, max_depth: MAX_DEPTH })
 }
 
-/// The patches of a Catmull–Clark surface under `refinement`.
+/// The patches of a Catmull–Clark or Loop surface under `refinement` (the bilinear
+/// scheme: its exact bilinear faces, whatever the refinement).
 pub fn refine_patches(surface: &SubdivisionSurface, refinement: Refinement) -> Result<LimitPatches> {
-    if surface.scheme() != Scheme::CatmullClark {
-        return Err(Error::invalid(
-            "scheme",
-            format!("limit patches are for catmull-clark (bicubic), not {}", surface.scheme().name()),
-        ));
-    }
     let max_depth = match refinement {
         Refinement::Depth(d) => d,
         Refinement::Tolerance { tolerance, max_depth } => {
@@ -141,6 +154,9 @@ pub fn refine_patches(surface: &SubdivisionSurface, refinement: Refinement) -> R
     if !(1..=MAX_DEPTH).contains(&max_depth) {
         return Err(Error::invalid("depth", format!("must be 1 to {MAX_DEPTH} levels, got {max_depth}")));
     }
+    if surface.scheme() == Scheme::Bilinear {
+        return Ok(bilinear_faces(surface));
+    }
     let mut out = LimitPatches::default();
     let zero = Point::<3>::zeros();
     for f in 0..surface.cage().face_count() as u32 {
@@ -149,8 +165,45 @@ pub fn refine_patches(surface: &SubdivisionSurface, refinement: Refinement) -> R
     Ok(out)
 }
 
+/// The bilinear scheme's limit, exactly: each quad is the bilinear patch of its corners,
+/// each n-gon (n ≠ 4) the n quads of one step (corner, edge midpoint, centroid, edge
+/// midpoint), all in [`LimitPatches::bilinear`] at level 0 with deviation 0.
+fn bilinear_faces(surface: &SubdivisionSurface) -> LimitPatches {
+    let (cage, mut out) = (surface.cage(), LimitPatches::default());
+    for f in 0..cage.face_count() {
+        let c: Vec<Point<3>> = cage.face(f).iter().map(|&v| cage.vertices[v as usize]).collect();
+        let n = c.len();
+        if n == 4 {
+            out.bilinear.push([c[0], c[1], c[2], c[3]]);
+        } else {
+            let centroid = c.iter().fold(Point::<3>::zeros(), |a, p| a + p) / n as f64;
+            for k in 0..n {
+                let (prev, next) = (c[(k + n - 1) % n], c[(k + 1) % n]);
+                out.bilinear.push([c[k], (c[k] + next) * 0.5, centroid, (prev + c[k]) * 0.5]);
+            }
+        }
+    }
+    out.levels = vec![0; out.bilinear.len()];
+    out
+}
+
+/// Pushes the exact patch of `face` (moved by `offset`) if it is regular.
+fn push_exact(s: &SubdivisionSurface, face: u32, offset: Point<3>, out: &mut LimitPatches) -> bool {
+    let (cage, topo) = (s.cage(), s.topology());
+    if s.scheme() == Scheme::Loop {
+        if let Some(net) = loop_bezier_patch(cage, topo, face) {
+            out.quartic.push(net.map(|row| row.map(|p| p + offset)));
+            return true;
+        }
+    } else if let Some(g) = catmull_clark_grid(cage, topo, face) {
+        out.bicubic.push(bezier_patch(&g).map(|row| row.map(|p| p + offset)));
+        return true;
+    }
+    false
+}
+
 /// Face `face` of the local surface `s` (whose points are relative to `offset`) at
-/// `level`: a bicubic patch if regular, a stand-in if refinement stops here, else its
+/// `level`: an exact patch if regular, a stand-in if refinement stops here, else its
 /// children on the once-subdivided 1-ring.
 fn refine_face(
     s: &SubdivisionSurface,
@@ -161,11 +214,10 @@ fn refine_face(
     max_depth: usize,
     out: &mut LimitPatches,
 ) -> Result<()> {
-    let (cage, topo) = (s.cage(), s.topology());
-    if let Some(g) = catmull_clark_grid(cage, topo, face) {
-        out.bicubic.push(bezier_patch(&g).map(|row| row.map(|p| p + offset)));
+    if push_exact(s, face, offset, out) {
         return Ok(());
     }
+    let (cage, topo) = (s.cage(), s.topology());
     // One local step: the 1-ring subdivided once, moved to the origin. Face 0 of the
     // 1-ring is `face`, so its children are the first faces of the step.
     let ring = one_ring_faces(topo, face);
@@ -174,10 +226,14 @@ fn refine_face(
     for p in &mut local.vertices {
         *p -= o;
     }
-    let child = catmull_clark_step(&local, &Topology::new(&local)?);
-    let next = SubdivisionSurface::new(child, Scheme::CatmullClark, false)?;
-    // From level 1 on every face is a quad.
-    if level >= 1 && topo.face_len(face) == 4 {
+    let local_topo = Topology::new(&local)?;
+    let (child, children) = match s.scheme() {
+        Scheme::Loop => (loop_step(&local, &local_topo)?, 4),
+        _ => (catmull_clark_step(&local, &local_topo), topo.face_len(face)),
+    };
+    let next = SubdivisionSurface::new(child, s.scheme(), false)?;
+    // From level 1 on every face is a quad (Catmull–Clark) or a triangle (Loop).
+    if level >= 1 && (s.scheme() == Scheme::Loop || topo.face_len(face) == 4) {
         let stop_here = level >= max_depth || matches!(refinement, Refinement::Depth(d) if level >= d);
         if stop_here || matches!(refinement, Refinement::Tolerance { .. }) {
             let q = stand_in(s, face)?;
@@ -192,18 +248,23 @@ fn refine_face(
             }
         }
     }
-    for k in 0..topo.face_len(face) {
+    for k in 0..children {
         refine_face(&next, k, level + 1, offset + o, refinement, max_depth, out)?;
     }
     Ok(())
 }
 
-/// The bilinear stand-in of quad `face`: the limit points of its corners.
+/// The bilinear stand-in of `face`: the limit points of its corners; a Loop triangle
+/// (c₀, c₁, c₂) as the quad (c₀, c₁, c₂, c₂), whose bilinear patch is the flat triangle in
+/// the atlas chart (s, t) ↦ (s(1 − t), t).
 fn stand_in(s: &SubdivisionSurface, face: u32) -> Result<[Point<3>; 4]> {
     let c = s.cage().face(face as usize);
     let mut q = [Point::<3>::zeros(); 4];
     for (k, &v) in c.iter().enumerate() {
         q[k] = s.limit_frame(v)?.position;
+    }
+    if c.len() == 3 {
+        q[3] = q[2];
     }
     Ok(q)
 }
@@ -213,13 +274,29 @@ fn bilinear_at(q: &[Point<3>; 4], u: f64, v: f64) -> Point<3> {
     q[0] * ((1.0 - u) * (1.0 - v)) + q[1] * (u * (1.0 - v)) + q[2] * (u * v) + q[3] * ((1.0 - u) * v)
 }
 
-/// max |B(u, v) − S(u, v)| over the sample grid (without its corners) of stand-in `q` of a
-/// quad whose four children are faces 0–3 of `children` (its 1-ring subdivided once):
-/// S at a sample is the child's exact limit at the sample's place in it — its bicubic
-/// patch where the child is regular, else local evaluation.
+/// An exact patch of a child: bicubic B-spline grid or quartic Bézier net.
+enum ChildPatch {
+    Bicubic(Box<[[Point<3>; 4]; 4]>),
+    Quartic(Box<QuarticNet>),
+}
+
+/// max |B(s, t) − S(s, t)| over the sample grid (without its corners) of stand-in `q` of a
+/// face whose children are the first faces of `children` (its 1-ring subdivided once):
+/// S at a sample is the child's exact limit at the sample's place in it — its polynomial
+/// patch where the child is regular, else local evaluation. For Loop, (s, t) is the atlas
+/// chart, the face's (u, v) = (s(1 − t), t).
 fn deviation(children: &SubdivisionSurface, q: &[Point<3>; 4]) -> Result<f64> {
-    let grids: Vec<Option<[[Point<3>; 4]; 4]>> =
-        (0..4).map(|k| catmull_clark_grid(children.cage(), children.topology(), k)).collect();
+    let is_loop = children.scheme() == Scheme::Loop;
+    let (cage, topo) = (children.cage(), children.topology());
+    let patches: Vec<Option<ChildPatch>> = (0..4)
+        .map(|k| {
+            if is_loop {
+                loop_bezier_patch(cage, topo, k).map(|net| ChildPatch::Quartic(Box::new(net)))
+            } else {
+                catmull_clark_grid(cage, topo, k).map(|g| ChildPatch::Bicubic(Box::new(g)))
+            }
+        })
+        .collect();
     let n = SAMPLES - 1;
     let mut worst = 0.0f64;
     for i in 0..=n {
@@ -227,15 +304,21 @@ fn deviation(children: &SubdivisionSurface, q: &[Point<3>; 4]) -> Result<f64> {
             if (i == 0 || i == n) && (j == 0 || j == n) {
                 continue;
             }
-            let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
-            let (k, a, b) = quad_child(u, v);
+            let (s, t) = (i as f64 / n as f64, j as f64 / n as f64);
+            let (u, v) = if is_loop { (s * (1.0 - t), t) } else { (s, t) };
+            let (k, a, b) = if is_loop { triangle_child(u, v) } else { quad_child(u, v) };
             let (cu, cv) = (a[0][0] * u + a[0][1] * v + b.0, a[1][0] * u + a[1][1] * v + b.1);
             let (cu, cv) = (cu.clamp(0.0, 1.0), cv.clamp(0.0, 1.0));
-            let exact = match &grids[k as usize] {
-                Some(g) => bspline_patch_at(g, cu, cv),
+            let exact = match &patches[k as usize] {
+                Some(ChildPatch::Bicubic(g)) => bspline_patch_at(g, cu, cv),
+                // The child's chart: (cu, cv) = (s′(1 − t′), t′).
+                Some(ChildPatch::Quartic(net)) => {
+                    let sc = if cv < 1.0 { (cu / (1.0 - cv)).clamp(0.0, 1.0) } else { 0.0 };
+                    quartic_at(net, sc, cv)
+                }
                 None => children.evaluate(k as usize, cu, cv)?.position,
             };
-            worst = worst.max((bilinear_at(q, u, v) - exact).norm());
+            worst = worst.max((bilinear_at(q, s, t) - exact).norm());
         }
     }
     Ok(worst)

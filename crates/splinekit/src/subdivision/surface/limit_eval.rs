@@ -178,7 +178,7 @@ pub(crate) fn quad_child(u: f64, v: f64) -> Affine {
 }
 
 /// The child triangle of a Loop triangle containing (u, v) and the map into it.
-fn triangle_child(u: f64, v: f64) -> Affine {
+pub(crate) fn triangle_child(u: f64, v: f64) -> Affine {
     if u + v <= 0.5 {
         (0, [[2.0, 0.0], [0.0, 2.0]], (0.0, 0.0))
     } else if u >= 0.5 {

@@ -4,7 +4,7 @@
 //!
 //! One concept per file: [`cage`] (the data), [`atlas`] (the limit as one parametric surface), [`topology`] (half-edge adjacency),
 //! [`creases`] (sharpness rules), [`catmull_clark`], [`loop_scheme`], [`bilinear`] (one
-//! step each), [`bezier_patches`] (the limit as Bézier patches, for STEP), [`limit_masks`], [`regular_patch`], [`box_spline`] and `regular_face` (polynomial patches
+//! step each), [`bezier_patches`] (the limit as Bézier patches, for STEP; [`loop_bezier`] the regular Loop patch as one), [`limit_masks`], [`regular_patch`], [`box_spline`] and `regular_face` (polynomial patches
 //! on regular faces), [`local`] (neighbourhoods), [`limit_eval`] (exact evaluation) and [`obj_cage`] (reading
 //! a cage from OBJ).
 //! Doo–Sabin steps live with the polygon meshes of `splinekit-mesh`.
@@ -19,6 +19,7 @@ pub mod creases;
 pub mod limit_eval;
 pub mod limit_masks;
 pub mod local;
+pub mod loop_bezier;
 pub mod loop_scheme;
 pub mod obj_cage;
 mod regular_face;
