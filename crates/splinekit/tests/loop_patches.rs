@@ -3,6 +3,8 @@
 //! evaluation through the atlas chart; irregular ones refined locally, with the deviation
 //! falling by Loop's subdominant eigenvalue per level.
 
+mod common;
+
 use splinekit::Point;
 use splinekit::subdivision::surface::atlas::LimitAtlas;
 use splinekit::subdivision::surface::bezier_patches::{limit_patches, limit_patches_within};
@@ -34,48 +36,7 @@ fn bumpy_grid(n: u32) -> SubdivisionSurface {
 
 /// The icosahedron on the unit sphere (twelve vertices of valence 5).
 fn icosahedron() -> SubdivisionSurface {
-    let t = (1.0 + 5f64.sqrt()) / 2.0;
-    let raw = [
-        p(-1.0, t, 0.0),
-        p(1.0, t, 0.0),
-        p(-1.0, -t, 0.0),
-        p(1.0, -t, 0.0),
-        p(0.0, -1.0, t),
-        p(0.0, 1.0, t),
-        p(0.0, -1.0, -t),
-        p(0.0, 1.0, -t),
-        p(t, 0.0, -1.0),
-        p(t, 0.0, 1.0),
-        p(-t, 0.0, -1.0),
-        p(-t, 0.0, 1.0),
-    ];
-    let faces: Vec<Vec<u32>> = [
-        [0, 11, 5],
-        [0, 5, 1],
-        [0, 1, 7],
-        [0, 7, 10],
-        [0, 10, 11],
-        [1, 5, 9],
-        [5, 11, 4],
-        [11, 10, 2],
-        [10, 7, 6],
-        [7, 1, 8],
-        [3, 9, 4],
-        [3, 4, 2],
-        [3, 2, 6],
-        [3, 6, 8],
-        [3, 8, 9],
-        [4, 9, 5],
-        [2, 4, 11],
-        [6, 2, 10],
-        [8, 6, 7],
-        [9, 8, 1],
-    ]
-    .iter()
-    .map(|f| f.to_vec())
-    .collect();
-    let cage = Cage::new(raw.iter().map(|x| x / x.norm()).collect(), &faces);
-    SubdivisionSurface::new(cage, Scheme::Loop, false).unwrap()
+    SubdivisionSurface::new(common::cages::icosahedron(), Scheme::Loop, false).unwrap()
 }
 
 /// A small deterministic generator of samples in [0, 1).

@@ -2,6 +2,8 @@
 //! points of the cube and the icosahedron, crease curves, finite differences and the
 //! subdominant eigenvalue.
 
+mod common;
+
 use splinekit::Point;
 use splinekit::curve::{BSplineCurve, Curve};
 use splinekit::subdivision::surface::{
@@ -108,46 +110,9 @@ fn cube_limit_points_and_normals_in_closed_form() {
 /// the limit at (ω + √5)/(ω + 5)·v, with the normal v.
 #[test]
 fn icosahedron_loop_limit_in_closed_form() {
-    let t = (1.0 + 5f64.sqrt()) / 2.0;
-    let raw = [
-        p(-1.0, t, 0.0),
-        p(1.0, t, 0.0),
-        p(-1.0, -t, 0.0),
-        p(1.0, -t, 0.0),
-        p(0.0, -1.0, t),
-        p(0.0, 1.0, t),
-        p(0.0, -1.0, -t),
-        p(0.0, 1.0, -t),
-        p(t, 0.0, -1.0),
-        p(t, 0.0, 1.0),
-        p(-t, 0.0, -1.0),
-        p(-t, 0.0, 1.0),
-    ];
-    let v: Vec<Point<3>> = raw.iter().map(|x| x / x.norm()).collect();
-    let faces = [
-        [0, 11, 5],
-        [0, 5, 1],
-        [0, 1, 7],
-        [0, 7, 10],
-        [0, 10, 11],
-        [1, 5, 9],
-        [5, 11, 4],
-        [11, 10, 2],
-        [10, 7, 6],
-        [7, 1, 8],
-        [3, 9, 4],
-        [3, 4, 2],
-        [3, 2, 6],
-        [3, 6, 8],
-        [3, 8, 9],
-        [4, 9, 5],
-        [2, 4, 11],
-        [6, 2, 10],
-        [8, 6, 7],
-        [9, 8, 1],
-    ];
-    let faces: Vec<Vec<u32>> = faces.iter().map(|f| f.to_vec()).collect();
-    let s = SubdivisionSurface::new(Cage::new(v.clone(), &faces), Scheme::Loop, false).unwrap();
+    let cage = common::cages::icosahedron();
+    let v = cage.vertices.clone();
+    let s = SubdivisionSurface::new(cage, Scheme::Loop, false).unwrap();
     let c = 0.375 + 0.25 * (std::f64::consts::TAU / 5.0).cos();
     let beta = (0.625 - c * c) / 5.0;
     let omega = 3.0 / (8.0 * beta);

@@ -3,6 +3,8 @@
 //! replaces, exact evaluation on the globally subdivided cage, and the subdominant
 //! eigenvalue of the vertex valence.
 
+mod common;
+
 use splinekit::Point;
 use splinekit::subdivision::surface::bezier_patches::{
     LimitPatches, MAX_DEPTH, Refinement, bezier_patch, limit_patches, limit_patches_within, refine_patches,
@@ -24,48 +26,7 @@ fn obj(name: &str) -> SubdivisionSurface {
 /// The icosahedron (twelve vertices of valence 5; after one step every triangle is three
 /// quads, each with a valence-5 and a valence-3 corner).
 fn icosahedron() -> SubdivisionSurface {
-    let t = (1.0 + 5f64.sqrt()) / 2.0;
-    let raw = [
-        p(-1.0, t, 0.0),
-        p(1.0, t, 0.0),
-        p(-1.0, -t, 0.0),
-        p(1.0, -t, 0.0),
-        p(0.0, -1.0, t),
-        p(0.0, 1.0, t),
-        p(0.0, -1.0, -t),
-        p(0.0, 1.0, -t),
-        p(t, 0.0, -1.0),
-        p(t, 0.0, 1.0),
-        p(-t, 0.0, -1.0),
-        p(-t, 0.0, 1.0),
-    ];
-    let faces: Vec<Vec<u32>> = [
-        [0, 11, 5],
-        [0, 5, 1],
-        [0, 1, 7],
-        [0, 7, 10],
-        [0, 10, 11],
-        [1, 5, 9],
-        [5, 11, 4],
-        [11, 10, 2],
-        [10, 7, 6],
-        [7, 1, 8],
-        [3, 9, 4],
-        [3, 4, 2],
-        [3, 2, 6],
-        [3, 6, 8],
-        [3, 8, 9],
-        [4, 9, 5],
-        [2, 4, 11],
-        [6, 2, 10],
-        [8, 6, 7],
-        [9, 8, 1],
-    ]
-    .iter()
-    .map(|f| f.to_vec())
-    .collect();
-    let cage = Cage::new(raw.iter().map(|x| x / x.norm()).collect(), &faces);
-    SubdivisionSurface::new(cage, Scheme::CatmullClark, false).unwrap()
+    SubdivisionSurface::new(common::cages::icosahedron(), Scheme::CatmullClark, false).unwrap()
 }
 
 /// The Catmull–Clark subdominant eigenvalue at a smooth vertex of valence n.

@@ -1,6 +1,8 @@
 //! Shared helpers for the integration tests.
 #![allow(dead_code)]
 
+pub mod cages;
+
 use splinekit::Point;
 use splinekit::curve::Curve;
 
