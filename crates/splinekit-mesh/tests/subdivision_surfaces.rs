@@ -3,19 +3,11 @@
 
 use splinekit_mesh::subdivision_surface::{PolygonMesh, SurfaceScheme, read_obj_polygons, write_obj_polygons};
 
+/// The kernel's example cube [−1, 1]³ (outward counter-clockwise faces).
 fn cube() -> PolygonMesh {
-    let vertices = (0..8)
-        .map(|k| [(k & 1) as f64 * 2.0 - 1.0, ((k >> 1) & 1) as f64 * 2.0 - 1.0, ((k >> 2) & 1) as f64 * 2.0 - 1.0])
-        .collect();
-    // Outward counter-clockwise faces.
-    let faces = vec![
-        vec![0, 2, 3, 1],
-        vec![4, 5, 7, 6],
-        vec![0, 1, 5, 4],
-        vec![2, 6, 7, 3],
-        vec![0, 4, 6, 2],
-        vec![1, 3, 7, 5],
-    ];
+    let cage = splinekit::subdivision::surface::Cage::cube();
+    let vertices = cage.vertices.iter().map(|p| [p.x, p.y, p.z]).collect();
+    let faces = (0..cage.face_count()).map(|f| cage.face(f).to_vec()).collect();
     PolygonMesh { vertices, faces }
 }
 

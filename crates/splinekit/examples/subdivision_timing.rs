@@ -50,26 +50,7 @@ fn main() {
     let tri = SubdivisionSurface::new(grid(100, true), Scheme::Loop, false).unwrap();
     time("Loop step, 2·10^4 triangles", 20, || tri.step().unwrap());
     time("limit frames of all 10^4 vertices (Catmull–Clark)", 5, || small.limit_frames().unwrap());
-    let cube = {
-        let v = (0..8)
-            .map(|i| {
-                let s = |b: i32| if i & b == 0 { -1.0 } else { 1.0 };
-                Point::<3>::new(s(1), s(2), s(4))
-            })
-            .collect();
-        Cage::new(
-            v,
-            &[
-                vec![0, 2, 3, 1],
-                vec![4, 5, 7, 6],
-                vec![0, 1, 5, 4],
-                vec![2, 6, 7, 3],
-                vec![0, 4, 6, 2],
-                vec![1, 3, 7, 5],
-            ],
-        )
-    };
-    let s = SubdivisionSurface::new(cube, Scheme::CatmullClark, false).unwrap();
+    let s = SubdivisionSurface::new(Cage::cube(), Scheme::CatmullClark, false).unwrap();
     time("exact evaluation, regular face (B-spline patch)", 1000, || small.evaluate(5050, 0.3, 0.7).unwrap());
     time("exact evaluation, cube face at (0.3, 0.2) (valence-3 corners)", 1000, || s.evaluate(0, 0.3, 0.2).unwrap());
     time("exact evaluation, cube face at (1e-6, 2e-6) (~20 local steps)", 200, || s.evaluate(0, 1e-6, 2e-6).unwrap());

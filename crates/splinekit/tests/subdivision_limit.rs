@@ -15,23 +15,6 @@ fn p(x: f64, y: f64, z: f64) -> Point<3> {
     Point::<3>::new(x, y, z)
 }
 
-/// The cube [−1, 1]³, faces counter-clockwise seen from outside.
-fn cube() -> Cage {
-    let v = (0..8)
-        .map(|i| {
-            p(
-                if i & 1 == 0 { -1.0 } else { 1.0 },
-                if i & 2 == 0 { -1.0 } else { 1.0 },
-                if i & 4 == 0 { -1.0 } else { 1.0 },
-            )
-        })
-        .collect();
-    Cage::new(
-        v,
-        &[vec![0, 2, 3, 1], vec![4, 5, 7, 6], vec![0, 1, 5, 4], vec![2, 6, 7, 3], vec![0, 4, 6, 2], vec![1, 3, 7, 5]],
-    )
-}
-
 /// An (n+1)×(n+1) grid of vertices z = h(i, j) over [0, n]², quads counter-clockwise from +z.
 fn grid(n: u32, h: impl Fn(u32, u32) -> f64) -> Cage {
     let mut v = Vec::new();
@@ -89,7 +72,7 @@ fn regular_quads_are_the_bicubic_bspline_patch() {
 /// its limit (16f + 4Σe + Σd)/36 has z = (16 + 12 + 20/9)/36 = 68/81. Normals by symmetry.
 #[test]
 fn cube_limit_points_and_normals_in_closed_form() {
-    let s = SubdivisionSurface::new(cube(), Scheme::CatmullClark, false).unwrap();
+    let s = SubdivisionSurface::new(Cage::cube(), Scheme::CatmullClark, false).unwrap();
     let f = s.limit_frame(7).unwrap();
     close(f.position, p(0.5, 0.5, 0.5), 1e-15, "corner limit");
     close(f.normal, p(1.0, 1.0, 1.0) / 3f64.sqrt(), 1e-15, "corner normal");
@@ -138,8 +121,8 @@ fn icosahedron_loop_limit_in_closed_form() {
 #[test]
 fn partials_match_finite_differences() {
     let cases = [
-        SubdivisionSurface::new(cube(), Scheme::CatmullClark, false).unwrap(),
-        SubdivisionSurface::new(cube(), Scheme::Loop, true).unwrap(),
+        SubdivisionSurface::new(Cage::cube(), Scheme::CatmullClark, false).unwrap(),
+        SubdivisionSurface::new(Cage::cube(), Scheme::Loop, true).unwrap(),
     ];
     for s in &cases {
         // Points off every dyadic line u, v, u + v = k/2ʲ: the patches join C² (not C³), so a
@@ -171,7 +154,7 @@ fn partials_match_finite_differences() {
 /// regular bicubic patch instead.
 #[test]
 fn exact_evaluation_agrees_with_global_subdivision_and_masks() {
-    let s = SubdivisionSurface::new(cube(), Scheme::CatmullClark, false).unwrap();
+    let s = SubdivisionSurface::new(Cage::cube(), Scheme::CatmullClark, false).unwrap();
     let l2 = s.subdivide(2).unwrap();
     let l3 = l2.step().unwrap();
     let vertex = (l2.cage().vertices.len() + 2) as u32;
@@ -371,20 +354,20 @@ fn loop_regular_patches_are_c2_box_splines() {
 
 #[test]
 fn loop_refuses_polygons_unless_triangulating() {
-    let err = SubdivisionSurface::new(cube(), Scheme::Loop, false).unwrap_err().to_string();
+    let err = SubdivisionSurface::new(Cage::cube(), Scheme::Loop, false).unwrap_err().to_string();
     assert!(err.contains("faces[0]") && err.contains("4 vertices") && err.contains("triangulation"), "{err}");
-    assert!(SubdivisionSurface::new(cube(), Scheme::Loop, true).is_ok());
+    assert!(SubdivisionSurface::new(Cage::cube(), Scheme::Loop, true).is_ok());
 }
 
 #[test]
 fn bad_cages_are_refused_with_the_field() {
-    let mut c = cube();
+    let mut c = Cage::cube();
     c.creases = vec![Crease { a: 0, b: 7, sharpness: 1.0 }];
     let e = SubdivisionSurface::new(c, Scheme::CatmullClark, false).unwrap_err().to_string();
     assert!(e.contains("creases[0]") && e.contains("0–7"), "{e}");
     let bad = Cage::new(vec![p(0.0, 0.0, 0.0); 3], &[vec![0, 1, 2], vec![0, 1, 2]]);
     assert!(SubdivisionSurface::new(bad, Scheme::CatmullClark, false).is_err());
-    let s = SubdivisionSurface::new(cube(), Scheme::CatmullClark, false).unwrap();
+    let s = SubdivisionSurface::new(Cage::cube(), Scheme::CatmullClark, false).unwrap();
     assert!(s.evaluate(9, 0.5, 0.5).unwrap_err().to_string().contains("9 does not exist"));
     assert!(s.evaluate(0, 1.5, 0.5).unwrap_err().to_string().contains("outside"));
 }
@@ -397,7 +380,7 @@ fn a_step_keeps_vertex_order_and_counts() {
     assert_eq!(t.cage().face_count(), 40_000);
     assert_eq!(t.cage().vertices.len(), 201 * 201);
     // Bilinear keeps the vertices themselves.
-    let b = SubdivisionSurface::new(cube(), Scheme::Bilinear, false).unwrap();
+    let b = SubdivisionSurface::new(Cage::cube(), Scheme::Bilinear, false).unwrap();
     let b1 = b.step().unwrap();
     assert_eq!(&b1.cage().vertices[..8], &b.cage().vertices[..]);
     close(b.evaluate(1, 0.5, 0.5).unwrap().position, p(0.0, 0.0, 1.0), 1e-15, "bilinear centre");

@@ -118,23 +118,9 @@ impl SubdivisionSurfaceDoc {
 
     /// The unit cube [−1, 1]³, faces counter-clockwise seen from outside.
     pub fn cube() -> Self {
-        let vertices = (0..8)
-            .map(|i| {
-                vec![
-                    if i & 1 == 0 { -1.0 } else { 1.0 },
-                    if i & 2 == 0 { -1.0 } else { 1.0 },
-                    if i & 4 == 0 { -1.0 } else { 1.0 },
-                ]
-            })
-            .collect();
-        let faces = vec![
-            vec![0, 2, 3, 1],
-            vec![4, 5, 7, 6],
-            vec![0, 1, 5, 4],
-            vec![2, 6, 7, 3],
-            vec![0, 4, 6, 2],
-            vec![1, 3, 7, 5],
-        ];
+        let cage = Cage::cube();
+        let vertices = cage.vertices.iter().map(|p| vec![p.x, p.y, p.z]).collect();
+        let faces = (0..cage.face_count()).map(|f| cage.face(f).to_vec()).collect();
         SubdivisionSurfaceDoc {
             vertices,
             faces,

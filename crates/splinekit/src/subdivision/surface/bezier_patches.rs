@@ -383,18 +383,7 @@ mod tests {
         }
         assert!(regular >= 9, "{regular} regular quads");
 
-        let cube: Vec<Point<3>> = (0..8)
-            .map(|k| Point::<3>::new([-1.0, 1.0][k & 1], [-1.0, 1.0][(k >> 1) & 1], [-1.0, 1.0][k >> 2]))
-            .collect();
-        let faces = vec![
-            vec![0, 2, 3, 1],
-            vec![4, 5, 7, 6],
-            vec![0, 1, 5, 4],
-            vec![2, 6, 7, 3],
-            vec![0, 4, 6, 2],
-            vec![1, 3, 7, 5],
-        ];
-        let s = SubdivisionSurface::new(Cage::new(cube, &faces), Scheme::CatmullClark, false).unwrap();
+        let s = SubdivisionSurface::new(Cage::cube(), Scheme::CatmullClark, false).unwrap();
         let p = limit_patches(&s, 3).unwrap();
         assert_eq!((p.bicubic.len(), p.bilinear.len(), p.depth()), (2 * 72, 24, 3));
         // The limit point of a cube corner: (n²v + 4Σeᵢ + Σdᵢ)/(n(n + 5)) with n = 3,

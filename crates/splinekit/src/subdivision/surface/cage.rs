@@ -64,6 +64,17 @@ impl Cage {
         Cage { vertices, face_offsets, face_vertices, creases: Vec::new(), boundary: BoundaryRule::EdgeOnly }
     }
 
+    /// The cube [−1, 1]³: vertex k at (±1, ±1, ±1) with the signs of bits 0, 1, 2 of k, six
+    /// quads counter-clockwise seen from outside (Catmull–Clark puts its corners' limit at
+    /// (±½, ±½, ±½)). The example cage of documents, tests and timings.
+    pub fn cube() -> Self {
+        let sign = |k: u32, bit: u32| if k & bit == 0 { -1.0 } else { 1.0 };
+        let vertices = (0..8).map(|k| Point::<3>::new(sign(k, 1), sign(k, 2), sign(k, 4))).collect();
+        let faces =
+            [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]].map(|f| f.to_vec());
+        Cage::new(vertices, &faces)
+    }
+
     /// The same cage with creases.
     pub fn with_creases(mut self, creases: Vec<Crease>) -> Self {
         self.creases = creases;
