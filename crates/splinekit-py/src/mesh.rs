@@ -74,7 +74,7 @@ impl PyMesh {
                 path.display()
             )));
         }
-        let bytes = mesh_bytes(self.mesh.clone(), &object_name(&path), &ext).or_value_error()?;
+        let bytes = mesh_bytes(std::borrow::Cow::Borrowed(&self.mesh), &object_name(&path), &ext).or_value_error()?;
         splinekit_scene::write_file(&path, &bytes)
             .map_err(|e| value_error(format!("path: cannot write '{}': {e}", path.display())))
     }

@@ -58,7 +58,7 @@ pub fn export(object: &SceneObject, time: Option<f64>, path: &Path) -> Result<Ve
                 let formats = formats_phrase(MESH_FORMATS);
                 return Err(format!("export: surfaces are written as {formats}, not '{}'", path.display()));
             }
-            mesh_bytes(mesh, &name, &ext).map_err(|e| e.to_string())
+            mesh_bytes(std::borrow::Cow::Owned(mesh), &name, &ext).map_err(|e| e.to_string())
         }
     }
 }

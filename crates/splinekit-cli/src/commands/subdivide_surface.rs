@@ -185,7 +185,7 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
                 let mut bytes = Vec::new();
                 write_obj_with_normals(&m, &name, &mut bytes).map(|()| bytes)
             }
-            other => mesh_bytes(m.triangles(), &name, other),
+            other => mesh_bytes(std::borrow::Cow::Owned(m.triangles()), &name, other),
         }
         .map_err(|e| anyhow!("{e}"))?;
         return crate::output::write_bytes(&bytes, Some(&output));
@@ -257,7 +257,7 @@ fn write(out: &PolygonMesh, name: &str, ext: &str, path: &str) -> Result<()> {
             let mut bytes = Vec::new();
             write_obj_polygons(out, name, &mut bytes).map(|()| bytes)
         }
-        other => mesh_bytes(out.triangulate(), name, other),
+        other => mesh_bytes(std::borrow::Cow::Owned(out.triangulate()), name, other),
     }
     .map_err(|e| anyhow!("{e}"))?;
     crate::output::write_bytes(&bytes, Some(path))

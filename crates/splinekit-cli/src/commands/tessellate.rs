@@ -142,7 +142,7 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
             let surface = s.build()?;
             let uv = matches!(ext.as_str(), "obj" | "ply" | "gltf" | "glb");
             let mesh = surface.visit(SurfaceTriangles(args, uv, crate::budget::adaptive_cells(&cost)))?;
-            mesh_bytes(mesh, &name, &ext).map_err(|e| anyhow!("{e}"))?
+            mesh_bytes(std::borrow::Cow::Owned(mesh), &name, &ext).map_err(|e| anyhow!("{e}"))?
         }
     };
     crate::output::write_bytes(&bytes, Some(&args.output))

@@ -7,6 +7,7 @@
 //! (ASCII STL), .ply (ASCII), .gltf and .glb. Polylines: .obj (a line element), .gltf and
 //! .glb (a line strip; a closed polyline repeats its first point at the end).
 
+use std::borrow::Cow;
 use std::path::Path;
 
 use super::{ExportError, GltfGeometry, GltfScene, obj, ply, stl};
@@ -50,15 +51,17 @@ fn unknown(ext: &str, formats: &[&str]) -> ExportError {
 }
 
 /// `mesh` as a file of format `ext` (one of [`MESH_FORMATS`]); `name` is the object's name
-/// where the format has one.
-pub fn mesh_bytes(mesh: TriangleMesh, name: &str, ext: &str) -> Result<Vec<u8>, ExportError> {
+/// where the format has one. A borrowed mesh is copied only for glTF, whose scene owns it.
+pub fn mesh_bytes(mesh: Cow<'_, TriangleMesh>, name: &str, ext: &str) -> Result<Vec<u8>, ExportError> {
     let mut bytes = Vec::new();
     match ext {
         "obj" => obj::write_obj(&mesh, name, &mut bytes)?,
         "stl" => stl::write_stl_binary(&mesh, &mut bytes)?,
         "stla" => stl::write_stl_ascii(&mesh, name, &mut bytes)?,
         "ply" => ply::write_ply(&mesh, &mut bytes)?,
-        "gltf" | "glb" => bytes = GltfScene::single(name, GltfGeometry::Mesh(mesh), EXPORT_COLOR).to_file_bytes(ext)?,
+        "gltf" | "glb" => {
+            bytes = GltfScene::single(name, GltfGeometry::Mesh(mesh.into_owned()), EXPORT_COLOR).to_file_bytes(ext)?
+        }
         _ => return Err(unknown(ext, MESH_FORMATS)),
     }
     Ok(bytes)
@@ -99,7 +102,7 @@ mod tests {
     #[test]
     fn every_format_is_written_by_its_writer_and_others_are_refused() {
         for ext in MESH_FORMATS {
-            let bytes = mesh_bytes(triangle(), "t", ext).unwrap();
+            let bytes = mesh_bytes(Cow::Owned(triangle()), "t", ext).unwrap();
             let start: &[u8] = match *ext {
                 "obj" => b"# splinekit",
                 "stla" => b"solid t",
@@ -111,9 +114,9 @@ mod tests {
             assert!(bytes.starts_with(start), "{ext}");
         }
         // Binary STL: 80-byte header, count, 50 bytes a triangle.
-        assert_eq!(mesh_bytes(triangle(), "t", "stl").unwrap().len(), 84 + 50);
+        assert_eq!(mesh_bytes(Cow::Owned(triangle()), "t", "stl").unwrap().len(), 84 + 50);
         assert_eq!(
-            mesh_bytes(triangle(), "t", "svg").unwrap_err().to_string(),
+            mesh_bytes(Cow::Owned(triangle()), "t", "svg").unwrap_err().to_string(),
             "format: 'svg' is not one of .obj, .stl, .stla, .ply, .gltf or .glb"
         );
         let square = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0]];
