@@ -1,7 +1,7 @@
 //! The Loop limit as Bézier patches (`bezier_patches` with `loop_bezier`): regular
 //! triangles as exact (4, 4) patches with a collapsed edge, checked against exact
 //! evaluation through the atlas chart; irregular ones refined locally, with the deviation
-//! falling by Loop's subdominant eigenvalue per level.
+//! falling by Loop's subdominant eigenvalue per level; borders exact through phantom points.
 
 mod common;
 
@@ -15,7 +15,8 @@ fn p(x: f64, y: f64, z: f64) -> Point<3> {
     Point::<3>::new(x, y, z)
 }
 
-/// A bumpy triangulated n × n grid (interior vertices of valence 6, a boundary).
+/// A bumpy triangulated n × n grid (interior vertices of valence 6, a boundary whose
+/// vertices other than the corners have three triangles).
 fn bumpy_grid(n: u32) -> SubdivisionSurface {
     let vs: Vec<Point<3>> = (0..n * n)
         .map(|k| {
@@ -74,8 +75,11 @@ fn regular_triangles_are_exact_quartic_patches() {
         assert!(net.iter().all(|row| (row[4] - apex).norm() < 1e-13), "face {f}: edge t = 1 not collapsed");
         assert!(net.iter().all(|row| row[4] == net[0][4]));
     }
-    // The 5 × 5 interior vertices are regular: the triangles with three of them as corners.
-    assert_eq!(regular, 2 * 4 * 4);
+    // Every vertex but the grid's four corners is regular: the 5 × 5 interior ones of
+    // valence 6 and the border ones with three triangles (phantom points beyond the
+    // border). Of the 72 triangles, 6 touch a corner: 2 at (0, 0) and at (6, 6), 1 at the
+    // two others.
+    assert_eq!(regular, 2 * 6 * 6 - 6);
 }
 
 /// Loop's subdominant eigenvalue at a smooth vertex of valence n.
@@ -114,15 +118,24 @@ fn icosahedron_within_tolerance() {
     }
 }
 
-/// A boundary never becomes a regular box-spline patch: its triangles are stand-ins at
-/// every level, within the tolerance; the interior is exact.
+/// Along a border the triangles are exact box-spline patches (phantom points beyond the
+/// border); only the triangles at the grid's four corners, whose vertices are not regular
+/// crease vertices, stay stand-ins: each keeps one child at its corner, 6 at every depth,
+/// with the deviation falling level by level, and the tolerance met.
 #[test]
-fn boundaries_are_met_by_stand_ins() {
+fn borders_are_exact_and_only_corners_need_stand_ins() {
     let s = bumpy_grid(4);
+    let mut deviations = Vec::new();
+    for d in 1..=4 {
+        let p = limit_patches(&s, d).unwrap();
+        assert_eq!(p.bilinear.len(), 6, "depth {d}");
+        deviations.push(p.max_deviation);
+    }
+    assert!(deviations.windows(2).all(|w| w[1] < 0.8 * w[0]), "{deviations:?}");
     let p = limit_patches_within(&s, 1e-3).unwrap();
-    assert!(p.max_deviation <= 1e-3 && !p.quartic.is_empty() && !p.bilinear.is_empty());
+    assert!(p.max_deviation <= 1e-3 && p.bilinear.len() == 6);
     eprintln!(
-        "open grid within 1e-3: depth {}, {} quartic + {} stand-ins",
+        "open grid within 1e-3: depth {}, {} quartic + {} stand-ins; deviations by depth {deviations:?}",
         p.depth(),
         p.quartic.len(),
         p.bilinear.len()

@@ -443,3 +443,115 @@ fn crease_vertex_normals_belong_to_their_side() {
         }
     }
 }
+
+/// The triangulated grid of `grid(n, bumpy)`: each quad (c₀, c₁, c₂, c₃) cut along c₀c₂,
+/// a regular lattice whose border vertices have valence 4 (corners 2 and 3).
+fn triangulated_grid(n: u32) -> Cage {
+    let q = grid(n, bumpy);
+    let mut faces = Vec::new();
+    for f in 0..q.face_count() {
+        let c = q.face(f);
+        faces.push(vec![c[0], c[1], c[2]]);
+        faces.push(vec![c[0], c[2], c[3]]);
+    }
+    Cage::new(q.vertices.clone(), &faces)
+}
+
+/// The level-`levels` vertices inside level-0 triangle f, with their (u, v): child k of a
+/// triangle (a, b, c) is (a, e_ab, e_ca), (e_ab, b, e_bc), (e_ca, e_bc, c), (e_bc, e_ca, e_ab)
+/// in that order (loop_step's numbering), face 4f + k of the next level.
+fn loop_vertices_in(fine: &Cage, levels: u32, f: usize) -> Vec<(u32, (f64, f64))> {
+    fn walk(fine: &Cage, levels: u32, f: usize, corners: [(f64, f64); 3], out: &mut Vec<(u32, (f64, f64))>) {
+        if levels == 0 {
+            for (k, &c) in fine.face(f).iter().enumerate() {
+                out.push((c, corners[k]));
+            }
+            return;
+        }
+        let mid = |a: (f64, f64), b: (f64, f64)| ((a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0);
+        let [a, b, c] = corners;
+        let (ab, bc, ca) = (mid(a, b), mid(b, c), mid(c, a));
+        for (k, child) in [[a, ab, ca], [ab, b, bc], [ca, bc, c], [bc, ca, ab]].into_iter().enumerate() {
+            walk(fine, levels - 1, 4 * f + k, child, out);
+        }
+    }
+    let mut out = Vec::new();
+    walk(fine, levels, f, [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)], &mut out);
+    out
+}
+
+/// Loop triangles along a border or an infinitely sharp crease are box-spline patches of
+/// their points with phantom points beyond the crease (regular_patch.rs). Independent
+/// truth: two global Loop steps with the crease rules, then the limit mask at every
+/// level-2 vertex inside every triangle, against `evaluate` at that vertex's (u, v). The
+/// border and crease triangles now carry partials, checked against finite differences
+/// right up to the crease (one-sided across it).
+#[test]
+fn loop_border_and_crease_triangles_are_exact_patches_with_partials() {
+    let n = 6u32;
+    let plain = triangulated_grid(n);
+    let mut creased = plain.clone();
+    let row = 3u32;
+    creased.creases =
+        (0..n).map(|i| Crease { a: row * (n + 1) + i, b: row * (n + 1) + i + 1, sharpness: f64::INFINITY }).collect();
+    for (name, cage) in [("border", plain), ("crease", creased)] {
+        let s = SubdivisionSurface::new(cage, Scheme::Loop, false).unwrap();
+        let fine = s.subdivide(2).unwrap();
+        let mut with_partials = 0;
+        for f in 0..s.cage().face_count() {
+            for (vertex, (u, v)) in loop_vertices_in(fine.cage(), 2, f) {
+                let by_mask = fine.limit_frame(vertex).unwrap();
+                let by_eval = s.evaluate(f, u, v).unwrap();
+                close(by_eval.position, by_mask.position, 1e-13, &format!("{name}: face {f} at ({u}, {v})"));
+                // A vertex on the interior crease has a tangent plane on each side; the
+                // vertex mask gives one of them (the sector masks are tested elsewhere).
+                let on_crease = fine
+                    .topology()
+                    .vertex_edges(vertex)
+                    .iter()
+                    .any(|&(e, _)| fine.topology().sharpness[e as usize] > 0.0);
+                if !on_crease {
+                    close(by_eval.normal, by_mask.normal, 1e-12, &format!("{name}: normal, face {f} at ({u}, {v})"));
+                }
+            }
+        }
+        // Triangle 2i + 1 = (c₀, c₂, c₃) of quad (i, j) has its edge c₂ → c₃ (u + v = 1 … the
+        // edge from (1, 0) to (0, 1)) on row j + 1; triangle 2i of quad (i, j) has c₀ → c₁
+        // (v = 0) on row j. Take the triangles whose v = 0 edge lies on the border (j = 0)
+        // or on the crease row from above (j = row), away from the grid's corners.
+        for j in [0, row] {
+            for i in 2..4u32 {
+                let f = (2 * (j * n + i)) as usize;
+                let at = |u: f64, v: f64| s.evaluate(f, u, v).unwrap();
+                for &(u, v) in &[(0.3, 0.0), (0.02, 0.0), (0.41, 0.02), (0.2, 0.37)] {
+                    let e = at(u, v);
+                    let d = e.partials.unwrap_or_else(|| panic!("{name}: no partials on face {f} at ({u}, {v})"));
+                    with_partials += 1;
+                    let h = 1e-5;
+                    let fu = (at(u + h, v).position - at(u - h, v).position) / (2.0 * h);
+                    // One-sided second-order difference in v: the face ends at v = 0.
+                    let fv = (at(u, v + h).position * 4.0 - at(u, v + 2.0 * h).position - e.position * 3.0) / (2.0 * h);
+                    close(d.du, fu, 1e-6, &format!("{name}: du at ({u}, {v})"));
+                    close(d.dv, fv, 1e-5, &format!("{name}: dv at ({u}, {v})"));
+                    let fuu = (at(u + h, v).partials.unwrap().du - at(u - h, v).partials.unwrap().du) / (2.0 * h);
+                    let fvv = (at(u, v + h).partials.unwrap().dv * 4.0
+                        - at(u, v + 2.0 * h).partials.unwrap().dv
+                        - d.dv * 3.0)
+                        / (2.0 * h);
+                    let scale = 1.0 + d.duu.norm().max(d.dvv.norm());
+                    close(d.duu, fuu, 1e-5 * scale, &format!("{name}: duu at ({u}, {v})"));
+                    close(d.dvv, fvv, 1e-5 * scale, &format!("{name}: dvv at ({u}, {v})"));
+                    let nrm = d.du.cross(&d.dv).normalize();
+                    close(e.normal, nrm, 1e-14, "normal from the partials");
+                }
+                // The crease vertex c₀ itself (valence 4 on its side) has partials too,
+                // the limits of those beside it.
+                let corner = at(0.0, 0.0).partials.unwrap_or_else(|| panic!("{name}: no partials at a crease vertex"));
+                let beside = at(1e-9, 0.0).partials.unwrap();
+                close(corner.du, beside.du, 1e-7, "du at the crease vertex");
+                close(corner.dv, beside.dv, 1e-7, "dv at the crease vertex");
+            }
+        }
+        assert_eq!(with_partials, 16);
+    }
+}

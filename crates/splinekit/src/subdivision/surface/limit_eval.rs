@@ -60,9 +60,9 @@ pub enum EvalScheme {
 
 /// Local subdivision stops here and takes the nearest corner's limit mask: the distance
 /// in parameter is then below 2⁻¹²⁰, and the point within λ¹²⁰ ≤ 0.66¹²⁰ ≈ 10⁻²² of it
-/// in units of the cage. Points on a Loop boundary or infinitely sharp crease (where no
-/// child is ever a regular box-spline patch) end here, exact in position to that bound,
-/// with the mask's normal and without partials.
+/// in units of the cage. A safety net: every point reaches a regular patch (borders and
+/// infinitely sharp creases included, through phantom points) or an irregular corner
+/// long before, after about log₂(1/d) steps at parameter distance d from the corner.
 const MAX_LEVELS: usize = 120;
 
 fn unit(c: Point<3>) -> Point<3> {

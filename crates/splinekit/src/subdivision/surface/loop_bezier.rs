@@ -1,7 +1,8 @@
 //! The regular Loop patch as a tensor-product Bézier patch of degree (4, 4) with one
 //! collapsed edge (for STEP export).
 //!
-//! On a regular triangle (see [`super::regular_patch::loop_points`]) the limit is the
+//! On a regular triangle (see [`super::regular_patch::loop_control_points`]: smooth
+//! corners of valence 6, or regular crease corners with phantom points) the limit is the
 //! quartic box-spline patch L(u, v) = Σₖ Pₖ Bₖ(u, v) on u, v ≥ 0, u + v ≤ 1
 //! ([`super::box_spline::loop_basis`]). The atlas ([`super::atlas`]) charts the triangle by
 //! the unit square collapsed onto it, (u, v) = (s(1 − t), t): barycentric coordinates
@@ -21,7 +22,7 @@ use std::sync::OnceLock;
 
 use super::box_spline::{loop_basis, solve};
 use super::cage::Cage;
-use super::regular_patch::loop_points;
+use super::regular_patch::loop_control_points;
 use super::topology::Topology;
 use crate::Point;
 
@@ -73,11 +74,10 @@ fn derive() -> [[[f64; 5]; 5]; 12] {
 /// The (4, 4) Bézier net of triangle f's limit in the atlas chart (s, t) ↦ (s(1 − t), t),
 /// if f is regular; its edge t = 1 is collapsed onto the limit point of the corner c₂.
 pub fn loop_bezier_patch(cage: &Cage, topo: &Topology, f: u32) -> Option<QuarticNet> {
-    let pts = loop_points(topo, f)?;
+    let pts = loop_control_points(cage, topo, f)?;
     let w = weights();
     let mut net = [[Point::<3>::zeros(); 5]; 5];
-    for (k, &p) in pts.iter().enumerate() {
-        let x = cage.vertices[p as usize];
+    for (k, &x) in pts.iter().enumerate() {
         for (i, row) in net.iter_mut().enumerate() {
             for (j, d) in row.iter_mut().enumerate() {
                 *d += x * w[k][i][j];

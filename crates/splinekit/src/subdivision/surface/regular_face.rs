@@ -1,14 +1,15 @@
 //! The limit on a regular face as a polynomial patch, in the face's own parameters: the
 //! bicubic B-spline patch of the 4 × 4 grid around a regular Catmull–Clark quad
 //! ([`super::regular_patch::catmull_clark_grid`], [`super::regular_patch::cubic_bspline_basis`])
-//! or the quartic box spline of the 12 points around a regular Loop triangle
-//! ([`super::regular_patch::loop_points`], [`super::box_spline::loop_basis`]). Local
-//! subdivision ([`super::limit_eval`]) ends here as soon as its face is regular.
+//! or the quartic box spline of the 12 points around a regular Loop triangle, phantom
+//! points beyond a crease or boundary included
+//! ([`super::regular_patch::loop_control_points`], [`super::box_spline::loop_basis`]).
+//! Local subdivision ([`super::limit_eval`]) ends here as soon as its face is regular.
 
 use super::box_spline::loop_basis;
 use super::cage::Cage;
 use super::limit_eval::EvalScheme;
-use super::regular_patch::{catmull_clark_grid, cubic_bspline_basis, loop_points};
+use super::regular_patch::{catmull_clark_grid, cubic_bspline_basis, loop_control_points};
 use super::topology::Topology;
 use crate::Point;
 
@@ -36,11 +37,11 @@ pub(crate) fn regular(
             }
         }
         EvalScheme::Loop => {
-            let pts = loop_points(topo, f)?;
+            let pts = loop_control_points(cage, topo, f)?;
             let w = loop_basis(u, v);
             for (d, row) in w.iter().enumerate() {
                 for (k, &p) in pts.iter().enumerate() {
-                    r[d] += cage.vertices[p as usize] * row[k];
+                    r[d] += p * row[k];
                 }
             }
         }

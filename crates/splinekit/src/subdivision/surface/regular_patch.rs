@@ -10,7 +10,18 @@
 //!   OpenSubdiv's regular boundary patches.
 //! - Loop: a triangle whose three corners are smooth of valence 6 is the quartic
 //!   three-direction box-spline patch of its 12 neighbours (Stam 1998), see
-//!   [`super::box_spline`].
+//!   [`super::box_spline`]. Along a boundary or infinitely sharp crease the same holds
+//!   for a corner that is a regular crease vertex on the face's side (two sharp edges,
+//!   three faces between them on that side, every other edge there smooth), with the two
+//!   lattice points beyond the crease replaced by phantom points: across the crease edge
+//!   (c, a) of the triangle (c, b, a), the point c + a − b, the reflection of b through the
+//!   edge's midpoint. The smooth rules applied to these points reproduce the crease rules
+//!   exactly: the edge point 3/8(c + a) + 1/8(b + c + a − b) = (c + a)/2, and the vertex
+//!   point of c, 5/8 c + 1/16 Σ of its six neighbours, whose phantoms (c + a₀ − b₀) and
+//!   (c + a₁ − b₁) cancel its two inner neighbours, = 3/4 c + 1/8 (a₀ + a₁); and the new
+//!   phantoms are again reflections of the new points, so the box spline of the extended
+//!   lattice is the limit on the crease side. The tests check this against the cubic
+//!   B-spline limit of the crease and against global subdivision with limit masks.
 
 use super::cage::Cage;
 use super::creases::{VertexRule, is_boundary_corner, rule_for};
@@ -145,10 +156,11 @@ pub fn cubic_bspline_basis(t: f64) -> [[f64; 4]; 3] {
     ]
 }
 
-/// The 12 control points of regular triangle f (Loop): its corners c₀, c₁, c₂, then for
-/// each corner k the three neighbours of cₖ outside the face that follow, counter-clockwise,
-/// the edge to cₖ₋₁ (the third of these is also the first of corner k + 1's... see the
-/// module doc of [`super::box_spline`]).
+/// The 12 control point indices of triangle f (Loop) when its three corners are smooth
+/// interior vertices of valence 6: its corners c₀, c₁, c₂, then for each corner k the
+/// three neighbours of cₖ outside the face that follow, counter-clockwise, the edge to
+/// cₖ₋₁. This is the order of the basis in [`super::box_spline`], whose derivation uses
+/// the indices; evaluation takes [`loop_control_points`], which also admits crease corners.
 pub fn loop_points(topo: &Topology, f: u32) -> Option<[u32; 12]> {
     if topo.face_len(f) != 3 {
         return None;
@@ -172,4 +184,81 @@ pub fn loop_points(topo: &Topology, f: u32) -> Option<[u32; 12]> {
         }
     }
     Some(r)
+}
+
+/// The 12 control points of triangle f (Loop) if its limit is a box-spline patch, in the
+/// order of [`loop_points`]: every corner a smooth interior vertex of valence 6 or a
+/// regular crease vertex on the face's side, whose two lattice points beyond the crease
+/// are phantom points (see the module doc).
+pub fn loop_control_points(cage: &Cage, topo: &Topology, f: u32) -> Option<[Point<3>; 12]> {
+    if topo.face_len(f) != 3 {
+        return None;
+    }
+    let h0 = topo.face_start(f);
+    let mut r = [Point::<3>::zeros(); 12];
+    for k in 0..3u32 {
+        let c = topo.origin(h0 + k);
+        let ring = lattice_ring(cage, topo, c, h0 + k)?;
+        r[k as usize] = cage.vertices[c as usize];
+        for m in 0..3 {
+            r[3 + 3 * k as usize + m] = ring[2 + m];
+        }
+    }
+    Some(r)
+}
+
+/// The six lattice neighbours of corner c counter-clockwise, starting at the end of its
+/// outgoing half-edge h (so the face of h lies between the first two), or None if c is
+/// not regular on that face's side.
+fn lattice_ring(cage: &Cage, topo: &Topology, c: u32, h: u32) -> Option<[Point<3>; 6]> {
+    let vs = &cage.vertices;
+    let edges = topo.vertex_edges(c);
+    let n = edges.len();
+    let mut classes = Vec::with_capacity(n);
+    for &(e, _) in &edges {
+        classes.push(class(topo, e)?);
+    }
+    let i = topo.outgoing(c).iter().position(|&x| x == h)?;
+    let n_sharp = classes.iter().filter(|&&s| s).count();
+    if n_sharp == 0 {
+        if topo.vertex_boundary[c as usize] || n != 6 {
+            return None;
+        }
+        return Some(std::array::from_fn(|m| vs[edges[(i + m) % 6].1 as usize]));
+    }
+    if rule_for(n_sharp, is_boundary_corner(topo, c, cage.boundary)) != VertexRule::Crease {
+        return None;
+    }
+    // The sector of h's face: from the last sharp edge at or before edge i to the first
+    // sharp edge after it; a boundary vertex's edges do not wrap around.
+    let wraps = !topo.vertex_boundary[c as usize];
+    let step = |j: usize, forward: bool| -> Option<usize> {
+        match (forward, wraps) {
+            (true, true) => Some((j + 1) % n),
+            (false, true) => Some((j + n - 1) % n),
+            (true, false) => (j + 1 < n).then_some(j + 1),
+            (false, false) => j.checked_sub(1),
+        }
+    };
+    let mut start = i;
+    while !classes[start] {
+        start = step(start, false)?;
+    }
+    let mut sector = vec![start];
+    let mut j = start;
+    loop {
+        j = step(j, true)?;
+        sector.push(j);
+        if classes[j] || sector.len() > 4 {
+            break;
+        }
+    }
+    if sector.len() != 4 || !classes[sector[3]] {
+        return None;
+    }
+    let p = |m: usize| vs[edges[sector[m]].1 as usize];
+    let centre = vs[c as usize];
+    let lattice = [p(0), p(1), p(2), p(3), centre + p(3) - p(2), centre + p(0) - p(1)];
+    let offset = sector.iter().position(|&x| x == i)?;
+    Some(std::array::from_fn(|m| lattice[(offset + m) % 6]))
 }
