@@ -58,7 +58,8 @@ enum Command {
     Refine(commands::refine::RefineArgs),
     /// Subdivision curves: Chaikin, Lane–Riesenfeld, 4-point.
     Subdivide(commands::subdivide::SubdivideArgs),
-    /// Subdivision surfaces: Catmull–Clark or Doo–Sabin on a polygon mesh (OBJ).
+    /// Subdivision surfaces: Catmull–Clark, Loop, bilinear or Doo–Sabin on a polygon mesh (OBJ),
+    /// the exact limit (points, normals, evaluation at a face and (u, v), STEP patches).
     SubdivideSurface(commands::subdivide_surface::SubdivideSurfaceArgs),
     /// Polylines of curves and triangle meshes of surfaces: SVG, OBJ, STL, PLY, glTF.
     Tessellate(commands::tessellate::TessellateArgs),

@@ -161,11 +161,60 @@ fn schemes_creases_and_boundaries() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// Doo–Sabin's `--limit` on the cube [−1, 1]³: a corner's points in its three faces are
+/// 9/16 v + 3/16 (two neighbours) + 1/16 (the opposite corner), e.g. (½, ½, 1); their
+/// centroid, the limit, is ⅔ v, the normal v/√3 by symmetry. After two steps every vertex
+/// has moved (the polygons' count and order kept).
+#[test]
+fn doo_sabin_limit_points_of_the_cube() {
+    let dir = temp_dir("doo-sabin");
+    let out = dir.join("limit.obj");
+    let args = |steps: &'static str| {
+        ["subdivide-surface", "-", "--scheme", "doo-sabin", "--steps", steps, "--limit", "-o", out.to_str().unwrap()]
+            .map(String::from)
+    };
+    let o = run(&args("0").each_ref().map(String::as_str), &cube());
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let text = std::fs::read_to_string(&out).unwrap();
+    let (cage, v, n) = (lines(&cube(), "v "), lines(&text, "v "), lines(&text, "vn "));
+    assert_eq!((v.len(), n.len()), (8, 8));
+    for i in 0..8 {
+        for c in 0..3 {
+            assert!((v[i][c] - cage[i][c] * 2.0 / 3.0).abs() < 1e-15, "vertex {i}: {:?}", v[i]);
+            assert!((n[i][c] - cage[i][c] / 3f64.sqrt()).abs() < 1e-15, "normal {i}: {:?}", n[i]);
+        }
+    }
+    let o = run(&args("2").each_ref().map(String::as_str), &cube());
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let limit = std::fs::read_to_string(&out).unwrap();
+    let plain = dir.join("plain.obj");
+    let o = run(
+        &["subdivide-surface", "-", "--scheme", "doo-sabin", "--steps", "2", "-o", plain.to_str().unwrap()],
+        &cube(),
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let plain = std::fs::read_to_string(&plain).unwrap();
+    let (a, b) = (lines(&limit, "v "), lines(&plain, "v "));
+    assert_eq!(a.len(), b.len());
+    assert_eq!(
+        limit.lines().filter(|l| l.starts_with("f ")).count(),
+        plain.lines().filter(|l| l.starts_with("f ")).count()
+    );
+    assert!(a.iter().zip(&b).all(|(p, q)| p != q), "every vertex moves onto the limit");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn bad_subdivision_input_is_refused_in_one_line() {
     let out = std::env::temp_dir().join("splinekit-subdiv-never.obj");
     let o = out.to_str().unwrap();
-    assert_bad(&["subdivide-surface", "-", "--scheme", "doo-sabin", "--limit", "-o", o], &cube(), "--limit");
+    // Doo–Sabin's limit needs a closed mesh: the cube without its last face is open.
+    let open: String = {
+        let text = cube();
+        let last = text.lines().rfind(|l| l.starts_with("f ")).unwrap().to_string();
+        text.lines().filter(|&l| l != last).map(|l| format!("{l}\n")).collect()
+    };
+    assert_bad(&["subdivide-surface", "-", "--scheme", "doo-sabin", "--limit", "-o", o], &open, "open border");
     assert_bad(&["subdivide-surface", "-", "--scheme", "loop", "-o", o], &cube(), "faces[0]");
     let bad_tag = format!("{}t crease 2/1 0 1\n", cube());
     assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "-o", o], &bad_tag, "crease");

@@ -12,6 +12,7 @@ use splinekit::subdivision::surface::SubdivisionSurface;
 
 use crate::TriangleMesh;
 
+#[derive(Debug, Clone)]
 /// Limit positions (one per vertex, in order), normals (one per vertex, in order, then one
 /// more per face corner on the far side of a sharp crease), and faces as (vertex, normal)
 /// corners.

@@ -257,7 +257,7 @@ impl PolygonMesh {
 /// The Doo–Sabin points of one n-gon's corners, p_i = Σ_j α_ij v_j, in O(n): with
 /// θ_j = 2πj/n, cos(θ_i − θ_j) = cos θ_i cos θ_j + sin θ_i sin θ_j turns the weights into
 /// p_i = v_i/4 + 3/(4n) Σ_j v_j + 1/(2n) (cos θ_i Σ_j cos θ_j v_j + sin θ_i Σ_j sin θ_j v_j).
-fn doo_sabin_corners(v: &[[f64; 3]]) -> Vec<[f64; 3]> {
+pub(crate) fn doo_sabin_corners(v: &[[f64; 3]]) -> Vec<[f64; 3]> {
     let n = v.len() as f64;
     let angle = |j: usize| std::f64::consts::TAU * j as f64 / n;
     let (mut sum, mut cos, mut sin) = ([0.0; 3], [0.0; 3], [0.0; 3]);

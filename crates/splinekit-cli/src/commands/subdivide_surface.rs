@@ -12,6 +12,7 @@ use clap::{Args, ValueEnum};
 use splinekit::Point;
 use splinekit::subdivision::surface::bezier_patches::MAX_DEPTH;
 use splinekit::subdivision::surface::{BoundaryRule, Cage, Crease, Scheme as KernelScheme, SubdivisionSurface};
+use splinekit_mesh::doo_sabin_limit::doo_sabin_limit_mesh;
 use splinekit_mesh::export::mesh_bytes;
 use splinekit_mesh::limit_mesh::{LimitMesh, limit_mesh};
 use splinekit_mesh::subdivision_surface::{PolygonMesh, SurfaceScheme, read_obj_polygons, write_obj_polygons};
@@ -44,7 +45,8 @@ pub struct SubdivideSurfaceArgs {
     #[arg(long, default_value = "3")]
     pub steps: String,
     /// Put every vertex of the result on the limit surface and write limit normals
-    /// (Catmull–Clark, Loop, bilinear).
+    /// (Catmull–Clark, Loop and bilinear by their limit masks; Doo–Sabin, on a closed
+    /// mesh, at the centre its vertex face converges to).
     #[arg(long)]
     pub limit: bool,
     /// Loop: split polygons into triangle fans first instead of refusing them.
@@ -148,10 +150,11 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
             if ext == "step" {
                 bail!("-o: STEP export is for catmull-clark, loop and bilinear, not doo-sabin");
             }
-            if args.limit {
-                bail!("--limit: Doo–Sabin has no limit masks here; use catmull-clark, loop or bilinear");
-            }
             let out = mesh.subdivide(SurfaceScheme::DooSabin, steps).map_err(|e| anyhow!("mesh: {e}"))?;
+            if args.limit {
+                let m = doo_sabin_limit_mesh(&out).map_err(|e| anyhow!("mesh: {e}"))?;
+                return write_limit(&m, &name, &ext, &output);
+            }
             return write(&out, &name, &ext, &output);
         }
         Scheme::CatmullClark => KernelScheme::CatmullClark,
@@ -180,20 +183,25 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
     let result = surface.subdivide(steps).map_err(|e| anyhow!("mesh: {e}"))?;
     if args.limit {
         let m = limit_mesh(&result).map_err(|e| anyhow!("mesh: {e}"))?;
-        let bytes = match ext.as_str() {
-            "obj" => {
-                let mut bytes = Vec::new();
-                write_obj_with_normals(&m, &name, &mut bytes).map(|()| bytes)
-            }
-            other => mesh_bytes(std::borrow::Cow::Owned(m.triangles()), &name, other),
-        }
-        .map_err(|e| anyhow!("{e}"))?;
-        return crate::output::write_bytes(&bytes, Some(&output));
+        return write_limit(&m, &name, &ext, &output);
     }
     let c = result.cage();
     let faces: Vec<Vec<u32>> = (0..c.face_count()).map(|f| c.face(f).to_vec()).collect();
     let out = PolygonMesh { vertices: c.vertices.iter().map(|p| [p.x, p.y, p.z]).collect(), faces };
     write(&out, &name, &ext, &output)
+}
+
+/// A limit mesh (`--limit`): OBJ with its normals (`vn`), the other formats as triangles.
+fn write_limit(m: &LimitMesh, name: &str, ext: &str, output: &str) -> Result<()> {
+    let bytes = match ext {
+        "obj" => {
+            let mut bytes = Vec::new();
+            write_obj_with_normals(m, name, &mut bytes).map(|()| bytes)
+        }
+        other => mesh_bytes(std::borrow::Cow::Owned(m.triangles()), name, other),
+    }
+    .map_err(|e| anyhow!("{e}"))?;
+    crate::output::write_bytes(&bytes, Some(output))
 }
 
 /// The limit surface as STEP: one Bézier surface per patch of
