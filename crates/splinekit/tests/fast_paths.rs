@@ -5,7 +5,8 @@
 //! Pinned paths (docs/fast-paths.md lists them with these tests):
 //! * curves: the Bézier-span cache (`BezierSpans`, degrees 1–7) and its sorted-batch
 //!   cursor (`eval_many`, points-only and derivative loops), the blocked batch of four
-//!   parameters in step (`eval_many_lanes`, orders 0–2, AVX2 at run time), the
+//!   parameters in step (`eval_many_lanes`, orders 0–2, AVX2 at run time; blocks in one
+//!   span and blocks across a knot), the
 //!   batch of blending-spline curves (`curve_batch`), the monomorphised triangular
 //!   kernel (`span_kernel::eval_fixed`, W ≤ 8) and its dynamic fallback, uniform-knot span
 //!   arithmetic, periodic unrolling, left and right limits, the rational (homogeneous)
@@ -275,9 +276,10 @@ fn check_curve<const D: usize>(case: &CurveCase) {
         }
     }
     // The blocked batch of B-spline curves (`BezierSpans::eval_many_lanes`: four
-    // parameters of one span in step, orders 0 … 2, AVX2 where the CPU has it): a dense
-    // batch (many parameters per span, so that blocks inside a span occur in every order
-    // of parameters but the random one) against the truth, and bit for bit against the
+    // parameters of one span in step, or of two neighbouring spans evaluated with both,
+    // orders 0 … 2, AVX2 where the CPU has it): a dense batch (many parameters per span,
+    // so that blocks inside a span and blocks across a knot occur in every order of
+    // parameters but the random one) against the truth, and bit for bit against the
     // single evaluation at each parameter.
     let dense = parameters(&mut rng, &axis, 8 * n, case.params);
     for order in 0..=2 {

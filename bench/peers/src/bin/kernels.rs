@@ -83,6 +83,23 @@ fn main() {
         report("sorted points, one at a time", one, fl);
         report("sorted points, blocks of 4", lanes, fl);
     }
+    if run("sorted points, 10⁵ control points") {
+        // About ten parameters a span: blocks of four often straddle two spans.
+        let n = 100_000;
+        let mut k = vec![0.0; 4];
+        k.extend((1..n - 3).map(|i| i as f64 / (n - 3) as f64));
+        k.extend([1.0; 4]);
+        let pts = (0..n).map(|i| {
+            let x = i as f64;
+            Point::<3>::new(x, (x * 0.37).sin(), (x * 0.11).cos())
+        });
+        let big = BSplineCurve::new(3, k, pts.collect()).unwrap();
+        let ns = best(repeats, M, &mut || {
+            big.eval_many(&sorted, 0, &mut out[..M]);
+            out[M / 3][1]
+        });
+        report("sorted points, 10⁵ control points", ns, floor(repeats, M, 1));
+    }
     if run("sorted first derivative") {
         let ns = best(repeats, M, &mut || {
             c.eval_many(&sorted, 1, &mut out[..2 * M]);

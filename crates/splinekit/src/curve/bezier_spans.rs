@@ -261,8 +261,11 @@ impl<const D: usize> BezierSpans<Point<D>> {
 
     /// The batch of K = order + 1 outputs per parameter by blocks of [`LANES`] parameters:
     /// a block inside the cursor's span is evaluated lane by lane in step (powers,
-    /// Bernstein weights and sums as arrays over the lanes, which vectorise), any other
-    /// block one parameter at a time with the cursor, as [`BezierSpans::eval_many`] does.
+    /// Bernstein weights and sums as arrays over the lanes, which vectorise), a block from
+    /// the cursor's span into the next twice so (once with each span, every lane keeping
+    /// its own span's values: cheaper than four single evaluations when a span holds
+    /// only a few parameters), any other block one parameter at a time with the cursor,
+    /// as [`BezierSpans::eval_many`] does.
     /// Every value is computed by the operations of `eval_fixed` (`bernstein_sum` for
     /// points) in their order, so the result does not depend on the blocking.
     /// (Non-temporal stores for large outputs were tried: slower here than ordinary ones.)
@@ -289,16 +292,46 @@ impl<const D: usize> BezierSpans<Point<D>> {
                 eval_fixed::<W, Point<D>>(b, u, inv_h, o);
             }
         };
+        let in_span = |t: f64, start: f64, end: f64, span: usize| t >= start && (t < end || span == last_span);
         let mut blocks = params.chunks_exact(LANES).zip(out.chunks_exact_mut(LANES * K));
         for (raw, os) in &mut blocks {
             let ts: [f64; LANES] = std::array::from_fn(|l| map(raw[l]));
-            let inside = ts.iter().all(|&t| t >= at.start && (t < at.end || at.span == last_span));
-            if inside {
-                bernstein_lanes::<W, K, D>(&at.points, at.start, at.inv_h, &ts, os);
-            } else {
-                for (&t, o) in raw.iter().zip(os.chunks_exact_mut(K)) {
-                    one(&mut at, t, o);
+            // A sorted batch whose block starts just past the cursor's span: the next span.
+            if ts[0] >= at.end && at.span < last_span {
+                let (start, end, _) = self.frames[at.span + 1 - self.first_span];
+                if in_span(ts[0], start, end, at.span + 1) {
+                    at.load(self, at.span + 1);
                 }
+            }
+            if ts.iter().all(|&t| in_span(t, at.start, at.end, at.span)) {
+                bernstein_lanes::<W, K, D>(&at.points, at.start, at.inv_h, &ts, os);
+                continue;
+            }
+            // A sorted block running from the cursor's span into the next (a dense batch
+            // crosses a knot in about (LANES − 1)/(parameters a span) of its blocks):
+            // evaluated in step twice, with each span's points, each lane keeping the
+            // values of its own span — the operations of `eval_fixed` on that span, as
+            // one at a time.
+            if at.span < last_span && in_span(ts[0], at.start, at.end, at.span) {
+                let (start, end, _) = self.frames[at.span + 1 - self.first_span];
+                let next = |t: f64| in_span(t, start, end, at.span + 1);
+                if next(ts[LANES - 1]) && ts.iter().all(|&t| next(t) || in_span(t, at.start, at.end, at.span)) {
+                    let mut before = [Point::<D>::zeros(); 3 * LANES];
+                    let before = &mut before[..LANES * K];
+                    bernstein_lanes::<W, K, D>(&at.points, at.start, at.inv_h, &ts, before);
+                    let old_end = at.end;
+                    at.load(self, at.span + 1);
+                    bernstein_lanes::<W, K, D>(&at.points, at.start, at.inv_h, &ts, os);
+                    for (l, &t) in ts.iter().enumerate() {
+                        if t < old_end {
+                            os[l * K..(l + 1) * K].copy_from_slice(&before[l * K..(l + 1) * K]);
+                        }
+                    }
+                    continue;
+                }
+            }
+            for (&t, o) in raw.iter().zip(os.chunks_exact_mut(K)) {
+                one(&mut at, t, o);
             }
         }
         let rest = params.len() - params.len() % LANES;
