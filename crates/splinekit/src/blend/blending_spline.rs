@@ -307,6 +307,10 @@ impl<const D: usize> BlendingSplineCurve<D> {
     /// The neighbours keep their polynomials: a Bézier neighbour whose support changes is
     /// re-expressed on the new one ([`super::hermite::rebased`], exact up to rounding).
     ///
+    /// The new local's frame is the identity about the model's point at t* (built from a
+    /// model: the centre every local of such a spline has, edited or not), else about its
+    /// own point there.
+    ///
     /// Exactness (ERBS, whose derivatives all vanish at 0 and 1): outside (c_k, c_{k+1})
     /// the curve does not change; at c_k, t* and c_{k+1} it keeps its value and first d
     /// derivatives (all of them at c_k and c_{k+1}). Inside, on [c_k, t*] the curve changes
@@ -328,8 +332,14 @@ impl<const D: usize> BlendingSplineCurve<D> {
             (_, LocalCurve::Bezier { fitted, .. }) => self.taylor_local(t, fitted.curve().degree(), &knots, k)?,
             (_, LocalCurve::General(_)) => self.taylor_local(t, 3, &knots, k)?,
         };
+        // The frame's centre: the model's point at t*, as for every local made from a
+        // model (edited or not); else the new local's own point there.
+        let origin = match &self.source {
+            Some(src) => src.model.point(t),
+            None => Local::new(curve.clone(), t).origin,
+        };
         self.knots = knots;
-        self.locals.insert(k, Local::new(curve, t));
+        self.locals.insert(k, Local { curve, origin, transform: Affine::identity() });
         // The neighbours k − 1 and k + 1 (wrapping when closed; an open spline has both,
         // since t* is strictly inside the domain).
         let m = self.locals.len();
