@@ -302,8 +302,9 @@ impl<const D: usize> BlendingSplineCurve<D> {
     /// Method: with Bézier locals of degree d (or other explicit locals, d = 3) the new
     /// local is the Bézier of degree d Hermite-fitted to the *current* curve at t*: its
     /// value and first d derivatives there (the curve's Taylor polynomial of degree d at
-    /// t*, GMlib's local insertion), on its support [c_k, c_{k+1}]. Sub-curve and arc
-    /// locals made from a model get a new local of their kind made from the model at t*.
+    /// t*: the Hermite construction of every Bézier local, applied to the curve), on its
+    /// support [c_k, c_{k+1}]. Sub-curve and arc locals made from a model get a new local
+    /// of their kind made from the model at t*.
     /// The neighbours keep their polynomials: a Bézier neighbour whose support changes is
     /// re-expressed on the new one ([`super::hermite::rebased`], exact up to rounding).
     ///
