@@ -13,7 +13,7 @@ use splinekit::curve::model::Heart;
 use splinekit::curve::{BezierCurve, Curve, Reparametrized};
 use splinekit::frame::Affine;
 use splinekit::surface::model::Torus;
-use splinekit::surface::{Direction, Surface};
+use splinekit::surface::{Direction, Surface, SurfaceGridSamples};
 use splinekit::{Interval, Point};
 use std::sync::Arc;
 
@@ -263,6 +263,15 @@ fn an_inserted_knot_line_keeps_the_surface_within_the_promised_bound() {
         }
         eprintln!("{direction:?}: largest change {worst:.3e}");
         assert!(worst > 0.0 && worst < 0.05, "{direction:?}: {worst}");
+        // The renderer's grid path (Bernstein bases from the knots' supports) agrees with
+        // pointwise evaluation: the rebased neighbours live on their new supports.
+        let g = SurfaceGridSamples::uniform(&s, 41, 33).unwrap();
+        for (a, &u) in g.us().iter().enumerate() {
+            for (b, &v) in g.vs().iter().enumerate() {
+                let p = g.points()[a * 33 + b];
+                assert!((p - s.point(u, v)).norm() < 1e-12, "{direction:?}: the grid path at ({u}, {v})");
+            }
+        }
         // At every knot pair on the new line the partials up to (3, 3) are kept.
         let others = if along_u { s.knots().1.clone() } else { s.knots().0.clone() };
         for l in 0..others.count() {
