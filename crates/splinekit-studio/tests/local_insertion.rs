@@ -233,12 +233,14 @@ fn after_an_insertion_the_count_follows_the_knots_and_even_knots_respaces_them()
     let mut h = Harness::new_ui_state(frame, studio);
     h.run();
     assert!(h.query_by_label("local curves: 11 (knots as inserted)").is_some());
+    assert!(h.query_by_label("knots").is_none(), "no knot spacing to choose");
     h.get_by_label("even knots").click();
     h.run();
     let s = shape(h.state(), 0);
     assert!(s.get("knots").is_none(), "even knots again");
     assert_eq!(s["local_curves"], serde_json::json!(11), "the count stays");
     assert!(h.query_by_label("local curves").is_some(), "an editable count again");
+    assert!(h.query_by_label("knots").is_some(), "and the knot spacing");
     h.state_mut().undo();
     assert!(shape(h.state(), 0).get("knots").is_some(), "one undo step");
 }

@@ -211,7 +211,7 @@ fn local_count(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointers: 
 }
 
 /// The kind of locals made from the model (Bézier of a degree, the model itself, arcs for
-/// curves) and, for curves, the knot spacing.
+/// curves) and, for curves with knots not given explicitly, the knot spacing.
 fn local_kind(ui: &mut egui::Ui, studio: &mut Studio, object: usize, surface: bool) {
     let local = read(studio, object, "/shape/local").unwrap_or_else(|| json!({"type": "bezier"}));
     let kind = local.get("type").and_then(Value::as_str).unwrap_or("bezier").to_string();
@@ -229,7 +229,8 @@ fn local_kind(ui: &mut egui::Ui, studio: &mut Studio, object: usize, surface: bo
     if kind == "bezier" {
         bezier_degree(ui, studio, object, &local, surface);
     }
-    if !surface {
+    // Explicit knots (after an insertion) say where the locals are: no spacing to choose.
+    if !surface && read(studio, object, "/shape/knots").is_none() {
         let spacing = read(studio, object, "/shape/knot_spacing").and_then(|v| v.as_str().map(String::from));
         let current = spacing.unwrap_or_else(|| "uniform".into());
         let mut chosen = current.clone();
