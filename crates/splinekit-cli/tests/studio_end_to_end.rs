@@ -580,6 +580,47 @@ fn a_knot_is_inserted_by_clicking_the_curve() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A person selects the heart (a click on a local curve's handle), presses L and clicks on
+/// the curve halfway between knots 2 and 3, then saves: the saved document has one local
+/// curve more, a knot near the click, and the curve unchanged outside the split interval
+/// and within 1 % of its size inside (the inserted local is its Taylor-fitted Bézier).
+#[test]
+#[ignore = "needs an X display and xdotool; .ci/run runs it under Xvfb"]
+fn a_local_curve_is_inserted_by_clicking_the_heart() {
+    let (_display, dir, original) = setup("e2e-insert-local");
+    let doc = dir.join("heart.json");
+    std::fs::copy(&original, &doc).expect("copied");
+    let before = heart(&doc);
+    let child = studio(&doc, &dir, "report.json", &[]);
+    let (report, window) = focused_window(&dir.join("report.json"));
+    let map = pixel_map(&report, "local_curve");
+    click(&window, handle(&report, 0));
+    xdotool(&["key", "l"]);
+    let (lo, hi) = (before.centre(2), before.centre(3));
+    let t = 0.5 * (lo + hi);
+    let p = before.point(t);
+    click(&window, map([p[0], p[1], p[2]]));
+    xdotool(&["key", "ctrl+s"]);
+    let more = |v: &Value| v["objects"][0]["shape"]["local_curves"] == serde_json::json!(11);
+    let saved = wait_for_json(&doc, more, "the saved document with one more local curve");
+    xdotool(&["key", "ctrl+q"]);
+    wait(child, "the studio");
+    let knots: Vec<f64> = serde_json::from_value(saved["objects"][0]["shape"]["knots"].clone()).expect("knots");
+    assert_eq!(knots.len(), 12, "closed: eleven locals, twelve knots");
+    assert!(knots.iter().any(|k| (k - t).abs() < 0.05), "a knot near {t}: {knots:?}");
+    let after = heart(&doc);
+    for i in 0..=2000 {
+        let s = after.domain().lerp(i as f64 / 2000.0);
+        let d = (after.point(s) - before.point(s)).norm();
+        if s <= lo || s >= hi {
+            assert!(d < 1e-12, "moved outside [{lo}, {hi}] at {s}: {d}");
+        } else {
+            assert!(d < 0.44, "moved by {d} at {s}: over 1 % of the heart's 44 diagonal");
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// Holding W, a person drags a NURBS control point up: its weight grows (e^(Δy/100)), the
 /// other weights and the point itself stay.
 #[test]

@@ -60,6 +60,10 @@ pub enum Action {
     RemoveKnot,
     /// Raise the selected curve's degree by one.
     ElevateDegree,
+    /// The next click on the selected blending spline inserts a local curve there; on a
+    /// blending surface a row of local patches along the u-isocurve (Shift + click: a
+    /// column along the v-isocurve).
+    InsertLocal,
     /// Show or hide the curvature comb of the curves.
     ToggleComb,
     /// Show or hide the continuity at knots and junctions.
@@ -213,6 +217,17 @@ pub const ACTIONS: &[ActionSpec] = &[
         label: "Elevate degree",
         help: "raise the selected curve's degree by one (the curve does not change)",
         keys: &[(NONE, Key::E)],
+        menu: Some(Menu::Edit),
+        panel: true,
+        undoable: true,
+    },
+    ActionSpec {
+        action: Action::InsertLocal,
+        label: "Insert local piece",
+        help: "click on the selected blending spline: a local curve at that parameter; on a blending surface: a row \
+               of local patches along the u-isocurve through the click (Shift + click: along v), each fitted to the \
+               shape there (its Taylor polynomial), so the shape changes only between the neighbouring knots and little",
+        keys: &[(NONE, Key::L)],
         menu: Some(Menu::Edit),
         panel: true,
         undoable: true,

@@ -25,6 +25,9 @@ pub enum KnotTool {
     Insert,
     /// Remove the knot nearest the clicked parameter (within the tolerance).
     Remove,
+    /// Insert a local curve (on a blending surface, a row or column of local patches) at
+    /// the clicked parameter of a blending spline ([`crate::local_insert`]).
+    InsertLocal,
 }
 
 /// The curve document of object `object`'s shape, when it is one `refine` works on: one
@@ -33,7 +36,15 @@ fn refinable(shape: &ShapeDocument) -> Result<&CurveDocument, String> {
     match shape {
         ShapeDocument::Curve(c) if c.spline().is_some() => Ok(c),
         ShapeDocument::Curve(c) => {
-            Err(format!("knot edits work on bezier, rational_bezier, bspline and nurbs curves, not {}", c.type_name()))
+            let hint = if matches!(c.decoration(), splinekit_scene::Decoration::LocalCurves(_)) {
+                " (on a blending spline, Insert local piece: L)"
+            } else {
+                ""
+            };
+            Err(format!(
+                "knot edits work on bezier, rational_bezier, bspline and nurbs curves, not {}{hint}",
+                c.type_name()
+            ))
         }
         ShapeDocument::Surface(_) => Err("knot edits from the window work on curves".into()),
     }

@@ -43,6 +43,7 @@ pub mod history;
 pub mod knot_edit;
 pub mod live_surfaces;
 pub mod live_view;
+pub mod local_insert;
 pub mod net_knot_edit;
 pub mod options;
 pub mod panels;

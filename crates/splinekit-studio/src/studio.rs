@@ -22,6 +22,7 @@ use crate::history::History;
 use crate::knot_edit::{self, KnotTool};
 use crate::live_surfaces::LiveSurfaces;
 use crate::live_view::{self, Changes, KeptPolyline, Lattice};
+use crate::local_insert;
 use crate::net_knot_edit;
 use crate::selection::{GroupMove, GroupStart, Selection, in_box};
 use crate::snapping::Snapping;
@@ -291,31 +292,52 @@ impl Studio {
         }
     }
 
+    /// The selected object when it is a blending spline (curve or surface): local
+    /// insertion works on it.
+    fn blending_object(&self) -> Option<usize> {
+        let object = self.selected_object?;
+        local_insert::takes_locals(&self.scene.objects[object].shape).then_some(object)
+    }
+
     /// Arms a knot tool: the next click on the selected curve (or, inserting, spline
-    /// surface) uses it.
+    /// surface; inserting a local, blending spline) uses it, as the message says.
     fn arm(&mut self, tool: KnotTool) {
-        if tool == KnotTool::Insert && self.net_object().is_some() {
-            self.knot_tool = Some(tool);
-            self.message =
-                Some("click on the surface: a u-knot there (Shift + click: a v-knot; Escape: cancel)".into());
-            return;
-        }
-        match self.curve_object() {
-            Ok(_) => {
+        let shape = self.selected_object.map(|o| &self.scene.objects[o].shape);
+        let armed: Result<String, String> = match tool {
+            KnotTool::InsertLocal => match (shape, self.blending_object()) {
+                (Some(ShapeDocument::Curve(_)), Some(_)) => {
+                    Ok("click on the blending spline where the local curve goes (Escape: cancel)".into())
+                }
+                (Some(ShapeDocument::Surface(_)), Some(_)) => Ok("click on the surface: a row of local patches \
+                                                                  along u there (Shift + click: along v; Escape: \
+                                                                  cancel)"
+                    .into()),
+                _ => Err("insert local piece: select a blending spline (curve or surface) first".into()),
+            },
+            KnotTool::Insert if self.net_object().is_some() => {
+                Ok("click on the surface: a u-knot there (Shift + click: a v-knot; Escape: cancel)".into())
+            }
+            KnotTool::Insert => {
+                self.curve_object().map(|_| "click on the curve where the knot goes (Escape: cancel)".into())
+            }
+            KnotTool::Remove => {
+                self.curve_object().map(|_| "click on the curve near the knot to remove (Escape: cancel)".into())
+            }
+        };
+        match armed {
+            Ok(m) => {
                 self.knot_tool = Some(tool);
-                self.message = Some(match tool {
-                    KnotTool::Insert => "click on the curve where the knot goes (Escape: cancel)".into(),
-                    KnotTool::Remove => "click on the curve near the knot to remove (Escape: cancel)".into(),
-                });
+                self.message = Some(m);
             }
             Err(e) => self.message = Some(e),
         }
     }
 
-    /// A click at `mouse` on the selected spline surface with the insert tool armed: a
-    /// u-knot at the clicked u (with `shift`, a v-knot at the clicked v), one undo step; a
-    /// click off the surface leaves the tool armed.
-    fn net_knot_click(&mut self, object: usize, projector: &Projector, mouse: [f64; 2], shift: bool) {
+    /// A click at `mouse` on the selected spline surface with the insert tool armed (or,
+    /// with `local`, on the selected blending surface with the insert-local tool): a
+    /// u-knot (a row of local patches) at the clicked u, with `shift` at the clicked v;
+    /// one undo step. A click off the surface leaves the tool armed.
+    fn net_knot_click(&mut self, object: usize, projector: &Projector, mouse: [f64; 2], shift: bool, local: bool) {
         let shape = &self.scene.objects[object].shape;
         let at = net_knot_edit::surface_samples(shape, net_knot_edit::GRID)
             .map(|grid| net_knot_edit::parameters_at(&grid, projector, mouse));
@@ -330,10 +352,11 @@ impl Studio {
                 return;
             }
         };
-        let edit = if shift {
-            net_knot_edit::insert(shape, object, Direction::V, v)
+        let (direction, t) = if shift { (Direction::V, v) } else { (Direction::U, u) };
+        let edit = if local {
+            local_insert::insert_line(shape, object, direction, t)
         } else {
-            net_knot_edit::insert(shape, object, Direction::U, u)
+            net_knot_edit::insert(shape, object, direction, t)
         };
         self.knot_tool = None;
         self.apply_or_say(edit);
@@ -345,8 +368,22 @@ impl Studio {
     /// armed.
     pub fn knot_click(&mut self, tool: KnotTool, projector: &Projector, mouse: [f64; 2], shift: bool) {
         if let (KnotTool::Insert, Some(object)) = (tool, self.net_object()) {
-            self.net_knot_click(object, projector, mouse, shift);
+            self.net_knot_click(object, projector, mouse, shift, false);
             return;
+        }
+        if tool == KnotTool::InsertLocal {
+            match self.blending_object() {
+                Some(object) if matches!(self.scene.objects[object].shape, ShapeDocument::Surface(_)) => {
+                    self.net_knot_click(object, projector, mouse, shift, true);
+                    return;
+                }
+                Some(_) => {}
+                None => {
+                    self.knot_tool = None;
+                    self.message = Some("insert local piece: select a blending spline (curve or surface) first".into());
+                    return;
+                }
+            }
         }
         let object = match self.curve_object() {
             Ok(o) => o,
@@ -373,6 +410,7 @@ impl Studio {
         let edit = match tool {
             KnotTool::Insert => knot_edit::insert(shape, object, u),
             KnotTool::Remove => knot_edit::remove(shape, object, u, self.knot_tolerance),
+            KnotTool::InsertLocal => local_insert::insert_curve(shape, object, u),
         };
         self.knot_tool = None;
         self.apply_or_say(edit);
@@ -498,6 +536,7 @@ impl Studio {
             Action::ToggleContinuity => self.analysis.continuity = !self.analysis.continuity,
             Action::InsertKnot => self.arm(KnotTool::Insert),
             Action::RemoveKnot => self.arm(KnotTool::Remove),
+            Action::InsertLocal => self.arm(KnotTool::InsertLocal),
             Action::ElevateDegree => {
                 let edit = self.curve_object().and_then(|o| knot_edit::elevate(&self.scene.objects[o].shape, o));
                 self.apply_or_say(edit);

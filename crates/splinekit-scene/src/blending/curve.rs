@@ -95,7 +95,9 @@ pub struct BlendingSplineDoc {
     pub model: Option<Box<CurveDocument>>,
     /// A count (with a model) or the local curves (with knots).
     pub local_curves: LocalCurves,
-    /// Explicit knots (with a list of local curves): open, one per local; closed, one more.
+    /// Knots: open, one per local; closed, one more. With a list of local curves, required;
+    /// with a model, optional (default: spaced by `knot_spacing`; given, e.g. after a local
+    /// was inserted, they must span the model's domain).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub knots: Option<Vec<f64>>,
     /// Knot placement along a model (default uniform).
@@ -128,7 +130,8 @@ pub struct BlendingSplineDoc {
 /// Where the locals of a blending spline come from (a checked view of the document).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum BlendingSource<'a> {
-    /// `local_curves` locals of kind `local` made from `model` at knots spaced by `knot_spacing`.
+    /// `local_curves` locals of kind `local` made from `model` at `knots`, or at knots
+    /// spaced by `knot_spacing`.
     Model {
         /// The model curve.
         model: &'a CurveDocument,
@@ -136,8 +139,10 @@ pub enum BlendingSource<'a> {
         local_curves: usize,
         /// Kind of locals.
         local: &'a LocalDoc,
-        /// Knot placement.
+        /// Knot placement (when `knots` is `None`).
         knot_spacing: KnotSpacingDoc,
+        /// The knots themselves, when given.
+        knots: Option<&'a [f64]>,
     },
     /// Explicit knots and local curves, each mapped onto its support.
     Explicit {
@@ -154,19 +159,20 @@ impl BlendingSplineDoc {
     /// The source of the locals: a model with a count, or knots with a list of curves.
     pub fn source(&self) -> Result<BlendingSource<'_>> {
         match (&self.model, &self.knots, &self.local_curves) {
-            (Some(_), Some(_), _) => {
-                Err(DocumentError::new("knots", "give either a model or explicit knots, not both"))
-            }
             (None, None, _) => {
                 Err(DocumentError::new("model", "missing (give a model curve, or knots and a list of local curves)"))
             }
-            (Some(model), None, LocalCurves::Count(n)) => Ok(BlendingSource::Model {
+            (Some(_), Some(_), _) if self.knot_spacing.is_some() => {
+                Err(DocumentError::new("knot_spacing", "not with explicit knots (they are where the locals go)"))
+            }
+            (Some(model), knots, LocalCurves::Count(n)) => Ok(BlendingSource::Model {
                 model,
                 local_curves: *n,
                 local: self.local.as_ref().unwrap_or(&BEZIER_LOCALS),
                 knot_spacing: self.knot_spacing.unwrap_or_default(),
+                knots: knots.as_deref(),
             }),
-            (Some(_), None, LocalCurves::List(_)) => Err(local_curves_kind(true, "an array")),
+            (Some(_), _, LocalCurves::List(_)) => Err(local_curves_kind(true, "an array")),
             (None, Some(_), LocalCurves::Count(_)) => Err(local_curves_kind(false, "a number")),
             (None, Some(knots), LocalCurves::List(list)) => {
                 if self.local.is_some() || self.knot_spacing.is_some() {
@@ -185,7 +191,7 @@ impl BlendingSplineDoc {
         let b = self.bfunction.as_ref().unwrap_or(&DEFAULT_BFUNCTION).build().map_err(|e| e.within("bfunction"))?;
         let mut bezier_degree = None;
         let mut c = match self.source()? {
-            BlendingSource::Model { model, local_curves, local, knot_spacing } => {
+            BlendingSource::Model { model, local_curves, local, knot_spacing, knots } => {
                 let model: Arc<dyn Curve<D>> = Arc::from(model.build_in::<D>().map_err(|e| e.within("model"))?);
                 let closed = self.closed.unwrap_or_else(|| model.is_closed());
                 let kind = match local {
@@ -201,7 +207,24 @@ impl BlendingSplineDoc {
                     KnotSpacingDoc::ChordLength => KnotSpacing::ChordLength,
                 };
                 let options = BlendingCurveOptions { local: kind, bfunction: b, closed: Some(closed), spacing };
-                BlendingSplineCurve::from_model(model, local_curves, &options)?
+                match knots {
+                    None => BlendingSplineCurve::from_model(model, local_curves, &options)?,
+                    Some(knots) => {
+                        let knots = BlendKnots::new(knots.to_vec(), closed)?;
+                        if knots.count() != local_curves {
+                            return Err(DocumentError::new(
+                                "local_curves",
+                                format!(
+                                    "expected {} local curves for the {} knots of a{} curve, got {local_curves}",
+                                    knots.count(),
+                                    knots.values().len(),
+                                    if closed { " closed" } else { "n open" }
+                                ),
+                            ));
+                        }
+                        BlendingSplineCurve::from_model_with_knots(model, knots, &options)?
+                    }
+                }
             }
             BlendingSource::Explicit { knots, local_curves } => {
                 let locals = local_curves
@@ -344,7 +367,7 @@ impl DocumentKind for BlendingSplineDoc {
         let blend = BFUNCTION_EVALUATION + 50.0;
         match self.source() {
             Err(_) => ShapeCost::new("local_curves", 0.0, 0.0, 0.0),
-            Ok(BlendingSource::Model { model, local_curves, local, knot_spacing }) => {
+            Ok(BlendingSource::Model { model, local_curves, local, knot_spacing, .. }) => {
                 let m = model.cost().within("model");
                 let n = local_curves as f64;
                 let d = 4.0;

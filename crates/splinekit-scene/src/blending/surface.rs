@@ -4,7 +4,8 @@
 use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
-use splinekit::blend::{BlendingSplineSurface, BlendingSurfaceOptions, PatchKind};
+use splinekit::Interval;
+use splinekit::blend::{BlendKnots, BlendingSplineSurface, BlendingSurfaceOptions, PatchKind};
 use splinekit::frame::Affine;
 use splinekit::surface::Surface;
 
@@ -39,7 +40,7 @@ fn bicubic() -> [usize; 2] {
 
 const BICUBIC_PATCHES: LocalPatchDoc = LocalPatchDoc::Bezier { degree: [3, 3] };
 
-/// `{"type":"blending_spline_surface","model":{…},"local_surfaces":[n_u,n_v],"local":{…},
+/// `{"type":"blending_spline_surface","model":{…},"local_surfaces":[n_u,n_v],"knots_u":[…],"knots_v":[…],"local":{…},
 /// "bfunction":{…},"closed_u":…,"closed_v":…,"transforms":…,"animation":[…]}`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -54,6 +55,13 @@ pub struct BlendingSplineSurfaceDoc {
     /// The B-function (default ERBS).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bfunction: Option<BFunctionDoc>,
+    /// The knots in u (n_u values, one more when closed in u), spanning the model's
+    /// u-domain; default: uniform. Written by knot-line insertion.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub knots_u: Option<Vec<f64>>,
+    /// The knots in v, as `knots_u`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub knots_v: Option<Vec<f64>>,
     /// Closed in u (default: the model's).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub closed_u: Option<bool>,
@@ -91,7 +99,36 @@ impl BlendingSplineSurfaceDoc {
         let counts = (self.local_surfaces[0], self.local_surfaces[1]);
         let options =
             BlendingSurfaceOptions { local: kind, bfunction: b, closed_u: Some(closed.0), closed_v: Some(closed.1) };
-        let mut s = BlendingSplineSurface::from_model(model, counts, &options)?;
+        let mut s = if self.knots_u.is_none() && self.knots_v.is_none() {
+            BlendingSplineSurface::from_model(model, counts, &options)?
+        } else {
+            let knots = |given: &Option<Vec<f64>>, i: usize, field: &str, domain: Interval, closed: bool| {
+                let knots = match given {
+                    // The kernel names the field `knots` (`knots[3]: …`): here it is `field`.
+                    Some(k) => BlendKnots::new(k.clone(), closed)
+                        .map_err(|e| DocumentError::new("", e.to_string().replacen("knots", field, 1)))?,
+                    None => {
+                        BlendKnots::uniform(domain, self.local_surfaces[i], closed, &format!("local_surfaces[{i}]"))?
+                    }
+                };
+                if knots.count() != self.local_surfaces[i] {
+                    return Err(DocumentError::new(
+                        format!("local_surfaces[{i}]"),
+                        format!(
+                            "expected {} patches for the {} {field} of a{} direction, got {}",
+                            knots.count(),
+                            knots.values().len(),
+                            if closed { " closed" } else { "n open" },
+                            self.local_surfaces[i]
+                        ),
+                    ));
+                }
+                Ok(knots)
+            };
+            let ku = knots(&self.knots_u, 0, "knots_u", model.domain_u(), closed.0)?;
+            let kv = knots(&self.knots_v, 1, "knots_v", model.domain_v(), closed.1)?;
+            BlendingSplineSurface::from_model_with_knots(model, (ku, kv), &options)?
+        };
         self.edit_patches(&mut s, kind)?;
         self.pose(&mut s)?;
         Ok(s)
@@ -190,6 +227,8 @@ impl DocumentKind for BlendingSplineSurfaceDoc {
         BlendingSplineSurfaceDoc {
             model: Box::new(SurfaceDocument::Torus(TorusDoc::default())),
             local_surfaces: [6, 4],
+            knots_u: None,
+            knots_v: None,
             local: None,
             bfunction: None,
             closed_u: None,

@@ -91,15 +91,15 @@ pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
     selected_handle(ui, studio);
 }
 
-/// The registry's panel actions (insert and remove a knot, elevate the degree) as
-/// buttons, and the tolerance of a removal; on a spline `surface` only knot insertion
-/// (a click inserts a u-knot, Shift + click a v-knot).
-fn knot_edits(ui: &mut egui::Ui, studio: &mut Studio, surface: bool) {
+/// The registry's panel actions among `offered` as buttons (an armed tool's shown
+/// selected); a click queues the action.
+fn action_buttons(ui: &mut egui::Ui, studio: &mut Studio, offered: &[Action]) {
     ui.horizontal_wrapped(|ui| {
-        for s in ACTIONS.iter().filter(|s| s.panel && (!surface || s.action == Action::InsertKnot)) {
+        for s in ACTIONS.iter().filter(|s| s.panel && offered.contains(&s.action)) {
             let armed = match s.action {
                 Action::InsertKnot => studio.knot_tool == Some(KnotTool::Insert),
                 Action::RemoveKnot => studio.knot_tool == Some(KnotTool::Remove),
+                Action::InsertLocal => studio.knot_tool == Some(KnotTool::InsertLocal),
                 _ => false,
             };
             let button = ui.add(egui::Button::new(s.label).selected(armed)).on_hover_text(s.help);
@@ -109,6 +109,15 @@ fn knot_edits(ui: &mut egui::Ui, studio: &mut Studio, surface: bool) {
             }
         }
     });
+}
+
+/// The knot edits (insert and remove a knot, elevate the degree) as buttons, and the
+/// tolerance of a removal; on a spline `surface` only knot insertion (a click inserts a
+/// u-knot, Shift + click a v-knot).
+fn knot_edits(ui: &mut egui::Ui, studio: &mut Studio, surface: bool) {
+    let offered: &[Action] =
+        if surface { &[Action::InsertKnot] } else { &[Action::InsertKnot, Action::RemoveKnot, Action::ElevateDegree] };
+    action_buttons(ui, studio, offered);
     if surface {
         ui.label("Insert knot, then click: a u-knot (Shift + click: a v-knot)");
         return;
@@ -158,8 +167,10 @@ fn style(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
 
 fn blending_curve(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
     if read(studio, object, "/shape/model").is_some() {
-        count(ui, studio, object, "/shape/local_curves", "local curves", 10);
+        local_count(ui, studio, object, ["/shape/local_curves", "/shape/knots"], "local curves", 10);
         local_kind(ui, studio, object, false);
+        action_buttons(ui, studio, &[Action::InsertLocal]);
+        ui.label("Insert local piece, then click on the curve: a local curve there");
     }
     let closed = is_closed(studio, object);
     toggle(ui, studio, object, "/shape/closed", "closed", closed);
@@ -167,16 +178,40 @@ fn blending_curve(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
 }
 
 fn blending_surface(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
-    count(ui, studio, object, "/shape/local_surfaces/0", "patches in u", 4);
-    count(ui, studio, object, "/shape/local_surfaces/1", "patches in v", 4);
+    local_count(ui, studio, object, ["/shape/local_surfaces/0", "/shape/knots_u"], "patches in u", 4);
+    local_count(ui, studio, object, ["/shape/local_surfaces/1", "/shape/knots_v"], "patches in v", 4);
+    action_buttons(ui, studio, &[Action::InsertLocal]);
+    ui.label("Insert local piece, then click: a row of patches along u (Shift + click: along v)");
     local_kind(ui, studio, object, true);
     toggle(ui, studio, object, "/shape/closed_u", "closed in u", true);
     toggle(ui, studio, object, "/shape/closed_v", "closed in v", true);
     bfunction(ui, studio, object);
 }
 
+/// The number of local pieces in one direction: an editable count over even knots; once
+/// a local was inserted the knots are explicit (`knots`), the count follows them, and a
+/// button takes them back to even spacing (one edit; the count stays).
+/// `pointers` are the count's and the knots'.
+fn local_count(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointers: [&str; 2], label: &str, default: u64) {
+    let [pointer, knots] = pointers;
+    if read(studio, object, knots).is_none() {
+        count(ui, studio, object, pointer, label, default);
+        return;
+    }
+    let n = read(studio, object, pointer).and_then(|v| v.as_u64()).unwrap_or(0);
+    ui.horizontal(|ui| {
+        ui.label(format!("{label}: {n} (knots as inserted)"));
+        let button = ui.button("even knots").on_hover_text("space the knots evenly again (the count can then change)");
+        studio.widgets.push((format!("even knots {label}"), super::rect(&button)));
+        if button.clicked() {
+            write(studio, object, knots, None);
+        }
+    });
+    error_label(ui, studio, knots);
+}
+
 /// The kind of locals made from the model (Bézier of a degree, the model itself, arcs for
-/// curves) and, for curves, the knot spacing.
+/// curves) and, for curves with knots not given explicitly, the knot spacing.
 fn local_kind(ui: &mut egui::Ui, studio: &mut Studio, object: usize, surface: bool) {
     let local = read(studio, object, "/shape/local").unwrap_or_else(|| json!({"type": "bezier"}));
     let kind = local.get("type").and_then(Value::as_str).unwrap_or("bezier").to_string();
@@ -194,7 +229,8 @@ fn local_kind(ui: &mut egui::Ui, studio: &mut Studio, object: usize, surface: bo
     if kind == "bezier" {
         bezier_degree(ui, studio, object, &local, surface);
     }
-    if !surface {
+    // Explicit knots (after an insertion) say where the locals are: no spacing to choose.
+    if !surface && read(studio, object, "/shape/knots").is_none() {
         let spacing = read(studio, object, "/shape/knot_spacing").and_then(|v| v.as_str().map(String::from));
         let current = spacing.unwrap_or_else(|| "uniform".into());
         let mut chosen = current.clone();

@@ -172,14 +172,51 @@ impl<const D: usize> BlendingSplineCurve<D> {
     /// }
     /// ```
     pub fn from_model(model: Arc<dyn Curve<D>>, local_curves: usize, options: &BlendingCurveOptions) -> Result<Self> {
-        let (kind, spacing) = (options.local, options.spacing);
+        let spacing = options.spacing;
         let closed = options.closed.unwrap_or_else(|| model.is_closed());
         let uniform = BlendKnots::uniform(model.domain(), local_curves, closed, "local_curves")?;
         let knots = match spacing {
             KnotSpacing::Uniform => uniform,
             KnotSpacing::ChordLength => BlendKnots::new(chord_length_knots(model.as_ref(), uniform.values()), closed)?,
         };
-        let mut locals = Vec::with_capacity(local_curves);
+        Self::built(model, knots, options)
+    }
+
+    /// Locals made from `model` as `options` say, at the given `knots` (uneven ones, as
+    /// [`Self::insert_local`] leaves them; `options.spacing` and `options.closed` are the
+    /// knots' own). The knots must span the model's domain: their first and last value are
+    /// its ends (to 10⁻¹² times its length, or 10⁻¹² when it is shorter than 1), so a closed spline's period is the model's.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use splinekit::blend::{BlendKnots, BlendingCurveOptions, BlendingSplineCurve};
+    /// use splinekit::curve::Curve;
+    /// use splinekit::curve::model::Circle;
+    /// use std::f64::consts::TAU;
+    /// let circle = Arc::new(Circle::new(1.0).unwrap());
+    /// let knots = BlendKnots::new(vec![0.0, 1.0, 1.5, 4.0, TAU], true).unwrap();
+    /// let c = BlendingSplineCurve::from_model_with_knots(circle.clone(), knots, &BlendingCurveOptions::default()).unwrap();
+    /// assert_eq!(c.local_count(), 4);
+    /// assert!((c.point(1.5) - circle.point(1.5)).norm() < 1e-15);
+    /// let short = BlendKnots::new(vec![0.0, 1.0, 2.0, 3.0], true).unwrap();
+    /// let e = BlendingSplineCurve::from_model_with_knots(circle, short, &BlendingCurveOptions::default());
+    /// assert!(e.err().unwrap().to_string().contains("knots"));
+    /// ```
+    pub fn from_model_with_knots(
+        model: Arc<dyn Curve<D>>,
+        knots: BlendKnots,
+        options: &BlendingCurveOptions,
+    ) -> Result<Self> {
+        knots.check_spans(model.domain(), "knots")?;
+        Self::built(model, knots, options)
+    }
+
+    /// Locals of `options.local` from `model` at `knots` (`options.closed` is the knots').
+    fn built(model: Arc<dyn Curve<D>>, knots: BlendKnots, options: &BlendingCurveOptions) -> Result<Self> {
+        let (kind, spacing) = (options.local, options.spacing);
+        let mut locals = Vec::with_capacity(knots.count());
         for k in 0..knots.count() {
             locals.push(Local::new(local_from_model(&model, kind, &knots, k)?, knots.centre(k)));
         }
@@ -259,25 +296,73 @@ impl<const D: usize> BlendingSplineCurve<D> {
         &self.bfunction
     }
 
-    /// Inserts a local curve at the new knot `t` and returns its index. Built from a model,
-    /// the new local is made from the model like the others; otherwise it is the cubic
-    /// Bézier Hermite-fitted to the current curve at t. The neighbours keep their curves
-    /// (they are functions of the global parameter), so the shape changes only on the two
-    /// intervals next to t, and the curve still passes through every local's knot point.
+    /// Inserts a local curve at the new knot t* (strictly inside an interval [c_k, c_{k+1}])
+    /// and returns its index, keeping the shape as closely as one new local allows.
+    ///
+    /// Method: with Bézier locals of degree d (or other explicit locals, d = 3) the new
+    /// local is the Bézier of degree d Hermite-fitted to the *current* curve at t*: its
+    /// value and first d derivatives there (the curve's Taylor polynomial of degree d at
+    /// t*: the Hermite construction of every Bézier local, applied to the curve), on its
+    /// support [c_k, c_{k+1}]. Sub-curve and arc locals made from a model get a new local
+    /// of their kind made from the model at t*.
+    /// The neighbours keep their polynomials: a Bézier neighbour whose support changes is
+    /// re-expressed on the new one ([`super::hermite::rebased`], exact up to rounding).
+    ///
+    /// The new local's frame is the identity about the model's point at t* (built from a
+    /// model: the centre every local of such a spline has, edited or not), else about its
+    /// own point there.
+    ///
+    /// Exactness (ERBS, whose derivatives all vanish at 0 and 1): outside (c_k, c_{k+1})
+    /// the curve does not change; at c_k, t* and c_{k+1} it keeps its value and first d
+    /// derivatives (all of them at c_k and c_{k+1}). Inside, on [c_k, t*] the curve changes
+    /// from ℓ_k + B(w)(ℓ_{k+1} − ℓ_k) = c to ℓ_k + B(w′)(ℓ* − ℓ_k), so since 0 ≤ B ≤ 1,
+    /// |Δc| ≤ |ℓ* − c| + |c − ℓ_k| (and |ℓ* − c| + |c − ℓ_{k+1}| on [t*, c_{k+1}]): the
+    /// Taylor remainder of the new local plus the neighbour's distance from the curve,
+    /// O(h^{d+1}) for locals fitted to a smooth model on knots h apart. Sub-curve locals of
+    /// an untransformed model-built spline are all the model, and then the curve does not
+    /// change at all.
     pub fn insert_local(&mut self, t: f64) -> Result<usize> {
         let mut knots = self.knots.clone();
         let k = knots.insert(t)?;
-        let curve = match &self.source {
-            Some(src) => local_from_model(&src.model, src.kind, &knots, k)?,
-            None => {
-                let mut target = [Point::<D>::zeros(); 4];
-                self.eval(t, &mut target);
-                LocalCurve::bezier(hermite_bezier(&target, knots.support(k), t)?)
+        let n = self.locals.len();
+        let neighbour = &self.locals[(k + n - 1) % n].curve;
+        let curve = match (&self.source, neighbour) {
+            (Some(src), _) if !matches!(src.kind, LocalKind::Bezier(_)) => {
+                local_from_model(&src.model, src.kind, &knots, k)?
             }
+            (_, LocalCurve::Bezier { fitted, .. }) => self.taylor_local(t, fitted.curve().degree(), &knots, k)?,
+            (_, LocalCurve::General(_)) => self.taylor_local(t, 3, &knots, k)?,
+        };
+        // The frame's centre: the model's point at t*, as for every local made from a
+        // model (edited or not); else the new local's own point there.
+        let origin = match &self.source {
+            Some(src) => src.model.point(t),
+            None => Local::new(curve.clone(), t).origin,
         };
         self.knots = knots;
-        self.locals.insert(k, Local::new(curve, t));
+        self.locals.insert(k, Local { curve, origin, transform: Affine::identity() });
+        // The neighbours k − 1 and k + 1 (wrapping when closed; an open spline has both,
+        // since t* is strictly inside the domain).
+        let m = self.locals.len();
+        for j in [(k + m - 1) % m, (k + 1) % m] {
+            let support = self.knots.support(j);
+            let local = &mut self.locals[j];
+            if let LocalCurve::Bezier { fitted, .. } = &local.curve {
+                let moved = super::hermite::rebased(fitted, support)?;
+                let transform = local.transform;
+                local.curve = LocalCurve::bezier(moved);
+                local.set_transform(transform);
+            }
+        }
         Ok(k)
+    }
+
+    /// The Bézier of degree d on local k's support (in `knots`) matching the curve's value
+    /// and first d derivatives at t.
+    fn taylor_local(&self, t: f64, d: usize, knots: &BlendKnots, k: usize) -> Result<LocalCurve<D>> {
+        let mut target = vec![Point::<D>::zeros(); d + 1];
+        self.eval(t, &mut target);
+        Ok(LocalCurve::bezier(hermite_bezier(&target, knots.support(k), t)?))
     }
 
     /// Splits interior knot k: the knot is doubled and local k copied, so the two copies

@@ -72,26 +72,26 @@ impl Default for BlendingSurfaceOptions {
 
 /// A Bézier patch on its support in the global parameters.
 #[derive(Clone)]
-struct HermitePatch<const D: usize> {
-    degrees: (usize, usize),
+pub(super) struct HermitePatch<const D: usize> {
+    pub(super) degrees: (usize, usize),
     /// The net as fitted (row-major, u first), in the model's coordinates.
-    net: Vec<Point<D>>,
+    pub(super) net: Vec<Point<D>>,
     /// The net with the frame applied.
-    world: Vec<Point<D>>,
-    support: ParamRect,
+    pub(super) world: Vec<Point<D>>,
+    pub(super) support: ParamRect,
 }
 
 #[derive(Clone)]
-enum PatchShape<const D: usize> {
+pub(super) enum PatchShape<const D: usize> {
     Shared(Arc<dyn Surface<D>>),
     Bezier(HermitePatch<D>),
 }
 
 #[derive(Clone)]
-struct LocalPatch<const D: usize> {
-    shape: PatchShape<D>,
-    origin: Point<D>,
-    transform: Affine<D>,
+pub(super) struct LocalPatch<const D: usize> {
+    pub(super) shape: PatchShape<D>,
+    pub(super) origin: Point<D>,
+    pub(super) transform: Affine<D>,
 }
 
 impl<const D: usize> LocalPatch<D> {
@@ -128,7 +128,7 @@ impl<const D: usize> LocalPatch<D> {
     fn to_world(&self, out: &mut [Point<D>]) {
         self.transform.apply_derivatives_about(&self.origin, out);
     }
-    fn set_transform(&mut self, t: Affine<D>) {
+    pub(super) fn set_transform(&mut self, t: Affine<D>) {
         self.transform = t;
         if let PatchShape::Bezier(p) = &mut self.shape {
             for (w, c) in p.world.iter_mut().zip(&p.net) {
@@ -153,12 +153,12 @@ fn scaled_bernstein(d: usize, support: Interval, x: f64, order: usize, out: &mut
 #[derive(Clone)]
 pub struct BlendingSplineSurface<const D: usize> {
     /// Patch (k, l) at index k·n_v + l.
-    patches: Vec<LocalPatch<D>>,
-    knots_u: BlendKnots,
-    knots_v: BlendKnots,
+    pub(super) patches: Vec<LocalPatch<D>>,
+    pub(super) knots_u: BlendKnots,
+    pub(super) knots_v: BlendKnots,
     bfunction: BFunction,
-    model: Arc<dyn Surface<D>>,
-    kind: PatchKind,
+    pub(super) model: Arc<dyn Surface<D>>,
+    pub(super) kind: PatchKind,
 }
 
 impl<const D: usize> BlendingSplineSurface<D> {
@@ -192,7 +192,50 @@ impl<const D: usize> BlendingSplineSurface<D> {
         );
         let knots_u = BlendKnots::uniform(model.domain_u(), counts.0, closed.0, "local_surfaces[0]")?;
         let knots_v = BlendKnots::uniform(model.domain_v(), counts.1, closed.1, "local_surfaces[1]")?;
-        if counts.0 * counts.1 > 1_000_000 {
+        Self::built(model, (knots_u, knots_v), kind, bfunction)
+    }
+
+    /// Patches made from `model` as `options` say at the given knots in u and v (uneven
+    /// ones, as [`Self::insert_knot_line`] leaves them; closedness is the knots' own, and
+    /// `options.closed_u`/`closed_v` are not read). Each knot vector must span the model's
+    /// domain in its direction (its first and last value the ends, to 10⁻¹² times
+    /// max(length, 1)); errors name `knots_u` or `knots_v` and the numbers.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use splinekit::blend::{BlendKnots, BlendingSplineSurface, BlendingSurfaceOptions};
+    /// use splinekit::surface::Surface;
+    /// use splinekit::surface::model::Plane;
+    /// use splinekit::Point;
+    /// let plane: Arc<dyn Surface<3>> = Arc::new(Plane::new(Point::<3>::zeros(), Point::<3>::x(), Point::<3>::y()).unwrap());
+    /// let (du, dv) = (plane.domain_u(), plane.domain_v());
+    /// let ku = BlendKnots::new(vec![du.start, du.lerp(0.2), du.end], false).unwrap();
+    /// let kv = BlendKnots::new(vec![dv.start, dv.end], false).unwrap();
+    /// let s = BlendingSplineSurface::from_model_with_knots(plane.clone(), (ku, kv), &BlendingSurfaceOptions::default()).unwrap();
+    /// assert_eq!(s.local_count(), (3, 2));
+    /// let (u, v) = (du.lerp(0.3), dv.lerp(0.6));
+    /// assert!((s.point(u, v) - plane.point(u, v)).norm() < 1e-12);
+    /// ```
+    pub fn from_model_with_knots(
+        model: Arc<dyn Surface<D>>,
+        (knots_u, knots_v): (BlendKnots, BlendKnots),
+        options: &BlendingSurfaceOptions,
+    ) -> Result<Self> {
+        knots_u.check_spans(model.domain_u(), "knots_u")?;
+        knots_v.check_spans(model.domain_v(), "knots_v")?;
+        Self::built(model, (knots_u, knots_v), options.local, options.bfunction.clone())
+    }
+
+    fn built(
+        model: Arc<dyn Surface<D>>,
+        (knots_u, knots_v): (BlendKnots, BlendKnots),
+        kind: PatchKind,
+        bfunction: BFunction,
+    ) -> Result<Self> {
+        let counts = (knots_u.count(), knots_v.count());
+        if counts.0 * counts.1 > MAX_PATCHES {
             return Err(Error::invalid("local_surfaces", format!("at most 10⁶ patches, got {}", counts.0 * counts.1)));
         }
         if let PatchKind::Bezier(du, dv) = kind
@@ -223,6 +266,10 @@ impl<const D: usize> BlendingSplineSurface<D> {
     /// Replaces the B-function.
     pub fn set_bfunction(&mut self, bfunction: BFunction) {
         self.bfunction = bfunction;
+    }
+    /// The B-function.
+    pub fn bfunction(&self) -> &BFunction {
+        &self.bfunction
     }
     /// (n_u, n_v).
     pub fn local_count(&self) -> (usize, usize) {
@@ -387,6 +434,9 @@ impl<const D: usize> BlendingSplineSurface<D> {
     }
 }
 
+/// Largest number of patches of a surface.
+pub(super) const MAX_PATCHES: usize = 1_000_000;
+
 fn make_patch<const D: usize>(
     model: &Arc<dyn Surface<D>>,
     kind: PatchKind,
@@ -402,33 +452,45 @@ fn make_patch<const D: usize>(
         PatchKind::Bezier(du, dv) => {
             let mut g = vec![Point::<D>::zeros(); (du + 1) * (dv + 1)];
             model.eval_partials(uc, vc, du, dv, &mut g);
-            if let Some(i) = g.iter().position(|p| !p.iter().all(|x| x.is_finite())) {
-                return Err(Error::numerical(
-                    "blending-spline surface",
-                    format!("the model's partial ({}, {}) at ({uc}, {vc}) is not finite", i / (dv + 1), i % (dv + 1)),
-                ));
-            }
             let support = ParamRect::new(knots_u.support(k), knots_v.support(l));
-            let (su, sv) = (support.u, support.v);
-            let hu = inverse_hermite_matrix(du, (uc - su.start) / su.length(), su.length())?;
-            let hv = inverse_hermite_matrix(dv, (vc - sv.start) / sv.length(), sv.length())?;
-            // C = H_u⁻¹ G H_v⁻ᵀ.
-            let mut net = vec![Point::<D>::zeros(); (du + 1) * (dv + 1)];
-            for a in 0..=du {
-                for b in 0..=dv {
-                    let mut acc = Point::<D>::zeros();
-                    for i in 0..=du {
-                        for j in 0..=dv {
-                            acc += g[i * (dv + 1) + j] * (hu[(a, i)] * hv[(b, j)]);
-                        }
-                    }
-                    net[a * (dv + 1) + b] = acc;
-                }
-            }
-            PatchShape::Bezier(HermitePatch { degrees: (du, dv), world: net.clone(), net, support })
+            PatchShape::Bezier(hermite_patch(&g, (du, dv), support, (uc, vc), "the model's")?)
         }
     };
     Ok(LocalPatch { shape, origin, transform: Affine::identity() })
+}
+
+/// The Bézier patch of degrees (d_u, d_v) on `support` whose mixed partials ∂^{i,j} at
+/// `at` (i ≤ d_u, j ≤ d_v) are `g` (row-major, i first): the net C = H_u⁻¹ G H_v⁻ᵀ.
+/// `whose` names the partials' source in the error for a non-finite one.
+pub(super) fn hermite_patch<const D: usize>(
+    g: &[Point<D>],
+    (du, dv): (usize, usize),
+    support: ParamRect,
+    (uc, vc): (f64, f64),
+    whose: &str,
+) -> Result<HermitePatch<D>> {
+    if let Some(i) = g.iter().position(|p| !p.iter().all(|x| x.is_finite())) {
+        return Err(Error::numerical(
+            "blending-spline surface",
+            format!("{whose} partial ({}, {}) at ({uc}, {vc}) is not finite", i / (dv + 1), i % (dv + 1)),
+        ));
+    }
+    let (su, sv) = (support.u, support.v);
+    let hu = inverse_hermite_matrix(du, (uc - su.start) / su.length(), su.length())?;
+    let hv = inverse_hermite_matrix(dv, (vc - sv.start) / sv.length(), sv.length())?;
+    let mut net = vec![Point::<D>::zeros(); (du + 1) * (dv + 1)];
+    for a in 0..=du {
+        for b in 0..=dv {
+            let mut acc = Point::<D>::zeros();
+            for i in 0..=du {
+                for j in 0..=dv {
+                    acc += g[i * (dv + 1) + j] * (hu[(a, i)] * hv[(b, j)]);
+                }
+            }
+            net[a * (dv + 1) + b] = acc;
+        }
+    }
+    Ok(HermitePatch { degrees: (du, dv), world: net.clone(), net, support })
 }
 
 impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {

@@ -166,10 +166,15 @@ impl BlendKnots {
 
     /// Inserts the knot `t` strictly inside a non-empty interval; returns its index.
     pub fn insert(&mut self, t: f64) -> Result<usize> {
+        self.insert_as(t, "t")
+    }
+
+    /// [`Self::insert`], its errors naming `field` (the parameter's name where it came from).
+    pub fn insert_as(&mut self, t: f64, field: &str) -> Result<usize> {
         let dom = self.domain();
         if !(t > dom.start && t < dom.end) || self.knots.contains(&t) {
             return Err(Error::invalid(
-                "t",
+                field,
                 format!(
                     "a new knot must lie strictly inside the domain [{}, {}] and not on a knot, got {t}",
                     dom.start, dom.end
@@ -177,11 +182,28 @@ impl BlendKnots {
             ));
         }
         if self.count() >= MAX_LOCALS {
-            return Err(Error::invalid("t", format!("at most {MAX_LOCALS} local pieces")));
+            return Err(Error::invalid(field, format!("at most {MAX_LOCALS} local pieces")));
         }
         let k = self.knots.partition_point(|&c| c < t);
         self.knots.insert(k, t);
         Ok(k)
+    }
+
+    /// An error naming `field` unless the knots run from the start to the end of `domain`
+    /// (to 10⁻¹² times max(its length, 1)): knots for locals made from a model on `domain`.
+    pub fn check_spans(&self, domain: Interval, field: &str) -> Result<()> {
+        let got = self.domain();
+        let slack = 1e-12 * domain.length().abs().max(1.0);
+        if (got.start - domain.start).abs() > slack || (got.end - domain.end).abs() > slack {
+            return Err(Error::invalid(
+                field,
+                format!(
+                    "the knots must span the model's domain [{}, {}], got [{}, {}]",
+                    domain.start, domain.end, got.start, got.end
+                ),
+            ));
+        }
+        Ok(())
     }
 
     /// Doubles the interior knot k (a C⁰ joint); the copy gets index k + 1.

@@ -7,6 +7,7 @@ pub mod blending_spline;
 pub mod blending_surface;
 mod curve_batch;
 pub mod hermite;
+pub mod knot_line;
 pub mod knots;
 pub mod leibniz;
 pub mod osculating_arc;
