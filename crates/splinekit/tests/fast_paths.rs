@@ -258,6 +258,12 @@ fn check_curve<const D: usize>(case: &CurveCase) {
         }
         let want = truth(t, Limit::Right);
         assert_close(&curve.point(t), &want[0], tolerance(p, 0, spread), &|| format!("{case:?}: point({t})"));
+        if !case.rational {
+            // point(t), the Bernstein sum alone, is the same span's sum as the right limit's
+            // first output: the same bits.
+            curve.eval_side(t, Side::Right, &mut out);
+            assert_eq!(curve.point(t), out[0], "{case:?} knots {kn:?}: point({t}) differs from eval_side");
+        }
         assert_close(&curve.derivative(t, k), &want[k], tolerance(p, k, spread), &|| {
             format!("{case:?} knots {kn:?}: derivative({t}, {k})")
         });

@@ -100,6 +100,20 @@ fn main() {
         });
         report("sorted points, 10⁵ control points", ns, floor(repeats, M, 1));
     }
+    if run("random points") {
+        // The peers' workload: point(t) one parameter at a time, random order, summed.
+        let mut s = 0x9E3779B97F4A7C15u64;
+        let random: Vec<f64> = (0..M)
+            .map(|_| {
+                s ^= s << 13;
+                s ^= s >> 7;
+                s ^= s << 17;
+                (s >> 11) as f64 / (1u64 << 53) as f64
+            })
+            .collect();
+        let ns = best(repeats, M, &mut || random.iter().map(|&t| c.point(t)[1]).sum());
+        report("random points, point(t)", ns, floor(repeats, M, 1));
+    }
     if run("sorted first derivative") {
         let ns = best(repeats, M, &mut || {
             c.eval_many(&sorted, 1, &mut out[..2 * M]);
