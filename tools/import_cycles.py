@@ -208,11 +208,17 @@ class Crate:
         """{target module: first line naming it} for one file."""
         code = self.code[path]
         named = []
+        uses = []
         for m in USE.finditer(code):
             line = code.count("\n", 0, m.start()) + 1
+            uses.append((m.start(), m.end()))
             for parts, _ in use_paths(m.group(2)):
                 named.append((parts, line))
         for m in PATH.finditer(code):
+            # A `use` statement's paths are its expanded trees above; the bare prefix of a
+            # braced tree (`crate::a::{B, C}` → `crate::a`) names no item of its own.
+            if any(a <= m.start() < b for a, b in uses):
+                continue
             named.append((m.group(1).split("::"), code.count("\n", 0, m.start()) + 1))
         out = {}
         for parts, line in named:

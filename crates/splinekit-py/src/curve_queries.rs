@@ -3,7 +3,7 @@
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use splinekit::Point;
-use splinekit::curve::{Curve, curvature_from};
+use splinekit::curve::{Curve, CurveArcLength, CurveNearest, curvature_from};
 use splinekit_scene::{Curves, DimensionVisitor};
 
 use crate::arrays::Numbers;

@@ -5,7 +5,7 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use splinekit::Interval;
-use splinekit::surface::{Surface, unit_normal};
+use splinekit::surface::{Surface, SurfaceNearest, unit_normal};
 use splinekit_scene::budget::{Cost, F64};
 use splinekit_scene::{AnySurface, DimensionVisitor, SurfaceDocument, Surfaces};
 

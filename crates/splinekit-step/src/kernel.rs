@@ -2,7 +2,7 @@
 //! (closest points, splitting, degree elevation of parameter-space loops).
 
 use splinekit::Point;
-use splinekit::curve::{Curve, NurbsCurve};
+use splinekit::curve::{CurveNearest, NurbsCurve};
 
 use crate::error::{Result, StepError};
 use crate::geometry::{P3, SplineCurve};

@@ -307,11 +307,4 @@ impl Surface<3> for KeptSurface {
     fn curvatures(&self, u: f64, v: f64) -> Option<Curvatures> {
         self.surface.curvatures(u, v)
     }
-    fn closest_point(
-        &self,
-        query: &Point<3>,
-        accuracy: f64,
-    ) -> splinekit::Result<splinekit::query::NearestOnSurface<3>> {
-        self.surface.closest_point(query, accuracy)
-    }
 }

@@ -4,7 +4,7 @@
 //! cargo run -p splinekit --example nurbs_operations
 
 use splinekit::Point;
-use splinekit::curve::{CircleFrame, Curve, NurbsCurve};
+use splinekit::curve::{CircleFrame, Curve, CurveArcLength, NurbsCurve};
 
 fn main() -> splinekit::Result<()> {
     let circle = NurbsCurve::<3>::circle(&CircleFrame::in_xy_plane(Point::<3>::zeros(), 2.0))?;

@@ -6,7 +6,7 @@ use common::*;
 use proptest::prelude::*;
 use splinekit::Point;
 use splinekit::basis::{Side, basis_derivatives, basis_function, basis_functions, find_span};
-use splinekit::curve::{BSplineCurve, CircleFrame, Curve, NurbsCurve};
+use splinekit::curve::{BSplineCurve, CircleFrame, Curve, CurveArcLength, NurbsCurve};
 
 fn sample_curve(degree: usize, n: usize) -> BSplineCurve<3> {
     let pts = (0..n)

@@ -5,7 +5,7 @@ mod common;
 use common::*;
 use splinekit::Point;
 use splinekit::curve::model::{Circle, Ellipse, Rose};
-use splinekit::curve::{BSplineCurve, CircleFrame, Curve, NurbsCurve};
+use splinekit::curve::{BSplineCurve, CircleFrame, Curve, CurveNearest, NurbsCurve};
 use splinekit::query::CurveProjector;
 use std::f64::consts::{PI, TAU};
 
@@ -150,7 +150,7 @@ mod surfaces {
     use super::*;
     use splinekit::query::{NearestOnSurface, SurfaceProjector};
     use splinekit::surface::model::{Cone, Plane, Sphere, Torus};
-    use splinekit::surface::{BSplineSurface, Surface};
+    use splinekit::surface::{BSplineSurface, Surface, SurfaceNearest};
     use std::f64::consts::FRAC_PI_2;
 
     fn bicubic() -> BSplineSurface<3> {

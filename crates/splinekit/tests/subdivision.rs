@@ -3,7 +3,7 @@
 mod common;
 use common::*;
 use splinekit::Point;
-use splinekit::curve::Curve;
+use splinekit::curve::{Curve, CurveNearest};
 use splinekit::subdivision::{
     ChaikinOptions, FourPointOptions, chaikin, four_point, lane_riesenfeld, lane_riesenfeld_limit,
 };

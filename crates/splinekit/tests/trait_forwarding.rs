@@ -8,7 +8,6 @@ use std::sync::Arc;
 
 use splinekit::basis::Side;
 use splinekit::curve::{Curve, FrenetFrame};
-use splinekit::query::{Nearest, NearestOnSurface};
 use splinekit::surface::{Curvatures, FundamentalForms, Surface, TrimLoops};
 use splinekit::{Interval, Point};
 
@@ -57,12 +56,6 @@ impl Curve<2> for SentinelCurve {
     fn frame(&self, _t: f64) -> Option<FrenetFrame<2>> {
         Some(FrenetFrame { tangent: p2(10.0), normal: None, binormal: None, curvature: 10.0 })
     }
-    fn length(&self, tolerance: f64) -> f64 {
-        11.0 + tolerance
-    }
-    fn closest_point(&self, query: &Point<2>, accuracy: f64) -> splinekit::Result<Nearest<2>> {
-        Ok(Nearest { t: 12.0, point: *query, distance: accuracy })
-    }
 }
 
 /// Every method of `c` gives the sentinel's answer.
@@ -82,9 +75,6 @@ fn check_curve(name: &str, c: &impl Curve<2>) {
     assert_eq!(c.tangent(0.0), p2(8.0), "{name}: tangent");
     assert_eq!(c.curvature(0.0), 9.0, "{name}: curvature");
     assert_eq!(c.frame(0.0).map(|f| f.curvature), Some(10.0), "{name}: frame");
-    assert_eq!(c.length(0.5), 11.5, "{name}: length");
-    let nearest = c.closest_point(&p2(0.25), 0.125).unwrap();
-    assert_eq!((nearest.t, nearest.point, nearest.distance), (12.0, p2(0.25), 0.125), "{name}: closest_point");
 }
 
 #[test]
@@ -150,9 +140,6 @@ impl Surface<3> for SentinelSurface {
     fn curvatures(&self, _u: f64, _v: f64) -> Option<Curvatures> {
         Some(Curvatures { gaussian: 12.0, mean: 0.0, principal: (0.0, 0.0) })
     }
-    fn closest_point(&self, query: &Point<3>, accuracy: f64) -> splinekit::Result<NearestOnSurface<3>> {
-        Ok(NearestOnSurface { u: 13.0, v: 14.0, point: *query, distance: accuracy })
-    }
     fn breakpoints_u(&self) -> Vec<f64> {
         vec![0.0, 0.5, 2.0]
     }
@@ -181,12 +168,6 @@ fn check_surface(name: &str, s: &impl Surface<3>) {
     assert_eq!(s.normal(0.0, 0.0), Some(p3(10.0)), "{name}: normal");
     assert_eq!(s.fundamental_forms(0.0, 0.0).map(|f| f.e), Some(11.0), "{name}: fundamental_forms");
     assert_eq!(s.curvatures(0.0, 0.0).map(|c| c.gaussian), Some(12.0), "{name}: curvatures");
-    let nearest = s.closest_point(&p3(0.5), 0.125).unwrap();
-    assert_eq!(
-        (nearest.u, nearest.v, nearest.point, nearest.distance),
-        (13.0, 14.0, p3(0.5), 0.125),
-        "{name}: closest_point"
-    );
     assert_eq!(s.breakpoints_u(), vec![0.0, 0.5, 2.0], "{name}: breakpoints_u");
     assert_eq!(s.breakpoints_v(), vec![-2.0, -0.5, 0.0], "{name}: breakpoints_v");
 }

@@ -1,7 +1,7 @@
 //! `eval --arc-length`: curve parameters at equal arc-length spacing.
 
 use anyhow::Result;
-use splinekit::curve::Curve;
+use splinekit::curve::{Curve, CurveArcLength};
 use splinekit::query::ArcLengthTable;
 
 /// Relative accuracy of the arc lengths behind `--arc-length` (of the curve's length).

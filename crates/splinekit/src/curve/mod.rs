@@ -18,6 +18,8 @@ pub mod span_kernel;
 pub mod traits;
 
 pub use crate::Interval;
+pub use crate::ops::length::CurveArcLength;
+pub use crate::query::project_curve::CurveNearest;
 pub use bezier::BezierCurve;
 pub use bspline::BSplineCurve;
 pub use catmull_rom::CatmullRomCurve;

@@ -35,7 +35,7 @@ pub struct FrenetFrame<const D: usize> {
 /// # Examples
 ///
 /// ```
-/// use splinekit::curve::Curve;
+/// use splinekit::curve::{Curve, CurveArcLength};
 /// use splinekit::curve::model::Circle;
 /// // The circle of radius 2: curvature ½ everywhere, length 4π, closed.
 /// let c = Circle::new(2.0).unwrap();
@@ -142,28 +142,6 @@ pub trait Curve<const D: usize>: Send + Sync {
         };
         Some(FrenetFrame { tangent, normal, binormal, curvature })
     }
-
-    /// Arc length of the whole curve to the absolute tolerance `tolerance`
-    /// (adaptive Gauss–Legendre, see [`crate::ops::length`]).
-    fn length(&self, tolerance: f64) -> f64 {
-        crate::ops::length::arc_length(self, self.domain(), tolerance)
-    }
-
-    /// The point of the curve nearest to `query`, its distance within `accuracy`
-    /// (absolute, ≥ 0) of the true minimum; an error for a non-finite query or accuracy.
-    /// To project many points, build a [`CurveProjector`](crate::query::CurveProjector)
-    /// once; for every local minimum see
-    /// [`CurveProjector::local_minima`](crate::query::CurveProjector::local_minima).
-    ///
-    /// ```
-    /// use splinekit::{Point, curve::{BSplineCurve, Curve}};
-    /// let c = BSplineCurve::<2>::clamped_uniform(1, vec![Point::<2>::new(0.0, 0.0), Point::<2>::new(4.0, 0.0)]).unwrap();
-    /// let near = c.closest_point(&Point::<2>::new(1.0, 3.0), 1e-12).unwrap();
-    /// assert!((near.t - 0.25).abs() < 1e-15 && (near.distance - 3.0).abs() < 1e-15);
-    /// ```
-    fn closest_point(&self, query: &Point<D>, accuracy: f64) -> crate::Result<crate::query::Nearest<D>> {
-        crate::query::CurveProjector::new(self).nearest(query, accuracy)
-    }
 }
 
 /// κ from first and second derivative (any dimension, Lagrange identity).
@@ -219,12 +197,6 @@ macro_rules! forward_curve {
             }
             fn frame(&self, t: f64) -> Option<FrenetFrame<D>> {
                 (**self).frame(t)
-            }
-            fn length(&self, tolerance: f64) -> f64 {
-                (**self).length(tolerance)
-            }
-            fn closest_point(&self, query: &Point<D>, accuracy: f64) -> crate::Result<crate::query::Nearest<D>> {
-                (**self).closest_point(query, accuracy)
             }
         }
     };

@@ -9,10 +9,29 @@
 
 use std::sync::OnceLock;
 
+use crate::Interval;
 use crate::Point;
 use crate::basis::Side;
-use crate::curve::{Curve, Interval};
+use crate::curve::Curve;
 use crate::quadrature::GaussLegendre;
+
+/// The arc length of a curve, a capability of every [`Curve`] (a blanket implementation):
+/// `use splinekit::curve::CurveArcLength` to call it.
+pub trait CurveArcLength<const D: usize>: Curve<D> {
+    /// Arc length of the whole curve to the absolute tolerance `tolerance`
+    /// (adaptive Gauss–Legendre, see [`crate::ops::length`]).
+    ///
+    /// ```
+    /// use splinekit::curve::{Curve, CurveArcLength, model::Circle};
+    /// let c = Circle::new(2.0).unwrap();
+    /// assert!((c.length(1e-12) - 4.0 * std::f64::consts::PI).abs() < 1e-11);
+    /// ```
+    fn length(&self, tolerance: f64) -> f64 {
+        arc_length(self, self.domain(), tolerance)
+    }
+}
+
+impl<const D: usize, C: Curve<D> + ?Sized> CurveArcLength<D> for C {}
 
 /// The smallest absolute tolerance honoured (below it, rounding dominates).
 pub const MIN_TOLERANCE: f64 = 1e-15;

@@ -12,8 +12,9 @@
 //! computed to a share of it. Where the speed |c′| vanishes on a stretch, the length does
 //! not grow there and the smallest parameter of that length is returned.
 
+use crate::Interval;
 use crate::Point;
-use crate::curve::{Curve, Interval};
+use crate::curve::Curve;
 use crate::error::{Error, Result};
 use crate::ops::length::arc_length;
 use crate::taylor;

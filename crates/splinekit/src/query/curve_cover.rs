@@ -19,9 +19,10 @@
 //! Pieces never straddle a breakpoint ([`Curve::breakpoints`]): the curve is smooth inside
 //! each, and the ends are evaluated one-sidedly.
 
+use crate::Interval;
 use crate::Point;
 use crate::basis::Side;
-use crate::curve::{Curve, Interval};
+use crate::curve::Curve;
 use crate::query::bounds::Aabb;
 
 /// Factor by which the measured midpoint error is enlarged into a bound.

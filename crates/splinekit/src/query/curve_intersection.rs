@@ -20,8 +20,9 @@
 //! to each other (in space) are reported once. A crossing is a point where the tangents
 //! make an angle with sine above [`TANGENT_SINE`]; below it the point is a tangent contact.
 
+use crate::Interval;
 use crate::Point;
-use crate::curve::{Curve, Interval};
+use crate::curve::Curve;
 use crate::error::{Error, Result};
 use crate::query::bounds::Aabb;
 use crate::query::curve_cover::{CurveCover, SearchPiece};

@@ -26,8 +26,9 @@
 //! not count, inside a larger patch) lie on the patch within the tolerance, and after
 //! [`MAX_PAIRS`] pairs at most.
 
+use crate::Interval;
 use crate::Point;
-use crate::curve::{Curve, Interval};
+use crate::curve::Curve;
 use crate::error::{Error, Result};
 use crate::query::curve_cover::{CurveCover, SearchPiece};
 use crate::query::curve_intersection::{IntersectionKind, MIN_OVERLAP, TANGENT_RESOLUTION, TANGENT_SINE};

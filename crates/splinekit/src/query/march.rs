@@ -11,8 +11,8 @@
 //! circular arc of chord h turning by θ) and θ ≤ [`MAX_TURN`]; otherwise it is halved,
 //! at most [`MAX_HALVINGS`] times.
 
+use crate::Interval;
 use crate::Point;
-use crate::curve::Interval;
 use crate::query::newton::{self, NEGLIGIBLE_STEP, QUADRATIC_STEP, Step, cap, scaled_small};
 pub use crate::query::surface_pair::{MarchPoint, Marcher};
 use crate::query::touching;

@@ -40,6 +40,6 @@ pub use curve_intersection::{
 };
 pub use curve_surface::{CurveSurfaceIntersection, intersect_curve_surface};
 pub use offset::{CurveOffset, OffsetPiece, SurfaceOffset, offset_curve, offset_surface};
-pub use project_curve::{CurveProjector, Nearest};
-pub use project_surface::{NearestOnSurface, SurfaceProjector};
+pub use project_curve::{CurveNearest, CurveProjector, Nearest};
+pub use project_surface::{NearestOnSurface, SurfaceNearest, SurfaceProjector};
 pub use surface_intersection::{EarlyStop, IntersectionBranch, intersect_surfaces};

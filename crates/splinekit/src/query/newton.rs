@@ -10,8 +10,9 @@
 //! would change which iterate a slowly converging search stops at (outputs are kept byte
 //! for byte), so each is named here once.
 
+use crate::Interval;
 use crate::Point;
-use crate::curve::{Curve, Interval};
+use crate::curve::Curve;
 use crate::surface::Surface;
 
 /// Iteration caps, one per use, named once.

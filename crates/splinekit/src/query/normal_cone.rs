@@ -61,7 +61,7 @@ pub fn transversal(tangents: &TangentCone<3>, normals: &TangentCone<3>) -> bool 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::curve::Interval;
+    use crate::Interval;
     use crate::surface::Surface;
     use crate::surface::model::Sphere;
 

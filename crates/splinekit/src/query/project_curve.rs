@@ -26,8 +26,9 @@
 use std::borrow::Cow;
 use std::collections::BinaryHeap;
 
+use crate::Interval;
 use crate::Point;
-use crate::curve::{Curve, Interval};
+use crate::curve::Curve;
 use crate::error::{Error, Result, check_points_finite};
 use crate::query::best_first::Ranked;
 use crate::query::curve_cover::{CurveCover, CurvePiece, ROUNDING, Sample, SearchPiece};
@@ -58,6 +59,27 @@ impl<const D: usize> Nearest<D> {
         Nearest { t, point, distance: (point - q).norm() }
     }
 }
+
+/// The nearest point of a curve, a capability of every [`Curve`] (a blanket
+/// implementation): `use splinekit::curve::CurveNearest` to call it.
+pub trait CurveNearest<const D: usize>: Curve<D> {
+    /// The point of the curve nearest to `query`, its distance within `accuracy`
+    /// (absolute, ≥ 0) of the true minimum; an error for a non-finite query or accuracy.
+    /// To project many points, build a [`CurveProjector`] once; for every local minimum
+    /// see [`CurveProjector::local_minima`].
+    ///
+    /// ```
+    /// use splinekit::{Point, curve::{BSplineCurve, CurveNearest}};
+    /// let c = BSplineCurve::<2>::clamped_uniform(1, vec![Point::<2>::new(0.0, 0.0), Point::<2>::new(4.0, 0.0)]).unwrap();
+    /// let near = c.closest_point(&Point::<2>::new(1.0, 3.0), 1e-12).unwrap();
+    /// assert!((near.t - 0.25).abs() < 1e-15 && (near.distance - 3.0).abs() < 1e-15);
+    /// ```
+    fn closest_point(&self, query: &Point<D>, accuracy: f64) -> Result<Nearest<D>> {
+        CurveProjector::new(self).nearest(query, accuracy)
+    }
+}
+
+impl<const D: usize, C: Curve<D> + ?Sized> CurveNearest<D> for C {}
 
 /// Projects many points onto one curve, building the curve's bounding hierarchy once.
 #[derive(Debug, Clone)]

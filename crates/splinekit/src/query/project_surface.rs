@@ -27,8 +27,8 @@
 
 use std::collections::BinaryHeap;
 
+use crate::Interval;
 use crate::Point;
-use crate::curve::Interval;
 use crate::error::Result;
 use crate::query::best_first::Ranked;
 use crate::query::bounds::Aabb;
@@ -86,6 +86,28 @@ struct Edge<const D: usize> {
     /// A box holding the whole edge.
     bounds: Aabb<D>,
 }
+
+/// The nearest point of a surface, a capability of every [`Surface`] (a blanket
+/// implementation): `use splinekit::surface::SurfaceNearest` to call it.
+pub trait SurfaceNearest<const D: usize>: Surface<D> {
+    /// The point of the surface nearest to `query`, its distance within `accuracy`
+    /// (absolute, ≥ 0) of the true minimum; an error for a non-finite query or accuracy.
+    /// Trimming is not taken into account yet: a trimmed surface is projected as its
+    /// untrimmed base surface. To project many points, build a [`SurfaceProjector`] once;
+    /// for every local minimum see [`SurfaceProjector::local_minima`].
+    ///
+    /// ```
+    /// use splinekit::{Point, surface::{SurfaceNearest, model::Sphere}};
+    /// let sphere = Sphere::new(2.0).unwrap();
+    /// let near = sphere.closest_point(&Point::<3>::new(0.0, 0.0, 5.0), 1e-12).unwrap();
+    /// assert!((near.distance - 3.0).abs() < 1e-12 && (near.point[2] - 2.0).abs() < 1e-12);
+    /// ```
+    fn closest_point(&self, query: &Point<D>, accuracy: f64) -> Result<NearestOnSurface<D>> {
+        SurfaceProjector::new(self).nearest(query, accuracy)
+    }
+}
+
+impl<const D: usize, S: Surface<D> + ?Sized> SurfaceNearest<D> for S {}
 
 /// Projects many points onto one surface, building the bounding hierarchy once.
 #[derive(Debug, Clone)]

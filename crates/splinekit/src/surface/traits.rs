@@ -206,24 +206,6 @@ pub trait Surface<const D: usize>: Send + Sync {
     fn curvatures(&self, u: f64, v: f64) -> Option<Curvatures> {
         Some(Curvatures::of(&self.fundamental_forms(u, v)?))
     }
-
-    /// The point of the surface nearest to `query`, its distance within `accuracy`
-    /// (absolute, ≥ 0) of the true minimum; an error for a non-finite query or accuracy.
-    /// Trimming is not taken into account yet: a trimmed surface is projected as its
-    /// untrimmed base surface.
-    /// To project many points, build a [`SurfaceProjector`](crate::query::SurfaceProjector)
-    /// once; for every local minimum see
-    /// [`SurfaceProjector::local_minima`](crate::query::SurfaceProjector::local_minima).
-    ///
-    /// ```
-    /// use splinekit::{Point, surface::{Surface, model::Sphere}};
-    /// let sphere = Sphere::new(2.0).unwrap();
-    /// let near = sphere.closest_point(&Point::<3>::new(0.0, 0.0, 5.0), 1e-12).unwrap();
-    /// assert!((near.distance - 3.0).abs() < 1e-12 && (near.point[2] - 2.0).abs() < 1e-12);
-    /// ```
-    fn closest_point(&self, query: &Point<D>, accuracy: f64) -> crate::Result<crate::query::NearestOnSurface<D>> {
-        crate::query::SurfaceProjector::new(self).nearest(query, accuracy)
-    }
 }
 
 /// (a × b)/|a × b| for D = 3; `None` otherwise or when a × b = 0.
@@ -366,13 +348,6 @@ macro_rules! forward_surface {
             }
             fn curvatures(&self, u: f64, v: f64) -> Option<Curvatures> {
                 (**self).curvatures(u, v)
-            }
-            fn closest_point(
-                &self,
-                query: &Point<D>,
-                accuracy: f64,
-            ) -> crate::Result<crate::query::NearestOnSurface<D>> {
-                (**self).closest_point(query, accuracy)
             }
         }
     };
