@@ -8,7 +8,7 @@ use std::sync::Arc;
 
 use splinekit::basis::Side;
 use splinekit::curve::{Curve, FrenetFrame};
-use splinekit::query::{Nearest, NearestOnSurface};
+use splinekit::query::{Aabb, Nearest, NearestOnSurface};
 use splinekit::surface::{Curvatures, FundamentalForms, Surface, TrimLoops};
 use splinekit::{Interval, Point};
 
@@ -63,6 +63,9 @@ impl Curve<2> for SentinelCurve {
     fn closest_point(&self, query: &Point<2>, accuracy: f64) -> splinekit::Result<Nearest<2>> {
         Ok(Nearest { t: 12.0, point: *query, distance: accuracy })
     }
+    fn extent(&self) -> Aabb<2> {
+        Aabb { min: p2(13.0), max: p2(14.0) }
+    }
 }
 
 /// Every method of `c` gives the sentinel's answer.
@@ -85,6 +88,7 @@ fn check_curve(name: &str, c: &impl Curve<2>) {
     assert_eq!(c.length(0.5), 11.5, "{name}: length");
     let nearest = c.closest_point(&p2(0.25), 0.125).unwrap();
     assert_eq!((nearest.t, nearest.point, nearest.distance), (12.0, p2(0.25), 0.125), "{name}: closest_point");
+    assert_eq!(c.extent(), Aabb { min: p2(13.0), max: p2(14.0) }, "{name}: extent");
 }
 
 #[test]
@@ -159,6 +163,9 @@ impl Surface<3> for SentinelSurface {
     fn breakpoints_v(&self) -> Vec<f64> {
         vec![-2.0, -0.5, 0.0]
     }
+    fn extent(&self) -> Aabb<3> {
+        Aabb { min: p3(15.0), max: p3(16.0) }
+    }
 }
 
 /// Every method of `s` gives the sentinel's answer.
@@ -189,6 +196,7 @@ fn check_surface(name: &str, s: &impl Surface<3>) {
     );
     assert_eq!(s.breakpoints_u(), vec![0.0, 0.5, 2.0], "{name}: breakpoints_u");
     assert_eq!(s.breakpoints_v(), vec![-2.0, -0.5, 0.0], "{name}: breakpoints_v");
+    assert_eq!(s.extent(), Aabb { min: p3(15.0), max: p3(16.0) }, "{name}: extent");
 }
 
 #[test]

@@ -12,6 +12,29 @@ pub struct Aabb<const D: usize> {
 }
 
 impl<const D: usize> Aabb<D> {
+    /// The empty box (min = +∞, max = −∞), which [`Aabb::include`] grows.
+    pub fn empty() -> Self {
+        Aabb { min: Point::<D>::repeat(f64::INFINITY), max: Point::<D>::repeat(f64::NEG_INFINITY) }
+    }
+
+    /// Whether the box holds no point (min > max in some coordinate).
+    pub fn is_empty(&self) -> bool {
+        (0..D).any(|k| self.min[k] > self.max[k])
+    }
+
+    /// Grows the box to hold `p`.
+    #[inline]
+    pub fn include(&mut self, p: &Point<D>) {
+        self.min = self.min.inf(p);
+        self.max = self.max.sup(p);
+    }
+
+    /// Whether `p` lies in the box grown by `margin` on every side.
+    #[inline]
+    pub fn contains(&self, p: &Point<D>, margin: f64) -> bool {
+        (0..D).all(|k| self.min[k] - margin <= p[k] && p[k] <= self.max[k] + margin)
+    }
+
     /// The smallest box holding every point, grown by `margin` on every side.
     pub fn around<'a>(points: impl IntoIterator<Item = &'a Point<D>>, margin: f64) -> Self {
         let mut min = Point::<D>::repeat(f64::INFINITY);
