@@ -1,6 +1,9 @@
 //! Indexed triangle meshes: positions, unit normals, optional (u, v) and colours, and
 //! counter-clockwise triangles (seen from the side the normals point to).
 
+use splinekit::Point;
+use splinekit::query::Aabb;
+
 /// An indexed triangle mesh.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct TriangleMesh {
@@ -35,12 +38,10 @@ impl TriangleMesh {
     pub fn area(&self) -> f64 {
         (0..self.triangles.len()).map(|t| 0.5 * self.double_area(t)).sum()
     }
-    /// The axis-aligned bounding box (min, max); `None` for an empty mesh.
-    pub fn bounds(&self) -> Option<([f64; 3], [f64; 3])> {
-        let first = *self.positions.first()?;
-        Some(self.positions.iter().fold((first, first), |(lo, hi), p| {
-            ([lo[0].min(p[0]), lo[1].min(p[1]), lo[2].min(p[2])], [hi[0].max(p[0]), hi[1].max(p[1]), hi[2].max(p[2])])
-        }))
+    /// The axis-aligned bounding box of the positions ([`Aabb::spanning`]: NaN coordinates
+    /// passed over); `None` for an empty mesh.
+    pub fn bounds(&self) -> Option<Aabb<3>> {
+        Aabb::spanning(self.positions.iter().map(|p| Point::<3>::from(*p)))
     }
     /// The volume enclosed by a closed mesh, by the divergence theorem: Σ (a−o)·((b−o) × (c−o)) / 6
     /// over the triangles, o the first vertex (positive when the triangles face outward).

@@ -482,8 +482,7 @@ fn adaptive_meshes_are_as_valid_and_follow_trims() {
     for (name, doc, shape) in model_cases() {
         let surface = surface_of(&doc);
         // A chord height of 3/1000 of the surface's size.
-        let (lo, hi) = regular(surface.as_ref(), 8, 8, MeshOptions { uv: false }).unwrap().bounds().unwrap();
-        let size = dot(sub(hi, lo), sub(hi, lo)).sqrt();
+        let size = regular(surface.as_ref(), 8, 8, MeshOptions { uv: false }).unwrap().bounds().unwrap().diagonal();
         let tolerance = AdaptiveTolerance { chord_height: 3e-3 * size, normal_angle: 0.3, max_depth: 6 };
         let mesh = |uv| adaptive(surface.as_ref(), (8, 8), tolerance, MeshOptions { uv }).unwrap();
         let (with_uv, plain) = (mesh(true), mesh(false));

@@ -16,6 +16,7 @@ use splinekit::Point;
 use splinekit::basis::Side;
 use splinekit::curve::bezier::bezier_knots;
 use splinekit::curve::{Curve as KernelCurve, Interval};
+use splinekit::query::extent::{sampled_curve_box, sampled_surface_box};
 use splinekit::surface::Surface as KernelSurface;
 use splinekit_scene::bfunctions::BFunctionDoc;
 use splinekit_scene::blending::{BlendingSource, BlendingSplineDoc, LocalDoc, LocalPatchDoc};
@@ -192,19 +193,10 @@ fn kernel_curve(doc: &CurveDocument) -> Result<Box<dyn KernelCurve<3>>> {
     }
 }
 
-/// Bounding-box diagonal of samples: the size a relative tolerance refers to.
+/// The size a relative tolerance refers to: the diagonal of the box of 257 regular samples
+/// ([`sampled_curve_box`]; the tolerances, so the files, are defined by that sample set).
 fn curve_size(c: &dyn KernelCurve<3>) -> f64 {
-    let d = c.domain();
-    box_diagonal((0..=256).map(|i| c.point(d.lerp(i as f64 / 256.0))))
-}
-
-fn box_diagonal(points: impl Iterator<Item = Point<3>>) -> f64 {
-    let (mut lo, mut hi) = (Point::<3>::repeat(f64::INFINITY), Point::<3>::repeat(f64::NEG_INFINITY));
-    for p in points {
-        lo = lo.inf(&p);
-        hi = hi.sup(&p);
-    }
-    (hi - lo).norm().max(f64::MIN_POSITIVE)
+    sampled_curve_box(c, 256).diagonal().max(f64::MIN_POSITIVE)
 }
 
 /// Exports a curve document; `relative_tolerance` scales with the curve's size.
@@ -309,13 +301,10 @@ pub(crate) fn kernel_surface(doc: &SurfaceDocument) -> Result<Box<dyn KernelSurf
     }
 }
 
+/// The size a relative tolerance refers to: the diagonal of the box of the regular 33 × 33
+/// grid of samples ([`sampled_surface_box`]).
 fn surface_size(s: &dyn KernelSurface<3>) -> f64 {
-    let (du, dv) = (s.domain_u(), s.domain_v());
-    box_diagonal(
-        (0..=32)
-            .flat_map(|i| (0..=32).map(move |j| (i, j)))
-            .map(|(i, j)| s.point(du.lerp(i as f64 / 32.0), dv.lerp(j as f64 / 32.0))),
-    )
+    sampled_surface_box(s, 32).diagonal().max(f64::MIN_POSITIVE)
 }
 
 fn trimmed(basis: Surface, u: (f64, f64), v: (f64, f64)) -> Surface {

@@ -11,6 +11,7 @@
 
 use splinekit::Point;
 use splinekit::curve::{CircleFrame, Curve as KernelCurve, NurbsCurve};
+use splinekit::query::Aabb;
 use splinekit_scene::curves::{BSplineDoc, CircleDoc, EllipseDoc, LineDoc, NurbsDoc};
 use splinekit_scene::surfaces::{
     BSplineSurfaceDoc, CylinderDoc, ExtrusionDoc, NurbsSurfaceDoc, PlacedDoc, PlaneDoc, RevolutionDoc, SphereDoc,
@@ -470,18 +471,15 @@ fn join_loop(
     Ok(Some(nurbs_doc(&NurbsCurve::new(p, knots, points, weights).map_err(err)?)))
 }
 
-/// The box of a face's loops in its (u, v) plane: lower and upper corners of the loops'
-/// control points (which hold the loops).
-fn loops_box(f: &Face) -> Result<Option<(Point<2>, Point<2>)>> {
-    let (mut lo, mut hi) = (Point::<2>::repeat(f64::INFINITY), Point::<2>::repeat(f64::NEG_INFINITY));
+/// The box of a face's loops in its (u, v) plane: the box of the loops' control points
+/// (which hold the loops); `None` without points.
+fn loops_box(f: &Face) -> Result<Option<Aabb<2>>> {
+    let mut b = Aabb::<2>::empty();
     for c in f.loops.iter().flatten() {
         let Some(p) = loop_piece(c)? else { return Ok(None) };
-        for q in p.control_points() {
-            lo = lo.inf(q);
-            hi = hi.sup(q);
-        }
+        p.control_points().iter().for_each(|q| b.include(q));
     }
-    Ok((lo[0] <= hi[0] && lo[1] <= hi[1]).then_some((lo, hi)))
+    Ok((!b.is_empty()).then_some(b))
 }
 
 /// Whether [`curve_doc`] keeps the curve's parameter (splines, lines, conics at the world
@@ -528,14 +526,14 @@ type FaceSurface = (SurfaceDocument, Box<dyn Fn(Point<2>) -> Point<2>>);
 /// both spanning the loops' v range (v maps onto [0, 1]). `None` for other surfaces.
 fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
     let identity = |q: Point<2>| q;
-    let span_v = |(lo, hi): (Point<2>, Point<2>)| {
-        let (v0, dv) = (lo[1], hi[1] - lo[1]);
+    let span_v = |b: Aabb<2>| {
+        let (v0, dv) = (b.min[1], b.max[1] - b.min[1]);
         Box::new(move |q: Point<2>| Point::<2>::new(q[0], (q[1] - v0) / dv)) as Box<dyn Fn(Point<2>) -> Point<2>>
     };
     Ok(Some(match &f.surface {
         Surface::Spline(b) => (spline_surface_doc(b), Box::new(identity)),
         Surface::Plane(a) => {
-            let Some((lo, hi)) = loops_box(f)? else { return Ok(None) };
+            let Some(Aabb { min: lo, max: hi }) = loops_box(f)? else { return Ok(None) };
             let size = hi - lo;
             (plane_doc(a, (lo[0], hi[0]), (lo[1], hi[1])), Box::new(move |q: Point<2>| (q - lo).component_div(&size)))
         }
@@ -558,7 +556,7 @@ fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
             // for the cylinder).
             let slope = if let Surface::Cone { semi_angle, .. } = &f.surface { semi_angle.tan() } else { 0.0 };
             let at = |v: f64| v3(axes.at(radius + v * slope, 0.0, v));
-            let line = LineDoc { from: at(b.0[1]), to: at(b.1[1]) };
+            let line = LineDoc { from: at(b.min[1]), to: at(b.max[1]) };
             let doc = RevolutionDoc {
                 curve: Box::new(CurveDocument::Line(line)),
                 axis_point: v3(axes.origin),
@@ -569,7 +567,7 @@ fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
         }
         Surface::Extrusion { profile, direction } if keeps_parameter(profile) => {
             let Some(b) = loops_box(f)? else { return Ok(None) };
-            let (v0, dv) = (b.0[1], b.1[1] - b.0[1]);
+            let (v0, dv) = (b.min[1], b.max[1] - b.min[1]);
             let Some(c) = curve_doc(profile)? else { return Ok(None) };
             let Some(c) = translated(c, direction.map(|d| d * v0)) else { return Ok(None) };
             let doc = ExtrusionDoc { curve: Box::new(c), direction: direction.map(|d| d * dv).to_vec() };
@@ -698,8 +696,8 @@ fn seam_crossings(s: &Surface) -> (bool, bool) {
 /// u ∈ [−α, 0]), the documents' domains start at 0. Loops across the seam stay as they are.
 fn into_domain(f: &Face, map: Box<dyn Fn(Point<2>) -> Point<2>>) -> Result<Box<dyn Fn(Point<2>) -> Point<2>>> {
     let periodic = periodic_angles(&f.surface);
-    let Some((lo, _)) = loops_box(f)? else { return Ok(map) };
-    let low = map(lo);
+    let Some(b) = loops_box(f)? else { return Ok(map) };
+    let low = map(b.min);
     let turns = |x: f64, on: bool| if on { -((x + 1e-9) / TAU).floor() * TAU } else { 0.0 };
     let shift = Point::<2>::new(turns(low[0], periodic.0), turns(low[1], periodic.1));
     if shift == Point::<2>::zeros() {
