@@ -98,7 +98,7 @@ fn the_butterfly_holds_its_dense_samples() {
 #[test]
 fn spanning_passes_over_nan_coordinates_and_around_compares() {
     let pts = [p3(1.0, f64::NAN, 0.0), p3(-1.0, 2.0, 0.5), p3(0.0, -3.0, f64::NAN)];
-    let b = Aabb::spanning(&pts).unwrap();
+    let b = Aabb::spanning(pts).unwrap();
     assert_eq!((b.min, b.max), (p3(-1.0, -3.0, 0.0), p3(1.0, 2.0, 0.5)));
     assert!(Aabb::<3>::spanning(std::iter::empty::<Point<3>>()).is_none());
     let mut e = Aabb::<3>::empty();
