@@ -20,7 +20,7 @@ use splinekit::query::Aabb;
 use splinekit::surface::{Surface, unit_normal};
 
 use crate::mesh_options::to3;
-use crate::triangle_mesh::norm;
+use crate::triangle_mesh::v3;
 
 /// Samples along each side used to decide how it is glued.
 const SIDE_SAMPLES: usize = 33;
@@ -263,7 +263,7 @@ fn pole_normal<const D: usize, S: Surface<D> + ?Sized>(surface: &S, side: Side) 
             count += 1;
         }
     }
-    let len = norm(sum);
+    let len = v3(sum).norm();
     // Normals that mostly cancel (a pinch point) have no direction worth keeping.
     (count > 0 && len > 0.1 * count as f64).then(|| sum.map(|x| x / len))
 }
