@@ -55,22 +55,26 @@ impl DimensionVisitor<Surfaces> for SurfaceCheck {
 /// Rounding of the Newton steps' extremes, relative to the diagonal.
 const ROUNDING: f64 = 1e-12;
 
-#[test]
-fn every_curve_kind_lies_in_its_extent() {
-    for doc in CurveDocument::examples() {
-        let name = doc.type_name();
-        let (worst, ok) = doc.build().unwrap_or_else(|e| panic!("{name}: {e}")).visit(CurveCheck);
+/// Each kind's (name, (worst relative excess, finite and non-empty)) passes.
+fn check_kinds(results: impl Iterator<Item = (&'static str, (f64, bool))>) {
+    for (name, (worst, ok)) in results {
         assert!(ok, "{name}: empty or infinite extent");
         assert!(worst <= ROUNDING, "{name}: a sample lies {worst:e} (relative) outside the extent");
     }
 }
 
 #[test]
-fn every_surface_kind_lies_in_its_extent() {
-    for doc in SurfaceDocument::examples() {
+fn every_curve_kind_lies_in_its_extent() {
+    check_kinds(CurveDocument::examples().into_iter().map(|doc| {
         let name = doc.type_name();
-        let (worst, ok) = doc.build().unwrap_or_else(|e| panic!("{name}: {e}")).visit(SurfaceCheck);
-        assert!(ok, "{name}: empty or infinite extent");
-        assert!(worst <= ROUNDING, "{name}: a sample lies {worst:e} (relative) outside the extent");
-    }
+        (name, doc.build().unwrap_or_else(|e| panic!("{name}: {e}")).visit(CurveCheck))
+    }));
+}
+
+#[test]
+fn every_surface_kind_lies_in_its_extent() {
+    check_kinds(SurfaceDocument::examples().into_iter().map(|doc| {
+        let name = doc.type_name();
+        (name, doc.build().unwrap_or_else(|e| panic!("{name}: {e}")).visit(SurfaceCheck))
+    }));
 }

@@ -74,25 +74,25 @@ fn a_bspline_gives_its_control_box_and_the_sampled_method_its_tight_box() {
     assert!((0..3).all(|k| sampled.min[k] <= dense.min[k] + 1e-15 && sampled.max[k] >= dense.max[k] - 1e-15));
 }
 
+/// The curve's extent holds `n` + 1 dense samples (to 10⁻¹²) and falls short of their box
+/// by less than `gap` (what samples that far apart can miss of an extreme).
+fn assert_holds_dense_samples<C: Curve<3>>(c: &C, n: usize, gap: f64) {
+    let (b, dense) = (c.extent(), dense_curve_box(c, n));
+    assert!((0..3).all(|k| b.min[k] <= dense.min[k] + 1e-12 && b.max[k] >= dense.max[k] - 1e-12), "{b:?} {dense:?}");
+    assert!((b.min - dense.min).amax() < gap && (b.max - dense.max).amax() < gap, "{b:?} {dense:?}");
+}
+
 #[test]
 fn a_lissajous_figure_holds_its_dense_samples() {
-    let c = Lissajous::new([1.0, 2.0, 0.5], [3.0, 5.0, 2.0], 0.5).unwrap();
-    let b = c.extent();
-    let dense = dense_curve_box(&c, 200_000);
-    assert!((0..3).all(|k| b.min[k] <= dense.min[k] + 1e-12 && b.max[k] >= dense.max[k] - 1e-12), "{b:?} {dense:?}");
-    assert!((b.min - dense.min).amax() < 1e-8 && (b.max - dense.max).amax() < 1e-8);
+    assert_holds_dense_samples(&Lissajous::new([1.0, 2.0, 0.5], [3.0, 5.0, 2.0], 0.5).unwrap(), 200_000, 1e-8);
 }
 
 #[test]
 fn the_butterfly_holds_its_dense_samples() {
     // r = e^{cos t} − 2 cos 4t − sin⁵(t/12) over [0, 24π]: 96 periods of cos 4t, far more
     // than the regular samples, so the halving where the tangent turns has to find them.
-    let c = Butterfly::new(1.0).unwrap();
-    let b = c.extent();
-    let dense = dense_curve_box(&c, 400_000);
-    assert!((0..3).all(|k| b.min[k] <= dense.min[k] + 1e-12 && b.max[k] >= dense.max[k] - 1e-12), "{b:?} {dense:?}");
     // Samples 1.9·10⁻⁴ apart fall short of the extremes by up to h²|c″|/8 ≈ 10⁻⁶.
-    assert!((b.min - dense.min).amax() < 1e-6 && (b.max - dense.max).amax() < 1e-6);
+    assert_holds_dense_samples(&Butterfly::new(1.0).unwrap(), 400_000, 1e-6);
 }
 
 #[test]
