@@ -12,7 +12,7 @@ use splinekit::{Error, Point, Result};
 use crate::boundary_gluing::{Gluing, Node};
 pub use crate::mesh_options::AdaptiveTolerance;
 use crate::mesh_options::{MAX_VERTICES, MeshOptions, lattice_param, to3};
-use crate::triangle_mesh::{TriangleMesh, norm, sub};
+use crate::triangle_mesh::{TriangleMesh, v3};
 
 /// Levels below the initial grid at which [`adaptive_with_limit`] probes the surface to
 /// estimate the size of the mesh before refining (8 × 8 base cells make a 32 × 32 probe).
@@ -143,16 +143,16 @@ impl<'a, const D: usize, S: Surface<D> + ?Sized> QuadTree<'a, D, S> {
         let mid =
             [self.sample(i + h, j), self.sample(i + size, j + h), self.sample(i + h, j + size), self.sample(i, j + h)];
         let bilinear: [f64; 3] = std::array::from_fn(|k| 0.25 * (c[0].0[k] + c[1].0[k] + c[2].0[k] + c[3].0[k]));
-        let mut chord = norm(sub(centre.0, bilinear));
+        let mut chord = (v3(centre.0) - v3(bilinear)).norm();
         for k in 0..4 {
             let (a, b) = (c[k].0, c[(k + 1) % 4].0);
             let m: [f64; 3] = std::array::from_fn(|x| 0.5 * (a[x] + b[x]));
-            chord = chord.max(norm(sub(mid[k].0, m)));
+            chord = chord.max((v3(mid[k].0) - v3(m)).norm());
         }
         let mut cos: f64 = 1.0;
         for s in c.iter().chain(mid.iter()) {
-            if norm(s.1) > 0.5 && norm(centre.1) > 0.5 {
-                cos = cos.min(s.1[0] * centre.1[0] + s.1[1] * centre.1[1] + s.1[2] * centre.1[2]);
+            if v3(s.1).norm() > 0.5 && v3(centre.1).norm() > 0.5 {
+                cos = cos.min(v3(s.1).dot(&v3(centre.1)));
             }
         }
         (chord, cos)

@@ -16,10 +16,11 @@
 
 use splinekit::Point;
 use splinekit::curve::Interval;
+use splinekit::query::Aabb;
 use splinekit::surface::{Surface, unit_normal};
 
 use crate::mesh_options::to3;
-use crate::triangle_mesh::norm;
+use crate::triangle_mesh::v3;
 
 /// Samples along each side used to decide how it is glued.
 const SIDE_SAMPLES: usize = 33;
@@ -123,20 +124,17 @@ impl Gluing {
         let fraction = |k: usize| k as f64 / (SIDE_SAMPLES - 1) as f64;
         let sides: Vec<Vec<[f64; 3]>> =
             Side::ALL.iter().map(|s| (0..SIDE_SAMPLES).map(|k| point(s.at(fraction(k)))).collect()).collect();
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
         let interior = (0..SIZE_SAMPLES * SIZE_SAMPLES).map(|k| {
             let f = |i: usize| i as f64 / (SIZE_SAMPLES - 1) as f64;
             point((f(k / SIZE_SAMPLES), f(k % SIZE_SAMPLES)))
         });
-        for p in interior.chain(sides.iter().flatten().copied()) {
-            for k in 0..3 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
+        // The box of the samples (NaN coordinates passed over), kept as the size measure:
+        // the gluing tolerance, so the meshes, are defined by this sample set.
+        let Some(b) = Aabb::spanning(interior.chain(sides.iter().flatten().copied()).map(Point::<3>::from)) else {
+            return Gluing::none();
+        };
         // Half the widest extent, halved first so that it stays finite for huge surfaces.
-        let half_size = (0..3).map(|k| 0.5 * hi[k] - 0.5 * lo[k]).fold(0.0, f64::max);
+        let half_size = (0..3).map(|k| 0.5 * b.max[k] - 0.5 * b.min[k]).fold(0.0, f64::max);
         if !(half_size > 0.0 && half_size.is_finite()) {
             return Gluing::none();
         }
@@ -265,7 +263,7 @@ fn pole_normal<const D: usize, S: Surface<D> + ?Sized>(surface: &S, side: Side) 
             count += 1;
         }
     }
-    let len = norm(sum);
+    let len = v3(sum).norm();
     // Normals that mostly cancel (a pinch point) have no direction worth keeping.
     (count > 0 && len > 0.1 * count as f64).then(|| sum.map(|x| x / len))
 }

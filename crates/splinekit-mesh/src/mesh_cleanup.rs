@@ -23,7 +23,7 @@ use crate::triangle_mesh::TriangleMesh;
 /// points are all one point) is named as such, not blamed on `field`.
 pub(crate) fn finish(mesh: &mut TriangleMesh, field: &str) -> Result<()> {
     let single_point = match mesh.bounds() {
-        Some((lo, hi)) if lo == hi => Some(lo),
+        Some(b) if b.min == b.max => Some(b.min),
         _ => None,
     };
     collapse_single_precision_edges(mesh);
@@ -52,8 +52,8 @@ pub(crate) fn finish(mesh: &mut TriangleMesh, field: &str) -> Result<()> {
 /// too small or too far from the origin for f32 as a whole are left for the
 /// single-precision writers to refuse.
 fn collapse_single_precision_edges(mesh: &mut TriangleMesh) {
-    let Some((lo, hi)) = mesh.bounds() else { return };
-    let extent = (0..3).map(|k| 0.5 * hi[k] - 0.5 * lo[k]).fold(0.0, f64::max);
+    let Some(b) = mesh.bounds() else { return };
+    let extent = (0..3).map(|k| 0.5 * b.max[k] - 0.5 * b.min[k]).fold(0.0, f64::max);
     let singles: Vec<Option<[u32; 3]>> = mesh
         .positions
         .iter()

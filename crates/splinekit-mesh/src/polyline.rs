@@ -7,6 +7,9 @@ use splinekit::{Error, Point, Result};
 /// Most points a tessellation may produce.
 pub const MAX_POINTS: usize = 20_000_000;
 
+/// Segments of the regular polyline whose size [`Polyline::rough_size`] measures.
+pub const ROUGH_SEGMENTS: usize = 64;
+
 /// Points of a curve in parameter order. For a closed curve the last point is not repeated.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Polyline<const D: usize> {
@@ -19,6 +22,16 @@ pub struct Polyline<const D: usize> {
 }
 
 impl<const D: usize> Polyline<D> {
+    /// The size a flattening tolerance without a given one is relative to (the command
+    /// line's, Python's and the renderer's): the largest distance of the points of the
+    /// curve's regular polyline of [`ROUGH_SEGMENTS`] segments from its first point, about
+    /// the curve's diameter. Their polylines are defined by this measure, so it is kept
+    /// (here, once) rather than replaced by [`Curve::extent`].
+    pub fn rough_size<C: Curve<D> + ?Sized>(curve: &C) -> Result<f64> {
+        let rough = Self::regular(curve, ROUGH_SEGMENTS)?;
+        Ok(rough.points.iter().map(|p| (p - rough.points[0]).norm()).fold(0.0, f64::max))
+    }
+
     /// `segments` equal parameter steps over the domain (closed curves: without the
     /// repeated end point).
     pub fn regular<C: Curve<D> + ?Sized>(curve: &C, segments: usize) -> Result<Self> {

@@ -1,6 +1,9 @@
 //! Indexed triangle meshes: positions, unit normals, optional (u, v) and colours, and
 //! counter-clockwise triangles (seen from the side the normals point to).
 
+use splinekit::Point;
+use splinekit::query::Aabb;
+
 /// An indexed triangle mesh.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct TriangleMesh {
@@ -23,24 +26,22 @@ impl TriangleMesh {
     }
     /// The unit normal of triangle t (zero for a degenerate triangle).
     pub fn face_normal(&self, t: usize) -> [f64; 3] {
-        let [a, b, c] = self.triangles[t].map(|i| self.positions[i as usize]);
-        normalize(face_cross(a, b, c))
+        let [a, b, c] = self.triangles[t].map(|i| v3(self.positions[i as usize]));
+        unit_or_zero(face_cross(a, b, c))
     }
     /// Twice the area of triangle t.
     pub fn double_area(&self, t: usize) -> f64 {
-        let [a, b, c] = self.triangles[t].map(|i| self.positions[i as usize]);
-        norm(cross(sub(b, a), sub(c, a)))
+        let [a, b, c] = self.triangles[t].map(|i| v3(self.positions[i as usize]));
+        (b - a).cross(&(c - a)).norm()
     }
     /// Total surface area.
     pub fn area(&self) -> f64 {
         (0..self.triangles.len()).map(|t| 0.5 * self.double_area(t)).sum()
     }
-    /// The axis-aligned bounding box (min, max); `None` for an empty mesh.
-    pub fn bounds(&self) -> Option<([f64; 3], [f64; 3])> {
-        let first = *self.positions.first()?;
-        Some(self.positions.iter().fold((first, first), |(lo, hi), p| {
-            ([lo[0].min(p[0]), lo[1].min(p[1]), lo[2].min(p[2])], [hi[0].max(p[0]), hi[1].max(p[1]), hi[2].max(p[2])])
-        }))
+    /// The axis-aligned bounding box of the positions ([`Aabb::spanning`]: NaN coordinates
+    /// passed over); `None` for an empty mesh.
+    pub fn bounds(&self) -> Option<Aabb<3>> {
+        Aabb::spanning(self.positions.iter().map(|p| Point::<3>::from(*p)))
     }
     /// The volume enclosed by a closed mesh, by the divergence theorem: Σ (a−o)·((b−o) × (c−o)) / 6
     /// over the triangles, o the first vertex (positive when the triangles face outward).
@@ -49,9 +50,8 @@ impl TriangleMesh {
         self.triangles
             .iter()
             .map(|t| {
-                let [a, b, c] = t.map(|i| sub(self.positions[i as usize], o));
-                let bc = cross(b, c);
-                (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]) / 6.0
+                let [a, b, c] = t.map(|i| v3(self.positions[i as usize]) - v3(o));
+                a.dot(&b.cross(&c)) / 6.0
             })
             .sum()
     }
@@ -73,8 +73,8 @@ impl TriangleMesh {
         // around its position (both sides of a seam) give the replacement.
         let mut own = vec![[0.0; 3]; self.positions.len()];
         for t in &self.triangles {
-            let [a, b, c] = t.map(|i| self.positions[i as usize]);
-            let n = face_cross(a, b, c);
+            let [a, b, c] = t.map(|i| v3(self.positions[i as usize]));
+            let n = face_cross(a, b, c).into();
             for &i in t {
                 add(&mut own[i as usize], n);
             }
@@ -83,8 +83,8 @@ impl TriangleMesh {
         for (i, n) in own.iter().enumerate() {
             add(&mut fans[place[i]], *n);
         }
-        let unit = |n: [f64; 3]| (norm(n) - 1.0).abs() < 1e-6;
-        let faces_along = |i: usize, n: [f64; 3]| own[i][0] * n[0] + own[i][1] * n[1] + own[i][2] * n[2] > 0.0;
+        let unit = |n: [f64; 3]| (v3(n).norm() - 1.0).abs() < 1e-6;
+        let faces_along = |i: usize, n: [f64; 3]| v3(own[i]).dot(&v3(n)) > 0.0;
         let missing: Vec<bool> =
             self.normals.iter().enumerate().map(|(i, n)| !(unit(*n) && faces_along(i, *n))).collect();
         if !missing.iter().any(|&m| m) {
@@ -102,8 +102,8 @@ impl TriangleMesh {
         }
         for (i, m) in missing.iter().enumerate() {
             if *m {
-                let around = normalize(fans[place[i]]);
-                let candidates = [around, normalize(own[i]), normalize(neighbours[i])];
+                let around = unit_or_zero(v3(fans[place[i]]));
+                let candidates = [around, unit_or_zero(v3(own[i])), unit_or_zero(v3(neighbours[i]))];
                 self.normals[i] = candidates.into_iter().find(|n| unit(*n) && faces_along(i, *n)).unwrap_or(around);
             }
         }
@@ -126,20 +126,19 @@ impl TriangleMesh {
 /// (b − a) × (c − a), twice the triangle's area along its normal; for triangles so large or
 /// small that this over- or underflows, the same direction from edges scaled to unit size
 /// (so sums of them stay finite).
-fn face_cross(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> [f64; 3] {
-    let (e, f) = (sub(b, a), sub(c, a));
-    let n = cross(e, f);
-    let len = norm(n);
+fn face_cross(a: Point<3>, b: Point<3>, c: Point<3>) -> Point<3> {
+    let n = (b - a).cross(&(c - a));
+    let len = n.norm();
     if len.is_finite() && len > f64::MIN_POSITIVE {
         return n;
     }
-    let unit = |v: [f64; 3]| {
+    let unit = |v: Point<3>| {
         let m = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        if m > 0.0 && m.is_finite() { v.map(|x| x / m) } else { [0.0; 3] }
+        if m > 0.0 && m.is_finite() { v.map(|x| x / m) } else { Point::<3>::zeros() }
     };
     // Halve first so that the difference of two huge coordinates cannot overflow.
-    let half = |p: [f64; 3], q: [f64; 3]| [0.5 * p[0] - 0.5 * q[0], 0.5 * p[1] - 0.5 * q[1], 0.5 * p[2] - 0.5 * q[2]];
-    cross(unit(half(b, a)), unit(half(c, a)))
+    let half = |p: Point<3>, q: Point<3>| Point::<3>::from_fn(|k, _| 0.5 * p[k] - 0.5 * q[k]);
+    unit(half(b, a)).cross(&unit(half(c, a)))
 }
 
 fn add(acc: &mut [f64; 3], v: [f64; 3]) {
@@ -147,16 +146,12 @@ fn add(acc: &mut [f64; 3], v: [f64; 3]) {
         acc[k] += v[k];
     }
 }
-pub(crate) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+/// A position or normal of the mesh as a vector (nalgebra's arithmetic).
+pub(crate) fn v3(p: [f64; 3]) -> Point<3> {
+    Point::<3>::from(p)
 }
-pub(crate) fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-pub(crate) fn norm(a: [f64; 3]) -> f64 {
-    (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt()
-}
-pub(crate) fn normalize(a: [f64; 3]) -> [f64; 3] {
-    let n = norm(a);
-    if n > 0.0 && n.is_finite() { [a[0] / n, a[1] / n, a[2] / n] } else { [0.0; 3] }
+/// n/|n|, or zero where |n| is zero or not finite (no direction a mesh can use).
+pub(crate) fn unit_or_zero(n: Point<3>) -> [f64; 3] {
+    let len = n.norm();
+    if len > 0.0 && len.is_finite() { n.map(|x| x / len).into() } else { [0.0; 3] }
 }

@@ -13,7 +13,7 @@ use splinekit::{Error, Point, Result};
 
 use crate::boundary_gluing::{Gluing, Node};
 use crate::mesh_options::{AdaptiveTolerance, MeshOptions, lattice_param, to3};
-use crate::triangle_mesh::{TriangleMesh, cross, norm, sub};
+use crate::triangle_mesh::{TriangleMesh, v3};
 
 type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
 
@@ -114,12 +114,12 @@ fn by_chord_height<const D: usize, S: Surface<D> + ?Sized>(surface: &S, pts: &[U
     let n = pts.len();
     let most = (n / 8).clamp(1, 256);
     let chord_ok = |a: usize, b: usize| {
-        let (p, q) = (images[a], images[b % n]);
-        let d = sub(q, p);
-        let len = norm(d);
+        let (p, q) = (v3(images[a]), v3(images[b % n]));
+        let d = q - p;
+        let len = d.norm();
         (a + 1..b).all(|k| {
-            let r = sub(images[k % n], p);
-            let off = if len > 0.0 { norm(cross(d, r)) / len } else { norm(r) };
+            let r = v3(images[k % n]) - p;
+            let off = if len > 0.0 { d.cross(&r).norm() / len } else { r.norm() };
             off <= height
         })
     };

@@ -17,6 +17,7 @@ use std::f64::consts::PI;
 use std::path::PathBuf;
 
 use serde_json::{Value, json};
+use splinekit::Point;
 use splinekit::surface::Surface;
 use splinekit_mesh::AdaptiveTolerance;
 use splinekit_mesh::export::{GltfGeometry, GltfScene, obj, ply, stl};
@@ -57,17 +58,8 @@ impl Verdict {
     }
 }
 
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn wide(p: [f32; 3]) -> [f64; 3] {
-    p.map(f64::from)
+fn wide(p: [f32; 3]) -> Point<3> {
+    Point::<3>::from(p.map(f64::from))
 }
 
 fn root(parent: &mut [usize], mut i: usize) -> usize {
@@ -100,10 +92,9 @@ fn judge(soup: &Soup) -> Verdict {
         for k in 0..3 {
             *directed.entry((c[k], c[(k + 1) % 3])).or_insert(0) += 1;
         }
-        let [a, b, cc] = t.map(|i| sub(wide(soup.positions[i as usize]), o));
-        let n = cross(sub(b, a), sub(cc, a));
-        v.area += 0.5 * dot(n, n).sqrt();
-        v.volume += dot(a, cross(b, cc)) / 6.0;
+        let [a, b, cc] = t.map(|i| wide(soup.positions[i as usize]) - o);
+        v.area += 0.5 * (b - a).cross(&(cc - a)).norm();
+        v.volume += a.dot(&b.cross(&cc)) / 6.0;
     }
     let mut parent: Vec<usize> = (0..id.len()).collect();
     let mut on_boundary = vec![false; id.len()];
@@ -134,20 +125,18 @@ fn judge(soup: &Soup) -> Verdict {
 /// Vertex normals are unit vectors on the side the triangles around them face.
 fn check_vertex_normals(soup: &Soup, what: &str) {
     assert_eq!(soup.normals.len(), soup.positions.len(), "{what}: one normal per vertex");
-    let mut fan = vec![[0.0; 3]; soup.positions.len()];
+    let mut fan = vec![Point::<3>::zeros(); soup.positions.len()];
     for t in &soup.triangles {
         let [a, b, c] = t.map(|i| wide(soup.positions[i as usize]));
-        let n = cross(sub(b, a), sub(c, a));
+        let n = (b - a).cross(&(c - a));
         for &i in t {
-            for k in 0..3 {
-                fan[i as usize][k] += n[k];
-            }
+            fan[i as usize] += n;
         }
     }
     for (i, n) in soup.normals.iter().enumerate() {
         let n = wide(*n);
-        assert!((dot(n, n).sqrt() - 1.0).abs() < 1e-5, "{what}: normal {i} {n:?} is not a unit vector");
-        assert!(dot(n, fan[i]) > 0.0, "{what}: normal {i} {n:?} points away from its triangles {:?}", fan[i]);
+        assert!((n.norm() - 1.0).abs() < 1e-5, "{what}: normal {i} {n:?} is not a unit vector");
+        assert!(n.dot(&fan[i]) > 0.0, "{what}: normal {i} {n:?} points away from its triangles {:?}", fan[i]);
     }
 }
 
@@ -167,9 +156,9 @@ fn stl_soup(bytes: &[u8], what: &str) -> Soup {
     let tris = stl::read_stl(bytes).unwrap();
     let mut soup = Soup { positions: vec![], normals: vec![], triangles: vec![] };
     for (t, (n, c)) in tris.iter().enumerate() {
-        let face = cross(sub(wide(c[1]), wide(c[0])), sub(wide(c[2]), wide(c[0])));
+        let face = (wide(c[1]) - wide(c[0])).cross(&(wide(c[2]) - wide(c[0])));
         let n = wide(*n);
-        assert!((dot(n, n).sqrt() - 1.0).abs() < 1e-5 && dot(n, face) > 0.0, "{what}: facet {t} normal {n:?}");
+        assert!((n.norm() - 1.0).abs() < 1e-5 && n.dot(&face) > 0.0, "{what}: facet {t} normal {n:?}");
         let base = soup.positions.len() as u32;
         soup.positions.extend_from_slice(c);
         soup.triangles.push([base, base + 1, base + 2]);
@@ -220,8 +209,8 @@ fn heart_volume_and_area() -> (f64, f64) {
 /// length L: V = πr²L, A = 2πrL (Pappus for tubes).
 fn trefoil_tube_volume_and_area(r: f64) -> (f64, f64) {
     let speed = |t: f64| {
-        let d = [t.cos() + 4.0 * (2.0 * t).cos(), -t.sin() + 4.0 * (2.0 * t).sin(), -3.0 * (3.0 * t).cos()];
-        dot(d, d).sqrt()
+        Point::<3>::new(t.cos() + 4.0 * (2.0 * t).cos(), -t.sin() + 4.0 * (2.0 * t).sin(), -3.0 * (3.0 * t).cos())
+            .norm()
     };
     let length = simpson(speed, 0.0, 2.0 * PI);
     (PI * r * r * length, 2.0 * PI * r * length)
@@ -482,8 +471,7 @@ fn adaptive_meshes_are_as_valid_and_follow_trims() {
     for (name, doc, shape) in model_cases() {
         let surface = surface_of(&doc);
         // A chord height of 3/1000 of the surface's size.
-        let (lo, hi) = regular(surface.as_ref(), 8, 8, MeshOptions { uv: false }).unwrap().bounds().unwrap();
-        let size = dot(sub(hi, lo), sub(hi, lo)).sqrt();
+        let size = regular(surface.as_ref(), 8, 8, MeshOptions { uv: false }).unwrap().bounds().unwrap().diagonal();
         let tolerance = AdaptiveTolerance { chord_height: 3e-3 * size, normal_angle: 0.3, max_depth: 6 };
         let mesh = |uv| adaptive(surface.as_ref(), (8, 8), tolerance, MeshOptions { uv }).unwrap();
         let (with_uv, plain) = (mesh(true), mesh(false));

@@ -299,10 +299,10 @@ fn camera(scene: &SceneDocument, bounds: ([f32; 3], [f32; 3]), flat: bool, aspec
 pub const CURVE_POINTS: usize = 200_000;
 
 /// The chord-height tolerance a curve without a `density` is flattened to: 4·10⁻⁴ of its
-/// size (the largest distance of 64 regular samples from the first).
+/// size ([`Polyline::rough_size`]: the largest distance of 64 regular samples from the
+/// first).
 pub fn curve_tolerance<const D: usize>(c: &dyn Curve<D>) -> Result<f64, DocumentError> {
-    let rough = Polyline::regular(c, 64)?;
-    let size = rough.points.iter().map(|p| (p - rough.points[0]).norm()).fold(0.0, f64::max).max(1e-9);
+    let size = Polyline::rough_size(c)?.max(1e-9);
     Ok(size * 4e-4)
 }
 

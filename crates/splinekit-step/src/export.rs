@@ -6,8 +6,10 @@
 //! the open shells of a `MANIFOLD_SURFACE_SHAPE_REPRESENTATION`. Every set item is bounded
 //! (B-splines, trimmed curves, rectangular trimmed surfaces), as geometric sets require.
 
+use splinekit::Point;
+
 use crate::geometry::{
-    Axes, Curve, FaceGeometry, Geometry, Item, LoopEdge, P3, SplineCurve, SplineSurface, Surface, knot_multiplicities,
+    Axes, Curve, FaceGeometry, Geometry, Item, LoopEdge, SplineCurve, SplineSurface, Surface, knot_multiplicities,
 };
 use crate::part21::writer::{HeaderInfo, Part21Writer};
 use crate::part21::{Param, Record};
@@ -59,12 +61,13 @@ impl<'a> GeometryWriter<'a> {
     }
 
     fn axes(&mut self, a: &Axes) -> u64 {
-        let (o, z, x) = (self.point(&a.origin), self.direction(&a.z), self.direction(&a.x));
+        let (o, z, x) =
+            (self.point(a.origin.as_slice()), self.direction(a.z.as_slice()), self.direction(a.x.as_slice()));
         self.w.add("AXIS2_PLACEMENT_3D", vec![s(""), r(o), r(z), r(x)])
     }
 
-    fn axis1(&mut self, origin: P3, axis: P3) -> u64 {
-        let (o, z) = (self.point(&origin), self.direction(&axis));
+    fn axis1(&mut self, origin: Point<3>, axis: Point<3>) -> u64 {
+        let (o, z) = (self.point(origin.as_slice()), self.direction(axis.as_slice()));
         self.w.add("AXIS1_PLACEMENT", vec![s(""), r(o), r(z)])
     }
 
@@ -189,7 +192,7 @@ impl<'a> GeometryWriter<'a> {
             }
             Surface::Extrusion { profile, direction } => {
                 let c = self.curve(profile, "");
-                let v = self.vector(direction);
+                let v = self.vector(direction.as_slice());
                 self.w.add("SURFACE_OF_LINEAR_EXTRUSION", vec![s(name), r(c), r(v)])
             }
             Surface::Trimmed { basis, u, v } => {
@@ -226,7 +229,7 @@ impl GeometryWriter<'_> {
             .vertices
             .iter()
             .map(|p| {
-                let pt = self.point(p);
+                let pt = self.point(p.as_slice());
                 self.w.add("VERTEX_POINT", vec![s(""), r(pt)])
             })
             .collect();

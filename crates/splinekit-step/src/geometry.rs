@@ -3,49 +3,37 @@
 //! the middle ground between Part 21 entities (`export`, `import`) and splinekit's
 //! documents and kernel objects (`documents`).
 
-/// A point or vector in ℝ³.
-pub type P3 = [f64; 3];
+use splinekit::Point;
 
 /// `AXIS2_PLACEMENT_3D`: an origin with an orthonormal frame x (ref direction), y = z × x, z (axis).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Axes {
     /// Location.
-    pub origin: P3,
+    pub origin: Point<3>,
     /// Axis z (unit).
-    pub z: P3,
+    pub z: Point<3>,
     /// Reference direction x (unit, orthogonal to z).
-    pub x: P3,
+    pub x: Point<3>,
 }
 
 impl Axes {
     /// The standard frame at the origin.
-    pub const WORLD: Axes = Axes { origin: [0.0; 3], z: [0.0, 0.0, 1.0], x: [1.0, 0.0, 0.0] };
+    pub const WORLD: Axes = Axes {
+        origin: Point::<3>::new(0.0, 0.0, 0.0),
+        z: Point::<3>::new(0.0, 0.0, 1.0),
+        x: Point::<3>::new(1.0, 0.0, 0.0),
+    };
 
     /// y = z × x.
-    pub fn y(&self) -> P3 {
-        cross(self.z, self.x)
+    pub fn y(&self) -> Point<3> {
+        self.z.cross(&self.x)
     }
 
     /// origin + a·x + b·y + c·z.
-    pub fn at(&self, a: f64, b: f64, c: f64) -> P3 {
+    pub fn at(&self, a: f64, b: f64, c: f64) -> Point<3> {
         let y = self.y();
-        std::array::from_fn(|k| self.origin[k] + a * self.x[k] + b * y[k] + c * self.z[k])
+        Point::<3>::from_fn(|k, _| self.origin[k] + a * self.x[k] + b * y[k] + c * self.z[k])
     }
-}
-
-/// a × b.
-pub fn cross(a: P3, b: P3) -> P3 {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-
-/// a · b.
-pub fn dot(a: P3, b: P3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-/// |a|.
-pub fn norm(a: P3) -> f64 {
-    dot(a, a).sqrt()
 }
 
 /// A B-spline or NURBS curve: c(t) = Σ N_{i,p}(t) w_i P_i / Σ N_{i,p}(t) w_i on
@@ -170,16 +158,16 @@ pub enum Surface {
         /// The swept curve.
         profile: Curve,
         /// A point on the axis.
-        axis_origin: P3,
+        axis_origin: Point<3>,
         /// The axis direction (unit).
-        axis: P3,
+        axis: Point<3>,
     },
     /// `SURFACE_OF_LINEAR_EXTRUSION`: c(u) + v·direction.
     Extrusion {
         /// The swept curve.
         profile: Curve,
         /// The extrusion vector (magnitude included).
-        direction: P3,
+        direction: Point<3>,
     },
     /// `RECTANGULAR_TRIMMED_SURFACE`: the basis on [u₀, u₁] × [v₀, v₁].
     Trimmed {
@@ -238,7 +226,7 @@ pub struct FaceGeometry {
     /// The face's surface (an unbounded or B-spline surface, never rectangular trimmed).
     pub surface: Surface,
     /// Vertex points shared by the edges.
-    pub vertices: Vec<P3>,
+    pub vertices: Vec<Point<3>>,
     /// The bounds.
     pub loops: Vec<FaceLoop>,
 }
@@ -298,7 +286,7 @@ mod tests {
 
     #[test]
     fn axes_frame_is_right_handed() {
-        assert_eq!(Axes::WORLD.y(), [0.0, 1.0, 0.0]);
-        assert_eq!(Axes::WORLD.at(1.0, 2.0, 3.0), [1.0, 2.0, 3.0]);
+        assert_eq!(Axes::WORLD.y(), Point::<3>::new(0.0, 1.0, 0.0));
+        assert_eq!(Axes::WORLD.at(1.0, 2.0, 3.0), Point::<3>::new(1.0, 2.0, 3.0));
     }
 }

@@ -6,10 +6,11 @@
 
 use std::collections::{BTreeMap, HashSet};
 
+use splinekit::Point;
 use splinekit::axes::{OrthonormalAxes, unit_vector};
 
 use crate::error::{Result, StepError};
-use crate::geometry::{Axes, Curve, P3, SplineCurve, SplineSurface, Surface, cross, dot, expand_knots, norm};
+use crate::geometry::{Axes, Curve, SplineCurve, SplineSurface, Surface, expand_knots};
 use crate::part21::{Instance, Param, StepFile};
 
 /// A face: a surface and its bounds as closed loops of curves in the surface's (u, v)
@@ -232,8 +233,8 @@ fn boolean(p: &Param) -> Result<bool> {
 }
 
 /// A point or direction of 1 to 3 coordinates as three (missing ones are 0).
-fn to3(v: &[f64]) -> P3 {
-    std::array::from_fn(|k| v.get(k).copied().unwrap_or(0.0))
+fn to3(v: &[f64]) -> Point<3> {
+    Point::<3>::from_fn(|k, _| v.get(k).copied().unwrap_or(0.0))
 }
 
 /// Highest degree of a B-spline read from a file (as `splinekit_scene::budget::MAX_DEGREE`).
@@ -267,8 +268,8 @@ fn checked_knots(what: &str, degree: usize, points: usize, values: &[f64], mults
 }
 
 /// v/|v| (an error naming the direction when it is zero).
-fn unit(v: P3) -> Result<P3> {
-    unit_vector(v, "direction").map_err(|e| StepError::plain(e.to_string()))
+fn unit(v: Point<3>) -> Result<Point<3>> {
+    unit_vector(v.into(), "direction").map(Point::<3>::from).map_err(|e| StepError::plain(e.to_string()))
 }
 
 /// Follows references, marking what it reads.
@@ -310,14 +311,14 @@ impl Reader<'_> {
         })
     }
 
-    fn direction(&mut self, id: u64) -> Conv<P3> {
+    fn direction(&mut self, id: u64) -> Conv<Point<3>> {
         self.with(id, |_, inst| Ok(unit(to3(&reals(param(inst, 1)?)?))?))
     }
 
     fn vector(&mut self, id: u64) -> Conv<Vec<f64>> {
         self.with(id, |r, inst| {
             let d = r.with(reference(param(inst, 1)?)?, |_, i| Ok(reals(param(i, 1)?)?))?;
-            let len = norm(to3(&d));
+            let len = to3(&d).norm();
             let m = real(param(inst, 2)?)?;
             Ok(d.iter().map(|c| c / len * m).collect())
         })
@@ -329,29 +330,33 @@ impl Reader<'_> {
             if inst.records[0].name == "AXIS2_PLACEMENT_2D" {
                 // (name, location, ref_direction): the plane's own z, x from ref_direction.
                 let x = match param(inst, 2)? {
-                    Param::Unset => [1.0, 0.0, 0.0],
+                    Param::Unset => Point::<3>::new(1.0, 0.0, 0.0),
                     p => r.direction(reference(p)?)?,
                 };
-                return Ok(Axes { origin, z: [0.0, 0.0, 1.0], x: unit([x[0], x[1], 0.0])? });
+                return Ok(Axes {
+                    origin,
+                    z: Point::<3>::new(0.0, 0.0, 1.0),
+                    x: unit(Point::<3>::new(x[0], x[1], 0.0))?,
+                });
             }
             let z = match param(inst, 2)? {
-                Param::Unset => [0.0, 0.0, 1.0],
+                Param::Unset => Point::<3>::new(0.0, 0.0, 1.0),
                 p => r.direction(reference(p)?)?,
             };
             let x0 = match inst.records[0].params.get(3) {
                 Some(Param::Reference(d)) => r.direction(*d)?,
                 _ => {
                     if z[0].abs() < 0.9 {
-                        [1.0, 0.0, 0.0]
+                        Point::<3>::new(1.0, 0.0, 0.0)
                     } else {
-                        [0.0, 1.0, 0.0]
+                        Point::<3>::new(0.0, 1.0, 0.0)
                     }
                 }
             };
             // Reference direction made orthogonal to the axis (ISO 10303-42 build_axes).
             let OrthonormalAxes { x, z, .. } =
-                OrthonormalAxes::build(z, x0).map_err(|e| StepError::plain(e.to_string()))?;
-            Ok(Axes { origin, z, x })
+                OrthonormalAxes::build(z.into(), x0.into()).map_err(|e| StepError::plain(e.to_string()))?;
+            Ok(Axes { origin, z: z.into(), x: x.into() })
         })
     }
 
@@ -525,7 +530,7 @@ impl Reader<'_> {
                     let (axis_origin, axis) = r.with(reference(param(inst, 2)?)?, |r, a| {
                         let o = to3(&r.point(reference(param(a, 1)?)?)?);
                         let z = match param(a, 2)? {
-                            Param::Unset => [0.0, 0.0, 1.0],
+                            Param::Unset => Point::<3>::new(0.0, 0.0, 1.0),
                             p => r.direction(reference(p)?)?,
                         };
                         Ok((o, z))
@@ -608,8 +613,8 @@ impl Reader<'_> {
                         (Surface::Cone { axes, .. }, Curve::Line { .. }, Curve::Line { origin, direction })
                             if direction.len() >= 2 && direction[1] != 0.0 =>
                         {
-                            let at = |p: P3| {
-                                let height = dot(std::array::from_fn(|k| p[k] - axes.origin[k]), axes.z);
+                            let at = |p: Point<3>| {
+                                let height = (p - axes.origin).dot(&axes.z);
                                 (height - origin.get(1).copied().unwrap_or(0.0)) / direction[1]
                             };
                             let (a, b) = (at(ends[0]), at(ends[1]));
@@ -676,8 +681,8 @@ impl Reader<'_> {
 fn reversed_circle(axes: Axes, radius: f64, (a, b): (f64, f64)) -> Curve {
     let phi = a + b;
     let (x, y) = (axes.x, axes.y());
-    let x_reversed: P3 = std::array::from_fn(|k| phi.cos() * x[k] + phi.sin() * y[k]);
-    Curve::Circle { axes: Axes { origin: axes.origin, z: axes.z.map(|c| -c), x: x_reversed }, radius }
+    let x_reversed = Point::<3>::from_fn(|k, _| phi.cos() * x[k] + phi.sin() * y[k]);
+    Curve::Circle { axes: Axes { origin: axes.origin, z: -axes.z, x: x_reversed }, radius }
 }
 
 /// The same curve run backwards: c(a + b − t) on [a, b] (lines, splines, circles and their
@@ -719,30 +724,30 @@ pub fn reversed(c: Curve) -> Option<Curve> {
 
 /// Whether a placement is the world frame.
 pub fn is_world(a: &Axes) -> bool {
-    a.origin == [0.0; 3] && a.z == [0.0, 0.0, 1.0] && a.x == [1.0, 0.0, 0.0]
+    *a == Axes::WORLD
 }
 
 /// e(θ) = cos θ x + sin θ y of a placement.
-pub fn radial(a: &Axes, theta: f64) -> P3 {
-    let y = cross(a.z, a.x);
-    std::array::from_fn(|k| theta.cos() * a.x[k] + theta.sin() * y[k])
+pub fn radial(a: &Axes, theta: f64) -> Point<3> {
+    let y = a.z.cross(&a.x);
+    Point::<3>::from_fn(|k, _| theta.cos() * a.x[k] + theta.sin() * y[k])
 }
 
 /// The parameter of the point `p` (a vertex) on a 3-D curve: projection for lines, the
 /// angle for conics, the closest point for splines.
-fn parameter_on(c: &Curve, p: P3) -> Conv<f64> {
+fn parameter_on(c: &Curve, p: Point<3>) -> Conv<f64> {
     Ok(match c {
         Curve::Line { origin, direction } => {
             let (o, d) = (to3(origin), to3(direction));
-            dot(std::array::from_fn(|k| p[k] - o[k]), d) / dot(d, d)
+            (p - o).dot(&d) / d.dot(&d)
         }
         Curve::Circle { axes, .. } | Curve::Ellipse { axes, .. } => {
-            let q: P3 = std::array::from_fn(|k| p[k] - axes.origin[k]);
+            let q = p - axes.origin;
             let (a, b) = match c {
                 Curve::Ellipse { a, b, .. } => (*a, *b),
                 _ => (1.0, 1.0),
             };
-            let t = (dot(q, axes.y()) / b).atan2(dot(q, axes.x) / a);
+            let t = (q.dot(&axes.y()) / b).atan2(q.dot(&axes.x) / a);
             if t < 0.0 { t + std::f64::consts::TAU } else { t }
         }
         Curve::Spline(s) => crate::kernel::closest_parameter(s, p)?,
@@ -754,13 +759,17 @@ fn parameter_on(c: &Curve, p: P3) -> Conv<f64> {
 mod tests {
     use super::*;
 
-    fn circle_point(axes: &Axes, r: f64, t: f64) -> P3 {
+    fn circle_point(axes: &Axes, r: f64, t: f64) -> Point<3> {
         axes.at(r * t.cos(), r * t.sin(), 0.0)
     }
 
     #[test]
     fn a_reversed_circle_runs_the_same_points_backwards() {
-        let axes = Axes { origin: [1.0, -2.0, 0.5], z: [0.0, 0.6, 0.8], x: [1.0, 0.0, 0.0] };
+        let axes = Axes {
+            origin: Point::<3>::new(1.0, -2.0, 0.5),
+            z: Point::<3>::new(0.0, 0.6, 0.8),
+            x: Point::<3>::new(1.0, 0.0, 0.0),
+        };
         let (a, b) = (0.4, 2.9);
         let Curve::Trimmed { basis, start, end } =
             reversed(Curve::Trimmed { basis: Box::new(Curve::Circle { axes, radius: 2.0 }), start: a, end: b })

@@ -5,7 +5,7 @@ use splinekit::Point;
 use splinekit::curve::{CurveNearest, NurbsCurve};
 
 use crate::error::{Result, StepError};
-use crate::geometry::{P3, SplineCurve};
+use crate::geometry::SplineCurve;
 
 /// The spline as a kernel NURBS curve in D dimensions (weights 1 when not rational; the
 /// STEP form is an open spline over its full knot vector, closed or not).
@@ -17,10 +17,8 @@ pub fn nurbs<const D: usize>(s: &SplineCurve) -> Result<NurbsCurve<D>> {
 }
 
 /// The parameter of the point of the spline closest to `p`.
-pub fn closest_parameter(s: &SplineCurve, p: P3) -> Result<f64> {
+pub fn closest_parameter(s: &SplineCurve, p: Point<3>) -> Result<f64> {
     let c = nurbs::<3>(s)?;
     let scale = s.points.iter().flatten().fold(1.0f64, |m, x| m.max(x.abs()));
-    c.closest_point(&Point::<3>::new(p[0], p[1], p[2]), 1e-12 * scale)
-        .map(|n| n.t)
-        .map_err(|e| StepError::plain(format!("closest point: {e}")))
+    c.closest_point(&p, 1e-12 * scale).map(|n| n.t).map_err(|e| StepError::plain(format!("closest point: {e}")))
 }

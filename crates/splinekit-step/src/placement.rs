@@ -3,10 +3,11 @@
 //! directions by d ↦ d₁x + d₂y + d₃z; placements compose (their origin is a point, their
 //! axes directions), so every entity stays the same kind and keeps its parametrisation.
 
+use splinekit::Point;
 use splinekit::axes::OrthonormalAxes;
 
 use crate::error::{Result, StepError};
-use crate::geometry::{Axes, Curve, P3, SplineCurve, SplineSurface, Surface};
+use crate::geometry::{Axes, Curve, SplineCurve, SplineSurface, Surface};
 
 /// The frame as a map of points and directions.
 #[derive(Debug, Clone, Copy)]
@@ -17,7 +18,7 @@ impl Placement {
     /// z = axis/|axis|, x the part of `ref_direction` orthogonal to z, normalised; errors
     /// name the field).
     pub fn of_frame(origin: &[f64], axis: &[f64], ref_direction: &[f64]) -> Result<Placement> {
-        let three = |field: &str, v: &[f64]| -> Result<P3> {
+        let three = |field: &str, v: &[f64]| -> Result<[f64; 3]> {
             match v {
                 [a, b, c] if v.iter().all(|x| x.is_finite()) => Ok([*a, *b, *c]),
                 _ => Err(StepError::plain(format!("{field}: expected 3 finite coordinates, got {v:?}"))),
@@ -26,23 +27,23 @@ impl Placement {
         let OrthonormalAxes { x, z, .. } =
             OrthonormalAxes::build(three("axis", axis)?, three("ref_direction", ref_direction)?)
                 .map_err(|e| StepError::plain(e.to_string()))?;
-        Ok(Placement(Axes { origin: three("origin", origin)?, z, x }))
+        Ok(Placement(Axes { origin: three("origin", origin)?.into(), z: z.into(), x: x.into() }))
     }
 
     /// d₁x + d₂y + d₃z.
-    pub fn direction(&self, d: P3) -> P3 {
+    pub fn direction(&self, d: Point<3>) -> Point<3> {
         let (x, y, z) = (self.0.x, self.0.y(), self.0.z);
-        std::array::from_fn(|k| d[0] * x[k] + d[1] * y[k] + d[2] * z[k])
+        Point::<3>::from_fn(|k, _| d[0] * x[k] + d[1] * y[k] + d[2] * z[k])
     }
 
     /// o + p₁x + p₂y + p₃z.
-    pub fn point(&self, p: P3) -> P3 {
-        let d = self.direction(p);
-        std::array::from_fn(|k| self.0.origin[k] + d[k])
+    pub fn point(&self, p: Point<3>) -> Point<3> {
+        self.0.origin + self.direction(p)
     }
 
     fn point_vec(&self, p: &[f64]) -> Vec<f64> {
-        self.point([p[0], p.get(1).copied().unwrap_or(0.0), p.get(2).copied().unwrap_or(0.0)]).to_vec()
+        let p = Point::<3>::new(p[0], p.get(1).copied().unwrap_or(0.0), p.get(2).copied().unwrap_or(0.0));
+        self.point(p).as_slice().to_vec()
     }
 
     fn axes(&self, a: &Axes) -> Axes {
@@ -55,11 +56,12 @@ impl Placement {
             Curve::Line { origin, direction } => Curve::Line {
                 origin: self.point_vec(origin),
                 direction: self
-                    .direction([
+                    .direction(Point::<3>::new(
                         direction[0],
                         direction.get(1).copied().unwrap_or(0.0),
                         direction.get(2).copied().unwrap_or(0.0),
-                    ])
+                    ))
+                    .as_slice()
                     .to_vec(),
             },
             Curve::Circle { axes, radius } => Curve::Circle { axes: self.axes(axes), radius: *radius },
@@ -108,9 +110,10 @@ mod tests {
 
     #[test]
     fn placements_compose_with_the_frames_they_move() {
-        let p = Placement(Axes { origin: [1.0, 2.0, 3.0], z: [0.0, 1.0, 0.0], x: [0.0, 0.0, 1.0] });
+        let v = Point::<3>::new;
+        let p = Placement(Axes { origin: v(1.0, 2.0, 3.0), z: v(0.0, 1.0, 0.0), x: v(0.0, 0.0, 1.0) });
         // y = z × x = (1, 0, 0).
-        assert_eq!(p.point([1.0, 2.0, 3.0]), [1.0 + 2.0, 2.0 + 3.0, 3.0 + 1.0]);
+        assert_eq!(p.point(v(1.0, 2.0, 3.0)), v(1.0 + 2.0, 2.0 + 3.0, 3.0 + 1.0));
         let Surface::Sphere { axes, .. } = p.surface(&Surface::Sphere { axes: Axes::WORLD, radius: 1.0 }) else {
             unreachable!()
         };

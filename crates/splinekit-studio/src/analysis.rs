@@ -9,6 +9,7 @@
 
 use splinekit::basis::Side;
 use splinekit::curve::{Curve, curvature_from};
+use splinekit::query::Aabb;
 use splinekit::{Point, blend::BlendingSplineCurve};
 use splinekit_render::{LineItem, PointItem, RenderScene};
 use splinekit_scene::scenes::SceneDocument;
@@ -120,13 +121,11 @@ fn comb_of<const D: usize>(c: &dyn Curve<D>, scale: f64) -> (Teeth, f64) {
     (teeth, size)
 }
 
+/// The diagonal of the points' box ([`Aabb::spanning`]), a coordinate no point has a
+/// number for counting 0.
 fn diagonal(points: impl Iterator<Item = [f64; 3]>) -> f64 {
-    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-    for p in points {
-        lo = [0, 1, 2].map(|k| lo[k].min(p[k]));
-        hi = [0, 1, 2].map(|k| hi[k].max(p[k]));
-    }
-    (0..3).map(|k| (hi[k] - lo[k]).max(0.0).powi(2)).sum::<f64>().sqrt()
+    let Some(b) = Aabb::spanning(points.map(Point::<3>::from)) else { return 0.0 };
+    (0..3).map(|k| (b.max[k] - b.min[k]).max(0.0).powi(2)).sum::<f64>().sqrt()
 }
 
 /// The parameters where a curve's pieces meet: the distinct interior knots of a B-spline

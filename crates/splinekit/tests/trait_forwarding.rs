@@ -8,6 +8,7 @@ use std::sync::Arc;
 
 use splinekit::basis::Side;
 use splinekit::curve::{Curve, FrenetFrame};
+use splinekit::query::Aabb;
 use splinekit::surface::{Curvatures, FundamentalForms, Surface, TrimLoops};
 use splinekit::{Interval, Point};
 
@@ -56,6 +57,9 @@ impl Curve<2> for SentinelCurve {
     fn frame(&self, _t: f64) -> Option<FrenetFrame<2>> {
         Some(FrenetFrame { tangent: p2(10.0), normal: None, binormal: None, curvature: 10.0 })
     }
+    fn extent(&self) -> Aabb<2> {
+        Aabb { min: p2(13.0), max: p2(14.0) }
+    }
 }
 
 /// Every method of `c` gives the sentinel's answer.
@@ -75,6 +79,7 @@ fn check_curve(name: &str, c: &impl Curve<2>) {
     assert_eq!(c.tangent(0.0), p2(8.0), "{name}: tangent");
     assert_eq!(c.curvature(0.0), 9.0, "{name}: curvature");
     assert_eq!(c.frame(0.0).map(|f| f.curvature), Some(10.0), "{name}: frame");
+    assert_eq!(c.extent(), Aabb { min: p2(13.0), max: p2(14.0) }, "{name}: extent");
 }
 
 #[test]
@@ -146,6 +151,9 @@ impl Surface<3> for SentinelSurface {
     fn breakpoints_v(&self) -> Vec<f64> {
         vec![-2.0, -0.5, 0.0]
     }
+    fn extent(&self) -> Aabb<3> {
+        Aabb { min: p3(15.0), max: p3(16.0) }
+    }
 }
 
 /// Every method of `s` gives the sentinel's answer.
@@ -170,6 +178,7 @@ fn check_surface(name: &str, s: &impl Surface<3>) {
     assert_eq!(s.curvatures(0.0, 0.0).map(|c| c.gaussian), Some(12.0), "{name}: curvatures");
     assert_eq!(s.breakpoints_u(), vec![0.0, 0.5, 2.0], "{name}: breakpoints_u");
     assert_eq!(s.breakpoints_v(), vec![-2.0, -0.5, 0.0], "{name}: breakpoints_v");
+    assert_eq!(s.extent(), Aabb { min: p3(15.0), max: p3(16.0) }, "{name}: extent");
 }
 
 #[test]

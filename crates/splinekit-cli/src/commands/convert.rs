@@ -135,7 +135,7 @@ fn json_to_step(args: &ConvertArgs) -> Result<()> {
                 "tolerance": e.tolerance,
                 "params": s.iter().map(|s| [s.param.0, s.param.1]).collect::<Vec<_>>(),
                 "step_params": s.iter().map(|s| [s.step_param.0, s.step_param.1]).collect::<Vec<_>>(),
-                "points": s.iter().map(|s| s.point).collect::<Vec<_>>(),
+                "points": s.iter().map(|s| <[f64; 3]>::from(s.point)).collect::<Vec<_>>(),
                 "map": { "u": [e.map.u.0, e.map.u.1], "v": [e.map.v.0, e.map.v.1] },
             });
             if let ShapeDocument::Surface(SurfaceDocument::Trimmed(t)) = shape {

@@ -51,8 +51,7 @@ impl DimensionVisitor<Curves> for CurvePoly<'_> {
             (Some(n), _) => Polyline::regular(c, n),
             (None, Some(t)) => Polyline::adaptive_with_limit(c, t, MAX_CURVE_POINTS),
             (None, None) => {
-                let rough = Polyline::regular(c, 64)?;
-                let size = rough.points.iter().map(|p| (p - rough.points[0]).norm()).fold(0.0, f64::max).max(1e-12);
+                let size = Polyline::rough_size(c)?.max(1e-12);
                 Polyline::adaptive_with_limit(c, size * 1e-3, MAX_CURVE_POINTS)
             }
         }

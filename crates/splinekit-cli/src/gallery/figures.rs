@@ -6,6 +6,7 @@ use splinekit::basis::{basis_function, bernstein};
 use splinekit::curve::model::{Butterfly, Circle, Heart, Helix, Lissajous, Trefoil};
 use splinekit::curve::{BSplineCurve, BezierCurve, CatmullRomCurve, CircleFrame, Curve, HermiteCurve, NurbsCurve};
 use splinekit::fit::{FitOptions, KnotPlacement, fit_curve};
+use splinekit::query::Aabb;
 use splinekit::subdivision::{ChaikinOptions, FourPointOptions, chaikin, four_point, lane_riesenfeld};
 use splinekit_mesh::{Polyline, Projection, SvgFigure};
 use std::f64::consts::TAU;
@@ -37,15 +38,11 @@ fn curve_points<const D: usize>(c: &dyn Curve<D>) -> Result<(Vec<Point<D>>, bool
     Ok((poly.points, poly.closed))
 }
 
+/// The figure's size: the diagonal of the box of 65 regular samples (the figures are
+/// defined by that sample set).
 fn extent<const D: usize>(c: &dyn Curve<D>) -> f64 {
     let p = Polyline::regular(c, 64).map(|p| p.points).unwrap_or_default();
-    let mut lo = Point::<D>::repeat(f64::INFINITY);
-    let mut hi = Point::<D>::repeat(f64::NEG_INFINITY);
-    for q in &p {
-        lo = lo.inf(q);
-        hi = hi.sup(q);
-    }
-    (hi - lo).norm().max(1e-9)
+    Aabb::around(&p, 0.0).diagonal().max(1e-9)
 }
 
 fn draw<const D: usize>(fig: &mut SvgFigure, c: &dyn Curve<D>, colour: &str, width: f64) -> Result<()> {

@@ -203,6 +203,7 @@ pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use splinekit::query::Aabb;
 
     /// A drawn polyline: its points in picture coordinates, stroke and width.
     struct Drawn {
@@ -299,9 +300,7 @@ mod tests {
         let (paths, _) = parse(&contours().unwrap().svg);
         let outline: Vec<&Drawn> = paths.iter().filter(|p| p.dashed).collect();
         assert_eq!(outline.len(), 1);
-        let (lo, hi) = outline[0].points.iter().fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(lo, hi), q| {
-            ([lo[0].min(q[0]), lo[1].min(q[1])], [hi[0].max(q[0]), hi[1].max(q[1])])
-        });
+        let outline_box = Aabb::spanning(outline[0].points.iter().map(|q| Point::<2>::from(*q))).expect("an outline");
         let contours: Vec<&Drawn> = paths.iter().filter(|p| !p.dashed).collect();
         assert!(
             expected > CONTOUR_LEVELS.len() && contours.len() == expected,
@@ -309,7 +308,7 @@ mod tests {
             contours.len()
         );
         for q in contours.iter().flat_map(|p| &p.points) {
-            assert!((0..2).all(|i| q[i] >= lo[i] - 0.01 && q[i] <= hi[i] + 0.01), "{q:?} is outside the patch");
+            assert!(outline_box.contains(&Point::<2>::from(*q), 0.01), "{q:?} is outside the patch");
         }
     }
 }

@@ -7,7 +7,7 @@
 use std::io::Write;
 
 use super::representable::{ExportError, Precision, check_mesh, one_line, single_precision_triangles};
-use crate::triangle_mesh::{TriangleMesh, norm, normalize};
+use crate::triangle_mesh::{TriangleMesh, unit_or_zero, v3};
 
 /// A triangle read from STL: face normal and three corners.
 pub type StlTriangle = ([f32; 3], [[f32; 3]; 3]);
@@ -16,11 +16,11 @@ pub type StlTriangle = ([f32; 3], [[f32; 3]; 3]);
 /// mean of its vertex normals.
 fn facet_normal(mesh: &TriangleMesh, t: usize) -> [f64; 3] {
     let n = mesh.face_normal(t);
-    if norm(n) > 0.5 || mesh.normals.is_empty() {
+    if v3(n).norm() > 0.5 || mesh.normals.is_empty() {
         return n;
     }
     let corners = mesh.triangles[t].map(|i| mesh.normals[i as usize]);
-    normalize(std::array::from_fn(|k| corners[0][k] + corners[1][k] + corners[2][k]))
+    unit_or_zero(v3(corners[0]) + v3(corners[1]) + v3(corners[2]))
 }
 
 /// Writes the mesh as binary STL to `out` (give it a buffered writer).

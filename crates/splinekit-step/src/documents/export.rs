@@ -16,6 +16,7 @@ use splinekit::Point;
 use splinekit::basis::Side;
 use splinekit::curve::bezier::bezier_knots;
 use splinekit::curve::{Curve as KernelCurve, Interval};
+use splinekit::query::extent::{sampled_curve_box, sampled_surface_box};
 use splinekit::surface::Surface as KernelSurface;
 use splinekit_scene::bfunctions::BFunctionDoc;
 use splinekit_scene::blending::{BlendingSource, BlendingSplineDoc, LocalDoc, LocalPatchDoc};
@@ -26,7 +27,7 @@ use crate::approximate::{
     Fitted, hermite_curve, hermite_surface, polynomial_curve, polynomial_surface, uniform_breaks,
 };
 use crate::error::{Result, StepError};
-use crate::geometry::{Axes, Curve, Geometry, Item, P3, SplineCurve, SplineSurface, Surface, norm};
+use crate::geometry::{Axes, Curve, Geometry, Item, SplineCurve, SplineSurface, Surface};
 use crate::placement::Placement;
 use splinekit_scene::surfaces::PlacedDoc;
 
@@ -192,19 +193,10 @@ fn kernel_curve(doc: &CurveDocument) -> Result<Box<dyn KernelCurve<3>>> {
     }
 }
 
-/// Bounding-box diagonal of samples: the size a relative tolerance refers to.
+/// The size a relative tolerance refers to: the diagonal of the box of 257 regular samples
+/// ([`sampled_curve_box`]; the tolerances, so the files, are defined by that sample set).
 fn curve_size(c: &dyn KernelCurve<3>) -> f64 {
-    let d = c.domain();
-    box_diagonal((0..=256).map(|i| c.point(d.lerp(i as f64 / 256.0))))
-}
-
-fn box_diagonal(points: impl Iterator<Item = Point<3>>) -> f64 {
-    let (mut lo, mut hi) = (Point::<3>::repeat(f64::INFINITY), Point::<3>::repeat(f64::NEG_INFINITY));
-    for p in points {
-        lo = lo.inf(&p);
-        hi = hi.sup(&p);
-    }
-    (hi - lo).norm().max(f64::MIN_POSITIVE)
+    sampled_curve_box(c, 256).diagonal().max(f64::MIN_POSITIVE)
 }
 
 /// Exports a curve document; `relative_tolerance` scales with the curve's size.
@@ -232,7 +224,7 @@ pub fn export_curve(doc: &CurveDocument, name: &str, relative_tolerance: f64) ->
             // A unit direction, trimmed by length: readers (OpenCASCADE) parametrise lines
             // by arc length whatever the VECTOR's magnitude, so t' = |to − from| t.
             let d: Vec<f64> = (0..3).map(|k| to[k] - from[k]).collect();
-            let len = norm([d[0], d[1], d[2]]);
+            let len = Point::<3>::new(d[0], d[1], d[2]).norm();
             let direction = d.iter().map(|c| c / len).collect();
             let mut e = exact(Curve::Trimmed {
                 basis: Box::new(Curve::Line { origin: from, direction }),
@@ -309,13 +301,10 @@ pub(crate) fn kernel_surface(doc: &SurfaceDocument) -> Result<Box<dyn KernelSurf
     }
 }
 
+/// The size a relative tolerance refers to: the diagonal of the box of the regular 33 × 33
+/// grid of samples ([`sampled_surface_box`]).
 fn surface_size(s: &dyn KernelSurface<3>) -> f64 {
-    let (du, dv) = (s.domain_u(), s.domain_v());
-    box_diagonal(
-        (0..=32)
-            .flat_map(|i| (0..=32).map(move |j| (i, j)))
-            .map(|(i, j)| s.point(du.lerp(i as f64 / 32.0), dv.lerp(j as f64 / 32.0))),
-    )
+    sampled_surface_box(s, 32).diagonal().max(f64::MIN_POSITIVE)
 }
 
 fn trimmed(basis: Surface, u: (f64, f64), v: (f64, f64)) -> Surface {
@@ -371,12 +360,13 @@ fn elementary_surface(doc: &SurfaceDocument) -> Result<Option<(Surface, ParamMap
 /// bilinear B-spline.
 fn plane_surface(origin: &[f64], u_axis: &[f64], v_axis: &[f64]) -> Result<(Surface, ParamMap)> {
     let (o, u, v) = (p3(origin)?, p3(u_axis)?, p3(v_axis)?);
-    let (o, u, v): (P3, P3, P3) = ([o[0], o[1], o[2]], [u[0], u[1], u[2]], [v[0], v[1], v[2]]);
-    let (lu, lv) = (norm(u), norm(v));
+    let three = |p: Vec<f64>| Point::<3>::new(p[0], p[1], p[2]);
+    let (o, u, v) = (three(o), three(u), three(v));
+    let (lu, lv) = (u.norm(), v.norm());
     let dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
     if dot.abs() <= 1e-14 * lu * lv {
         let x = u.map(|c| c / lu);
-        let z = crate::geometry::cross(u, v).map(|c| c / (lu * lv));
+        let z = u.cross(&v).map(|c| c / (lu * lv));
         let axes = Axes { origin: o, z, x };
         Ok((trimmed(Surface::Plane(axes), (0.0, lu), (0.0, lv)), ParamMap { u: (lu, 0.0), v: (lv, 0.0) }))
     } else {
@@ -393,7 +383,8 @@ fn plane_surface(origin: &[f64], u_axis: &[f64], v_axis: &[f64]) -> Result<(Surf
 /// where the point at u′, v′ (v′ the height along z, ISO 10303-42's parameter) is the
 /// document's at u = 2π − u′, v = −v′/h (u′ over [0, 2π] as OpenCASCADE keeps it).
 fn cone_surface(radius: f64, height: f64) -> (Surface, ParamMap) {
-    let axes = Axes { origin: [0.0; 3], z: [0.0, 0.0, -1.0], x: [1.0, 0.0, 0.0] };
+    let axes =
+        Axes { origin: Point::<3>::zeros(), z: Point::<3>::new(0.0, 0.0, -1.0), x: Point::<3>::new(1.0, 0.0, 0.0) };
     let cone = Surface::Cone { axes, radius, semi_angle: (radius / height).atan() };
     (trimmed(cone, (0.0, TAU), (-height, 0.0)), ParamMap { u: (-1.0, TAU), v: (-height, 0.0) })
 }
@@ -409,12 +400,12 @@ fn swept_surface(
         SurfaceForm::Revolution(d) => {
             let (c, form, dev) = profile(&d.curve, relative_tolerance)?;
             let axis = p3(&d.axis)?;
-            let len = norm([axis[0], axis[1], axis[2]]);
+            let len = Point::<3>::new(axis[0], axis[1], axis[2]).norm();
             let o = p3(&d.axis_point)?;
             let rev = Surface::Revolution {
                 profile: c,
-                axis_origin: [o[0], o[1], o[2]],
-                axis: [axis[0] / len, axis[1] / len, axis[2] / len],
+                axis_origin: Point::<3>::new(o[0], o[1], o[2]),
+                axis: Point::<3>::new(axis[0] / len, axis[1] / len, axis[2] / len),
             };
             (trimmed(rev, (0.0, d.angle), (domain.1.start, domain.1.end)), form, dev, ParamMap::IDENTITY)
         }
@@ -422,8 +413,9 @@ fn swept_surface(
             let (c, form, dev) = profile(&d.curve, relative_tolerance)?;
             // Unit direction, v' = |direction| v (readers parametrise v by length).
             let dir = p3(&d.direction)?;
-            let len = norm([dir[0], dir[1], dir[2]]);
-            let ext = Surface::Extrusion { profile: c, direction: [dir[0] / len, dir[1] / len, dir[2] / len] };
+            let len = Point::<3>::new(dir[0], dir[1], dir[2]).norm();
+            let ext =
+                Surface::Extrusion { profile: c, direction: Point::<3>::new(dir[0] / len, dir[1] / len, dir[2] / len) };
             let map = ParamMap { u: (1.0, 0.0), v: (len, 0.0) };
             (trimmed(ext, (domain.0.start, domain.0.end), (0.0, len)), form, dev, map)
         }
@@ -573,7 +565,7 @@ pub struct Sample {
     /// The STEP parameter map(param).
     pub step_param: (f64, f64),
     /// The document's point there, evaluated by splinekit.
-    pub point: P3,
+    pub point: Point<3>,
 }
 
 /// `count` samples of a curve (uniform in t, ends included), or `count` × `count` of a
@@ -583,14 +575,13 @@ pub fn samples(doc: &ShapeDocument, exported: &Exported, count: usize) -> Result
     let m = exported.map;
     let step = |(u, v): (f64, f64)| (m.u.0 * u + m.u.1, m.v.0 * v + m.v.1);
     let at = |d: Interval, i: usize| d.lerp(i as f64 / (count - 1).max(1) as f64);
-    let point = |p: Point<3>| [p[0], p[1], p[2]];
     match doc {
         ShapeDocument::Curve(c) => {
             let k = kernel_curve(c)?;
             Ok((0..count)
                 .map(|i| {
                     let t = at(exported.domain.0, i);
-                    Sample { param: (t, 0.0), step_param: step((t, 0.0)), point: point(k.point(t)) }
+                    Sample { param: (t, 0.0), step_param: step((t, 0.0)), point: k.point(t) }
                 })
                 .collect())
         }
@@ -600,7 +591,7 @@ pub fn samples(doc: &ShapeDocument, exported: &Exported, count: usize) -> Result
                 .flat_map(|i| (0..count).map(move |j| (i, j)))
                 .map(|(i, j)| {
                     let (u, v) = (at(exported.domain.0, i), at(exported.domain.1, j));
-                    Sample { param: (u, v), step_param: step((u, v)), point: point(k.point(u, v)) }
+                    Sample { param: (u, v), step_param: step((u, v)), point: k.point(u, v) }
                 })
                 .collect())
         }

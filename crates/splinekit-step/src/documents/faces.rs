@@ -21,7 +21,7 @@ use std::f64::consts::TAU;
 use super::export::{Exported, Form, ParamMap, export_curve, export_surface, kernel_surface};
 use crate::approximate::hermite_curve;
 use crate::error::{Result, StepError};
-use crate::geometry::{Curve, FaceEdge, FaceGeometry, FaceLoop, Geometry, LoopEdge, P3, SplineCurve, Surface};
+use crate::geometry::{Curve, FaceEdge, FaceGeometry, FaceLoop, Geometry, LoopEdge, SplineCurve, Surface};
 
 /// Largest distance between an edge's 3-D curve and S(pcurve), relative to the size of
 /// the surface (and never more than the surface's own tolerance).
@@ -71,9 +71,9 @@ fn loop_curve(doc: &CurveDocument, field: &str, relative_tolerance: f64) -> Resu
     let p2 = |p: &[f64]| Point::<2>::new(p[0], p[1]);
     let arc = |axes: &crate::geometry::Axes, a: f64, b: f64| {
         let frame = CircleFrame {
-            center: p2(&axes.origin),
-            x_axis: p2(&axes.x.map(|x| x * a)),
-            y_axis: p2(&axes.y().map(|y| y * b)),
+            center: p2(axes.origin.as_slice()),
+            x_axis: p2(axes.x.map(|x| x * a).as_slice()),
+            y_axis: p2(axes.y().map(|y| y * b).as_slice()),
             radius: 1.0,
         };
         NurbsCurve::arc(&frame, 0.0, TAU).map_err(err)
@@ -120,10 +120,6 @@ fn mapped_pcurve(c: &NurbsCurve<2>, map: &ParamMap) -> Curve {
     })
 }
 
-fn p3(p: Point<3>) -> P3 {
-    [p[0], p[1], p[2]]
-}
-
 /// The edge of a loop piece c: its pcurve through `map` and its fitted 3-D curve.
 fn edge(
     surface: &dyn KernelSurface<3>,
@@ -160,7 +156,7 @@ fn domain_rectangle(
     surface: &dyn KernelSurface<3>,
     map: &ParamMap,
     tolerance: f64,
-    vertices: &mut Vec<P3>,
+    vertices: &mut Vec<Point<3>>,
 ) -> Result<FaceLoop> {
     let (du, dv) = (surface.domain_u(), surface.domain_v());
     let (closed_u, closed_v) = (surface.is_closed_u(), surface.is_closed_v());
@@ -168,8 +164,8 @@ fn domain_rectangle(
     let first = vertices.len();
     let mut corner_vertex = [0; 4];
     for (k, &(u, v)) in corners.iter().enumerate() {
-        let p = p3(surface.point(u, v));
-        let near = |q: &P3| (0..3).map(|i| (q[i] - p[i]).powi(2)).sum::<f64>().sqrt() <= tolerance;
+        let p = surface.point(u, v);
+        let near = |q: &Point<3>| (q - p).norm() <= tolerance;
         corner_vertex[k] = match vertices[first..].iter().position(near) {
             Some(i) => first + i,
             None => {
@@ -261,11 +257,11 @@ pub fn export_trimmed(doc: &TrimmedDoc, name: &str, relative_tolerance: f64) -> 
         let (c, approx) = loop_curve(loop_doc, &field, relative_tolerance)?;
         approximated |= approx;
         let d = c.domain();
-        let (a, b) = (p3(kernel.point(c.point(d.start)[0], c.point(d.start)[1])), {
+        let (a, b) = (kernel.point(c.point(d.start)[0], c.point(d.start)[1]), {
             let q = c.point(d.end);
-            p3(kernel.point(q[0], q[1]))
+            kernel.point(q[0], q[1])
         });
-        let gap = (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>().sqrt();
+        let gap = (a - b).norm();
         if gap > base.tolerance {
             return Err(StepError::plain(format!(
                 "{field}: the loop is not closed on the surface (ends {gap:e} apart)"

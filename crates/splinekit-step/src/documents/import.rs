@@ -11,6 +11,7 @@
 
 use splinekit::Point;
 use splinekit::curve::{CircleFrame, Curve as KernelCurve, NurbsCurve};
+use splinekit::query::Aabb;
 use splinekit_scene::curves::{BSplineDoc, CircleDoc, EllipseDoc, LineDoc, NurbsDoc};
 use splinekit_scene::surfaces::{
     BSplineSurfaceDoc, CylinderDoc, ExtrusionDoc, NurbsSurfaceDoc, PlacedDoc, PlaneDoc, RevolutionDoc, SphereDoc,
@@ -20,7 +21,7 @@ use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
 use crate::error::{Result, StepError};
-use crate::geometry::{Axes, Curve, Geometry, Item, P3, SplineCurve, SplineSurface, Surface};
+use crate::geometry::{Axes, Curve, Geometry, Item, SplineCurve, SplineSurface, Surface};
 use crate::import::{Face, GeometryOrFace, import, is_world, radial};
 use crate::kernel::nurbs;
 use crate::part21::StepFile;
@@ -88,8 +89,8 @@ fn face_item(name: &str, doc: &ShapeDocument) -> Result<Item> {
     Ok(crate::documents::export_surface(s, name, 1e-6)?.item)
 }
 
-fn v3(p: P3) -> Vec<f64> {
-    p.to_vec()
+fn v3(p: Point<3>) -> Vec<f64> {
+    p.as_slice().to_vec()
 }
 
 fn pts_of<const D: usize>(c: &NurbsCurve<D>) -> Vec<Vec<f64>> {
@@ -163,7 +164,7 @@ fn spline_curve_doc(s: &SplineCurve) -> CurveDocument {
 /// An exact rational arc of an ellipse with semi-axes (a, b) in a placement, angles
 /// [t0, t1].
 fn conic_arc<const D: usize>(axes: &Axes, a: f64, b: f64, t0: f64, t1: f64) -> Result<NurbsCurve<D>> {
-    let v = |p: P3| Point::<D>::from_fn(|k, _| p[k]);
+    let v = |p: Point<3>| Point::<D>::from_fn(|k, _| p[k]);
     let (x, y) = (axes.x.map(|c| c * a), axes.y().map(|c| c * b));
     let frame = CircleFrame { center: v(axes.origin), x_axis: v(x), y_axis: v(y), radius: 1.0 };
     NurbsCurve::arc(&frame, t0, t1).map_err(|e| StepError::plain(format!("arc: {e}")))
@@ -329,26 +330,15 @@ fn quadric_doc(basis: &Surface, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> R
             revolution(axes, CurveDocument::Line(LineDoc { from: at(v0), to: at(v1) }), u1 - u0)
         }
         Surface::Sphere { axes, radius } => {
-            let meridian =
-                Axes { origin: axes.origin, z: crate::geometry::cross(radial(axes, u0), axes.z), x: radial(axes, u0) };
-            let frame = CircleFrame {
-                center: Point::<3>::from(axes.origin),
-                x_axis: Point::<3>::from(meridian.x),
-                y_axis: Point::<3>::from(axes.z),
-                radius: *radius,
-            };
+            let meridian = Axes { origin: axes.origin, z: radial(axes, u0).cross(&axes.z), x: radial(axes, u0) };
+            let frame = CircleFrame { center: axes.origin, x_axis: meridian.x, y_axis: axes.z, radius: *radius };
             let arc = NurbsCurve::<3>::arc(&frame, v0, v1).map_err(|e| StepError::plain(format!("sphere: {e}")))?;
             revolution(axes, nurbs_doc(&arc), u1 - u0)
         }
         Surface::Torus { axes, major_radius, minor_radius } => {
             let e = radial(axes, u0);
-            let centre: P3 = std::array::from_fn(|k| axes.origin[k] + major_radius * e[k]);
-            let frame = CircleFrame {
-                center: Point::<3>::from(centre),
-                x_axis: Point::<3>::from(e),
-                y_axis: Point::<3>::from(axes.z),
-                radius: *minor_radius,
-            };
+            let centre = Point::<3>::from_fn(|k, _| axes.origin[k] + major_radius * e[k]);
+            let frame = CircleFrame { center: centre, x_axis: e, y_axis: axes.z, radius: *minor_radius };
             let arc = NurbsCurve::<3>::arc(&frame, v0, v1).map_err(|e| StepError::plain(format!("torus: {e}")))?;
             revolution(axes, nurbs_doc(&arc), u1 - u0)
         }
@@ -379,7 +369,7 @@ fn surface_doc(s: &Surface) -> Result<Option<SurfaceDocument>> {
                 let Some(c) = trimmed_profile(profile, *u)? else { return Ok(None) };
                 Some(SurfaceDocument::Extrusion(ExtrusionDoc {
                     curve: Box::new(c),
-                    direction: direction.map(|d| d * v.1).to_vec(),
+                    direction: v3(direction.map(|d| d * v.1)),
                 }))
             }
             other => quadric_doc(other, *u, *v)?,
@@ -404,8 +394,8 @@ fn plane_doc(a: &Axes, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> SurfaceDoc
     let y = a.y();
     SurfaceDocument::Plane(PlaneDoc {
         origin: v3(a.at(u0, v0, 0.0)),
-        u_axis: a.x.map(|c| c * (u1 - u0)).to_vec(),
-        v_axis: y.map(|c| c * (v1 - v0)).to_vec(),
+        u_axis: v3(a.x.map(|c| c * (u1 - u0))),
+        v_axis: v3(y.map(|c| c * (v1 - v0))),
     })
 }
 
@@ -470,18 +460,15 @@ fn join_loop(
     Ok(Some(nurbs_doc(&NurbsCurve::new(p, knots, points, weights).map_err(err)?)))
 }
 
-/// The box of a face's loops in its (u, v) plane: lower and upper corners of the loops'
-/// control points (which hold the loops).
-fn loops_box(f: &Face) -> Result<Option<(Point<2>, Point<2>)>> {
-    let (mut lo, mut hi) = (Point::<2>::repeat(f64::INFINITY), Point::<2>::repeat(f64::NEG_INFINITY));
+/// The box of a face's loops in its (u, v) plane: the box of the loops' control points
+/// (which hold the loops); `None` without points.
+fn loops_box(f: &Face) -> Result<Option<Aabb<2>>> {
+    let mut b = Aabb::<2>::empty();
     for c in f.loops.iter().flatten() {
         let Some(p) = loop_piece(c)? else { return Ok(None) };
-        for q in p.control_points() {
-            lo = lo.inf(q);
-            hi = hi.sup(q);
-        }
+        p.control_points().iter().for_each(|q| b.include(q));
     }
-    Ok((lo[0] <= hi[0] && lo[1] <= hi[1]).then_some((lo, hi)))
+    Ok((!b.is_empty()).then_some(b))
 }
 
 /// Whether [`curve_doc`] keeps the curve's parameter (splines, lines, conics at the world
@@ -496,9 +483,10 @@ fn keeps_parameter(c: &Curve) -> bool {
 
 /// A curve document moved by `offset` (splines, Bézier curves and lines; `None` for the
 /// model curves, which have no placement).
-fn translated(doc: CurveDocument, offset: P3) -> Option<CurveDocument> {
-    let shift =
-        |pts: &mut Vec<Vec<f64>>| pts.iter_mut().for_each(|p| p.iter_mut().zip(offset).for_each(|(x, o)| *x += o));
+fn translated(doc: CurveDocument, offset: Point<3>) -> Option<CurveDocument> {
+    let shift = |pts: &mut Vec<Vec<f64>>| {
+        pts.iter_mut().for_each(|p| p.iter_mut().zip(offset.iter()).for_each(|(x, o)| *x += o))
+    };
     Some(match doc {
         CurveDocument::Bspline(mut d) => {
             shift(&mut d.control_points);
@@ -528,14 +516,14 @@ type FaceSurface = (SurfaceDocument, Box<dyn Fn(Point<2>) -> Point<2>>);
 /// both spanning the loops' v range (v maps onto [0, 1]). `None` for other surfaces.
 fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
     let identity = |q: Point<2>| q;
-    let span_v = |(lo, hi): (Point<2>, Point<2>)| {
-        let (v0, dv) = (lo[1], hi[1] - lo[1]);
+    let span_v = |b: Aabb<2>| {
+        let (v0, dv) = (b.min[1], b.max[1] - b.min[1]);
         Box::new(move |q: Point<2>| Point::<2>::new(q[0], (q[1] - v0) / dv)) as Box<dyn Fn(Point<2>) -> Point<2>>
     };
     Ok(Some(match &f.surface {
         Surface::Spline(b) => (spline_surface_doc(b), Box::new(identity)),
         Surface::Plane(a) => {
-            let Some((lo, hi)) = loops_box(f)? else { return Ok(None) };
+            let Some(Aabb { min: lo, max: hi }) = loops_box(f)? else { return Ok(None) };
             let size = hi - lo;
             (plane_doc(a, (lo[0], hi[0]), (lo[1], hi[1])), Box::new(move |q: Point<2>| (q - lo).component_div(&size)))
         }
@@ -558,7 +546,7 @@ fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
             // for the cylinder).
             let slope = if let Surface::Cone { semi_angle, .. } = &f.surface { semi_angle.tan() } else { 0.0 };
             let at = |v: f64| v3(axes.at(radius + v * slope, 0.0, v));
-            let line = LineDoc { from: at(b.0[1]), to: at(b.1[1]) };
+            let line = LineDoc { from: at(b.min[1]), to: at(b.max[1]) };
             let doc = RevolutionDoc {
                 curve: Box::new(CurveDocument::Line(line)),
                 axis_point: v3(axes.origin),
@@ -569,10 +557,10 @@ fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
         }
         Surface::Extrusion { profile, direction } if keeps_parameter(profile) => {
             let Some(b) = loops_box(f)? else { return Ok(None) };
-            let (v0, dv) = (b.0[1], b.1[1] - b.0[1]);
+            let (v0, dv) = (b.min[1], b.max[1] - b.min[1]);
             let Some(c) = curve_doc(profile)? else { return Ok(None) };
             let Some(c) = translated(c, direction.map(|d| d * v0)) else { return Ok(None) };
-            let doc = ExtrusionDoc { curve: Box::new(c), direction: direction.map(|d| d * dv).to_vec() };
+            let doc = ExtrusionDoc { curve: Box::new(c), direction: v3(direction.map(|d| d * dv)) };
             (SurfaceDocument::Extrusion(doc), span_v(b))
         }
         _ => return Ok(None),
@@ -698,8 +686,8 @@ fn seam_crossings(s: &Surface) -> (bool, bool) {
 /// u ∈ [−α, 0]), the documents' domains start at 0. Loops across the seam stay as they are.
 fn into_domain(f: &Face, map: Box<dyn Fn(Point<2>) -> Point<2>>) -> Result<Box<dyn Fn(Point<2>) -> Point<2>>> {
     let periodic = periodic_angles(&f.surface);
-    let Some((lo, _)) = loops_box(f)? else { return Ok(map) };
-    let low = map(lo);
+    let Some(b) = loops_box(f)? else { return Ok(map) };
+    let low = map(b.min);
     let turns = |x: f64, on: bool| if on { -((x + 1e-9) / TAU).floor() * TAU } else { 0.0 };
     let shift = Point::<2>::new(turns(low[0], periodic.0), turns(low[1], periodic.1));
     if shift == Point::<2>::zeros() {

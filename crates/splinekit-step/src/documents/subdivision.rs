@@ -10,6 +10,7 @@
 //! with the one they do.
 
 use splinekit::Point;
+use splinekit::query::Aabb;
 use splinekit::subdivision::surface::SubdivisionSurface;
 use splinekit::subdivision::surface::bezier_patches::{LimitPatches, limit_patches_within};
 use splinekit_scene::surfaces::{BezierSurfaceDoc, SubdivisionSurfaceDoc};
@@ -64,9 +65,7 @@ pub fn surface_patches(s: &SubdivisionSurface, relative_tolerance: f64) -> Resul
     if !(relative_tolerance > 0.0 && relative_tolerance.is_finite()) {
         return Err(StepError::plain(format!("tolerance: must be finite and > 0, got {relative_tolerance}")));
     }
-    let vs = &s.cage().vertices;
-    let (lo, hi) = vs.iter().fold((vs[0], vs[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
-    let size = (hi - lo).norm();
+    let size = Aabb::around(&s.cage().vertices, 0.0).diagonal();
     if size == 0.0 {
         return Err(StepError::plain("vertices: the cage has no extent (all its vertices coincide)"));
     }

@@ -18,6 +18,7 @@ pub mod branch_fit;
 pub mod curve_cover;
 pub mod curve_intersection;
 pub mod curve_surface;
+pub mod extent;
 pub mod march;
 pub mod newton;
 pub mod normal_cone;

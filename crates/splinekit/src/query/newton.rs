@@ -35,6 +35,9 @@ pub mod cap {
     pub const LINE_SEARCH: usize = 40;
     /// The nearest point of a curve to a point (the polish of curve overlaps).
     pub const CURVE_POLISH: usize = 30;
+    /// The extent of a shape: one coordinate's extreme on a line (safeguarded Newton) or
+    /// inside a surface.
+    pub const EXTENT: usize = 60;
 }
 
 /// Relative step at which an iteration has reached rounding: 4ε.
