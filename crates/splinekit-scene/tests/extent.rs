@@ -2,9 +2,9 @@
 //! samples of the shape (a new kind is covered by walking the registry).
 
 use splinekit::Point;
-use splinekit::curve::Curve;
+use splinekit::curve::{Curve, CurveExtent};
 use splinekit::query::Aabb;
-use splinekit::surface::Surface;
+use splinekit::surface::{Surface, SurfaceExtent};
 use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, SurfaceDocument, Surfaces};
 
 /// Dense samples per direction (on top of every breakpoint).

@@ -4,11 +4,11 @@
 
 use splinekit::Point;
 use splinekit::curve::model::{Butterfly, Circle, Ellipse, Lissajous};
-use splinekit::curve::{BSplineCurve, Curve};
+use splinekit::curve::{BSplineCurve, Curve, CurveExtent};
 use splinekit::query::Aabb;
 use splinekit::query::extent::{curve_extent, surface_extent};
 use splinekit::surface::model::{Plane, Sphere, Torus};
-use splinekit::surface::{BezierSurface, PlacedSurface, Surface};
+use splinekit::surface::{BezierSurface, PlacedSurface, SurfaceExtent};
 
 fn p3(x: f64, y: f64, z: f64) -> Point<3> {
     Point::<3>::new(x, y, z)

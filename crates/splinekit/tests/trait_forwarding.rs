@@ -57,8 +57,8 @@ impl Curve<2> for SentinelCurve {
     fn frame(&self, _t: f64) -> Option<FrenetFrame<2>> {
         Some(FrenetFrame { tangent: p2(10.0), normal: None, binormal: None, curvature: 10.0 })
     }
-    fn extent(&self) -> Aabb<2> {
-        Aabb { min: p2(13.0), max: p2(14.0) }
+    fn enclosing_box(&self) -> Option<Aabb<2>> {
+        Some(Aabb { min: p2(13.0), max: p2(14.0) })
     }
 }
 
@@ -79,7 +79,7 @@ fn check_curve(name: &str, c: &impl Curve<2>) {
     assert_eq!(c.tangent(0.0), p2(8.0), "{name}: tangent");
     assert_eq!(c.curvature(0.0), 9.0, "{name}: curvature");
     assert_eq!(c.frame(0.0).map(|f| f.curvature), Some(10.0), "{name}: frame");
-    assert_eq!(c.extent(), Aabb { min: p2(13.0), max: p2(14.0) }, "{name}: extent");
+    assert_eq!(c.enclosing_box(), Some(Aabb { min: p2(13.0), max: p2(14.0) }), "{name}: enclosing_box");
 }
 
 #[test]
@@ -151,8 +151,8 @@ impl Surface<3> for SentinelSurface {
     fn breakpoints_v(&self) -> Vec<f64> {
         vec![-2.0, -0.5, 0.0]
     }
-    fn extent(&self) -> Aabb<3> {
-        Aabb { min: p3(15.0), max: p3(16.0) }
+    fn enclosing_box(&self) -> Option<Aabb<3>> {
+        Some(Aabb { min: p3(15.0), max: p3(16.0) })
     }
 }
 
@@ -178,7 +178,7 @@ fn check_surface(name: &str, s: &impl Surface<3>) {
     assert_eq!(s.curvatures(0.0, 0.0).map(|c| c.gaussian), Some(12.0), "{name}: curvatures");
     assert_eq!(s.breakpoints_u(), vec![0.0, 0.5, 2.0], "{name}: breakpoints_u");
     assert_eq!(s.breakpoints_v(), vec![-2.0, -0.5, 0.0], "{name}: breakpoints_v");
-    assert_eq!(s.extent(), Aabb { min: p3(15.0), max: p3(16.0) }, "{name}: extent");
+    assert_eq!(s.enclosing_box(), Some(Aabb { min: p3(15.0), max: p3(16.0) }), "{name}: enclosing_box");
 }
 
 #[test]

@@ -19,6 +19,7 @@ pub mod traits;
 
 pub use crate::Interval;
 pub use crate::ops::length::CurveArcLength;
+pub use crate::query::extent::CurveExtent;
 pub use crate::query::project_curve::CurveNearest;
 pub use bezier::BezierCurve;
 pub use bspline::BSplineCurve;

@@ -143,26 +143,13 @@ pub trait Curve<const D: usize>: Send + Sync {
         Some(FrenetFrame { tangent, normal, binormal, curvature })
     }
 
-    /// The extent: an axis-aligned box of the curve, for anything that needs a box or a
-    /// size (its [`diagonal`](crate::query::Aabb::diagonal)).
-    ///
-    /// What it guarantees depends on the kind, and each kind that overrides this says so:
-    /// B-spline, Bézier and NURBS curves (positive weights) give the box of their control
-    /// points, which holds the curve (convex hull property) but is not tight in general.
-    /// The default is [`curve_extent`](crate::query::extent::curve_extent): samples on
-    /// every breakpoint span and the extremes of each coordinate between them, located by
-    /// Newton steps — exact to rounding where every extreme shows as a sign change of the
-    /// coordinate's derivative between neighbouring samples (the circle, the ellipse), a
-    /// sampled box inside the true one otherwise, not a certified enclosure.
-    ///
-    /// ```
-    /// use splinekit::{Point, curve::{Curve, model::Circle}};
-    /// let b = Circle::new(2.0).unwrap().extent();
-    /// assert!((b.min - Point::<3>::new(-2.0, -2.0, 0.0)).norm() < 1e-15);
-    /// assert!((b.max - Point::<3>::new(2.0, 2.0, 0.0)).norm() < 1e-15);
-    /// ```
-    fn extent(&self) -> crate::query::Aabb<D> {
-        crate::query::extent::curve_extent(self)
+    /// A box that certainly holds the curve, where the kind has one for the asking: the
+    /// box of the control points for B-spline, Bézier and NURBS curves (positive weights;
+    /// convex hull property; not tight in general). `None` (the default) for other kinds.
+    /// [`CurveExtent::extent`](crate::query::extent::CurveExtent::extent) takes it before
+    /// sampling.
+    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
+        None
     }
 }
 
@@ -220,8 +207,8 @@ macro_rules! forward_curve {
             fn frame(&self, t: f64) -> Option<FrenetFrame<D>> {
                 (**self).frame(t)
             }
-            fn extent(&self) -> crate::query::Aabb<D> {
-                (**self).extent()
+            fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
+                (**self).enclosing_box()
             }
         }
     };

@@ -30,9 +30,10 @@
 //! sample set (no refinement): the size some tolerances were defined by, kept so that their
 //! outputs stay what they were.
 
+use crate::Interval;
 use crate::Point;
 use crate::basis::Side;
-use crate::curve::{Curve, Interval};
+use crate::curve::Curve;
 use crate::query::bounds::Aabb;
 use crate::query::newton::{self, Step, settled, settled_all};
 use crate::surface::Surface;
@@ -204,6 +205,50 @@ fn coordinate_critical<const D: usize>(
     });
     end.map_or(start[0], |[t]| t)
 }
+
+/// The extent of a curve, a capability of every [`Curve`] (a blanket implementation):
+/// `use splinekit::curve::CurveExtent` to call it.
+pub trait CurveExtent<const D: usize>: Curve<D> {
+    /// An axis-aligned box of the curve, for anything that needs a box or a size (its
+    /// [`diagonal`](Aabb::diagonal)): the kind's [`Curve::enclosing_box`] where it has one
+    /// (B-spline, Bézier and NURBS curves: the box of the control points, which holds the
+    /// curve but is not tight in general), else [`curve_extent`]: samples on every
+    /// breakpoint span and the extremes of each coordinate between them, located by Newton
+    /// steps — exact to rounding where every extreme shows as a sign change of the
+    /// coordinate's derivative between neighbouring samples (the circle, the ellipse), a
+    /// sampled box inside the true one otherwise, not a certified enclosure.
+    ///
+    /// ```
+    /// use splinekit::{Point, curve::{CurveExtent, model::Circle}};
+    /// let b = Circle::new(2.0).unwrap().extent();
+    /// assert!((b.min - Point::<3>::new(-2.0, -2.0, 0.0)).norm() < 1e-15);
+    /// assert!((b.max - Point::<3>::new(2.0, 2.0, 0.0)).norm() < 1e-15);
+    /// ```
+    fn extent(&self) -> Aabb<D> {
+        self.enclosing_box().unwrap_or_else(|| curve_extent(self))
+    }
+}
+
+impl<const D: usize, C: Curve<D> + ?Sized> CurveExtent<D> for C {}
+
+/// The extent of a surface, a capability of every [`Surface`] (a blanket
+/// implementation): `use splinekit::surface::SurfaceExtent` to call it.
+pub trait SurfaceExtent<const D: usize>: Surface<D> {
+    /// An axis-aligned box of the surface, for anything that needs a box or a size: the
+    /// kind's [`Surface::enclosing_box`] where it has one (B-spline, Bézier and NURBS
+    /// surfaces: the box of the control net; subdivision limits: the cage's box), else
+    /// [`surface_extent`]: samples on every breakpoint patch, the extremes of each
+    /// coordinate along the iso-lines through them and Newton steps on the coordinate's
+    /// gradient from the best — exact to rounding where those searches reach every extreme
+    /// (a bilinear patch, a sphere), a sampled box inside the true one otherwise, not a
+    /// certified enclosure. Trimming is ignored (the box of the whole surface holds the
+    /// trimmed one).
+    fn extent(&self) -> Aabb<D> {
+        self.enclosing_box().unwrap_or_else(|| surface_extent(self))
+    }
+}
+
+impl<const D: usize, S: Surface<D> + ?Sized> SurfaceExtent<D> for S {}
 
 /// The extent of a curve (see the module documentation): samples on every breakpoint
 /// span and the extremes of each coordinate between them.

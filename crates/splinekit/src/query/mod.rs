@@ -40,6 +40,7 @@ pub use curve_intersection::{
     CurveIntersection, CurveIntersections, CurveOverlap, IntersectionKind, intersect_curves, self_intersections,
 };
 pub use curve_surface::{CurveSurfaceIntersection, intersect_curve_surface};
+pub use extent::{CurveExtent, SurfaceExtent};
 pub use offset::{CurveOffset, OffsetPiece, SurfaceOffset, offset_curve, offset_surface};
 pub use project_curve::{CurveNearest, CurveProjector, Nearest};
 pub use project_surface::{NearestOnSurface, SurfaceNearest, SurfaceProjector};

@@ -48,8 +48,8 @@ impl<const D: usize> BezierSurface<D> {
 impl<const D: usize> Surface<D> for BezierSurface<D> {
     /// The box of the control net: it holds the surface, since a Bézier surface lies in the
     /// convex hull of its control points; not tight in general.
-    fn extent(&self) -> crate::query::Aabb<D> {
-        crate::query::Aabb::around(self.control_points().iter().flatten(), 0.0)
+    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
+        Some(crate::query::Aabb::around(self.control_points().iter().flatten(), 0.0))
     }
     fn domain_u(&self) -> Interval {
         Interval::new(0.0, 1.0)

@@ -120,8 +120,8 @@ impl<const D: usize> BSplineSurface<D> {
 impl<const D: usize> Surface<D> for BSplineSurface<D> {
     /// The box of the control net: it holds the surface, since a B-spline surface lies in the
     /// convex hull of its control points; not tight in general.
-    fn extent(&self) -> crate::query::Aabb<D> {
-        crate::query::Aabb::around(self.control_points().iter().flatten(), 0.0)
+    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
+        Some(crate::query::Aabb::around(self.control_points().iter().flatten(), 0.0))
     }
     tensor_surface_domains!();
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {

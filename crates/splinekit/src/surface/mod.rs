@@ -18,6 +18,7 @@ pub mod tensor;
 pub mod traits;
 pub mod trimmed;
 
+pub use crate::query::extent::SurfaceExtent;
 pub use crate::query::project_surface::SurfaceNearest;
 pub use bezier_surface::BezierSurface;
 pub use bspline_surface::BSplineSurface;

@@ -172,20 +172,14 @@ pub trait Surface<const D: usize>: Send + Sync {
         None
     }
 
-    /// The extent: an axis-aligned box of the surface, for anything that needs a box or a
-    /// size (its [`diagonal`](crate::query::Aabb::diagonal)).
-    ///
-    /// What it guarantees depends on the kind, and each kind that overrides this says so:
-    /// B-spline, Bézier and NURBS surfaces (positive weights) give the box of their control
-    /// net, which holds the surface (convex hull property) but is not tight in general.
-    /// The default is [`surface_extent`](crate::query::extent::surface_extent): samples on
-    /// every breakpoint patch, the extremes of each coordinate along the iso-lines through
-    /// them and Newton steps on the coordinate's gradient from the best — exact to rounding
-    /// where those searches reach every extreme (a bilinear patch, a sphere), a sampled box
-    /// inside the true one otherwise, not a certified enclosure. Trimming is ignored (the
-    /// box of the whole surface holds the trimmed one).
-    fn extent(&self) -> crate::query::Aabb<D> {
-        crate::query::extent::surface_extent(self)
+    /// A box that certainly holds the surface, where the kind has one for the asking: the
+    /// box of the control net for B-spline, Bézier and NURBS surfaces (positive weights;
+    /// convex hull property; not tight in general), the cage's box for subdivision limits.
+    /// `None` (the default) for other kinds.
+    /// [`SurfaceExtent::extent`](crate::query::extent::SurfaceExtent::extent) takes it
+    /// before sampling.
+    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
+        None
     }
 
     /// The point S(u, v).
@@ -349,8 +343,8 @@ macro_rules! forward_surface {
             fn breakpoints_v(&self) -> Vec<f64> {
                 (**self).breakpoints_v()
             }
-            fn extent(&self) -> crate::query::Aabb<D> {
-                (**self).extent()
+            fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
+                (**self).enclosing_box()
             }
             #[inline]
             fn point(&self, u: f64, v: f64) -> Point<D> {

@@ -101,8 +101,8 @@ impl Surface<3> for LimitAtlas {
     /// The box of the cage's vertices: it holds the limit surface, since every rule of the
     /// three schemes (boundaries and creases included) makes each new point a convex
     /// combination of old ones; not tight in general.
-    fn extent(&self) -> crate::query::Aabb<3> {
-        crate::query::Aabb::around(&self.surface.cage().vertices, 0.0)
+    fn enclosing_box(&self) -> Option<crate::query::Aabb<3>> {
+        Some(crate::query::Aabb::around(&self.surface.cage().vertices, 0.0))
     }
     fn domain_u(&self) -> Interval {
         Interval::new(0.0, self.charts.len() as f64)
