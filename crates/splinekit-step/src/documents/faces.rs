@@ -18,7 +18,8 @@ use splinekit_scene::CurveDocument;
 use splinekit_scene::surfaces::TrimmedDoc;
 use std::f64::consts::TAU;
 
-use super::export::{Exported, Form, ParamMap, export_curve, export_surface, kernel_surface};
+use super::curve_export::export_curve;
+use super::exported::{Exported, Form, ParamMap};
 use crate::approximate::hermite_curve;
 use crate::error::{Result, StepError};
 use crate::geometry::{Curve, FaceEdge, FaceGeometry, FaceLoop, Geometry, LoopEdge, SplineCurve, Surface};
@@ -235,10 +236,16 @@ fn face_surface(s: Surface) -> Surface {
 
 /// Exports a `trimmed` document as a face; its form is the surface's, or
 /// [`Form::Approximated`] when a loop had no exact B-spline form.
-pub fn export_trimmed(doc: &TrimmedDoc, name: &str, relative_tolerance: f64) -> Result<Exported> {
-    let within = |e: StepError| StepError::plain(format!("surface: {}", e.message));
-    let base = export_surface(&doc.surface, name, relative_tolerance).map_err(within)?;
-    let kernel = kernel_surface(&doc.surface).map_err(within)?;
+///
+/// `base` is the export of the document's surface, `kernel` the surface itself (both made
+/// by the caller, [`super::export::export_surface`], which dispatches here).
+pub fn export_trimmed(
+    doc: &TrimmedDoc,
+    name: &str,
+    relative_tolerance: f64,
+    base: Exported,
+    kernel: &dyn KernelSurface<3>,
+) -> Result<Exported> {
     let Geometry::Surface(surface) = base.item.geometry.clone() else { unreachable!("a surface exports as a surface") };
     let edge_tolerance = base.tolerance.min(EDGE_TOLERANCE * base.tolerance / relative_tolerance);
     let mut vertices = Vec::new();
@@ -251,7 +258,7 @@ pub fn export_trimmed(doc: &TrimmedDoc, name: &str, relative_tolerance: f64) -> 
         .chain(doc.holes.iter().enumerate().map(|(i, h)| (format!("holes[{i}]"), h, false)))
         .collect();
     if doc.outer.is_none() {
-        loops.push(domain_rectangle(kernel.as_ref(), &base.map, edge_tolerance, &mut vertices)?);
+        loops.push(domain_rectangle(kernel, &base.map, edge_tolerance, &mut vertices)?);
     }
     for (field, loop_doc, outer) in named {
         let (c, approx) = loop_curve(loop_doc, &field, relative_tolerance)?;
@@ -270,7 +277,7 @@ pub fn export_trimmed(doc: &TrimmedDoc, name: &str, relative_tolerance: f64) -> 
         let vertex = vertices.len();
         vertices.push(a);
         let counter_clockwise = signed_area(&c) > 0.0;
-        let e = edge(kernel.as_ref(), &c, &base.map, edge_tolerance, (vertex, vertex), &field)?;
+        let e = edge(kernel, &c, &base.map, edge_tolerance, (vertex, vertex), &field)?;
         loops.push(FaceLoop {
             outer,
             orientation: counter_clockwise == outer,

@@ -1,13 +1,15 @@
 //! The thin layer between splinekit's JSON documents and STEP geometry: export of shape
 //! and scene documents, import of STEP items as shape documents.
 
+pub mod curve_export;
 pub mod export;
+pub mod exported;
 pub mod faces;
 pub mod subdivision;
 
-pub use export::{
-    Exported, Form, ParamMap, Sample, export_curve, export_shape, export_surface, exports_exactly, samples,
-};
+pub use curve_export::export_curve;
+pub use export::{Sample, export_shape, export_surface, exports_exactly, samples};
+pub use exported::{Exported, Form, ParamMap};
 
 use splinekit_scene::{SceneOrShape, ShapeDocument};
 
