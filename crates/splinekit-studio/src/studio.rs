@@ -28,7 +28,7 @@ use crate::net_knot_edit;
 use crate::selection::{Selection, in_box};
 use crate::snapping::Snapping;
 use crate::status::Status;
-use crate::view_caches::{PICK_RADIUS, ViewCaches};
+use crate::view_caches::ViewCaches;
 use crate::view_camera::{Projector, StandardView, ViewCamera};
 
 /// What the 3-D view draws: the composed scene (kept between frames), the overlays drawn
@@ -649,7 +649,7 @@ impl Studio {
         self.view.shown_handles(self.selection.handle.as_ref())
     }
 
-    /// The shown handle within [`PICK_RADIUS`] pixels of `mouse`, the nearest first.
+    /// The shown handle within [`PICK_RADIUS`](crate::view_caches::PICK_RADIUS) pixels of `mouse`, the nearest first.
     pub fn pick(&self, projector: &Projector, mouse: [f64; 2]) -> Option<Handle> {
         self.view.pick(self.selection.handle.as_ref(), projector, mouse)
     }
