@@ -2,7 +2,7 @@
 //! history ([`Document`]), the selection ([`Selection`]), what the view keeps between
 //! frames ([`ViewCaches`]) and the messages shown ([`Status`]), with the view camera, the
 //! tools' settings, the drag in progress and the clock; and what the 3-D view draws (the
-//! document composed by the renderer's [`splinekit_render::compose`], with the view's
+//! document composed by the renderer's [`compose`](splinekit_render::compose()), with the view's
 //! camera and the handles highlighted). Everything here is testable headless.
 
 use std::path::PathBuf;
