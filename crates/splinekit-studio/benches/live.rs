@@ -78,7 +78,7 @@ fn dragging(
     let mut kept = None;
     let view = studio.view_scene(SIZE, false).expect("composes");
     keep_geometry(renderer, &mut kept, view.composed, &view.changes);
-    studio.selected = studio.handles.iter().find(|h| h.kind == select).cloned();
+    studio.selection.handle = studio.view.handles.iter().find(|h| h.kind == select).cloned();
     let view = studio.view_scene(SIZE, true).expect("composes");
     let projector = Projector::with_bounds(&view.overlay, view.bounds, SIZE);
     let h = studio.shown_handles().find(|h| h.kind == kind).cloned().expect("the handle is shown");
@@ -135,7 +135,7 @@ fn window(c: &mut Criterion) {
                     away = !away;
                     studio.drag_to(&projector, if away { [p[0] + 12.0, p[1] - 8.0] } else { p });
                     let aspect = SIZE.0 as f32 / SIZE.1 as f32;
-                    let fresh = splinekit_render::compose(&studio.scene, None, aspect).expect("composes");
+                    let fresh = splinekit_render::compose(studio.document.scene(), None, aspect).expect("composes");
                     let geometry = renderer.upload(&fresh);
                     renderer.queue().submit([]);
                     geometry

@@ -73,7 +73,7 @@ struct FrameLog {
 impl App {
     /// The window on `studio`, not yet open.
     pub fn new(studio: Studio, options: Options) -> Self {
-        let open = studio.path.as_ref().map(|p| p.display().to_string()).unwrap_or_default();
+        let open = studio.document.path().map(|p| p.display().to_string()).unwrap_or_default();
         let files = FileFields { open, export: "shape.obj".into() };
         App {
             studio,
@@ -105,10 +105,10 @@ impl App {
 
     /// The inner size: `--window-size`, else the scene's size plus the side panels.
     fn initial_size(&self) -> PhysicalSize<u32> {
-        let (w, h) = self
-            .options
-            .window_size
-            .unwrap_or((self.studio.scene.size[0] + 2 * SIDE_WIDTH as u32 + 30, self.studio.scene.size[1] + 90));
+        let (w, h) = self.options.window_size.unwrap_or((
+            self.studio.document.scene().size[0] + 2 * SIDE_WIDTH as u32 + 30,
+            self.studio.document.scene().size[1] + 90,
+        ));
         PhysicalSize::new(w, h)
     }
 
@@ -116,13 +116,13 @@ impl App {
     fn redraw(&mut self, event_loop: &ActiveEventLoop) {
         let (Some(window), Some(_)) = (self.window.clone(), self.gpu.as_ref()) else { return };
         let start = Instant::now();
-        self.studio.clock.tick(self.studio.scene.clock().duration);
+        self.studio.clock.tick(self.studio.document.scene().clock().duration);
         let raw = match self.egui_state.as_mut() {
             Some(s) => s.take_egui_input(&window),
             None => return,
         };
         let mut commands = Vec::new();
-        self.studio.widgets.clear();
+        self.studio.view.widgets.clear();
         let output = self.egui.clone().run_ui(raw, |ui| commands.extend(self.panels(ui)));
         let panels_ms = start.elapsed().as_secs_f64() * 1e3;
         if let Some(s) = self.egui_state.as_mut() {
@@ -136,7 +136,7 @@ impl App {
         }
         let scene_start = Instant::now();
         if let Err(e) = self.draw_view() {
-            self.studio.message = Some(e);
+            self.studio.status.message = Some(e);
         }
         let scene_ms = scene_start.elapsed().as_secs_f64() * 1e3;
         let ppp = self.egui.pixels_per_point();
@@ -174,7 +174,7 @@ impl App {
             event_loop.exit();
             return;
         }
-        let playing = self.studio.clock.playing && self.studio.scene.is_animated();
+        let playing = self.studio.clock.playing && self.studio.document.scene().is_animated();
         if playing || repaint_now || self.options.frames.is_some() || self.overlay || self.projector.is_none() {
             window.request_redraw();
         }
@@ -190,7 +190,7 @@ impl App {
         help_overlay(ui.ctx(), &mut self.help);
         egui::Panel::bottom("status").exact_size(56.0).resizable(false).show(ui, |ui| {
             animation_panel(ui, &mut self.studio);
-            let text = self.studio.message.clone().unwrap_or_else(|| "ready".into());
+            let text = self.studio.status.message.clone().unwrap_or_else(|| "ready".into());
             ui.label(text);
         });
         egui::Panel::left("objects").exact_size(SIDE_WIDTH).resizable(false).show(ui, |ui| {
@@ -199,17 +199,17 @@ impl App {
                 ui.separator();
                 snapping_panel(ui, &mut self.studio.snapping);
                 ui.separator();
-                analysis_panel(ui, &mut self.studio.analysis, self.studio.selected_object);
+                analysis_panel(ui, &mut self.studio.analysis, self.studio.selection.object);
             });
         });
         egui::Panel::right("properties").exact_size(SIDE_WIDTH).resizable(false).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| properties_panel(ui, &mut self.studio));
         });
         egui::CentralPanel::no_frame().show(ui, |ui| {
-            if let Some(e) = self.studio.load_error.clone() {
+            if let Some(e) = self.studio.status.load_error.clone() {
                 ui.colored_label(egui::Color32::from_rgb(200, 40, 40), format!("Cannot open the document:\n{e}"));
                 if ui.button("Dismiss").clicked() {
-                    self.studio.load_error = None;
+                    self.studio.status.load_error = None;
                 }
                 return;
             }
@@ -244,7 +244,7 @@ impl App {
             [r[0], r[1]],
             [r[2], r[3]],
         );
-        report["widgets"] = widget_report(&self.studio.widgets, self.egui.pixels_per_point());
+        report["widgets"] = widget_report(&self.studio.view.widgets, self.egui.pixels_per_point());
         let text = report.to_string();
         if text != self.last_report {
             // Written whole to a temporary file, then renamed: a reader never sees half.
@@ -300,7 +300,7 @@ impl App {
         match action {
             Action::Screenshot => {
                 let done = self.screenshot();
-                self.studio.message = Some(done.map_or_else(|e| e, |p| format!("screenshot {}", p.display())));
+                self.studio.status.message = Some(done.map_or_else(|e| e, |p| format!("screenshot {}", p.display())));
             }
             // Closed after this frame is painted, so that its screenshots show it.
             Action::Quit => self.quitting = true,

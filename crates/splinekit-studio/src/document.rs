@@ -1,10 +1,80 @@
 //! The document open in the studio: read from a file (a scene, or a bare shape that becomes
-//! a one-object scene), written back as an ordinary scene document.
+//! a one-object scene), written back as an ordinary scene document; [`Document`] holds it
+//! with the file it came from and its undo history, and every change of it goes through
+//! that history.
 
 use std::path::{Path, PathBuf};
 
 use splinekit_scene::SceneOrShape;
-use splinekit_scene::scenes::SceneDocument;
+use splinekit_scene::scenes::{CameraDoc, SceneDocument};
+
+use crate::edit::{BuildCheck, Edit, EditError};
+use crate::history::History;
+
+/// The scene being edited, the file it came from, and undo and redo. The scene is read
+/// through [`Document::scene`] and changed only by [`Document::edit`], [`Document::undo`]
+/// and [`Document::redo`], so every change can be undone.
+#[derive(Debug, Clone)]
+pub struct Document {
+    scene: SceneDocument,
+    path: Option<PathBuf>,
+    history: History,
+}
+
+impl Document {
+    /// The document `scene`, read from `path` (`None`: the starter scene or text).
+    pub fn new(scene: SceneDocument, path: Option<PathBuf>) -> Self {
+        Document { scene, path, history: History::default() }
+    }
+
+    /// The scene.
+    pub fn scene(&self) -> &SceneDocument {
+        &self.scene
+    }
+
+    /// The file it came from (or was last saved to).
+    pub fn path(&self) -> Option<&Path> {
+        self.path.as_deref()
+    }
+
+    /// Applies `edit` through the history (with `merge`, joining the last step during a
+    /// drag, [`History::apply`]), the edited shape built by `check`.
+    pub fn edit(&mut self, edit: Edit, merge: bool, check: &mut BuildCheck<'_>) -> Result<(), EditError> {
+        self.history.apply_with(&mut self.scene, edit, merge, check)
+    }
+
+    /// Ends a run of merged edits (the drag ended): the next edit is a new step.
+    pub fn close_step(&mut self) {
+        self.history.close();
+    }
+
+    /// Undoes the last step; `false` when there is none.
+    pub fn undo(&mut self) -> Result<bool, EditError> {
+        self.history.undo(&mut self.scene)
+    }
+
+    /// Redoes the last undone step; `false` when there is none.
+    pub fn redo(&mut self) -> Result<bool, EditError> {
+        self.history.redo(&mut self.scene)
+    }
+
+    /// Saves to the file opened (or `studio.json`, [`save_path`]) with `camera` as the
+    /// scene's camera; the file saved to is the document's from then on. The message for
+    /// the status line: the file saved, or why not.
+    pub fn save(&mut self, camera: Option<CameraDoc>) -> String {
+        let path = save_path(self.path.as_deref());
+        let mut scene = self.scene.clone();
+        if let Some(c) = camera {
+            scene.camera = Some(c);
+        }
+        let message = match write(&scene, &path) {
+            Ok(()) => format!("saved {}", path.display()),
+            Err(e) => e,
+        };
+        self.path = Some(path);
+        message
+    }
+}
 
 /// The starter scene shown without a file: the heart as a blending spline of ten
 /// quadratic Bézier locals, local curves shown.

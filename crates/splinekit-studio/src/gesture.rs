@@ -12,8 +12,8 @@ use splinekit_scene::scenes::SceneDocument;
 use splinekit_scene::transforms::TransformDoc;
 
 use crate::edit::{Edit, EditError};
+use crate::group_move::{GroupMove, GroupStart};
 use crate::handles::{Handle, coordinates_of, local_points_of, transform_of};
-use crate::selection::{GroupMove, GroupStart};
 use crate::transform_edit::{rotated, scaled, translated};
 use crate::view_camera::Projector;
 

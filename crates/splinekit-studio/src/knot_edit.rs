@@ -12,7 +12,7 @@ use splinekit_scene::refine::{Refinement, refine};
 use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, ShapeDocument};
 
 use crate::edit::Edit;
-use crate::studio::PICK_RADIUS;
+use crate::view_caches::PICK_RADIUS;
 use crate::view_camera::Projector;
 
 /// Samples of a curve searched for the clicked parameter.

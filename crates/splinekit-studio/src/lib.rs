@@ -16,6 +16,13 @@
 //! - One registry of actions ([`actions`]: label, shortcut, menu, panel button, undoable)
 //!   feeds the menus, the key bindings and the help overlay (`?`); menus, keys and panels
 //!   all ask through [`command::Command`]s that the studio runs in one place.
+//! - [`studio::Studio`] composes the parts of the studio's state, each its own type:
+//!   [`document::Document`] (the scene, its file and undo history; every change goes
+//!   through it), [`selection::Selection`] (the selected object and handles),
+//!   [`view_caches::ViewCaches`] (the composition, the live surfaces, the handles as drawn,
+//!   hover, bounds and the report's widget rectangles) and [`status::Status`] (messages);
+//!   the panels reach only a [`panels::PanelContext`] (the document read-only, the
+//!   selection, the messages and the command queue).
 //! - Ctrl+S writes an ordinary scene document with the view's camera.
 //! - [`live_surfaces`] keeps the window's blending-spline surfaces evaluated: after a frame
 //!   moves only the rectangles it affects are re-evaluated, and it owns the one built
@@ -38,6 +45,7 @@ pub mod edit;
 pub mod export;
 pub mod gesture;
 pub mod gpu;
+pub mod group_move;
 pub mod handles;
 pub mod history;
 pub mod knot_edit;
@@ -50,8 +58,10 @@ pub mod panels;
 pub mod report;
 pub mod selection;
 pub mod snapping;
+pub mod status;
 pub mod studio;
 pub mod transform_edit;
+pub mod view_caches;
 pub mod view_camera;
 pub mod viewport;
 

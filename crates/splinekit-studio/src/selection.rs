@@ -1,27 +1,24 @@
-//! The selection: several handles at once (Shift+click adds or removes one, a box drawn
-//! with Ctrl on empty space selects the handles inside it, A selects every shown handle of
-//! the object, Escape clears), and moving them together: a map of world points (a
-//! translation, a turn about the selection's centroid, a scaling about it) becomes one edit
-//! of every selected value ([`GroupStart::edit`], one undo step).
+//! What is selected: the object (the Properties panel shows it), the handle picked last
+//! (its local's control points are shown; the Properties panel edits it) and every
+//! selected handle. Shift+click adds or removes one, a box drawn with Ctrl on empty space
+//! selects the handles inside it, A selects every shown handle of the object, Escape
+//! clears; moving them together is [`crate::group_move`].
 //!
-//! Each handle moves by the map's displacement of its own position: a control point's
-//! coordinates by q − p, a local piece's translation by q − p (its frame keeps its
-//! orientation), a local Bézier's control point in its rest frame by the inverse of its
-//! frame's linear part applied to q − p (all the points of one local in one value).
+//! Handles are told apart by object and kind; after an edit, an undo or a redo the
+//! selection follows them to where the document now has them ([`Selection::follow`]).
 
-use serde_json::Value;
-use splinekit_scene::scenes::SceneDocument;
-use splinekit_scene::transforms::TransformDoc;
-
-use crate::edit::{Edit, EditError};
-use crate::handles::{Handle, coordinates_of, local_points_of, transform_of};
-use crate::transform_edit::translated;
+use crate::handles::Handle;
 use crate::view_camera::Projector;
 
-/// The selected handles, in the order they were selected.
+/// The selected object and handles.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Selection {
-    /// The handles.
+    /// The selected object.
+    pub object: Option<usize>,
+    /// The handle picked last (its local's control points are shown; the Properties panel
+    /// edits it).
+    pub handle: Option<Handle>,
+    /// Every selected handle, in the order they were selected (`handle` among them).
     pub handles: Vec<Handle>,
 }
 
@@ -63,9 +60,73 @@ impl Selection {
         centroid(&self.handles)
     }
 
-    /// Moves the selected handles to where `now` has them; those gone are dropped.
+    /// Moves the selected handles (and the one picked last) to where `now` has them;
+    /// those gone are dropped.
     pub fn follow(&mut self, now: &[Handle]) {
         self.handles = self.handles.iter().filter_map(|h| now.iter().find(|n| same(n, h)).cloned()).collect();
+        self.handle = self.handle.as_ref().and_then(|h| now.iter().find(|n| same(n, h)).cloned());
+    }
+
+    /// Selects no handle (the object stays selected).
+    pub fn clear_handles(&mut self) {
+        self.handle = None;
+        self.handles.clear();
+    }
+
+    /// Selects object `object` of `count` (none: `None`; an index past the end selects
+    /// none) and no handle.
+    pub fn select_object(&mut self, object: Option<usize>, count: usize) {
+        self.object = object.filter(|&i| i < count);
+        self.clear_handles();
+    }
+
+    /// Selects `h` alone, and its object.
+    pub fn select_only(&mut self, h: Handle) {
+        self.object = Some(h.object);
+        self.handles = vec![h.clone()];
+        self.handle = Some(h);
+    }
+
+    /// A click on `picked` (none: empty space): selects it alone, or with `add` (Shift)
+    /// adds it to the selection or removes it. A click on empty space without `add`
+    /// clears the handles.
+    pub fn click(&mut self, picked: Option<Handle>, add: bool) {
+        match (picked, add) {
+            (Some(h), true) => {
+                self.object = Some(h.object);
+                self.handle = if self.toggle(h.clone()) { Some(h) } else { self.handles.last().cloned() };
+            }
+            (Some(h), false) => self.select_only(h),
+            (None, true) => {}
+            (None, false) => self.clear_handles(),
+        }
+    }
+
+    /// Selects `inside` (the handles in a box), with `add` in addition to the selection;
+    /// the last of them becomes the picked handle and its object the selected one.
+    pub fn select_box(&mut self, inside: Vec<Handle>, add: bool) {
+        if !add {
+            self.handles.clear();
+        }
+        self.extend(inside);
+        self.handle = self.handles.last().cloned();
+        if let Some(h) = &self.handle {
+            self.object = Some(h.object);
+        }
+    }
+
+    /// Adds `all` (every shown handle of the object); the last becomes the picked handle
+    /// when none was.
+    pub fn add_all(&mut self, all: Vec<Handle>) {
+        self.extend(all);
+        if self.handle.is_none() {
+            self.handle = self.handles.last().cloned();
+        }
+    }
+
+    /// The selected handles (the selection, else the one picked last).
+    pub fn selected_handles(&self) -> Vec<Handle> {
+        if self.handles.is_empty() { self.handle.iter().cloned().collect() } else { self.handles.clone() }
     }
 }
 
@@ -97,170 +158,23 @@ pub fn in_box<'a>(
         .collect()
 }
 
-/// A map of world points that moves a selection as one.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum GroupMove {
-    /// p + d.
-    Translate([f64; 3]),
-    /// A turn by `angle` radians about the unit `axis` through `center` (Rodrigues).
-    Rotate {
-        /// A point of the axis (the centroid).
-        center: [f64; 3],
-        /// The unit axis.
-        axis: [f64; 3],
-        /// Radians, counter-clockwise looking down the axis.
-        angle: f64,
-    },
-    /// c + s (p − c).
-    Scale {
-        /// The fixed point (the centroid).
-        center: [f64; 3],
-        /// The factor.
-        factor: f64,
-    },
-}
-
-impl GroupMove {
-    /// Where the map takes `p`.
-    pub fn apply(&self, p: [f64; 3]) -> [f64; 3] {
-        match *self {
-            GroupMove::Translate(d) => [p[0] + d[0], p[1] + d[1], p[2] + d[2]],
-            GroupMove::Rotate { center: c, axis: k, angle } => {
-                let v = [p[0] - c[0], p[1] - c[1], p[2] - c[2]];
-                let (s, co) = angle.sin_cos();
-                let kxv = [k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0]];
-                let kv = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
-                [0, 1, 2].map(|i| c[i] + v[i] * co + kxv[i] * s + k[i] * kv * (1.0 - co))
-            }
-            GroupMove::Scale { center: c, factor } => [0, 1, 2].map(|i| c[i] + factor * (p[i] - c[i])),
-        }
-    }
-}
-
-/// One selected handle's value when the move started.
-#[derive(Debug, Clone)]
-enum Start {
-    Transform(TransformDoc),
-    Coordinates(Vec<f64>),
-    /// A local Bézier's point: where it sits in the local's value (shared with the other
-    /// selected points of that local: index into [`GroupStart::locals`]).
-    LocalPoint {
-        local: usize,
-        path: Vec<usize>,
-    },
-}
-
-/// The values of a selection when a move started, from which every step of the move is
-/// computed afresh (a drag's edits replace each other).
-#[derive(Debug, Clone)]
-pub struct GroupStart {
-    items: Vec<(Handle, Start)>,
-    /// Per local Bézier touched: object, pointer, rest points, inverse of its frame's
-    /// linear part.
-    locals: Vec<(usize, String, Value, [[f64; 3]; 3])>,
-}
-
-impl GroupStart {
-    /// Reads the selected handles' values from `scene` posed at `time`; `None` when one
-    /// cannot be read.
-    pub fn read(scene: &SceneDocument, time: Option<f64>, handles: &[Handle]) -> Option<GroupStart> {
-        let mut items = Vec::new();
-        let mut locals: Vec<(usize, String, Value, [[f64; 3]; 3])> = Vec::new();
-        for h in handles {
-            let start = if h.kind.is_local() {
-                Start::Transform(transform_of(scene, h))
-            } else if let Some(path) = h.kind.point_path() {
-                let pointer = h.kind.pointer();
-                let local = match locals.iter().position(|(o, p, _, _)| *o == h.object && *p == pointer) {
-                    Some(i) => i,
-                    None => {
-                        let (rest, inverse) = local_points_of(scene, h, time)?;
-                        locals.push((h.object, pointer, rest, inverse));
-                        locals.len() - 1
-                    }
-                };
-                Start::LocalPoint { local, path }
-            } else {
-                Start::Coordinates(coordinates_of(scene, h)?)
-            };
-            items.push((h.clone(), start));
-        }
-        Some(GroupStart { items, locals })
-    }
-
-    /// The handles moved.
-    pub fn handles(&self) -> impl Iterator<Item = &Handle> {
-        self.items.iter().map(|(h, _)| h)
-    }
-
-    /// The edit that moves every handle from its start by `map`: one [`Edit::Batch`].
-    pub fn edit(&self, map: &GroupMove) -> Result<Edit, EditError> {
-        let mut edits = Vec::new();
-        let mut locals: Vec<Value> = self.locals.iter().map(|(_, _, rest, _)| rest.clone()).collect();
-        for (h, start) in &self.items {
-            let q = map.apply(h.position);
-            let mut d = [q[0] - h.position[0], q[1] - h.position[1], q[2] - h.position[2]];
-            if h.dimension == 2 {
-                d[2] = 0.0;
-            }
-            let value = match start {
-                Start::Transform(t) => serde_json::to_value(translated(t, &d, h.dimension)).unwrap_or(Value::Null),
-                Start::Coordinates(c) => {
-                    let moved: Vec<f64> =
-                        c.iter().enumerate().map(|(i, x)| x + if i < h.dimension { d[i] } else { 0.0 }).collect();
-                    Value::from(moved)
-                }
-                Start::LocalPoint { local, path } => {
-                    let inverse = self.locals[*local].3;
-                    let dq = inverse.map(|row| row[0] * d[0] + row[1] * d[1] + row[2] * d[2]);
-                    let point =
-                        path.iter().try_fold(&mut locals[*local], |v, &i| v.get_mut(i)).and_then(Value::as_array_mut);
-                    let Some(point) = point else {
-                        return Err(EditError::Missing(format!("{}: no such control point", h.kind.field())));
-                    };
-                    for (x, dx) in point.iter_mut().zip(dq).take(h.dimension) {
-                        *x = Value::from(x.as_f64().unwrap_or(0.0) + dx);
-                    }
-                    continue;
-                }
-            };
-            edits.push(Edit::Set { object: h.object, pointer: h.kind.pointer(), value: Some(value) });
-        }
-        for ((object, pointer, _, _), value) in self.locals.iter().zip(locals) {
-            edits.push(Edit::Set { object: *object, pointer: pointer.clone(), value: Some(value) });
-        }
-        Ok(Edit::Batch(edits))
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::handles::HandleKind;
 
-    fn close(a: [f64; 3], b: [f64; 3]) -> bool {
-        (0..3).all(|i| (a[i] - b[i]).abs() < 1e-12)
-    }
-
-    #[test]
-    fn group_maps_translate_turn_and_scale_about_the_centre() {
-        let c = [1.0, 1.0, 0.0];
-        let turn = GroupMove::Rotate { center: c, axis: [0.0, 0.0, 1.0], angle: std::f64::consts::FRAC_PI_2 };
-        assert!(close(turn.apply([2.0, 1.0, 0.0]), [1.0, 2.0, 0.0]));
-        assert!(close(turn.apply(c), c));
-        let scale = GroupMove::Scale { center: c, factor: 2.0 };
-        assert!(close(scale.apply([2.0, 0.0, 1.0]), [3.0, -1.0, 2.0]));
-        assert!(close(GroupMove::Translate([1.0, 2.0, 3.0]).apply([0.0; 3]), [1.0, 2.0, 3.0]));
+    fn h(i: usize) -> Handle {
+        Handle {
+            object: 0,
+            kind: HandleKind::ControlPoint(i, "control_points"),
+            position: [i as f64, 0.0, 0.0],
+            origin: [i as f64, 0.0, 0.0],
+            dimension: 2,
+        }
     }
 
     #[test]
     fn toggling_adds_and_removes() {
-        let h = |i| Handle {
-            object: 0,
-            kind: crate::handles::HandleKind::ControlPoint(i, "control_points"),
-            position: [i as f64, 0.0, 0.0],
-            origin: [i as f64, 0.0, 0.0],
-            dimension: 2,
-        };
         let mut s = Selection::default();
         assert!(s.toggle(h(0)));
         assert!(s.toggle(h(2)));
@@ -271,5 +185,25 @@ mod tests {
         assert_eq!(s.handles.len(), 2);
         s.follow(&[h(3)]);
         assert_eq!(s.handles, [h(3)]);
+    }
+
+    /// Shift+click on a selected handle removes it and picks the last one left; a plain
+    /// click selects one alone; following a document without the picked handle lets it go.
+    #[test]
+    fn clicks_pick_and_following_lets_go() {
+        let mut s = Selection::default();
+        s.click(Some(h(1)), false);
+        s.click(Some(h(4)), true);
+        s.click(Some(h(5)), true);
+        assert_eq!((s.handles.len(), s.handle.clone()), (3, Some(h(5))));
+        s.click(Some(h(5)), true);
+        assert_eq!((s.handles.len(), s.handle.clone(), s.object), (2, Some(h(4)), Some(0)));
+        s.follow(&[h(1)]);
+        assert_eq!((s.handles.clone(), s.handle.clone()), (vec![h(1)], None));
+        assert_eq!(s.selected_handles(), [h(1)]);
+        s.click(None, false);
+        assert_eq!((s.handles.len(), s.handle.clone(), s.object), (0, None, Some(0)));
+        s.select_object(Some(3), 2);
+        assert_eq!(s.object, None, "an index past the end selects none");
     }
 }

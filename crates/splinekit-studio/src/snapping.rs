@@ -1,10 +1,10 @@
 //! Snapping of a moved handle (each kind toggled in the Snapping panel): onto another
-//! handle whose projection is within [`crate::studio::PICK_RADIUS`] pixels of the target's,
+//! handle whose projection is within [`crate::view_caches::PICK_RADIUS`] pixels of the target's,
 //! else onto a coordinate axis whose projection is that close (the nearest point of the
 //! axis line), and then each coordinate (along the axis: that one) to a multiple of the
 //! grid step. The step is also what the arrow keys nudge a selection by.
 
-use crate::studio::PICK_RADIUS;
+use crate::view_caches::PICK_RADIUS;
 use crate::view_camera::Projector;
 
 /// What a moved handle snaps to, and the step.

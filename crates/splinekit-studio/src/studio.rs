@@ -1,12 +1,14 @@
-//! The studio's state without a window: the document and its history, the view camera,
-//! selection and hover, the drag in progress, the clock; and what the 3-D view draws
-//! (the document composed by the renderer's [`compose`], with the view's camera and the
-//! handles highlighted). Everything here is testable headless.
+//! The studio's state without a window, composed of its parts: the document and its
+//! history ([`Document`]), the selection ([`Selection`]), what the view keeps between
+//! frames ([`ViewCaches`]) and the messages shown ([`Status`]), with the view camera, the
+//! tools' settings, the drag in progress and the clock; and what the 3-D view draws (the
+//! document composed by the renderer's [`compose`](splinekit_render::compose()), with the view's
+//! camera and the handles highlighted). Everything here is testable headless.
 
 use std::path::PathBuf;
 
 use splinekit::surface::iso_curve::Direction;
-use splinekit_render::{LineItem, PointItem, RenderScene, compose_with};
+use splinekit_render::{LineItem, PointItem, RenderScene};
 use splinekit_scene::ShapeDocument;
 use splinekit_scene::scenes::SceneDocument;
 
@@ -14,34 +16,20 @@ use crate::actions::Action;
 use crate::analysis::Analysis;
 use crate::clock::Clock;
 use crate::command::{Command, FieldEdit};
-use crate::document;
+use crate::document::{self, Document};
 use crate::edit::{Edit, EditError};
 use crate::gesture::{Gesture, GestureKind};
-use crate::handles::{Handle, HandleKind, handles_with};
-use crate::history::History;
+use crate::group_move::{GroupMove, GroupStart};
+use crate::handles::{Handle, HandleKind};
 use crate::knot_edit::{self, KnotTool};
-use crate::live_surfaces::LiveSurfaces;
-use crate::live_view::{self, Changes, KeptPolyline, Lattice};
+use crate::live_view::Changes;
 use crate::local_insert;
 use crate::net_knot_edit;
-use crate::selection::{GroupMove, GroupStart, Selection, in_box};
+use crate::selection::{Selection, in_box};
 use crate::snapping::Snapping;
+use crate::status::Status;
+use crate::view_caches::ViewCaches;
 use crate::view_camera::{Projector, StandardView, ViewCamera};
-
-/// The scene as last composed, and what it was composed from.
-struct Composed {
-    scene: SceneDocument,
-    time: Option<f64>,
-    composed: RenderScene,
-    /// The bounds of `composed`.
-    bounds: Option<([f32; 3], [f32; 3])>,
-    /// Composed afresh (not brought up to date in place during a drag).
-    exact: bool,
-    /// The live surfaces' meshes, by object ([`live_view::lattices`]).
-    lattices: Vec<Option<Lattice>>,
-    /// The adaptive curves' polylines kept during a drag ([`live_view::patch`]).
-    polylines: Vec<Option<KeptPolyline>>,
-}
 
 /// What the 3-D view draws: the composed scene (kept between frames), the overlays drawn
 /// over it (handles, the selected local Bézier's net; with the view's camera, lights and
@@ -70,16 +58,6 @@ impl ViewScene<'_> {
     }
 }
 
-fn union(a: Option<([f32; 3], [f32; 3])>, b: Option<([f32; 3], [f32; 3])>) -> Option<([f32; 3], [f32; 3])> {
-    match (a, b) {
-        (Some((lo, hi)), Some((l, h))) => Some((
-            [lo[0].min(l[0]), lo[1].min(l[1]), lo[2].min(l[2])],
-            [hi[0].max(h[0]), hi[1].max(h[1]), hi[2].max(h[2])],
-        )),
-        (a, b) => a.or(b),
-    }
-}
-
 /// The handles (patch origins and control points, which the renderer does not mark), the
 /// control polygon of the selected local Bézier curve or the net (rows and columns) of the
 /// selected Bézier patch, and the selected handles (the last picked largest) and the hovered
@@ -87,7 +65,7 @@ fn union(a: Option<([f32; 3], [f32; 3])>, b: Option<([f32; 3], [f32; 3])>) -> Op
 fn overlay_handles(
     handles: &[Handle],
     selected: Option<&Handle>,
-    selection: &Selection,
+    selected_handles: &[Handle],
     hovered: Option<&Handle>,
     rs: &mut RenderScene,
 ) {
@@ -114,7 +92,7 @@ fn overlay_handles(
         let position = h.position.map(|x| x as f32);
         rs.points.push(PointItem { position, color: [0.15, 0.15, 0.15, 1.0], size: 7.0 });
     }
-    for h in &selection.handles {
+    for h in selected_handles {
         let position = h.position.map(|x| x as f32);
         rs.points.push(PointItem { position, color: [0.95, 0.45, 0.0, 1.0], size: 11.0 });
     }
@@ -126,26 +104,21 @@ fn overlay_handles(
     }
 }
 
-/// How close (pixels) the cursor must be to a handle to grab it.
-pub const PICK_RADIUS: f64 = 10.0;
-
-/// The studio's state.
+/// The studio's state: the document (with its history), what is selected, what the view
+/// keeps between frames and the messages shown, composed with the view's camera, the
+/// tools' settings, the drag in progress, the clock and the queued commands. Edits reach
+/// the document only through [`Studio::edit`] (one undo step, or a drag's merged steps).
 pub struct Studio {
-    /// The document being edited.
-    pub scene: SceneDocument,
-    /// The file it came from.
-    pub path: Option<PathBuf>,
-    /// Undo and redo.
-    pub history: History,
+    /// The document being edited, the file it came from, undo and redo.
+    pub document: Document,
+    /// The selected object and handles.
+    pub selection: Selection,
+    /// What the 3-D view keeps between frames (composition, handles, hover, widgets).
+    pub view: ViewCaches,
+    /// The status line's message and the errors shown.
+    pub status: Status,
     /// The camera of the 3-D view (`None` until the first frame fits one).
     pub camera: Option<ViewCamera>,
-    /// The selected object.
-    pub selected_object: Option<usize>,
-    /// The selected handle picked last (its local's control points are shown; the
-    /// Properties panel edits it).
-    pub selected: Option<Handle>,
-    /// Every selected handle ([`crate::selection`]), `selected` among them.
-    pub selection: Selection,
     /// What a moved handle snaps to, and the nudge step.
     pub snapping: Snapping,
     /// What the next click on the selected curve does to its knots (`None`: selects).
@@ -154,63 +127,29 @@ pub struct Studio {
     pub knot_tolerance: f64,
     /// The curvature comb and continuity drawn over the view.
     pub analysis: Analysis,
-    /// The handle under the cursor.
-    pub hovered: Option<Handle>,
     /// The drag in progress.
     pub gesture: Option<Gesture>,
     /// The animation clock.
     pub clock: Clock,
-    /// The last message for the status line (an edit refused, a file saved, …).
-    pub message: Option<String>,
-    /// A document that failed to open: its error, shown instead of the view.
-    pub load_error: Option<String>,
-    /// The handles as last drawn.
-    pub handles: Vec<Handle>,
-    /// The field (JSON pointer) whose last change was refused, and the message.
-    pub field_error: Option<(String, String)>,
-    /// Named panel widgets drawn in the last frame and their rectangles (egui points:
-    /// left, top, right, bottom), for the handle report (`object 0`, `knots`,
-    /// `knots: periodic`, …): what a script clicks.
-    pub widgets: Vec<(String, [f32; 4])>,
-    /// The bounds of the scene as last drawn.
-    pub bounds: Option<([f32; 3], [f32; 3])>,
-    /// The last composition.
-    cache: Option<Composed>,
-    /// The blending-spline surfaces kept evaluated between compositions.
-    pub live: LiveSurfaces,
-    /// What changed in the composition since the last [`Studio::view_scene`].
-    changes: Changes,
     /// Commands queued by the panels, run by [`Studio::run_commands`].
-    commands: Vec<Command>,
+    pub(crate) commands: Vec<Command>,
 }
 
 impl Studio {
     /// The studio on a document.
     pub fn new(scene: SceneDocument, path: Option<PathBuf>) -> Self {
         Studio {
-            scene,
-            path,
-            history: History::default(),
-            camera: None,
-            selected_object: None,
-            selected: None,
+            document: Document::new(scene, path),
             selection: Selection::default(),
+            view: ViewCaches::default(),
+            status: Status::default(),
+            camera: None,
             snapping: Snapping::default(),
             knot_tool: None,
             knot_tolerance: 1e-3,
             analysis: Analysis::default(),
-            hovered: None,
             gesture: None,
             clock: Clock::new(),
-            message: None,
-            load_error: None,
-            handles: Vec::new(),
-            field_error: None,
-            widgets: Vec::new(),
-            bounds: None,
-            cache: None,
-            live: LiveSurfaces::default(),
-            changes: Changes::All,
             commands: Vec::new(),
         }
     }
@@ -239,8 +178,8 @@ impl Studio {
             Command::Export(path) => self.export_selected(std::path::Path::new(&path)),
             Command::Edit(FieldEdit { edit, field, select }) => {
                 let done = self.edit(edit, false);
-                self.field_error = match (done, field) {
-                    (false, Some(f)) => self.message.clone().map(|m| (f, m)),
+                self.status.field_error = match (done, field) {
+                    (false, Some(f)) => self.status.message.clone().map(|m| (f, m)),
                     _ => None,
                 };
                 if let (true, Some(object)) = (done, select) {
@@ -255,14 +194,13 @@ impl Studio {
     /// Selects object `object` (none: `None`; an index past the end selects none) and no
     /// handle.
     pub fn select_object(&mut self, object: Option<usize>) {
-        self.selected_object = object.filter(|&i| i < self.scene.objects.len());
-        self.clear_selection();
+        self.selection.select_object(object, self.document.scene().objects.len());
     }
 
     /// The selected object when it is a curve the knot edits work on (else a message).
     fn curve_object(&self) -> Result<usize, String> {
-        let object = self.selected_object.ok_or("select a B-spline, NURBS or Bézier curve first")?;
-        match &self.scene.objects[object].shape {
+        let object = self.selection.object.ok_or("select a B-spline, NURBS or Bézier curve first")?;
+        match &self.document.scene().objects[object].shape {
             ShapeDocument::Curve(_) => Ok(object),
             ShapeDocument::Surface(_) => Err("knot removal and degree elevation work on curves; on B-spline, NURBS \
                  and Bézier surfaces the window inserts knots (K + click)"
@@ -278,15 +216,15 @@ impl Studio {
                     self.refresh_selection();
                 }
             }
-            Err(e) => self.message = Some(e),
+            Err(e) => self.status.message = Some(e),
         }
     }
 
     /// The selected object when it is a spline net (B-spline, NURBS or Bézier surface):
     /// knot insertion works on it.
     fn net_object(&self) -> Option<usize> {
-        let object = self.selected_object?;
-        match &self.scene.objects[object].shape {
+        let object = self.selection.object?;
+        match &self.document.scene().objects[object].shape {
             ShapeDocument::Surface(s) if s.spline().is_some() => Some(object),
             _ => None,
         }
@@ -295,14 +233,14 @@ impl Studio {
     /// The selected object when it is a blending spline (curve or surface): local
     /// insertion works on it.
     fn blending_object(&self) -> Option<usize> {
-        let object = self.selected_object?;
-        local_insert::takes_locals(&self.scene.objects[object].shape).then_some(object)
+        let object = self.selection.object?;
+        local_insert::takes_locals(&self.document.scene().objects[object].shape).then_some(object)
     }
 
     /// Arms a knot tool: the next click on the selected curve (or, inserting, spline
     /// surface; inserting a local, blending spline) uses it, as the message says.
     fn arm(&mut self, tool: KnotTool) {
-        let shape = self.selected_object.map(|o| &self.scene.objects[o].shape);
+        let shape = self.selection.object.map(|o| &self.document.scene().objects[o].shape);
         let armed: Result<String, String> = match tool {
             KnotTool::InsertLocal => match (shape, self.blending_object()) {
                 (Some(ShapeDocument::Curve(_)), Some(_)) => {
@@ -327,9 +265,9 @@ impl Studio {
         match armed {
             Ok(m) => {
                 self.knot_tool = Some(tool);
-                self.message = Some(m);
+                self.status.message = Some(m);
             }
-            Err(e) => self.message = Some(e),
+            Err(e) => self.status.message = Some(e),
         }
     }
 
@@ -338,17 +276,17 @@ impl Studio {
     /// u-knot (a row of local patches) at the clicked u, with `shift` at the clicked v;
     /// one undo step. A click off the surface leaves the tool armed.
     fn net_knot_click(&mut self, object: usize, projector: &Projector, mouse: [f64; 2], shift: bool, local: bool) {
-        let shape = &self.scene.objects[object].shape;
+        let shape = &self.document.scene().objects[object].shape;
         let at = net_knot_edit::surface_samples(shape, net_knot_edit::GRID)
             .map(|grid| net_knot_edit::parameters_at(&grid, projector, mouse));
         let (u, v) = match at {
             Ok(Some(uv)) => uv,
             Ok(None) => {
-                self.message = Some("click on the surface itself (Escape: cancel)".into());
+                self.status.message = Some("click on the surface itself (Escape: cancel)".into());
                 return;
             }
             Err(e) => {
-                self.message = Some(e);
+                self.status.message = Some(e);
                 return;
             }
         };
@@ -373,14 +311,15 @@ impl Studio {
         }
         if tool == KnotTool::InsertLocal {
             match self.blending_object() {
-                Some(object) if matches!(self.scene.objects[object].shape, ShapeDocument::Surface(_)) => {
+                Some(object) if matches!(self.document.scene().objects[object].shape, ShapeDocument::Surface(_)) => {
                     self.net_knot_click(object, projector, mouse, shift, true);
                     return;
                 }
                 Some(_) => {}
                 None => {
                     self.knot_tool = None;
-                    self.message = Some("insert local piece: select a blending spline (curve or surface) first".into());
+                    self.status.message =
+                        Some("insert local piece: select a blending spline (curve or surface) first".into());
                     return;
                 }
             }
@@ -389,21 +328,21 @@ impl Studio {
             Ok(o) => o,
             Err(e) => {
                 self.knot_tool = None;
-                self.message = Some(e);
+                self.status.message = Some(e);
                 return;
             }
         };
-        let shape = &self.scene.objects[object].shape;
+        let shape = &self.document.scene().objects[object].shape;
         let at = knot_edit::curve_samples(shape, knot_edit::SAMPLES)
             .map(|samples| knot_edit::parameter_at(&samples, projector, mouse));
         let u = match at {
             Ok(Some(u)) => u,
             Ok(None) => {
-                self.message = Some("click on the curve itself (Escape: cancel)".into());
+                self.status.message = Some("click on the curve itself (Escape: cancel)".into());
                 return;
             }
             Err(e) => {
-                self.message = Some(e);
+                self.status.message = Some(e);
                 return;
             }
         };
@@ -418,80 +357,47 @@ impl Studio {
 
     /// Selects no handle.
     pub fn clear_selection(&mut self) {
-        self.selected = None;
-        self.selection = Selection::default();
+        self.selection.clear_handles();
     }
 
     /// A click on `picked` (none: empty space): selects it alone, or with `add` (Shift)
     /// adds it to the selection or removes it. A click on empty space without `add`
-    /// clears the selection.
+    /// clears the selection ([`Selection::click`]).
     pub fn click(&mut self, picked: Option<Handle>, add: bool) {
-        match (picked, add) {
-            (Some(h), true) => {
-                self.selected_object = Some(h.object);
-                self.selected =
-                    if self.selection.toggle(h.clone()) { Some(h) } else { self.selection.handles.last().cloned() };
-            }
-            (Some(h), false) => {
-                self.selected_object = Some(h.object);
-                self.selection = Selection { handles: vec![h.clone()] };
-                self.selected = Some(h);
-            }
-            (None, true) => {}
-            (None, false) => self.clear_selection(),
-        }
+        self.selection.click(picked, add);
     }
 
     /// Selects the shown handles whose projection lies in the box with corners `a` and `b`
     /// (view pixels); with `add`, in addition to the selection.
     pub fn box_select(&mut self, projector: &Projector, a: [f64; 2], b: [f64; 2], add: bool) {
         let inside = in_box(self.shown_handles(), projector, a, b);
-        if !add {
-            self.selection = Selection::default();
-        }
-        self.selection.extend(inside);
-        self.selected = self.selection.handles.last().cloned();
-        if let Some(h) = &self.selected {
-            self.selected_object = Some(h.object);
-        }
+        self.selection.select_box(inside, add);
     }
 
     /// Selects every shown handle of the selected object.
     pub fn select_all(&mut self) {
-        let Some(object) = self.selected_object else {
-            self.message = Some("select all: select an object first".into());
+        let Some(object) = self.selection.object else {
+            self.status.message = Some("select all: select an object first".into());
             return;
         };
         let all: Vec<Handle> = self.shown_handles().filter(|h| h.object == object).cloned().collect();
-        self.selection.extend(all);
-        if self.selected.is_none() {
-            self.selected = self.selection.handles.last().cloned();
-        }
-    }
-
-    /// The selected handles (the selection, else the last picked).
-    fn selected_handles(&self) -> Vec<Handle> {
-        if self.selection.handles.is_empty() {
-            self.selected.iter().cloned().collect()
-        } else {
-            self.selection.handles.clone()
-        }
+        self.selection.add_all(all);
     }
 
     /// Moves the selection by `steps` snapping steps along world axis `axis`: one edit.
     pub fn nudge(&mut self, axis: usize, steps: i32) {
-        let handles = self.selected_handles();
+        let handles = self.selection.selected_handles();
         if handles.is_empty() {
-            self.message = Some("nudge: select handles first".into());
+            self.status.message = Some("nudge: select handles first".into());
             return;
         }
         if axis == 2 && handles.iter().all(|h| h.dimension == 2) {
-            self.message = Some("nudge: a plane shape has no z".into());
+            self.status.message = Some("nudge: a plane shape has no z".into());
             return;
         }
         let mut d = [0.0; 3];
         d[axis] = self.snapping.step * f64::from(steps);
-        let edit = GroupStart::read(&self.scene, self.time(), &handles)
+        let edit = GroupStart::read(self.document.scene(), self.time(), &handles)
             .ok_or_else(|| "nudge: the selection's values cannot be read".to_string())
             .and_then(|g| g.edit(&GroupMove::Translate(d)).map_err(|e| e.to_string()));
         match edit {
@@ -500,17 +406,14 @@ impl Studio {
                     self.refresh_selection();
                 }
             }
-            Err(e) => self.message = Some(e),
+            Err(e) => self.status.message = Some(e),
         }
     }
 
     /// Brings the selected handles to their places in the document as it is now.
     fn refresh_selection(&mut self) {
-        if let Ok(now) = self.visible_handles() {
+        if let Ok(now) = self.view.visible_handles(self.document.scene(), self.time()) {
             self.selection.follow(&now);
-            if let Some(sel) = &self.selected {
-                self.selected = now.into_iter().find(|h| h.object == sel.object && h.kind == sel.kind);
-            }
         }
     }
 
@@ -538,16 +441,19 @@ impl Studio {
             Action::RemoveKnot => self.arm(KnotTool::Remove),
             Action::InsertLocal => self.arm(KnotTool::InsertLocal),
             Action::ElevateDegree => {
-                let edit = self.curve_object().and_then(|o| knot_edit::elevate(&self.scene.objects[o].shape, o));
+                let edit =
+                    self.curve_object().and_then(|o| knot_edit::elevate(&self.document.scene().objects[o].shape, o));
                 self.apply_or_say(edit);
             }
             Action::SelectAll => self.select_all(),
             Action::Nudge(axis, steps) => self.nudge(axis, steps),
-            Action::AddBeat => match self.selected_object {
+            Action::AddBeat => match self.selection.object {
                 Some(object) => {
                     self.add_beat(object);
                 }
-                None => self.message = Some("a beat moves the local pieces of a blending spline: select one".into()),
+                None => {
+                    self.status.message = Some("a beat moves the local pieces of a blending spline: select one".into())
+                }
             },
             Action::Screenshot | Action::Quit | Action::FrameTimes | Action::Help => return Some(action),
         }
@@ -561,27 +467,28 @@ impl Studio {
             Ok(scene) => {
                 *self = Studio::new(scene, Some(path));
             }
-            Err(e) => self.load_error = Some(e),
+            Err(e) => self.status.load_error = Some(e),
         }
     }
 
     /// The time the scene is posed at (`None` when it has no animation).
     pub fn time(&self) -> Option<f64> {
-        self.scene.is_animated().then_some(self.clock.time)
+        self.document.scene().is_animated().then_some(self.clock.time)
     }
 
-    /// Applies an edit through the history; a refused edit leaves its message.
+    /// Applies an edit through the document's history, the edited shape built by the
+    /// view's live surfaces; a refused edit leaves its message.
     pub fn edit(&mut self, edit: Edit, merge: bool) -> bool {
         let time = self.time();
-        let live = &mut self.live;
+        let live = &mut self.view.live;
         let mut check = |object: usize, shape: &ShapeDocument| live.check_build(object, shape, time);
-        match self.history.apply_with(&mut self.scene, edit, merge, &mut check) {
+        match self.document.edit(edit, merge, &mut check) {
             Ok(()) => {
-                self.message = None;
+                self.status.message = None;
                 true
             }
             Err(e) => {
-                self.message = Some(e.to_string());
+                self.status.message = Some(e.to_string());
                 false
             }
         }
@@ -593,10 +500,10 @@ impl Studio {
     /// so a blending spline swells and shrinks about its centre like the seed's beating
     /// heart; then plays. `false` (with a message) for objects without local pieces.
     pub fn add_beat(&mut self, object: usize) -> bool {
-        let all = crate::handles::handles(&self.scene, None).unwrap_or_default();
+        let all = crate::handles::handles(self.document.scene(), None).unwrap_or_default();
         let pieces: Vec<&Handle> = all.iter().filter(|h| h.object == object && h.kind.is_local()).collect();
         if pieces.is_empty() {
-            self.message = Some("a beat moves the local pieces of a blending spline: select one".into());
+            self.status.message = Some("a beat moves the local pieces of a blending spline: select one".into());
             return false;
         }
         let n = pieces.len() as f64;
@@ -627,20 +534,20 @@ impl Studio {
 
     /// Undoes the last edit.
     pub fn undo(&mut self) {
-        let done = self.history.undo(&mut self.scene);
+        let done = self.document.undo();
         self.report(done, "nothing to undo");
         self.refresh_selection();
     }
 
     /// Redoes the last undone edit.
     pub fn redo(&mut self) {
-        let done = self.history.redo(&mut self.scene);
+        let done = self.document.redo();
         self.report(done, "nothing to redo");
         self.refresh_selection();
     }
 
     fn report(&mut self, done: Result<bool, EditError>, nothing: &str) {
-        self.message = match done {
+        self.status.message = match done {
             Ok(true) => None,
             Ok(false) => Some(nothing.into()),
             Err(e) => Some(e.to_string()),
@@ -650,28 +557,20 @@ impl Studio {
     /// Saves to the file opened (or `studio.json`), with the view's camera, so that
     /// `splinekit render` of the file shows what the view shows.
     pub fn save(&mut self) {
-        let path = document::save_path(self.path.as_deref());
-        let mut scene = self.scene.clone();
-        if let Some(c) = &self.camera {
-            scene.camera = Some(c.to_doc());
-        }
-        self.message = Some(match document::write(&scene, &path) {
-            Ok(()) => format!("saved {}", path.display()),
-            Err(e) => e,
-        });
-        self.path = Some(path);
+        let camera = self.camera.as_ref().map(ViewCamera::to_doc);
+        self.status.message = Some(self.document.save(camera));
     }
 
     /// Writes the selected object as a mesh file (format by extension, see [`crate::export`]).
     pub fn export_selected(&mut self, path: &std::path::Path) {
-        let Some(object) = self.selected_object.and_then(|i| self.scene.objects.get(i)) else {
-            self.message = Some("export: select an object first".into());
+        let Some(object) = self.selection.object.and_then(|i| self.document.scene().objects.get(i)) else {
+            self.status.message = Some("export: select an object first".into());
             return;
         };
         let written = crate::export::export(object, self.time(), path).and_then(|bytes| {
             splinekit_scene::write_file(path, &bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
         });
-        self.message = Some(written.map_or_else(|e| e, |()| format!("exported {}", path.display())));
+        self.status.message = Some(written.map_or_else(|e| e, |()| format!("exported {}", path.display())));
     }
 
     /// The scene as the 3-D view draws it at `size` pixels, as one scene ([`ViewScene::merged`]).
@@ -688,13 +587,12 @@ impl Studio {
     pub fn view_scene(&mut self, size: (u32, u32), overlays: bool) -> Result<ViewScene<'_>, String> {
         let aspect = size.0.max(1) as f32 / size.1.max(1) as f32;
         let time = self.time();
-        self.compose(aspect)?;
+        self.view.compose(self.document.scene(), time, aspect, self.gesture.is_some())?;
         self.follow_handles();
-        let Some(cache) = self.cache.as_ref() else { return Err("nothing composed".into()) };
-        let rs = &cache.composed;
+        let Some((rs, composed_bounds)) = self.view.composed() else { return Err("nothing composed".into()) };
         let camera = self.camera.get_or_insert_with(|| {
             ViewCamera::new(rs.camera.unwrap_or_else(|| {
-                splinekit_render::Camera::fit(cache.bounds.unwrap_or(([-1.0; 3], [1.0; 3])), 0.9, 0.5, aspect)
+                splinekit_render::Camera::fit(composed_bounds.unwrap_or(([-1.0; 3], [1.0; 3])), 0.9, 0.5, aspect)
             }))
         });
         let mut overlay = RenderScene {
@@ -705,106 +603,34 @@ impl Studio {
             painter_order: rs.painter_order,
             ..Default::default()
         };
-        self.analysis.overlay(&self.scene, time, &mut overlay);
+        self.analysis.overlay(self.document.scene(), time, &mut overlay);
         if overlays {
             overlay_handles(
-                &self.handles,
-                self.selected.as_ref(),
-                &self.selection,
-                self.hovered.as_ref(),
+                &self.view.handles,
+                self.selection.handle.as_ref(),
+                &self.selection.handles,
+                self.view.hovered.as_ref(),
                 &mut overlay,
             );
         }
-        let bounds = union(cache.bounds, overlay.bounds());
-        self.bounds = bounds;
-        let changes = std::mem::replace(&mut self.changes, Changes::none());
-        Ok(ViewScene { composed: rs, overlay, bounds, changes })
-    }
-
-    /// Brings the composition up to date with the document at the current time: reused
-    /// while only the camera, hover or selection change; during a drag brought up to date
-    /// in place ([`crate::live_view::patch`]); else composed afresh, blending-spline surfaces
-    /// re-evaluated only where their frames changed ([`LiveSurfaces`]). After a drag the
-    /// still scene is composed afresh.
-    fn compose(&mut self, aspect: f32) -> Result<(), String> {
-        let time = self.time();
-        let dragging = self.gesture.is_some();
-        if let Some(c) = &self.cache
-            && c.scene == self.scene
-            && c.time == time
-            && (c.exact || dragging)
-        {
-            return Ok(());
-        }
-        self.live.update(&self.scene, time);
-        if dragging
-            && let Some(c) = self.cache.as_mut()
-            && c.time == time
-            && let Some(changes) = live_view::patch(
-                &c.scene,
-                &self.scene,
-                time,
-                aspect,
-                &mut c.composed,
-                &c.lattices,
-                &mut c.polylines,
-                &self.live,
-            )
-        {
-            c.scene = self.scene.clone();
-            c.bounds = c.composed.bounds();
-            c.exact = false;
-            self.changes.merge(changes);
-            self.handles = self.visible_handles()?;
-            return Ok(());
-        }
-        let live = &self.live;
-        let composed = compose_with(&self.scene, time, aspect, &|i| live.surface(i)).map_err(|e| e.to_string())?;
-        let lattices = live_view::lattices(&self.scene, &composed, live);
-        self.handles = self.visible_handles()?;
-        let bounds = composed.bounds();
-        self.cache = Some(Composed {
-            scene: self.scene.clone(),
-            time,
-            composed,
-            bounds,
-            exact: true,
-            lattices,
-            polylines: Vec::new(),
-        });
-        self.changes = Changes::All;
-        Ok(())
+        let Some((composed, bounds, changes)) = self.view.finish_frame(overlay.bounds()) else {
+            return Err("nothing composed".into());
+        };
+        Ok(ViewScene { composed, overlay, bounds, changes })
     }
 
     /// Moves the selected and hovered handles to where the handles just made put them (an
     /// undo, a redo or a panel's edit moves them too); one that no longer exists is let go.
     fn follow_handles(&mut self) {
-        let find = |h: &Option<Handle>| {
-            let h = h.as_ref()?;
-            self.handles.iter().find(|n| n.object == h.object && n.kind == h.kind).cloned()
-        };
-        (self.selected, self.hovered) = (find(&self.selected), find(&self.hovered));
-        self.selection.follow(&self.handles);
-    }
-
-    /// The handles the view may show and pick: local pieces (origins and Bézier control
-    /// points) of objects drawn with `local_pieces`, control points of objects drawn with
-    /// `control_net`.
-    fn visible_handles(&self) -> Result<Vec<Handle>, String> {
-        let live = &self.live;
-        let all = handles_with(&self.scene, self.time(), &|i, d| live.built_from(i, d)).map_err(|e| e.to_string())?;
-        let shown = |h: &Handle| {
-            let style = &self.scene.objects[h.object].style;
-            if h.kind.piece().is_some() { style.local_pieces } else { style.control_net }
-        };
-        Ok(all.into_iter().filter(shown).collect())
+        self.selection.follow(&self.view.handles);
+        self.view.follow_hover();
     }
 
     /// Frames the selected handle (a box a quarter of the scene's size around it), else
     /// the whole scene.
     pub fn frame_selection(&mut self) {
-        let Some((lo, hi)) = self.bounds else { return };
-        let bounds = match &self.selected {
+        let Some((lo, hi)) = self.view.bounds else { return };
+        let bounds = match &self.selection.handle {
             Some(h) => {
                 let r = (0..3).map(|k| hi[k] - lo[k]).fold(0.0f32, f32::max) / 8.0;
                 let p = h.position.map(|x| x as f32);
@@ -817,24 +643,15 @@ impl Studio {
         }
     }
 
-    /// The handles the view shows now: [`Self::handles`] without the control points of
-    /// local Béziers other than the selected local piece's ([`Handle::shown_with`]).
+    /// The handles the view shows now: [`ViewCaches::handles`] without the control points
+    /// of local Béziers other than the selected local piece's ([`Handle::shown_with`]).
     pub fn shown_handles(&self) -> impl Iterator<Item = &Handle> {
-        self.handles.iter().filter(|h| h.shown_with(self.selected.as_ref()))
+        self.view.shown_handles(self.selection.handle.as_ref())
     }
 
-    /// The shown handle within [`PICK_RADIUS`] pixels of `mouse`, the nearest first.
+    /// The shown handle within [`PICK_RADIUS`](crate::view_caches::PICK_RADIUS) pixels of `mouse`, the nearest first.
     pub fn pick(&self, projector: &Projector, mouse: [f64; 2]) -> Option<Handle> {
-        let mut best: Option<(f64, &Handle)> = None;
-        for h in self.shown_handles() {
-            if let Some((p, _)) = projector.project(h.position) {
-                let d = (p[0] - mouse[0]).hypot(p[1] - mouse[1]);
-                if d <= PICK_RADIUS && best.is_none_or(|(b, _)| d < b) {
-                    best = Some((d, h));
-                }
-            }
-        }
-        best.map(|(_, h)| h.clone())
+        self.view.pick(self.selection.handle.as_ref(), projector, mouse)
     }
 
     /// Starts dragging the handle under `mouse`; `false` when there is none.
@@ -842,16 +659,16 @@ impl Studio {
     /// a selection of several drags the whole selection; another becomes the selection.
     pub fn begin_drag(&mut self, projector: &Projector, mouse: [f64; 2], kind: GestureKind) -> bool {
         let Some(h) = self.pick(projector, mouse) else { return false };
-        self.selected_object = Some(h.object);
         let time = self.time();
         if self.selection.handles.len() > 1 && self.selection.contains(&h) && kind != GestureKind::Weight {
             let group = self.selection.handles.clone();
-            self.gesture = Gesture::start_group(&self.scene, time, projector, &h, &group, kind, mouse);
+            self.gesture = Gesture::start_group(self.document.scene(), time, projector, &h, &group, kind, mouse);
+            self.selection.object = Some(h.object);
+            self.selection.handle = Some(h);
         } else {
-            self.gesture = Gesture::start_at(&self.scene, time, projector, &h, kind, mouse);
-            self.selection = Selection { handles: vec![h.clone()] };
+            self.gesture = Gesture::start_at(self.document.scene(), time, projector, &h, kind, mouse);
+            self.selection.select_only(h);
         }
-        self.selected = Some(h);
         self.gesture.is_some()
     }
 
@@ -874,14 +691,14 @@ impl Studio {
             Ok(edit) => {
                 self.edit(edit, true);
             }
-            Err(e) => self.message = Some(e.to_string()),
+            Err(e) => self.status.message = Some(e.to_string()),
         }
     }
 
     /// Ends the drag (one undo step).
     pub fn end_drag(&mut self) {
         self.gesture = None;
-        self.history.close();
+        self.document.close_step();
         self.refresh_selection();
     }
 }

@@ -88,7 +88,7 @@ fn mouse(
     let to_px = |p: egui::Pos2| [f64::from((p.x - rect.left()) * ppp), f64::from((p.y - rect.top()) * ppp)];
     let cursor = response.hover_pos().map(to_px);
     if studio.gesture.is_none() {
-        studio.hovered = cursor.and_then(|c| studio.pick(projector, c));
+        studio.view.hovered = cursor.and_then(|c| studio.pick(projector, c));
     }
     let (ctrl, shift) = ui.input(|i| (i.modifiers.command, i.modifiers.shift));
     let panning = !ctrl && shift || response.dragged_by(egui::PointerButton::Middle);

@@ -141,7 +141,7 @@ fn studio_on_heart() -> (Studio, Projector) {
 #[test]
 fn a_drag_on_a_handle_follows_the_mouse_and_is_one_undo_step() {
     let (mut studio, projector) = studio_on_heart();
-    let h = studio.handles.iter().find(|h| h.kind == HandleKind::LocalCurve(4)).expect("local 4").clone();
+    let h = studio.view.handles.iter().find(|h| h.kind == HandleKind::LocalCurve(4)).expect("local 4").clone();
     let (p, _) = projector.project(h.position).expect("in view");
     assert!(
         studio.begin_drag(&projector, [p[0] + 3.0, p[1] - 2.0], GestureKind::Move(None)),
@@ -151,24 +151,24 @@ fn a_drag_on_a_handle_follows_the_mouse_and_is_one_undo_step() {
         studio.drag_to(&projector, [p[0] + 3.0 + 4.0 * k as f64, p[1] - 2.0 + 2.0 * k as f64]);
     }
     studio.end_drag();
-    let moved = studio.selected.clone().expect("still selected");
+    let moved = studio.selection.handle.clone().expect("still selected");
     let (q, _) = projector.project(moved.position).expect("in view");
     assert!((q[0] - (p[0] + 40.0)).abs() < 1e-6 && (q[1] - (p[1] + 20.0)).abs() < 1e-6, "{q:?} from {p:?}");
     studio.undo();
-    assert_eq!(studio.scene, heart(), "the whole drag is one step");
+    assert_eq!(*studio.document.scene(), heart(), "the whole drag is one step");
     // The next frame shows the selection where the undo put it, not where the drag left it.
     studio.render_scene((600, 600), true).expect("composes");
-    let back = studio.selected.clone().expect("still selected");
+    let back = studio.selection.handle.clone().expect("still selected");
     assert_eq!(back.position, h.position, "the selected handle follows the undo");
 }
 
 #[test]
 fn rotating_and_scaling_by_hand_compose_with_the_transform() {
     let (studio, projector) = studio_on_heart();
-    let h = studio.handles.iter().find(|h| h.kind == HandleKind::LocalCurve(1)).expect("local 1").clone();
+    let h = studio.view.handles.iter().find(|h| h.kind == HandleKind::LocalCurve(1)).expect("local 1").clone();
     let (p, _) = projector.project(h.position).expect("in view");
-    let rotate =
-        Gesture::start(&studio.scene, &projector, &h, GestureKind::Rotate, [p[0] + 50.0, p[1]]).expect("starts");
+    let rotate = Gesture::start(studio.document.scene(), &projector, &h, GestureKind::Rotate, [p[0] + 50.0, p[1]])
+        .expect("starts");
     // A quarter turn counter-clockwise on screen (y down: from +x to −y).
     let Edit::Set { value: Some(v), .. } = rotate.edit_at(&projector, [p[0], p[1] - 50.0]).expect("an edit") else {
         panic!("a set")
@@ -179,7 +179,8 @@ fn rotating_and_scaling_by_hand_compose_with_the_transform() {
         (angle - std::f64::consts::FRAC_PI_2).abs() < 1e-9 && (axis[2].as_f64().expect("z") - 1.0).abs() < 1e-9,
         "{v}"
     );
-    let scale = Gesture::start(&studio.scene, &projector, &h, GestureKind::Scale, [p[0] + 20.0, p[1]]).expect("starts");
+    let scale = Gesture::start(studio.document.scene(), &projector, &h, GestureKind::Scale, [p[0] + 20.0, p[1]])
+        .expect("starts");
     let Edit::Set { value: Some(v), .. } = scale.edit_at(&projector, [p[0] + 50.0, p[1]]).expect("an edit") else {
         panic!("a set")
     };
@@ -201,7 +202,7 @@ fn drag(studio: &mut Studio, projector: &Projector, kind: HandleKind, by: [f64; 
         studio.drag_to(projector, [p[0] + by[0] * k as f64 / 10.0, p[1] + by[1] * k as f64 / 10.0]);
     }
     studio.end_drag();
-    let moved = studio.selected.clone().expect("still selected");
+    let moved = studio.selection.handle.clone().expect("still selected");
     assert_eq!(moved.kind, kind);
     (p, projector.project(moved.position).expect("in view").0)
 }
@@ -213,16 +214,16 @@ fn drag(studio: &mut Studio, projector: &Projector, kind: HandleKind, by: [f64; 
 #[test]
 fn a_control_point_of_a_local_bezier_follows_the_mouse_and_edits_that_local_only() {
     let (mut studio, projector) = studio_on_heart();
-    let before = curve(&studio.scene);
+    let before = curve(studio.document.scene());
     let fitted = before.local_bezier_points(4).expect("Bézier locals").to_vec();
     assert_eq!(fitted.len(), 3, "quadratic locals");
     // Not shown (nor picked) until local 4 is selected; then only local 4's points are.
-    let point = handles(&studio.scene, None).expect("handles");
+    let point = handles(studio.document.scene(), None).expect("handles");
     let point = point.iter().find(|h| h.kind == HandleKind::LocalCurvePoint(4, 1)).expect("a handle").clone();
     assert!(shown(&studio, HandleKind::LocalCurvePoint(4, 1)).is_none());
     let (px, _) = projector.project(point.position).expect("in view");
     assert!(studio.pick(&projector, px).is_none_or(|h| h.kind.point_path().is_none()));
-    studio.selected = shown(&studio, HandleKind::LocalCurve(4));
+    studio.selection.handle = shown(&studio, HandleKind::LocalCurve(4));
     let points: Vec<HandleKind> =
         studio.shown_handles().filter(|h| h.kind.point_path().is_some()).map(|h| h.kind).collect();
     assert_eq!(points, (0..3).map(|i| HandleKind::LocalCurvePoint(4, i)).collect::<Vec<_>>());
@@ -235,14 +236,14 @@ fn a_control_point_of_a_local_bezier_follows_the_mouse_and_edits_that_local_only
 
     let (from, to) = drag(&mut studio, &projector, HandleKind::LocalCurvePoint(4, 1), [30.0, -20.0]);
     assert!((to[0] - from[0] - 30.0).abs() < 1e-6 && (to[1] - from[1] + 20.0).abs() < 1e-6, "{to:?} from {from:?}");
-    let doc = studio.scene.objects[0].to_value();
+    let doc = studio.document.scene().objects[0].to_value();
     let entry: Vec<Vec<f64>> =
         serde_json::from_value(doc["shape"]["local_control_points"]["4"].clone()).expect("the local's entry");
     assert_eq!(entry.len(), 3);
     assert_eq!(entry[0], fitted[0].as_slice(), "the other points stay as fitted");
     assert_eq!(entry[2], fitted[2].as_slice());
     assert!(doc["shape"].get("transforms").is_none(), "the frame did not change");
-    let after = curve(&studio.scene);
+    let after = curve(studio.document.scene());
     let support = before.local_support(4);
     let mut changed = 0;
     for i in 0..=1000 {
@@ -255,9 +256,9 @@ fn a_control_point_of_a_local_bezier_follows_the_mouse_and_edits_that_local_only
     }
     assert!(changed > 50, "{changed}");
     studio.undo();
-    assert_eq!(studio.scene, heart(), "the whole drag is one step");
+    assert_eq!(*studio.document.scene(), heart(), "the whole drag is one step");
     studio.redo();
-    assert_eq!(curve(&studio.scene).point(support.lerp(0.5)), after.point(support.lerp(0.5)));
+    assert_eq!(curve(studio.document.scene()).point(support.lerp(0.5)), after.point(support.lerp(0.5)));
 }
 
 /// With the local turned and scaled by its transform, the point is moved in the local's
@@ -269,17 +270,17 @@ fn a_local_bezier_point_of_a_turned_and_scaled_local_follows_the_mouse() {
     let frame = json!({"rotate": {"axis": [0.0, 0.0, 1.0], "angle": 0.7}, "scale": 1.8, "translate": [0.5, -0.3, 0.0]});
     assert!(studio.edit(set("/shape/transforms/6", frame.clone()), false));
     studio.render_scene((600, 600), false).expect("composes");
-    studio.selected = shown(&studio, HandleKind::LocalCurve(6));
+    studio.selection.handle = shown(&studio, HandleKind::LocalCurve(6));
     let (from, to) = drag(&mut studio, &projector, HandleKind::LocalCurvePoint(6, 2), [-25.0, 35.0]);
     assert!((to[0] - from[0] + 25.0).abs() < 1e-6 && (to[1] - from[1] - 35.0).abs() < 1e-6, "{to:?} from {from:?}");
-    assert_eq!(studio.scene.objects[0].to_value()["shape"]["transforms"]["6"], frame, "the frame is kept");
+    assert_eq!(studio.document.scene().objects[0].to_value()["shape"]["transforms"]["6"], frame, "the frame is kept");
     let before = shown(&studio, HandleKind::LocalCurvePoint(6, 0)).expect("shown").position;
     let h = shown(&studio, HandleKind::LocalCurvePoint(6, 0)).expect("shown");
     let (p, _) = projector.project(h.position).expect("in view");
     assert!(studio.begin_drag(&projector, p, GestureKind::Move(Some(0))));
     studio.drag_to(&projector, [p[0] + 40.0, p[1] + 40.0]);
     studio.end_drag();
-    let after = studio.selected.clone().expect("selected").position;
+    let after = studio.selection.handle.clone().expect("selected").position;
     assert!((after[0] - before[0]).abs() > 0.1, "{after:?} {before:?}");
     assert!((after[1] - before[1]).abs() < 1e-9 && (after[2] - before[2]).abs() < 1e-9, "{after:?} {before:?}");
 }
@@ -289,13 +290,13 @@ fn a_local_bezier_point_of_a_turned_and_scaled_local_follows_the_mouse() {
 #[test]
 fn a_beat_animates_the_locals_and_undo_takes_it_away() {
     let (mut studio, _) = studio_on_heart();
-    assert!(!studio.scene.is_animated());
-    studio.selected_object = Some(0);
-    assert!(studio.add_beat(0), "{:?}", studio.message);
-    assert!(studio.scene.is_animated() && studio.clock.playing);
+    assert!(!studio.document.scene().is_animated());
+    studio.selection.object = Some(0);
+    assert!(studio.add_beat(0), "{:?}", studio.status.message);
+    assert!(studio.document.scene().is_animated() && studio.clock.playing);
     let rest = curve(&heart());
     let posed = |t: f64| {
-        let mut s = studio.scene.clone();
+        let mut s = studio.document.scene().clone();
         s.objects[0].shape.set_time(t);
         curve(&s)
     };
@@ -309,5 +310,5 @@ fn a_beat_animates_the_locals_and_undo_takes_it_away() {
         assert!((q - o).norm() > 1e-3 && (h - o).norm() < 1e-9, "local {k}: {o} {q} {h}");
     }
     studio.undo();
-    assert!(!studio.scene.is_animated());
+    assert!(!studio.document.scene().is_animated());
 }

@@ -20,17 +20,17 @@ const NURBS: &str = r#"{"type": "scene", "objects": [{"shape": {"type": "nurbs",
 
 fn studio() -> (Studio, Projector) {
     let mut studio = Studio::new(splinekit_studio::document::parse(NURBS).expect("valid"), None);
-    studio.selected_object = Some(0);
+    studio.selection.object = Some(0);
     let rs: RenderScene = studio.render_scene((600, 600), false).expect("composes");
     (studio, Projector::new(&rs, (600, 600)))
 }
 
 fn shape(studio: &Studio) -> Value {
-    studio.scene.objects[0].to_value()["shape"].clone()
+    studio.document.scene().objects[0].to_value()["shape"].clone()
 }
 
 fn samples(studio: &Studio) -> Vec<(f64, [f64; 3])> {
-    curve_samples(&studio.scene.objects[0].shape, 300).expect("samples")
+    curve_samples(&studio.document.scene().objects[0].shape, 300).expect("samples")
 }
 
 #[test]
@@ -73,7 +73,8 @@ fn the_panel_arms_the_tool_and_a_click_on_the_curve_inserts_a_knot_there() {
 #[test]
 fn a_w_drag_changes_one_weight_and_the_panel_shows_it() {
     let (mut studio, projector) = studio();
-    let h = studio.handles.iter().find(|h| h.kind == HandleKind::ControlPoint(1, "control_points")).expect("shown");
+    let h =
+        studio.view.handles.iter().find(|h| h.kind == HandleKind::ControlPoint(1, "control_points")).expect("shown");
     let (p, _) = projector.project(h.position).expect("in view");
     assert!(studio.begin_drag(&projector, p, GestureKind::Weight));
     studio.drag_to(&projector, [p[0], p[1] - 100.0]);
@@ -98,7 +99,7 @@ const NET: &str = r#"{"type": "scene", "objects": [{"shape": {"type": "bspline_s
 type Grid = Vec<Vec<((f64, f64), [f64; 3])>>;
 
 fn net_samples(studio: &Studio) -> Grid {
-    splinekit_studio::net_knot_edit::surface_samples(&studio.scene.objects[0].shape, 40).expect("samples")
+    splinekit_studio::net_knot_edit::surface_samples(&studio.document.scene().objects[0].shape, 40).expect("samples")
 }
 
 fn knots(studio: &Studio, field: &str) -> Vec<f64> {
@@ -108,7 +109,7 @@ fn knots(studio: &Studio, field: &str) -> Vec<f64> {
 #[test]
 fn on_a_spline_surface_a_click_inserts_a_u_knot_and_a_shift_click_a_v_knot() {
     let mut studio = Studio::new(splinekit_studio::document::parse(NET).expect("valid"), None);
-    studio.selected_object = Some(0);
+    studio.selection.object = Some(0);
     let rs: RenderScene = studio.render_scene((600, 600), false).expect("composes");
     let projector = Projector::new(&rs, (600, 600));
     let before = net_samples(&studio);
@@ -150,5 +151,5 @@ fn on_a_spline_surface_a_click_inserts_a_u_knot_and_a_shift_click_a_v_knot() {
     studio.undo();
     assert_eq!((knots(studio, "knots_u").len(), knots(studio, "knots_v").len()), (7, 8), "one undo step each");
     studio.run_action(Action::ElevateDegree);
-    assert!(studio.message.as_deref().is_some_and(|m| m.contains("curves")), "{:?}", studio.message);
+    assert!(studio.status.message.as_deref().is_some_and(|m| m.contains("curves")), "{:?}", studio.status.message);
 }

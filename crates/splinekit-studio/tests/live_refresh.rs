@@ -16,7 +16,7 @@ fn studio(text: &str) -> Studio {
 /// Asserts that what the studio composed equals a fresh composition of its document.
 fn assert_fresh(studio: &mut Studio, what: &str) {
     let live = studio.render_scene(SIZE, false).expect("composes");
-    let mut fresh = compose(&studio.scene, studio.time(), SIZE.0 as f32 / SIZE.1 as f32).expect("composes");
+    let mut fresh = compose(studio.document.scene(), studio.time(), SIZE.0 as f32 / SIZE.1 as f32).expect("composes");
     fresh.camera = live.camera;
     assert_same(&live, &fresh, what);
 }
@@ -50,16 +50,16 @@ fn a_moved_patch_refreshes_its_rectangles_only_and_the_scene_is_the_fresh_one() 
     for (pointer, value) in moves {
         assert!(s.edit(Edit::Set { object: 0, pointer: pointer.into(), value: Some(value) }, false));
         assert_fresh(&mut s, pointer);
-        let n = s.live.last_refreshed;
+        let n = s.view.live.last_refreshed;
         assert!(n > 0 && n < 65 * 65 / 4, "{pointer}: refreshed {n} of {} samples", 65 * 65);
     }
     s.undo();
     assert_fresh(&mut s, "undo");
-    assert!(s.live.last_refreshed > 0);
+    assert!(s.view.live.last_refreshed > 0);
     // Another change than a frame: the surface is made afresh, still the same scene.
     assert!(s.edit(Edit::Set { object: 0, pointer: "/shape/local_surfaces/1".into(), value: Some(json!(5)) }, false));
     assert_fresh(&mut s, "five patches in v");
-    assert_eq!(s.live.last_refreshed, 0);
+    assert_eq!(s.view.live.last_refreshed, 0);
 }
 
 #[test]
@@ -72,7 +72,7 @@ fn the_animated_torus_is_the_fresh_one_at_every_time() {
     for t in [0.0, 0.4, 0.9, 0.9, 1.7] {
         s.clock.time = t;
         assert_fresh(&mut s, &format!("t = {t}"));
-        refreshed += s.live.last_refreshed;
+        refreshed += s.view.live.last_refreshed;
     }
     // The animated patches' rectangles were refreshed, not whole surfaces made afresh.
     assert!(refreshed > 0, "nothing refreshed");
@@ -89,7 +89,7 @@ fn an_edited_patch_net_refreshes_its_rectangles_only() {
     );
     assert_fresh(&mut s, "first frame");
     let splinekit_scene::ShapeDocument::Surface(splinekit_scene::SurfaceDocument::BlendingSplineSurface(d)) =
-        &s.scene.objects[0].shape
+        &s.document.scene().objects[0].shape
     else {
         panic!("a blending-spline surface")
     };
@@ -105,10 +105,10 @@ fn an_edited_patch_net_refreshes_its_rectangles_only() {
             false
         ));
         assert_fresh(&mut s, "lifted");
-        let n = s.live.last_refreshed;
+        let n = s.view.live.last_refreshed;
         assert!(n > 0 && n < 65 * 65 / 4, "refreshed {n} of {} samples", 65 * 65);
     }
     s.undo();
     assert_fresh(&mut s, "undo");
-    assert!(s.live.last_refreshed > 0);
+    assert!(s.view.live.last_refreshed > 0);
 }

@@ -46,7 +46,7 @@ fn frame(studio: &mut Studio, renderer: &Renderer, kept: &mut Option<Geometry>, 
     let in_place = keep_geometry(renderer, kept, view.composed, &view.changes);
     let changes = view.changes.clone();
     let composed = view.composed.clone();
-    let fresh = compose(&studio.scene, studio.time(), SIZE.0 as f32 / SIZE.1 as f32).expect("composes");
+    let fresh = compose(studio.document.scene(), studio.time(), SIZE.0 as f32 / SIZE.1 as f32).expect("composes");
     assert_same_items(&composed, &fresh, what);
     let want = renderer.read_geometry(&renderer.upload(&fresh)).expect("reads back");
     let got = renderer.read_geometry(kept.as_ref().expect("kept")).expect("reads back");
@@ -148,7 +148,7 @@ fn a_colour_mapped_surface_is_meshed_whole_during_a_drag() {
 
 /// The heart's blending spline (3-D) as the studio's document now builds it.
 fn heart_curve(s: &Studio) -> BlendingSplineCurve<3> {
-    let ShapeDocument::Curve(c) = &s.scene.objects[0].shape else { panic!("a curve") };
+    let ShapeDocument::Curve(c) = &s.document.scene().objects[0].shape else { panic!("a curve") };
     let Decoration::LocalCurves(d) = c.decoration() else { panic!("a blending spline") };
     d.curve::<3>().expect("builds")
 }
@@ -168,7 +168,7 @@ fn heart_step(s: &mut Studio, renderer: &Renderer, kept: &mut Option<Geometry>, 
     let want = renderer.read_geometry(&renderer.upload(&composed)).expect("reads back");
     let got = renderer.read_geometry(kept.as_ref().expect("kept")).expect("reads back");
     assert!(got == want, "{what}: the buffers written in place are not those of uploading the scene");
-    let mut fresh = compose(&s.scene, s.time(), SIZE.0 as f32 / SIZE.1 as f32).expect("composes");
+    let mut fresh = compose(s.document.scene(), s.time(), SIZE.0 as f32 / SIZE.1 as f32).expect("composes");
     let line = composed.lines.len() - 1;
     let curve = heart_curve(s);
     let whole = Polyline::adaptive_with_limit(&curve, tolerance, CURVE_POINTS).expect("flattens");

@@ -32,7 +32,7 @@ fn projector(studio: &mut Studio) -> Projector {
 }
 
 fn shape(studio: &Studio, object: usize) -> Value {
-    studio.scene.objects[object].to_value()["shape"].clone()
+    studio.document.scene().objects[object].to_value()["shape"].clone()
 }
 
 /// The diagonal of the samples' bounding box.
@@ -59,11 +59,11 @@ fn frame(ui: &mut egui::Ui, s: &mut Studio) {
 #[test]
 fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
     let mut studio = open("heart_local_curves.json");
-    studio.selected_object = Some(0);
+    studio.selection.object = Some(0);
     let projector = projector(&mut studio);
-    let original = studio.scene.to_value();
-    let before = curve_samples(&studio.scene.objects[0].shape, 600).expect("samples");
-    let original_curve = match &studio.scene.objects[0].shape {
+    let original = studio.document.scene().to_value();
+    let before = curve_samples(&studio.document.scene().objects[0].shape, 600).expect("samples");
+    let original_curve = match &studio.document.scene().objects[0].shape {
         ShapeDocument::Curve(CurveDocument::BlendingSpline(d)) => d.curve::<3>().expect("builds"),
         _ => panic!("a blending spline"),
     };
@@ -75,7 +75,7 @@ fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
     let studio = h.state_mut();
     // A click off the curve keeps the tool armed and the document.
     studio.knot_click(KnotTool::InsertLocal, &projector, [1.0, 1.0], false);
-    assert_eq!(studio.scene.to_value(), original);
+    assert_eq!(studio.document.scene().to_value(), original);
     assert_eq!(studio.knot_tool, Some(KnotTool::InsertLocal));
     // Sample 130 of 600, t ≈ 1.36: between knots 2 and 3 (0.63 apart).
     let (t, p) = before[130];
@@ -89,7 +89,7 @@ fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
     let k = knots.iter().position(|&c| (c - t).abs() < 0.02).expect("a knot at the click");
     assert_eq!(s["local_control_points"][k.to_string()].as_array().map(Vec::len), Some(3), "its quadratic's points");
     let (lo, hi) = (knots[k - 1], knots[k + 1]);
-    let after = curve_samples(&studio.scene.objects[0].shape, 600).expect("samples");
+    let after = curve_samples(&studio.document.scene().objects[0].shape, 600).expect("samples");
     let mut worst: f64 = 0.0;
     for ((t, a), (_, b)) in before.iter().zip(&after) {
         let change = (0..3).map(|i| (a[i] - b[i]).powi(2)).sum::<f64>().sqrt();
@@ -99,7 +99,7 @@ fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
         worst = worst.max(change);
     }
     // What the document now builds is the kernel's insertion into the curve before.
-    let built = |studio: &Studio| match &studio.scene.objects[0].shape {
+    let built = |studio: &Studio| match &studio.document.scene().objects[0].shape {
         ShapeDocument::Curve(CurveDocument::BlendingSpline(d)) => d.curve::<3>().expect("builds"),
         _ => panic!("a blending spline"),
     };
@@ -117,7 +117,7 @@ fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
     eprintln!("largest change {worst:.3e} of a {diagonal:.1} diagonal");
     assert!(worst < 0.01 * diagonal, "{worst} of {diagonal}");
     studio.undo();
-    assert_eq!(studio.scene.to_value(), original, "one undo step gives the document back");
+    assert_eq!(studio.document.scene().to_value(), original, "one undo step gives the document back");
     // The key L arms the tool as well, and the Edit menu lists the action with its key.
     h.key_press(egui::Key::L);
     h.run();
@@ -128,7 +128,7 @@ fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
 #[test]
 fn the_edit_menu_arms_the_tool() {
     let mut studio = open("heart_local_curves.json");
-    studio.selected_object = Some(0);
+    studio.selection.object = Some(0);
     let mut h = Harness::new_ui_state(
         |ui, state: &mut (Studio, FileFields)| {
             let (studio, files) = state;
@@ -151,19 +151,20 @@ fn the_edit_menu_arms_the_tool() {
 fn a_click_on_the_blending_torus_inserts_a_row_of_patches_and_shift_a_column() {
     let mut studio = open("torus_before.json");
     let object = studio
-        .scene
+        .document
+        .scene()
         .objects
         .iter()
         .position(|o| matches!(o.shape, ShapeDocument::Surface(SurfaceDocument::BlendingSplineSurface(_))))
         .expect("the blending torus");
-    studio.selected_object = Some(object);
+    studio.selection.object = Some(object);
     let projector = projector(&mut studio);
-    let original = studio.scene.to_value();
-    let kernel = |studio: &Studio| match &studio.scene.objects[object].shape {
+    let original = studio.document.scene().to_value();
+    let kernel = |studio: &Studio| match &studio.document.scene().objects[object].shape {
         ShapeDocument::Surface(SurfaceDocument::BlendingSplineSurface(d)) => d.surface::<3>().expect("builds"),
         _ => panic!("a blending surface"),
     };
-    let grid = surface_samples(&studio.scene.objects[object].shape, 40).expect("samples");
+    let grid = surface_samples(&studio.document.scene().objects[object].shape, 40).expect("samples");
     let (_, p) = grid[13][22];
     let (px, _) = projector.project(p).expect("in view");
     let mut h = Harness::new_ui_state(frame, studio);
@@ -176,7 +177,7 @@ fn a_click_on_the_blending_torus_inserts_a_row_of_patches_and_shift_a_column() {
     for (shift, direction, counts) in [(false, Direction::U, [9, 6]), (true, Direction::V, [9, 7])] {
         let before = kernel(studio);
         // The parameters the click hits, as the studio finds them.
-        let coarse = surface_samples(&studio.scene.objects[object].shape, GRID).expect("grid");
+        let coarse = surface_samples(&studio.document.scene().objects[object].shape, GRID).expect("grid");
         let (u, v) = parameters_at(&coarse, &projector, px).expect("on the surface");
         let t = if shift { v } else { u };
         studio.run_action(Action::InsertLocal);
@@ -217,15 +218,15 @@ fn a_click_on_the_blending_torus_inserts_a_row_of_patches_and_shift_a_column() {
     }
     studio.undo();
     studio.undo();
-    assert_eq!(studio.scene.to_value(), original, "two undo steps give the document back");
+    assert_eq!(studio.document.scene().to_value(), original, "two undo steps give the document back");
 }
 
 #[test]
 fn after_an_insertion_the_count_follows_the_knots_and_even_knots_respaces_them() {
     let mut studio = open("heart_local_curves.json");
-    studio.selected_object = Some(0);
+    studio.selection.object = Some(0);
     let projector = projector(&mut studio);
-    let (_, p) = curve_samples(&studio.scene.objects[0].shape, 600).expect("samples")[130];
+    let (_, p) = curve_samples(&studio.document.scene().objects[0].shape, 600).expect("samples")[130];
     let (px, _) = projector.project(p).expect("in view");
     studio.run_action(Action::InsertLocal);
     studio.knot_click(KnotTool::InsertLocal, &projector, px, false);

@@ -20,12 +20,12 @@ fn heart() -> Studio {
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/scenes/heart_local_curves.json"))
             .expect("the example");
     let mut studio = Studio::new(splinekit_studio::document::parse(&text).expect("valid"), None);
-    studio.selected_object = Some(0);
+    studio.selection.object = Some(0);
     studio
 }
 
 fn bfunction(studio: &Studio) -> String {
-    let ShapeDocument::Curve(c) = &studio.scene.objects[0].shape else { panic!("a curve") };
+    let ShapeDocument::Curve(c) = &studio.document.scene().objects[0].shape else { panic!("a curve") };
     c.to_value()["bfunction"]["type"].as_str().unwrap_or("erbs (default)").to_string()
 }
 
@@ -35,7 +35,7 @@ fn properties_toggle_styles_and_switch_the_bfunction_and_back() {
     h.run();
     h.get_by_label("control polygon / net").click();
     h.run();
-    assert!(h.state().scene.objects[0].style.control_net);
+    assert!(h.state().document.scene().objects[0].style.control_net);
     assert_eq!(bfunction(h.state()), "erbs (default)");
     h.get_by_label("B-function").click();
     h.run();
@@ -56,18 +56,18 @@ fn objects_are_duplicated_and_deleted_from_the_panel() {
     h.run();
     h.get_by_label("Duplicate").click();
     h.run();
-    assert_eq!(h.state().scene.objects.len(), 2);
-    assert_eq!(h.state().selected_object, Some(1));
+    assert_eq!(h.state().document.scene().objects.len(), 2);
+    assert_eq!(h.state().selection.object, Some(1));
     h.get_by_label("Delete").click();
     h.run();
-    assert_eq!(h.state().scene.objects.len(), 1);
+    assert_eq!(h.state().document.scene().objects.len(), 1);
     // The last object cannot go: the library's message, the document unchanged.
-    h.state_mut().selected_object = Some(0);
+    h.state_mut().selection.object = Some(0);
     h.run();
     h.get_by_label("Delete").click();
     h.run();
-    assert_eq!(h.state().scene.objects.len(), 1);
-    let message = h.state().message.clone().unwrap_or_default();
+    assert_eq!(h.state().document.scene().objects.len(), 1);
+    let message = h.state().status.message.clone().unwrap_or_default();
     assert!(message.contains("objects"), "{message}");
 }
 
@@ -76,10 +76,10 @@ fn the_knot_style_switches_at_once_and_undoes_in_one_step() {
     let text = r#"{"type": "bspline", "degree": 2, "knots": [0, 0, 0, 1, 2, 2, 2],
         "control_points": [[0, 0], [1, 1], [2, 0], [3, 1]]}"#;
     let mut studio = Studio::new(splinekit_studio::document::parse(text).expect("valid"), None);
-    studio.selected_object = Some(0);
+    studio.selection.object = Some(0);
     let mut h = Harness::new_ui_state(panel(properties_panel), studio);
     h.run();
-    let shape = |s: &Studio| s.scene.objects[0].to_value()["shape"].clone();
+    let shape = |s: &Studio| s.document.scene().objects[0].to_value()["shape"].clone();
     h.get_by_label("knots").click();
     h.run();
     h.get_by_label("periodic").click();

@@ -22,11 +22,13 @@ fn studio() -> (Studio, Projector) {
 }
 
 fn points(studio: &Studio) -> Vec<[f64; 2]> {
-    serde_json::from_value(studio.scene.objects[0].to_value()["shape"]["control_points"].clone()).expect("points")
+    serde_json::from_value(studio.document.scene().objects[0].to_value()["shape"]["control_points"].clone())
+        .expect("points")
 }
 
 fn px(projector: &Projector, studio: &Studio, i: usize) -> [f64; 2] {
-    let h = studio.handles.iter().find(|h| h.kind == HandleKind::ControlPoint(i, "control_points")).expect("shown");
+    let h =
+        studio.view.handles.iter().find(|h| h.kind == HandleKind::ControlPoint(i, "control_points")).expect("shown");
     projector.project(h.position).expect("in view").0
 }
 
@@ -111,11 +113,11 @@ fn shift_click_adds_and_removes_and_a_selects_all_and_escape_clears() {
     assert_eq!(studio.selection.handles.len(), 2);
     studio.click(pick(&studio, 0), true);
     assert_eq!(studio.selection.handles.len(), 1);
-    assert_eq!(studio.selected.as_ref().map(|h| h.kind), Some(HandleKind::ControlPoint(4, "control_points")));
+    assert_eq!(studio.selection.handle.as_ref().map(|h| h.kind), Some(HandleKind::ControlPoint(4, "control_points")));
     studio.run_action(Action::SelectAll);
     assert_eq!(studio.selection.handles.len(), 5);
     studio.run_action(Action::ClearSelection);
-    assert!(studio.selection.handles.is_empty() && studio.selected.is_none());
+    assert!(studio.selection.handles.is_empty() && studio.selection.handle.is_none());
 }
 
 #[test]
@@ -145,6 +147,6 @@ fn arrow_keys_nudge_by_the_step_and_a_snapped_drag_lands_on_the_grid() {
         assert!((x / 0.5 - (x / 0.5).round()).abs() < 1e-9, "{q:?}");
     }
     assert_ne!(q, before[0]);
-    let shape: Value = studio.scene.objects[0].to_value()["shape"].clone();
+    let shape: Value = studio.document.scene().objects[0].to_value()["shape"].clone();
     assert_eq!(shape["control_points"][1], json!(before[1]), "only the dragged point moved");
 }

@@ -39,10 +39,18 @@ fn dragging_a_cage_vertex_moves_the_limit_and_is_one_undo_step() {
     let mut studio = Studio::new(original.clone(), None);
     let rs: RenderScene = studio.render_scene((600, 600), false).expect("composes");
     let projector = Projector::new(&rs, (600, 600));
-    let h =
-        studio.handles.iter().find(|h| h.kind == HandleKind::ControlPoint(7, "vertices")).expect("vertex 7").clone();
+    let h = studio
+        .view
+        .handles
+        .iter()
+        .find(|h| h.kind == HandleKind::ControlPoint(7, "vertices"))
+        .expect("vertex 7")
+        .clone();
     assert_eq!(h.position, [1.0, 1.0, 1.0]);
-    assert_eq!(studio.handles.iter().filter(|h| matches!(h.kind, HandleKind::ControlPoint(_, "vertices"))).count(), 8);
+    assert_eq!(
+        studio.view.handles.iter().filter(|h| matches!(h.kind, HandleKind::ControlPoint(_, "vertices"))).count(),
+        8
+    );
     let (p, _) = projector.project(h.position).expect("in view");
     assert!(studio.begin_drag(&projector, [p[0], p[1]], GestureKind::Move(None)), "picked");
     for k in 1..=10 {
@@ -50,7 +58,8 @@ fn dragging_a_cage_vertex_moves_the_limit_and_is_one_undo_step() {
     }
     studio.end_drag();
     // The vertex follows the mouse…
-    let ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(d)) = &studio.scene.objects[0].shape else {
+    let ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(d)) = &studio.document.scene().objects[0].shape
+    else {
         panic!("a subdivision surface")
     };
     let moved = Point::<3>::from_column_slice(&d.vertices[7]);
@@ -63,10 +72,10 @@ fn dragging_a_cage_vertex_moves_the_limit_and_is_one_undo_step() {
     assert_eq!(d.vertices[..7], o.vertices[..7]);
     let before = corner_limit(&original);
     assert!((before - Point::<3>::new(0.5, 0.5, 0.5)).norm() < 1e-15);
-    let after = corner_limit(&studio.scene);
+    let after = corner_limit(studio.document.scene());
     assert!((after - before - delta * (9.0 / 24.0)).norm() < 1e-14, "{after} vs {before} + 9/24 {delta}");
     // The next frame draws the moved limit (it composes), and one undo restores the scene.
     studio.render_scene((600, 600), true).expect("composes");
     studio.undo();
-    assert_eq!(studio.scene, original, "the whole drag is one step");
+    assert_eq!(*studio.document.scene(), original, "the whole drag is one step");
 }

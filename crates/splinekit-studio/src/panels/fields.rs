@@ -4,24 +4,24 @@
 
 use serde_json::Value;
 
+use super::context::PanelContext;
 use crate::command::{Command, FieldEdit};
 use crate::edit::Edit;
-use crate::studio::Studio;
 
 /// The value at `pointer` of object `object`'s document.
-pub fn read(studio: &Studio, object: usize, pointer: &str) -> Option<Value> {
-    studio.scene.objects.get(object)?.to_value().pointer(pointer).cloned()
+pub fn read(cx: &PanelContext<'_>, object: usize, pointer: &str) -> Option<Value> {
+    cx.scene.objects.get(object)?.to_value().pointer(pointer).cloned()
 }
 
 /// Asks to set the value at `pointer` (a refusal's message is shown under that field).
-pub fn write(studio: &mut Studio, object: usize, pointer: &str, value: Option<Value>) {
+pub fn write(cx: &mut PanelContext<'_>, object: usize, pointer: &str, value: Option<Value>) {
     let edit = Edit::Set { object, pointer: pointer.into(), value };
-    studio.queue(Command::Edit(FieldEdit::of_field(edit, pointer)));
+    cx.queue(Command::Edit(FieldEdit::of_field(edit, pointer)));
 }
 
 /// The message under a field, when its last change was refused.
-pub fn error_label(ui: &mut egui::Ui, studio: &Studio, pointer: &str) {
-    if let Some((p, m)) = &studio.field_error
+pub fn error_label(ui: &mut egui::Ui, cx: &PanelContext<'_>, pointer: &str) {
+    if let Some((p, m)) = &cx.status.field_error
         && p == pointer
     {
         ui.colored_label(egui::Color32::from_rgb(200, 40, 40), m);
@@ -29,36 +29,36 @@ pub fn error_label(ui: &mut egui::Ui, studio: &Studio, pointer: &str) {
 }
 
 /// A checkbox for a boolean field (missing: `default`).
-pub fn toggle(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointer: &str, label: &str, default: bool) {
-    let mut on = read(studio, object, pointer).and_then(|v| v.as_bool()).unwrap_or(default);
+pub fn toggle(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, pointer: &str, label: &str, default: bool) {
+    let mut on = read(cx, object, pointer).and_then(|v| v.as_bool()).unwrap_or(default);
     if ui.checkbox(&mut on, label).changed() {
-        write(studio, object, pointer, Some(on.into()));
+        write(cx, object, pointer, Some(on.into()));
     }
-    error_label(ui, studio, pointer);
+    error_label(ui, cx, pointer);
 }
 
 /// A whole-number field; the value is applied when it changes.
-pub fn count(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointer: &str, label: &str, default: u64) {
-    let mut n = read(studio, object, pointer).and_then(|v| v.as_u64()).unwrap_or(default);
+pub fn count(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, pointer: &str, label: &str, default: u64) {
+    let mut n = read(cx, object, pointer).and_then(|v| v.as_u64()).unwrap_or(default);
     let changed = ui.horizontal(|ui| {
         let name = ui.label(label);
         ui.add(egui::DragValue::new(&mut n).range(0..=4096).speed(0.1)).labelled_by(name.id).changed()
     });
     if changed.inner {
-        write(studio, object, pointer, Some(n.into()));
+        write(cx, object, pointer, Some(n.into()));
     }
-    error_label(ui, studio, pointer);
+    error_label(ui, cx, pointer);
 }
 
 /// A real-number field.
-pub fn number(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointer: &str, label: &str, default: f64) {
-    let mut x = read(studio, object, pointer).and_then(|v| v.as_f64()).unwrap_or(default);
+pub fn number(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, pointer: &str, label: &str, default: f64) {
+    let mut x = read(cx, object, pointer).and_then(|v| v.as_f64()).unwrap_or(default);
     let changed = ui.horizontal(|ui| {
         let name = ui.label(label);
         ui.add(egui::DragValue::new(&mut x).speed(0.01)).labelled_by(name.id).changed()
     });
     if changed.inner {
-        write(studio, object, pointer, Some(x.into()));
+        write(cx, object, pointer, Some(x.into()));
     }
-    error_label(ui, studio, pointer);
+    error_label(ui, cx, pointer);
 }

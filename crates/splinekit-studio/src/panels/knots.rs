@@ -11,10 +11,10 @@ use splinekit::Interval;
 use splinekit::basis::KnotVector;
 use splinekit_scene::DocumentError;
 
+use super::context::PanelContext;
 use super::fields::{error_label, read};
 use crate::command::{Command, FieldEdit};
 use crate::edit::Edit;
-use crate::studio::Studio;
 
 /// A style of knot vector.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -129,8 +129,8 @@ fn missing(field: &str) -> DocumentError {
 
 /// The knot style chooser of one direction; a choice is applied at once (one edit), a
 /// refused one shows the library's message under it.
-pub fn knot_style(ui: &mut egui::Ui, studio: &mut Studio, object: usize, axis: KnotAxis, label: &str) {
-    let Some(shape) = read(studio, object, "/shape") else { return };
+pub fn knot_style(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, axis: KnotAxis, label: &str) {
+    let Some(shape) = read(cx, object, "/shape") else { return };
     let knots: Vec<f64> =
         shape.get(axis.knots).and_then(|k| serde_json::from_value(k.clone()).ok()).unwrap_or_default();
     let degree = shape.get(axis.degree).and_then(Value::as_u64).unwrap_or(0) as usize;
@@ -145,24 +145,24 @@ pub fn knot_style(ui: &mut egui::Ui, studio: &mut Studio, object: usize, axis: K
                 items.push((format!("{label}: {}", s.name()), super::rect(&item)));
             }
         });
-    studio.widgets.push((label.to_string(), super::rect(&combo.response)));
-    studio.widgets.extend(items);
+    cx.widgets.push((label.to_string(), super::rect(&combo.response)));
+    cx.widgets.extend(items);
     let key = format!("/shape/{}", axis.knots);
     if let Some(style) = chosen.filter(|_| chosen != current) {
         let within = format!("objects[{object}].shape");
         match restyled(&shape, axis, style) {
             Ok(value) => {
                 let edit = Edit::Set { object, pointer: "/shape".into(), value: Some(value) };
-                studio.queue(Command::Edit(FieldEdit::of_field(edit, &key)));
+                cx.queue(Command::Edit(FieldEdit::of_field(edit, &key)));
             }
             Err(e) => {
                 let m = e.within(&within).to_string();
-                studio.message = Some(m.clone());
-                studio.field_error = Some((key.clone(), m));
+                cx.status.message = Some(m.clone());
+                cx.status.field_error = Some((key.clone(), m));
             }
         }
     }
-    error_label(ui, studio, &key);
+    error_label(ui, cx, &key);
 }
 
 #[cfg(test)]

@@ -1,10 +1,12 @@
 //! The egui panels around the 3-D view: the menu bar, Objects, Properties, Animation and
-//! the status line, and the help overlay. Each panel reads the document as JSON and asks
+//! the status line, and the help overlay. Each panel reaches only a [`PanelContext`]: it
+//! reads the document as JSON and asks
 //! for changes only by queuing [`crate::command::Command`]s (edits of the document,
 //! actions of the registry), so every change can be undone and a refused value leaves the
 //! document as it was, its message next to the field.
 
 mod animation;
+mod context;
 mod fields;
 mod help;
 pub mod knots;
@@ -14,6 +16,7 @@ mod plot;
 mod properties;
 
 pub use animation::animation_panel;
+pub use context::PanelContext;
 pub use help::help_overlay;
 pub use menu::{FileFields, menu_bar};
 pub use objects::objects_panel;
@@ -23,7 +26,7 @@ pub use properties::properties_panel;
 pub const SIDE_WIDTH: f32 = 230.0;
 
 /// A widget's rectangle (egui points: left, top, right, bottom), for
-/// [`Studio::widgets`](crate::studio::Studio::widgets).
+/// [`ViewCaches::widgets`](crate::view_caches::ViewCaches::widgets).
 pub(crate) fn rect(response: &egui::Response) -> [f32; 4] {
     let r = response.rect;
     [r.left(), r.top(), r.right(), r.bottom()]

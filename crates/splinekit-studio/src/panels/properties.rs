@@ -11,6 +11,7 @@ use splinekit_scene::bfunctions::{BFunctionDoc, ErbsDoc};
 use splinekit_scene::scenes::ColorMapDoc;
 use splinekit_scene::{Curves, Decoration, DimensionVisitor, ShapeDocument};
 
+use super::context::PanelContext;
 use super::fields::{count, error_label, number, read, toggle, write};
 use super::knots::{CURVE, NET_U, NET_V, knot_style};
 use super::plot::bfunction_plot;
@@ -56,56 +57,61 @@ impl Editors {
 
 /// The Properties panel.
 pub fn properties_panel(ui: &mut egui::Ui, studio: &mut Studio) {
+    properties(ui, &mut PanelContext::of(studio));
+}
+
+/// The Properties panel.
+fn properties(ui: &mut egui::Ui, cx: &mut PanelContext<'_>) {
     ui.set_max_width(super::SIDE_WIDTH - 16.0);
     ui.heading("Properties");
-    let Some(object) = studio.selected_object.filter(|&i| i < studio.scene.objects.len()) else {
+    let Some(object) = cx.selection.object.filter(|&i| i < cx.scene.objects.len()) else {
         ui.label("Select an object or a handle.");
         return;
     };
-    let ty = read(studio, object, "/shape/type").and_then(|v| v.as_str().map(String::from)).unwrap_or_default();
+    let ty = read(cx, object, "/shape/type").and_then(|v| v.as_str().map(String::from)).unwrap_or_default();
     ui.label(format!("objects[{object}]: {ty}"));
     ui.separator();
-    style(ui, studio, object);
-    if matches!(studio.scene.objects[object].shape, ShapeDocument::Surface(_)) {
-        color_map(ui, studio, object);
+    style(ui, cx, object);
+    if matches!(cx.scene.objects[object].shape, ShapeDocument::Surface(_)) {
+        color_map(ui, cx, object);
     }
     ui.separator();
-    match Editors::of(&studio.scene.objects[object].shape) {
+    match Editors::of(&cx.scene.objects[object].shape) {
         Editors::SplineCurve => {
-            count(ui, studio, object, "/shape/degree", "degree", 3);
-            knot_style(ui, studio, object, CURVE, "knots");
-            knot_edits(ui, studio, false);
+            count(ui, cx, object, "/shape/degree", "degree", 3);
+            knot_style(ui, cx, object, CURVE, "knots");
+            knot_edits(ui, cx, false);
         }
-        Editors::BezierCurve => knot_edits(ui, studio, false),
+        Editors::BezierCurve => knot_edits(ui, cx, false),
         Editors::SplineNet => {
-            count(ui, studio, object, "/shape/degree_u", "degree u", 3);
-            count(ui, studio, object, "/shape/degree_v", "degree v", 3);
-            knot_style(ui, studio, object, NET_U, "knots u");
-            knot_style(ui, studio, object, NET_V, "knots v");
-            knot_edits(ui, studio, true);
+            count(ui, cx, object, "/shape/degree_u", "degree u", 3);
+            count(ui, cx, object, "/shape/degree_v", "degree v", 3);
+            knot_style(ui, cx, object, NET_U, "knots u");
+            knot_style(ui, cx, object, NET_V, "knots v");
+            knot_edits(ui, cx, true);
         }
-        Editors::BlendingCurve => blending_curve(ui, studio, object),
-        Editors::BlendingSurface => blending_surface(ui, studio, object),
+        Editors::BlendingCurve => blending_curve(ui, cx, object),
+        Editors::BlendingSurface => blending_surface(ui, cx, object),
         Editors::None => {}
     }
-    selected_handle(ui, studio);
+    selected_handle(ui, cx);
 }
 
 /// The registry's panel actions among `offered` as buttons (an armed tool's shown
 /// selected); a click queues the action.
-fn action_buttons(ui: &mut egui::Ui, studio: &mut Studio, offered: &[Action]) {
+fn action_buttons(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, offered: &[Action]) {
     ui.horizontal_wrapped(|ui| {
         for s in ACTIONS.iter().filter(|s| s.panel && offered.contains(&s.action)) {
             let armed = match s.action {
-                Action::InsertKnot => studio.knot_tool == Some(KnotTool::Insert),
-                Action::RemoveKnot => studio.knot_tool == Some(KnotTool::Remove),
-                Action::InsertLocal => studio.knot_tool == Some(KnotTool::InsertLocal),
+                Action::InsertKnot => cx.knot_tool == Some(KnotTool::Insert),
+                Action::RemoveKnot => cx.knot_tool == Some(KnotTool::Remove),
+                Action::InsertLocal => cx.knot_tool == Some(KnotTool::InsertLocal),
                 _ => false,
             };
             let button = ui.add(egui::Button::new(s.label).selected(armed)).on_hover_text(s.help);
-            studio.widgets.push((s.label.to_lowercase(), super::rect(&button)));
+            cx.widgets.push((s.label.to_lowercase(), super::rect(&button)));
             if button.clicked() {
-                studio.queue(Command::Action(s.action));
+                cx.queue(Command::Action(s.action));
             }
         }
     });
@@ -114,24 +120,24 @@ fn action_buttons(ui: &mut egui::Ui, studio: &mut Studio, offered: &[Action]) {
 /// The knot edits (insert and remove a knot, elevate the degree) as buttons, and the
 /// tolerance of a removal; on a spline `surface` only knot insertion (a click inserts a
 /// u-knot, Shift + click a v-knot).
-fn knot_edits(ui: &mut egui::Ui, studio: &mut Studio, surface: bool) {
+fn knot_edits(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, surface: bool) {
     let offered: &[Action] =
         if surface { &[Action::InsertKnot] } else { &[Action::InsertKnot, Action::RemoveKnot, Action::ElevateDegree] };
-    action_buttons(ui, studio, offered);
+    action_buttons(ui, cx, offered);
     if surface {
         ui.label("Insert knot, then click: a u-knot (Shift + click: a v-knot)");
         return;
     }
     ui.horizontal(|ui| {
         let name = ui.label("removal tolerance");
-        ui.add(egui::DragValue::new(&mut studio.knot_tolerance).range(0.0..=1e6).speed(1e-4).max_decimals(6))
+        ui.add(egui::DragValue::new(cx.knot_tolerance).range(0.0..=1e6).speed(1e-4).max_decimals(6))
             .labelled_by(name.id);
     });
 }
 
 /// The colour map of a surface: none, curvature, parameter, zebra stripes or isophotes.
-fn color_map(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
-    let current = studio.scene.objects[object].style.color_map;
+fn color_map(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
+    let current = cx.scene.objects[object].style.color_map;
     let mut chosen = current;
     let combo = egui::ComboBox::from_label("colour map")
         .selected_text(current.map_or("none", ColorMapDoc::name))
@@ -141,79 +147,86 @@ fn color_map(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
                 ui.selectable_value(&mut chosen, Some(m), m.name());
             }
         });
-    studio.widgets.push(("colour map".into(), super::rect(&combo.response)));
+    cx.widgets.push(("colour map".into(), super::rect(&combo.response)));
     if chosen != current {
-        write(studio, object, "/color_map", chosen.map(|m| m.name().into()));
+        write(cx, object, "/color_map", chosen.map(|m| m.name().into()));
     }
-    error_label(ui, studio, "/color_map");
+    error_label(ui, cx, "/color_map");
 }
 
-fn style(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
-    toggle(ui, studio, object, "/hidden", "hide the shape", false);
-    toggle(ui, studio, object, "/control_net", "control polygon / net", false);
-    toggle(ui, studio, object, "/local_pieces", "local curves / patches", false);
-    toggle(ui, studio, object, "/wireframe", "parameter lines", false);
-    toggle(ui, studio, object, "/color_cycle", "colour cycling (animation)", false);
-    let density = read(studio, object, "/density").and_then(|v| v.as_u64());
+fn style(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
+    toggle(ui, cx, object, "/hidden", "hide the shape", false);
+    toggle(ui, cx, object, "/control_net", "control polygon / net", false);
+    toggle(ui, cx, object, "/local_pieces", "local curves / patches", false);
+    toggle(ui, cx, object, "/wireframe", "parameter lines", false);
+    toggle(ui, cx, object, "/color_cycle", "colour cycling (animation)", false);
+    let density = read(cx, object, "/density").and_then(|v| v.as_u64());
     let mut adaptive = density.is_none();
     if ui.checkbox(&mut adaptive, "adaptive sampling").changed() {
-        write(studio, object, "/density", if adaptive { None } else { Some(64.into()) });
+        write(cx, object, "/density", if adaptive { None } else { Some(64.into()) });
     }
     if !adaptive {
-        count(ui, studio, object, "/density", "density", 64);
+        count(ui, cx, object, "/density", "density", 64);
     }
-    number(ui, studio, object, "/line_width", "line width", 2.5);
+    number(ui, cx, object, "/line_width", "line width", 2.5);
 }
 
-fn blending_curve(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
-    if read(studio, object, "/shape/model").is_some() {
-        local_count(ui, studio, object, ["/shape/local_curves", "/shape/knots"], "local curves", 10);
-        local_kind(ui, studio, object, false);
-        action_buttons(ui, studio, &[Action::InsertLocal]);
+fn blending_curve(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
+    if read(cx, object, "/shape/model").is_some() {
+        local_count(ui, cx, object, ["/shape/local_curves", "/shape/knots"], "local curves", 10);
+        local_kind(ui, cx, object, false);
+        action_buttons(ui, cx, &[Action::InsertLocal]);
         ui.label("Insert local piece, then click on the curve: a local curve there");
     }
-    let closed = is_closed(studio, object);
-    toggle(ui, studio, object, "/shape/closed", "closed", closed);
-    bfunction(ui, studio, object);
+    let closed = is_closed(cx, object);
+    toggle(ui, cx, object, "/shape/closed", "closed", closed);
+    bfunction(ui, cx, object);
 }
 
-fn blending_surface(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
-    local_count(ui, studio, object, ["/shape/local_surfaces/0", "/shape/knots_u"], "patches in u", 4);
-    local_count(ui, studio, object, ["/shape/local_surfaces/1", "/shape/knots_v"], "patches in v", 4);
-    action_buttons(ui, studio, &[Action::InsertLocal]);
+fn blending_surface(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
+    local_count(ui, cx, object, ["/shape/local_surfaces/0", "/shape/knots_u"], "patches in u", 4);
+    local_count(ui, cx, object, ["/shape/local_surfaces/1", "/shape/knots_v"], "patches in v", 4);
+    action_buttons(ui, cx, &[Action::InsertLocal]);
     ui.label("Insert local piece, then click: a row of patches along u (Shift + click: along v)");
-    local_kind(ui, studio, object, true);
-    toggle(ui, studio, object, "/shape/closed_u", "closed in u", true);
-    toggle(ui, studio, object, "/shape/closed_v", "closed in v", true);
-    bfunction(ui, studio, object);
+    local_kind(ui, cx, object, true);
+    toggle(ui, cx, object, "/shape/closed_u", "closed in u", true);
+    toggle(ui, cx, object, "/shape/closed_v", "closed in v", true);
+    bfunction(ui, cx, object);
 }
 
 /// The number of local pieces in one direction: an editable count over even knots; once
 /// a local was inserted the knots are explicit (`knots`), the count follows them, and a
 /// button takes them back to even spacing (one edit; the count stays).
 /// `pointers` are the count's and the knots'.
-fn local_count(ui: &mut egui::Ui, studio: &mut Studio, object: usize, pointers: [&str; 2], label: &str, default: u64) {
+fn local_count(
+    ui: &mut egui::Ui,
+    cx: &mut PanelContext<'_>,
+    object: usize,
+    pointers: [&str; 2],
+    label: &str,
+    default: u64,
+) {
     let [pointer, knots] = pointers;
-    if read(studio, object, knots).is_none() {
-        count(ui, studio, object, pointer, label, default);
+    if read(cx, object, knots).is_none() {
+        count(ui, cx, object, pointer, label, default);
         return;
     }
-    let n = read(studio, object, pointer).and_then(|v| v.as_u64()).unwrap_or(0);
+    let n = read(cx, object, pointer).and_then(|v| v.as_u64()).unwrap_or(0);
     ui.horizontal(|ui| {
         ui.label(format!("{label}: {n} (knots as inserted)"));
         let button = ui.button("even knots").on_hover_text("space the knots evenly again (the count can then change)");
-        studio.widgets.push((format!("even knots {label}"), super::rect(&button)));
+        cx.widgets.push((format!("even knots {label}"), super::rect(&button)));
         if button.clicked() {
-            write(studio, object, knots, None);
+            write(cx, object, knots, None);
         }
     });
-    error_label(ui, studio, knots);
+    error_label(ui, cx, knots);
 }
 
 /// The kind of locals made from the model (Bézier of a degree, the model itself, arcs for
 /// curves) and, for curves with knots not given explicitly, the knot spacing.
-fn local_kind(ui: &mut egui::Ui, studio: &mut Studio, object: usize, surface: bool) {
-    let local = read(studio, object, "/shape/local").unwrap_or_else(|| json!({"type": "bezier"}));
+fn local_kind(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, surface: bool) {
+    let local = read(cx, object, "/shape/local").unwrap_or_else(|| json!({"type": "bezier"}));
     let kind = local.get("type").and_then(Value::as_str).unwrap_or("bezier").to_string();
     let kinds: &[&str] = if surface { &["bezier", "sub_surface"] } else { &["bezier", "sub_curve", "arc"] };
     let mut chosen = kind.clone();
@@ -223,15 +236,15 @@ fn local_kind(ui: &mut egui::Ui, studio: &mut Studio, object: usize, surface: bo
         }
     });
     if chosen != kind {
-        write(studio, object, "/shape/local", Some(json!({"type": chosen})));
+        write(cx, object, "/shape/local", Some(json!({"type": chosen})));
     }
-    error_label(ui, studio, "/shape/local");
+    error_label(ui, cx, "/shape/local");
     if kind == "bezier" {
-        bezier_degree(ui, studio, object, &local, surface);
+        bezier_degree(ui, cx, object, &local, surface);
     }
     // Explicit knots (after an insertion) say where the locals are: no spacing to choose.
-    if !surface && read(studio, object, "/shape/knots").is_none() {
-        let spacing = read(studio, object, "/shape/knot_spacing").and_then(|v| v.as_str().map(String::from));
+    if !surface && read(cx, object, "/shape/knots").is_none() {
+        let spacing = read(cx, object, "/shape/knot_spacing").and_then(|v| v.as_str().map(String::from));
         let current = spacing.unwrap_or_else(|| "uniform".into());
         let mut chosen = current.clone();
         egui::ComboBox::from_label("knots").selected_text(&chosen).show_ui(ui, |ui| {
@@ -240,14 +253,14 @@ fn local_kind(ui: &mut egui::Ui, studio: &mut Studio, object: usize, surface: bo
             }
         });
         if chosen != current {
-            write(studio, object, "/shape/knot_spacing", Some(chosen.into()));
+            write(cx, object, "/shape/knot_spacing", Some(chosen.into()));
         }
-        error_label(ui, studio, "/shape/knot_spacing");
+        error_label(ui, cx, "/shape/knot_spacing");
     }
 }
 
 /// Whether the object's curve is closed as built (the default of `closed`: the model's).
-fn is_closed(studio: &Studio, object: usize) -> bool {
+fn is_closed(cx: &PanelContext<'_>, object: usize) -> bool {
     struct Closed;
     impl DimensionVisitor<Curves> for Closed {
         type Output = bool;
@@ -255,7 +268,7 @@ fn is_closed(studio: &Studio, object: usize) -> bool {
             c.is_closed()
         }
     }
-    match &studio.scene.objects[object].shape {
+    match &cx.scene.objects[object].shape {
         ShapeDocument::Curve(c) => c.build().is_ok_and(|c| c.visit(Closed)),
         ShapeDocument::Surface(_) => false,
     }
@@ -263,7 +276,7 @@ fn is_closed(studio: &Studio, object: usize) -> bool {
 
 /// The degree of Bézier locals (d, or [d_u, d_v] for patches), written as the whole
 /// `local` object so that a document without one gets `"type": "bezier"` too.
-fn bezier_degree(ui: &mut egui::Ui, studio: &mut Studio, object: usize, local: &Value, surface: bool) {
+fn bezier_degree(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, local: &Value, surface: bool) {
     let degree = local.get("degree");
     let mut d: Vec<u64> = if surface {
         degree.and_then(|d| serde_json::from_value(d.clone()).ok()).unwrap_or_else(|| vec![3, 3])
@@ -279,13 +292,13 @@ fn bezier_degree(ui: &mut egui::Ui, studio: &mut Studio, object: usize, local: &
     });
     if changed {
         let degree = if surface { json!(d) } else { json!(d[0]) };
-        write(studio, object, "/shape/local", Some(json!({"type": "bezier", "degree": degree})));
+        write(cx, object, "/shape/local", Some(json!({"type": "bezier", "degree": degree})));
     }
 }
 
 /// The B-function kind, its parameters and the plot.
-fn bfunction(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
-    let value = read(studio, object, "/shape/bfunction").unwrap_or_else(|| json!({"type": "erbs"}));
+fn bfunction(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
+    let value = read(cx, object, "/shape/bfunction").unwrap_or_else(|| json!({"type": "erbs"}));
     let kind = value.get("type").and_then(Value::as_str).unwrap_or("erbs").to_string();
     let mut chosen = kind.clone();
     egui::ComboBox::from_label("B-function").selected_text(&chosen).show_ui(ui, |ui| {
@@ -294,21 +307,21 @@ fn bfunction(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
         }
     });
     if chosen != kind {
-        write(studio, object, "/shape/bfunction", Some(json!({"type": chosen})));
+        write(cx, object, "/shape/bfunction", Some(json!({"type": chosen})));
     }
-    error_label(ui, studio, "/shape/bfunction");
+    error_label(ui, cx, "/shape/bfunction");
     // ERBS's parameters with the document's defaults (α, β, γ, λ).
     let params = match kind.as_str() {
         "erbs" => json!(ErbsDoc::default()).as_object().cloned().unwrap_or_default(),
         _ => serde_json::Map::new(),
     };
     for (name, default) in &params {
-        number(ui, studio, object, &format!("/shape/bfunction/{name}"), name, default.as_f64().unwrap_or(0.0));
+        number(ui, cx, object, &format!("/shape/bfunction/{name}"), name, default.as_f64().unwrap_or(0.0));
     }
     if kind == "polynomial" {
-        count(ui, studio, object, "/shape/bfunction/smoothness", "smoothness", 1);
+        count(ui, cx, object, "/shape/bfunction/smoothness", "smoothness", 1);
     }
-    if let Some(b) = read(studio, object, "/shape/bfunction")
+    if let Some(b) = read(cx, object, "/shape/bfunction")
         .or_else(|| Some(json!({"type": "erbs"})))
         .and_then(|v| BFunctionDoc::from_value(v).ok())
         .and_then(|d| d.build().ok())
@@ -320,19 +333,19 @@ fn bfunction(ui: &mut egui::Ui, studio: &mut Studio, object: usize) {
 
 /// The selected handle's value for exact entry (translation of a local piece, or the
 /// coordinates of a control point and, of NURBS and rational Béziers, its weight).
-fn selected_handle(ui: &mut egui::Ui, studio: &mut Studio) {
-    let Some(h) = studio.selected.clone() else { return };
+fn selected_handle(ui: &mut egui::Ui, cx: &mut PanelContext<'_>) {
+    let Some(h) = cx.selection.handle.clone() else { return };
     ui.separator();
     ui.label(format!("selected: {}", h.kind.field()));
     let pointer = h.kind.pointer();
     if let Some(path) = h.kind.point_path() {
-        local_point(ui, studio, &h, &path, &pointer);
+        local_point(ui, cx, &h, &path, &pointer);
         return;
     }
     let coords = if h.kind.is_local() { format!("{pointer}/translate") } else { pointer.clone() };
     let n = h.dimension;
     let mut values: Vec<f64> =
-        read(studio, h.object, &coords).and_then(|v| serde_json::from_value(v).ok()).unwrap_or_else(|| vec![0.0; n]);
+        read(cx, h.object, &coords).and_then(|v| serde_json::from_value(v).ok()).unwrap_or_else(|| vec![0.0; n]);
     let mut changed = false;
     let name = ui.label(if h.kind.is_local() { "translate" } else { "point" });
     ui.horizontal_wrapped(|ui| {
@@ -341,18 +354,26 @@ fn selected_handle(ui: &mut egui::Ui, studio: &mut Studio) {
         }
     });
     if changed {
-        write(studio, h.object, &coords, Some(values.into()));
+        write(cx, h.object, &coords, Some(values.into()));
     }
-    error_label(ui, studio, &coords);
-    if let Some((pointer, w)) = crate::gesture::weight_of(&studio.scene, &h) {
-        number(ui, studio, h.object, &pointer, "weight", w);
+    error_label(ui, cx, &coords);
+    if let Some((pointer, w)) = crate::gesture::weight_of(cx.scene, &h) {
+        number(ui, cx, h.object, &pointer, "weight", w);
     }
 }
 
 /// The rest-frame coordinates of a local Bézier's control point for exact entry: a change
 /// writes the local's whole `local_control_points` entry (the other points as they are).
-fn local_point(ui: &mut egui::Ui, studio: &mut Studio, h: &crate::handles::Handle, path: &[usize], pointer: &str) {
-    let Some((mut rest, _)) = crate::handles::local_points_of(&studio.scene, h, studio.time()) else { return };
+fn local_point(
+    ui: &mut egui::Ui,
+    cx: &mut PanelContext<'_>,
+    h: &crate::handles::Handle,
+    path: &[usize],
+    pointer: &str,
+) {
+    let Some((mut rest, _)) = crate::handles::local_points_of(cx.scene, h, cx.time) else {
+        return;
+    };
     let Some(point) = path.iter().try_fold(&mut rest, |v, &i| v.get_mut(i)) else { return };
     let mut values: Vec<f64> = serde_json::from_value(point.clone()).unwrap_or_default();
     let name = ui.label("point (in the local's rest frame)");
@@ -364,7 +385,7 @@ fn local_point(ui: &mut egui::Ui, studio: &mut Studio, h: &crate::handles::Handl
     });
     if changed {
         *point = values.into();
-        write(studio, h.object, pointer, Some(rest));
+        write(cx, h.object, pointer, Some(rest));
     }
-    error_label(ui, studio, pointer);
+    error_label(ui, cx, pointer);
 }
