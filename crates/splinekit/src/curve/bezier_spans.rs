@@ -278,7 +278,9 @@ impl<const D: usize> BezierSpans<Point<D>> {
         locate: impl Fn(usize, f64) -> usize,
     ) {
         let mut at = SpanCursor::<W, Point<D>>::first(self);
-        let last_span = self.first_span + self.frames.len() - 1;
+        // The last span that is not empty: the end of the domain belongs to it (the spans
+        // of knots repeated at the end are empty and never evaluated, nor moved into).
+        let last_span = self.first_span + self.frames.iter().rposition(|f| f.0 < f.1).unwrap_or(self.frames.len() - 1);
         let one = |at: &mut SpanCursor<W, Point<D>>, t: f64, o: &mut [Point<D>]| {
             let t = map(t);
             let (b, start, inv_h) = match at.find(self, t, &locate) {
