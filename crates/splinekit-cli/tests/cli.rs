@@ -25,6 +25,34 @@ fn assert_bad(args: &[&str], stdin: &str, must_contain: &str) {
     assert!(o.stderr.contains(must_contain), "{args:?} with {stdin:?}: {:?} lacks {must_contain:?}", o.stderr);
 }
 
+/// A fresh folder `splinekit-NAME-PID` in the system's temporary folder.
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("splinekit-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Writes `text` to the file `name` in `dir`, returning its path.
+fn write_in(dir: &std::path::Path, name: &str, text: &str) -> String {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p.to_str().unwrap().to_string()
+}
+
+/// [`assert_bad`] for each (input, expected text) of a table, all with the same arguments.
+fn assert_all_bad(args: &[&str], cases: &[(&str, &str)]) {
+    for (stdin, must_contain) in cases {
+        assert_bad(args, stdin, must_contain);
+    }
+}
+
+/// [`assert_bad`] for each (arguments, input, expected text) of a table.
+fn assert_each_bad(cases: &[(&[&str], &str, &str)]) {
+    for (args, stdin, must_contain) in cases {
+        assert_bad(args, stdin, must_contain);
+    }
+}
+
 #[test]
 fn eval_prints_params_points_and_derivatives() {
     let doc = r#"{"type":"bezier","control_points":[[0,0],[1,2],[2,0]]}"#;
@@ -160,8 +188,7 @@ fn interpolate_refine_and_subdivide() {
 
 #[test]
 fn output_to_a_file() {
-    let dir = std::env::temp_dir().join(format!("splinekit-cli-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = temp_dir("cli-test");
     let path = dir.join("out.json");
     let o =
         run(&["eval", "-", "--at", "0.5", "-o", path.to_str().unwrap()], r#"{"type":"line","from":[0,0],"to":[2,4]}"#);
@@ -208,51 +235,47 @@ fn bad_input_gives_exit_2_and_one_line_naming_the_field() {
         (r#"{"type":"bezier","control_points":[[1,2,3,4,5],[1,2,3,4,5]]}"#, "dimension 5"),
         ("[[0,0]]", "expected a JSON object"),
     ];
-    for (doc, msg) in cases {
-        assert_bad(&eval, doc, msg);
-    }
+    assert_all_bad(&eval, cases);
     let circle = r#"{"type":"circle"}"#;
-    assert_bad(&["eval", "-", "--samples", "1000000000"], circle, "--samples: 1000000000 is more than the limit");
-    assert_bad(&["eval", "-", "--at", "abc"], circle, "--at: 'abc' is not a number");
-    assert_bad(&["eval", "-", "--at", "nan"], circle, "--at");
-    assert_bad(&["eval", "-", "--at", "2"], r#"{"type":"line","from":[0],"to":[1]}"#, "outside the domain");
-    assert_bad(&["eval", "-", "--samples", "3", "--derivatives", "100000"], circle, "--derivatives");
-    assert_bad(&["eval", "-", "--samples", "-3"], circle, "--samples");
-    assert_bad(&["eval", "missing.json", "--at", "0"], circle, "cannot read 'missing.json'");
-    assert_bad(&["eval", "-"], circle, "--at");
-    assert_bad(&["frobnicate"], "", "frobnicate");
-    assert_bad(
-        &["fit", "-", "--degree", "3", "--control-points", "10"],
-        "0,0\n1,1\n2,0\n",
-        "--control-points: 10 control points need at least 10 data points, got 3",
-    );
-    assert_bad(&["fit", "-", "--degree", "100000", "--control-points", "10"], "0,0\n1,1\n", "--degree");
-    assert_bad(&["fit", "-", "--degree", "3", "--control-points", "4"], "0,0\n1,x\n", "line 2: 'x' is not a number");
-    assert_bad(
-        &["fit", "-", "--degree", "3", "--control-points", "4"],
-        "[[0,0],[1]]",
-        "points[1]: expected 2 coordinates",
-    );
-    assert_bad(&["fit", "-", "--degree", "3", "--control-points", "4"], "", "no points");
-    assert_bad(&["fit", "-", "--degree", "2", "--control-points", "3"], "0,0\n0,0\n0,0\n1,1\n", "coincide");
-    assert_bad(&["interpolate", "-", "--degree", "3"], "0,0\n1,1\n", "at least 4 points");
-    assert_bad(&["refine", "-", "--insert", "0.5"], circle, "refine works on");
-    assert_bad(
-        &["refine", "-", "--insert", "7"],
-        r#"{"type":"bezier","control_points":[[0,0],[1,1],[2,0]]}"#,
-        "outside the domain",
-    );
-    assert_bad(&["refine", "-"], r#"{"type":"bezier","control_points":[[0,0],[1,1]]}"#, "--insert");
-    assert_bad(
-        &["subdivide", "-", "--scheme", "lane_riesenfeld", "--steps", "60", "--closed"],
-        "[[0,0],[1,0],[1,1]]",
-        "--steps",
-    );
-    assert_bad(
-        &["subdivide", "-", "--scheme", "chaikin", "--degree", "3", "--steps", "1"],
-        "[[0,0],[1,0],[1,1]]",
-        "--degree",
-    );
+    assert_each_bad(&[
+        (&["eval", "-", "--samples", "1000000000"], circle, "--samples: 1000000000 is more than the limit"),
+        (&["eval", "-", "--at", "abc"], circle, "--at: 'abc' is not a number"),
+        (&["eval", "-", "--at", "nan"], circle, "--at"),
+        (&["eval", "-", "--at", "2"], r#"{"type":"line","from":[0],"to":[1]}"#, "outside the domain"),
+        (&["eval", "-", "--samples", "3", "--derivatives", "100000"], circle, "--derivatives"),
+        (&["eval", "-", "--samples", "-3"], circle, "--samples"),
+        (&["eval", "missing.json", "--at", "0"], circle, "cannot read 'missing.json'"),
+        (&["eval", "-"], circle, "--at"),
+        (&["frobnicate"], "", "frobnicate"),
+        (
+            &["fit", "-", "--degree", "3", "--control-points", "10"],
+            "0,0\n1,1\n2,0\n",
+            "--control-points: 10 control points need at least 10 data points, got 3",
+        ),
+        (&["fit", "-", "--degree", "100000", "--control-points", "10"], "0,0\n1,1\n", "--degree"),
+        (&["fit", "-", "--degree", "3", "--control-points", "4"], "0,0\n1,x\n", "line 2: 'x' is not a number"),
+        (&["fit", "-", "--degree", "3", "--control-points", "4"], "[[0,0],[1]]", "points[1]: expected 2 coordinates"),
+        (&["fit", "-", "--degree", "3", "--control-points", "4"], "", "no points"),
+        (&["fit", "-", "--degree", "2", "--control-points", "3"], "0,0\n0,0\n0,0\n1,1\n", "coincide"),
+        (&["interpolate", "-", "--degree", "3"], "0,0\n1,1\n", "at least 4 points"),
+        (&["refine", "-", "--insert", "0.5"], circle, "refine works on"),
+        (
+            &["refine", "-", "--insert", "7"],
+            r#"{"type":"bezier","control_points":[[0,0],[1,1],[2,0]]}"#,
+            "outside the domain",
+        ),
+        (&["refine", "-"], r#"{"type":"bezier","control_points":[[0,0],[1,1]]}"#, "--insert"),
+        (
+            &["subdivide", "-", "--scheme", "lane_riesenfeld", "--steps", "60", "--closed"],
+            "[[0,0],[1,0],[1,1]]",
+            "--steps",
+        ),
+        (
+            &["subdivide", "-", "--scheme", "chaikin", "--degree", "3", "--steps", "1"],
+            "[[0,0],[1,0],[1,1]]",
+            "--degree",
+        ),
+    ]);
 }
 
 #[test]
@@ -280,12 +303,6 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
         count += 1;
     }
     assert!(count >= 19, "only {count} examples found");
-}
-
-fn temp_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("splinekit-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 #[test]
@@ -416,14 +433,16 @@ fn tessellate_writes_surface_meshes_and_render_and_animate_write_pictures() {
     let img = splinekit_render::Image::from_png(&std::fs::read(&png).unwrap()).unwrap();
     assert_eq!((img.width, img.height), (160, 120));
     assert!(img.coverage() > 0.2);
-    assert_bad(&["render", "-", "-o", png.to_str().unwrap(), "--size", "0x5"], torus, "--size");
-    assert_bad(&["render", "-", "-o", dir.join("x.jpg").to_str().unwrap()], torus, "-o");
-    assert_bad(&["render", "-", "-o", png.to_str().unwrap()], r#"{"type":"scene","objects":[]}"#, "objects");
-    assert_bad(
-        &["render", "-", "-o", png.to_str().unwrap()],
-        r#"{"type":"scene","objects":[{"shape":{"type":"torus"},"colour":[1,0,0]}]}"#,
-        "colour",
-    );
+    assert_each_bad(&[
+        (&["render", "-", "-o", png.to_str().unwrap(), "--size", "0x5"], torus, "--size"),
+        (&["render", "-", "-o", dir.join("x.jpg").to_str().unwrap()], torus, "-o"),
+        (&["render", "-", "-o", png.to_str().unwrap()], r#"{"type":"scene","objects":[]}"#, "objects"),
+        (
+            &["render", "-", "-o", png.to_str().unwrap()],
+            r#"{"type":"scene","objects":[{"shape":{"type":"torus"},"colour":[1,0,0]}]}"#,
+            "colour",
+        ),
+    ]);
 
     let heart =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/shapes/beating_heart.json"))
@@ -484,38 +503,36 @@ fn eval_surfaces_prints_partials_and_unit_normals() {
 #[test]
 fn bad_surface_input_names_the_field() {
     let at = ["eval", "-", "--at", "0.5:0.5"];
-    assert_bad(
-        &at,
-        r#"{"type":"bspline_surface","degree_u":1,"degree_v":1,"knots_u":[0,0,1,1],"knots_v":[0,0,1],"control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]]}"#,
-        "knots_v: expected 4 values",
-    );
-    assert_bad(&at, r#"{"type":"bezier_surface","control_points":[[[0,0,0],[0,1,0]],[[1,0,0]]]}"#, "control_points[1]");
-    assert_bad(
-        &at,
-        r#"{"type":"bezier_surface","control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1]]]}"#,
-        "control_points[1]",
-    );
-    assert_bad(&at, r#"{"type":"bezier_surface","control_points":[]}"#, "control_points");
-    assert_bad(
-        &at,
-        r#"{"type":"nurbs_surface","degree_u":1,"degree_v":1,"knots_u":[0,0,1,1],"knots_v":[0,0,1,1],"control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"weights":[[1,1],[1,0]]}"#,
-        "weights[1]",
-    );
-    assert_bad(
-        &at,
-        r#"{"type":"nurbs_surface","degree_u":1,"degree_v":1,"knots_u":[0,0,1,1],"knots_v":[0,0,1,1],"control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"weights":[[1,1]]}"#,
-        "weights",
-    );
-    assert_bad(&at, r#"{"type":"torus","minor_radius":-1}"#, "minor_radius");
-    assert_bad(&at, r#"{"type":"sphere","colour":"red"}"#, "unknown field `colour`");
-    assert_bad(&["eval", "-", "--at", "0.5"], r#"{"type":"sphere"}"#, "U:V");
-    assert_bad(&["eval", "-", "--at", "0:9"], r#"{"type":"sphere"}"#, "outside the domain");
-    assert_bad(&["eval", "-", "--grid", "100000,100000"], r#"{"type":"sphere"}"#, "--grid");
-    assert_bad(&["eval", "-", "--grid", "0,3"], r#"{"type":"sphere"}"#, "--grid");
-    assert_bad(&["eval", "-", "--samples", "3"], r#"{"type":"sphere"}"#, "--samples");
-    assert_bad(&["eval", "-", "--grid", "3,3"], r#"{"type":"circle"}"#, "--grid");
-    assert_bad(&["eval", "-", "--at", "0.5:0.5"], r#"{"type":"circle"}"#, "--at");
-    assert_bad(&["refine", "-", "--elevate", "1"], r#"{"type":"sphere"}"#, "refine");
+    assert_each_bad(&[
+        (
+            &at,
+            r#"{"type":"bspline_surface","degree_u":1,"degree_v":1,"knots_u":[0,0,1,1],"knots_v":[0,0,1],"control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]]}"#,
+            "knots_v: expected 4 values",
+        ),
+        (&at, r#"{"type":"bezier_surface","control_points":[[[0,0,0],[0,1,0]],[[1,0,0]]]}"#, "control_points[1]"),
+        (&at, r#"{"type":"bezier_surface","control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1]]]}"#, "control_points[1]"),
+        (&at, r#"{"type":"bezier_surface","control_points":[]}"#, "control_points"),
+        (
+            &at,
+            r#"{"type":"nurbs_surface","degree_u":1,"degree_v":1,"knots_u":[0,0,1,1],"knots_v":[0,0,1,1],"control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"weights":[[1,1],[1,0]]}"#,
+            "weights[1]",
+        ),
+        (
+            &at,
+            r#"{"type":"nurbs_surface","degree_u":1,"degree_v":1,"knots_u":[0,0,1,1],"knots_v":[0,0,1,1],"control_points":[[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]],"weights":[[1,1]]}"#,
+            "weights",
+        ),
+        (&at, r#"{"type":"torus","minor_radius":-1}"#, "minor_radius"),
+        (&at, r#"{"type":"sphere","colour":"red"}"#, "unknown field `colour`"),
+        (&["eval", "-", "--at", "0.5"], r#"{"type":"sphere"}"#, "U:V"),
+        (&["eval", "-", "--at", "0:9"], r#"{"type":"sphere"}"#, "outside the domain"),
+        (&["eval", "-", "--grid", "100000,100000"], r#"{"type":"sphere"}"#, "--grid"),
+        (&["eval", "-", "--grid", "0,3"], r#"{"type":"sphere"}"#, "--grid"),
+        (&["eval", "-", "--samples", "3"], r#"{"type":"sphere"}"#, "--samples"),
+        (&["eval", "-", "--grid", "3,3"], r#"{"type":"circle"}"#, "--grid"),
+        (&["eval", "-", "--at", "0.5:0.5"], r#"{"type":"circle"}"#, "--at"),
+        (&["refine", "-", "--elevate", "1"], r#"{"type":"sphere"}"#, "refine"),
+    ]);
 }
 
 #[test]
@@ -530,35 +547,25 @@ fn derived_surface_documents() {
     let ruled = r#"{"type":"ruled","first":{"type":"line","from":[0,0],"to":[2,0]},"second":{"type":"line","from":[0,1],"to":[2,3]}}"#;
     let v = ok_json(&["eval", "-", "--at", "0.5:0.5"], ruled);
     assert_eq!(v["points"][0], json!([1.0, 1.0]));
-    assert_bad(
+    assert_all_bad(
         &["eval", "-", "--at", "0:0"],
-        r#"{"type":"revolution","curve":{"type":"bezier","control_points":[[0,0],[1,1]]}}"#,
-        "curve",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0:0"],
-        r#"{"type":"revolution","curve":{"type":"line","from":[1,0,0],"to":[1,0,2]},"axis":[0,0,0]}"#,
-        "axis",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0:0"],
-        r#"{"type":"extrusion","curve":{"type":"circle"},"direction":[0,1]}"#,
-        "direction",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0:0"],
-        r#"{"type":"ruled","first":{"type":"circle"},"second":{"type":"nope"}}"#,
-        "second.type: unknown curve type",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0:0"],
-        r#"{"type":"coons","bottom":{"type":"line","from":[0,0,0],"to":[1,0,0]},"top":{"type":"line","from":[0,1,0],"to":[1,1,0]},"left":{"type":"line","from":[0,0,0],"to":[0,1,0]},"right":{"type":"line","from":[1,0.5,0],"to":[1,1,0]}}"#,
-        "corners",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0:0"],
-        r#"{"type":"coons","bottom":{"type":"line","from":[0,0,0],"to":[1,0,0]},"top":{"type":"line","from":[0,1,0],"to":[1,1,0]},"left":{"type":"line","from":[0,0,0],"to":[0,1,0]},"right":{"type":"line","from":[1,0,0],"to":[1,1,0]},"blend":"quintic"}"#,
-        "blend",
+        &[
+            (r#"{"type":"revolution","curve":{"type":"bezier","control_points":[[0,0],[1,1]]}}"#, "curve"),
+            (r#"{"type":"revolution","curve":{"type":"line","from":[1,0,0],"to":[1,0,2]},"axis":[0,0,0]}"#, "axis"),
+            (r#"{"type":"extrusion","curve":{"type":"circle"},"direction":[0,1]}"#, "direction"),
+            (
+                r#"{"type":"ruled","first":{"type":"circle"},"second":{"type":"nope"}}"#,
+                "second.type: unknown curve type",
+            ),
+            (
+                r#"{"type":"coons","bottom":{"type":"line","from":[0,0,0],"to":[1,0,0]},"top":{"type":"line","from":[0,1,0],"to":[1,1,0]},"left":{"type":"line","from":[0,0,0],"to":[0,1,0]},"right":{"type":"line","from":[1,0.5,0],"to":[1,1,0]}}"#,
+                "corners",
+            ),
+            (
+                r#"{"type":"coons","bottom":{"type":"line","from":[0,0,0],"to":[1,0,0]},"top":{"type":"line","from":[0,1,0],"to":[1,1,0]},"left":{"type":"line","from":[0,0,0],"to":[0,1,0]},"right":{"type":"line","from":[1,0,0],"to":[1,1,0]},"blend":"quintic"}"#,
+                "blend",
+            ),
+        ],
     );
 }
 
@@ -570,20 +577,19 @@ fn trimmed_surface_documents_report_containment() {
     assert_eq!(v["points"][1], json!([0.1, 0.1, 0.0]));
     let v = ok_json(&["eval", "-", "--at", "0.5:0.5"], r#"{"type":"plane"}"#);
     assert!(v.get("inside").is_none());
-    assert_bad(
+    assert_all_bad(
         &["eval", "-", "--at", "0:0"],
-        r#"{"type":"trimmed","surface":{"type":"plane"},"outer":{"type":"line","from":[0,0],"to":[1,1]}}"#,
-        "outer: a trimming loop must be closed",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0:0"],
-        r#"{"type":"trimmed","surface":{"type":"plane"},"outer":{"type":"circle"}}"#,
-        "outer: a trimming loop must be a 2-D curve",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0:0"],
-        r#"{"type":"trimmed","surface":{"type":"circle"}}"#,
-        "surface.type: expected a surface type",
+        &[
+            (
+                r#"{"type":"trimmed","surface":{"type":"plane"},"outer":{"type":"line","from":[0,0],"to":[1,1]}}"#,
+                "outer: a trimming loop must be closed",
+            ),
+            (
+                r#"{"type":"trimmed","surface":{"type":"plane"},"outer":{"type":"circle"}}"#,
+                "outer: a trimming loop must be a 2-D curve",
+            ),
+            (r#"{"type":"trimmed","surface":{"type":"circle"}}"#, "surface.type: expected a surface type"),
+        ],
     );
 }
 
@@ -604,30 +610,18 @@ fn bfunction_and_blend_documents() {
     let v = ok_json(&["eval", "-", "--at", "0,0.75,1.5"], blend);
     // At t = 0.75: c1 = (0.75, 0), c2(0.25) = (0.75, 0.25), B(0.5) = 0.5.
     assert_eq!(v["points"], json!([[0.0, 0.0], [0.75, 0.125], [1.5, 1.0]]));
-    assert_bad(
+    assert_all_bad(
         &["eval", "-", "--at", "0.5"],
-        r#"{"type":"bfunction","bfunction":{"type":"erbs","lambda":2}}"#,
-        "bfunction: lambda",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0.5"],
-        r#"{"type":"bfunction","bfunction":{"type":"spline"}}"#,
-        "bfunction.type",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0.5"],
-        r#"{"type":"bfunction","bfunction":{"type":"polynomial","smoothness":0}}"#,
-        "smoothness",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0.5"],
-        r#"{"type":"blend","first":{"type":"circle"},"second":{"type":"circle"},"overlap":1.5}"#,
-        "overlap",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0.5"],
-        r#"{"type":"blend","first":{"type":"circle"},"second":{"type":"line","from":[0,0],"to":[1,1]},"overlap":0.5}"#,
-        "second: expected a curve of dimension 3",
+        &[
+            (r#"{"type":"bfunction","bfunction":{"type":"erbs","lambda":2}}"#, "bfunction: lambda"),
+            (r#"{"type":"bfunction","bfunction":{"type":"spline"}}"#, "bfunction.type"),
+            (r#"{"type":"bfunction","bfunction":{"type":"polynomial","smoothness":0}}"#, "smoothness"),
+            (r#"{"type":"blend","first":{"type":"circle"},"second":{"type":"circle"},"overlap":1.5}"#, "overlap"),
+            (
+                r#"{"type":"blend","first":{"type":"circle"},"second":{"type":"line","from":[0,0],"to":[1,1]},"overlap":0.5}"#,
+                "second: expected a curve of dimension 3",
+            ),
+        ],
     );
 }
 
@@ -650,30 +644,24 @@ fn blending_spline_documents() {
     let moved = r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":10,"transforms":{"0":{"translate":[0,2,0]}}}"#;
     let v = ok_json(&["eval", "-", "--at", "0"], moved);
     assert!((floats(&v["points"][0])[1] - 7.0).abs() < 1e-12);
-    assert_bad(
+    assert_all_bad(
         &["eval", "-", "--at", "0"],
-        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":10,"transforms":{"12":{"scale":2}}}"#,
-        "local curve 12 does not exist",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0"],
-        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":1}"#,
-        "local_curves",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0"],
-        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":5,"local":{"type":"spline"}}"#,
-        "local",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0"],
-        r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":5,"transforms":[{"rotate":{"angle":1}}]}"#,
-        "transforms[0].rotate.axis",
-    );
-    assert_bad(
-        &["eval", "-", "--at", "0"],
-        r#"{"type":"blending_spline","model":{"type":"nope"},"local_curves":5}"#,
-        "model.type",
+        &[
+            (
+                r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":10,"transforms":{"12":{"scale":2}}}"#,
+                "local curve 12 does not exist",
+            ),
+            (r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":1}"#, "local_curves"),
+            (
+                r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":5,"local":{"type":"spline"}}"#,
+                "local",
+            ),
+            (
+                r#"{"type":"blending_spline","model":{"type":"heart"},"local_curves":5,"transforms":[{"rotate":{"angle":1}}]}"#,
+                "transforms[0].rotate.axis",
+            ),
+            (r#"{"type":"blending_spline","model":{"type":"nope"},"local_curves":5}"#, "model.type"),
+        ],
     );
 }
 
@@ -703,9 +691,11 @@ fn eval_time_poses_the_example_animations() {
 #[test]
 fn view_refuses_bad_arguments_and_explains_a_missing_display() {
     let torus = r#"{"type":"torus"}"#;
-    assert_bad(&["view", "-", "--frames", "0"], torus, "--frames");
-    assert_bad(&["view", "-", "--screenshot", "x.jpg"], torus, "--screenshot");
-    assert_bad(&["view", "-"], r#"{"type":"scene","objects":[]}"#, "objects");
+    assert_each_bad(&[
+        (&["view", "-", "--frames", "0"], torus, "--frames"),
+        (&["view", "-", "--screenshot", "x.jpg"], torus, "--screenshot"),
+        (&["view", "-"], r#"{"type":"scene","objects":[]}"#, "objects"),
+    ]);
 }
 
 #[test]
@@ -770,13 +760,8 @@ fn project_finds_nearest_points_and_every_minimum() {
 
 #[test]
 fn intersect_reports_crossings_tangents_overlaps_and_self_intersections() {
-    let dir = std::env::temp_dir().join(format!("splinekit-intersect-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let write = |name: &str, text: &str| {
-        let p = dir.join(name);
-        std::fs::write(&p, text).unwrap();
-        p.to_str().unwrap().to_string()
-    };
+    let dir = temp_dir("intersect");
+    let write = |name: &str, text: &str| write_in(&dir, name, text);
     let circle = r#"{"type":"nurbs","degree":2,"knots":[0,0,0,0.25,0.25,0.5,0.5,0.75,0.75,1,1,1],
         "control_points":[[1,0],[1,1],[0,1],[-1,1],[-1,0],[-1,-1],[0,-1],[1,-1],[1,0]],
         "weights":[1,0.7071067811865476,1,0.7071067811865476,1,0.7071067811865476,1,0.7071067811865476,1]}"#;
@@ -811,13 +796,8 @@ fn intersect_reports_crossings_tangents_overlaps_and_self_intersections() {
 
 #[test]
 fn intersect_and_section_cut_surfaces() {
-    let dir = std::env::temp_dir().join(format!("splinekit-intersect-surfaces-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let write = |name: &str, text: &str| {
-        let p = dir.join(name);
-        std::fs::write(&p, text).unwrap();
-        p.to_str().unwrap().to_string()
-    };
+    let dir = temp_dir("intersect-surfaces");
+    let write = |name: &str, text: &str| write_in(&dir, name, text);
     let sphere = write("sphere.json", r#"{"type":"sphere","radius":2}"#);
     let line = write("line.json", r#"{"type":"line","from":[-3,0.5,0.3],"to":[3,0.5,0.3]}"#);
     for args in [[&line, &sphere], [&sphere, &line]] {
@@ -861,11 +841,13 @@ fn intersect_and_section_cut_surfaces() {
         let x = floats(p);
         assert!(((x[0] * x[0] + x[1] * x[1]).sqrt() - 3f64.sqrt()).abs() < 1e-9 && (x[2] - 1.0).abs() < 1e-9);
     }
-    assert_bad(&["section", &sphere, "--plane", "0,0,1/0,0,0"], "", "--plane: the normal must be");
-    assert_bad(&["section", &sphere, "--plane", "0,0,1"], "", "--plane");
-    assert_bad(&["section", &sphere, "--plane", "0,0,0/0,0,1", "--levels", "0"], "", "--levels");
-    assert_bad(&["section", &line, "--plane", "0,0,0/0,0,1"], "", "SURFACE");
-    assert_bad(&["intersect", &torus, &cylinder, "--chord", "0"], "", "--chord");
+    assert_each_bad(&[
+        (&["section", &sphere, "--plane", "0,0,1/0,0,0"], "", "--plane: the normal must be"),
+        (&["section", &sphere, "--plane", "0,0,1"], "", "--plane"),
+        (&["section", &sphere, "--plane", "0,0,0/0,0,1", "--levels", "0"], "", "--levels"),
+        (&["section", &line, "--plane", "0,0,0/0,0,1"], "", "SURFACE"),
+        (&["intersect", &torus, &cylinder, "--chord", "0"], "", "--chord"),
+    ]);
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -892,11 +874,13 @@ fn offset_prints_bspline_documents_and_a_scene_of_pieces() {
         assert!((floats(p).iter().map(|x| x * x).sum::<f64>().sqrt() - 2.5).abs() < 1e-4, "{p}");
     }
     let circle = r#"{"type":"circle","radius":2}"#;
-    assert_bad(&["offset", "-", "--distance", "nan"], circle, "--distance");
-    assert_bad(&["offset", "-", "--distance", "1", "--tolerance", "0"], circle, "--tolerance");
-    assert_bad(&["offset", "-", "--distance", "1", "--normal", "0,0"], circle, "--normal");
-    assert_bad(&["offset", "-", "--distance", "0.1"], r#"{"type":"cone"}"#, "apex");
-    assert_bad(&["offset", "-", "--distance", "0.1", "--normal", "1,0,0"], r#"{"type":"sphere"}"#, "--normal");
+    assert_each_bad(&[
+        (&["offset", "-", "--distance", "nan"], circle, "--distance"),
+        (&["offset", "-", "--distance", "1", "--tolerance", "0"], circle, "--tolerance"),
+        (&["offset", "-", "--distance", "1", "--normal", "0,0"], circle, "--normal"),
+        (&["offset", "-", "--distance", "0.1"], r#"{"type":"cone"}"#, "apex"),
+        (&["offset", "-", "--distance", "0.1", "--normal", "1,0,0"], r#"{"type":"sphere"}"#, "--normal"),
+    ]);
 }
 
 #[test]
@@ -924,8 +908,7 @@ fn edited_local_control_points_are_honoured_and_checked_by_the_commands() {
     for (a, b) in p.iter().zip(expected) {
         assert!((a - b).abs() < 1e-12, "{p:?} vs {expected:?}");
     }
-    let dir = std::env::temp_dir().join(format!("splinekit-lcp-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = temp_dir("lcp");
     let obj = dir.join("heart.obj");
     let o = run(&["tessellate", "-", "-o", obj.to_str().unwrap()], doc);
     assert_eq!(o.code, 0, "{}", o.stderr);

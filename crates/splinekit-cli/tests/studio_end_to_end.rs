@@ -125,6 +125,16 @@ fn wait(mut child: Running, what: &str) {
     }
 }
 
+/// Saves with Ctrl+S, waits until the saved document at `doc` is `ready` (`what` names it),
+/// quits with Ctrl+Q and waits for the studio to close; the saved document.
+fn save_and_quit(child: Running, doc: &Path, ready: impl Fn(&Value) -> bool, what: &str) -> Value {
+    xdotool(&["key", "ctrl+s"]);
+    let saved = wait_for_json(doc, ready, what);
+    xdotool(&["key", "ctrl+q"]);
+    wait(child, "the studio");
+    saved
+}
+
 /// Window pixel coordinates as xdotool takes them.
 fn at((x, y): (f64, f64)) -> [String; 2] {
     [format!("{}", x.round()), format!("{}", y.round())]
@@ -175,10 +185,7 @@ fn drag_and_save(dir: &Path, doc: &Path) -> ((f64, f64), (f64, f64)) {
     let from = handle(&report, LOCAL);
     let to = (from.0 + DRAG.0, from.1 + DRAG.1);
     drag(&window, |f| (from.0 + f * DRAG.0, from.1 + f * DRAG.1), 12, None);
-    xdotool(&["key", "ctrl+s"]);
-    wait_for_json(doc, |v| v["objects"][0]["shape"]["transforms"].is_object(), "the saved document");
-    xdotool(&["key", "ctrl+q"]);
-    wait(child, "the studio");
+    save_and_quit(child, doc, |v| v["objects"][0]["shape"]["transforms"].is_object(), "the saved document");
     (from, (to.0.round(), to.1.round()))
 }
 
@@ -292,11 +299,8 @@ fn a_local_rotating_about_a_pivot_is_rotated_by_hand() {
     // Grab 8 pixels right of the handle and sweep a quarter turn around it, R held.
     let around = |a: f64| (from.0 + 8.0 * a.cos(), from.1 + 8.0 * a.sin());
     drag(&window, |f| around(std::f64::consts::FRAC_PI_2 * f), 10, Some("r"));
-    xdotool(&["key", "ctrl+s"]);
     let rotated = |v: &Value| v["objects"][0]["shape"]["transforms"][LOCAL.to_string()]["rotate"]["angle"] != 0.3;
-    let saved = wait_for_json(&doc, rotated, "the saved document");
-    xdotool(&["key", "ctrl+q"]);
-    wait(child, "the studio");
+    let saved = save_and_quit(child, &doc, rotated, "the saved document");
     let rotate = &saved["objects"][0]["shape"]["transforms"][LOCAL.to_string()]["rotate"];
     assert_eq!(rotate["pivot"], serde_json::json!([0.0, 0.0, 0.0]), "the pivot stays: {rotate}");
     let child = studio(&doc, &dir, "after.json", &["--frames", "3"]);
@@ -392,11 +396,12 @@ fn a_dragged_control_point_of_a_local_bezier_is_saved_and_renders_as_the_window_
         .unwrap_or_else(|| panic!("a control point of local {LOCAL} well inside the view: {report}"));
     let (from, world) = local_point(&report, LOCAL, i).expect("shown");
     drag(&window, |f| (from.0 + f * BY.0, from.1 + f * BY.1), 12, None);
-    xdotool(&["key", "ctrl+s"]);
-    let saved =
-        wait_for_json(&doc, |v| v["objects"][0]["shape"]["local_control_points"].is_object(), "the saved document");
-    xdotool(&["key", "ctrl+q"]);
-    wait(child, "the studio");
+    let saved = save_and_quit(
+        child,
+        &doc,
+        |v| v["objects"][0]["shape"]["local_control_points"].is_object(),
+        "the saved document",
+    );
 
     let shape = &saved["objects"][0]["shape"];
     assert!(shape.get("transforms").is_none(), "no frame changed: {shape}");
@@ -468,10 +473,7 @@ fn the_knot_style_is_switched_in_the_window_and_saved() {
     click_widget(&report, &window, "object 0");
     click_widget(&report, &window, "knots");
     click_widget(&report, &window, "knots: periodic");
-    xdotool(&["key", "ctrl+s"]);
-    let saved = wait_for_json(&doc, |v| v["objects"][0]["shape"]["periodic"] == true, "the saved document");
-    xdotool(&["key", "ctrl+q"]);
-    wait(child, "the studio");
+    let saved = save_and_quit(child, &doc, |v| v["objects"][0]["shape"]["periodic"] == true, "the saved document");
     let shape = &saved["objects"][0]["shape"];
     let knots: Vec<f64> = serde_json::from_value(shape["knots"].clone()).expect("knots");
     assert_eq!(knots.len(), 8, "{shape}");
@@ -567,11 +569,8 @@ fn a_knot_is_inserted_by_clicking_the_curve() {
     xdotool(&["key", "k"]);
     let (t, p) = samples(&before, 300)[170];
     click(&window, map([p[0], p[1], 0.0]));
-    xdotool(&["key", "ctrl+s"]);
     let more = |v: &Value| v["objects"][0]["shape"]["knots"].as_array().is_some_and(|k| k.len() == 11);
-    let saved = wait_for_json(&doc, more, "the saved document with one more knot");
-    xdotool(&["key", "ctrl+q"]);
-    wait(child, "the studio");
+    let saved = save_and_quit(child, &doc, more, "the saved document with one more knot");
     let knots: Vec<f64> = serde_json::from_value(saved["objects"][0]["shape"]["knots"].clone()).expect("knots");
     assert!(knots.iter().any(|k| (k - t).abs() < 0.05), "a knot near {t}: {knots:?}");
     for ((_, a), (_, b)) in samples(&before, 500).iter().zip(samples(&shape_of(&doc), 500)) {
@@ -600,11 +599,8 @@ fn a_local_curve_is_inserted_by_clicking_the_heart() {
     let t = 0.5 * (lo + hi);
     let p = before.point(t);
     click(&window, map([p[0], p[1], p[2]]));
-    xdotool(&["key", "ctrl+s"]);
     let more = |v: &Value| v["objects"][0]["shape"]["local_curves"] == serde_json::json!(11);
-    let saved = wait_for_json(&doc, more, "the saved document with one more local curve");
-    xdotool(&["key", "ctrl+q"]);
-    wait(child, "the studio");
+    let saved = save_and_quit(child, &doc, more, "the saved document with one more local curve");
     let knots: Vec<f64> = serde_json::from_value(saved["objects"][0]["shape"]["knots"].clone()).expect("knots");
     assert_eq!(knots.len(), 12, "closed: eleven locals, twelve knots");
     assert!(knots.iter().any(|k| (k - t).abs() < 0.05), "a knot near {t}: {knots:?}");
@@ -632,11 +628,8 @@ fn a_weight_is_dragged_with_w_held() {
     let (report, window) = focused_window(&dir.join("report.json"));
     let from = control_point(&report, 2);
     drag(&window, |f| (from.0, from.1 - 60.0 * f), 8, Some("w"));
-    xdotool(&["key", "ctrl+s"]);
     let heavier = |v: &Value| v["objects"][0]["shape"]["weights"][2].as_f64().is_some_and(|w| w > 1.0);
-    let saved = wait_for_json(&doc, heavier, "the saved document with a heavier weight");
-    xdotool(&["key", "ctrl+q"]);
-    wait(child, "the studio");
+    let saved = save_and_quit(child, &doc, heavier, "the saved document with a heavier weight");
     let shape = &saved["objects"][0]["shape"];
     let w = shape["weights"][2].as_f64().expect("a weight");
     assert!((w - 0.6f64.exp()).abs() < 0.05, "weight {w}, about e^0.6");
@@ -663,11 +656,8 @@ fn three_boxed_points_move_together() {
     drag(&window, |f| (lo.0 + f * (hi.0 - lo.0), lo.1 + f * (hi.1 - lo.1)), 6, Some("ctrl"));
     let from = ps[1];
     drag(&window, |f| (from.0 + 40.0 * f, from.1 - 30.0 * f), 8, None);
-    xdotool(&["key", "ctrl+s"]);
     let moved = |v: &Value| v["objects"][0]["shape"]["control_points"][2] != serde_json::json!([2.0, -1.0]);
-    let saved = wait_for_json(&doc, moved, "the saved document with moved points");
-    xdotool(&["key", "ctrl+q"]);
-    wait(child, "the studio");
+    let saved = save_and_quit(child, &doc, moved, "the saved document with moved points");
     let pts: Vec<[f64; 2]> =
         serde_json::from_value(saved["objects"][0]["shape"]["control_points"].clone()).expect("points");
     let start = [[0.0, 0.0], [1.0, 2.0], [2.0, -1.0], [3.0, 2.0], [4.0, -0.5], [5.0, 1.0]];

@@ -13,9 +13,18 @@ fn temp_dir(name: &str) -> std::path::PathBuf {
     dir
 }
 
-/// Exit 2, nothing on standard output, one line naming `must_contain`.
-fn assert_bad(args: &[&str], stdin: &str, must_contain: &str) {
-    let o = run(args, stdin);
+/// Runs `splinekit subdivide-surface ARGS` on `stdin` and checks that it succeeds.
+fn subdivide(args: &[&str], stdin: &str) -> common::Output {
+    let o = run(&[&["subdivide-surface"], args].concat(), stdin);
+    assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
+    o
+}
+
+/// `splinekit subdivide-surface ARGS` on `stdin`: exit 2, nothing on standard output, one
+/// line naming `must_contain`.
+fn assert_refused(args: &[&str], stdin: &str, must_contain: &str) {
+    let args = [&["subdivide-surface"], args].concat();
+    let o = run(&args, stdin);
     assert_eq!(o.code, 2, "{args:?}: exit {} (stderr {:?})", o.code, o.stderr);
     assert!(o.stdout.is_empty(), "{args:?}: printed {:?}", o.stdout);
     assert_eq!(o.stderr.lines().count(), 1, "{args:?}: stderr {:?}", o.stderr);
@@ -36,21 +45,8 @@ fn lines(text: &str, tag: &str) -> Vec<Vec<f64>> {
 fn steps_zero_limit_gives_the_cage_limit_points_in_order() {
     let dir = temp_dir("zero");
     let out = dir.join("limit.obj");
-    let o = run(
-        &[
-            "subdivide-surface",
-            "-",
-            "--scheme",
-            "catmull-clark",
-            "--steps",
-            "0",
-            "--limit",
-            "-o",
-            out.to_str().unwrap(),
-        ],
-        &cube(),
-    );
-    assert_eq!(o.code, 0, "{}", o.stderr);
+
+    subdivide(&["-", "--scheme", "catmull-clark", "--steps", "0", "--limit", "-o", out.to_str().unwrap()], &cube());
     let text = std::fs::read_to_string(&out).unwrap();
     let cage = lines(&cube(), "v ");
     let v = lines(&text, "v ");
@@ -65,21 +61,8 @@ fn steps_zero_limit_gives_the_cage_limit_points_in_order() {
     }
     assert!(text.contains("f 1//1 3//3 4//4 2//2"));
     // Two steps: the face centre vertex (index 8 + face) is at the limit 68/81.
-    let o = run(
-        &[
-            "subdivide-surface",
-            "-",
-            "--scheme",
-            "catmull-clark",
-            "--steps",
-            "2",
-            "--limit",
-            "-o",
-            out.to_str().unwrap(),
-        ],
-        &cube(),
-    );
-    assert_eq!(o.code, 0, "{}", o.stderr);
+
+    subdivide(&["-", "--scheme", "catmull-clark", "--steps", "2", "--limit", "-o", out.to_str().unwrap()], &cube());
     let v = lines(&std::fs::read_to_string(&out).unwrap(), "v ");
     assert!(v.iter().any(|p| p[0].abs() < 1e-15 && p[1].abs() < 1e-15 && (p[2] - 68.0 / 81.0).abs() < 1e-15));
     std::fs::remove_dir_all(&dir).ok();
@@ -90,20 +73,13 @@ fn steps_zero_limit_gives_the_cage_limit_points_in_order() {
 fn schemes_creases_and_boundaries() {
     let dir = temp_dir("schemes");
     let out = dir.join("out.obj");
-    let o = run(
-        &["subdivide-surface", "-", "--scheme", "loop", "--triangulate", "--steps", "1", "-o", out.to_str().unwrap()],
-        &cube(),
-    );
-    assert_eq!(o.code, 0, "{}", o.stderr);
+
+    subdivide(&["-", "--scheme", "loop", "--triangulate", "--steps", "1", "-o", out.to_str().unwrap()], &cube());
     let text = std::fs::read_to_string(&out).unwrap();
     // 12 triangles → 48; 8 + 18 edges vertices.
     assert_eq!(lines(&text, "f ").len(), 48);
     assert_eq!(lines(&text, "v ").len(), 26);
-    let o = run(
-        &["subdivide-surface", "-", "--scheme", "bilinear", "--steps", "1", "--limit", "-o", out.to_str().unwrap()],
-        &cube(),
-    );
-    assert_eq!(o.code, 0, "{}", o.stderr);
+    subdivide(&["-", "--scheme", "bilinear", "--steps", "1", "--limit", "-o", out.to_str().unwrap()], &cube());
     let v = lines(&std::fs::read_to_string(&out).unwrap(), "v ");
     assert_eq!(v[7], vec![1.0, 1.0, 1.0], "bilinear keeps the cage's vertices");
     // An infinitely sharp crease ring around the cube's top face (OBJ tags, 0-based): the
@@ -112,21 +88,7 @@ fn schemes_creases_and_boundaries() {
     // neighbours (−1, 1, 1) and (1, −1, 1), (2/3, 2/3, 1).
     let creased =
         format!("{}t crease 2/1 4 5 10\nt crease 2/1 5 7 10\nt crease 2/1 7 6 10\nt crease 2/1 6 4 10\n", cube());
-    let o = run(
-        &[
-            "subdivide-surface",
-            "-",
-            "--scheme",
-            "catmull-clark",
-            "--steps",
-            "0",
-            "--limit",
-            "-o",
-            out.to_str().unwrap(),
-        ],
-        &creased,
-    );
-    assert_eq!(o.code, 0, "{}", o.stderr);
+    subdivide(&["-", "--scheme", "catmull-clark", "--steps", "0", "--limit", "-o", out.to_str().unwrap()], &creased);
     let v = lines(&std::fs::read_to_string(&out).unwrap(), "v ");
     for (x, want) in v[7].iter().zip([2.0 / 3.0, 2.0 / 3.0, 1.0]) {
         assert!((x - want).abs() < 1e-15, "{:?}", v[7]);
@@ -140,9 +102,8 @@ fn schemes_creases_and_boundaries() {
     assert!(n[8][2] < n[5][2] - 0.1, "the side's normal at the crease leans outward: {:?} vs {:?}", n[8], n[5]);
     // An open grid of one quad: edge-only smooths its corners, edge-and-corner keeps them.
     let quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
-    let o = run(
+    subdivide(
         &[
-            "subdivide-surface",
             "-",
             "--scheme",
             "catmull-clark",
@@ -156,7 +117,6 @@ fn schemes_creases_and_boundaries() {
         ],
         quad,
     );
-    assert_eq!(o.code, 0, "{}", o.stderr);
     assert_eq!(lines(&std::fs::read_to_string(&out).unwrap(), "v ")[2], vec![1.0, 1.0, 0.0]);
     std::fs::remove_dir_all(&dir).ok();
 }
@@ -169,13 +129,11 @@ fn schemes_creases_and_boundaries() {
 fn doo_sabin_limit_points_of_the_cube() {
     let dir = temp_dir("doo-sabin");
     let out = dir.join("limit.obj");
-    let args = |steps: &'static str| {
-        ["subdivide-surface", "-", "--scheme", "doo-sabin", "--steps", steps, "--limit", "-o", out.to_str().unwrap()]
-            .map(String::from)
+    let limit_of = |steps: &str| {
+        subdivide(&["-", "--scheme", "doo-sabin", "--steps", steps, "--limit", "-o", out.to_str().unwrap()], &cube());
+        std::fs::read_to_string(&out).unwrap()
     };
-    let o = run(&args("0").each_ref().map(String::as_str), &cube());
-    assert_eq!(o.code, 0, "{}", o.stderr);
-    let text = std::fs::read_to_string(&out).unwrap();
+    let text = limit_of("0");
     let (cage, v, n) = (lines(&cube(), "v "), lines(&text, "v "), lines(&text, "vn "));
     assert_eq!((v.len(), n.len()), (8, 8));
     for i in 0..8 {
@@ -184,15 +142,9 @@ fn doo_sabin_limit_points_of_the_cube() {
             assert!((n[i][c] - cage[i][c] / 3f64.sqrt()).abs() < 1e-15, "normal {i}: {:?}", n[i]);
         }
     }
-    let o = run(&args("2").each_ref().map(String::as_str), &cube());
-    assert_eq!(o.code, 0, "{}", o.stderr);
-    let limit = std::fs::read_to_string(&out).unwrap();
+    let limit = limit_of("2");
     let plain = dir.join("plain.obj");
-    let o = run(
-        &["subdivide-surface", "-", "--scheme", "doo-sabin", "--steps", "2", "-o", plain.to_str().unwrap()],
-        &cube(),
-    );
-    assert_eq!(o.code, 0, "{}", o.stderr);
+    subdivide(&["-", "--scheme", "doo-sabin", "--steps", "2", "-o", plain.to_str().unwrap()], &cube());
     let plain = std::fs::read_to_string(&plain).unwrap();
     let (a, b) = (lines(&limit, "v "), lines(&plain, "v "));
     assert_eq!(a.len(), b.len());
@@ -214,14 +166,14 @@ fn bad_subdivision_input_is_refused_in_one_line() {
         let last = text.lines().rfind(|l| l.starts_with("f ")).unwrap().to_string();
         text.lines().filter(|&l| l != last).map(|l| format!("{l}\n")).collect()
     };
-    assert_bad(&["subdivide-surface", "-", "--scheme", "doo-sabin", "--limit", "-o", o], &open, "open border");
-    assert_bad(&["subdivide-surface", "-", "--scheme", "loop", "-o", o], &cube(), "faces[0]");
+    assert_refused(&["-", "--scheme", "doo-sabin", "--limit", "-o", o], &open, "open border");
+    assert_refused(&["-", "--scheme", "loop", "-o", o], &cube(), "faces[0]");
     let bad_tag = format!("{}t crease 2/1 0 1\n", cube());
-    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "-o", o], &bad_tag, "crease");
+    assert_refused(&["-", "--scheme", "catmull-clark", "-o", o], &bad_tag, "crease");
     let not_edge = format!("{}t crease 2/1 0 7 2\n", cube());
-    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "-o", o], &not_edge, "creases[0]");
+    assert_refused(&["-", "--scheme", "catmull-clark", "-o", o], &not_edge, "creases[0]");
     let negative = format!("{}t crease 2/1 0 1 -2\n", cube());
-    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "-o", o], &negative, "sharpness");
+    assert_refused(&["-", "--scheme", "catmull-clark", "-o", o], &negative, "sharpness");
     assert!(!out.exists());
 }
 
@@ -229,9 +181,7 @@ fn bad_subdivision_input_is_refused_in_one_line() {
 /// partials (a regular point), its corner (±½, ±½, ±½) without (an extraordinary vertex).
 #[test]
 fn at_evaluates_the_limit_exactly() {
-    let o =
-        run(&["subdivide-surface", "-", "--scheme", "catmull-clark", "--at", "1,0.5,0.5", "--at", "1,0,0"], &cube());
-    assert_eq!(o.code, 0, "{}", o.stderr);
+    let o = subdivide(&["-", "--scheme", "catmull-clark", "--at", "1,0.5,0.5", "--at", "1,0,0"], &cube());
     let v: serde_json::Value = serde_json::from_str(&o.stdout).unwrap();
     let z = v[0]["position"][2].as_f64().unwrap();
     assert!((z - 68.0 / 81.0).abs() < 1e-15, "{z}");
@@ -241,18 +191,10 @@ fn at_evaluates_the_limit_exactly() {
     for c in 0..3 {
         assert!((v[1]["position"][c].as_f64().unwrap().abs() - 0.5).abs() < 1e-15);
     }
-    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark", "--at", "1,0.5"], &cube(), "FACE,U,V");
-    assert_bad(
-        &["subdivide-surface", "-", "--scheme", "catmull-clark", "--at", "6,0.5,0.5"],
-        &cube(),
-        "6 does not exist",
-    );
-    assert_bad(
-        &["subdivide-surface", "-", "--scheme", "loop", "--triangulate", "--at", "0,0.8,0.8"],
-        &cube(),
-        "outside",
-    );
-    assert_bad(&["subdivide-surface", "-", "--scheme", "catmull-clark"], &cube(), "-o");
+    assert_refused(&["-", "--scheme", "catmull-clark", "--at", "1,0.5"], &cube(), "FACE,U,V");
+    assert_refused(&["-", "--scheme", "catmull-clark", "--at", "6,0.5,0.5"], &cube(), "6 does not exist");
+    assert_refused(&["-", "--scheme", "loop", "--triangulate", "--at", "0,0.8,0.8"], &cube(), "outside");
+    assert_refused(&["-", "--scheme", "catmull-clark"], &cube(), "-o");
 }
 
 /// `-o OUT.step`: the cube's 8 extraordinary vertices leave, after 3 levels, 2 × 72 exact
@@ -262,27 +204,15 @@ fn at_evaluates_the_limit_exactly() {
 fn step_export_writes_bicubic_patches() {
     let dir = temp_dir("step");
     let out = dir.join("cube.step");
-    let o = run(
-        &["subdivide-surface", "-", "--scheme", "catmull-clark", "--steps", "3", "-o", out.to_str().unwrap()],
-        &cube(),
-    );
-    assert_eq!(o.code, 0, "{}", o.stderr);
+    let o = subdivide(&["-", "--scheme", "catmull-clark", "--steps", "3", "-o", out.to_str().unwrap()], &cube());
     assert!(o.stderr.contains("144 exact bicubic patches, 24 bilinear stand-ins (down to level 3)"), "{}", o.stderr);
     let text = std::fs::read_to_string(&out).unwrap();
     assert!(text.starts_with("ISO-10303-21;"), "{}", &text[..40]);
     assert_eq!((degrees(&text, "3"), degrees(&text, "1")), (144, 24));
     let step = out.to_str().unwrap();
-    assert_bad(
-        &["subdivide-surface", "-", "--scheme", "catmull-clark", "--steps", "0", "-o", step],
-        &cube(),
-        "at least 1",
-    );
-    assert_bad(
-        &["subdivide-surface", "-", "--scheme", "catmull-clark", "--steps", "31", "-o", step],
-        &cube(),
-        "limit of 30",
-    );
-    assert_bad(&["subdivide-surface", "-", "--scheme", "doo-sabin", "-o", step], &cube(), "not doo-sabin");
+    assert_refused(&["-", "--scheme", "catmull-clark", "--steps", "0", "-o", step], &cube(), "at least 1");
+    assert_refused(&["-", "--scheme", "catmull-clark", "--steps", "31", "-o", step], &cube(), "limit of 30");
+    assert_refused(&["-", "--scheme", "doo-sabin", "-o", step], &cube(), "not doo-sabin");
 }
 
 /// `--scheme loop --triangulate -o OUT.step --tolerance 1e-4`: the fan-split cube as
@@ -293,21 +223,10 @@ fn step_export_writes_bicubic_patches() {
 fn step_export_of_loop_surfaces() {
     let dir = temp_dir("step-loop");
     let out = dir.join("loop.step");
-    let o = run(
-        &[
-            "subdivide-surface",
-            "-",
-            "--scheme",
-            "loop",
-            "--triangulate",
-            "--tolerance",
-            "1e-4",
-            "-o",
-            out.to_str().unwrap(),
-        ],
+    let o = subdivide(
+        &["-", "--scheme", "loop", "--triangulate", "--tolerance", "1e-4", "-o", out.to_str().unwrap()],
         &cube(),
     );
-    assert_eq!(o.code, 0, "{}", o.stderr);
     let text = std::fs::read_to_string(&out).unwrap();
     let (quartic, bilinear) = (degrees(&text, "4"), degrees(&text, "1"));
     assert_eq!((quartic, bilinear), (456, 24), "{}", o.stderr);
@@ -315,8 +234,7 @@ fn step_export_of_loop_surfaces() {
     let deviation: f64 = o.stderr.split("within ").nth(1).unwrap().split(' ').next().unwrap().parse().unwrap();
     assert!(deviation <= 1e-4 * 2.0 * 3f64.sqrt(), "{}", o.stderr);
     // The bilinear scheme: its six faces.
-    let o = run(&["subdivide-surface", "-", "--scheme", "bilinear", "-o", out.to_str().unwrap()], &cube());
-    assert_eq!(o.code, 0, "{}", o.stderr);
+    let o = subdivide(&["-", "--scheme", "bilinear", "-o", out.to_str().unwrap()], &cube());
     assert!(o.stderr.contains("6 exact bilinear patches"), "{}", o.stderr);
     assert_eq!(degrees(&std::fs::read_to_string(&out).unwrap(), "1"), 6);
 }
@@ -335,11 +253,7 @@ fn step_export_meets_a_tolerance() {
     let dir = temp_dir("step-tolerance");
     let out = dir.join("creased.step");
     let mesh = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/meshes/creased_cube.obj");
-    let o = run(
-        &["subdivide-surface", mesh, "--scheme", "catmull-clark", "--tolerance", "1e-6", "-o", out.to_str().unwrap()],
-        "",
-    );
-    assert_eq!(o.code, 0, "{}", o.stderr);
+    let o = subdivide(&[mesh, "--scheme", "catmull-clark", "--tolerance", "1e-6", "-o", out.to_str().unwrap()], "");
     let text = std::fs::read_to_string(&out).unwrap();
     let (bicubic, bilinear) = (degrees(&text, "3"), degrees(&text, "1"));
     assert!(
@@ -351,13 +265,13 @@ fn step_export_meets_a_tolerance() {
     let deviation: f64 = o.stderr.split("within ").nth(1).unwrap().split(' ').next().unwrap().parse().unwrap();
     assert!(deviation <= 1e-6 * 2.0 * 3f64.sqrt() && bilinear == 16, "{}", o.stderr);
     let step = out.to_str().unwrap();
-    assert_bad(
-        &["subdivide-surface", mesh, "--scheme", "catmull-clark", "--tolerance", "1e-15", "-o", step],
+    assert_refused(
+        &[mesh, "--scheme", "catmull-clark", "--tolerance", "1e-15", "-o", step],
         "",
         "--tolerance: the patches at extraordinary vertices come within",
     );
-    assert_bad(
-        &["subdivide-surface", mesh, "--scheme", "catmull-clark", "--tolerance", "1e-3", "-o", "x.obj"],
+    assert_refused(
+        &[mesh, "--scheme", "catmull-clark", "--tolerance", "1e-3", "-o", "x.obj"],
         "",
         "--tolerance: is for .step output",
     );

@@ -362,6 +362,41 @@ macro_rules! model_document {
 }
 pub(crate) use model_document;
 
+/// The declarations a spline kind shares, written inside its `impl DocumentKind`: a
+/// document that holds a spline's own data (its `control_points`, with the knots and
+/// weights its [`DocumentKind::spline`] view names) is exactly that spline (`$form`'s
+/// `Spline`), has the dimension of its control points (`$dimension`, which checks them),
+/// is not offered as a blending model and has nothing to pose in time.
+macro_rules! spline_kind_items {
+    ($form:ident, $dimension:path) => {
+        fn exact_form(&self) -> $crate::Result<$crate::forms::$form<'_>> {
+            Ok($crate::forms::$form::Spline(self.spline().expect("a spline kind")))
+        }
+        const BLENDING_MODEL: bool = false;
+        fn dimension(&self) -> $crate::Result<usize> {
+            $dimension("control_points", &self.control_points)
+        }
+        fn set_time(&mut self, _time: f64) {}
+    };
+}
+pub(crate) use spline_kind_items;
+
+/// The declarations of a kind that holds no spline data of its own and has no exact form
+/// (exporters approximate it, `$form`'s `Approximate`), written inside its
+/// `impl DocumentKind`; it is not offered as a blending model.
+macro_rules! approximated_kind_items {
+    ($view:ident, $form:ident) => {
+        fn spline(&self) -> Option<$crate::views::$view<'_>> {
+            None
+        }
+        fn exact_form(&self) -> $crate::Result<$crate::forms::$form<'_>> {
+            Ok($crate::forms::$form::Approximate)
+        }
+        const BLENDING_MODEL: bool = false;
+    };
+}
+pub(crate) use approximated_kind_items;
+
 /// Refuses any number in a (small) document beyond ±[`MAX_MAGNITUDE`](crate::budget::MAX_MAGNITUDE),
 /// naming its path.
 pub fn check_magnitudes(value: &Value, path: &str) -> Result<()> {

@@ -36,6 +36,8 @@ pub mod query;
 pub mod subdivision;
 pub mod surface;
 pub mod taylor;
+#[cfg(test)]
+mod test_stream;
 pub mod tolerance;
 
 pub use error::{Error, Result};

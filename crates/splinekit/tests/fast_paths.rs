@@ -535,10 +535,12 @@ fn check_bezier_surface<const D: usize>(degrees: (usize, usize), orders: (usize,
     check_surface_paths(&surface, &mut rng, (&au, &av), Order::Random, orders, &truth, &tol, &what);
 }
 
-/// Proptest cases: `base`, times `FAST_PATHS_SCALE` when set (a deeper local hunt:
-/// `FAST_PATHS_SCALE=100 cargo test --release -p splinekit --test fast_paths`).
-fn cases(base: u32) -> u32 {
-    base * std::env::var("FAST_PATHS_SCALE").ok().and_then(|s| s.parse().ok()).unwrap_or(1)
+/// Proptest's settings: `base` cases, times `FAST_PATHS_SCALE` when set (a deeper local
+/// hunt: `FAST_PATHS_SCALE=100 cargo test --release -p splinekit --test fast_paths`), and
+/// no failure files.
+fn config(base: u32) -> ProptestConfig {
+    let cases = base * std::env::var("FAST_PATHS_SCALE").ok().and_then(|s| s.parse().ok()).unwrap_or(1);
+    ProptestConfig { cases, failure_persistence: None, ..ProptestConfig::default() }
 }
 
 macro_rules! by_dimension {
@@ -580,7 +582,7 @@ fn found_cases_of_spline_curves() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: cases(64), failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(64))]
 
     /// B-spline and NURBS curves, every path, against plain Cox–de Boor.
     #[test]
@@ -596,7 +598,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: cases(40), failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(40))]
 
     /// B-spline and NURBS surfaces: points, partials, grids, grids with normals, normals.
     #[test]
@@ -692,7 +694,7 @@ fn check_blending_grid(
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: cases(6), failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(6))]
 
     #[test]
     fn blending_surface_grids_match_their_general_evaluation(
@@ -823,7 +825,7 @@ fn check_blending_curve(
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: cases(48), failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(48))]
 
     #[test]
     fn blending_curve_batches_match_their_general_evaluation(

@@ -33,6 +33,19 @@ fn grid(n: u32, h: impl Fn(u32, u32) -> f64) -> Cage {
     Cage::new(v, &faces)
 }
 
+/// The infinitely sharp creases along row `row` of an n × n grid's vertices (ids
+/// row·(n + 1) + i, as [`grid`] numbers them).
+fn sharp_row(n: u32, row: u32) -> Vec<Crease> {
+    (0..n).map(|i| Crease { a: row * (n + 1) + i, b: row * (n + 1) + i + 1, sharpness: f64::INFINITY }).collect()
+}
+
+/// [`grid`]`(n, bumpy)` with infinitely sharp creases along row `row`.
+fn grid_with_sharp_row(n: u32, row: u32) -> Cage {
+    let mut cage = grid(n, bumpy);
+    cage.creases = sharp_row(n, row);
+    cage
+}
+
 fn bumpy(i: u32, j: u32) -> f64 {
     ((i * 7 + j * 3) as f64).sin() + 0.3 * ((i * j) as f64).cos()
 }
@@ -206,11 +219,8 @@ fn rings_converge_at_the_subdominant_eigenvalue() {
 /// splinekit's B-spline curve), so the surface is only C⁰ across it.
 #[test]
 fn infinitely_sharp_crease_limit_is_the_cubic_bspline_of_its_vertices() {
-    let n = 8u32;
-    let mut cage = grid(n, bumpy);
-    let row = 4u32;
-    cage.creases =
-        (0..n).map(|i| Crease { a: row * (n + 1) + i, b: row * (n + 1) + i + 1, sharpness: f64::INFINITY }).collect();
+    let (n, row) = (8u32, 4u32);
+    let cage = grid_with_sharp_row(n, row);
     let s = SubdivisionSurface::new(cage.clone(), Scheme::CatmullClark, false).unwrap();
     let pts: Vec<Point<3>> = (0..=n).map(|i| cage.vertices[(row * (n + 1) + i) as usize]).collect();
     let knots: Vec<f64> = (-3..=(n as i32 + 1)).map(f64::from).collect();
@@ -392,14 +402,8 @@ fn a_step_keeps_vertex_order_and_counts() {
 #[test]
 fn loop_boundary_limit_is_the_cubic_bspline_of_the_border() {
     let n = 6u32;
-    let q = grid(n, bumpy);
-    let mut faces = Vec::new();
-    for f in 0..q.face_count() {
-        let c = q.face(f);
-        faces.push(vec![c[0], c[1], c[2]]);
-        faces.push(vec![c[0], c[2], c[3]]);
-    }
-    let s = SubdivisionSurface::new(Cage::new(q.vertices.clone(), &faces), Scheme::Loop, false).unwrap();
+    let q = triangulated_grid(n);
+    let s = SubdivisionSurface::new(q.clone(), Scheme::Loop, false).unwrap();
     let pts: Vec<Point<3>> = (0..=n).map(|i| q.vertices[i as usize]).collect();
     let knots: Vec<f64> = (-3..=(n as i32 + 1)).map(f64::from).collect();
     let curve = BSplineCurve::new(3, knots[..pts.len() + 4].to_vec(), pts).unwrap();
@@ -420,11 +424,8 @@ fn loop_boundary_limit_is_the_cubic_bspline_of_the_border() {
 /// its own regular patch gives a little way off the vertex along the crease.
 #[test]
 fn crease_vertex_normals_belong_to_their_side() {
-    let n = 8u32;
-    let mut cage = grid(n, bumpy);
-    let row = 4u32;
-    cage.creases =
-        (0..n).map(|i| Crease { a: row * (n + 1) + i, b: row * (n + 1) + i + 1, sharpness: f64::INFINITY }).collect();
+    let (n, row) = (8u32, 4u32);
+    let cage = grid_with_sharp_row(n, row);
     // The crease vertices are regular crease vertices, so the phantom-point patches give
     // the exact normal at the vertex on each side; the sector masks must agree.
     let s = SubdivisionSurface::new(cage, Scheme::CatmullClark, false).unwrap();
@@ -492,8 +493,7 @@ fn loop_border_and_crease_triangles_are_exact_patches_with_partials() {
     let plain = triangulated_grid(n);
     let mut creased = plain.clone();
     let row = 3u32;
-    creased.creases =
-        (0..n).map(|i| Crease { a: row * (n + 1) + i, b: row * (n + 1) + i + 1, sharpness: f64::INFINITY }).collect();
+    creased.creases = sharp_row(n, row);
     for (name, cage) in [("border", plain), ("crease", creased)] {
         let s = SubdivisionSurface::new(cage, Scheme::Loop, false).unwrap();
         let fine = s.subdivide(2).unwrap();

@@ -56,6 +56,28 @@ impl Query {
         Ok(Point::<D>::from_fn(|k, _| p[k]))
     }
 
+    /// The answer for every query point: with --all the list of its local minima of the
+    /// distance (`minima`), else its nearest point (`nearest`), each written by `entry`;
+    /// wrapped as [`Query::wrap`] says.
+    fn answer<const D: usize, N>(
+        &self,
+        single: bool,
+        nearest: impl Fn(&Point<D>, f64) -> Result<N>,
+        minima: impl Fn(&Point<D>, f64) -> Result<Vec<N>>,
+        entry: impl Fn(&N) -> Value,
+    ) -> Result<Value> {
+        let mut entries = Vec::with_capacity(self.points.len());
+        for i in 0..self.points.len() {
+            let q = self.point::<D>(i)?;
+            entries.push(if self.all {
+                Value::Array(minima(&q, self.accuracy)?.iter().map(&entry).collect())
+            } else {
+                entry(&nearest(&q, self.accuracy)?)
+            });
+        }
+        Ok(self.wrap(entries, single))
+    }
+
     /// One entry per point (an object, or a list of objects with --all), or the single
     /// entry for --point.
     fn wrap(&self, entries: Vec<Value>, single: bool) -> Value {
@@ -78,18 +100,12 @@ impl DimensionVisitor<Curves> for ProjectCurve<'_> {
     type Output = Result<Value>;
     fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Result<Value> {
         let projector = CurveProjector::new(curve);
-        let entry =
-            |n: &splinekit::query::Nearest<D>| json!({"t": n.t, "point": coords(&n.point), "distance": n.distance});
-        let mut entries = Vec::with_capacity(self.0.points.len());
-        for i in 0..self.0.points.len() {
-            let q = self.0.point::<D>(i)?;
-            entries.push(if self.0.all {
-                Value::Array(projector.local_minima(&q, self.0.accuracy)?.iter().map(entry).collect())
-            } else {
-                entry(&projector.nearest(&q, self.0.accuracy)?)
-            });
-        }
-        Ok(self.0.wrap(entries, self.1))
+        self.0.answer(
+            self.1,
+            |q, accuracy| Ok(projector.nearest(q, accuracy)?),
+            |q, accuracy| Ok(projector.local_minima(q, accuracy)?),
+            |n: &splinekit::query::Nearest<D>| json!({"t": n.t, "point": coords(&n.point), "distance": n.distance}),
+        )
     }
 }
 
@@ -99,17 +115,14 @@ impl DimensionVisitor<Surfaces> for ProjectSurface<'_> {
     type Output = Result<Value>;
     fn visit<const D: usize>(self, surface: &dyn Surface<D>) -> Result<Value> {
         let projector = SurfaceProjector::new(surface);
-        let entry = |n: &splinekit::query::NearestOnSurface<D>| json!({"u": n.u, "v": n.v, "point": coords(&n.point), "distance": n.distance});
-        let mut entries = Vec::with_capacity(self.0.points.len());
-        for i in 0..self.0.points.len() {
-            let q = self.0.point::<D>(i)?;
-            entries.push(if self.0.all {
-                Value::Array(projector.local_minima(&q, self.0.accuracy)?.iter().map(entry).collect())
-            } else {
-                entry(&projector.nearest(&q, self.0.accuracy)?)
-            });
-        }
-        Ok(self.0.wrap(entries, self.1))
+        self.0.answer(
+            self.1,
+            |q, accuracy| Ok(projector.nearest(q, accuracy)?),
+            |q, accuracy| Ok(projector.local_minima(q, accuracy)?),
+            |n: &splinekit::query::NearestOnSurface<D>| {
+                json!({"u": n.u, "v": n.v, "point": coords(&n.point), "distance": n.distance})
+            },
+        )
     }
 }
 

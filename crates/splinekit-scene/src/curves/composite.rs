@@ -9,7 +9,7 @@ use crate::bfunctions::{BFunctionDoc, ErbsDoc, NoParams, PolynomialDoc};
 use crate::budget::ShapeCost;
 use crate::dimension::{Curves, same_type};
 use crate::error::{DocumentError, Result};
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::{Decoration, DocumentKind, approximated_kind_items};
 
 /// `{"type":"bfunction","bfunction":{…}}`: the B-function as a 1-D curve on [0, 1].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -21,13 +21,7 @@ pub struct BFunctionShapeDoc {
 
 impl DocumentKind for BFunctionShapeDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::Approximate)
-    }
-    const BLENDING_MODEL: bool = false;
+    approximated_kind_items!(SplineView, CurveForm);
     fn dimension(&self) -> Result<usize> {
         Ok(1)
     }
@@ -71,13 +65,7 @@ impl BlendDoc {
 
 impl DocumentKind for BlendDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::Approximate)
-    }
-    const BLENDING_MODEL: bool = false;
+    approximated_kind_items!(SplineView, CurveForm);
     fn dimension(&self) -> Result<usize> {
         let a = self.first.dimension().map_err(|e| e.within("first"))?;
         let b = self.second.dimension().map_err(|e| e.within("second"))?;

@@ -12,7 +12,7 @@ use crate::defaults::is_false;
 use crate::dimension::Curves;
 use crate::error::{DocumentError, Result};
 use crate::points::{check_finite_list, dimension_of, to_point, to_points};
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::{Decoration, DocumentKind, approximated_kind_items, spline_kind_items};
 
 /// `{"type":"bezier","control_points":[[x,y],...]}`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -33,13 +33,7 @@ impl DocumentKind for BezierDoc {
             periodic: false,
         })
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::Spline(self.spline().expect("a spline kind")))
-    }
-    const BLENDING_MODEL: bool = false;
-    fn dimension(&self) -> Result<usize> {
-        dimension_of("control_points", &self.control_points)
-    }
+    spline_kind_items!(CurveForm, dimension_of);
     /// De Casteljau's triangle: n²/2 interpolations of D coordinates per point.
     fn cost(&self) -> ShapeCost {
         bezier_cost(&self.control_points, 0)
@@ -54,7 +48,6 @@ impl DocumentKind for BezierDoc {
     fn decoration(&self) -> Decoration<'_> {
         Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: false }
     }
-    fn set_time(&mut self, _time: f64) {}
 }
 
 /// `{"type":"rational_bezier","control_points":[...],"weights":[...]}`
@@ -78,13 +71,7 @@ impl DocumentKind for RationalBezierDoc {
             periodic: false,
         })
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::Spline(self.spline().expect("a spline kind")))
-    }
-    const BLENDING_MODEL: bool = false;
-    fn dimension(&self) -> Result<usize> {
-        dimension_of("control_points", &self.control_points)
-    }
+    spline_kind_items!(CurveForm, dimension_of);
     /// De Casteljau's triangle in homogeneous coordinates (one more than the points').
     fn cost(&self) -> ShapeCost {
         bezier_cost(&self.control_points, 1)
@@ -104,7 +91,6 @@ impl DocumentKind for RationalBezierDoc {
     fn decoration(&self) -> Decoration<'_> {
         Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: false }
     }
-    fn set_time(&mut self, _time: f64) {}
 }
 
 /// `{"type":"bspline","degree":p,"knots":[...],"control_points":[...],"periodic":false}`
@@ -140,13 +126,7 @@ impl DocumentKind for BSplineDoc {
             periodic: self.periodic,
         })
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::Spline(self.spline().expect("a spline kind")))
-    }
-    const BLENDING_MODEL: bool = false;
-    fn dimension(&self) -> Result<usize> {
-        dimension_of("control_points", &self.control_points)
-    }
+    spline_kind_items!(CurveForm, dimension_of);
     fn cost(&self) -> ShapeCost {
         spline_cost(self.degree, self.control_points.len(), coordinates(&self.control_points))
     }
@@ -158,7 +138,7 @@ impl DocumentKind for BSplineDoc {
         BSplineDoc {
             degree: 3,
             knots: vec![0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 5.0, 5.0, 5.0],
-            control_points: [
+            control_points: plane_points(&[
                 [0.0, 0.0],
                 [1.0, 2.0],
                 [2.0, -1.0],
@@ -167,17 +147,13 @@ impl DocumentKind for BSplineDoc {
                 [5.0, 2.0],
                 [6.0, -1.0],
                 [7.0, 0.0],
-            ]
-            .iter()
-            .map(|p| p.to_vec())
-            .collect(),
+            ]),
             periodic: false,
         }
     }
     fn decoration(&self) -> Decoration<'_> {
         Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: self.periodic }
     }
-    fn set_time(&mut self, _time: f64) {}
 }
 
 /// `{"type":"nurbs", ...bspline fields..., "weights":[...]}`
@@ -215,13 +191,7 @@ impl DocumentKind for NurbsDoc {
             periodic: self.periodic,
         })
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::Spline(self.spline().expect("a spline kind")))
-    }
-    const BLENDING_MODEL: bool = false;
-    fn dimension(&self) -> Result<usize> {
-        dimension_of("control_points", &self.control_points)
-    }
+    spline_kind_items!(CurveForm, dimension_of);
     fn cost(&self) -> ShapeCost {
         spline_cost(self.degree, self.control_points.len(), coordinates(&self.control_points) + 1)
     }
@@ -234,7 +204,7 @@ impl DocumentKind for NurbsDoc {
         NurbsDoc {
             degree: 2,
             knots: vec![0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0],
-            control_points: [
+            control_points: plane_points(&[
                 [1.0, 0.0],
                 [1.0, 1.0],
                 [0.0, 1.0],
@@ -244,10 +214,7 @@ impl DocumentKind for NurbsDoc {
                 [0.0, -1.0],
                 [1.0, -1.0],
                 [1.0, 0.0],
-            ]
-            .iter()
-            .map(|p| p.to_vec())
-            .collect(),
+            ]),
             weights: vec![1.0, w, 1.0, w, 1.0, w, 1.0, w, 1.0],
             periodic: false,
         }
@@ -255,7 +222,6 @@ impl DocumentKind for NurbsDoc {
     fn decoration(&self) -> Decoration<'_> {
         Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: self.periodic }
     }
-    fn set_time(&mut self, _time: f64) {}
 }
 
 /// `{"type":"hermite","points":[...],"tangents":[...],"params":[...]}`
@@ -273,13 +239,7 @@ pub struct HermiteDoc {
 
 impl DocumentKind for HermiteDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::Approximate)
-    }
-    const BLENDING_MODEL: bool = false;
+    approximated_kind_items!(SplineView, CurveForm);
     fn dimension(&self) -> Result<usize> {
         dimension_of("points", &self.points)
     }
@@ -329,13 +289,7 @@ pub struct CatmullRomDoc {
 
 impl DocumentKind for CatmullRomDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::Approximate)
-    }
-    const BLENDING_MODEL: bool = false;
+    approximated_kind_items!(SplineView, CurveForm);
     fn dimension(&self) -> Result<usize> {
         dimension_of("points", &self.points)
     }
@@ -394,6 +348,11 @@ impl DocumentKind for LineDoc {
         Decoration::None
     }
     fn set_time(&mut self, _time: f64) {}
+}
+
+/// Plane points as a document holds them (for the examples).
+fn plane_points(points: &[[f64; 2]]) -> Vec<Vec<f64>> {
+    points.iter().map(|p| p.to_vec()).collect()
 }
 
 /// Coordinates per point (of the first point; the dimension is checked when building).

@@ -11,7 +11,7 @@ use crate::defaults::{origin, tau, z_axis};
 use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::points::to_point;
-use crate::registry::{Decoration, DocumentKind, KindName, ModelFamily};
+use crate::registry::{Decoration, DocumentKind, KindName, ModelFamily, approximated_kind_items};
 
 /// `{"type":"revolution","curve":{…},"axis_point":[0,0,0],"axis":[0,0,1],"angle":2π}`:
 /// the curve turned about the axis; u is the angle, v the curve's parameter.
@@ -90,13 +90,7 @@ pub struct RuledDoc {
 
 impl DocumentKind for RuledDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Approximate)
-    }
-    const BLENDING_MODEL: bool = false;
+    approximated_kind_items!(NetView, SurfaceForm);
     fn dimension(&self) -> Result<usize> {
         same_dimension(&[("first", &self.first), ("second", &self.second)])
     }
@@ -215,13 +209,7 @@ pub struct CoonsDoc {
 
 impl DocumentKind for CoonsDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Approximate)
-    }
-    const BLENDING_MODEL: bool = false;
+    approximated_kind_items!(NetView, SurfaceForm);
     fn dimension(&self) -> Result<usize> {
         same_dimension(&[("bottom", &self.bottom), ("top", &self.top), ("left", &self.left), ("right", &self.right)])
     }
@@ -283,13 +271,7 @@ pub struct SweepDoc {
 
 impl DocumentKind for SweepDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Approximate)
-    }
-    const BLENDING_MODEL: bool = false;
+    approximated_kind_items!(NetView, SurfaceForm);
     fn dimension(&self) -> Result<usize> {
         Ok(3)
     }

@@ -10,7 +10,7 @@ use crate::defaults::is_false;
 use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::points::{check_finite_list, dimension_of, to_points};
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::{Decoration, DocumentKind, spline_kind_items};
 
 /// `{"type":"bezier_surface","control_points":[[...row...],...]}`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -32,13 +32,7 @@ impl DocumentKind for BezierSurfaceDoc {
             periodic: (false, false),
         })
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Spline(self.spline().expect("a spline kind")))
-    }
-    const BLENDING_MODEL: bool = false;
-    fn dimension(&self) -> Result<usize> {
-        net_dimension("control_points", &self.control_points)
-    }
+    spline_kind_items!(SurfaceForm, net_dimension);
     /// De Casteljau along every row, then once across: n_u·n_v² + n_u² interpolations.
     fn cost(&self) -> ShapeCost {
         let (nu, nv, d) = net_size(&self.control_points);
@@ -63,7 +57,6 @@ impl DocumentKind for BezierSurfaceDoc {
     fn decoration(&self) -> Decoration<'_> {
         Decoration::ControlNet(&self.control_points)
     }
-    fn set_time(&mut self, _time: f64) {}
 }
 
 /// `{"type":"bspline_surface", ...}`
@@ -99,13 +92,7 @@ impl DocumentKind for BSplineSurfaceDoc {
             periodic: (self.periodic_u, self.periodic_v),
         })
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Spline(self.spline().expect("a spline kind")))
-    }
-    const BLENDING_MODEL: bool = false;
-    fn dimension(&self) -> Result<usize> {
-        net_dimension("control_points", &self.control_points)
-    }
+    spline_kind_items!(SurfaceForm, net_dimension);
     fn cost(&self) -> ShapeCost {
         tensor_spline_cost(self.degree_u, self.degree_v, &self.control_points, 0.0)
     }
@@ -137,7 +124,6 @@ impl DocumentKind for BSplineSurfaceDoc {
     fn decoration(&self) -> Decoration<'_> {
         Decoration::ControlNet(&self.control_points)
     }
-    fn set_time(&mut self, _time: f64) {}
 }
 
 /// `{"type":"nurbs_surface", ...bspline_surface fields..., "weights":[[...]]}`
@@ -175,13 +161,7 @@ impl DocumentKind for NurbsSurfaceDoc {
             periodic: (self.periodic_u, self.periodic_v),
         })
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Spline(self.spline().expect("a spline kind")))
-    }
-    const BLENDING_MODEL: bool = false;
-    fn dimension(&self) -> Result<usize> {
-        net_dimension("control_points", &self.control_points)
-    }
+    spline_kind_items!(SurfaceForm, net_dimension);
     fn cost(&self) -> ShapeCost {
         tensor_spline_cost(self.degree_u, self.degree_v, &self.control_points, 1.0)
     }
@@ -221,7 +201,6 @@ impl DocumentKind for NurbsSurfaceDoc {
     fn decoration(&self) -> Decoration<'_> {
         Decoration::ControlNet(&self.control_points)
     }
-    fn set_time(&mut self, _time: f64) {}
 }
 
 /// A 3 × 3 net over [0, 2]² with its middle point raised.

@@ -299,17 +299,7 @@ fn check_interval(Interval { start, end }: Interval) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// xorshift64: a deterministic stream in [0, 1).
-    fn stream(seed: u64) -> impl FnMut() -> f64 {
-        let mut s = seed;
-        move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
+    use crate::test_stream::stream;
 
     /// Random knot vectors (clamped or not, with repeated interior knots) for degree p and
     /// n control points.

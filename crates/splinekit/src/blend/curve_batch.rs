@@ -23,7 +23,7 @@
 
 use super::knots::BlendKnots;
 use crate::basis::{BFunction, Side};
-use crate::curve::bezier_spans::{BINOMIAL, powers};
+use crate::curve::bezier_spans::{BINOMIAL, by_width, powers};
 use crate::{Interval, Point};
 
 /// Highest derivative order the batch path serves (higher orders take the general path).
@@ -130,15 +130,7 @@ pub(crate) fn eval_many<'a, const D: usize>(
             }
         };
     }
-    match degree {
-        1 => by_order!(2),
-        2 => by_order!(3),
-        3 => by_order!(4),
-        4 => by_order!(5),
-        5 => by_order!(6),
-        6 => by_order!(7),
-        _ => by_order!(8),
-    }
+    by_width!(degree, by_order)
 }
 
 /// [`eval_many`] for W = d + 1 Bézier points per local and K = order + 1 outputs.

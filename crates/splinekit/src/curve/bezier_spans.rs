@@ -100,6 +100,24 @@ impl<T: Coefficient> BezierSpans<T> {
     }
 }
 
+/// Calls `$then!(W)` with the literal width W = p + 1 of a span of degree p = 1 … 7, so
+/// that the code under it is monomorphised on W and its sums unroll (p = 0 is never asked
+/// for; the widest, 8, takes every degree above 6).
+macro_rules! by_width {
+    ($degree:expr, $then:ident) => {
+        match $degree {
+            1 => $then!(2),
+            2 => $then!(3),
+            3 => $then!(4),
+            4 => $then!(5),
+            5 => $then!(6),
+            6 => $then!(7),
+            _ => $then!(8),
+        }
+    };
+}
+pub(crate) use by_width;
+
 impl<T: Coefficient> BezierSpans<T> {
     /// The point c(t) on span `span` (which contains t): the Bernstein sum alone, without
     /// the derivative machinery of [`BezierSpans::eval`] (the same value as its `out[0]`).
@@ -230,15 +248,7 @@ impl<const D: usize> BezierSpans<Point<D>> {
         if order > MAX_LANE_ORDER {
             return self.eval_many(params, order, out, map, locate);
         }
-        match self.degree {
-            1 => by_order!(2),
-            2 => by_order!(3),
-            3 => by_order!(4),
-            4 => by_order!(5),
-            5 => by_order!(6),
-            6 => by_order!(7),
-            _ => by_order!(8),
-        }
+        by_width!(self.degree, by_order)
     }
 
     /// [`Self::lanes`] compiled for AVX2 (four lanes of doubles): the same operations in

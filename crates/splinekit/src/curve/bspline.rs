@@ -243,17 +243,7 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// xorshift64: a deterministic stream in [0, 1).
-    fn stream(seed: u64) -> impl FnMut() -> f64 {
-        let mut s = seed;
-        move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
+    use crate::test_stream::stream;
 
     /// Curves of degree p with n control points: clamped uniform, periodic uniform,
     /// non-uniform with repeated interior knots (clamped and unclamped), non-uniform

@@ -25,6 +25,22 @@ fn linear(a: f64, b: f64) -> F {
     F::Polynomial(vec![a, b])
 }
 
+/// The surface (r g(v) cos u, r g(v) sin u, h v), u ∈ [0, 2π] closed, v ∈ [0, 1]: the
+/// profile radius r g(v) turned about the z-axis (g = 1 a cylinder, g = 1 − v a cone).
+fn about_z(r: f64, g: F, h: f64) -> SeparableSurface {
+    SeparableSurface {
+        coordinates: [
+            vec![term(r, F::cos(1.0, 1.0), g.clone())],
+            vec![term(r, F::sin(1.0, 1.0), g)],
+            vec![term(h, one(), linear(0.0, 1.0))],
+        ],
+        domain_u: Interval::new(0.0, TAU),
+        domain_v: Interval::new(0.0, 1.0),
+        closed_u: true,
+        closed_v: false,
+    }
+}
+
 model!(
     /// The plane origin + u·U + v·V on [0, 1]², open.
     Plane
@@ -62,19 +78,7 @@ impl Cylinder {
     /// Radius r > 0 and height h > 0.
     pub fn new(radius: f64, height: f64) -> Result<Self> {
         let (r, h) = (positive("radius", radius)?, positive("height", height)?);
-        Ok(Cylinder {
-            surface: SeparableSurface {
-                coordinates: [
-                    vec![term(r, F::cos(1.0, 1.0), one())],
-                    vec![term(r, F::sin(1.0, 1.0), one())],
-                    vec![term(h, one(), linear(0.0, 1.0))],
-                ],
-                domain_u: Interval::new(0.0, TAU),
-                domain_v: Interval::new(0.0, 1.0),
-                closed_u: true,
-                closed_v: false,
-            },
-        })
+        Ok(Cylinder { surface: about_z(r, one(), h) })
     }
 }
 
@@ -87,19 +91,7 @@ impl Cone {
     /// Base radius r > 0 and height h > 0.
     pub fn new(radius: f64, height: f64) -> Result<Self> {
         let (r, h) = (positive("radius", radius)?, positive("height", height)?);
-        Ok(Cone {
-            surface: SeparableSurface {
-                coordinates: [
-                    vec![term(r, F::cos(1.0, 1.0), linear(1.0, -1.0))],
-                    vec![term(r, F::sin(1.0, 1.0), linear(1.0, -1.0))],
-                    vec![term(h, one(), linear(0.0, 1.0))],
-                ],
-                domain_u: Interval::new(0.0, TAU),
-                domain_v: Interval::new(0.0, 1.0),
-                closed_u: true,
-                closed_v: false,
-            },
-        })
+        Ok(Cone { surface: about_z(r, linear(1.0, -1.0), h) })
     }
 }
 
