@@ -9,40 +9,12 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-const N: usize = 1000;
-const M: usize = 1_000_000;
-/// The large curve: control points and random parameters.
-const N_LARGE: usize = 100_000;
+mod workload;
+
+use workload::{M, N, N_LARGE, control, knots, params};
+
+/// Random parameters of the large curve.
 const M_LARGE: usize = 20_000;
-
-fn control(i: usize) -> [f64; 3] {
-    let x = i as f64;
-    [x, (x * 0.37).sin(), (x * 0.11).cos()]
-}
-
-fn knots(n: usize) -> Vec<f64> {
-    let p = 3;
-    let mut k = vec![0.0; p + 1];
-    for i in 1..n - p {
-        k.push(i as f64 / (n - p) as f64);
-    }
-    k.extend([1.0; 4]);
-    k
-}
-
-fn params() -> (Vec<f64>, Vec<f64>) {
-    let mut s = 0x9E3779B97F4A7C15u64;
-    let random = (0..M)
-        .map(|_| {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        })
-        .collect();
-    let sorted = (0..M).map(|i| i as f64 / (M - 1) as f64).collect();
-    (random, sorted)
-}
 
 /// Surface workload: a bicubic B-spline surface with 100 × 100 control points, points and
 /// unit normals on a G × G grid (G = 300), best of 5, ns per grid point.
@@ -174,8 +146,8 @@ fn main() {
             });
             rows.push(("splinekit (parallel)".into(), "point, random order (batch)".into(), r.0, r.1));
         }
-        let large =
-            BSplineCurve::new(3, k_large.clone(), (0..N_LARGE).map(|i| Point::<3>::from(control(i))).collect()).unwrap();
+        let large = BSplineCurve::new(3, k_large.clone(), (0..N_LARGE).map(|i| Point::<3>::from(control(i))).collect())
+            .unwrap();
         let r = time_per(M_LARGE, &mut || random_large.iter().map(|&t| large.point(t)[1]).sum());
         rows.push(("splinekit".into(), "point, random, 10^5 cp".into(), r.0, r.1));
         let r = time_per(M_LARGE, &mut || {

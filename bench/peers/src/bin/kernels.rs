@@ -8,7 +8,11 @@ use std::time::Instant;
 use splinekit::Point;
 use splinekit::curve::{BSplineCurve, Curve};
 
-const M: usize = 1_000_000;
+#[path = "../workload.rs"]
+mod workload;
+
+use workload::{M, N, N_LARGE, control, knots, params};
+
 const G: usize = 300;
 
 fn best(repeats: usize, count: usize, f: &mut dyn FnMut() -> f64) -> f64 {
@@ -38,18 +42,13 @@ fn main() {
     let filter = args.get(1).cloned().unwrap_or_default();
     let repeats: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(15);
     let run = |name: &str| name.contains(&filter);
-    let sorted: Vec<f64> = (0..M).map(|i| i as f64 / (M - 1) as f64).collect();
-    let report = |name: &str, ns: f64, fl: f64| println!("{name:<34} {ns:8.2} ns   floor {fl:6.2} ns   ×{:5.2}", ns / fl);
+    let (random, sorted) = params();
+    let curve =
+        |n: usize| BSplineCurve::new(3, knots(n), (0..n).map(|i| Point::<3>::from(control(i))).collect()).unwrap();
+    let report =
+        |name: &str, ns: f64, fl: f64| println!("{name:<34} {ns:8.2} ns   floor {fl:6.2} ns   ×{:5.2}", ns / fl);
 
-    let n = 1000;
-    let mut k = vec![0.0; 4];
-    k.extend((1..n - 3).map(|i| i as f64 / (n - 3) as f64));
-    k.extend([1.0; 4]);
-    let pts = (0..n).map(|i| {
-        let x = i as f64;
-        Point::<3>::new(x, (x * 0.37).sin(), (x * 0.11).cos())
-    });
-    let c = BSplineCurve::new(3, k, pts.collect()).unwrap();
+    let c = curve(N);
     let mut out = vec![Point::<3>::zeros(); 3 * M];
     if run("sorted points") {
         let ns = best(repeats, M, &mut || {
@@ -85,15 +84,7 @@ fn main() {
     }
     if run("sorted points, 10⁵ control points") {
         // About ten parameters a span: blocks of four often straddle two spans.
-        let n = 100_000;
-        let mut k = vec![0.0; 4];
-        k.extend((1..n - 3).map(|i| i as f64 / (n - 3) as f64));
-        k.extend([1.0; 4]);
-        let pts = (0..n).map(|i| {
-            let x = i as f64;
-            Point::<3>::new(x, (x * 0.37).sin(), (x * 0.11).cos())
-        });
-        let big = BSplineCurve::new(3, k, pts.collect()).unwrap();
+        let big = curve(N_LARGE);
         let ns = best(repeats, M, &mut || {
             big.eval_many(&sorted, 0, &mut out[..M]);
             out[M / 3][1]
@@ -102,15 +93,6 @@ fn main() {
     }
     if run("random points") {
         // The peers' workload: point(t) one parameter at a time, random order, summed.
-        let mut s = 0x9E3779B97F4A7C15u64;
-        let random: Vec<f64> = (0..M)
-            .map(|_| {
-                s ^= s << 13;
-                s ^= s >> 7;
-                s ^= s << 17;
-                (s >> 11) as f64 / (1u64 << 53) as f64
-            })
-            .collect();
         let ns = best(repeats, M, &mut || random.iter().map(|&t| c.point(t)[1]).sum());
         report("random points, point(t)", ns, floor(repeats, M, 1));
     }
