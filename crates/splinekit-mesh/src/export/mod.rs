@@ -5,6 +5,7 @@
 //! refuses with an [`ExportError`] naming the first one that does not, so no file ever
 //! holds NaN or infinity; write errors of the output are returned, never ignored.
 
+pub mod base64;
 pub mod by_extension;
 pub mod gltf;
 pub mod obj;
