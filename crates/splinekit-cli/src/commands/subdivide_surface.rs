@@ -13,11 +13,13 @@ use splinekit::Point;
 use splinekit::subdivision::surface::bezier_patches::MAX_DEPTH;
 use splinekit::subdivision::surface::{BoundaryRule, Cage, Crease, Scheme as KernelScheme, SubdivisionSurface};
 use splinekit_mesh::doo_sabin_limit::doo_sabin_limit_mesh;
-use splinekit_mesh::export::mesh_bytes;
+
+use splinekit_mesh::export::{ExportError, mesh_bytes};
 use splinekit_mesh::limit_mesh::{LimitMesh, limit_mesh};
 use splinekit_mesh::subdivision_surface::{PolygonMesh, SurfaceScheme, read_obj_polygons, write_obj_polygons};
 
 use crate::input::read_text;
+use std::borrow::Cow;
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum Scheme {
@@ -193,15 +195,12 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
 
 /// A limit mesh (`--limit`): OBJ with its normals (`vn`), the other formats as triangles.
 fn write_limit(m: &LimitMesh, name: &str, ext: &str, output: &str) -> Result<()> {
-    let bytes = match ext {
-        "obj" => {
-            let mut bytes = Vec::new();
-            write_obj_with_normals(m, name, &mut bytes).map(|()| bytes)
-        }
-        other => mesh_bytes(std::borrow::Cow::Owned(m.triangles()), name, other),
-    }
-    .map_err(|e| anyhow!("{e}"))?;
-    crate::output::write_bytes(&bytes, Some(output))
+    write_as(
+        ext,
+        output,
+        |bytes| write_obj_with_normals(m, name, bytes),
+        || mesh_bytes(Cow::Owned(m.triangles()), name, ext),
+    )
 }
 
 /// The limit surface as STEP: one Bézier surface per patch of
@@ -260,23 +259,34 @@ fn write_step(
 }
 
 fn write(out: &PolygonMesh, name: &str, ext: &str, path: &str) -> Result<()> {
-    let bytes = match ext {
-        "obj" => {
-            let mut bytes = Vec::new();
-            write_obj_polygons(out, name, &mut bytes).map(|()| bytes)
-        }
-        other => mesh_bytes(std::borrow::Cow::Owned(out.triangulate()), name, other),
+    write_as(
+        ext,
+        path,
+        |bytes| write_obj_polygons(out, name, bytes),
+        || mesh_bytes(Cow::Owned(out.triangulate()), name, ext),
+    )
+}
+
+/// Writes `path`: by `obj` (the polygons as they are) for `.obj`, else the bytes of
+/// `triangles` (the other formats, triangulated).
+fn write_as(
+    ext: &str,
+    path: &str,
+    obj: impl FnOnce(&mut Vec<u8>) -> std::result::Result<(), ExportError>,
+    triangles: impl FnOnce() -> std::result::Result<Vec<u8>, ExportError>,
+) -> Result<()> {
+    let bytes = if ext == "obj" {
+        let mut bytes = Vec::new();
+        obj(&mut bytes).map(|()| bytes)
+    } else {
+        triangles()
     }
     .map_err(|e| anyhow!("{e}"))?;
     crate::output::write_bytes(&bytes, Some(path))
 }
 
 /// OBJ of a limit mesh: `v` per vertex, `vn` per normal, faces `f v//n …`.
-fn write_obj_with_normals(
-    mesh: &LimitMesh,
-    name: &str,
-    out: &mut Vec<u8>,
-) -> std::result::Result<(), splinekit_mesh::export::ExportError> {
+fn write_obj_with_normals(mesh: &LimitMesh, name: &str, out: &mut Vec<u8>) -> std::result::Result<(), ExportError> {
     use splinekit_mesh::export::representable::{Precision, check_vectors, one_line};
     use std::io::Write;
     check_vectors(&mesh.positions, Precision::Double, "OBJ", "vertices")?;

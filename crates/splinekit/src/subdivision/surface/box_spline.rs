@@ -1,7 +1,7 @@
 //! The regular Loop patch: the quartic three-direction box spline (Stam 1998, "Evaluation
 //! of Loop subdivision surfaces"), as 12 quartic polynomials in (u, v) on the triangle
 //! P(u, v) = c₀ + u(c₁ − c₀) + v(c₂ − c₀), one per control point of
-//! [`super::regular_patch::loop_points`].
+//! [`super::regular_patch::loop_control_points`].
 //!
 //! The polynomials are derived, once, from the subdivision rules themselves rather than
 //! typed in: a quartic on the triangle is fixed by its values at the 15 points
@@ -15,7 +15,7 @@ use std::sync::OnceLock;
 
 use super::cage::Cage;
 use super::limit_eval::{EvalScheme, evaluate_local};
-use super::regular_patch::loop_points;
+use super::regular_patch::loop_control_points;
 use super::topology::Topology;
 use crate::Point;
 
@@ -64,7 +64,13 @@ fn derive() -> [[f64; 15]; 12] {
     }
     let lattice = Cage::new(vertices, &faces);
     let topo = Topology::new(&lattice).expect("the lattice is a manifold");
-    let points = loop_points(&topo, 0).expect("the central triangle is regular");
+    // Which lattice vertex is each control point: read off a copy whose vertices carry
+    // their own index (the central triangle is interior, so no phantom point is formed).
+    let mut labelled = lattice.clone();
+    for (q, x) in labelled.vertices.iter_mut().enumerate() {
+        *x = Point::<3>::new(q as f64, 0.0, 0.0);
+    }
+    let points = loop_control_points(&labelled, &topo, 0).expect("the central triangle is regular").map(|p| p.x as u32);
     let samples: Vec<(f64, f64)> =
         (0..=4).flat_map(|i| (0..=4 - i).map(move |j| (i as f64 / 4.0, j as f64 / 4.0))).collect();
     let mut m = [[0.0; 15]; 15];

@@ -156,40 +156,12 @@ pub fn cubic_bspline_basis(t: f64) -> [[f64; 4]; 3] {
     ]
 }
 
-/// The 12 control point indices of triangle f (Loop) when its three corners are smooth
-/// interior vertices of valence 6: its corners c₀, c₁, c₂, then for each corner k the
-/// three neighbours of cₖ outside the face that follow, counter-clockwise, the edge to
-/// cₖ₋₁. This is the order of the basis in [`super::box_spline`], whose derivation uses
-/// the indices; evaluation takes [`loop_control_points`], which also admits crease corners.
-pub fn loop_points(topo: &Topology, f: u32) -> Option<[u32; 12]> {
-    if topo.face_len(f) != 3 {
-        return None;
-    }
-    let h0 = topo.face_start(f);
-    let mut r = [0u32; 12];
-    for k in 0..3u32 {
-        let h = h0 + k;
-        let c = topo.origin(h);
-        let out = topo.outgoing(c);
-        if topo.vertex_boundary[c as usize] || out.len() != 6 {
-            return None;
-        }
-        if topo.vertex_edges(c).iter().any(|&(e, _)| topo.sharpness[e as usize] != 0.0) {
-            return None;
-        }
-        let i = out.iter().position(|&x| x == h)?;
-        r[k as usize] = c;
-        for m in 0..3 {
-            r[3 + 3 * k as usize + m] = topo.dest(out[(i + 2 + m) % 6]);
-        }
-    }
-    Some(r)
-}
-
-/// The 12 control points of triangle f (Loop) if its limit is a box-spline patch, in the
-/// order of [`loop_points`]: every corner a smooth interior vertex of valence 6 or a
-/// regular crease vertex on the face's side, whose two lattice points beyond the crease
-/// are phantom points (see the module doc).
+/// The 12 control points of triangle f (Loop) if its limit is a box-spline patch: every
+/// corner a smooth interior vertex of valence 6 or a regular crease vertex on the face's
+/// side, whose two lattice points beyond the crease are phantom points (see the module
+/// doc). In the order of the basis of [`super::box_spline`]: the corners c₀, c₁, c₂, then
+/// for each corner k the three lattice neighbours of cₖ outside the face that follow,
+/// counter-clockwise, the edge to cₖ₋₁.
 pub fn loop_control_points(cage: &Cage, topo: &Topology, f: u32) -> Option<[Point<3>; 12]> {
     if topo.face_len(f) != 3 {
         return None;
