@@ -194,7 +194,7 @@ fn bad_knots_and_insertions_are_refused_with_the_field_and_numbers() {
     let e = err(
         r#"{"type":"blending_spline_surface","model":{"type":"torus"},"local_surfaces":[3,4],"knots_u":[0,2,1,6.283185307179586]}"#,
     );
-    assert!(e.contains("knots_u[2]") && e.contains("2"), "{e}");
+    assert!(e.contains("knots_u[2]"), "{e}");
     let e = err(
         r#"{"type":"blending_spline_surface","model":{"type":"torus"},"local_surfaces":[4,4],"knots_u":[0,1,2,6.283185307179586]}"#,
     );
@@ -206,7 +206,7 @@ fn bad_knots_and_insertions_are_refused_with_the_field_and_numbers() {
     let e = insert_local_curve(&explicit, 0.5).unwrap_err().to_string();
     assert!(e.starts_with("local_curves"), "{e}");
     let e = insert_local_curve(&curve_doc(HEART), 9.0).unwrap_err().to_string();
-    assert!(e.contains("t") && e.contains("got 9"), "{e}");
+    assert!(e.starts_with("t: ") && e.contains("got 9"), "{e}");
     let e = insert_knot_line(&surface_doc(TORUS), Direction::V, -1.0).unwrap_err().to_string();
-    assert!(e.contains("v") && e.contains("got -1"), "{e}");
+    assert!(e.starts_with("v: ") && e.contains("got -1"), "{e}");
 }

@@ -400,14 +400,7 @@ impl Studio {
         let edit = GroupStart::read(self.document.scene(), self.time(), &handles)
             .ok_or_else(|| "nudge: the selection's values cannot be read".to_string())
             .and_then(|g| g.edit(&GroupMove::Translate(d)).map_err(|e| e.to_string()));
-        match edit {
-            Ok(edit) => {
-                if self.edit(edit, false) {
-                    self.refresh_selection();
-                }
-            }
-            Err(e) => self.status.message = Some(e),
-        }
+        self.apply_or_say(edit);
     }
 
     /// Brings the selected handles to their places in the document as it is now.
@@ -654,7 +647,6 @@ impl Studio {
         self.view.pick(self.selection.handle.as_ref(), projector, mouse)
     }
 
-    /// Starts dragging the handle under `mouse`; `false` when there is none.
     /// Starts dragging the handle under `mouse`; `false` when there is none. A handle of
     /// a selection of several drags the whole selection; another becomes the selection.
     pub fn begin_drag(&mut self, projector: &Projector, mouse: [f64; 2], kind: GestureKind) -> bool {

@@ -165,15 +165,15 @@ fn bad_insertion_parameters_are_refused_with_the_field_and_numbers() {
     let knot = c.centre(2);
     for t in [knot, -1.0, 100.0, f64::NAN] {
         let e = c.insert_local(t).unwrap_err().to_string();
-        assert!(e.contains("t") && e.contains("strictly inside the domain [0, 6.28"), "{e}");
+        assert!(e.starts_with("t: ") && e.contains("strictly inside the domain [0, 6.28"), "{e}");
     }
     let mut s = torus_spline(PatchKind::Bezier(3, 3));
     let e = s.insert_knot_line(Direction::U, 7.0).unwrap_err().to_string();
-    assert!(e.starts_with("u") || e.contains(" u") || e.contains("u:"), "{e}");
+    assert!(e.starts_with("u: "), "{e}");
     assert!(e.contains("got 7"), "{e}");
     let v = s.knots().1.centre(1);
     let e = s.insert_knot_line(Direction::V, v).unwrap_err().to_string();
-    assert!(e.contains("v") && e.contains("not on a knot"), "{e}");
+    assert!(e.starts_with("v: ") && e.contains("not on a knot"), "{e}");
     assert_eq!(s.local_count(), (8, 6), "a refused insertion changes nothing");
 }
 

@@ -130,7 +130,6 @@ impl<const D: usize> BlendingSplineSurface<D> {
             }
             p.support.v = support;
         }
-        p.world = p.net.clone();
         let transform = patch.transform;
         patch.set_transform(transform);
     }
