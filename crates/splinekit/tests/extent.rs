@@ -96,7 +96,7 @@ fn the_butterfly_holds_its_dense_samples() {
 }
 
 #[test]
-fn spanning_passes_over_nan_coordinates_and_around_compares() {
+fn spanning_passes_over_nan_coordinates_and_around_grows_by_its_margin() {
     let pts = [p3(1.0, f64::NAN, 0.0), p3(-1.0, 2.0, 0.5), p3(0.0, -3.0, f64::NAN)];
     let b = Aabb::spanning(pts).unwrap();
     assert_eq!((b.min, b.max), (p3(-1.0, -3.0, 0.0), p3(1.0, 2.0, 0.5)));
@@ -105,4 +105,6 @@ fn spanning_passes_over_nan_coordinates_and_around_compares() {
     assert!(e.is_empty());
     e.include(&p3(1.0, 2.0, 3.0));
     assert!(!e.is_empty() && e.contains(&p3(1.0, 2.0, 3.0), 0.0) && !e.contains(&p3(1.0, 2.0, 3.1), 0.05));
+    let a = Aabb::around(&[p3(1.0, 0.0, 0.0), p3(-1.0, 2.0, 0.5)], 0.5);
+    assert_eq!((a.min, a.max), (p3(-1.5, -0.5, -0.5), p3(1.5, 2.5, 1.0)));
 }

@@ -104,9 +104,7 @@ impl BlendingSplineSurfaceDoc {
         } else {
             let knots = |given: &Option<Vec<f64>>, i: usize, field: &str, domain: Interval, closed: bool| {
                 let knots = match given {
-                    // The kernel names the field `knots` (`knots[3]: …`): here it is `field`.
-                    Some(k) => BlendKnots::new(k.clone(), closed)
-                        .map_err(|e| DocumentError::new("", e.to_string().replacen("knots", field, 1)))?,
+                    Some(k) => BlendKnots::new_as(k.clone(), closed, field)?,
                     None => {
                         BlendKnots::uniform(domain, self.local_surfaces[i], closed, &format!("local_surfaces[{i}]"))?
                     }

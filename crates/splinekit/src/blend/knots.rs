@@ -63,25 +63,30 @@ impl BlendKnots {
     /// c₀ + period). Non-decreasing; a knot may appear twice (a C⁰ joint) but not at the
     /// ends, and never three times.
     pub fn new(knots: Vec<f64>, closed: bool) -> Result<Self> {
+        Self::new_as(knots, closed, "knots")
+    }
+
+    /// [`BlendKnots::new`] with errors naming `field` (e.g. `knots_u[2]`) instead of `knots`.
+    pub fn new_as(knots: Vec<f64>, closed: bool, field: &str) -> Result<Self> {
         let count = if closed { knots.len().saturating_sub(1) } else { knots.len() };
-        check_count(count, closed, "knots")?;
+        check_count(count, closed, field)?;
         if let Some(i) = knots.iter().position(|k| !k.is_finite()) {
-            return Err(Error::invalid(format!("knots[{i}]"), format!("must be finite, got {}", knots[i])));
+            return Err(Error::invalid(format!("{field}[{i}]"), format!("must be finite, got {}", knots[i])));
         }
         for i in 1..knots.len() {
             if knots[i] < knots[i - 1] {
                 return Err(Error::invalid(
-                    format!("knots[{i}]"),
+                    format!("{field}[{i}]"),
                     format!("knots must not decrease: {} follows {}", knots[i], knots[i - 1]),
                 ));
             }
             if i >= 2 && knots[i] == knots[i - 2] {
-                return Err(Error::invalid(format!("knots[{i}]"), format!("{} appears three times", knots[i])));
+                return Err(Error::invalid(format!("{field}[{i}]"), format!("{} appears three times", knots[i])));
             }
         }
         let last = knots.len() - 1;
         if knots[1] == knots[0] || knots[last] == knots[last - 1] {
-            return Err(Error::invalid("knots", "the first and last intervals must not be empty"));
+            return Err(Error::invalid(field, "the first and last intervals must not be empty"));
         }
         Ok(BlendKnots { knots, closed })
     }
