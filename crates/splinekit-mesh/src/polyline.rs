@@ -26,10 +26,18 @@ impl<const D: usize> Polyline<D> {
     /// line's, Python's and the renderer's): the largest distance of the points of the
     /// curve's regular polyline of [`ROUGH_SEGMENTS`] segments from its first point, about
     /// the curve's diameter. Their polylines are defined by this measure, so it is kept
-    /// (here, once) rather than replaced by [`Curve::extent`].
+    /// (here, once) rather than replaced by
+    /// [`CurveExtent::extent`](splinekit::query::CurveExtent::extent).
     pub fn rough_size<C: Curve<D> + ?Sized>(curve: &C) -> Result<f64> {
         let rough = Self::regular(curve, ROUGH_SEGMENTS)?;
         Ok(rough.points.iter().map(|p| (p - rough.points[0]).norm()).fold(0.0, f64::max))
+    }
+
+    /// The flattening of a curve given no tolerance (the command line's and Python's):
+    /// [`Self::adaptive_with_limit`] to 10⁻³ of [`Self::rough_size`].
+    pub fn adaptive_by_size<C: Curve<D> + ?Sized>(curve: &C, max_points: usize) -> Result<Self> {
+        let size = Self::rough_size(curve)?.max(1e-12);
+        Self::adaptive_with_limit(curve, size * 1e-3, max_points)
     }
 
     /// `segments` equal parameter steps over the domain (closed curves: without the

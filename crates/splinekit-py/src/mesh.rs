@@ -97,10 +97,7 @@ impl DimensionVisitor<Curves> for CurvePoints {
             )),
             (Some(n), _) => Polyline::regular(c, n),
             (None, Some(t)) => Polyline::adaptive_with_limit(c, t, MAX_CURVE_POINTS),
-            (None, None) => {
-                let size = Polyline::rough_size(c)?.max(1e-12);
-                Polyline::adaptive_with_limit(c, size * 1e-3, MAX_CURVE_POINTS)
-            }
+            (None, None) => Polyline::adaptive_by_size(c, MAX_CURVE_POINTS),
         }?;
         Ok((poly.points.iter().flat_map(|p| p.iter().copied()).collect(), D))
     }

@@ -306,7 +306,7 @@ fn mark_interval(breaks: &[f64], t: f64, marked: &mut [bool]) {
 }
 
 /// The exact B-spline form of a surface that is a polynomial of bidegree ≤ (m_u, m_v) on
-/// every cell of the break grid: per cell, P_kl = Σ T_u[k][i] T_v[l][j] ∂^{i+j}S(a, c)
+/// every cell of the break grid: per cell, P_kl = Σ T_u\[k\]\[i\] T_v\[l\]\[j\] ∂^{i+j}S(a, c)
 /// (the tensor form of [`polynomial_curve`]).
 pub fn polynomial_surface(
     model: &dyn Surface<3>,

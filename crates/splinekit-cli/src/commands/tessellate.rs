@@ -50,10 +50,7 @@ impl DimensionVisitor<Curves> for CurvePoly<'_> {
             }
             (Some(n), _) => Polyline::regular(c, n),
             (None, Some(t)) => Polyline::adaptive_with_limit(c, t, MAX_CURVE_POINTS),
-            (None, None) => {
-                let size = Polyline::rough_size(c)?.max(1e-12);
-                Polyline::adaptive_with_limit(c, size * 1e-3, MAX_CURVE_POINTS)
-            }
+            (None, None) => Polyline::adaptive_by_size(c, MAX_CURVE_POINTS),
         }
         .map_err(|e| anyhow!("--{e}"))?;
         Ok((poly.points.iter().map(to3).collect(), poly.closed, D))

@@ -1,5 +1,6 @@
 //! The extent of a curve or a surface: the axis-aligned box of its points, what
-//! [`Curve::extent`] and [`Surface::extent`] give for shapes without a box of their own.
+//! [`CurveExtent::extent`] and [`SurfaceExtent::extent`] give for shapes without an
+//! enclosing box of their own.
 //!
 //! Method. Each direction of the domain is cut at the shape's breakpoints and every span
 //! sampled regularly: [`CURVE_SAMPLES`] samples over a curve's domain at least,

@@ -6,7 +6,7 @@ use super::cage::Cage;
 use super::catmull_clark::{QuadRule, quad_split};
 use super::topology::Topology;
 
-/// One bilinear step (vertex order and faces as in [`super::catmull_clark_step`]).
+/// One bilinear step (vertex order and faces as in [`super::catmull_clark::catmull_clark_step`]).
 pub fn bilinear_step(cage: &Cage, topo: &Topology) -> Cage {
     quad_split(cage, topo, QuadRule::Bilinear)
 }
