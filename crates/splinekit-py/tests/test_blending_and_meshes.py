@@ -8,13 +8,6 @@ import pytest
 import splinekit as sk
 
 ROOT = pathlib.Path(__file__).resolve().parents[3]
-HEART = {
-    "type": "blending_spline",
-    "model": {"type": "heart"},
-    "local_curves": 8,
-    "local": {"type": "bezier", "degree": 3},
-    "bfunction": {"type": "erbs"},
-}
 
 
 def test_bfunctions():
@@ -37,8 +30,8 @@ def test_bfunctions():
         sk.bfunction("sigmoid")
 
 
-def test_set_transform_moves_only_its_local_curve_in_place():
-    c = sk.load(HEART)
+def test_set_transform_moves_only_its_local_curve_in_place(heart):
+    c = sk.load(heart)
     a, b = c.domain
     t = np.linspace(a, b, 400, endpoint=False)
     before = c(t)
@@ -66,15 +59,15 @@ def test_set_transform_moves_only_its_local_curve_in_place():
         sk.load({"type": "heart"}).set_transform(0, scale=2.0)
 
 
-def test_set_transform_is_seen_by_every_reference():
-    c = sk.load(HEART)
+def test_set_transform_is_seen_by_every_reference(heart):
+    c = sk.load(heart)
     same = c
     c.set_transform(0, translate=[1, 0, 0])
     assert same.to_dict()["transforms"] == {"0": {"translate": [1, 0, 0]}}
 
 
-def test_local_pieces_reproduce_the_spline_at_the_knots():
-    c = sk.load(HEART)
+def test_local_pieces_reproduce_the_spline_at_the_knots(heart):
+    c = sk.load(heart)
     pieces = c.local_pieces(samples=9)
     assert len(pieces) == 8
     for p in pieces:

@@ -14,13 +14,6 @@ import pytest
 import splinekit as sk
 
 ROOT = pathlib.Path(__file__).resolve().parents[3]
-HEART = {
-    "type": "blending_spline",
-    "model": {"type": "heart"},
-    "local_curves": 8,
-    "local": {"type": "bezier", "degree": 3},
-    "bfunction": {"type": "erbs"},
-}
 EXAMPLES = sorted((ROOT / "examples" / "shapes").glob("*.json")) + sorted((ROOT / "examples" / "scenes").glob("*.json"))
 
 
@@ -131,8 +124,8 @@ def test_a_fit_report_state_holds_its_parameters_as_exact_bytes():
         restore(tag, (*state[:3], bytes(12)), extra)
 
 
-def test_a_transformed_blending_spline_travels_with_its_frames():
-    curve = sk.load(HEART)
+def test_a_transformed_blending_spline_travels_with_its_frames(heart):
+    curve = sk.load(heart)
     before = pickle.dumps(curve, protocol=5)
     curve.set_transform(1, translate=[0.25, -0.5, 0.125], scale=1.5)
     again = pickle.loads(pickle.dumps(curve, protocol=5))
@@ -141,12 +134,12 @@ def test_a_transformed_blending_spline_travels_with_its_frames():
     assert pickle.loads(before) != curve
 
 
-def test_copies_are_independent():
-    curve = sk.load(HEART)
+def test_copies_are_independent(heart):
+    curve = sk.load(heart)
     twin = copy.deepcopy(curve)
     twin.set_transform(0, translate=[1.0, 0.0, 0.0])
     assert twin != curve
-    assert curve == sk.load(HEART)
+    assert curve == sk.load(heart)
 
 
 def test_equality_is_by_document():
