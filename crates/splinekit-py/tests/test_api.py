@@ -12,13 +12,22 @@ STUBS = pathlib.Path(sk.__file__).with_name("_splinekit.pyi")
 
 
 def stub_names():
+    """The stub's public classes, each with its methods (those of the stub-only private
+    bases it derives from included: they stand for methods each class defines itself at
+    run time), and its public functions."""
     tree = ast.parse(STUBS.read_text())
-    classes, functions = {}, set()
+    bodies, bases, functions = {}, {}, set()
     for node in tree.body:
         if isinstance(node, ast.ClassDef):
-            classes[node.name] = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
+            bodies[node.name] = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
+            bases[node.name] = [b.id for b in node.bases if isinstance(b, ast.Name) and b.id.startswith("_")]
         elif isinstance(node, ast.FunctionDef) and not node.name.startswith("_"):
             functions.add(node.name)
+
+    def methods(name):
+        return bodies[name].union(*(methods(b) for b in bases[name]))
+
+    classes = {name: methods(name) for name in bodies if not name.startswith("_")}
     return classes, functions
 
 
