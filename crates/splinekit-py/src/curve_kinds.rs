@@ -4,7 +4,6 @@
 //! message is the command line's.
 
 use numpy::{PyArray1, PyArray2};
-use pyo3::PyClass;
 use pyo3::prelude::*;
 use serde_json::{Map, Value};
 use splinekit_scene::{CurveDocument, SplineView};
@@ -13,6 +12,7 @@ use crate::curve::PyCurve;
 use crate::errors::{OrValueError, value_error};
 use crate::fit_report::FitReport;
 use crate::json_value::to_value;
+use crate::kind_classes::{OwnClass, stateless_own_classes};
 
 /// The document `{"type": ty, name: value, …}` from Python arguments (None skipped).
 pub fn document(ty: &str, fields: &[(&str, Option<&Bound<'_, PyAny>>)]) -> PyResult<Value> {
@@ -217,28 +217,13 @@ pub fn curve_object(py: Python<'_>, doc: CurveDocument) -> PyResult<Bound<'_, Py
     wrap(py, PyCurve::new(doc)?, None)
 }
 
-/// A hand-written curve class, made for a built curve (a `BSpline` keeps the fit report).
-pub trait OwnClass: PyClass<BaseType = PyCurve> {
-    /// The class's part of the object.
-    fn made(report: Option<Py<FitReport>>) -> Self;
-}
-
 impl OwnClass for PyBSpline {
     fn made(report: Option<Py<FitReport>>) -> Self {
         PyBSpline { report }
     }
 }
 
-macro_rules! own_classes {
-    ($($class:ident),+) => {
-        $( impl OwnClass for $class {
-            fn made(_report: Option<Py<FitReport>>) -> Self {
-                $class
-            }
-        } )+
-    };
-}
-own_classes!(PyNurbs, PyBezier, PyRationalBezier, PyHermite, PyCatmullRom);
+stateless_own_classes!(PyNurbs, PyBezier, PyRationalBezier, PyHermite, PyCatmullRom);
 
 /// The hand-written classes by the name of their kind's variant (`python(own)` in the
 /// registry).
@@ -251,25 +236,7 @@ mod own {
     pub use super::PyRationalBezier as RationalBezier;
 }
 
-/// How a curve object of a kind is made: its base object, the fit report.
-type Maker =
-    for<'py> fn(Python<'py>, PyClassInitializer<PyCurve>, Option<Py<FitReport>>) -> PyResult<Bound<'py, PyAny>>;
-
 /// The base class of curve kinds.
-#[allow(dead_code)] // the base of the classes of kinds declared `python(fields "…")`
 type Base = PyCurve;
 
-/// The base object of a curve document given as keyword arguments.
-#[allow(dead_code)] // used by the classes of kinds declared `python(fields "…")`
-fn base_object(ty: &str, fields: Option<&Bound<'_, pyo3::types::PyDict>>) -> PyResult<PyClassInitializer<PyCurve>> {
-    base(crate::kind_classes::kwargs_document(ty, fields)?)
-}
-
 splinekit_scene::curve_kinds!(crate::kind_classes::python_classes);
-
-/// The Python object of a built curve: its kind's class (a `BSpline` carries the fit
-/// `report` when it has one).
-pub fn wrap(py: Python<'_>, curve: PyCurve, report: Option<Py<FitReport>>) -> PyResult<Bound<'_, PyAny>> {
-    let make = maker(&curve.doc);
-    make(py, PyClassInitializer::from(curve), report)
-}

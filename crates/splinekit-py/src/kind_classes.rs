@@ -7,14 +7,41 @@
 //! missing hand-written class does not compile.
 //!
 //! `python_classes!` expands in a family's module, which provides `Base` (the base class),
-//! `own`, the trait `OwnClass`, `Maker` and `base_object`; it makes `maker` (how an
-//! object of each kind is made), the module `fields_classes` and `add_classes`.
+//! `base` (the base object of a document given as JSON) and `own` (the hand-written
+//! classes, each an [`OwnClass`]); it makes `maker` (how an object of each kind is made),
+//! `wrap` (the object of a built shape), the module `fields_classes` and `add_classes`.
 
+use pyo3::PyClass;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use serde_json::{Map, Value};
 
+use crate::fit_report::FitReport;
 use crate::json_value::to_value;
+
+/// A hand-written class of a kind (`python(own)`), made for a built curve or surface of its
+/// family's base class (`add_subclass` checks the base): a `BSpline` keeps the fit report.
+pub trait OwnClass: PyClass {
+    /// The class's part of the object.
+    fn made(report: Option<Py<FitReport>>) -> Self;
+}
+
+/// [`OwnClass`] for hand-written classes with no state of their own (unit structs).
+macro_rules! stateless_own_classes {
+    ($($class:ident),+) => {
+        $( impl $crate::kind_classes::OwnClass for $class {
+            fn made(_report: Option<Py<$crate::fit_report::FitReport>>) -> Self {
+                $class
+            }
+        } )+
+    };
+}
+pub(crate) use stateless_own_classes;
+
+/// How an object of a kind is made from its base object of class `B` (and the fit report,
+/// which only a fitted `BSpline` has).
+pub type Maker<B> =
+    for<'py> fn(Python<'py>, PyClassInitializer<B>, Option<Py<FitReport>>) -> PyResult<Bound<'py, PyAny>>;
 
 /// The document `{"type": ty, …keyword arguments…}`.
 #[allow(dead_code)] // used by the classes of kinds declared `python(fields "…")`
@@ -37,10 +64,21 @@ macro_rules! python_classes {
         }
     ) => {
         /// How an object of the document's kind is made (the registry's `python(…)`).
-        fn maker(doc: &splinekit_scene::$Enum) -> Maker {
+        fn maker(doc: &splinekit_scene::$Enum) -> $crate::kind_classes::Maker<Base> {
             match doc {
                 $( splinekit_scene::$Enum::$Variant(_) => $crate::kind_classes::python_classes!(@maker $Variant $($python)*), )+
             }
+        }
+
+        /// The Python object of a built shape: the class of its kind (a fitted `BSpline`
+        /// keeps the fit `report`).
+        pub fn wrap(
+            py: Python<'_>,
+            shape: Base,
+            report: Option<Py<$crate::fit_report::FitReport>>,
+        ) -> PyResult<Bound<'_, PyAny>> {
+            let make = maker(&shape.doc);
+            make(py, PyClassInitializer::from(shape), report)
         }
 
         /// The classes made from their kinds' document fields.
@@ -63,7 +101,7 @@ macro_rules! python_classes {
         |py, init, _report| Ok(Bound::new(py, init)?.into_any())
     };
     (@maker $V:ident own) => {
-        |py, init, report| Ok(Bound::new(py, init.add_subclass(<own::$V as OwnClass>::made(report)))?.into_any())
+        |py, init, report| Ok(Bound::new(py, init.add_subclass(<own::$V as $crate::kind_classes::OwnClass>::made(report)))?.into_any())
     };
     (@maker $V:ident fields $class:literal) => {
         |py, init, _report| Ok(Bound::new(py, init.add_subclass(fields_classes::$V))?.into_any())
@@ -82,7 +120,7 @@ macro_rules! python_classes {
             #[new]
             #[pyo3(signature = (**fields))]
             fn new(fields: Option<&Bound<'_, pyo3::types::PyDict>>) -> PyResult<PyClassInitializer<Self>> {
-                Ok(base_object($name, fields)?.add_subclass($V))
+                Ok(base($crate::kind_classes::kwargs_document($name, fields)?)?.add_subclass($V))
             }
         }
     };

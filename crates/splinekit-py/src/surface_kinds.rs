@@ -8,12 +8,13 @@ use splinekit_scene::{NetView, SurfaceDocument};
 
 use crate::curve_kinds::document;
 use crate::errors::{OrValueError, value_error};
-use crate::fit_report::FitReport;
+use crate::kind_classes::stateless_own_classes;
 use crate::surface::PySurface;
 
 /// Knots in u and in v.
 type KnotPair<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>);
 
+/// The base object of a surface document given as JSON.
 fn base(doc: serde_json::Value) -> PyResult<PyClassInitializer<PySurface>> {
     let doc = SurfaceDocument::from_value(doc).or_value_error()?;
     Ok(PyClassInitializer::from(PySurface::new(doc)?))
@@ -178,22 +179,7 @@ impl PyBezierSurface {
     }
 }
 
-/// A hand-written surface class (made for a built surface).
-pub trait OwnClass: pyo3::PyClass<BaseType = PySurface> {
-    /// The class's part of the object.
-    fn made(report: Option<Py<FitReport>>) -> Self;
-}
-
-macro_rules! own_classes {
-    ($($class:ident),+) => {
-        $( impl OwnClass for $class {
-            fn made(_report: Option<Py<FitReport>>) -> Self {
-                $class
-            }
-        } )+
-    };
-}
-own_classes!(PyBSplineSurface, PyNurbsSurface, PyBezierSurface);
+stateless_own_classes!(PyBSplineSurface, PyNurbsSurface, PyBezierSurface);
 
 /// The hand-written classes by the name of their kind's variant (`python(own)` in the
 /// registry).
@@ -203,24 +189,12 @@ mod own {
     pub use super::PyNurbsSurface as NurbsSurface;
 }
 
-/// How a surface object of a kind is made from its base object (surfaces have no fit report).
-type Maker =
-    for<'py> fn(Python<'py>, PyClassInitializer<PySurface>, Option<Py<FitReport>>) -> PyResult<Bound<'py, PyAny>>;
-
 /// The base class of surface kinds.
-#[allow(dead_code)] // the base of the classes of kinds declared `python(fields "…")`
 type Base = PySurface;
-
-/// The base object of a surface document given as keyword arguments.
-#[allow(dead_code)] // used by the classes of kinds declared `python(fields "…")`
-fn base_object(ty: &str, fields: Option<&Bound<'_, pyo3::types::PyDict>>) -> PyResult<PyClassInitializer<PySurface>> {
-    base(crate::kind_classes::kwargs_document(ty, fields)?)
-}
 
 splinekit_scene::surface_kinds!(crate::kind_classes::python_classes);
 
 /// The Python object of a surface document: its kind's class (the registry's `python(…)`).
 pub fn surface_object(py: Python<'_>, doc: SurfaceDocument) -> PyResult<Bound<'_, PyAny>> {
-    let make = maker(&doc);
-    make(py, PyClassInitializer::from(PySurface::new(doc)?), None)
+    wrap(py, PySurface::new(doc)?, None)
 }
