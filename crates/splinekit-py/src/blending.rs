@@ -3,6 +3,8 @@
 //! blends local curves ℓₖ (surfaces: patches) with a B-function; each piece carries an
 //! affine frame about its interpolation point. `set_transform` changes the object in place
 //! (its document and the curve or surface built from it); `at_time` returns a new object.
+//! The methods themselves, alike for `Curve` and `Surface`, are `shape_methods.rs`'s; this
+//! file holds what they compute and check.
 
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods};
 use pyo3::prelude::*;
@@ -10,18 +12,14 @@ use pyo3::types::{PyDict, PyList};
 use splinekit::Point;
 use splinekit_scene::budget::{Cost, F64, ShapeCost};
 use splinekit_scene::transforms::TransformDoc;
-use splinekit_scene::{CurveDocument, SurfaceDocument, with_dimension};
 
 use crate::budget;
-use crate::curve::PyCurve;
-use crate::curve_kinds::{curve_object, document};
+use crate::curve_kinds::document;
 use crate::errors::{OrValueError, value_error};
-use crate::surface::PySurface;
-use crate::surface_kinds::surface_object;
 
 /// The transform document `{"translate": …, "rotate": …, "scale": …}` from arguments,
 /// parsed as a document's `transforms` entry is.
-fn transform(
+pub(crate) fn transform(
     translate: Option<&Bound<'_, PyAny>>,
     rotate: Option<&Bound<'_, PyAny>>,
     scale: Option<&Bound<'_, PyAny>>,
@@ -32,7 +30,7 @@ fn transform(
 }
 
 /// Replaces (or adds) the entry of `key` in a list of per-piece transforms.
-fn put<K: PartialEq>(list: &mut Vec<(K, TransformDoc)>, key: K, t: TransformDoc) {
+pub(crate) fn put<K: PartialEq>(list: &mut Vec<(K, TransformDoc)>, key: K, t: TransformDoc) {
     list.retain(|(k, _)| *k != key);
     list.push((key, t));
 }
@@ -43,7 +41,7 @@ fn as_array<'py>(py: Python<'py>, values: Vec<f64>, shape: Vec<usize>) -> PyResu
 
 /// The local curves of a blending-spline document: support, origin and `samples` points
 /// of each over its support.
-fn local_curves<'py, const D: usize>(
+pub(crate) fn local_curves<'py, const D: usize>(
     py: Python<'py>,
     doc: &splinekit_scene::curves::BlendingSplineDoc,
     cost: &ShapeCost,
@@ -72,7 +70,7 @@ fn local_curves<'py, const D: usize>(
 
 /// The local patches of a blending-spline surface document: support, origin and a
 /// `samples` × `samples` grid of points of each over its support.
-fn local_patches<'py, const D: usize>(
+pub(crate) fn local_patches<'py, const D: usize>(
     py: Python<'py>,
     doc: &splinekit_scene::surfaces::BlendingSplineSurfaceDoc,
     cost: &ShapeCost,
@@ -110,12 +108,12 @@ fn check_pieces<const D: usize>(cost: &ShapeCost, pieces: usize, points: usize) 
 }
 
 /// The error for a blending-spline `method` called on a shape of another type.
-fn only_on(method: &str, kinds: &str, type_name: &str) -> PyErr {
+pub(crate) fn only_on(method: &str, kinds: &str, type_name: &str) -> PyErr {
     value_error(format!("type: {method} works on {kinds}, not {type_name}"))
 }
 
 /// Refuses a time that is not finite.
-fn check_time(t: f64) -> PyResult<()> {
+pub(crate) fn check_time(t: f64) -> PyResult<()> {
     if !t.is_finite() {
         return Err(value_error(format!("t: must be finite, got {t}")));
     }
@@ -123,95 +121,9 @@ fn check_time(t: f64) -> PyResult<()> {
 }
 
 /// Refuses sample counts per piece outside 2 ..= 10 000.
-fn check_samples(samples: usize) -> PyResult<()> {
+pub(crate) fn check_samples(samples: usize) -> PyResult<()> {
     if !(2..=10_000).contains(&samples) {
         return Err(value_error(format!("samples: need 2 to 10000 samples per piece, got {samples}")));
     }
     Ok(())
-}
-
-#[pymethods]
-impl PyCurve {
-    /// Sets the affine frame of local curve `k`, in place: ``translate`` (D numbers),
-    /// ``rotate`` (``{"axis": [..], "angle": radians, "pivot": [..]}``), ``scale`` (a
-    /// number), applied in the local curve's own frame about its interpolation point and
-    /// replacing the frame it had. On an error the curve is left as it was.
-    #[pyo3(signature = (k, translate = None, rotate = None, scale = None))]
-    fn set_transform(
-        &mut self,
-        k: usize,
-        translate: Option<&Bound<'_, PyAny>>,
-        rotate: Option<&Bound<'_, PyAny>>,
-        scale: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<()> {
-        let CurveDocument::BlendingSpline(d) = &self.doc else {
-            return Err(only_on("set_transform", "blending_spline curves", self.doc.type_name()));
-        };
-        let mut d = d.clone();
-        put(&mut d.transforms, k, transform(translate, rotate, scale)?);
-        *self = PyCurve::new(CurveDocument::BlendingSpline(d))?;
-        Ok(())
-    }
-
-    /// A copy posed at time `t` (seconds) by the document's animation tracks, as
-    /// ``splinekit eval --time``; shapes without animation are unchanged.
-    fn at_time<'py>(&self, py: Python<'py>, t: f64) -> PyResult<Bound<'py, PyAny>> {
-        check_time(t)?;
-        let mut doc = self.doc.clone();
-        doc.set_time(t);
-        curve_object(py, doc)
-    }
-
-    /// The local curves ℓₖ of a blending spline: a list of dicts with ``index`` k,
-    /// ``support`` (tₖ₋₁, tₖ₊₁), ``origin`` ℓₖ's interpolation point, and ``points``
-    /// (samples, D) of ℓₖ over its support (at the global parameter, frame applied).
-    #[pyo3(signature = (samples = 97))]
-    fn local_pieces<'py>(&self, py: Python<'py>, samples: usize) -> PyResult<Bound<'py, PyList>> {
-        check_samples(samples)?;
-        let CurveDocument::BlendingSpline(d) = &self.doc else {
-            return Err(only_on("local_pieces", "blending_spline curves", self.doc.type_name()));
-        };
-        with_dimension!(self.dimension(), "control_points", D => local_curves::<D>(py, d, &self.doc.cost(), samples), or value_error)
-    }
-}
-
-#[pymethods]
-impl PySurface {
-    /// Sets the affine frame of local patch ``k = (i, j)``, in place (see
-    /// ``Curve.set_transform``).
-    #[pyo3(signature = (k, translate = None, rotate = None, scale = None))]
-    fn set_transform(
-        &mut self,
-        k: (usize, usize),
-        translate: Option<&Bound<'_, PyAny>>,
-        rotate: Option<&Bound<'_, PyAny>>,
-        scale: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<()> {
-        let SurfaceDocument::BlendingSplineSurface(d) = &self.doc else {
-            return Err(only_on("set_transform", "blending_spline_surface surfaces", self.doc.type_name()));
-        };
-        let mut d = d.clone();
-        put(&mut d.transforms, k, transform(translate, rotate, scale)?);
-        *self = PySurface::new(SurfaceDocument::BlendingSplineSurface(d))?;
-        Ok(())
-    }
-
-    /// A copy posed at time `t` (seconds) by the document's animation tracks.
-    fn at_time<'py>(&self, py: Python<'py>, t: f64) -> PyResult<Bound<'py, PyAny>> {
-        check_time(t)?;
-        let mut doc = self.doc.clone();
-        doc.set_time(t);
-        surface_object(py, doc)
-    }
-
-    /// The local patches of a blending-spline surface: dicts with ``index`` (i, j),
-    /// ``support`` ((u0, u1), (v0, v1)), ``origin``, and ``points`` (samples, samples, D).
-    #[pyo3(signature = (samples = 17))]
-    fn local_pieces<'py>(&self, py: Python<'py>, samples: usize) -> PyResult<Bound<'py, PyList>> {
-        check_samples(samples)?;
-        let SurfaceDocument::BlendingSplineSurface(d) = &self.doc else {
-            return Err(only_on("local_pieces", "blending_spline_surface surfaces", self.doc.type_name()));
-        };
-        with_dimension!(self.surface.dimension(), "control_points", D => local_patches::<D>(py, d, &self.doc.cost(), samples), or value_error)
-    }
 }

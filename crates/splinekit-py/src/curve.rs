@@ -228,18 +228,6 @@ impl PyCurve {
         self.closed
     }
 
-    /// The dimension D of the curve's points.
-    #[getter(dimension)]
-    fn dimension_getter(&self) -> usize {
-        self.dimension()
-    }
-
-    /// The document's ``type`` (``"bspline"``, ``"circle"``, …).
-    #[getter]
-    fn kind(&self) -> &'static str {
-        self.doc.type_name()
-    }
-
     fn __repr__(&self) -> String {
         format!(
             "<splinekit {} curve in {}-D on [{}, {}]{}>",

@@ -1,5 +1,6 @@
 //! Shape and scene documents: ``splinekit.load`` (a dict, a JSON string or a path) and
-//! ``to_dict`` / ``to_json`` on every object, through the parser the command line uses.
+//! ``to_dict`` / ``to_json`` on scenes (curves and surfaces: `shape_methods.rs`), through the
+//! parser the command line uses.
 
 use pyo3::prelude::*;
 use pyo3::types::PyList;
@@ -129,28 +130,4 @@ pub fn load<'py>(py: Python<'py>, doc: &Bound<'py, PyAny>) -> PyResult<Bound<'py
         return Ok(Bound::new(py, PyScene { value, doc: scene })?.into_any());
     }
     shape_object(py, ShapeDocument::from_value(value).or_value_error()?)
-}
-
-#[pymethods]
-impl PyCurve {
-    /// The curve's shape document as a dict (``splinekit.load`` reads it back).
-    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        to_python(py, &self.doc.to_value())
-    }
-    /// The curve's shape document as JSON text (what the command line reads).
-    fn to_json(&self) -> PyResult<String> {
-        serde_json::to_string(&self.doc.to_value()).map_err(value_error)
-    }
-}
-
-#[pymethods]
-impl PySurface {
-    /// The surface's shape document as a dict (``splinekit.load`` reads it back).
-    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        to_python(py, &self.doc.to_value())
-    }
-    /// The surface's shape document as JSON text (what the command line reads).
-    fn to_json(&self) -> PyResult<String> {
-        serde_json::to_string(&self.doc.to_value()).map_err(value_error)
-    }
 }

@@ -24,6 +24,7 @@ mod kind_classes;
 mod knot_ops;
 mod mesh;
 mod render;
+mod shape_methods;
 mod subdivision;
 mod surface;
 mod surface_kinds;

@@ -127,7 +127,8 @@ impl PySurface {
         Ok(PySurface { doc, surface, domain, closed })
     }
 
-    fn dimension(&self) -> usize {
+    /// The dimension D of the points.
+    pub(crate) fn dimension(&self) -> usize {
         self.surface.dimension()
     }
 
@@ -320,16 +321,6 @@ impl PySurface {
     #[getter]
     fn closed_v(&self) -> bool {
         self.closed[1]
-    }
-    /// The dimension D of the surface's points.
-    #[getter(dimension)]
-    fn dimension_getter(&self) -> usize {
-        self.dimension()
-    }
-    /// The document's ``type``.
-    #[getter]
-    fn kind(&self) -> &'static str {
-        self.doc.type_name()
     }
     fn __repr__(&self) -> String {
         let [u, v] = self.domain;

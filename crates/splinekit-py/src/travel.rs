@@ -1,5 +1,6 @@
 //! Objects that travel: `pickle` (any protocol, 5 included), `copy.copy`, `copy.deepcopy`
-//! and `==` for curves, surfaces, scenes and meshes (fit reports: `fit_report.rs`).
+//! and `==` for curves, surfaces, scenes and meshes (fit reports: `fit_report.rs`; `==` of
+//! curves and surfaces: `shape_methods.rs`).
 //!
 //! A shape's state is its shape document — the JSON the command line reads — as a dict of
 //! Python floats, which pickle stores as exact doubles; the object is rebuilt from it by
@@ -75,11 +76,6 @@ impl PyCurve {
         };
         reduce(py, "curve", state, report.unwrap_or_else(|| py.None().into_bound(py)))
     }
-
-    /// Equal documents: the same kind, the same numbers (so the same curve).
-    fn __eq__(&self, other: PyRef<'_, PyCurve>) -> bool {
-        self.doc.to_value() == other.doc.to_value()
-    }
 }
 
 #[pymethods]
@@ -87,11 +83,6 @@ impl PySurface {
     /// The pickle state: the shape document.
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         reduce(py, "surface", to_python(py, &self.doc.to_value())?, py.None().into_bound(py))
-    }
-
-    /// Equal documents: the same kind, the same numbers (so the same surface).
-    fn __eq__(&self, other: PyRef<'_, PySurface>) -> bool {
-        self.doc.to_value() == other.doc.to_value()
     }
 }
 
