@@ -70,29 +70,43 @@ impl PySurface {
     }
 }
 
-/// The arguments of a tensor-product spline net (B-spline or NURBS), by field name.
+/// The arguments of a tensor-product spline net (B-spline or NURBS), by field name: knots,
+/// degrees and periodic flags in u and in v.
 struct SplineNet<'a, 'py> {
-    knots_u: &'a Bound<'py, PyAny>,
-    knots_v: &'a Bound<'py, PyAny>,
+    knots: [&'a Bound<'py, PyAny>; 2],
     control_points: &'a Bound<'py, PyAny>,
     weights: Option<&'a Bound<'py, PyAny>>,
-    degree_u: &'a Bound<'py, PyAny>,
-    degree_v: &'a Bound<'py, PyAny>,
-    periodic: (bool, bool),
+    degrees: [&'a Bound<'py, PyAny>; 2],
+    periodic: [bool; 2],
 }
 
-impl SplineNet<'_, '_> {
+impl<'a, 'py> SplineNet<'a, 'py> {
+    /// The arguments of a net without weights (a NURBS net adds them).
+    fn new(
+        knots: [&'a Bound<'py, PyAny>; 2],
+        control_points: &'a Bound<'py, PyAny>,
+        degrees: [&'a Bound<'py, PyAny>; 2],
+        periodic: [bool; 2],
+    ) -> Self {
+        SplineNet { knots, control_points, weights: None, degrees, periodic }
+    }
+
+    /// The same net with weights (a NURBS net).
+    fn weighted(self, weights: &'a Bound<'py, PyAny>) -> Self {
+        SplineNet { weights: Some(weights), ..self }
+    }
+
     /// The base object of the net's document of type `ty`.
     fn base(&self, ty: &str) -> PyResult<PyClassInitializer<PySurface>> {
-        let py = self.knots_u.py();
-        let (pu, pv) = (flag(py, self.periodic.0)?, flag(py, self.periodic.1)?);
+        let py = self.control_points.py();
+        let (pu, pv) = (flag(py, self.periodic[0])?, flag(py, self.periodic[1])?);
         base(document(
             ty,
             &[
-                ("degree_u", Some(self.degree_u)),
-                ("degree_v", Some(self.degree_v)),
-                ("knots_u", Some(self.knots_u)),
-                ("knots_v", Some(self.knots_v)),
+                ("degree_u", Some(self.degrees[0])),
+                ("degree_v", Some(self.degrees[1])),
+                ("knots_u", Some(self.knots[0])),
+                ("knots_v", Some(self.knots[1])),
                 ("control_points", Some(self.control_points)),
                 ("weights", self.weights),
                 ("periodic_u", Some(&pu)),
@@ -120,15 +134,7 @@ impl PyBSplineSurface {
         periodic_u: bool,
         periodic_v: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let net = SplineNet {
-            knots_u,
-            knots_v,
-            control_points,
-            weights: None,
-            degree_u,
-            degree_v,
-            periodic: (periodic_u, periodic_v),
-        };
+        let net = SplineNet::new([knots_u, knots_v], control_points, [degree_u, degree_v], [periodic_u, periodic_v]);
         Ok(net.base("bspline_surface")?.add_subclass(PyBSplineSurface))
     }
 }
@@ -152,16 +158,8 @@ impl PyNurbsSurface {
         periodic_u: bool,
         periodic_v: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let weights = Some(weights);
-        let net = SplineNet {
-            knots_u,
-            knots_v,
-            control_points,
-            weights,
-            degree_u,
-            degree_v,
-            periodic: (periodic_u, periodic_v),
-        };
+        let net = SplineNet::new([knots_u, knots_v], control_points, [degree_u, degree_v], [periodic_u, periodic_v])
+            .weighted(weights);
         Ok(net.base("nurbs_surface")?.add_subclass(PyNurbsSurface))
     }
 }
