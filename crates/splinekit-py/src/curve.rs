@@ -93,7 +93,6 @@ impl PyCurve {
     /// into the new array chunk by chunk with the GIL released. `field` names the order.
     fn evaluate<'py>(
         &self,
-        py: Python<'py>,
         t: &Bound<'py, PyAny>,
         (field, order): (&str, usize),
         all: bool,
@@ -101,7 +100,7 @@ impl PyCurve {
         let job = self.evaluation(t, (field, order), all)?;
         let (shape, rows, row) = job.layout();
         let task = job.task();
-        filled_rows(py, &shape, rows, row, |rows, out| task.fill(rows, out))
+        filled_rows(t.py(), &shape, rows, row, |rows, out| task.fill(rows, out))
     }
 
     /// Checks an evaluation of the derivatives of `order` (all orders up to it when `all`)
@@ -196,24 +195,14 @@ impl PyCurve {
     /// sorted batch span by span (the knot span is found once per span, then the p + 1
     /// non-zero basis functions or the span's Bézier form are used).
     #[pyo3(signature = (t, nu = 0))]
-    fn __call__<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-        nu: usize,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.evaluate(py, t, ("nu", nu), false)
+    fn __call__<'py>(&self, t: &Bound<'py, PyAny>, nu: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.evaluate(t, ("nu", nu), false)
     }
 
     /// c(t), c'(t), …, c^(order)(t): shape (N, order + 1, D) for N parameters, (order + 1, D)
     /// for a number; ``derivatives(t, k)[i, j]`` is dʲc/dtʲ at t[i].
-    fn derivatives<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-        order: usize,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.evaluate(py, t, ("order", order), true)
+    fn derivatives<'py>(&self, t: &Bound<'py, PyAny>, order: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.evaluate(t, ("order", order), true)
     }
 
     /// The parameter domain (a, b).

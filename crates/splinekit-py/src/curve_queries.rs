@@ -83,13 +83,8 @@ impl PyCurve {
     /// within `accuracy` of the true minimum (global: the curve is covered by bounding
     /// boxes, the best candidates refined by Newton steps on (c(t) − p)·c'(t) = 0).
     #[pyo3(signature = (p, accuracy = 1e-12))]
-    fn closest_point<'py>(
-        &self,
-        py: Python<'py>,
-        p: &Bound<'py, PyAny>,
-        accuracy: f64,
-    ) -> PyResult<(f64, Bound<'py, PyAny>, f64)> {
-        let numbers = Numbers::new(p)?;
+    fn closest_point<'py>(&self, p: &Bound<'py, PyAny>, accuracy: f64) -> PyResult<(f64, Bound<'py, PyAny>, f64)> {
+        let (py, numbers) = (p.py(), Numbers::new(p)?);
         let query = numbers.point("p", self.dimension(), "curve")?;
         let curve = &self.curve;
         let (t, point, distance) = py.detach(|| curve.visit(Nearest { query, accuracy })).or_value_error()?;

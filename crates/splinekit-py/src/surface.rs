@@ -210,15 +210,9 @@ impl PySurface {
     /// S(u, v): on the grid u × v (Nu, Nv, D), or paired (N, D) with ``grid=False``; two
     /// numbers give (D,). Tensor-product splines evaluate each u- and v-basis once.
     #[pyo3(signature = (u, v, grid = true))]
-    fn __call__<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        grid: bool,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    fn __call__<'py>(&self, u: &Bound<'py, PyAny>, v: &Bound<'py, PyAny>, grid: bool) -> PyResult<Bound<'py, PyAny>> {
         let r = self.request(u, v, grid)?;
-        let block = self.partial_block(py, &r, 0)?;
+        let block = self.partial_block(u.py(), &r, 0)?;
         self.shaped(&r, block.into_any())
     }
 
@@ -256,14 +250,8 @@ impl PySurface {
     /// Unit normals N = S_u × S_v / |S_u × S_v|, shaped like ``s(u, v, grid)`` (3-D
     /// surfaces; zero where S_u × S_v = 0, e.g. at poles).
     #[pyo3(signature = (u, v, grid = true))]
-    fn normals<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        grid: bool,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        Ok(self.points_and_normals(py, u, v, grid)?.1)
+    fn normals<'py>(&self, u: &Bound<'py, PyAny>, v: &Bound<'py, PyAny>, grid: bool) -> PyResult<Bound<'py, PyAny>> {
+        Ok(self.points_and_normals(u, v, grid)?.1)
     }
 
     /// ``(points, normals)`` in one pass (S, S_u and S_v per site, the basis once per row
@@ -271,11 +259,11 @@ impl PySurface {
     #[pyo3(signature = (u, v, grid = true))]
     fn points_and_normals<'py>(
         &self,
-        py: Python<'py>,
         u: &Bound<'py, PyAny>,
         v: &Bound<'py, PyAny>,
         grid: bool,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+        let py = u.py();
         let r = self.request(u, v, grid)?;
         self.check_budget(&r, 1, 2)?;
         let (us, vs) = (r.us(), r.vs());
@@ -288,13 +276,8 @@ impl PySurface {
     /// The point of the surface nearest to `p`: ``(u, v, S(u, v), distance)``, the distance
     /// within `accuracy` of the true minimum.
     #[pyo3(signature = (p, accuracy = 1e-12))]
-    fn closest_point<'py>(
-        &self,
-        py: Python<'py>,
-        p: &Bound<'py, PyAny>,
-        accuracy: f64,
-    ) -> PyResult<(f64, f64, Bound<'py, PyAny>, f64)> {
-        let numbers = Numbers::new(p)?;
+    fn closest_point<'py>(&self, p: &Bound<'py, PyAny>, accuracy: f64) -> PyResult<(f64, f64, Bound<'py, PyAny>, f64)> {
+        let (py, numbers) = (p.py(), Numbers::new(p)?);
         let query = numbers.point("p", self.dimension(), "surface")?;
         let surface = &self.surface;
         let (u, v, point, distance) =
