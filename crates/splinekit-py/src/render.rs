@@ -66,14 +66,10 @@ fn draw(
         .map_err(|e| value_error(format!("path: cannot write '{}': {e}", path.display())))
 }
 
+/// Without the `render` feature: the error that says how to get it (`draw`'s arguments
+/// unused).
 #[cfg(not(feature = "render"))]
-fn draw(
-    _py: Python<'_>,
-    _value: serde_json::Value,
-    _path: &std::path::Path,
-    _size: (u32, u32),
-    _time: Option<f64>,
-) -> PyResult<()> {
+fn draw(_: Python<'_>, _: serde_json::Value, _: &std::path::Path, _: (u32, u32), _: Option<f64>) -> PyResult<()> {
     Err(PyRuntimeError::new_err(
         "render: this build of splinekit has no renderer; reinstall with MATURIN_PEP517_ARGS=\"--features render\" \
          pip install ./crates/splinekit-py, or write obj.to_json() to a file and run `splinekit render FILE -o out.png`",
