@@ -1,7 +1,8 @@
 //! The window's graphics: one wgpu device for the window surface, the scene renderer and
 //! egui. The 3-D view is drawn by [`splinekit_render::Renderer::draw`] into its own
 //! target (the same pipelines, 4× MSAA and sRGB image as `splinekit render`), copied into
-//! an `Rgba8Unorm` texture that egui shows (egui samples gamma-space bytes; GL has no
+//! an `Rgba8Unorm` texture that a paint callback in egui's pass shows texel for texel
+//! ([`crate::view_blit`]; the bytes are gamma-space, as egui blends, and GL has no
 //! sRGB-reinterpreting views), and read back from the target for screenshots.
 //!
 //! On a software adapter (Mesa's llvmpipe) every pixel is shaded on the CPU, so there the
@@ -17,6 +18,7 @@ use winit::window::Window;
 
 use crate::live_view::Changes;
 use crate::studio::ViewScene;
+use crate::view_blit::ViewBlit;
 
 /// Why the window's graphics could not start.
 #[derive(Debug, thiserror::Error)]
@@ -41,21 +43,23 @@ pub struct Gpu {
     /// The last frame's stages in ms: the 3-D view's drawing (waited for with
     /// `sync_stages`), egui's tessellation, egui's painting, the present.
     pub stages: [f64; 4],
+    /// The colour the window is cleared to (gamma-space, as egui paints).
+    background: wgpu::Color,
 }
 
-/// The 3-D view's target, its single-sampled twin (made on first use), the `Rgba8Unorm`
-/// copy egui samples, and its egui id.
+/// The 3-D view's target, its single-sampled twin (made on first use), and the
+/// `Rgba8Unorm` copy the blit shows.
 struct View {
     target: RenderTarget,
     single: Option<RenderTarget>,
     shown: wgpu::Texture,
-    id: egui::TextureId,
 }
 
 impl Gpu {
     /// Graphics for `window` on the first adapter that can present to it (Vulkan or GL;
     /// GL on Mesa's llvmpipe without a GPU).
-    pub fn new(window: Arc<Window>, display: OwnedDisplayHandle) -> Result<Self, GpuError> {
+    /// The window is cleared to `background` before egui paints.
+    pub fn new(window: Arc<Window>, display: OwnedDisplayHandle, background: egui::Color32) -> Result<Self, GpuError> {
         let mut desc = wgpu::InstanceDescriptor::new_with_display_handle(Box::new(display));
         desc.backends = wgpu::Backends::VULKAN | wgpu::Backends::GL;
         desc.flags = wgpu::InstanceFlags::empty();
@@ -82,10 +86,24 @@ impl Gpu {
         surface.configure(&device, &config);
         // Dithering costs a noise function a pixel, which llvmpipe computes on the CPU.
         let options = egui_wgpu::RendererOptions { dithering: !software, ..Default::default() };
-        let egui = egui_wgpu::Renderer::new(&device, config.format, options);
+        let mut egui = egui_wgpu::Renderer::new(&device, config.format, options);
+        egui.callback_resources.insert(ViewBlit::new(&device, config.format));
         let renderer = Renderer::from_device(device, queue, name);
         let sync_stages = std::env::var_os("SPLINEKIT_FRAME_STAGES").is_some();
-        Ok(Gpu { surface, config, renderer, egui, view: None, software, geometry: None, sync_stages, stages: [0.0; 4] })
+        let [r, g, b, _] = background.to_array().map(|c| f64::from(c) / 255.0);
+        let background = wgpu::Color { r, g, b, a: 1.0 };
+        Ok(Gpu {
+            surface,
+            config,
+            renderer,
+            egui,
+            view: None,
+            software,
+            geometry: None,
+            sync_stages,
+            stages: [0.0; 4],
+            background,
+        })
     }
 
     /// Follows a window resize.
@@ -99,7 +117,7 @@ impl Gpu {
 
     /// Draws the view's scene into the 3-D view's target (resized to `size`; multisampled,
     /// or with `multisampled` false into the single-sampled one), copies it to the texture
-    /// egui shows, and returns that texture's id. The composed scene's geometry stays on
+    /// the blit shows ([`crate::view_blit`]). The composed scene's geometry stays on
     /// the device between frames: only the items the view lists as changed are written
     /// ([`keep_geometry`]); the overlays are uploaded each frame.
     pub fn draw_view(
@@ -107,7 +125,7 @@ impl Gpu {
         scene: &ViewScene,
         size: (u32, u32),
         multisampled: bool,
-    ) -> Result<egui::TextureId, GpuError> {
+    ) -> Result<(), GpuError> {
         let max = splinekit_render::renderer::MAX_SIDE;
         let size = (size.0.clamp(1, max), size.1.clamp(1, max));
         if self.view.as_ref().is_none_or(|v| v.target.size() != size) {
@@ -130,7 +148,7 @@ impl Gpu {
         );
         self.renderer.queue().submit([encoder.finish()]);
         self.wait_if_profiling();
-        Ok(v.id)
+        Ok(())
     }
 
     /// With `sync_stages`, waits until the device has done all submitted work.
@@ -140,7 +158,7 @@ impl Gpu {
         }
     }
 
-    /// A view of `size` pixels, re-using the egui texture id of the last one.
+    /// A view of `size` pixels, shown by the blit from now on.
     fn new_view(&mut self, size: (u32, u32)) -> Result<View, GpuError> {
         let target = self.renderer.target(size.0, size.1).map_err(|e| GpuError(e.to_string()))?;
         let device = self.renderer.device();
@@ -154,20 +172,15 @@ impl Gpu {
             usage: wgpu::TextureUsages::COPY_DST | wgpu::TextureUsages::TEXTURE_BINDING,
             view_formats: &[],
         });
-        let view = shown.create_view(&Default::default());
-        let id = match &self.view {
-            Some(old) => {
-                self.egui.update_egui_texture_from_wgpu_texture(device, &view, wgpu::FilterMode::Nearest, old.id);
-                old.id
-            }
-            None => self.egui.register_native_texture(device, &view, wgpu::FilterMode::Nearest),
-        };
-        Ok(View { target, single: None, shown, id })
+        if let Some(blit) = self.egui.callback_resources.get_mut::<ViewBlit>() {
+            blit.show(device, &shown.create_view(&Default::default()));
+        }
+        Ok(View { target, single: None, shown })
     }
 
-    /// The texture of the 3-D view, once drawn.
-    pub fn view_texture(&self) -> Option<egui::TextureId> {
-        self.view.as_ref().map(|v| v.id)
+    /// Whether the 3-D view has been drawn.
+    pub fn has_view(&self) -> bool {
+        self.view.is_some()
     }
 
     /// Reads the 3-D view's last multisampled image back.
@@ -275,7 +288,7 @@ impl Gpu {
                     depth_slice: None,
                     resolve_target: None,
                     ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                        load: wgpu::LoadOp::Clear(self.background),
                         store: wgpu::StoreOp::Store,
                     },
                 })],

@@ -61,6 +61,7 @@ pub mod snapping;
 pub mod status;
 pub mod studio;
 pub mod transform_edit;
+pub mod view_blit;
 pub mod view_caches;
 pub mod view_camera;
 pub mod viewport;

@@ -1,4 +1,4 @@
-//! The 3-D view inside the egui layout: shows the rendered texture and turns the mouse and
+//! The 3-D view inside the egui layout: shows the rendered image and turns the mouse and
 //! keys into studio actions. Left drag on a handle moves it (held X/Y/Z: along that axis;
 //! held R: rotates, S: scales about the local origin; W: changes a control point's
 //! weight); left drag elsewhere orbits, middle or Shift+left drag pans, the wheel zooms; a
@@ -19,8 +19,8 @@ pub struct ViewFrame {
 
 /// What the 3-D view needs from the last frame drawn.
 pub struct ViewInput<'a> {
-    /// The rendered texture (none before the first frame).
-    pub texture: Option<egui::TextureId>,
+    /// The 3-D view has been drawn (not before the first frame).
+    pub drawn: bool,
     /// The projector of the scene as last drawn.
     pub projector: Option<&'a Projector>,
     /// Frame-time overlay text, when shown.
@@ -34,9 +34,8 @@ pub fn view(ui: &mut egui::Ui, studio: &mut Studio, input: ViewInput<'_>) -> Vie
     rect.max.x = rect.max.x.min(ui.ctx().content_rect().max.x - crate::panels::SIDE_WIDTH);
     let response = ui.allocate_rect(rect, egui::Sense::click_and_drag());
     let ppp = ui.ctx().pixels_per_point();
-    if let Some(id) = input.texture {
-        let uv = egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0));
-        ui.painter().image(id, rect, uv, egui::Color32::WHITE);
+    if input.drawn {
+        crate::view_blit::paint_view(ui.painter(), rect);
     }
     if let Some(text) = &input.overlay {
         let at = rect.left_top() + egui::vec2(8.0, 8.0);
