@@ -5,9 +5,10 @@
 //! software-filtering branches. On a software rasteriser (Mesa's llvmpipe) every pixel of
 //! that shader runs on the CPU, and the view covers about half of the window. Here the
 //! view is one triangle covering the callback's viewport whose fragment shader fetches
-//! one texel, `textureLoad(view, ⌊uv · size⌋)`, and writes it without blending: the same
-//! bytes egui's nearest-filtered quad writes when dithering is off (it is on software
-//! adapters), a fraction of the work.
+//! one texel, `textureLoad(view, ⌊uv · size⌋)`, and writes it without blending: the bytes
+//! egui's nearest-filtered quad wrote without dithering (which software adapters turn off;
+//! on hardware the view's image is no longer dithered, and needs not be: it is 8-bit
+//! already), at a fraction of the work.
 //!
 //! The pipeline and the bind group of the current view texture live in egui-wgpu's
 //! callback resources ([`ViewBlit`]); [`paint_view`] adds the callback to a painter.
@@ -85,11 +86,7 @@ impl ViewBlit {
                 module: &module,
                 entry_point: Some("fs_main"),
                 compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format,
-                    blend: None,
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
+                targets: &[Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })],
             }),
             primitive: wgpu::PrimitiveState::default(),
             depth_stencil: None,
