@@ -108,23 +108,7 @@ impl<'a> GeometryWriter<'a> {
         let closed = flag(c.closed);
         let curve = vec![Param::Integer(c.degree as i64), Param::List(pts), e("UNSPECIFIED"), closed, flag(false)];
         let knots = vec![ints(&mults), reals(&values), e("UNSPECIFIED")];
-        match &c.weights {
-            None => {
-                let mut params = vec![s(name)];
-                params.extend(curve);
-                params.extend(knots);
-                self.w.add("B_SPLINE_CURVE_WITH_KNOTS", params)
-            }
-            Some(w) => self.w.add_complex(vec![
-                rec("BOUNDED_CURVE", vec![]),
-                rec("B_SPLINE_CURVE", curve),
-                rec("B_SPLINE_CURVE_WITH_KNOTS", knots),
-                rec("CURVE", vec![]),
-                rec("GEOMETRIC_REPRESENTATION_ITEM", vec![]),
-                rec("RATIONAL_B_SPLINE_CURVE", vec![reals(w)]),
-                rec("REPRESENTATION_ITEM", vec![s(name)]),
-            ]),
-        }
+        self.b_spline("CURVE", name, curve, knots, c.weights.as_deref().map(reals))
     }
 
     fn spline_surface(&mut self, sf: &SplineSurface, name: &str) -> u64 {
@@ -142,23 +126,35 @@ impl<'a> GeometryWriter<'a> {
             flag(false),
         ];
         let knots = vec![ints(&mu), ints(&mv), reals(&ku), reals(&kv), e("UNSPECIFIED")];
-        match &sf.weights {
-            None => {
-                let mut params = vec![s(name)];
-                params.extend(surface);
-                params.extend(knots);
-                self.w.add("B_SPLINE_SURFACE_WITH_KNOTS", params)
-            }
-            Some(w) => self.w.add_complex(vec![
-                rec("BOUNDED_SURFACE", vec![]),
-                rec("B_SPLINE_SURFACE", surface),
-                rec("B_SPLINE_SURFACE_WITH_KNOTS", knots),
-                rec("GEOMETRIC_REPRESENTATION_ITEM", vec![]),
-                rec("RATIONAL_B_SPLINE_SURFACE", vec![Param::List(w.iter().map(|row| reals(row)).collect())]),
-                rec("REPRESENTATION_ITEM", vec![s(name)]),
-                rec("SURFACE", vec![]),
-            ]),
-        }
+        let weights = sf.weights.as_ref().map(|w| Param::List(w.iter().map(|row| reals(row)).collect()));
+        self.b_spline("SURFACE", name, surface, knots, weights)
+    }
+
+    /// A B-spline curve or surface (`kind` `CURVE` or `SURFACE`) from its `B_SPLINE_{kind}`
+    /// and `…_WITH_KNOTS` parameters: the simple entity `B_SPLINE_{kind}_WITH_KNOTS`, or
+    /// with `weights` the complex entity of the rational one (the writer orders its
+    /// records alphabetically, as Part 21 requires).
+    fn b_spline(
+        &mut self,
+        kind: &str,
+        name: &str,
+        spline: Vec<Param>,
+        knots: Vec<Param>,
+        weights: Option<Param>,
+    ) -> u64 {
+        let Some(w) = weights else {
+            let params = [vec![s(name)], spline, knots].concat();
+            return self.w.add(&format!("B_SPLINE_{kind}_WITH_KNOTS"), params);
+        };
+        self.w.add_complex(vec![
+            rec(&format!("BOUNDED_{kind}"), vec![]),
+            rec(&format!("B_SPLINE_{kind}"), spline),
+            rec(&format!("B_SPLINE_{kind}_WITH_KNOTS"), knots),
+            rec(kind, vec![]),
+            rec("GEOMETRIC_REPRESENTATION_ITEM", vec![]),
+            rec(&format!("RATIONAL_B_SPLINE_{kind}"), vec![w]),
+            rec("REPRESENTATION_ITEM", vec![s(name)]),
+        ])
     }
 
     /// Writes a surface named `name`; returns its `#id`.
