@@ -17,6 +17,7 @@ pub mod surface_ops;
 pub mod tensor;
 pub mod traits;
 pub mod trimmed;
+pub(crate) mod unit_square;
 
 pub use crate::query::extent::SurfaceExtent;
 pub use crate::query::project_surface::SurfaceNearest;
