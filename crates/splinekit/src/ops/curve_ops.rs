@@ -126,7 +126,11 @@ fn split_generic<T: CoefficientNorm>(
 /// The Bézier segments with their parameter intervals (a periodic spline cut open at the
 /// start of its domain first).
 fn segments_generic<T: CoefficientNorm>(data: &SplineData<T>, periodic: bool) -> Result<Vec<BezierSegment<T>>> {
-    if periodic { decomposition::bezier_segments(&open_at(data, data.knots[data.degree])?) } else { decomposition::bezier_segments(data) }
+    if periodic {
+        decomposition::bezier_segments(&open_at(data, data.knots[data.degree])?)
+    } else {
+        decomposition::bezier_segments(data)
+    }
 }
 
 fn check_removal_tolerance(tolerance: f64) -> Result<()> {
