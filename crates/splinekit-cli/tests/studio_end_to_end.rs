@@ -26,14 +26,52 @@ const DRAG: (f64, f64) = (-60.0, 45.0);
 /// One window at a time: the tests share the display, the mouse and the keyboard.
 static DISPLAY: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
+/// The display, held by one test at a time, and the test's temporary directory, removed
+/// when the test passes (kept for a look when it fails).
+struct Scratch {
+    _display: std::sync::MutexGuard<'static, ()>,
+    dir: PathBuf,
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        if !std::thread::panicking() {
+            std::fs::remove_dir_all(&self.dir).ok();
+        }
+    }
+}
+
 /// The display (one test at a time), a fresh temporary directory named after the test,
 /// and the heart example.
-fn setup(name: &str) -> (std::sync::MutexGuard<'static, ()>, PathBuf, PathBuf) {
+fn setup(name: &str) -> (Scratch, PathBuf, PathBuf) {
     let display = DISPLAY.lock().unwrap_or_else(|e| e.into_inner());
     let dir = std::env::temp_dir().join(format!("splinekit-studio-{name}-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("a temporary directory");
     let original = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/heart_local_curves.json");
-    (display, dir, original)
+    (Scratch { _display: display, dir: dir.clone() }, dir, original)
+}
+
+/// A copy of the heart example `original` in `dir`, as `heart.json`, for the studio to edit
+/// and save.
+fn heart_copy(dir: &Path, original: &Path) -> PathBuf {
+    let doc = dir.join("heart.json");
+    std::fs::copy(original, &doc).expect("copied");
+    doc
+}
+
+/// The JSON in the file at `path` (`what` names the file if it cannot be read).
+fn read_json(path: &Path, what: &str) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(path).expect(what)).expect("JSON")
+}
+
+/// Copies `files` of `dir`, each name behind `prefix`, to the folder `STUDIO_E2E_KEEP`
+/// names, when it is set.
+fn keep(dir: &Path, files: &[&str], prefix: &str) {
+    if let Ok(out) = std::env::var("STUDIO_E2E_KEEP") {
+        for f in files {
+            std::fs::copy(dir.join(f), Path::new(&out).join(format!("{prefix}{f}"))).ok();
+        }
+    }
 }
 
 fn xdotool(args: &[&str]) -> String {
@@ -76,13 +114,19 @@ fn settled_report(path: &Path) -> Value {
     }
 }
 
-/// The window pixel position of local curve `k` in a handle report.
-fn handle(report: &Value, k: usize) -> (f64, f64) {
+/// The window pixel position of the handle of `kind` (as `local_curve`) and `index` in a
+/// handle report.
+fn handle_of(report: &Value, kind: &str, index: usize) -> (f64, f64) {
     let h = report["handles"]
         .as_array()
-        .and_then(|hs| hs.iter().find(|h| h["kind"] == "local_curve" && h["index"] == k))
-        .unwrap_or_else(|| panic!("local curve {k} in {report}"));
+        .and_then(|hs| hs.iter().find(|h| h["kind"] == kind && h["index"] == index))
+        .unwrap_or_else(|| panic!("{} {index} in {report}", kind.replace('_', " ")));
     (h["x"].as_f64().expect("x"), h["y"].as_f64().expect("y"))
+}
+
+/// The window pixel position of local curve `k` in a handle report.
+fn handle(report: &Value, k: usize) -> (f64, f64) {
+    handle_of(report, "local_curve", k)
 }
 
 /// A studio process, killed if a test fails while it runs (so that the next test does not
@@ -165,6 +209,20 @@ fn drag(window: &str, path: impl Fn(f64) -> (f64, f64), steps: usize, held: Opti
     std::thread::sleep(Duration::from_millis(300));
 }
 
+/// The studio on `doc` (see [`studio`]), its settled handle report and its window, focused.
+fn open(doc: &Path, dir: &Path, report: &str, extra: &[&str]) -> (Running, Value, String) {
+    let child = studio(doc, dir, report, extra);
+    let (report, window) = focused_window(&dir.join(report));
+    (child, report, window)
+}
+
+/// The studio on the saved `doc` for three frames: its handle report (`after.json`).
+fn reopened(doc: &Path, dir: &Path) -> Value {
+    let child = studio(doc, dir, "after.json", &["--frames", "3"]);
+    wait(child, "the studio on the saved document");
+    read_json(&dir.join("after.json"), "report")
+}
+
 /// The settled handle report of the studio just started, and its window, focused.
 fn focused_window(report: &Path) -> (Value, String) {
     let report = settled_report(report);
@@ -180,8 +238,8 @@ fn focused_window(report: &Path) -> (Value, String) {
 fn drag_and_save(dir: &Path, doc: &Path) -> ((f64, f64), (f64, f64)) {
     let path = |name: &str| dir.join(name).to_str().expect("a UTF-8 path").to_string();
     let (view, whole) = (path("window.png"), path("studio.png"));
-    let child = studio(doc, dir, "before.json", &["--screenshot", &view, "--window-screenshot", &whole]);
-    let (report, window) = focused_window(&dir.join("before.json"));
+    let (child, report, window) =
+        open(doc, dir, "before.json", &["--screenshot", &view, "--window-screenshot", &whole]);
     let from = handle(&report, LOCAL);
     let to = (from.0 + DRAG.0, from.1 + DRAG.1);
     drag(&window, |f| (from.0 + f * DRAG.0, from.1 + f * DRAG.1), 12, None);
@@ -241,10 +299,9 @@ fn check_screenshot(dir: &Path, saved: &Path, view: &Value) {
 #[ignore = "needs an X display and xdotool; .ci/run runs it under Xvfb"]
 fn a_dragged_local_curve_is_saved_and_renders_as_the_window_shows_it() {
     let (_display, dir, original) = setup("e2e");
-    let doc = dir.join("heart.json");
-    std::fs::copy(&original, &doc).expect("copied");
+    let doc = heart_copy(&dir, &original);
     let (from, to) = drag_and_save(&dir, &doc);
-    let saved: Value = serde_json::from_str(&std::fs::read_to_string(&doc).expect("saved")).expect("JSON");
+    let saved = read_json(&doc, "saved");
     let transforms = saved["objects"][0]["shape"]["transforms"].as_object().expect("transforms").clone();
     assert_eq!(
         transforms.keys().collect::<Vec<_>>(),
@@ -253,12 +310,8 @@ fn a_dragged_local_curve_is_saved_and_renders_as_the_window_shows_it() {
     );
     SceneDocument::from_value(saved.clone()).expect("an ordinary scene document");
     // The saved handle sits where the mouse let go; the other handles did not move.
-    let child = studio(&doc, &dir, "after.json", &["--frames", "3"]);
-    wait(child, "the studio on the saved document");
-    let after: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("after.json")).expect("report")).expect("JSON");
-    let before: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("before.json")).expect("report")).expect("JSON");
+    let after = reopened(&doc, &dir);
+    let before = read_json(&dir.join("before.json"), "report");
     let now = handle(&after, LOCAL);
     assert!(
         (now.0 - to.0).abs() < 1.5 && (now.1 - to.1).abs() < 1.5,
@@ -270,12 +323,7 @@ fn a_dragged_local_curve_is_saved_and_renders_as_the_window_shows_it() {
     }
     check_support(&original, &doc);
     check_screenshot(&dir, &doc, &after["view"]);
-    if let Ok(out) = std::env::var("STUDIO_E2E_KEEP") {
-        for f in ["window.png", "studio.png", "render.png", "heart.json"] {
-            std::fs::copy(dir.join(f), Path::new(&out).join(f)).ok();
-        }
-    }
-    std::fs::remove_dir_all(&dir).ok();
+    keep(&dir, &["window.png", "studio.png", "render.png", "heart.json"], "");
 }
 
 /// Holding R, a person drags around the handle of a local whose transform turns about a
@@ -286,15 +334,13 @@ fn a_dragged_local_curve_is_saved_and_renders_as_the_window_shows_it() {
 #[ignore = "needs an X display and xdotool; .ci/run runs it under Xvfb"]
 fn a_local_rotating_about_a_pivot_is_rotated_by_hand() {
     let (_display, dir, original) = setup("e2e-pivot");
-    let mut scene: Value =
-        serde_json::from_str(&std::fs::read_to_string(&original).expect("the example")).expect("JSON");
+    let mut scene = read_json(&original, "the example");
     let pivoted = serde_json::json!({"rotate": {"axis": [0, 0, 1], "angle": 0.3, "pivot": [0, 0, 0]}});
     scene["objects"][0]["shape"]["transforms"] = serde_json::json!({ LOCAL.to_string(): pivoted });
     let (start, doc) = (dir.join("start.json"), dir.join("pivot.json"));
     std::fs::write(&start, scene.to_string()).expect("written");
     std::fs::write(&doc, scene.to_string()).expect("written");
-    let child = studio(&doc, &dir, "before.json", &[]);
-    let (report, window) = focused_window(&dir.join("before.json"));
+    let (child, report, window) = open(&doc, &dir, "before.json", &[]);
     let from = handle(&report, LOCAL);
     // Grab 8 pixels right of the handle and sweep a quarter turn around it, R held.
     let around = |a: f64| (from.0 + 8.0 * a.cos(), from.1 + 8.0 * a.sin());
@@ -303,14 +349,10 @@ fn a_local_rotating_about_a_pivot_is_rotated_by_hand() {
     let saved = save_and_quit(child, &doc, rotated, "the saved document");
     let rotate = &saved["objects"][0]["shape"]["transforms"][LOCAL.to_string()]["rotate"];
     assert_eq!(rotate["pivot"], serde_json::json!([0.0, 0.0, 0.0]), "the pivot stays: {rotate}");
-    let child = studio(&doc, &dir, "after.json", &["--frames", "3"]);
-    wait(child, "the studio on the saved document");
-    let after: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("after.json")).expect("report")).expect("JSON");
+    let after = reopened(&doc, &dir);
     let now = handle(&after, LOCAL);
     assert!((now.0 - from.0).abs() < 0.5 && (now.1 - from.1).abs() < 0.5, "the handle moved: {from:?} → {now:?}");
     check_support(&start, &doc);
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// The window pixel position and world position of a local Bézier's control point in a
@@ -373,12 +415,11 @@ fn pixel_map(report: &Value, kind: &str) -> impl Fn([f64; 3]) -> (f64, f64) {
 #[ignore = "needs an X display and xdotool; .ci/run runs it under Xvfb"]
 fn a_dragged_control_point_of_a_local_bezier_is_saved_and_renders_as_the_window_shows_it() {
     let (_display, dir, original) = setup("e2e-bezier");
-    let doc = dir.join("heart.json");
-    std::fs::copy(&original, &doc).expect("copied");
+    let doc = heart_copy(&dir, &original);
     let path = |name: &str| dir.join(name).to_str().expect("a UTF-8 path").to_string();
     let (view, whole) = (path("window.png"), path("studio.png"));
-    let child = studio(&doc, &dir, "before.json", &["--screenshot", &view, "--window-screenshot", &whole]);
-    let (report, window) = focused_window(&dir.join("before.json"));
+    let (child, report, window) =
+        open(&doc, &dir, "before.json", &["--screenshot", &view, "--window-screenshot", &whole]);
     assert!(local_point(&report, LOCAL, 1).is_none(), "the points show only once their local is selected");
     let to_px = pixel_map(&report, "local_curve");
     let [x, y] = at(handle(&report, LOCAL));
@@ -423,17 +464,9 @@ fn a_dragged_control_point_of_a_local_bezier_is_saved_and_renders_as_the_window_
     assert!((points[i][2] - fitted[i].z).abs() < 1e-9, "moved in the view plane (z stays)");
     SceneDocument::from_value(saved.clone()).expect("an ordinary scene document");
     check_support(&original, &doc);
-    let child = studio(&doc, &dir, "after.json", &["--frames", "3"]);
-    wait(child, "the studio on the saved document");
-    let after: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("after.json")).expect("report")).expect("JSON");
+    let after = reopened(&doc, &dir);
     check_screenshot(&dir, &doc, &after["view"]);
-    if let Ok(out) = std::env::var("STUDIO_E2E_KEEP") {
-        for f in ["window.png", "studio.png", "render.png", "heart.json"] {
-            std::fs::copy(dir.join(f), Path::new(&out).join(format!("bezier-{f}"))).ok();
-        }
-    }
-    std::fs::remove_dir_all(&dir).ok();
+    keep(&dir, &["window.png", "studio.png", "render.png", "heart.json"], "bezier-");
 }
 
 /// The window pixel centre of the panel widget `name` in a report, once it is there.
@@ -445,11 +478,7 @@ fn widget(report: &Value, name: &str) -> Option<(f64, f64)> {
 /// Clicks the widget `name` once the report shows it.
 fn click_widget(report: &Path, window: &str, name: &str) {
     let v = wait_for_json(report, |v| widget(v, name).is_some(), name);
-    let [x, y] = at(widget(&v, name).expect("shown"));
-    xdotool(&["mousemove", "--window", window, &x, &y]);
-    std::thread::sleep(Duration::from_millis(300));
-    xdotool(&["click", "1"]);
-    std::thread::sleep(Duration::from_millis(300));
+    click(window, widget(&v, name).expect("shown"));
 }
 
 /// A person selects a clamped B-spline in Objects, opens the knot style box in Properties,
@@ -467,8 +496,7 @@ fn the_knot_style_is_switched_in_the_window_and_saved() {
     let scene = serde_json::json!({"type": "scene", "objects": [{"shape": shape, "control_net": true}]});
     std::fs::write(&doc, scene.to_string()).expect("written");
     let view = dir.join("window.png").to_str().expect("a UTF-8 path").to_string();
-    let child = studio(&doc, &dir, "before.json", &["--screenshot", &view]);
-    let (_, window) = focused_window(&dir.join("before.json"));
+    let (child, _, window) = open(&doc, &dir, "before.json", &["--screenshot", &view]);
     let report = dir.join("before.json");
     click_widget(&report, &window, "object 0");
     click_widget(&report, &window, "knots");
@@ -483,17 +511,9 @@ fn the_knot_style_is_switched_in_the_window_and_saved() {
     }
     assert_eq!(shape["control_points"], points, "the control points stay");
     SceneDocument::from_value(saved.clone()).expect("an ordinary scene document");
-    let child = studio(&doc, &dir, "after.json", &["--frames", "3"]);
-    wait(child, "the studio on the saved document");
-    let after: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("after.json")).expect("report")).expect("JSON");
+    let after = reopened(&doc, &dir);
     check_screenshot(&dir, &doc, &after["view"]);
-    if let Ok(out) = std::env::var("STUDIO_E2E_KEEP") {
-        for f in ["window.png", "render.png", "bspline.json"] {
-            std::fs::copy(dir.join(f), Path::new(&out).join(format!("knots-{f}"))).ok();
-        }
-    }
-    std::fs::remove_dir_all(&dir).ok();
+    keep(&dir, &["window.png", "render.png", "bspline.json"], "knots-");
 }
 
 /// A plane curve of issue 22's tests: a cubic B-spline (or with `weights`, a NURBS curve)
@@ -514,11 +534,7 @@ fn plane_curve(dir: &Path, name: &str, weights: Option<Value>) -> PathBuf {
 
 /// The window pixel position of control point `i` in a report.
 fn control_point(report: &Value, i: usize) -> (f64, f64) {
-    let h = report["handles"]
-        .as_array()
-        .and_then(|hs| hs.iter().find(|h| h["kind"] == "control_point" && h["index"] == i))
-        .unwrap_or_else(|| panic!("control point {i} in {report}"));
-    (h["x"].as_f64().expect("x"), h["y"].as_f64().expect("y"))
+    handle_of(report, "control_point", i)
 }
 
 fn click(window: &str, p: (f64, f64)) {
@@ -562,8 +578,7 @@ fn a_knot_is_inserted_by_clicking_the_curve() {
     let (_display, dir, _) = setup("e2e-insert-knot");
     let doc = plane_curve(&dir, "curve.json", None);
     let before = shape_of(&doc);
-    let child = studio(&doc, &dir, "report.json", &[]);
-    let (report, window) = focused_window(&dir.join("report.json"));
+    let (child, report, window) = open(&doc, &dir, "report.json", &[]);
     let map = pixel_map(&report, "control_point");
     click(&window, control_point(&report, 0));
     xdotool(&["key", "k"]);
@@ -576,7 +591,6 @@ fn a_knot_is_inserted_by_clicking_the_curve() {
     for ((_, a), (_, b)) in samples(&before, 500).iter().zip(samples(&shape_of(&doc), 500)) {
         assert!((a[0] - b[0]).abs() < 1e-12 && (a[1] - b[1]).abs() < 1e-12, "the curve changed: {a:?} {b:?}");
     }
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// A person selects the heart (a click on a local curve's handle), presses L and clicks on
@@ -587,11 +601,9 @@ fn a_knot_is_inserted_by_clicking_the_curve() {
 #[ignore = "needs an X display and xdotool; .ci/run runs it under Xvfb"]
 fn a_local_curve_is_inserted_by_clicking_the_heart() {
     let (_display, dir, original) = setup("e2e-insert-local");
-    let doc = dir.join("heart.json");
-    std::fs::copy(&original, &doc).expect("copied");
+    let doc = heart_copy(&dir, &original);
     let before = heart(&doc);
-    let child = studio(&doc, &dir, "report.json", &[]);
-    let (report, window) = focused_window(&dir.join("report.json"));
+    let (child, report, window) = open(&doc, &dir, "report.json", &[]);
     let map = pixel_map(&report, "local_curve");
     click(&window, handle(&report, 0));
     xdotool(&["key", "l"]);
@@ -614,7 +626,6 @@ fn a_local_curve_is_inserted_by_clicking_the_heart() {
             assert!(d < 0.44, "moved by {d} at {s}: over 1 % of the heart's 44 diagonal");
         }
     }
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Holding W, a person drags a NURBS control point up: its weight grows (e^(Δy/100)), the
@@ -624,8 +635,7 @@ fn a_local_curve_is_inserted_by_clicking_the_heart() {
 fn a_weight_is_dragged_with_w_held() {
     let (_display, dir, _) = setup("e2e-weight");
     let doc = plane_curve(&dir, "nurbs.json", Some(serde_json::json!([1, 1, 1, 1, 1, 1])));
-    let child = studio(&doc, &dir, "report.json", &[]);
-    let (report, window) = focused_window(&dir.join("report.json"));
+    let (child, report, window) = open(&doc, &dir, "report.json", &[]);
     let from = control_point(&report, 2);
     drag(&window, |f| (from.0, from.1 - 60.0 * f), 8, Some("w"));
     let heavier = |v: &Value| v["objects"][0]["shape"]["weights"][2].as_f64().is_some_and(|w| w > 1.0);
@@ -635,7 +645,6 @@ fn a_weight_is_dragged_with_w_held() {
     assert!((w - 0.6f64.exp()).abs() < 0.05, "weight {w}, about e^0.6");
     assert_eq!(shape["weights"][0], serde_json::json!(1.0));
     assert_eq!(shape["control_points"][2], serde_json::json!([2.0, -1.0]));
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// A person draws a box with Ctrl around control points 1, 2 and 3, drags point 2: the
@@ -645,8 +654,7 @@ fn a_weight_is_dragged_with_w_held() {
 fn three_boxed_points_move_together() {
     let (_display, dir, _) = setup("e2e-box");
     let doc = plane_curve(&dir, "curve.json", None);
-    let child = studio(&doc, &dir, "report.json", &[]);
-    let (report, window) = focused_window(&dir.join("report.json"));
+    let (child, report, window) = open(&doc, &dir, "report.json", &[]);
     let ps: Vec<(f64, f64)> = (1..=3).map(|i| control_point(&report, i)).collect();
     let lo = (
         ps.iter().map(|p| p.0).fold(f64::INFINITY, f64::min) - 12.0,
@@ -670,7 +678,6 @@ fn three_boxed_points_move_together() {
         );
     }
     assert_eq!((pts[0], pts[4], pts[5]), (start[0], start[4], start[5]), "the others stay");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Pressing C draws the curvature comb: the view's screenshot shows the comb's purple,
@@ -682,8 +689,7 @@ fn the_curvature_comb_is_toggled_with_c() {
     let (_display, dir, _) = setup("e2e-comb");
     let doc = plane_curve(&dir, "curve.json", None);
     let view = dir.join("view.png");
-    let child = studio(&doc, &dir, "report.json", &["--screenshot", view.to_str().expect("UTF-8")]);
-    let (report, _window) = focused_window(&dir.join("report.json"));
+    let (child, report, _window) = open(&doc, &dir, "report.json", &["--screenshot", view.to_str().expect("UTF-8")]);
     xdotool(&["key", "c"]);
     std::thread::sleep(Duration::from_millis(500));
     xdotool(&["key", "ctrl+q"]);
@@ -702,5 +708,4 @@ fn the_curvature_comb_is_toggled_with_c() {
     if let Ok(out) = std::env::var("STUDIO_E2E_KEEP") {
         std::fs::copy(&view, Path::new(&out).join("comb.png")).ok();
     }
-    std::fs::remove_dir_all(&dir).ok();
 }

@@ -18,7 +18,7 @@ use std::sync::Mutex;
 
 use splinekit::blend::BlendingSplineSurface;
 use splinekit::surface::{Curvatures, FundamentalForms, Surface, SurfaceGridSamples, TrimLoops};
-use splinekit::{Interval, ParamRect, Point};
+use splinekit::{ParamRect, Point};
 use splinekit_scene::blending::BlendingSplineSurfaceDoc;
 use splinekit_scene::blending::local_points::PatchControlPoints;
 use splinekit_scene::scenes::SceneDocument;
@@ -257,18 +257,7 @@ impl KeptSurface {
 /// The kept surface, evaluating as the kernel surface does, except that the grid it keeps
 /// comes from its samples.
 impl Surface<3> for KeptSurface {
-    fn domain_u(&self) -> Interval {
-        self.surface.domain_u()
-    }
-    fn domain_v(&self) -> Interval {
-        self.surface.domain_v()
-    }
-    fn is_closed_u(&self) -> bool {
-        self.surface.is_closed_u()
-    }
-    fn is_closed_v(&self) -> bool {
-        self.surface.is_closed_v()
-    }
+    splinekit::wrapped_surface_domains!(surface);
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<3>]) {
         self.surface.eval_partials(u, v, du, dv, out)
     }

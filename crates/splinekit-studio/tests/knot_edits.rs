@@ -18,11 +18,37 @@ const NURBS: &str = r#"{"type": "scene", "objects": [{"shape": {"type": "nurbs",
     "knots": [0, 0, 0, 1, 2, 2, 2], "control_points": [[0, 0], [1, 2], [3, -1], [4, 1]],
     "weights": [1, 0.7, 2, 1]}, "control_net": true}], "size": [600, 600]}"#;
 
-fn studio() -> (Studio, Projector) {
-    let mut studio = Studio::new(splinekit_studio::document::parse(NURBS).expect("valid"), None);
+/// The studio on the document `json` with its first object selected, and the projector
+/// of its 600 × 600 view.
+fn studio_on(json: &str) -> (Studio, Projector) {
+    let mut studio = Studio::new(splinekit_studio::document::parse(json).expect("valid"), None);
     studio.selection.object = Some(0);
     let rs: RenderScene = studio.render_scene((600, 600), false).expect("composes");
     (studio, Projector::new(&rs, (600, 600)))
+}
+
+fn studio() -> (Studio, Projector) {
+    studio_on(NURBS)
+}
+
+/// The Properties panel over `studio`, its commands run each frame, after a first frame.
+fn panel(studio: Studio) -> Harness<'static, Studio> {
+    let mut h = Harness::new_ui_state(
+        |ui, s: &mut Studio| {
+            properties_panel(ui, s);
+            s.run_commands();
+        },
+        studio,
+    );
+    h.run();
+    h
+}
+
+/// Clicks Insert knot in the panel: the tool is armed.
+fn arm_insert(h: &mut Harness<'static, Studio>) {
+    h.get_by_label("Insert knot").click();
+    h.run();
+    assert_eq!(h.state().knot_tool, Some(KnotTool::Insert));
 }
 
 fn shape(studio: &Studio) -> Value {
@@ -37,17 +63,8 @@ fn samples(studio: &Studio) -> Vec<(f64, [f64; 3])> {
 fn the_panel_arms_the_tool_and_a_click_on_the_curve_inserts_a_knot_there() {
     let (studio, projector) = studio();
     let before = samples(&studio);
-    let mut h = Harness::new_ui_state(
-        |ui, s: &mut Studio| {
-            properties_panel(ui, s);
-            s.run_commands();
-        },
-        studio,
-    );
-    h.run();
-    h.get_by_label("Insert knot").click();
-    h.run();
-    assert_eq!(h.state().knot_tool, Some(KnotTool::Insert));
+    let mut h = panel(studio);
+    arm_insert(&mut h);
     let studio = h.state_mut();
     // A click off the curve keeps the tool; one on the curve at t ≈ 1.4 inserts there.
     studio.knot_click(KnotTool::Insert, &projector, [1.0, 1.0], false);
@@ -108,23 +125,11 @@ fn knots(studio: &Studio, field: &str) -> Vec<f64> {
 
 #[test]
 fn on_a_spline_surface_a_click_inserts_a_u_knot_and_a_shift_click_a_v_knot() {
-    let mut studio = Studio::new(splinekit_studio::document::parse(NET).expect("valid"), None);
-    studio.selection.object = Some(0);
-    let rs: RenderScene = studio.render_scene((600, 600), false).expect("composes");
-    let projector = Projector::new(&rs, (600, 600));
+    let (studio, projector) = studio_on(NET);
     let before = net_samples(&studio);
-    let mut h = Harness::new_ui_state(
-        |ui, s: &mut Studio| {
-            properties_panel(ui, s);
-            s.run_commands();
-        },
-        studio,
-    );
-    h.run();
+    let mut h = panel(studio);
     assert!(h.query_by_label("Remove knot").is_none(), "a surface offers insertion only");
-    h.get_by_label("Insert knot").click();
-    h.run();
-    assert_eq!(h.state().knot_tool, Some(KnotTool::Insert));
+    arm_insert(&mut h);
     let studio = h.state_mut();
     // Sample (14, 25) of the 40 × 40 grid: (u, v) = (0.35, 0.625).
     let ((u, v), p) = before[14][25];

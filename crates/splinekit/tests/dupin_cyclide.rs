@@ -4,10 +4,8 @@
 //! NURBS circle has at s and t (exactly the parameter at the quarter points), for ring,
 //! spindle and horn cyclides; bad parameters are refused by name.
 
-use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, PI};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
-use splinekit::Point;
-use splinekit::curve::{Curve, NurbsCurve};
 use splinekit::surface::Surface;
 use splinekit::surface::model::dupin_cyclide;
 
@@ -20,27 +18,16 @@ fn closed_form(a: f64, c: f64, mu: f64, theta: f64, psi: f64) -> [f64; 3] {
     [(mu * (c - a * ct * cp) + b2 * ct) / d, b * st * (a - mu * cp) / d, b * sp * (c * ct - mu) / d]
 }
 
-/// The angle of the nine-point NURBS circle at parameter s (a kernel curve, built here).
+/// The angle of the nine-point NURBS circle at parameter s, in closed form rather than
+/// from its control points: on quarter k (s = (k + τ)·π/2, τ ∈ [0, 1]) the circle is the
+/// rational quadratic arc of half-angle α = π/4 (end weights 1, middle weight cos α), and
+/// such an arc's half-angle tangent, measured from the arc's middle, is linear in its
+/// parameter: tan(β/2) = tan(α/2)·(2τ − 1) (the arc is a projective image of the line,
+/// odd about τ = ½, from −α at τ = 0 to α at τ = 1). So θ = kπ/2 + π/4 + 2 atan(tan(π/8)(2τ − 1)).
 fn circle_angle(s: f64) -> f64 {
-    let w = FRAC_1_SQRT_2;
-    let xy = [
-        (1.0, 0.0),
-        (1.0, 1.0),
-        (0.0, 1.0),
-        (-1.0, 1.0),
-        (-1.0, 0.0),
-        (-1.0, -1.0),
-        (0.0, -1.0),
-        (1.0, -1.0),
-        (1.0, 0.0),
-    ];
-    let points = xy.iter().map(|&(x, y)| Point::<2>::new(x, y)).collect();
-    let weights = (0..9).map(|i| if i % 2 == 1 { w } else { 1.0 }).collect();
-    let q = FRAC_PI_2;
-    let knots = vec![0.0, 0.0, 0.0, q, q, 2.0 * q, 2.0 * q, 3.0 * q, 3.0 * q, 4.0 * q, 4.0 * q, 4.0 * q];
-    let p = NurbsCurve::new(2, knots, points, weights).unwrap().point(s);
-    assert!((p.norm() - 1.0).abs() < 1e-14, "the circle is round");
-    p[1].atan2(p[0])
+    let k = (s / FRAC_PI_2).floor().clamp(0.0, 3.0);
+    let tau = s / FRAC_PI_2 - k;
+    k * FRAC_PI_2 + FRAC_PI_4 + 2.0 * ((PI / 8.0).tan() * (2.0 * tau - 1.0)).atan()
 }
 
 const CYCLIDES: [(f64, f64, f64); 3] = [(3.0, 1.0, 2.0), (3.0, 1.0, 0.5), (3.0, 2.0, 3.0)];

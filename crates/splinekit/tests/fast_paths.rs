@@ -155,6 +155,13 @@ fn parameters(rng: &mut Rng, axis: &PlainAxis, random: usize, order: Order) -> V
     let mut t: Vec<f64> = (0..random).map(|_| rng.range(a, b)).collect();
     t.extend(axis.knots.iter().copied().filter(|&k| k >= a && k <= b));
     t.extend([a, b, a - 0.5, b + 0.75]);
+    arrange(&mut t, order, rng);
+    t
+}
+
+/// Sorts `t`, then arranges it by `order`: kept sorted, reversed, shuffled (Fisher–Yates
+/// with `rng`), or each value three times in a row followed by the sorted values again.
+fn arrange(t: &mut Vec<f64>, order: Order, rng: &mut Rng) {
     t.sort_by(f64::total_cmp);
     match order {
         Order::Sorted => {}
@@ -164,9 +171,8 @@ fn parameters(rng: &mut Rng, axis: &PlainAxis, random: usize, order: Order) -> V
                 t.swap(i, rng.below(i + 1));
             }
         }
-        Order::Repeated => t = t.iter().flat_map(|&x| [x, x, x]).chain(t.clone()).collect(),
+        Order::Repeated => *t = t.iter().flat_map(|&x| [x, x, x]).chain(t.clone()).collect(),
     }
-    t
 }
 
 fn coordinates(rng: &mut Rng, dim: usize) -> Vec<f64> {
@@ -559,26 +565,12 @@ macro_rules! by_dimension {
 /// returned zeros (the end belongs to the last span that is not empty).
 #[test]
 fn found_cases_of_spline_curves() {
-    check_curve::<3>(&CurveCase {
-        degree: 1,
-        extra: 5,
-        kind: KnotKind::Unclamped,
-        order: 2,
-        params: Order::Repeated,
-        dim: 3,
-        rational: false,
-        seed: 13262486668611229537,
-    });
-    check_curve::<4>(&CurveCase {
-        degree: 6,
-        extra: 1,
-        kind: KnotKind::Unclamped,
-        order: 1,
-        params: Order::Random,
-        dim: 4,
-        rational: false,
-        seed: 6365972896449921215,
-    });
+    for (degree, extra, order, params, dim, seed) in
+        [(1, 5, 2, Order::Repeated, 3, 13262486668611229537), (6, 1, 1, Order::Random, 4, 6365972896449921215)]
+    {
+        let case = CurveCase { degree, extra, kind: KnotKind::Unclamped, order, params, dim, rational: false, seed };
+        by_dimension!(dim, check_curve, &case);
+    }
 }
 
 proptest! {
@@ -778,17 +770,7 @@ fn check_blending_curve(
     let mut t: Vec<f64> = (0..40).map(|_| rng.range(d.start, d.end)).collect();
     t.extend(c.knots().values());
     t.extend([d.start, d.end, d.start - 0.3 * d.length(), d.end + 0.6 * d.length()]);
-    t.sort_by(f64::total_cmp);
-    match params {
-        Order::Sorted => {}
-        Order::Reversed => t.reverse(),
-        Order::Random => {
-            for i in (1..t.len()).rev() {
-                t.swap(i, rng.below(i + 1));
-            }
-        }
-        Order::Repeated => t = t.iter().flat_map(|&x| [x, x, x]).chain(t.clone()).collect(),
-    }
+    arrange(&mut t, params, &mut rng);
     let w = order + 1;
     let mut batch = vec![Point::<3>::zeros(); t.len() * w];
     c.eval_many(&t, order, &mut batch);

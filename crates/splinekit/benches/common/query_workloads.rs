@@ -23,13 +23,21 @@ pub fn bicubic() -> BSplineSurface<3> {
 /// The query points of bench/ocp/queries.py: a 100 × 100 grid over [−1, 8]² at heights
 /// −2 + 4 sin²(3a + 7b).
 pub fn query_points() -> Vec<Point<3>> {
+    cell_centres((-1.0, 9.0), (-1.0, 9.0), |a, b, x, y| {
+        Point::<3>::new(x, y, -2.0 + 4.0 * (3.0 * a as f64 + 7.0 * b as f64).sin().powi(2))
+    })
+}
+
+/// `point(a, b, x, y)` at the centres (x, y) of the cells (a, b) of a 100 × 100 grid over
+/// [x₀, x₀ + w] × [y₀, y₀ + h] (`x` = (x₀, w), `y` = (y₀, h)), rows of a first.
+fn cell_centres<P>(x: (f64, f64), y: (f64, f64), point: impl Fn(usize, usize, f64, f64) -> P) -> Vec<P> {
     let side = 100;
     let mut pts = Vec::with_capacity(side * side);
     for a in 0..side {
         for b in 0..side {
-            let x = -1.0 + 9.0 * (a as f64 + 0.5) / side as f64;
-            let y = -1.0 + 9.0 * (b as f64 + 0.5) / side as f64;
-            pts.push(Point::<3>::new(x, y, -2.0 + 4.0 * (3.0 * a as f64 + 7.0 * b as f64).sin().powi(2)));
+            let px = x.0 + x.1 * (a as f64 + 0.5) / side as f64;
+            let py = y.0 + y.1 * (b as f64 + 0.5) / side as f64;
+            pts.push(point(a, b, px, py));
         }
     }
     pts
@@ -39,16 +47,7 @@ pub fn query_points() -> Vec<Point<3>> {
 /// curvo): a 100 × 100 grid over [−0.5, 10.4] × [−2, 2], the curve's box widened by 0.5
 /// and 1.
 pub fn curve_query_points() -> Vec<Point<2>> {
-    let side = 100;
-    let mut pts = Vec::with_capacity(side * side);
-    for a in 0..side {
-        for b in 0..side {
-            let x = -0.5 + 10.9 * (a as f64 + 0.5) / side as f64;
-            let y = -2.0 + 4.0 * (b as f64 + 0.5) / side as f64;
-            pts.push(Point::<2>::new(x, y));
-        }
-    }
-    pts
+    cell_centres((-0.5, 10.9), (-2.0, 4.0), |_, _, x, y| Point::<2>::new(x, y))
 }
 
 /// The two cubic curves with 100 control points each of bench/ocp/queries.py (22 crossings).

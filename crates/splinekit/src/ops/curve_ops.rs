@@ -103,6 +103,36 @@ fn open_at<T: CoefficientNorm>(data: &SplineData<T>, u: f64) -> Result<SplineDat
     Ok(piece)
 }
 
+/// The clamped form on the domain: a periodic spline cut open at the start of its domain
+/// (knot t_p), an open one with its end knots raised to full multiplicity.
+fn clamp_generic<T: CoefficientNorm>(data: &SplineData<T>, periodic: bool) -> Result<SplineData<T>> {
+    if periodic { open_at(data, data.knots[data.degree]) } else { decomposition::clamp(data) }
+}
+
+/// An open spline split at `u` into the splines on [start, u] and [u, end]; a periodic one
+/// cut open at `u` instead (one spline on [u, u + T], no second piece).
+fn split_generic<T: CoefficientNorm>(
+    data: &SplineData<T>,
+    periodic: bool,
+    u: f64,
+) -> Result<(SplineData<T>, Option<SplineData<T>>)> {
+    if periodic {
+        return Ok((open_at(data, u)?, None));
+    }
+    let (l, r) = decomposition::split(data, u)?;
+    Ok((l, Some(r)))
+}
+
+/// The Bézier segments with their parameter intervals (a periodic spline cut open at the
+/// start of its domain first).
+fn segments_generic<T: CoefficientNorm>(data: &SplineData<T>, periodic: bool) -> Result<Vec<BezierSegment<T>>> {
+    if periodic {
+        decomposition::bezier_segments(&open_at(data, data.knots[data.degree])?)
+    } else {
+        decomposition::bezier_segments(data)
+    }
+}
+
 fn check_removal_tolerance(tolerance: f64) -> Result<()> {
     if !(tolerance >= 0.0 && tolerance.is_finite()) {
         return Err(Error::invalid("tolerance", format!("must be finite and ≥ 0, got {tolerance}")));
@@ -176,12 +206,7 @@ impl<const D: usize> BSplineCurve<D> {
     /// The same curve with clamped knots on its domain (a periodic curve is cut open at
     /// the start of its domain).
     pub fn clamped(&self) -> Result<Self> {
-        let d = if self.is_periodic() {
-            open_at(&self.data(), self.knots()[self.degree()])?
-        } else {
-            decomposition::clamp(&self.data())?
-        };
-        to_bspline(d, false)
+        to_bspline(clamp_generic(&self.data(), self.is_periodic())?, false)
     }
     /// Splits at `u` into the curves on [start, u] and [u, end]. A periodic curve is cut
     /// open at `u` instead: the result is one open curve on [u, u + T] (returned twice is
@@ -201,16 +226,12 @@ impl<const D: usize> BSplineCurve<D> {
     /// assert!((left.point(0.25) - c.point(0.25)).norm() < 1e-14 && (right.point(0.7) - c.point(0.7)).norm() < 1e-14);
     /// ```
     pub fn split(&self, u: f64) -> Result<(Self, Option<Self>)> {
-        if self.is_periodic() {
-            return Ok((to_bspline(open_at(&self.data(), u)?, false)?, None));
-        }
-        let (l, r) = decomposition::split(&self.data(), u)?;
-        Ok((to_bspline(l, false)?, Some(to_bspline(r, false)?)))
+        let (l, r) = split_generic(&self.data(), self.is_periodic(), u)?;
+        Ok((to_bspline(l, false)?, r.map(|r| to_bspline(r, false)).transpose()?))
     }
     /// The Bézier segments of the curve, each with its parameter interval.
     pub fn bezier_segments(&self) -> Result<Vec<(Interval, BezierCurve<D>)>> {
-        let d = if self.is_periodic() { open_at(&self.data(), self.knots()[self.degree()])? } else { self.data() };
-        decomposition::bezier_segments(&d)?
+        segments_generic(&self.data(), self.is_periodic())?
             .into_iter()
             .map(|BezierSegment { interval, control_points }| Ok((interval, BezierCurve::new(control_points)?)))
             .collect()
@@ -245,25 +266,16 @@ impl<const D: usize> NurbsCurve<D> {
     }
     /// Clamped form on the domain (periodic curves are cut open at the domain start).
     pub fn clamped(&self) -> Result<Self> {
-        let d = if self.is_periodic() {
-            open_at(&self.data(), self.knots()[self.degree()])?
-        } else {
-            decomposition::clamp(&self.data())?
-        };
-        to_nurbs(d, false)
+        to_nurbs(clamp_generic(&self.data(), self.is_periodic())?, false)
     }
     /// Splits at `u`; see [`BSplineCurve::split`].
     pub fn split(&self, u: f64) -> Result<(Self, Option<Self>)> {
-        if self.is_periodic() {
-            return Ok((to_nurbs(open_at(&self.data(), u)?, false)?, None));
-        }
-        let (l, r) = decomposition::split(&self.data(), u)?;
-        Ok((to_nurbs(l, false)?, Some(to_nurbs(r, false)?)))
+        let (l, r) = split_generic(&self.data(), self.is_periodic(), u)?;
+        Ok((to_nurbs(l, false)?, r.map(|r| to_nurbs(r, false)).transpose()?))
     }
     /// The rational Bézier segments with their parameter intervals.
     pub fn bezier_segments(&self) -> Result<Vec<(Interval, RationalBezierCurve<D>)>> {
-        let d = if self.is_periodic() { open_at(&self.data(), self.knots()[self.degree()])? } else { self.data() };
-        decomposition::bezier_segments(&d)?
+        segments_generic(&self.data(), self.is_periodic())?
             .into_iter()
             .map(|BezierSegment { interval, control_points }| {
                 let pts = control_points.iter().map(|h| h.project()).collect();

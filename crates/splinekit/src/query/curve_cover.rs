@@ -35,8 +35,19 @@ pub const ROUNDING: f64 = 64.0 * f64::EPSILON;
 /// The fewest root pieces a curve is cut into (more where it has more breakpoints).
 const MIN_ROOT_PIECES: usize = 8;
 
-/// A piece is tame (its box says something useful) when `radius` ≤ TAME · its size.
+/// A piece or patch is tame (its box says something useful) when `radius` ≤ TAME · its
+/// size.
 const TAME: f64 = 0.05;
+
+/// Whether the box of a piece's or patch's Hermite control points, widened by the error
+/// `radius`, says something useful: the radius is at most [`TAME`] times the control
+/// box's diagonal, or at rounding level (2·[`ROUNDING`] times the largest coordinate, as on
+/// a piece that is a single point). Curve pieces and surface patches share it.
+#[inline]
+pub(crate) fn is_tame<const D: usize>(control: &[Point<D>], radius: f64) -> bool {
+    let scale = control.iter().fold(0.0f64, |m, p| m.max(p.amax()));
+    radius <= TAME * Aabb::around(control, 0.0).diagonal() || radius <= 2.0 * ROUNDING * scale
+}
 
 /// The cached hierarchy stops below this fraction of the domain; queries go on deeper.
 const CACHE_DEPTH_WIDTH: f64 = 1.0 / 4096.0;
@@ -121,8 +132,7 @@ impl<const D: usize> CurvePiece<D> {
     /// Whether the box says something useful: the error radius is small beside the piece
     /// (or at rounding level, as on a piece that is a single point).
     pub fn is_tame(&self) -> bool {
-        let scale = self.control.iter().fold(0.0f64, |m, p| m.max(p.amax()));
-        self.radius <= TAME * Aabb::around(&self.control, 0.0).diagonal() || self.radius <= 2.0 * ROUNDING * scale
+        is_tame(&self.control, self.radius)
     }
 }
 

@@ -17,14 +17,11 @@
 use crate::Point;
 use crate::curve::Interval;
 use crate::query::bounds::Aabb;
-use crate::query::curve_cover::{ROUNDING, SAFETY};
+use crate::query::curve_cover::{ROUNDING, SAFETY, is_tame};
 use crate::surface::Surface;
 
 /// The fewest root patches in each direction.
 const MIN_ROOT_PATCHES: usize = 4;
-
-/// A patch is tame when `radius` ≤ TAME · its diagonal.
-const TAME: f64 = 0.05;
 
 /// The cached hierarchy stops below this fraction of each domain.
 const CACHE_DEPTH_WIDTH: f64 = 1.0 / 256.0;
@@ -206,8 +203,7 @@ impl<const D: usize> SurfacePatch<D> {
     /// Whether the box says something useful: the error radius is small beside the patch
     /// (or at rounding level).
     pub fn is_tame(&self) -> bool {
-        let scale = self.control.iter().fold(0.0f64, |m, p| m.max(p.amax()));
-        self.radius <= TAME * Aabb::around(&self.control, 0.0).diagonal() || self.radius <= 2.0 * ROUNDING * scale
+        is_tame(&self.control, self.radius)
     }
 }
 

@@ -4,7 +4,6 @@
 use smallvec::{SmallVec, smallvec};
 
 use crate::Point;
-use crate::curve::Interval;
 use crate::curve::bezier::bezier_derivatives;
 use crate::error::Result;
 use crate::surface::Surface;
@@ -51,12 +50,7 @@ impl<const D: usize> Surface<D> for BezierSurface<D> {
     fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
         Some(crate::query::Aabb::around(self.control_points().iter().flatten(), 0.0))
     }
-    fn domain_u(&self) -> Interval {
-        Interval::new(0.0, 1.0)
-    }
-    fn domain_v(&self) -> Interval {
-        Interval::new(0.0, 1.0)
-    }
+    crate::surface::unit_square::unit_square_domains!();
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let (u, v) = (u.clamp(0.0, 1.0), v.clamp(0.0, 1.0));
         let rows = self.net.len();

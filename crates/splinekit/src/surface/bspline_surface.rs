@@ -4,7 +4,7 @@ use crate::basis::KnotVector;
 use crate::curve::BSplineCurve;
 use crate::error::Result;
 use crate::surface::Surface;
-use crate::surface::tensor::{TensorSpline, net_axes, net_shape, tensor_surface_domains};
+use crate::surface::tensor::{TensorSpline, net_axes, net_shape, tensor_surface_accessors, tensor_surface_domains};
 use crate::{Interval, Point};
 
 /// A tensor-product B-spline surface of degrees (p, q). The net's first index runs along
@@ -53,22 +53,7 @@ impl<const D: usize> BSplineSurface<D> {
         Self::new(degrees, ku, kv, net, (false, false))
     }
 
-    /// Degrees (p, q).
-    pub fn degrees(&self) -> (usize, usize) {
-        (self.spline.u.degree(), self.spline.v.degree())
-    }
-    /// Knots in u and v as given.
-    pub fn knots(&self) -> (&[f64], &[f64]) {
-        (self.spline.u.knots(), self.spline.v.knots())
-    }
-    /// The control net.
-    pub fn control_points(&self) -> &[Vec<Point<D>>] {
-        &self.net
-    }
-    /// Periodic flags (u, v).
-    pub fn periodic(&self) -> (bool, bool) {
-        (self.spline.u.is_periodic(), self.spline.v.is_periodic())
-    }
+    tensor_surface_accessors!();
 
     /// The isocurve u = u₀ as a B-spline in v (exact: its control points are
     /// Σ_i N_i(u₀) P_ij).

@@ -17,6 +17,8 @@ pub mod surface_ops;
 pub mod tensor;
 pub mod traits;
 pub mod trimmed;
+pub(crate) mod unit_square;
+pub mod wrapped;
 
 pub use crate::query::extent::SurfaceExtent;
 pub use crate::query::project_surface::SurfaceNearest;

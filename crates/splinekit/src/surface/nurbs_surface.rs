@@ -9,7 +9,7 @@ use crate::basis::binomial;
 use crate::curve::nurbs::check_weights;
 use crate::error::Result;
 use crate::ops::homogeneous::Homogeneous;
-use crate::surface::tensor::{TensorSpline, net_axes, net_shape, tensor_surface_domains};
+use crate::surface::tensor::{TensorSpline, net_axes, net_shape, tensor_surface_accessors, tensor_surface_domains};
 use crate::surface::{Surface, unit_normal};
 
 /// A tensor-product NURBS surface with positive weights beside the control points.
@@ -67,25 +67,10 @@ impl<const D: usize> NurbsSurface<D> {
         Self::new((nu - 1, nv - 1), bezier_knots(nu), bezier_knots(nv), net, weights, (false, false))
     }
 
-    /// Degrees (p, q).
-    pub fn degrees(&self) -> (usize, usize) {
-        (self.spline.u.degree(), self.spline.v.degree())
-    }
-    /// Knots in u and v as given.
-    pub fn knots(&self) -> (&[f64], &[f64]) {
-        (self.spline.u.knots(), self.spline.v.knots())
-    }
-    /// The control net.
-    pub fn control_points(&self) -> &[Vec<Point<D>>] {
-        &self.net
-    }
+    tensor_surface_accessors!();
     /// The weights.
     pub fn weights(&self) -> &[Vec<f64>] {
         &self.weights
-    }
-    /// Periodic flags (u, v).
-    pub fn periodic(&self) -> (bool, bool) {
-        (self.spline.u.is_periodic(), self.spline.v.is_periodic())
     }
 }
 

@@ -8,7 +8,6 @@
 
 use crate::Point;
 use crate::axes::OrthonormalAxes;
-use crate::curve::Interval;
 use crate::error::{Error, Result};
 use crate::surface::Surface;
 
@@ -50,18 +49,7 @@ impl<const D: usize> PlacedSurface<D> {
 }
 
 impl<const D: usize> Surface<D> for PlacedSurface<D> {
-    fn domain_u(&self) -> Interval {
-        self.surface.domain_u()
-    }
-    fn domain_v(&self) -> Interval {
-        self.surface.domain_v()
-    }
-    fn is_closed_u(&self) -> bool {
-        self.surface.is_closed_u()
-    }
-    fn is_closed_v(&self) -> bool {
-        self.surface.is_closed_v()
-    }
+    crate::wrapped_surface_domains!(surface);
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         self.surface.eval_partials(u, v, du, dv, out);
         let n = (du + 1) * (dv + 1);

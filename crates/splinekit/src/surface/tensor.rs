@@ -45,6 +45,31 @@ macro_rules! tensor_surface_domains {
 }
 pub(crate) use tensor_surface_domains;
 
+/// The inherent accessors every tensor-product surface with a `net` field (the control
+/// points as given) and a `spline: TensorSpline<_>` field shares: degrees, knots, net and
+/// periodic flags.
+macro_rules! tensor_surface_accessors {
+    () => {
+        /// Degrees (p, q).
+        pub fn degrees(&self) -> (usize, usize) {
+            (self.spline.u.degree(), self.spline.v.degree())
+        }
+        /// Knots in u and v as given.
+        pub fn knots(&self) -> (&[f64], &[f64]) {
+            (self.spline.u.knots(), self.spline.v.knots())
+        }
+        /// The control net.
+        pub fn control_points(&self) -> &[Vec<Point<D>>] {
+            &self.net
+        }
+        /// Periodic flags (u, v).
+        pub fn periodic(&self) -> (bool, bool) {
+            (self.spline.u.is_periodic(), self.spline.v.is_periodic())
+        }
+    };
+}
+pub(crate) use tensor_surface_accessors;
+
 /// Validates a control net (rectangular, finite) and builds the two axes of a
 /// tensor-product spline of `degrees` on `knots_u`, `knots_v`.
 pub fn net_axes<const D: usize>(

@@ -11,7 +11,7 @@
 //! (vₖ, e(vₖvₖ₊₁), f, e(vₖ₋₁vₖ)), faces in the input's order. Linear time and memory.
 
 use super::cage::{Cage, Crease};
-use super::creases::{child_sharpness, edge_point, is_boundary_corner, vertex_point};
+use super::creases::{child_sharpness, edge_point, vertex_points};
 use super::topology::Topology;
 use crate::Point;
 
@@ -39,20 +39,11 @@ pub(crate) fn quad_split(cage: &Cage, topo: &Topology, rule: QuadRule) -> Cage {
             face.iter().fold(Point::<3>::zeros(), |a, &i| a + vs[i as usize]) / face.len() as f64
         })
         .collect();
-    let mut edges = Vec::new();
-    for v in 0..nv as u32 {
-        if topo.outgoing(v).is_empty() {
-            out.push(vs[v as usize]);
-            continue;
-        }
-        if rule == QuadRule::Bilinear {
-            out.push(vs[v as usize]);
-            continue;
-        }
-        edges.clear();
-        edges.extend(topo.vertex_edges(v));
-        let corner = is_boundary_corner(topo, v, cage.boundary);
-        let smooth = || {
+    if rule == QuadRule::Bilinear {
+        // Every vertex stays.
+        out.extend_from_slice(vs);
+    } else {
+        vertex_points(topo, vs, cage.boundary, &mut out, |v, edges| {
             let n = edges.len() as f64;
             let e = edges.iter().fold(Point::<3>::zeros(), |a, &(_, w)| a + vs[w as usize]);
             let f = topo
@@ -60,8 +51,7 @@ pub(crate) fn quad_split(cage: &Cage, topo: &Topology, rule: QuadRule) -> Cage {
                 .iter()
                 .fold(Point::<3>::zeros(), |a, &h| a + face_points[topo.he_face[h as usize] as usize]);
             (vs[v as usize] * (n - 2.0) + e / n + f / n) / n
-        };
-        out.push(vertex_point(topo, vs, v, &edges, corner, smooth));
+        });
     }
     out.extend_from_slice(&face_points);
     for e in 0..ne as u32 {

@@ -92,6 +92,30 @@ pub fn vertex_point(
     mask(parent, &|x| x) * w + mask(child, &child_sharpness) * (1.0 - w)
 }
 
+/// The vertex points of every vertex of a cage, in the cage's order, pushed onto `out`: a
+/// vertex without edges stays; the others move by [`vertex_point`], with the boundary rule
+/// `boundary` and the scheme's smooth rule `smooth(v, edges)` (`edges` = (edge, neighbour)
+/// around v).
+pub fn vertex_points(
+    topo: &Topology,
+    vertices: &[Point<3>],
+    boundary: BoundaryRule,
+    out: &mut Vec<Point<3>>,
+    smooth: impl Fn(u32, &[(u32, u32)]) -> Point<3>,
+) {
+    let mut edges = Vec::new();
+    for v in 0..vertices.len() as u32 {
+        if topo.outgoing(v).is_empty() {
+            out.push(vertices[v as usize]);
+            continue;
+        }
+        edges.clear();
+        edges.extend(topo.vertex_edges(v));
+        let corner = is_boundary_corner(topo, v, boundary);
+        out.push(vertex_point(topo, vertices, v, &edges, corner, || smooth(v, &edges)));
+    }
+}
+
 /// The new position of an edge's point given its crease (midpoint) and smooth points.
 pub fn edge_point(sharpness: f64, crease: Point<3>, smooth: impl Fn() -> Point<3>) -> Point<3> {
     if sharpness >= 1.0 {

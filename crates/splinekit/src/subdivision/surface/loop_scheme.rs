@@ -10,7 +10,7 @@
 
 use super::cage::Cage;
 use super::catmull_clark::child_creases;
-use super::creases::{edge_point, is_boundary_corner, vertex_point};
+use super::creases::{edge_point, vertex_points};
 use super::topology::Topology;
 use crate::{Error, Point, Result};
 
@@ -35,22 +35,11 @@ pub fn loop_step(cage: &Cage, topo: &Topology) -> Result<Cage> {
     let vs = &cage.vertices;
     let nv = vs.len();
     let mut out = Vec::with_capacity(nv + topo.edges.len());
-    let mut edges = Vec::new();
-    for v in 0..nv as u32 {
-        if topo.outgoing(v).is_empty() {
-            out.push(vs[v as usize]);
-            continue;
-        }
-        edges.clear();
-        edges.extend(topo.vertex_edges(v));
-        let corner = is_boundary_corner(topo, v, cage.boundary);
-        let smooth = || {
-            let beta = loop_beta(edges.len());
-            let e = edges.iter().fold(Point::<3>::zeros(), |a, &(_, w)| a + vs[w as usize]);
-            vs[v as usize] * (1.0 - edges.len() as f64 * beta) + e * beta
-        };
-        out.push(vertex_point(topo, vs, v, &edges, corner, smooth));
-    }
+    vertex_points(topo, vs, cage.boundary, &mut out, |v, edges| {
+        let beta = loop_beta(edges.len());
+        let e = edges.iter().fold(Point::<3>::zeros(), |a, &(_, w)| a + vs[w as usize]);
+        vs[v as usize] * (1.0 - edges.len() as f64 * beta) + e * beta
+    });
     for e in 0..topo.edges.len() as u32 {
         let [a, b] = topo.edges[e as usize];
         let (pa, pb) = (vs[a as usize], vs[b as usize]);

@@ -9,7 +9,7 @@
 use smallvec::{SmallVec, smallvec};
 
 use crate::Point;
-use crate::curve::{Curve, Interval, Reparametrized};
+use crate::curve::{Curve, Reparametrized};
 use crate::error::{Error, Result};
 use crate::surface::Surface;
 use crate::tolerance::JOIN_RELATIVE;
@@ -111,12 +111,7 @@ impl<const D: usize> CoonsPatch<D> {
 }
 
 impl<const D: usize> Surface<D> for CoonsPatch<D> {
-    fn domain_u(&self) -> Interval {
-        Interval::new(0.0, 1.0)
-    }
-    fn domain_v(&self) -> Interval {
-        Interval::new(0.0, 1.0)
-    }
+    crate::surface::unit_square::unit_square_domains!();
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let (u, v) = (u.clamp(0.0, 1.0), v.clamp(0.0, 1.0));
         let jet = |c: &UnitCurve<D>, t: f64, order: usize| {

@@ -4,7 +4,7 @@
 use smallvec::{SmallVec, smallvec};
 
 use crate::Point;
-use crate::curve::{Curve, Interval, Reparametrized};
+use crate::curve::{Curve, Reparametrized};
 use crate::error::{Error, Result};
 use crate::surface::Surface;
 
@@ -25,12 +25,7 @@ impl<const D: usize> RuledSurface<D> {
 }
 
 impl<const D: usize> Surface<D> for RuledSurface<D> {
-    fn domain_u(&self) -> Interval {
-        Interval::new(0.0, 1.0)
-    }
-    fn domain_v(&self) -> Interval {
-        Interval::new(0.0, 1.0)
-    }
+    crate::surface::unit_square::unit_square_domains!();
     fn is_closed_u(&self) -> bool {
         self.first.is_closed()
     }
