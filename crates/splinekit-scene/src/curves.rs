@@ -10,6 +10,7 @@ mod models;
 mod splines;
 
 use serde_json::Value;
+use splinekit::curve::Curve;
 
 pub use crate::blending::{BlendingSplineDoc, LocalDoc};
 pub use composite::{BFunctionShapeDoc, BlendDoc};
@@ -18,9 +19,11 @@ pub use models::{
 };
 pub use splines::{BSplineDoc, BezierDoc, CatmullRomDoc, HermiteDoc, LineDoc, NurbsDoc, RationalBezierDoc};
 
-use crate::dimension::Curves;
+use crate::dimension::{AnyDimension, ShapeFamily, same_type};
 use crate::error::{DocumentError, Result};
 use crate::json::split_type;
+use crate::registry::ModelFamily;
+use crate::views::SplineView;
 
 /// The registry of curve kinds: `curve_kinds!(callback)` calls the macro `callback` with the
 /// list, in the syntax of `document_kinds!` (see [`crate::registry`]). This crate makes
@@ -100,4 +103,68 @@ impl CurveDocument {
             ))
         })
     }
+}
+
+/// Curves: `dyn Curve<D>`.
+#[derive(Debug)]
+pub enum Curves {}
+
+impl ShapeFamily for Curves {
+    type Shape<const D: usize> = dyn Curve<D>;
+    type Spline<'a> = SplineView<'a>;
+    type Form<'a> = CurveForm<'a>;
+}
+
+/// A curve of a dimension known only at run time.
+pub type AnyCurve = AnyDimension<Curves>;
+
+impl ModelFamily for Curves {
+    fn model_in<const D: usize>(
+        name: &str,
+        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
+    ) -> Result<Box<Self::Shape<D>>> {
+        let not_3d = || DocumentError::new("type", format!("{name} is a 3-D model curve"));
+        if D != 3 {
+            return Err(not_3d());
+        }
+        same_type(build()?).ok_or_else(not_3d)
+    }
+}
+
+/// The exact form of a curve document: what it is in the classical vocabulary of geometry
+/// (a spline, a line, a conic), declared by its kind in
+/// [`DocumentKind::exact_form`](crate::registry::DocumentKind::exact_form).
+///
+/// Exporters write the form's own entity (STEP: `B_SPLINE_CURVE_WITH_KNOTS`, `CIRCLE`,
+/// `TOROIDAL_SURFACE`, …) and approximate only `Approximate`; a new kind chooses among
+/// these forms, so an exporter needs no edit for it. Every form has the document's
+/// parametrisation up to the affine maps the exporter names.
+#[derive(Debug, Clone)]
+pub enum CurveForm<'a> {
+    /// A B-spline, NURBS or (rational) Bézier curve with these points, knots and weights.
+    Spline(SplineView<'a>),
+    /// The segment from + t (to − from), t ∈ [0, 1].
+    Line {
+        /// c(0).
+        from: &'a [f64],
+        /// c(1).
+        to: &'a [f64],
+    },
+    /// (r cos t, r sin t, 0), t ∈ [0, 2π].
+    Circle {
+        /// r.
+        radius: f64,
+    },
+    /// (a cos t, b sin t, 0), t ∈ [0, 2π].
+    Ellipse {
+        /// Semi-axis along x.
+        a: f64,
+        /// Semi-axis along y.
+        b: f64,
+    },
+    /// A blending spline: a piecewise polynomial (a B-spline) when its locals are Bézier
+    /// curves or lines and its B-function is a polynomial, else approximated.
+    BlendingSpline(&'a BlendingSplineDoc),
+    /// No exact form: exporters approximate the curve within a tolerance.
+    Approximate,
 }

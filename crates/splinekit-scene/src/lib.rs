@@ -14,7 +14,6 @@ pub mod curves;
 mod defaults;
 pub mod dimension;
 pub mod error;
-pub mod forms;
 pub mod json;
 pub mod output_file;
 pub mod points;
@@ -26,14 +25,13 @@ pub mod surfaces;
 pub mod transforms;
 pub mod views;
 
-pub use curves::CurveDocument;
-pub use dimension::{AnyCurve, AnyDimension, AnySurface, Curves, DimensionVisitor, Surfaces};
+pub use curves::{AnyCurve, CurveDocument, CurveForm, Curves};
+pub use dimension::{AnyDimension, DimensionVisitor};
 pub use error::{DocumentError, Result};
-pub use forms::{CurveForm, SurfaceForm};
 pub use output_file::{OutputFile, write_file};
 pub use registry::{Decoration, DocumentKind};
 pub use scenes::{SceneDocument, SceneObject, SceneOrShape, StyleDoc};
-pub use surfaces::SurfaceDocument;
+pub use surfaces::{AnySurface, SurfaceDocument, SurfaceForm, Surfaces};
 pub use views::{NetView, SplineView};
 
 use serde_json::Value;

@@ -16,8 +16,8 @@ use serde_json::Value;
 
 use crate::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
 use crate::budget::ShapeCost;
-use crate::dimension::{Curves, ShapeFamily, Surfaces, same_type};
-use crate::error::{DocumentError, Result};
+use crate::dimension::ShapeFamily;
+use crate::error::Result;
 
 /// The `type` name of a kind, set by its line in the `document_kinds!` list of its family.
 pub trait KindName {
@@ -62,7 +62,8 @@ pub trait DocumentKind: KindName + Clone + Serialize + DeserializeOwned {
     /// kinds that hold other fields.
     fn spline(&self) -> Option<<Self::Family as ShapeFamily>::Spline<'_>>;
 
-    /// What the shape is exactly (a spline, a conic, a quadric, …; see [`crate::forms`]):
+    /// What the shape is exactly (a spline, a conic, a quadric, …; see
+    /// [`CurveForm`](crate::curves::CurveForm), [`SurfaceForm`](crate::surfaces::SurfaceForm)):
     /// what exporters write. An error where the document's numbers make no shape.
     fn exact_form(&self) -> Result<<Self::Family as ShapeFamily>::Form<'_>>;
 
@@ -219,7 +220,8 @@ macro_rules! document_kinds {
                 }
             }
 
-            /// What the shape is exactly (see [`crate::forms`]).
+            /// What the shape is exactly (see
+            /// [`DocumentKind::exact_form`](crate::registry::DocumentKind::exact_form)).
             pub fn exact_form(&self) -> $crate::Result<<$Family as $crate::dimension::ShapeFamily>::Form<'_>> {
                 match self {
                     $( Self::$Variant(d) => $crate::registry::DocumentKind::exact_form(d), )+
@@ -258,36 +260,10 @@ pub trait ModelFamily: ShapeFamily {
     ) -> Result<Box<Self::Shape<D>>>;
 }
 
-impl ModelFamily for Curves {
-    fn model_in<const D: usize>(
-        name: &str,
-        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
-    ) -> Result<Box<Self::Shape<D>>> {
-        let not_3d = || DocumentError::new("type", format!("{name} is a 3-D model curve"));
-        if D != 3 {
-            return Err(not_3d());
-        }
-        same_type(build()?).ok_or_else(not_3d)
-    }
-}
-
-impl ModelFamily for Surfaces {
-    fn model_in<const D: usize>(
-        _name: &str,
-        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
-    ) -> Result<Box<Self::Shape<D>>> {
-        let not_3d = || DocumentError::new("type", "model surfaces are 3-D");
-        if D != 3 {
-            return Err(not_3d());
-        }
-        same_type(build()?).ok_or_else(not_3d)
-    }
-}
-
 /// Declares a model shape's document: a struct of fields that all have defaults (given
 /// after `=`; they are the struct's `Default` and serde's for missing fields), and its
 /// [`DocumentKind`]: 3-D, built as `build(|d| …)` from the document `d`, exactly the form
-/// `exact(|d| …)` (a [`crate::forms`] value; `?` may refuse the document); its example is
+/// `exact(|d| …)` (a value of the family's form; `?` may refuse the document); its example is
 /// its default document, it holds no spline, has nothing to decorate or pose, and editors
 /// offer blending splines of it.
 ///
@@ -365,12 +341,12 @@ pub(crate) use model_document;
 /// The declarations a spline kind shares, written inside its `impl DocumentKind`: a
 /// document that holds a spline's own data (its `control_points`, with the knots and
 /// weights its [`DocumentKind::spline`] view names) is exactly that spline (`$form`'s
-/// `Spline`), has the dimension of its control points (`$dimension`, which checks them),
+/// `Spline`, `$form` the family's form type as named where the macro is used), has the dimension of its control points (`$dimension`, which checks them),
 /// is not offered as a blending model and has nothing to pose in time.
 macro_rules! spline_kind_items {
     ($form:ident, $dimension:path) => {
-        fn exact_form(&self) -> $crate::Result<$crate::forms::$form<'_>> {
-            Ok($crate::forms::$form::Spline(self.spline().expect("a spline kind")))
+        fn exact_form(&self) -> $crate::Result<$form<'_>> {
+            Ok($form::Spline(self.spline().expect("a spline kind")))
         }
         const BLENDING_MODEL: bool = false;
         fn dimension(&self) -> $crate::Result<usize> {
@@ -382,15 +358,16 @@ macro_rules! spline_kind_items {
 pub(crate) use spline_kind_items;
 
 /// The declarations of a kind that holds no spline data of its own and has no exact form
-/// (exporters approximate it, `$form`'s `Approximate`), written inside its
+/// (exporters approximate it, `$form`'s `Approximate`, `$form` the family's form type as
+/// named where the macro is used), written inside its
 /// `impl DocumentKind`; it is not offered as a blending model.
 macro_rules! approximated_kind_items {
     ($view:ident, $form:ident) => {
         fn spline(&self) -> Option<$crate::views::$view<'_>> {
             None
         }
-        fn exact_form(&self) -> $crate::Result<$crate::forms::$form<'_>> {
-            Ok($crate::forms::$form::Approximate)
+        fn exact_form(&self) -> $crate::Result<$form<'_>> {
+            Ok($form::Approximate)
         }
         const BLENDING_MODEL: bool = false;
     };

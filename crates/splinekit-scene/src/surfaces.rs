@@ -13,6 +13,7 @@ mod subdivision;
 mod trimmed;
 
 use serde_json::Value;
+use splinekit::surface::Surface;
 
 pub use crate::blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, RuledDoc, SweepDoc};
@@ -25,9 +26,11 @@ pub use placed::PlacedDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
 pub use trimmed::TrimmedDoc;
 
-use crate::dimension::Surfaces;
+use crate::dimension::{AnyDimension, ShapeFamily, same_type};
 use crate::error::{DocumentError, Result};
 use crate::json::split_type;
+use crate::registry::ModelFamily;
+use crate::views::NetView;
 
 /// The registry of surface kinds: `surface_kinds!(callback)` calls the macro `callback` with the
 /// list, in the syntax of `document_kinds!` (see [`crate::registry`]). This crate makes
@@ -115,4 +118,92 @@ impl SurfaceDocument {
         Self::parse_fields(&ty, rest)
             .unwrap_or_else(|| Err(DocumentError::new("type", format!("expected a surface type, got \"{ty}\""))))
     }
+}
+
+/// Surfaces: `dyn Surface<D>`.
+#[derive(Debug)]
+pub enum Surfaces {}
+
+impl ShapeFamily for Surfaces {
+    type Shape<const D: usize> = dyn Surface<D>;
+    type Spline<'a> = NetView<'a>;
+    type Form<'a> = SurfaceForm<'a>;
+}
+
+/// A surface of a dimension known only at run time.
+pub type AnySurface = AnyDimension<Surfaces>;
+
+impl ModelFamily for Surfaces {
+    fn model_in<const D: usize>(
+        _name: &str,
+        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
+    ) -> Result<Box<Self::Shape<D>>> {
+        let not_3d = || DocumentError::new("type", "model surfaces are 3-D");
+        if D != 3 {
+            return Err(not_3d());
+        }
+        same_type(build()?).ok_or_else(not_3d)
+    }
+}
+
+/// The exact form of a surface document: what it is in the classical vocabulary of
+/// geometry (a spline, a plane, a quadric, a swept surface), declared by its kind in
+/// [`DocumentKind::exact_form`](crate::registry::DocumentKind::exact_form).
+///
+/// Exporters write the form's own entity (STEP: `B_SPLINE_CURVE_WITH_KNOTS`, `CIRCLE`,
+/// `TOROIDAL_SURFACE`, …) and approximate only `Approximate`; a new kind chooses among
+/// these forms, so an exporter needs no edit for it. Every form has the document's
+/// parametrisation up to the affine maps the exporter names.
+#[derive(Debug, Clone)]
+pub enum SurfaceForm<'a> {
+    /// A B-spline, NURBS or Bézier net.
+    Spline(NetView<'a>),
+    /// origin + u U + v V, (u, v) ∈ [0, 1]².
+    Plane {
+        /// S(0, 0).
+        origin: &'a [f64],
+        /// U.
+        u_axis: &'a [f64],
+        /// V.
+        v_axis: &'a [f64],
+    },
+    /// (r cos u, r sin u, h v), u ∈ [0, 2π], v ∈ [0, 1].
+    Cylinder {
+        /// r.
+        radius: f64,
+        /// h.
+        height: f64,
+    },
+    /// (r (1 − v) cos u, r (1 − v) sin u, h v), u ∈ [0, 2π], v ∈ [0, 1].
+    Cone {
+        /// r.
+        radius: f64,
+        /// h.
+        height: f64,
+    },
+    /// The sphere of radius r about the origin, u the longitude, v ∈ [−π/2, π/2] the latitude.
+    Sphere {
+        /// r.
+        radius: f64,
+    },
+    /// ((R + r cos v) cos u, (R + r cos v) sin u, r sin v), (u, v) ∈ [0, 2π]².
+    Torus {
+        /// R.
+        major_radius: f64,
+        /// r.
+        minor_radius: f64,
+    },
+    /// A curve turned about an axis.
+    Revolution(&'a RevolutionDoc),
+    /// A curve moved along a direction.
+    Extrusion(&'a ExtrusionDoc),
+    /// A surface cut by loops of curves.
+    Trimmed(&'a TrimmedDoc),
+    /// A surface moved rigidly into a frame.
+    Placed(&'a PlacedDoc),
+    /// A blending-spline surface: a B-spline when its locals are Bézier patches and its
+    /// B-function a polynomial, else approximated.
+    BlendingSpline(&'a BlendingSplineSurfaceDoc),
+    /// No exact form: exporters approximate the surface within a tolerance.
+    Approximate,
 }

@@ -13,8 +13,7 @@ use super::animation::{TrackDoc, tracks};
 use super::local_points::{self, LocalControlPoints};
 use crate::bfunctions::BFunctionDoc;
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
-use crate::curves::{CurveDocument, HeartDoc};
-use crate::dimension::Curves;
+use crate::curves::{CurveDocument, CurveForm, Curves, HeartDoc};
 use crate::error::{DocumentError, Result};
 use crate::json::{kind, nested};
 use crate::registry::{Decoration, DocumentKind};
@@ -314,8 +313,8 @@ impl DocumentKind for BlendingSplineDoc {
     fn spline(&self) -> Option<crate::views::SplineView<'_>> {
         None
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::BlendingSpline(self))
+    fn exact_form(&self) -> crate::Result<CurveForm<'_>> {
+        Ok(CurveForm::BlendingSpline(self))
     }
     const BLENDING_MODEL: bool = false;
 

@@ -14,10 +14,9 @@ use super::animation::{TrackDoc, tracks};
 use super::local_points::{self, PatchControlPoints};
 use crate::bfunctions::BFunctionDoc;
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
-use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::registry::{Decoration, DocumentKind};
-use crate::surfaces::{SurfaceDocument, TorusDoc};
+use crate::surfaces::{SurfaceDocument, SurfaceForm, Surfaces, TorusDoc};
 use crate::transforms::PatchTransforms;
 
 /// The kind of local patches.
@@ -187,8 +186,8 @@ impl DocumentKind for BlendingSplineSurfaceDoc {
     fn spline(&self) -> Option<crate::views::NetView<'_>> {
         None
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::BlendingSpline(self))
+    fn exact_form(&self) -> crate::Result<SurfaceForm<'_>> {
+        Ok(SurfaceForm::BlendingSpline(self))
     }
     const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {

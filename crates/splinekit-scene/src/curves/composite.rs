@@ -4,10 +4,10 @@ use serde::{Deserialize, Serialize};
 use splinekit::blend::{BFunctionCurve, TwoCurveBlend};
 use splinekit::curve::Curve;
 
-use super::CurveDocument;
+use super::{CurveDocument, CurveForm, Curves};
 use crate::bfunctions::{BFunctionDoc, ErbsDoc, NoParams, PolynomialDoc};
 use crate::budget::ShapeCost;
-use crate::dimension::{Curves, same_type};
+use crate::dimension::same_type;
 use crate::error::{DocumentError, Result};
 use crate::registry::{Decoration, DocumentKind, approximated_kind_items};
 

@@ -3,9 +3,8 @@
 
 use splinekit::curve::model::{Butterfly, Circle, Ellipse, Heart, Helix, Lissajous, Rolling, Rose, Trefoil, Trochoid};
 
+use super::{CurveForm, Curves};
 use crate::defaults::is_false;
-use crate::dimension::Curves;
-use crate::forms::CurveForm;
 use crate::registry::model_document;
 
 model_document! {

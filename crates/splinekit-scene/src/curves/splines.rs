@@ -7,9 +7,9 @@ use splinekit::curve::{
     BSplineCurve, BezierCurve, CatmullRomCurve, Curve, HermiteCurve, NurbsCurve, RationalBezierCurve,
 };
 
+use super::{CurveForm, Curves};
 use crate::budget::{ShapeCost, check_degree, spline_cost};
 use crate::defaults::is_false;
-use crate::dimension::Curves;
 use crate::error::{DocumentError, Result};
 use crate::points::{check_finite_list, dimension_of, to_point, to_points};
 use crate::registry::{Decoration, DocumentKind, approximated_kind_items, spline_kind_items};
@@ -328,8 +328,8 @@ impl DocumentKind for LineDoc {
     fn spline(&self) -> Option<crate::views::SplineView<'_>> {
         None
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::Line { from: &self.from, to: &self.to })
+    fn exact_form(&self) -> crate::Result<CurveForm<'_>> {
+        Ok(CurveForm::Line { from: &self.from, to: &self.to })
     }
     const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {

@@ -5,10 +5,10 @@ use splinekit::curve::Curve;
 use splinekit::surface::Surface;
 use splinekit::surface::derived::{CoonsBlend, CoonsPatch, Extrusion, RevolvedSurface, RuledSurface, SweepSurface};
 
+use super::{SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
 use crate::curves::{BezierDoc, CircleDoc, CurveDocument, LineDoc, TrefoilDoc};
 use crate::defaults::{origin, tau, z_axis};
-use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::points::to_point;
 use crate::registry::{Decoration, DocumentKind, KindName, ModelFamily, approximated_kind_items};
@@ -36,8 +36,8 @@ impl DocumentKind for RevolutionDoc {
     fn spline(&self) -> Option<crate::views::NetView<'_>> {
         None
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Revolution(self))
+    fn exact_form(&self) -> crate::Result<SurfaceForm<'_>> {
+        Ok(SurfaceForm::Revolution(self))
     }
     const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
@@ -133,8 +133,8 @@ impl DocumentKind for ExtrusionDoc {
     fn spline(&self) -> Option<crate::views::NetView<'_>> {
         None
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Extrusion(self))
+    fn exact_form(&self) -> crate::Result<SurfaceForm<'_>> {
+        Ok(SurfaceForm::Extrusion(self))
     }
     const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {

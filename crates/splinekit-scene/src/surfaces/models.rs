@@ -6,8 +6,7 @@ use splinekit::surface::model::{
     dupin_cyclide,
 };
 
-use crate::dimension::Surfaces;
-use crate::forms::SurfaceForm;
+use super::{SurfaceForm, Surfaces};
 use crate::points::to_point;
 use crate::registry::model_document;
 

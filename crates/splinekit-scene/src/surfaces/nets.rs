@@ -5,9 +5,9 @@ use serde::{Deserialize, Serialize};
 use splinekit::Point;
 use splinekit::surface::{BSplineSurface, BezierSurface, NurbsSurface, Surface};
 
+use super::{SurfaceForm, Surfaces};
 use crate::budget::{F64, ShapeCost, check_degree};
 use crate::defaults::is_false;
-use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::points::{check_finite_list, dimension_of, to_points};
 use crate::registry::{Decoration, DocumentKind, spline_kind_items};

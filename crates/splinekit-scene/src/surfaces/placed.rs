@@ -4,9 +4,8 @@
 use serde::{Deserialize, Serialize};
 use splinekit::surface::{PlacedSurface, Surface};
 
-use super::SurfaceDocument;
+use super::{SurfaceDocument, SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
-use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::points::to_point;
 use crate::registry::{Decoration, DocumentKind};
@@ -51,8 +50,8 @@ impl DocumentKind for PlacedDoc {
     fn spline(&self) -> Option<crate::views::NetView<'_>> {
         None
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Placed(self))
+    fn exact_form(&self) -> crate::Result<SurfaceForm<'_>> {
+        Ok(SurfaceForm::Placed(self))
     }
     const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {

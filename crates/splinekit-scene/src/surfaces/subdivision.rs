@@ -11,9 +11,10 @@ use splinekit::subdivision::surface::{
 };
 use splinekit::surface::Surface;
 
+use super::{SurfaceForm, Surfaces};
 use crate::budget::{F64, ShapeCost};
 use crate::defaults::is_false;
-use crate::dimension::{Surfaces, same_type};
+use crate::dimension::same_type;
 use crate::error::{DocumentError, Result};
 use crate::points::dimension_of;
 use crate::registry::{Decoration, DocumentKind};
@@ -177,8 +178,8 @@ impl DocumentKind for SubdivisionSurfaceDoc {
     }
     /// The limit is piecewise bicubic only on regular faces; exporters write its patches
     /// (STEP: `export_document`) or approximate it.
-    fn exact_form(&self) -> Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Approximate)
+    fn exact_form(&self) -> Result<SurfaceForm<'_>> {
+        Ok(SurfaceForm::Approximate)
     }
     const BLENDING_MODEL: bool = false;
 }

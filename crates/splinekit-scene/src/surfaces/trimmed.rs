@@ -4,10 +4,9 @@ use serde::{Deserialize, Serialize};
 use splinekit::curve::Curve;
 use splinekit::surface::{Surface, TrimmedSurface};
 
-use super::SurfaceDocument;
+use super::{SurfaceDocument, SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
 use crate::curves::{CatmullRomDoc, CurveDocument};
-use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::registry::{Decoration, DocumentKind};
 
@@ -43,8 +42,8 @@ impl DocumentKind for TrimmedDoc {
     fn spline(&self) -> Option<crate::views::NetView<'_>> {
         None
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Trimmed(self))
+    fn exact_form(&self) -> crate::Result<SurfaceForm<'_>> {
+        Ok(SurfaceForm::Trimmed(self))
     }
     const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
