@@ -113,6 +113,7 @@ impl ShapeFamily for Curves {
     type Shape<const D: usize> = dyn Curve<D>;
     type Spline<'a> = SplineView<'a>;
     type Form<'a> = CurveForm<'a>;
+    type Decoration<'a> = CurveDecoration<'a>;
 }
 
 /// A curve of a dimension known only at run time.
@@ -167,4 +168,25 @@ pub enum CurveForm<'a> {
     BlendingSpline(&'a BlendingSplineDoc),
     /// No exact form: exporters approximate the curve within a tolerance.
     Approximate,
+}
+
+/// What a scene draws besides a curve when its style asks for control nets (`control_net`)
+/// or local pieces (`local_pieces`); scenes read it as a [`Decoration`](crate::Decoration).
+#[derive(Debug, Clone, Copy, Default)]
+pub enum CurveDecoration<'a> {
+    /// Nothing besides the curve.
+    #[default]
+    None,
+    /// A control polygon (curves from control points or interpolated points).
+    ControlPolygon {
+        /// The points, each of 1 to 4 coordinates.
+        points: &'a [Vec<f64>],
+        /// The document field that holds them (`control_points`, or `points` of
+        /// interpolating kinds), for editors that move them.
+        field: &'static str,
+        /// Whether the last point joins the first.
+        closed: bool,
+    },
+    /// The local curves of a blending-spline curve.
+    LocalCurves(&'a BlendingSplineDoc),
 }

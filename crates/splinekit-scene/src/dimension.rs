@@ -62,6 +62,10 @@ pub trait ShapeFamily {
     /// The exact forms of the family ([`CurveForm`](crate::curves::CurveForm) or
     /// [`SurfaceForm`](crate::surfaces::SurfaceForm)).
     type Form<'a>;
+    /// What a scene may draw besides a shape of the family
+    /// ([`CurveDecoration`](crate::curves::CurveDecoration) or
+    /// [`SurfaceDecoration`](crate::surfaces::SurfaceDecoration)); the default is nothing.
+    type Decoration<'a>: Default;
 }
 
 /// A boxed curve or surface of a dimension known only at run time.

@@ -11,6 +11,7 @@ pub mod blending;
 pub mod budget;
 pub mod cage_file;
 pub mod curves;
+pub mod decoration;
 mod defaults;
 pub mod dimension;
 pub mod error;
@@ -25,13 +26,14 @@ pub mod surfaces;
 pub mod transforms;
 pub mod views;
 
-pub use curves::{AnyCurve, CurveDocument, CurveForm, Curves};
+pub use curves::{AnyCurve, CurveDecoration, CurveDocument, CurveForm, Curves};
+pub use decoration::Decoration;
 pub use dimension::{AnyDimension, DimensionVisitor};
 pub use error::{DocumentError, Result};
 pub use output_file::{OutputFile, write_file};
-pub use registry::{Decoration, DocumentKind};
+pub use registry::DocumentKind;
 pub use scenes::{SceneDocument, SceneObject, SceneOrShape, StyleDoc};
-pub use surfaces::{AnySurface, SurfaceDocument, SurfaceForm, Surfaces};
+pub use surfaces::{AnySurface, SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces};
 pub use views::{NetView, SplineView};
 
 use serde_json::Value;

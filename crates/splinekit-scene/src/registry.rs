@@ -7,14 +7,13 @@
 //! and how it poses animations. The lists in [`crate::curves`] and [`crate::surfaces`] name
 //! each kind once with its `type`; the `document_kinds!` macro makes from them the enum, the
 //! `"type"` dispatch of parsing and serialising, the list of type names, and `dimension`,
-//! `build`, `examples`, `decoration` and `set_time` on the enum — each a match over every
+//! `build`, `examples`, `family_decoration` and `set_time` on the enum — each a match over every
 //! kind, so a kind that lacks one of them does not compile.
 
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 use serde_json::Value;
 
-use crate::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
 use crate::budget::ShapeCost;
 use crate::dimension::ShapeFamily;
 use crate::error::Result;
@@ -50,8 +49,10 @@ pub trait DocumentKind: KindName + Clone + Serialize + DeserializeOwned {
     /// A document of this kind with sensible values, for editors and galleries.
     fn example() -> Self;
 
-    /// What a scene may draw besides the shape (see [`Decoration`]).
-    fn decoration(&self) -> Decoration<'_>;
+    /// What a scene may draw besides the shape, in its family's terms
+    /// ([`CurveDecoration`](crate::curves::CurveDecoration),
+    /// [`SurfaceDecoration`](crate::surfaces::SurfaceDecoration)).
+    fn decoration(&self) -> <Self::Family as ShapeFamily>::Decoration<'_>;
 
     /// Poses every animated blending spline in the document, nested ones too, at `time`
     /// (seconds); kinds without animations and without nested documents do nothing.
@@ -71,37 +72,6 @@ pub trait DocumentKind: KindName + Clone + Serialize + DeserializeOwned {
     const BLENDING_MODEL: bool;
 }
 
-/// What a scene draws besides a shape when its style asks for control nets
-/// (`control_net`) or local pieces (`local_pieces`).
-#[derive(Debug, Clone, Copy)]
-pub enum Decoration<'a> {
-    /// Nothing besides the shape.
-    None,
-    /// A control polygon (curves from control points or interpolated points).
-    ControlPolygon {
-        /// The points, each of 1 to 4 coordinates.
-        points: &'a [Vec<f64>],
-        /// The document field that holds them (`control_points`, or `points` of
-        /// interpolating kinds), for editors that move them.
-        field: &'static str,
-        /// Whether the last point joins the first.
-        closed: bool,
-    },
-    /// A control net, rows along u.
-    ControlNet(&'a [Vec<Vec<f64>>]),
-    /// The local curves of a blending-spline curve.
-    LocalCurves(&'a BlendingSplineDoc),
-    /// The local patches of a blending-spline surface.
-    LocalPatches(&'a BlendingSplineSurfaceDoc),
-    /// The polygon cage of a subdivision surface: its vertices and faces (vertex indices).
-    Cage {
-        /// The vertices, 3-D.
-        vertices: &'a [Vec<f64>],
-        /// The faces.
-        faces: &'a [Vec<u32>],
-    },
-}
-
 /// Declares the document enum of a family from its list of kinds.
 ///
 /// ```text
@@ -118,7 +88,7 @@ pub enum Decoration<'a> {
 /// Each `Variant(Doc) = "name"` line makes an enum variant serialised with
 /// `"type": "name"` and gives `Doc` its [`KindName`]; `Doc` must implement
 /// [`DocumentKind`] of that family. The enum gets `TYPES`, `type_name`, `parse_fields`,
-/// `examples`, `dimension`, `cost`, `build_in`, `build`, `decoration`, `set_time`, `to_value`, and a
+/// `examples`, `dimension`, `cost`, `build_in`, `build`, `family_decoration`, `set_time`, `to_value`, and a
 /// `Deserialize` through its own `parse` (written beside the list, for the family's
 /// message about unknown types).
 macro_rules! document_kinds {
@@ -197,8 +167,9 @@ macro_rules! document_kinds {
                 })
             }
 
-            /// What a scene may draw besides the shape.
-            pub fn decoration(&self) -> $crate::registry::Decoration<'_> {
+            /// What a scene may draw besides the shape, in the family's terms (the
+            /// [`Decoration`](crate::Decoration) of scenes is made of it).
+            pub fn family_decoration(&self) -> <$Family as $crate::dimension::ShapeFamily>::Decoration<'_> {
                 match self {
                     $( Self::$Variant(d) => $crate::registry::DocumentKind::decoration(d), )+
                 }
@@ -321,8 +292,8 @@ macro_rules! model_document {
             fn example() -> Self {
                 Self::default()
             }
-            fn decoration(&self) -> $crate::registry::Decoration<'_> {
-                $crate::registry::Decoration::None
+            fn decoration(&self) -> <$family as $crate::dimension::ShapeFamily>::Decoration<'_> {
+                Default::default()
             }
             fn set_time(&mut self, _time: f64) {}
             fn spline(&self) -> Option<<$family as $crate::dimension::ShapeFamily>::Spline<'_>> {

@@ -128,6 +128,7 @@ impl ShapeFamily for Surfaces {
     type Shape<const D: usize> = dyn Surface<D>;
     type Spline<'a> = NetView<'a>;
     type Form<'a> = SurfaceForm<'a>;
+    type Decoration<'a> = SurfaceDecoration<'a>;
 }
 
 /// A surface of a dimension known only at run time.
@@ -206,4 +207,25 @@ pub enum SurfaceForm<'a> {
     BlendingSpline(&'a BlendingSplineSurfaceDoc),
     /// No exact form: exporters approximate the surface within a tolerance.
     Approximate,
+}
+
+/// What a scene draws besides a surface when its style asks for control nets
+/// (`control_net`) or local pieces (`local_pieces`); scenes read it as a
+/// [`Decoration`](crate::Decoration).
+#[derive(Debug, Clone, Copy, Default)]
+pub enum SurfaceDecoration<'a> {
+    /// Nothing besides the surface.
+    #[default]
+    None,
+    /// A control net, rows along u.
+    ControlNet(&'a [Vec<Vec<f64>>]),
+    /// The local patches of a blending-spline surface.
+    LocalPatches(&'a BlendingSplineSurfaceDoc),
+    /// The polygon cage of a subdivision surface: its vertices and faces (vertex indices).
+    Cage {
+        /// The vertices, 3-D.
+        vertices: &'a [Vec<f64>],
+        /// The faces.
+        faces: &'a [Vec<u32>],
+    },
 }

@@ -13,10 +13,10 @@ use super::animation::{TrackDoc, tracks};
 use super::local_points::{self, LocalControlPoints};
 use crate::bfunctions::BFunctionDoc;
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
-use crate::curves::{CurveDocument, CurveForm, Curves, HeartDoc};
+use crate::curves::{CurveDecoration, CurveDocument, CurveForm, Curves, HeartDoc};
 use crate::error::{DocumentError, Result};
 use crate::json::{kind, nested};
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::DocumentKind;
 use crate::transforms::LocalTransforms;
 
 /// Where a model-based blending spline puts its knots.
@@ -421,8 +421,8 @@ impl DocumentKind for BlendingSplineDoc {
             time: None,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::LocalCurves(self)
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::LocalCurves(self)
     }
     fn set_time(&mut self, time: f64) {
         self.time = Some(time);

@@ -15,8 +15,8 @@ use super::local_points::{self, PatchControlPoints};
 use crate::bfunctions::BFunctionDoc;
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
 use crate::error::{DocumentError, Result};
-use crate::registry::{Decoration, DocumentKind};
-use crate::surfaces::{SurfaceDocument, SurfaceForm, Surfaces, TorusDoc};
+use crate::registry::DocumentKind;
+use crate::surfaces::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces, TorusDoc};
 use crate::transforms::PatchTransforms;
 
 /// The kind of local patches.
@@ -236,8 +236,8 @@ impl DocumentKind for BlendingSplineSurfaceDoc {
             time: None,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::LocalPatches(self)
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::LocalPatches(self)
     }
     fn set_time(&mut self, time: f64) {
         self.time = Some(time);

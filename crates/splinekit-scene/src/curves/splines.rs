@@ -7,12 +7,12 @@ use splinekit::curve::{
     BSplineCurve, BezierCurve, CatmullRomCurve, Curve, HermiteCurve, NurbsCurve, RationalBezierCurve,
 };
 
-use super::{CurveForm, Curves};
+use super::{CurveDecoration, CurveForm, Curves};
 use crate::budget::{ShapeCost, check_degree, spline_cost};
 use crate::defaults::is_false;
 use crate::error::{DocumentError, Result};
 use crate::points::{check_finite_list, dimension_of, to_point, to_points};
-use crate::registry::{Decoration, DocumentKind, approximated_kind_items, spline_kind_items};
+use crate::registry::{DocumentKind, approximated_kind_items, spline_kind_items};
 
 /// `{"type":"bezier","control_points":[[x,y],...]}`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -45,8 +45,8 @@ impl DocumentKind for BezierDoc {
     fn example() -> Self {
         BezierDoc { control_points: vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![3.0, 2.0], vec![4.0, 0.0]] }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: false }
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: false }
     }
 }
 
@@ -88,8 +88,8 @@ impl DocumentKind for RationalBezierDoc {
             weights: vec![1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0],
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: false }
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: false }
     }
 }
 
@@ -151,8 +151,8 @@ impl DocumentKind for BSplineDoc {
             periodic: false,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: self.periodic }
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: self.periodic }
     }
 }
 
@@ -219,8 +219,8 @@ impl DocumentKind for NurbsDoc {
             periodic: false,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: self.periodic }
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: self.periodic }
     }
 }
 
@@ -267,8 +267,8 @@ impl DocumentKind for HermiteDoc {
             params: Some(vec![0.0, 1.0, 3.0]),
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.points, field: "points", closed: false }
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::ControlPolygon { points: &self.points, field: "points", closed: false }
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -307,8 +307,8 @@ impl DocumentKind for CatmullRomDoc {
             closed: false,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.points, field: "points", closed: self.closed }
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::ControlPolygon { points: &self.points, field: "points", closed: self.closed }
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -344,8 +344,8 @@ impl DocumentKind for LineDoc {
     fn example() -> Self {
         LineDoc { from: vec![0.0, 0.0, 0.0], to: vec![1.0, 2.0, 0.0] }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::None
     }
     fn set_time(&mut self, _time: f64) {}
 }

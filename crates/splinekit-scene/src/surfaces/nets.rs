@@ -5,12 +5,12 @@ use serde::{Deserialize, Serialize};
 use splinekit::Point;
 use splinekit::surface::{BSplineSurface, BezierSurface, NurbsSurface, Surface};
 
-use super::{SurfaceForm, Surfaces};
+use super::{SurfaceDecoration, SurfaceForm, Surfaces};
 use crate::budget::{F64, ShapeCost, check_degree};
 use crate::defaults::is_false;
 use crate::error::{DocumentError, Result};
 use crate::points::{check_finite_list, dimension_of, to_points};
-use crate::registry::{Decoration, DocumentKind, spline_kind_items};
+use crate::registry::{DocumentKind, spline_kind_items};
 
 /// `{"type":"bezier_surface","control_points":[[...row...],...]}`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -54,8 +54,8 @@ impl DocumentKind for BezierSurfaceDoc {
     fn example() -> Self {
         BezierSurfaceDoc { control_points: bump() }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlNet(&self.control_points)
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::ControlNet(&self.control_points)
     }
 }
 
@@ -121,8 +121,8 @@ impl DocumentKind for BSplineSurfaceDoc {
             periodic_v: false,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlNet(&self.control_points)
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::ControlNet(&self.control_points)
     }
 }
 
@@ -198,8 +198,8 @@ impl DocumentKind for NurbsSurfaceDoc {
             periodic_v: false,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlNet(&self.control_points)
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::ControlNet(&self.control_points)
     }
 }
 

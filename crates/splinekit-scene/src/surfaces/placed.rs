@@ -4,11 +4,11 @@
 use serde::{Deserialize, Serialize};
 use splinekit::surface::{PlacedSurface, Surface};
 
-use super::{SurfaceDocument, SurfaceForm, Surfaces};
+use super::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
 use crate::error::{DocumentError, Result};
 use crate::points::to_point;
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::DocumentKind;
 
 /// `{"type":"placed","surface":{…},"origin":[0,0,0],"axis":[0,0,1],"ref_direction":[1,0,0]}`:
 /// P(u, v) = origin + S₁(u, v) x + S₂(u, v) y + S₃(u, v) z, where z = axis/|axis|, x is
@@ -79,8 +79,8 @@ impl DocumentKind for PlacedDoc {
             ref_direction: vec![1.0, 0.0, 0.0],
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::None
     }
     fn set_time(&mut self, time: f64) {
         self.surface.set_time(time);

@@ -11,13 +11,13 @@ use splinekit::subdivision::surface::{
 };
 use splinekit::surface::Surface;
 
-use super::{SurfaceForm, Surfaces};
+use super::{SurfaceDecoration, SurfaceForm, Surfaces};
 use crate::budget::{F64, ShapeCost};
 use crate::defaults::is_false;
 use crate::dimension::same_type;
 use crate::error::{DocumentError, Result};
 use crate::points::dimension_of;
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::DocumentKind;
 
 /// The subdivision scheme of a document.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -168,8 +168,8 @@ impl DocumentKind for SubdivisionSurfaceDoc {
     fn example() -> Self {
         Self::cube()
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::Cage { vertices: &self.vertices, faces: &self.faces }
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::Cage { vertices: &self.vertices, faces: &self.faces }
     }
     fn set_time(&mut self, _time: f64) {}
     /// A cage holds vertices and faces, not a control net.

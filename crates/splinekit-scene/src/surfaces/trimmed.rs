@@ -4,11 +4,11 @@ use serde::{Deserialize, Serialize};
 use splinekit::curve::Curve;
 use splinekit::surface::{Surface, TrimmedSurface};
 
-use super::{SurfaceDocument, SurfaceForm, Surfaces};
+use super::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
 use crate::curves::{CatmullRomDoc, CurveDocument};
 use crate::error::{DocumentError, Result};
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::DocumentKind;
 
 /// `{"type":"trimmed","surface":{…},"outer":{…},"holes":[{…}]}`: the surface restricted to
 /// the inside of `outer` (default: the whole domain) and outside every hole; loops are
@@ -91,8 +91,8 @@ impl DocumentKind for TrimmedDoc {
             holes: vec![CurveDocument::CatmullRom(hole)],
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::None
     }
     fn set_time(&mut self, time: f64) {
         self.surface.set_time(time);
