@@ -5,6 +5,7 @@
 //! declaration in `models.rs`) and one line in the list (see CONTRIBUTING.md); the compiler asks for
 //! everything else.
 
+mod blending;
 mod composite;
 mod models;
 mod splines;
@@ -12,7 +13,7 @@ mod splines;
 use serde_json::Value;
 use splinekit::curve::Curve;
 
-pub use crate::blending::{BlendingSplineDoc, LocalDoc};
+pub use blending::{BlendingSource, BlendingSplineDoc, KnotSpacingDoc, LocalCurves, LocalDoc};
 pub use composite::{BFunctionShapeDoc, BlendDoc};
 pub use models::{
     ButterflyDoc, CircleDoc, EllipseDoc, HeartDoc, HelixDoc, LissajousDoc, RollingDoc, RoseDoc, TrefoilDoc, TrochoidDoc,

@@ -5,6 +5,7 @@
 //! declaration in `models.rs`) and one line in the list (see CONTRIBUTING.md); the compiler asks for
 //! everything else.
 
+mod blending;
 mod from_curves;
 mod models;
 mod nets;
@@ -15,7 +16,7 @@ mod trimmed;
 use serde_json::Value;
 use splinekit::surface::Surface;
 
-pub use crate::blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
+pub use blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, RuledDoc, SweepDoc};
 pub use models::{
     AppleDoc, ConeDoc, CylinderDoc, DupinCyclideDoc, EnneperDoc, HeartSurfaceDoc, HelicoidDoc, KleinBottleDoc,

@@ -8,12 +8,11 @@ use serde_json::Value;
 use splinekit::blend::{BlendKnots, BlendingCurveOptions, BlendingSplineCurve, KnotSpacing, LocalKind};
 use splinekit::curve::Curve;
 
-use super::DEFAULT_BFUNCTION;
-use super::animation::{TrackDoc, tracks};
-use super::local_points::{self, LocalControlPoints};
-use crate::bfunctions::BFunctionDoc;
+use super::{CurveDecoration, CurveDocument, CurveForm, Curves, HeartDoc};
+use crate::bfunctions::{BFunctionDoc, DEFAULT_BFUNCTION};
+use crate::blending::local_points::{self, LocalControlPoints};
+use crate::blending::{TrackDoc, tracks};
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
-use crate::curves::{CurveDecoration, CurveDocument, CurveForm, Curves, HeartDoc};
 use crate::error::{DocumentError, Result};
 use crate::json::{kind, nested};
 use crate::registry::DocumentKind;
@@ -115,8 +114,8 @@ pub struct BlendingSplineDoc {
     #[serde(default, with = "crate::transforms::by_index", skip_serializing_if = "Vec::is_empty")]
     pub transforms: LocalTransforms,
     /// Edited control points of Bézier locals, by index, in each local's rest frame
-    /// (overriding the Hermite-fitted ones; see [`super::local_points`]).
-    #[serde(default, with = "super::local_points::by_index", skip_serializing_if = "Vec::is_empty")]
+    /// (overriding the Hermite-fitted ones; see [`crate::blending::local_points`]).
+    #[serde(default, with = "crate::blending::local_points::by_index", skip_serializing_if = "Vec::is_empty")]
     pub local_control_points: LocalControlPoints,
     /// Animation tracks.
     #[serde(default, deserialize_with = "crate::json::list", skip_serializing_if = "Vec::is_empty")]

@@ -9,14 +9,13 @@ use splinekit::blend::{BlendKnots, BlendingSplineSurface, BlendingSurfaceOptions
 use splinekit::frame::Affine;
 use splinekit::surface::Surface;
 
-use super::DEFAULT_BFUNCTION;
-use super::animation::{TrackDoc, tracks};
-use super::local_points::{self, PatchControlPoints};
-use crate::bfunctions::BFunctionDoc;
+use super::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces, TorusDoc};
+use crate::bfunctions::{BFunctionDoc, DEFAULT_BFUNCTION};
+use crate::blending::local_points::{self, PatchControlPoints};
+use crate::blending::{TrackDoc, tracks};
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
 use crate::error::{DocumentError, Result};
 use crate::registry::DocumentKind;
-use crate::surfaces::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces, TorusDoc};
 use crate::transforms::PatchTransforms;
 
 /// The kind of local patches.
@@ -71,8 +70,8 @@ pub struct BlendingSplineSurfaceDoc {
     #[serde(default, with = "crate::transforms::by_pair", skip_serializing_if = "Vec::is_empty")]
     pub transforms: PatchTransforms,
     /// Edited control nets of Bézier patches, by `"k,l"`, in each patch's rest frame
-    /// (overriding the Hermite-fitted ones; see [`super::local_points`]).
-    #[serde(default, with = "super::local_points::by_pair", skip_serializing_if = "Vec::is_empty")]
+    /// (overriding the Hermite-fitted ones; see [`crate::blending::local_points`]).
+    #[serde(default, with = "crate::blending::local_points::by_pair", skip_serializing_if = "Vec::is_empty")]
     pub local_control_points: PatchControlPoints,
     /// Animation tracks (`local` is [k, l]).
     #[serde(default, deserialize_with = "crate::json::list", skip_serializing_if = "Vec::is_empty")]
