@@ -20,7 +20,7 @@ pub use models::{
 };
 pub use splines::{BSplineDoc, BezierDoc, CatmullRomDoc, HermiteDoc, LineDoc, NurbsDoc, RationalBezierDoc};
 
-use crate::dimension::{AnyDimension, ShapeFamily, same_type};
+use crate::dimension::{AnyDimension, ShapeFamily};
 use crate::error::{DocumentError, Result};
 use crate::json::split_type;
 use crate::registry::ModelFamily;
@@ -121,15 +121,8 @@ impl ShapeFamily for Curves {
 pub type AnyCurve = AnyDimension<Curves>;
 
 impl ModelFamily for Curves {
-    fn model_in<const D: usize>(
-        name: &str,
-        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
-    ) -> Result<Box<Self::Shape<D>>> {
-        let not_3d = || DocumentError::new("type", format!("{name} is a 3-D model curve"));
-        if D != 3 {
-            return Err(not_3d());
-        }
-        same_type(build()?).ok_or_else(not_3d)
+    fn not_3d(name: &str) -> DocumentError {
+        DocumentError::new("type", format!("{name} is a 3-D model curve"))
     }
 }
 

@@ -15,8 +15,8 @@ use serde::de::DeserializeOwned;
 use serde_json::Value;
 
 use crate::budget::ShapeCost;
-use crate::dimension::ShapeFamily;
-use crate::error::Result;
+use crate::dimension::{ShapeFamily, same_type};
+use crate::error::{DocumentError, Result};
 
 /// The `type` name of a kind, set by its line in the `document_kinds!` list of its family.
 pub trait KindName {
@@ -223,12 +223,20 @@ pub(crate) use document_kinds;
 
 /// A family whose model shapes (circle, torus, …) exist in 3-D only.
 pub trait ModelFamily: ShapeFamily {
-    /// The 3-D shape made by `build` as a shape of dimension D; an error naming the kind
-    /// `name` unless D = 3.
+    /// The error for the model kind `name` asked for in a dimension other than 3.
+    fn not_3d(name: &str) -> DocumentError;
+
+    /// The 3-D shape made by `build` as a shape of dimension D; [`Self::not_3d`] unless
+    /// D = 3.
     fn model_in<const D: usize>(
         name: &str,
         build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
-    ) -> Result<Box<Self::Shape<D>>>;
+    ) -> Result<Box<Self::Shape<D>>> {
+        if D != 3 {
+            return Err(Self::not_3d(name));
+        }
+        same_type(build()?).ok_or_else(|| Self::not_3d(name))
+    }
 }
 
 /// Declares a model shape's document: a struct of fields that all have defaults (given

@@ -27,7 +27,7 @@ pub use placed::PlacedDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
 pub use trimmed::TrimmedDoc;
 
-use crate::dimension::{AnyDimension, ShapeFamily, same_type};
+use crate::dimension::{AnyDimension, ShapeFamily};
 use crate::error::{DocumentError, Result};
 use crate::json::split_type;
 use crate::registry::ModelFamily;
@@ -136,15 +136,8 @@ impl ShapeFamily for Surfaces {
 pub type AnySurface = AnyDimension<Surfaces>;
 
 impl ModelFamily for Surfaces {
-    fn model_in<const D: usize>(
-        _name: &str,
-        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
-    ) -> Result<Box<Self::Shape<D>>> {
-        let not_3d = || DocumentError::new("type", "model surfaces are 3-D");
-        if D != 3 {
-            return Err(not_3d());
-        }
-        same_type(build()?).ok_or_else(not_3d)
+    fn not_3d(_name: &str) -> DocumentError {
+        DocumentError::new("type", "model surfaces are 3-D")
     }
 }
 
