@@ -320,12 +320,17 @@ pub(crate) use model_document;
 /// The declarations a spline kind shares, written inside its `impl DocumentKind`: a
 /// document that holds a spline's own data (its `control_points`, with the knots and
 /// weights its [`DocumentKind::spline`] view names) is exactly that spline (`$form`'s
-/// `Spline`, `$form` the family's form type as named where the macro is used), has the dimension of its control points (`$dimension`, which checks them),
-/// is not offered as a blending model and has nothing to pose in time.
+/// `Spline`, `$form` the family's form type as named where the macro is used), has the
+/// dimension of its control points (`$dimension`, which checks them), draws them
+/// (`$decoration`, given them and the view), is not offered as a blending model and has
+/// nothing to pose in time.
 macro_rules! spline_kind_items {
-    ($form:ident, $dimension:path) => {
+    ($form:ident, $dimension:path, $decoration:path) => {
         fn exact_form(&self) -> $crate::Result<$form<'_>> {
             Ok($form::Spline(self.spline().expect("a spline kind")))
+        }
+        fn decoration(&self) -> <Self::Family as $crate::dimension::ShapeFamily>::Decoration<'_> {
+            $decoration(&self.control_points, &self.spline().expect("a spline kind"))
         }
         const BLENDING_MODEL: bool = false;
         fn dimension(&self) -> $crate::Result<usize> {
@@ -338,8 +343,8 @@ pub(crate) use spline_kind_items;
 
 /// The declarations of a kind that holds no spline data of its own and has no exact form
 /// (exporters approximate it, `$form`'s `Approximate`, `$form` the family's form type as
-/// named where the macro is used), written inside its
-/// `impl DocumentKind`; it is not offered as a blending model.
+/// named where the macro is used), written inside its `impl DocumentKind`; it is not
+/// offered as a blending model.
 macro_rules! approximated_kind_items {
     ($view:ident, $form:ident) => {
         fn spline(&self) -> Option<$crate::views::$view<'_>> {
