@@ -358,6 +358,23 @@ macro_rules! approximated_kind_items {
 }
 pub(crate) use approximated_kind_items;
 
+/// The declarations of a kind that holds no spline data of its own and is exactly itself:
+/// its form is the family's variant `$variant` holding the document (a revolution, an
+/// extrusion, a trimmed or placed surface, a blending spline), whose fields exporters read;
+/// written inside its `impl DocumentKind`, it is not offered as a blending model.
+macro_rules! self_form_kind_items {
+    ($view:ident, $variant:path) => {
+        fn spline(&self) -> Option<$crate::views::$view<'_>> {
+            None
+        }
+        fn exact_form(&self) -> $crate::Result<<Self::Family as $crate::dimension::ShapeFamily>::Form<'_>> {
+            Ok($variant(self))
+        }
+        const BLENDING_MODEL: bool = false;
+    };
+}
+pub(crate) use self_form_kind_items;
+
 /// Refuses any number in a (small) document beyond ±[`MAX_MAGNITUDE`](crate::budget::MAX_MAGNITUDE),
 /// naming its path.
 pub fn check_magnitudes(value: &Value, path: &str) -> Result<()> {

@@ -15,7 +15,7 @@ use crate::blending::{TrackDoc, tracks};
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
 use crate::error::{DocumentError, Result};
 use crate::json::{kind, nested};
-use crate::registry::DocumentKind;
+use crate::registry::{DocumentKind, self_form_kind_items};
 use crate::transforms::LocalTransforms;
 
 /// Where a model-based blending spline puts its knots.
@@ -309,13 +309,7 @@ fn local_curves_kind(with_model: bool, got: &str) -> DocumentError {
 
 impl DocumentKind for BlendingSplineDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<CurveForm<'_>> {
-        Ok(CurveForm::BlendingSpline(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(SplineView, CurveForm::BlendingSpline);
 
     /// Checks `local_curves` against `model`/`knots` on the JSON first (the message names
     /// its JSON kind), then the fields, then [`BlendingSplineDoc::source`].

@@ -15,7 +15,7 @@ use crate::blending::local_points::{self, PatchControlPoints};
 use crate::blending::{TrackDoc, tracks};
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
 use crate::error::{DocumentError, Result};
-use crate::registry::DocumentKind;
+use crate::registry::{DocumentKind, self_form_kind_items};
 use crate::transforms::PatchTransforms;
 
 /// The kind of local patches.
@@ -182,13 +182,7 @@ impl BlendingSplineSurfaceDoc {
 
 impl DocumentKind for BlendingSplineSurfaceDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<SurfaceForm<'_>> {
-        Ok(SurfaceForm::BlendingSpline(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(NetView, SurfaceForm::BlendingSpline);
     fn dimension(&self) -> Result<usize> {
         self.model.dimension().map_err(|e| e.within("model"))
     }

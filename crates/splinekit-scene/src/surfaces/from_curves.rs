@@ -11,7 +11,7 @@ use crate::curves::{BezierDoc, CircleDoc, CurveDocument, LineDoc, TrefoilDoc};
 use crate::defaults::{origin, tau, z_axis};
 use crate::error::{DocumentError, Result};
 use crate::points::to_point;
-use crate::registry::{DocumentKind, KindName, ModelFamily, approximated_kind_items};
+use crate::registry::{DocumentKind, KindName, ModelFamily, approximated_kind_items, self_form_kind_items};
 
 /// `{"type":"revolution","curve":{…},"axis_point":[0,0,0],"axis":[0,0,1],"angle":2π}`:
 /// the curve turned about the axis; u is the angle, v the curve's parameter.
@@ -33,13 +33,7 @@ pub struct RevolutionDoc {
 
 impl DocumentKind for RevolutionDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<SurfaceForm<'_>> {
-        Ok(SurfaceForm::Revolution(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(NetView, SurfaceForm::Revolution);
     fn dimension(&self) -> Result<usize> {
         Ok(3)
     }
@@ -130,13 +124,7 @@ pub struct ExtrusionDoc {
 
 impl DocumentKind for ExtrusionDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<SurfaceForm<'_>> {
-        Ok(SurfaceForm::Extrusion(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(NetView, SurfaceForm::Extrusion);
     fn dimension(&self) -> Result<usize> {
         let dim = self.curve.dimension().map_err(|e| e.within("curve"))?;
         if self.direction.len() != dim {

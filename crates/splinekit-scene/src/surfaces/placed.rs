@@ -8,7 +8,7 @@ use super::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
 use crate::error::{DocumentError, Result};
 use crate::points::to_point;
-use crate::registry::DocumentKind;
+use crate::registry::{DocumentKind, self_form_kind_items};
 
 /// `{"type":"placed","surface":{…},"origin":[0,0,0],"axis":[0,0,1],"ref_direction":[1,0,0]}`:
 /// P(u, v) = origin + S₁(u, v) x + S₂(u, v) y + S₃(u, v) z, where z = axis/|axis|, x is
@@ -47,13 +47,7 @@ fn three(field: &str, v: &[f64]) -> Result<[f64; 3]> {
 
 impl DocumentKind for PlacedDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<SurfaceForm<'_>> {
-        Ok(SurfaceForm::Placed(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(NetView, SurfaceForm::Placed);
     fn dimension(&self) -> Result<usize> {
         match self.surface.dimension().map_err(|e| e.within("surface"))? {
             3 => Ok(3),

@@ -8,7 +8,7 @@ use super::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
 use crate::curves::{CatmullRomDoc, CurveDocument};
 use crate::error::{DocumentError, Result};
-use crate::registry::DocumentKind;
+use crate::registry::{DocumentKind, self_form_kind_items};
 
 /// `{"type":"trimmed","surface":{…},"outer":{…},"holes":[{…}]}`: the surface restricted to
 /// the inside of `outer` (default: the whole domain) and outside every hole; loops are
@@ -39,13 +39,7 @@ fn trimming_loop(c: &CurveDocument, field: &str) -> Result<Box<dyn Curve<2>>> {
 
 impl DocumentKind for TrimmedDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<SurfaceForm<'_>> {
-        Ok(SurfaceForm::Trimmed(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(NetView, SurfaceForm::Trimmed);
     fn dimension(&self) -> Result<usize> {
         self.surface.dimension().map_err(|e| e.within("surface"))
     }
