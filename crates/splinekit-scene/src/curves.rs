@@ -89,11 +89,6 @@ crate::curve_kinds!(crate::registry::document_kinds);
 pub const CURVE_TYPES: &[&str] = CurveDocument::TYPES;
 
 impl CurveDocument {
-    /// Parses a curve document.
-    pub fn parse(value: &Value) -> Result<Self> {
-        Self::from_value(value.clone())
-    }
-
     /// Parses a curve document, taking the JSON value.
     pub fn from_value(value: Value) -> Result<Self> {
         let (ty, rest) = split_type(value)?;

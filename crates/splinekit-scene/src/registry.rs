@@ -88,9 +88,9 @@ pub trait DocumentKind: KindName + Clone + Serialize + DeserializeOwned {
 /// Each `Variant(Doc) = "name"` line makes an enum variant serialised with
 /// `"type": "name"` and gives `Doc` its [`KindName`]; `Doc` must implement
 /// [`DocumentKind`] of that family. The enum gets `TYPES`, `type_name`, `parse_fields`,
-/// `examples`, `dimension`, `cost`, `build_in`, `build`, `family_decoration`, `set_time`, `to_value`, and a
-/// `Deserialize` through its own `parse` (written beside the list, for the family's
-/// message about unknown types).
+/// `examples`, `dimension`, `cost`, `build_in`, `build`, `family_decoration`, `set_time`,
+/// `parse`, `to_value`, and a `Deserialize`, both through its own `from_value` (written
+/// beside the list, for the family's message about unknown types).
 macro_rules! document_kinds {
     (
         $(#[$meta:meta])*
@@ -204,6 +204,11 @@ macro_rules! document_kinds {
                 match self {
                     $( Self::$Variant(_) => <$Doc as $crate::registry::DocumentKind>::BLENDING_MODEL, )+
                 }
+            }
+
+            /// Parses a document of the family (a copy of `value`; see `from_value`).
+            pub fn parse(value: &serde_json::Value) -> $crate::Result<Self> {
+                Self::from_value(value.clone())
             }
 
             /// The document as JSON.

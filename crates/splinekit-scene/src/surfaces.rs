@@ -108,11 +108,6 @@ crate::surface_kinds!(crate::registry::document_kinds);
 pub const SURFACE_TYPES: &[&str] = SurfaceDocument::TYPES;
 
 impl SurfaceDocument {
-    /// Parses a surface document.
-    pub fn parse(value: &Value) -> Result<Self> {
-        Self::from_value(value.clone())
-    }
-
     /// Parses a surface document, taking the JSON value.
     pub fn from_value(value: Value) -> Result<Self> {
         let (ty, rest) = split_type(value)?;
