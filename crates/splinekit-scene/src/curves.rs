@@ -1,9 +1,12 @@
-//! Curve shape documents: the registry of curve kinds.
+//! Curve shape documents: the curve family — the registry of its kinds, its marker
+//! [`Curves`], and what its kinds declare of themselves, [`CurveForm`] and
+//! [`CurveDecoration`]. Those name kinds (a blending spline's form is the document) while
+//! the kinds, declared in this module's files, produce them: the family is one module.
 //!
 //! Adding a curve kind is a document struct with its
-//! [`DocumentKind`](crate::registry::DocumentKind) (for a model curve, one `model_document!`
-//! declaration in `models.rs`) and one line in the list (see CONTRIBUTING.md); the compiler asks for
-//! everything else.
+//! [`DocumentKind`](crate::registry::DocumentKind) (for a model curve, one
+//! `model_document!` declaration in `models.rs`) and one line in the list (see
+//! CONTRIBUTING.md); the compiler asks for everything else.
 
 mod blending;
 mod composite;

@@ -1,9 +1,13 @@
-//! Surface shape documents: the registry of surface kinds. The first index of a control net runs along u.
+//! Surface shape documents: the surface family — the registry of its kinds, its marker
+//! [`Surfaces`], and what its kinds declare of themselves, [`SurfaceForm`] and
+//! [`SurfaceDecoration`]. Those name kinds (a revolution's form is the document) while the
+//! kinds, declared in this module's files, produce them: the family is one module. The
+//! first index of a control net runs along u.
 //!
 //! Adding a surface kind is a document struct with its
-//! [`DocumentKind`](crate::registry::DocumentKind) (for a model surface, one `model_document!`
-//! declaration in `models.rs`) and one line in the list (see CONTRIBUTING.md); the compiler asks for
-//! everything else.
+//! [`DocumentKind`](crate::registry::DocumentKind) (for a model surface, one
+//! `model_document!` declaration in `models.rs`) and one line in the list (see
+//! CONTRIBUTING.md); the compiler asks for everything else.
 
 mod blending;
 mod from_curves;
