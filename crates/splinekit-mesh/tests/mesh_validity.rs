@@ -24,6 +24,8 @@ use splinekit_mesh::export::{GltfGeometry, GltfScene, obj, ply, stl};
 use splinekit_mesh::surface_mesh::adaptive;
 use splinekit_mesh::surface_mesh::regular;
 use splinekit_mesh::{MeshOptions, TriangleMesh};
+use splinekit_scene::DocumentKind;
+use splinekit_scene::curves::NurbsDoc;
 use splinekit_scene::scenes::SceneOrShape;
 use splinekit_scene::{AnySurface, ShapeDocument};
 
@@ -236,19 +238,10 @@ fn model_cases() -> Vec<(&'static str, Value, Shape)> {
     let r2 = std::f64::consts::FRAC_1_SQRT_2;
     let sphere = |r: f64| Shape::Closed(Some((4.0 / 3.0 * PI * r.powi(3), 4.0 * PI * r * r)));
     let torus = |big: f64, r: f64| Shape::Closed(Some((2.0 * PI * PI * big * r * r, 4.0 * PI * PI * big * r)));
-    let circle_knots = json!([0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1]);
-    let circle_weights = json!([1, r2, 1, r2, 1, r2, 1, r2, 1]);
-    let ring = [
-        [1.0, 0.0],
-        [1.0, 1.0],
-        [0.0, 1.0],
-        [-1.0, 1.0],
-        [-1.0, 0.0],
-        [-1.0, -1.0],
-        [0.0, -1.0],
-        [1.0, -1.0],
-        [1.0, 0.0],
-    ];
+    // The exact unit circle as the scene's NURBS example holds it: nine points of a square,
+    // quadratic, weights 1 and 1/√2.
+    let unit_circle = NurbsDoc::example();
+    let (circle_knots, circle_weights, ring) = (unit_circle.knots, unit_circle.weights, unit_circle.control_points);
     // The rational sphere of radius 1.5: a circle (u) times a half circle from pole to pole (v).
     let meridian = [[0.0, -1.0, 1.0], [1.0, -1.0, r2], [1.0, 0.0, 1.0], [1.0, 1.0, r2], [0.0, 1.0, 1.0]];
     let (mut net, mut weights) = (vec![], vec![]);

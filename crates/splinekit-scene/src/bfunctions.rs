@@ -132,3 +132,7 @@ impl<'de> Deserialize<'de> for BFunctionDoc {
         nested(deserializer, Self::from_value)
     }
 }
+
+/// The B-function of blending splines when none is given: ERBS with α = β = γ = 1, λ = ½.
+pub const DEFAULT_BFUNCTION: BFunctionDoc =
+    BFunctionDoc::Erbs(ErbsDoc { alpha: 1.0, beta: 1.0, gamma: 1.0, lambda: 0.5 });

@@ -1,26 +1,33 @@
-//! Curve shape documents: the registry of curve kinds, and the model curves' documents.
+//! Curve shape documents: the curve family — the registry of its kinds, its marker
+//! [`Curves`], and what its kinds declare of themselves, [`CurveForm`] and
+//! [`CurveDecoration`]. Those name kinds (a blending spline's form is the document) while
+//! the kinds, declared in this module's files, produce them: the family is one module.
 //!
 //! Adding a curve kind is a document struct with its
-//! [`DocumentKind`](crate::registry::DocumentKind) (for a model curve, one `model_document!`
-//! declaration below) and one line in the list (see CONTRIBUTING.md); the compiler asks for
-//! everything else.
+//! [`DocumentKind`](crate::registry::DocumentKind) (for a model curve, one
+//! `model_document!` declaration in `models.rs`) and one line in the list (see
+//! CONTRIBUTING.md); the compiler asks for everything else.
 
+mod blending;
 mod composite;
+mod models;
 mod splines;
 
 use serde_json::Value;
-use splinekit::curve::model::{Butterfly, Circle, Ellipse, Heart, Helix, Lissajous, Rolling, Rose, Trefoil, Trochoid};
+use splinekit::curve::Curve;
 
-pub use crate::blending::{BlendingSplineDoc, LocalDoc};
+pub use blending::{BlendingSource, BlendingSplineDoc, KnotSpacingDoc, LocalCurves, LocalDoc};
 pub use composite::{BFunctionShapeDoc, BlendDoc};
+pub use models::{
+    ButterflyDoc, CircleDoc, EllipseDoc, HeartDoc, HelixDoc, LissajousDoc, RollingDoc, RoseDoc, TrefoilDoc, TrochoidDoc,
+};
 pub use splines::{BSplineDoc, BezierDoc, CatmullRomDoc, HermiteDoc, LineDoc, NurbsDoc, RationalBezierDoc};
 
-use crate::defaults::is_false;
-use crate::dimension::Curves;
+use crate::dimension::{AnyDimension, ShapeFamily};
 use crate::error::{DocumentError, Result};
-use crate::forms::CurveForm;
 use crate::json::split_type;
-use crate::registry::model_document;
+use crate::registry::ModelFamily;
+use crate::views::SplineView;
 
 /// The registry of curve kinds: `curve_kinds!(callback)` calls the macro `callback` with the
 /// list, in the syntax of `document_kinds!` (see [`crate::registry`]). This crate makes
@@ -85,11 +92,6 @@ crate::curve_kinds!(crate::registry::document_kinds);
 pub const CURVE_TYPES: &[&str] = CurveDocument::TYPES;
 
 impl CurveDocument {
-    /// Parses a curve document.
-    pub fn parse(value: &Value) -> Result<Self> {
-        Self::from_value(value.clone())
-    }
-
     /// Parses a curve document, taking the JSON value.
     pub fn from_value(value: Value) -> Result<Self> {
         let (ty, rest) = split_type(value)?;
@@ -102,137 +104,81 @@ impl CurveDocument {
     }
 }
 
-model_document! {
-    /// `{"type":"circle","radius":1}`: (r cos t, r sin t, 0), t ∈ [0, 2π].
-    pub struct CircleDoc in Curves {
-        /// Radius r (default 1).
-        pub radius: f64 = 1.0,
-    }
-    build(|d| Circle::new(d.radius))
-    exact(|d| CurveForm::Circle { radius: d.radius })
+/// Curves: `dyn Curve<D>`.
+#[derive(Debug)]
+pub enum Curves {}
+
+impl ShapeFamily for Curves {
+    type Shape<const D: usize> = dyn Curve<D>;
+    type Spline<'a> = SplineView<'a>;
+    type Form<'a> = CurveForm<'a>;
+    type Decoration<'a> = CurveDecoration<'a>;
 }
 
-model_document! {
-    /// `{"type":"ellipse","a":2,"b":1}`: (a cos t, b sin t, 0), t ∈ [0, 2π].
-    pub struct EllipseDoc in Curves {
-        /// Semi-axis along x (default 2).
-        pub a: f64 = 2.0,
-        /// Semi-axis along y (default 1).
-        pub b: f64 = 1.0,
+/// A curve of a dimension known only at run time.
+pub type AnyCurve = AnyDimension<Curves>;
+
+impl ModelFamily for Curves {
+    fn not_3d(name: &str) -> DocumentError {
+        DocumentError::new("type", format!("{name} is a 3-D model curve"))
     }
-    build(|d| Ellipse::new(d.a, d.b))
-    exact(|d| CurveForm::Ellipse { a: d.a, b: d.b })
 }
 
-model_document! {
-    /// `{"type":"helix","radius":1,"pitch":1,"turns":3}`: (r cos t, r sin t, pitch·t/2π).
-    pub struct HelixDoc in Curves {
-        /// Radius (default 1).
-        pub radius: f64 = 1.0,
-        /// Rise per turn (default 1).
-        pub pitch: f64 = 1.0,
-        /// Number of turns; t ∈ [0, 2π·turns] (default 3).
-        pub turns: f64 = 3.0,
-    }
-    build(|d| Helix::new(d.radius, d.pitch, d.turns))
-    exact(|_d| CurveForm::Approximate)
+/// The exact form of a curve document: what it is in the classical vocabulary of geometry
+/// (a spline, a line, a conic), declared by its kind in
+/// [`DocumentKind::exact_form`](crate::registry::DocumentKind::exact_form).
+///
+/// Exporters write the form's own entity (STEP: `B_SPLINE_CURVE_WITH_KNOTS`, `CIRCLE`,
+/// `TOROIDAL_SURFACE`, …) and approximate only `Approximate`; a new kind chooses among
+/// these forms, so an exporter needs no edit for it. Every form has the document's
+/// parametrisation up to the affine maps the exporter names.
+#[derive(Debug, Clone)]
+pub enum CurveForm<'a> {
+    /// A B-spline, NURBS or (rational) Bézier curve with these points, knots and weights.
+    Spline(SplineView<'a>),
+    /// The segment from + t (to − from), t ∈ [0, 1].
+    Line {
+        /// c(0).
+        from: &'a [f64],
+        /// c(1).
+        to: &'a [f64],
+    },
+    /// (r cos t, r sin t, 0), t ∈ [0, 2π].
+    Circle {
+        /// r.
+        radius: f64,
+    },
+    /// (a cos t, b sin t, 0), t ∈ [0, 2π].
+    Ellipse {
+        /// Semi-axis along x.
+        a: f64,
+        /// Semi-axis along y.
+        b: f64,
+    },
+    /// A blending spline: a piecewise polynomial (a B-spline) when its locals are Bézier
+    /// curves or lines and its B-function is a polynomial, else approximated.
+    BlendingSpline(&'a BlendingSplineDoc),
+    /// No exact form: exporters approximate the curve within a tolerance.
+    Approximate,
 }
 
-model_document! {
-    /// `{"type":"heart","scale":1}`: s·(16 sin³t, 13 cos t − 5 cos 2t − 2 cos 3t − cos 4t, 0).
-    pub struct HeartDoc in Curves {
-        /// Uniform scale (default 1).
-        pub scale: f64 = 1.0,
-    }
-    build(|d| Heart::new(d.scale))
-    exact(|_d| CurveForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"rose","radius":1,"n":4,"planar":false}`.
-    pub struct RoseDoc in Curves {
-        /// Radius r (default 1).
-        pub radius: f64 = 1.0,
-        /// Petal parameter n (default 4).
-        pub n: f64 = 4.0,
-        /// Drop z = r sin(nt) (default false: the 3-D rose).
-        #[serde(skip_serializing_if = "is_false")]
-        pub planar: bool = false,
-    }
-    build(|d| Rose::new(d.radius, d.n, d.planar))
-    exact(|_d| CurveForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"lissajous","amplitudes":[1,1,0],"frequencies":[3,2,0],"delta":π/2}`.
-    pub struct LissajousDoc in Curves {
-        /// (A, B, C) (default [1, 1, 0]).
-        pub amplitudes: [f64; 3] = [1.0, 1.0, 0.0],
-        /// (a, b, c) (default [3, 2, 0]).
-        pub frequencies: [f64; 3] = [3.0, 2.0, 0.0],
-        /// Phase of x (default π/2).
-        pub delta: f64 = std::f64::consts::FRAC_PI_2,
-    }
-    build(|d| Lissajous::new(d.amplitudes, d.frequencies, d.delta))
-    exact(|_d| CurveForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"trefoil","scale":1}`: s·(sin t + 2 sin 2t, cos t − 2 cos 2t, −sin 3t).
-    pub struct TrefoilDoc in Curves {
-        /// Uniform scale (default 1).
-        pub scale: f64 = 1.0,
-    }
-    build(|d| Trefoil::new(d.scale))
-    exact(|_d| CurveForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"butterfly","scale":1}`: Fay's butterfly, t ∈ [0, 24π].
-    pub struct ButterflyDoc in Curves {
-        /// Uniform scale (default 1).
-        pub scale: f64 = 1.0,
-    }
-    build(|d| Butterfly::new(d.scale))
-    exact(|_d| CurveForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"trochoid","rolling":"inside","fixed_radius":5,"rolling_radius":3,"distance":5}`:
-    /// the spirograph curve drawn by a pen at distance d from the centre of a circle of
-    /// radius r rolling inside (hypotrochoid) or outside (epitrochoid) a circle of radius R,
-    /// over its whole period t ∈ [0, 2π·q] where R/r = p/q, or over t ∈ [0, 2π·turns].
-    pub struct TrochoidDoc in Curves {
-        /// `"inside"` (default: the hypotrochoid) or `"outside"` (the epitrochoid).
-        pub rolling: RollingDoc = RollingDoc::Inside,
-        /// R (default 5).
-        pub fixed_radius: f64 = 5.0,
-        /// r (default 3).
-        pub rolling_radius: f64 = 3.0,
-        /// d (default 5).
-        pub distance: f64 = 5.0,
-        /// Turns of the rolling circle's centre (default: until the curve closes).
-        #[serde(skip_serializing_if = "Option::is_none")]
-        pub turns: Option<f64> = None,
-    }
-    build(|d| {
-        let rolling = match d.rolling {
-            RollingDoc::Inside => Rolling::Inside,
-            RollingDoc::Outside => Rolling::Outside,
-        };
-        match d.turns {
-            None => Trochoid::new(rolling, d.fixed_radius, d.rolling_radius, d.distance),
-            Some(turns) => Trochoid::with_turns(rolling, d.fixed_radius, d.rolling_radius, d.distance, turns),
-        }
-    })
-    exact(|_d| CurveForm::Approximate)
-}
-
-/// Where the circle of a trochoid rolls: `"inside"` or `"outside"` the fixed circle.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "lowercase")]
-#[allow(missing_docs)]
-pub enum RollingDoc {
-    Inside,
-    Outside,
+/// What a scene draws besides a curve when its style asks for control nets (`control_net`)
+/// or local pieces (`local_pieces`); scenes read it as a [`Decoration`](crate::Decoration).
+#[derive(Debug, Clone, Copy, Default)]
+pub enum CurveDecoration<'a> {
+    /// Nothing besides the curve.
+    #[default]
+    None,
+    /// A control polygon (curves from control points or interpolated points).
+    ControlPolygon {
+        /// The points, each of 1 to 4 coordinates.
+        points: &'a [Vec<f64>],
+        /// The document field that holds them (`control_points`, or `points` of
+        /// interpolating kinds), for editors that move them.
+        field: &'static str,
+        /// Whether the last point joins the first.
+        closed: bool,
+    },
+    /// The local curves of a blending-spline curve.
+    LocalCurves(&'a BlendingSplineDoc),
 }

@@ -6,12 +6,7 @@
 //! run-time dimension, [`AnyDimension`] holds a built curve or surface of any supported
 //! dimension, and a [`DimensionVisitor`] is handed the shape back at its compile-time D.
 
-use crate::forms::{CurveForm, SurfaceForm};
-use crate::views::{NetView, SplineView};
 use std::any::Any;
-
-use splinekit::curve::Curve;
-use splinekit::surface::Surface;
 
 use crate::error::{DocumentError, Result};
 
@@ -55,34 +50,22 @@ pub fn unsupported(field: &str, dimension: usize) -> DocumentError {
     DocumentError::new(field, format!("points of dimension {dimension} are not supported (1 to {MAX_DIMENSION})"))
 }
 
-/// A family of shapes with one trait object type per dimension: curves or surfaces.
+/// A family of shapes with one trait object type per dimension: curves or surfaces
+/// ([`Curves`](crate::curves::Curves), [`Surfaces`](crate::surfaces::Surfaces), each
+/// declared with its kinds).
 pub trait ShapeFamily {
     /// The shape in dimension D (`dyn Curve<D>` or `dyn Surface<D>`).
     type Shape<const D: usize>: ?Sized + 'static;
-    /// The spline data a document of the family may hold ([`SplineView`] or [`NetView`]).
+    /// The spline data a document of the family may hold ([`SplineView`](crate::views::SplineView) or
+    /// [`NetView`](crate::views::NetView)).
     type Spline<'a>;
-    /// The exact forms of the family ([`CurveForm`] or [`SurfaceForm`]).
+    /// The exact forms of the family ([`CurveForm`](crate::curves::CurveForm) or
+    /// [`SurfaceForm`](crate::surfaces::SurfaceForm)).
     type Form<'a>;
-}
-
-/// Curves: `dyn Curve<D>`.
-#[derive(Debug)]
-pub enum Curves {}
-
-/// Surfaces: `dyn Surface<D>`.
-#[derive(Debug)]
-pub enum Surfaces {}
-
-impl ShapeFamily for Curves {
-    type Shape<const D: usize> = dyn Curve<D>;
-    type Spline<'a> = SplineView<'a>;
-    type Form<'a> = CurveForm<'a>;
-}
-
-impl ShapeFamily for Surfaces {
-    type Shape<const D: usize> = dyn Surface<D>;
-    type Spline<'a> = NetView<'a>;
-    type Form<'a> = SurfaceForm<'a>;
+    /// What a scene may draw besides a shape of the family
+    /// ([`CurveDecoration`](crate::curves::CurveDecoration) or
+    /// [`SurfaceDecoration`](crate::surfaces::SurfaceDecoration)); the default is nothing.
+    type Decoration<'a>: Default;
 }
 
 /// A boxed curve or surface of a dimension known only at run time.
@@ -93,12 +76,6 @@ pub enum AnyDimension<F: ShapeFamily> {
     D3(Box<F::Shape<3>>),
     D4(Box<F::Shape<4>>),
 }
-
-/// A curve of a dimension known only at run time.
-pub type AnyCurve = AnyDimension<Curves>;
-
-/// A surface of a dimension known only at run time.
-pub type AnySurface = AnyDimension<Surfaces>;
 
 /// Something to do with a shape of any dimension (see [`AnyDimension::visit`]).
 pub trait DimensionVisitor<F: ShapeFamily> {

@@ -7,16 +7,15 @@
 //! and how it poses animations. The lists in [`crate::curves`] and [`crate::surfaces`] name
 //! each kind once with its `type`; the `document_kinds!` macro makes from them the enum, the
 //! `"type"` dispatch of parsing and serialising, the list of type names, and `dimension`,
-//! `build`, `examples`, `decoration` and `set_time` on the enum — each a match over every
+//! `build`, `examples`, `family_decoration` and `set_time` on the enum — each a match over every
 //! kind, so a kind that lacks one of them does not compile.
 
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 use serde_json::Value;
 
-use crate::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc};
 use crate::budget::ShapeCost;
-use crate::dimension::{Curves, ShapeFamily, Surfaces, same_type};
+use crate::dimension::{ShapeFamily, same_type};
 use crate::error::{DocumentError, Result};
 
 /// The `type` name of a kind, set by its line in the `document_kinds!` list of its family.
@@ -50,8 +49,10 @@ pub trait DocumentKind: KindName + Clone + Serialize + DeserializeOwned {
     /// A document of this kind with sensible values, for editors and galleries.
     fn example() -> Self;
 
-    /// What a scene may draw besides the shape (see [`Decoration`]).
-    fn decoration(&self) -> Decoration<'_>;
+    /// What a scene may draw besides the shape, in its family's terms
+    /// ([`CurveDecoration`](crate::curves::CurveDecoration),
+    /// [`SurfaceDecoration`](crate::surfaces::SurfaceDecoration)).
+    fn decoration(&self) -> <Self::Family as ShapeFamily>::Decoration<'_>;
 
     /// Poses every animated blending spline in the document, nested ones too, at `time`
     /// (seconds); kinds without animations and without nested documents do nothing.
@@ -62,43 +63,13 @@ pub trait DocumentKind: KindName + Clone + Serialize + DeserializeOwned {
     /// kinds that hold other fields.
     fn spline(&self) -> Option<<Self::Family as ShapeFamily>::Spline<'_>>;
 
-    /// What the shape is exactly (a spline, a conic, a quadric, …; see [`crate::forms`]):
+    /// What the shape is exactly (a spline, a conic, a quadric, …; see
+    /// [`CurveForm`](crate::curves::CurveForm), [`SurfaceForm`](crate::surfaces::SurfaceForm)):
     /// what exporters write. An error where the document's numbers make no shape.
     fn exact_form(&self) -> Result<<Self::Family as ShapeFamily>::Form<'_>>;
 
     /// Whether editors offer a blending spline of this kind's example (the model shapes).
     const BLENDING_MODEL: bool;
-}
-
-/// What a scene draws besides a shape when its style asks for control nets
-/// (`control_net`) or local pieces (`local_pieces`).
-#[derive(Debug, Clone, Copy)]
-pub enum Decoration<'a> {
-    /// Nothing besides the shape.
-    None,
-    /// A control polygon (curves from control points or interpolated points).
-    ControlPolygon {
-        /// The points, each of 1 to 4 coordinates.
-        points: &'a [Vec<f64>],
-        /// The document field that holds them (`control_points`, or `points` of
-        /// interpolating kinds), for editors that move them.
-        field: &'static str,
-        /// Whether the last point joins the first.
-        closed: bool,
-    },
-    /// A control net, rows along u.
-    ControlNet(&'a [Vec<Vec<f64>>]),
-    /// The local curves of a blending-spline curve.
-    LocalCurves(&'a BlendingSplineDoc),
-    /// The local patches of a blending-spline surface.
-    LocalPatches(&'a BlendingSplineSurfaceDoc),
-    /// The polygon cage of a subdivision surface: its vertices and faces (vertex indices).
-    Cage {
-        /// The vertices, 3-D.
-        vertices: &'a [Vec<f64>],
-        /// The faces.
-        faces: &'a [Vec<u32>],
-    },
 }
 
 /// Declares the document enum of a family from its list of kinds.
@@ -117,9 +88,9 @@ pub enum Decoration<'a> {
 /// Each `Variant(Doc) = "name"` line makes an enum variant serialised with
 /// `"type": "name"` and gives `Doc` its [`KindName`]; `Doc` must implement
 /// [`DocumentKind`] of that family. The enum gets `TYPES`, `type_name`, `parse_fields`,
-/// `examples`, `dimension`, `cost`, `build_in`, `build`, `decoration`, `set_time`, `to_value`, and a
-/// `Deserialize` through its own `parse` (written beside the list, for the family's
-/// message about unknown types).
+/// `examples`, `dimension`, `cost`, `build_in`, `build`, `family_decoration`, `set_time`,
+/// `parse`, `to_value`, and a `Deserialize`, both through its own `from_value` (written
+/// beside the list, for the family's message about unknown types).
 macro_rules! document_kinds {
     (
         $(#[$meta:meta])*
@@ -196,8 +167,9 @@ macro_rules! document_kinds {
                 })
             }
 
-            /// What a scene may draw besides the shape.
-            pub fn decoration(&self) -> $crate::registry::Decoration<'_> {
+            /// What a scene may draw besides the shape, in the family's terms (the
+            /// [`Decoration`](crate::Decoration) of scenes is made of it).
+            pub fn family_decoration(&self) -> <$Family as $crate::dimension::ShapeFamily>::Decoration<'_> {
                 match self {
                     $( Self::$Variant(d) => $crate::registry::DocumentKind::decoration(d), )+
                 }
@@ -219,7 +191,8 @@ macro_rules! document_kinds {
                 }
             }
 
-            /// What the shape is exactly (see [`crate::forms`]).
+            /// What the shape is exactly (see
+            /// [`DocumentKind::exact_form`](crate::registry::DocumentKind::exact_form)).
             pub fn exact_form(&self) -> $crate::Result<<$Family as $crate::dimension::ShapeFamily>::Form<'_>> {
                 match self {
                     $( Self::$Variant(d) => $crate::registry::DocumentKind::exact_form(d), )+
@@ -231,6 +204,11 @@ macro_rules! document_kinds {
                 match self {
                     $( Self::$Variant(_) => <$Doc as $crate::registry::DocumentKind>::BLENDING_MODEL, )+
                 }
+            }
+
+            /// Parses a document of the family (a copy of `value`; see `from_value`).
+            pub fn parse(value: &serde_json::Value) -> $crate::Result<Self> {
+                Self::from_value(value.clone())
             }
 
             /// The document as JSON.
@@ -250,44 +228,26 @@ pub(crate) use document_kinds;
 
 /// A family whose model shapes (circle, torus, …) exist in 3-D only.
 pub trait ModelFamily: ShapeFamily {
-    /// The 3-D shape made by `build` as a shape of dimension D; an error naming the kind
-    /// `name` unless D = 3.
-    fn model_in<const D: usize>(
-        name: &str,
-        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
-    ) -> Result<Box<Self::Shape<D>>>;
-}
+    /// The error for the model kind `name` asked for in a dimension other than 3.
+    fn not_3d(name: &str) -> DocumentError;
 
-impl ModelFamily for Curves {
+    /// The 3-D shape made by `build` as a shape of dimension D; [`Self::not_3d`] unless
+    /// D = 3.
     fn model_in<const D: usize>(
         name: &str,
         build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
     ) -> Result<Box<Self::Shape<D>>> {
-        let not_3d = || DocumentError::new("type", format!("{name} is a 3-D model curve"));
         if D != 3 {
-            return Err(not_3d());
+            return Err(Self::not_3d(name));
         }
-        same_type(build()?).ok_or_else(not_3d)
-    }
-}
-
-impl ModelFamily for Surfaces {
-    fn model_in<const D: usize>(
-        _name: &str,
-        build: impl FnOnce() -> Result<Box<Self::Shape<3>>>,
-    ) -> Result<Box<Self::Shape<D>>> {
-        let not_3d = || DocumentError::new("type", "model surfaces are 3-D");
-        if D != 3 {
-            return Err(not_3d());
-        }
-        same_type(build()?).ok_or_else(not_3d)
+        same_type(build()?).ok_or_else(|| Self::not_3d(name))
     }
 }
 
 /// Declares a model shape's document: a struct of fields that all have defaults (given
 /// after `=`; they are the struct's `Default` and serde's for missing fields), and its
 /// [`DocumentKind`]: 3-D, built as `build(|d| …)` from the document `d`, exactly the form
-/// `exact(|d| …)` (a [`crate::forms`] value; `?` may refuse the document); its example is
+/// `exact(|d| …)` (a value of the family's form; `?` may refuse the document); its example is
 /// its default document, it holds no spline, has nothing to decorate or pose, and editors
 /// offer blending splines of it.
 ///
@@ -345,8 +305,8 @@ macro_rules! model_document {
             fn example() -> Self {
                 Self::default()
             }
-            fn decoration(&self) -> $crate::registry::Decoration<'_> {
-                $crate::registry::Decoration::None
+            fn decoration(&self) -> <$family as $crate::dimension::ShapeFamily>::Decoration<'_> {
+                Default::default()
             }
             fn set_time(&mut self, _time: f64) {}
             fn spline(&self) -> Option<<$family as $crate::dimension::ShapeFamily>::Spline<'_>> {
@@ -365,12 +325,17 @@ pub(crate) use model_document;
 /// The declarations a spline kind shares, written inside its `impl DocumentKind`: a
 /// document that holds a spline's own data (its `control_points`, with the knots and
 /// weights its [`DocumentKind::spline`] view names) is exactly that spline (`$form`'s
-/// `Spline`), has the dimension of its control points (`$dimension`, which checks them),
-/// is not offered as a blending model and has nothing to pose in time.
+/// `Spline`, `$form` the family's form type as named where the macro is used), has the
+/// dimension of its control points (`$dimension`, which checks them), draws them
+/// (`$decoration`, given them and the view), is not offered as a blending model and has
+/// nothing to pose in time.
 macro_rules! spline_kind_items {
-    ($form:ident, $dimension:path) => {
-        fn exact_form(&self) -> $crate::Result<$crate::forms::$form<'_>> {
-            Ok($crate::forms::$form::Spline(self.spline().expect("a spline kind")))
+    ($form:ident, $dimension:path, $decoration:path) => {
+        fn exact_form(&self) -> $crate::Result<$form<'_>> {
+            Ok($form::Spline(self.spline().expect("a spline kind")))
+        }
+        fn decoration(&self) -> <Self::Family as $crate::dimension::ShapeFamily>::Decoration<'_> {
+            $decoration(&self.control_points, &self.spline().expect("a spline kind"))
         }
         const BLENDING_MODEL: bool = false;
         fn dimension(&self) -> $crate::Result<usize> {
@@ -382,20 +347,38 @@ macro_rules! spline_kind_items {
 pub(crate) use spline_kind_items;
 
 /// The declarations of a kind that holds no spline data of its own and has no exact form
-/// (exporters approximate it, `$form`'s `Approximate`), written inside its
-/// `impl DocumentKind`; it is not offered as a blending model.
+/// (exporters approximate it, `$form`'s `Approximate`, `$form` the family's form type as
+/// named where the macro is used), written inside its `impl DocumentKind`; it is not
+/// offered as a blending model.
 macro_rules! approximated_kind_items {
     ($view:ident, $form:ident) => {
         fn spline(&self) -> Option<$crate::views::$view<'_>> {
             None
         }
-        fn exact_form(&self) -> $crate::Result<$crate::forms::$form<'_>> {
-            Ok($crate::forms::$form::Approximate)
+        fn exact_form(&self) -> $crate::Result<$form<'_>> {
+            Ok($form::Approximate)
         }
         const BLENDING_MODEL: bool = false;
     };
 }
 pub(crate) use approximated_kind_items;
+
+/// The declarations of a kind that holds no spline data of its own and is exactly itself:
+/// its form is the family's variant `$variant` holding the document (a revolution, an
+/// extrusion, a trimmed or placed surface, a blending spline), whose fields exporters read;
+/// written inside its `impl DocumentKind`, it is not offered as a blending model.
+macro_rules! self_form_kind_items {
+    ($view:ident, $variant:path) => {
+        fn spline(&self) -> Option<$crate::views::$view<'_>> {
+            None
+        }
+        fn exact_form(&self) -> $crate::Result<<Self::Family as $crate::dimension::ShapeFamily>::Form<'_>> {
+            Ok($variant(self))
+        }
+        const BLENDING_MODEL: bool = false;
+    };
+}
+pub(crate) use self_form_kind_items;
 
 /// Refuses any number in a (small) document beyond ±[`MAX_MAGNITUDE`](crate::budget::MAX_MAGNITUDE),
 /// naming its path.

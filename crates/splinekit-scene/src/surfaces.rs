@@ -1,36 +1,41 @@
-//! Surface shape documents: the registry of surface kinds, and the model surfaces'
-//! documents. The first index of a control net runs along u.
+//! Surface shape documents: the surface family — the registry of its kinds, its marker
+//! [`Surfaces`], and what its kinds declare of themselves, [`SurfaceForm`] and
+//! [`SurfaceDecoration`]. Those name kinds (a revolution's form is the document) while the
+//! kinds, declared in this module's files, produce them: the family is one module. The
+//! first index of a control net runs along u.
 //!
 //! Adding a surface kind is a document struct with its
-//! [`DocumentKind`](crate::registry::DocumentKind) (for a model surface, one `model_document!`
-//! declaration below) and one line in the list (see CONTRIBUTING.md); the compiler asks for
-//! everything else.
+//! [`DocumentKind`](crate::registry::DocumentKind) (for a model surface, one
+//! `model_document!` declaration in `models.rs`) and one line in the list (see
+//! CONTRIBUTING.md); the compiler asks for everything else.
 
+mod blending;
 mod from_curves;
+mod models;
 mod nets;
 mod placed;
 mod subdivision;
 mod trimmed;
 
 use serde_json::Value;
-use splinekit::surface::model::{
-    Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
-    dupin_cyclide,
-};
+use splinekit::surface::Surface;
 
-pub use crate::blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
+pub use blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, RuledDoc, SweepDoc};
+pub use models::{
+    AppleDoc, ConeDoc, CylinderDoc, DupinCyclideDoc, EnneperDoc, HeartSurfaceDoc, HelicoidDoc, KleinBottleDoc,
+    MobiusDoc, PlaneDoc, SeashellDoc, SphereDoc, TorusDoc,
+};
 pub use nets::{BSplineSurfaceDoc, BezierSurfaceDoc, NurbsSurfaceDoc};
 pub use placed::PlacedDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
 pub use trimmed::TrimmedDoc;
 
-use crate::dimension::Surfaces;
+use crate::dimension::{AnyDimension, ShapeFamily};
 use crate::error::{DocumentError, Result};
-use crate::forms::SurfaceForm;
 use crate::json::split_type;
-use crate::points::to_point;
-use crate::registry::model_document;
+use crate::registry::ModelFamily;
+use crate::views::NetView;
 
 /// The registry of surface kinds: `surface_kinds!(callback)` calls the macro `callback` with the
 /// list, in the syntax of `document_kinds!` (see [`crate::registry`]). This crate makes
@@ -107,11 +112,6 @@ crate::surface_kinds!(crate::registry::document_kinds);
 pub const SURFACE_TYPES: &[&str] = SurfaceDocument::TYPES;
 
 impl SurfaceDocument {
-    /// Parses a surface document.
-    pub fn parse(value: &Value) -> Result<Self> {
-        Self::from_value(value.clone())
-    }
-
     /// Parses a surface document, taking the JSON value.
     pub fn from_value(value: Value) -> Result<Self> {
         let (ty, rest) = split_type(value)?;
@@ -120,162 +120,105 @@ impl SurfaceDocument {
     }
 }
 
-model_document! {
-    /// `{"type":"plane","origin":[0,0,0],"u_axis":[1,0,0],"v_axis":[0,1,0]}`
-    pub struct PlaneDoc in Surfaces {
-        /// S(0, 0) (default the origin).
-        pub origin: Vec<f64> = vec![0.0, 0.0, 0.0],
-        /// ∂S/∂u (default x).
-        pub u_axis: Vec<f64> = vec![1.0, 0.0, 0.0],
-        /// ∂S/∂v (default y).
-        pub v_axis: Vec<f64> = vec![0.0, 1.0, 0.0],
-    }
-    build(|d| Plane::new(to_point("origin", &d.origin)?, to_point("u_axis", &d.u_axis)?, to_point("v_axis", &d.v_axis)?))
-    exact(|d| SurfaceForm::Plane { origin: &d.origin, u_axis: &d.u_axis, v_axis: &d.v_axis })
+/// Surfaces: `dyn Surface<D>`.
+#[derive(Debug)]
+pub enum Surfaces {}
+
+impl ShapeFamily for Surfaces {
+    type Shape<const D: usize> = dyn Surface<D>;
+    type Spline<'a> = NetView<'a>;
+    type Form<'a> = SurfaceForm<'a>;
+    type Decoration<'a> = SurfaceDecoration<'a>;
 }
 
-model_document! {
-    /// `{"type":"cylinder","radius":1,"height":1}`
-    pub struct CylinderDoc in Surfaces {
-        /// Radius (default 1).
-        pub radius: f64 = 1.0,
-        /// Height (default 1).
-        pub height: f64 = 1.0,
+/// A surface of a dimension known only at run time.
+pub type AnySurface = AnyDimension<Surfaces>;
+
+impl ModelFamily for Surfaces {
+    fn not_3d(_name: &str) -> DocumentError {
+        DocumentError::new("type", "model surfaces are 3-D")
     }
-    build(|d| Cylinder::new(d.radius, d.height))
-    exact(|d| SurfaceForm::Cylinder { radius: d.radius, height: d.height })
 }
 
-model_document! {
-    /// `{"type":"cone","radius":1,"height":2}`
-    pub struct ConeDoc in Surfaces {
-        /// Base radius (default 1).
-        pub radius: f64 = 1.0,
-        /// Height (default 2).
-        pub height: f64 = 2.0,
-    }
-    build(|d| Cone::new(d.radius, d.height))
-    exact(|d| SurfaceForm::Cone { radius: d.radius, height: d.height })
+/// The exact form of a surface document: what it is in the classical vocabulary of
+/// geometry (a spline, a plane, a quadric, a swept surface), declared by its kind in
+/// [`DocumentKind::exact_form`](crate::registry::DocumentKind::exact_form).
+///
+/// Exporters write the form's own entity (STEP: `B_SPLINE_CURVE_WITH_KNOTS`, `CIRCLE`,
+/// `TOROIDAL_SURFACE`, …) and approximate only `Approximate`; a new kind chooses among
+/// these forms, so an exporter needs no edit for it. Every form has the document's
+/// parametrisation up to the affine maps the exporter names.
+#[derive(Debug, Clone)]
+pub enum SurfaceForm<'a> {
+    /// A B-spline, NURBS or Bézier net.
+    Spline(NetView<'a>),
+    /// origin + u U + v V, (u, v) ∈ [0, 1]².
+    Plane {
+        /// S(0, 0).
+        origin: &'a [f64],
+        /// U.
+        u_axis: &'a [f64],
+        /// V.
+        v_axis: &'a [f64],
+    },
+    /// (r cos u, r sin u, h v), u ∈ [0, 2π], v ∈ [0, 1].
+    Cylinder {
+        /// r.
+        radius: f64,
+        /// h.
+        height: f64,
+    },
+    /// (r (1 − v) cos u, r (1 − v) sin u, h v), u ∈ [0, 2π], v ∈ [0, 1].
+    Cone {
+        /// r.
+        radius: f64,
+        /// h.
+        height: f64,
+    },
+    /// The sphere of radius r about the origin, u the longitude, v ∈ [−π/2, π/2] the latitude.
+    Sphere {
+        /// r.
+        radius: f64,
+    },
+    /// ((R + r cos v) cos u, (R + r cos v) sin u, r sin v), (u, v) ∈ [0, 2π]².
+    Torus {
+        /// R.
+        major_radius: f64,
+        /// r.
+        minor_radius: f64,
+    },
+    /// A curve turned about an axis.
+    Revolution(&'a RevolutionDoc),
+    /// A curve moved along a direction.
+    Extrusion(&'a ExtrusionDoc),
+    /// A surface cut by loops of curves.
+    Trimmed(&'a TrimmedDoc),
+    /// A surface moved rigidly into a frame.
+    Placed(&'a PlacedDoc),
+    /// A blending-spline surface: a B-spline when its locals are Bézier patches and its
+    /// B-function a polynomial, else approximated.
+    BlendingSpline(&'a BlendingSplineSurfaceDoc),
+    /// No exact form: exporters approximate the surface within a tolerance.
+    Approximate,
 }
 
-model_document! {
-    /// `{"type":"sphere","radius":1}`
-    pub struct SphereDoc in Surfaces {
-        /// Radius (default 1).
-        pub radius: f64 = 1.0,
-    }
-    build(|d| Sphere::new(d.radius))
-    exact(|d| SurfaceForm::Sphere { radius: d.radius })
-}
-
-model_document! {
-    /// `{"type":"torus","major_radius":3,"minor_radius":1}`
-    pub struct TorusDoc in Surfaces {
-        /// R (default 3).
-        pub major_radius: f64 = 3.0,
-        /// r (default 1).
-        pub minor_radius: f64 = 1.0,
-    }
-    build(|d| Torus::new(d.major_radius, d.minor_radius))
-    exact(|d| SurfaceForm::Torus { major_radius: d.major_radius, minor_radius: d.minor_radius })
-}
-
-model_document! {
-    /// `{"type":"mobius","radius":1,"half_width":0.5}`
-    pub struct MobiusDoc in Surfaces {
-        /// Centre radius (default 1).
-        pub radius: f64 = 1.0,
-        /// Half-width (default 0.5).
-        pub half_width: f64 = 0.5,
-    }
-    build(|d| MobiusStrip::new(d.radius, d.half_width))
-    exact(|_d| SurfaceForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"klein_bottle","radius":3}`
-    pub struct KleinBottleDoc in Surfaces {
-        /// Radius R (default 3).
-        pub radius: f64 = 3.0,
-    }
-    build(|d| KleinBottle::new(d.radius))
-    exact(|_d| SurfaceForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"enneper","extent":2}`
-    pub struct EnneperDoc in Surfaces {
-        /// Half-extent of the square domain (default 2).
-        pub extent: f64 = 2.0,
-    }
-    build(|d| Enneper::new(d.extent))
-    exact(|_d| SurfaceForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"helicoid","radius":1,"pitch":1,"turns":2}`
-    pub struct HelicoidDoc in Surfaces {
-        /// Radius (default 1).
-        pub radius: f64 = 1.0,
-        /// Rise per turn (default 1).
-        pub pitch: f64 = 1.0,
-        /// Turns (default 2).
-        pub turns: f64 = 2.0,
-    }
-    build(|d| Helicoid::new(d.radius, d.pitch, d.turns))
-    exact(|_d| SurfaceForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"seashell","a":1,"b":2,"c":0.1,"turns":2}`
-    pub struct SeashellDoc in Surfaces {
-        /// Tube radius (default 1).
-        pub a: f64 = 1.0,
-        /// Height (default 2).
-        pub b: f64 = 2.0,
-        /// Inner radius (default 0.1).
-        pub c: f64 = 0.1,
-        /// Turns (default 2).
-        pub turns: f64 = 2.0,
-    }
-    build(|d| Seashell::new(d.a, d.b, d.c, d.turns))
-    exact(|_d| SurfaceForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"apple","scale":1}`
-    pub struct AppleDoc in Surfaces {
-        /// Uniform scale (default 1).
-        pub scale: f64 = 1.0,
-    }
-    build(|d| Apple::new(d.scale))
-    exact(|_d| SurfaceForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"heart_surface","scale":1}`
-    pub struct HeartSurfaceDoc in Surfaces {
-        /// Uniform scale (default 1).
-        pub scale: f64 = 1.0,
-    }
-    build(|d| HeartSurface::new(d.scale))
-    exact(|_d| SurfaceForm::Approximate)
-}
-
-model_document! {
-    /// `{"type":"dupin_cyclide","a":3,"c":1,"mu":2}`: the Dupin cyclide of a > c ≥ 0 and μ
-    /// (b² = a² − c²), exactly its rational biquadratic form on [0, 2π]²: the point at (u, v)
-    /// is (μ (c − a cos θ cos ψ) + b² cos θ, b sin θ (a − μ cos ψ), b sin ψ (c cos θ − μ))
-    /// / (a − c cos θ cos ψ) at the angles θ(u), ψ(v) of the nine-point NURBS circle (θ = u
-    /// at multiples of π/2); a ring cyclide for c < μ < a.
-    pub struct DupinCyclideDoc in Surfaces {
-        /// a (default 3).
-        pub a: f64 = 3.0,
-        /// c, 0 ≤ c < a (default 1).
-        pub c: f64 = 1.0,
-        /// μ (default 2).
-        pub mu: f64 = 2.0,
-    }
-    build(|d| dupin_cyclide(d.a, d.c, d.mu))
-    exact(|d| SurfaceForm::Spline(crate::views::NetView::of_nurbs(&dupin_cyclide(d.a, d.c, d.mu)?)))
+/// What a scene draws besides a surface when its style asks for control nets
+/// (`control_net`) or local pieces (`local_pieces`); scenes read it as a
+/// [`Decoration`](crate::Decoration).
+#[derive(Debug, Clone, Copy, Default)]
+pub enum SurfaceDecoration<'a> {
+    /// Nothing besides the surface.
+    #[default]
+    None,
+    /// A control net, rows along u.
+    ControlNet(&'a [Vec<Vec<f64>>]),
+    /// The local patches of a blending-spline surface.
+    LocalPatches(&'a BlendingSplineSurfaceDoc),
+    /// The polygon cage of a subdivision surface: its vertices and faces (vertex indices).
+    Cage {
+        /// The vertices, 3-D.
+        vertices: &'a [Vec<f64>],
+        /// The faces.
+        faces: &'a [Vec<u32>],
+    },
 }

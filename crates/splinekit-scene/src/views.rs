@@ -31,7 +31,31 @@ pub struct SplineView<'a> {
     pub periodic: bool,
 }
 
-impl SplineView<'_> {
+impl<'a> SplineView<'a> {
+    /// The view of a document's own fields, borrowed from it: the B-spline of `degree`
+    /// with `knots`, or the Bézier curve of the points without; rational with `weights`.
+    pub fn borrowed(
+        degree: usize,
+        control_points: &'a [Vec<f64>],
+        knots: Option<&'a [f64]>,
+        weights: Option<&'a [f64]>,
+        periodic: bool,
+    ) -> Self {
+        SplineView {
+            degree,
+            control_points: Cow::Borrowed(control_points),
+            knots: knots.map(Cow::Borrowed),
+            weights: weights.map(Cow::Borrowed),
+            periodic,
+        }
+    }
+
+    /// The view of a Bézier document's points (degree: their count less one), rational
+    /// with `weights`.
+    pub fn bezier(control_points: &'a [Vec<f64>], weights: Option<&'a [f64]>) -> Self {
+        Self::borrowed(control_points.len().saturating_sub(1), control_points, None, weights, false)
+    }
+
     /// The B-spline of a view with knots and without weights (checked as its document).
     pub fn bspline<const D: usize>(&self, knots: &[f64]) -> Result<BSplineCurve<D>> {
         crate::budget::check_degree("degree", self.degree)?;
@@ -75,6 +99,32 @@ pub struct NetView<'a> {
     pub weights: Option<Cow<'a, [Vec<f64>]>>,
     /// Whether the net wraps around in u and in v.
     pub periodic: (bool, bool),
+}
+
+impl<'a> NetView<'a> {
+    /// The view of a document's own fields, borrowed from it: the tensor-product B-spline
+    /// of `degrees` with `knots` (u, v), or the Bézier net without; rational with `weights`.
+    pub fn borrowed(
+        degrees: (usize, usize),
+        control_points: &'a [Vec<Vec<f64>>],
+        knots: Option<(&'a [f64], &'a [f64])>,
+        weights: Option<&'a [Vec<f64>]>,
+        periodic: (bool, bool),
+    ) -> Self {
+        NetView {
+            degrees,
+            control_points: Cow::Borrowed(control_points),
+            knots: knots.map(|(u, v)| (Cow::Borrowed(u), Cow::Borrowed(v))),
+            weights: weights.map(Cow::Borrowed),
+            periodic,
+        }
+    }
+
+    /// The view of a Bézier net (degrees: rows less one, points of the first row less one).
+    pub fn bezier(control_points: &'a [Vec<Vec<f64>>]) -> Self {
+        let (rows, cols) = (control_points.len(), control_points.first().map_or(0, Vec::len));
+        Self::borrowed((rows.saturating_sub(1), cols.saturating_sub(1)), control_points, None, None, (false, false))
+    }
 }
 
 impl NetView<'static> {

@@ -1,8 +1,8 @@
 //! What every kind declares besides its kernel object, checked for every kind of the
-//! registry: its exact form is its shape (the closed forms of `forms.rs` evaluated here, or
-//! the form's spline built as a general NURBS, against the kind's own kernel object), its
-//! spline view is its document's fields, and the kinds it offers as blending-spline
-//! models make blending splines that build and evaluate.
+//! registry: its exact form is its shape (the closed forms of `CurveForm` and `SurfaceForm`
+//! evaluated here, or the form's spline built as a general NURBS, against the kind's own
+//! kernel object), its spline view is its document's fields, and the kinds it offers as
+//! blending-spline models make blending splines that build and evaluate.
 
 use serde_json::json;
 use splinekit::Point;

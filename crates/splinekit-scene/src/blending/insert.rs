@@ -22,10 +22,10 @@
 
 use splinekit::surface::Direction;
 
-use super::curve::{BlendingSource, BlendingSplineDoc, LocalCurves};
-use super::surface::{BlendingSplineSurfaceDoc, LocalPatchDoc};
+use crate::curves::{BlendingSource, BlendingSplineDoc, LocalCurves};
 use crate::error::{DocumentError, Result};
 use crate::registry::DocumentKind;
+use crate::surfaces::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 use crate::with_dimension;
 
 /// `doc` with a local curve inserted at the new knot `t` (strictly inside a knot interval

@@ -4,12 +4,12 @@ use serde::{Deserialize, Serialize};
 use splinekit::blend::{BFunctionCurve, TwoCurveBlend};
 use splinekit::curve::Curve;
 
-use super::CurveDocument;
+use super::{CurveDecoration, CurveDocument, CurveForm, Curves};
 use crate::bfunctions::{BFunctionDoc, ErbsDoc, NoParams, PolynomialDoc};
 use crate::budget::ShapeCost;
-use crate::dimension::{Curves, same_type};
+use crate::dimension::same_type;
 use crate::error::{DocumentError, Result};
-use crate::registry::{Decoration, DocumentKind, approximated_kind_items};
+use crate::registry::{DocumentKind, approximated_kind_items};
 
 /// `{"type":"bfunction","bfunction":{…}}`: the B-function as a 1-D curve on [0, 1].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -36,8 +36,8 @@ impl DocumentKind for BFunctionShapeDoc {
     fn example() -> Self {
         BFunctionShapeDoc { bfunction: BFunctionDoc::Erbs(ErbsDoc::default()) }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::None
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -101,8 +101,8 @@ impl DocumentKind for BlendDoc {
             bfunction: Some(BFunctionDoc::Trigonometric(NoParams {})),
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::None
     }
     fn set_time(&mut self, time: f64) {
         self.first.set_time(time);

@@ -7,12 +7,13 @@ use splinekit::curve::{
     BSplineCurve, BezierCurve, CatmullRomCurve, Curve, HermiteCurve, NurbsCurve, RationalBezierCurve,
 };
 
+use super::{CurveDecoration, CurveForm, Curves};
 use crate::budget::{ShapeCost, check_degree, spline_cost};
 use crate::defaults::is_false;
-use crate::dimension::Curves;
 use crate::error::{DocumentError, Result};
 use crate::points::{check_finite_list, dimension_of, to_point, to_points};
-use crate::registry::{Decoration, DocumentKind, approximated_kind_items, spline_kind_items};
+use crate::registry::{DocumentKind, approximated_kind_items, spline_kind_items};
+use crate::views::SplineView;
 
 /// `{"type":"bezier","control_points":[[x,y],...]}`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -24,16 +25,10 @@ pub struct BezierDoc {
 
 impl DocumentKind for BezierDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
-        Some(crate::views::SplineView {
-            degree: self.control_points.len().saturating_sub(1),
-            control_points: std::borrow::Cow::Borrowed(&self.control_points),
-            knots: None,
-            weights: None,
-            periodic: false,
-        })
+    fn spline(&self) -> Option<SplineView<'_>> {
+        Some(SplineView::bezier(&self.control_points, None))
     }
-    spline_kind_items!(CurveForm, dimension_of);
+    spline_kind_items!(CurveForm, dimension_of, control_polygon);
     /// De Casteljau's triangle: n²/2 interpolations of D coordinates per point.
     fn cost(&self) -> ShapeCost {
         bezier_cost(&self.control_points, 0)
@@ -44,9 +39,6 @@ impl DocumentKind for BezierDoc {
     }
     fn example() -> Self {
         BezierDoc { control_points: vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![3.0, 2.0], vec![4.0, 0.0]] }
-    }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: false }
     }
 }
 
@@ -62,16 +54,10 @@ pub struct RationalBezierDoc {
 
 impl DocumentKind for RationalBezierDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
-        Some(crate::views::SplineView {
-            degree: self.control_points.len().saturating_sub(1),
-            control_points: std::borrow::Cow::Borrowed(&self.control_points),
-            knots: None,
-            weights: Some(std::borrow::Cow::Borrowed(&self.weights)),
-            periodic: false,
-        })
+    fn spline(&self) -> Option<SplineView<'_>> {
+        Some(SplineView::bezier(&self.control_points, Some(&self.weights)))
     }
-    spline_kind_items!(CurveForm, dimension_of);
+    spline_kind_items!(CurveForm, dimension_of, control_polygon);
     /// De Casteljau's triangle in homogeneous coordinates (one more than the points').
     fn cost(&self) -> ShapeCost {
         bezier_cost(&self.control_points, 1)
@@ -87,9 +73,6 @@ impl DocumentKind for RationalBezierDoc {
             control_points: vec![vec![1.0, 0.0], vec![1.0, 1.0], vec![0.0, 1.0]],
             weights: vec![1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0],
         }
-    }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: false }
     }
 }
 
@@ -117,16 +100,10 @@ impl BSplineDoc {
 
 impl DocumentKind for BSplineDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
-        Some(crate::views::SplineView {
-            degree: self.degree,
-            control_points: std::borrow::Cow::Borrowed(&self.control_points),
-            knots: Some(std::borrow::Cow::Borrowed(&self.knots)),
-            weights: None,
-            periodic: self.periodic,
-        })
+    fn spline(&self) -> Option<SplineView<'_>> {
+        Some(SplineView::borrowed(self.degree, &self.control_points, Some(&self.knots), None, self.periodic))
     }
-    spline_kind_items!(CurveForm, dimension_of);
+    spline_kind_items!(CurveForm, dimension_of, control_polygon);
     fn cost(&self) -> ShapeCost {
         spline_cost(self.degree, self.control_points.len(), coordinates(&self.control_points))
     }
@@ -150,9 +127,6 @@ impl DocumentKind for BSplineDoc {
             ]),
             periodic: false,
         }
-    }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: self.periodic }
     }
 }
 
@@ -182,16 +156,11 @@ impl NurbsDoc {
 
 impl DocumentKind for NurbsDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
-        Some(crate::views::SplineView {
-            degree: self.degree,
-            control_points: std::borrow::Cow::Borrowed(&self.control_points),
-            knots: Some(std::borrow::Cow::Borrowed(&self.knots)),
-            weights: Some(std::borrow::Cow::Borrowed(&self.weights)),
-            periodic: self.periodic,
-        })
+    fn spline(&self) -> Option<SplineView<'_>> {
+        let (knots, weights) = (Some(self.knots.as_slice()), Some(self.weights.as_slice()));
+        Some(SplineView::borrowed(self.degree, &self.control_points, knots, weights, self.periodic))
     }
-    spline_kind_items!(CurveForm, dimension_of);
+    spline_kind_items!(CurveForm, dimension_of, control_polygon);
     fn cost(&self) -> ShapeCost {
         spline_cost(self.degree, self.control_points.len(), coordinates(&self.control_points) + 1)
     }
@@ -218,9 +187,6 @@ impl DocumentKind for NurbsDoc {
             weights: vec![1.0, w, 1.0, w, 1.0, w, 1.0, w, 1.0],
             periodic: false,
         }
-    }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.control_points, field: "control_points", closed: self.periodic }
     }
 }
 
@@ -267,8 +233,8 @@ impl DocumentKind for HermiteDoc {
             params: Some(vec![0.0, 1.0, 3.0]),
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.points, field: "points", closed: false }
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::ControlPolygon { points: &self.points, field: "points", closed: false }
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -307,8 +273,8 @@ impl DocumentKind for CatmullRomDoc {
             closed: false,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlPolygon { points: &self.points, field: "points", closed: self.closed }
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::ControlPolygon { points: &self.points, field: "points", closed: self.closed }
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -325,11 +291,11 @@ pub struct LineDoc {
 
 impl DocumentKind for LineDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
+    fn spline(&self) -> Option<SplineView<'_>> {
         None
     }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::Line { from: &self.from, to: &self.to })
+    fn exact_form(&self) -> crate::Result<CurveForm<'_>> {
+        Ok(CurveForm::Line { from: &self.from, to: &self.to })
     }
     const BLENDING_MODEL: bool = false;
     fn dimension(&self) -> Result<usize> {
@@ -344,8 +310,8 @@ impl DocumentKind for LineDoc {
     fn example() -> Self {
         LineDoc { from: vec![0.0, 0.0, 0.0], to: vec![1.0, 2.0, 0.0] }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::None
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -380,4 +346,10 @@ fn check_bezier_degree(points: &[Vec<f64>]) -> Result<()> {
 fn piecewise_cubic_cost(field: &str, points: &[Vec<f64>]) -> ShapeCost {
     let (n, d) = (points.len() as f64, coordinates(points) as f64);
     ShapeCost::new(field, 3.0 * n * d * crate::budget::F64, 10.0 * n * d, 20.0 * d + n.max(2.0).log2())
+}
+
+/// What a scene draws besides a spline kind: its control polygon (`control_points`),
+/// closed where the spline wraps around.
+fn control_polygon<'a>(points: &'a [Vec<f64>], spline: &SplineView<'_>) -> CurveDecoration<'a> {
+    CurveDecoration::ControlPolygon { points, field: "control_points", closed: spline.periodic }
 }

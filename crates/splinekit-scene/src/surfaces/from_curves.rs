@@ -5,13 +5,13 @@ use splinekit::curve::Curve;
 use splinekit::surface::Surface;
 use splinekit::surface::derived::{CoonsBlend, CoonsPatch, Extrusion, RevolvedSurface, RuledSurface, SweepSurface};
 
+use super::{SurfaceDecoration, SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
 use crate::curves::{BezierDoc, CircleDoc, CurveDocument, LineDoc, TrefoilDoc};
 use crate::defaults::{origin, tau, z_axis};
-use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::points::to_point;
-use crate::registry::{Decoration, DocumentKind, KindName, ModelFamily, approximated_kind_items};
+use crate::registry::{DocumentKind, KindName, ModelFamily, approximated_kind_items, self_form_kind_items};
 
 /// `{"type":"revolution","curve":{…},"axis_point":[0,0,0],"axis":[0,0,1],"angle":2π}`:
 /// the curve turned about the axis; u is the angle, v the curve's parameter.
@@ -33,13 +33,7 @@ pub struct RevolutionDoc {
 
 impl DocumentKind for RevolutionDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Revolution(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(NetView, SurfaceForm::Revolution);
     fn dimension(&self) -> Result<usize> {
         Ok(3)
     }
@@ -69,8 +63,8 @@ impl DocumentKind for RevolutionDoc {
             angle: tau(),
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::None
     }
     fn set_time(&mut self, time: f64) {
         self.curve.set_time(time);
@@ -109,8 +103,8 @@ impl DocumentKind for RuledDoc {
         let line = LineDoc { from: vec![0.0, 0.0, 1.0], to: vec![2.0, 0.0, 1.0] };
         RuledDoc { first: Box::new(CurveDocument::Bezier(arc)), second: Box::new(CurveDocument::Line(line)) }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::None
     }
     fn set_time(&mut self, time: f64) {
         self.first.set_time(time);
@@ -130,13 +124,7 @@ pub struct ExtrusionDoc {
 
 impl DocumentKind for ExtrusionDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Extrusion(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(NetView, SurfaceForm::Extrusion);
     fn dimension(&self) -> Result<usize> {
         let dim = self.curve.dimension().map_err(|e| e.within("curve"))?;
         if self.direction.len() != dim {
@@ -160,8 +148,8 @@ impl DocumentKind for ExtrusionDoc {
     fn example() -> Self {
         ExtrusionDoc { curve: Box::new(CurveDocument::Circle(CircleDoc::default())), direction: vec![0.0, 0.0, 1.0] }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::None
     }
     fn set_time(&mut self, time: f64) {
         self.curve.set_time(time);
@@ -247,8 +235,8 @@ impl DocumentKind for CoonsDoc {
             blend: CoonsBlendDoc::Cubic,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::None
     }
     fn set_time(&mut self, time: f64) {
         for c in [&mut self.bottom, &mut self.top, &mut self.left, &mut self.right] {
@@ -300,8 +288,8 @@ impl DocumentKind for SweepDoc {
             path: Box::new(CurveDocument::Trefoil(TrefoilDoc::default())),
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::None
     }
     fn set_time(&mut self, time: f64) {
         self.profile.set_time(time);

@@ -5,12 +5,13 @@ use serde::{Deserialize, Serialize};
 use splinekit::Point;
 use splinekit::surface::{BSplineSurface, BezierSurface, NurbsSurface, Surface};
 
+use super::{SurfaceDecoration, SurfaceForm, Surfaces};
 use crate::budget::{F64, ShapeCost, check_degree};
 use crate::defaults::is_false;
-use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::points::{check_finite_list, dimension_of, to_points};
-use crate::registry::{Decoration, DocumentKind, spline_kind_items};
+use crate::registry::{DocumentKind, spline_kind_items};
+use crate::views::NetView;
 
 /// `{"type":"bezier_surface","control_points":[[...row...],...]}`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -22,17 +23,10 @@ pub struct BezierSurfaceDoc {
 
 impl DocumentKind for BezierSurfaceDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        let (rows, cols) = (self.control_points.len(), self.control_points.first().map_or(0, Vec::len));
-        Some(crate::views::NetView {
-            degrees: (rows.saturating_sub(1), cols.saturating_sub(1)),
-            control_points: std::borrow::Cow::Borrowed(&self.control_points),
-            knots: None,
-            weights: None,
-            periodic: (false, false),
-        })
+    fn spline(&self) -> Option<NetView<'_>> {
+        Some(NetView::bezier(&self.control_points))
     }
-    spline_kind_items!(SurfaceForm, net_dimension);
+    spline_kind_items!(SurfaceForm, net_dimension, control_net);
     /// De Casteljau along every row, then once across: n_u·n_v² + n_u² interpolations.
     fn cost(&self) -> ShapeCost {
         let (nu, nv, d) = net_size(&self.control_points);
@@ -53,9 +47,6 @@ impl DocumentKind for BezierSurfaceDoc {
     /// A biquadratic bump over [0, 2]².
     fn example() -> Self {
         BezierSurfaceDoc { control_points: bump() }
-    }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlNet(&self.control_points)
     }
 }
 
@@ -83,24 +74,17 @@ pub struct BSplineSurfaceDoc {
 
 impl DocumentKind for BSplineSurfaceDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        Some(crate::views::NetView {
-            degrees: (self.degree_u, self.degree_v),
-            control_points: std::borrow::Cow::Borrowed(&self.control_points),
-            knots: Some((std::borrow::Cow::Borrowed(&self.knots_u), std::borrow::Cow::Borrowed(&self.knots_v))),
-            weights: None,
-            periodic: (self.periodic_u, self.periodic_v),
-        })
+    fn spline(&self) -> Option<NetView<'_>> {
+        let knots = Some((self.knots_u.as_slice(), self.knots_v.as_slice()));
+        let periodic = (self.periodic_u, self.periodic_v);
+        Some(NetView::borrowed((self.degree_u, self.degree_v), &self.control_points, knots, None, periodic))
     }
-    spline_kind_items!(SurfaceForm, net_dimension);
+    spline_kind_items!(SurfaceForm, net_dimension, control_net);
     fn cost(&self) -> ShapeCost {
         tensor_spline_cost(self.degree_u, self.degree_v, &self.control_points, 0.0)
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
-        check_degree("degree_u", self.degree_u)?;
-        check_degree("degree_v", self.degree_v)?;
-        check_finite_list("knots_u", &self.knots_u)?;
-        check_finite_list("knots_v", &self.knots_v)?;
+        check_knotted((self.degree_u, self.degree_v), &self.knots_u, &self.knots_v)?;
         Ok(Box::new(BSplineSurface::new(
             (self.degree_u, self.degree_v),
             self.knots_u.clone(),
@@ -120,9 +104,6 @@ impl DocumentKind for BSplineSurfaceDoc {
             periodic_u: false,
             periodic_v: false,
         }
-    }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlNet(&self.control_points)
     }
 }
 
@@ -152,24 +133,23 @@ pub struct NurbsSurfaceDoc {
 
 impl DocumentKind for NurbsSurfaceDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        Some(crate::views::NetView {
-            degrees: (self.degree_u, self.degree_v),
-            control_points: std::borrow::Cow::Borrowed(&self.control_points),
-            knots: Some((std::borrow::Cow::Borrowed(&self.knots_u), std::borrow::Cow::Borrowed(&self.knots_v))),
-            weights: Some(std::borrow::Cow::Borrowed(&self.weights)),
-            periodic: (self.periodic_u, self.periodic_v),
-        })
+    fn spline(&self) -> Option<NetView<'_>> {
+        let knots = Some((self.knots_u.as_slice(), self.knots_v.as_slice()));
+        let periodic = (self.periodic_u, self.periodic_v);
+        Some(NetView::borrowed(
+            (self.degree_u, self.degree_v),
+            &self.control_points,
+            knots,
+            Some(&self.weights),
+            periodic,
+        ))
     }
-    spline_kind_items!(SurfaceForm, net_dimension);
+    spline_kind_items!(SurfaceForm, net_dimension, control_net);
     fn cost(&self) -> ShapeCost {
         tensor_spline_cost(self.degree_u, self.degree_v, &self.control_points, 1.0)
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
-        check_degree("degree_u", self.degree_u)?;
-        check_degree("degree_v", self.degree_v)?;
-        check_finite_list("knots_u", &self.knots_u)?;
-        check_finite_list("knots_v", &self.knots_v)?;
+        check_knotted((self.degree_u, self.degree_v), &self.knots_u, &self.knots_v)?;
         for (i, row) in self.weights.iter().enumerate() {
             check_finite_list(&format!("weights[{i}]"), row)?;
         }
@@ -198,9 +178,6 @@ impl DocumentKind for NurbsSurfaceDoc {
             periodic_v: false,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::ControlNet(&self.control_points)
-    }
 }
 
 /// A 3 × 3 net over [0, 2]² with its middle point raised.
@@ -224,6 +201,20 @@ fn net_dimension(field: &str, net: &[Vec<Vec<f64>>]) -> Result<usize> {
         }
     }
     Ok(d)
+}
+
+/// Refuses a tensor-product spline's degrees above the budget's and knots that are not
+/// finite, naming the fields (`degree_u`, `degree_v`, `knots_u`, `knots_v`, in that order).
+fn check_knotted(degrees: (usize, usize), knots_u: &[f64], knots_v: &[f64]) -> Result<()> {
+    check_degree("degree_u", degrees.0)?;
+    check_degree("degree_v", degrees.1)?;
+    check_finite_list("knots_u", knots_u)?;
+    check_finite_list("knots_v", knots_v)
+}
+
+/// What a scene draws besides a net kind: its control net (`control_points`).
+fn control_net<'a>(net: &'a [Vec<Vec<f64>>], _spline: &NetView<'_>) -> SurfaceDecoration<'a> {
+    SurfaceDecoration::ControlNet(net)
 }
 
 fn net_points<const D: usize>(net: &[Vec<Vec<f64>>]) -> Vec<Vec<Point<D>>> {

@@ -4,12 +4,11 @@
 use serde::{Deserialize, Serialize};
 use splinekit::surface::{PlacedSurface, Surface};
 
-use super::SurfaceDocument;
+use super::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
-use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
 use crate::points::to_point;
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::{DocumentKind, self_form_kind_items};
 
 /// `{"type":"placed","surface":{…},"origin":[0,0,0],"axis":[0,0,1],"ref_direction":[1,0,0]}`:
 /// P(u, v) = origin + S₁(u, v) x + S₂(u, v) y + S₃(u, v) z, where z = axis/|axis|, x is
@@ -48,13 +47,7 @@ fn three(field: &str, v: &[f64]) -> Result<[f64; 3]> {
 
 impl DocumentKind for PlacedDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Placed(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(NetView, SurfaceForm::Placed);
     fn dimension(&self) -> Result<usize> {
         match self.surface.dimension().map_err(|e| e.within("surface"))? {
             3 => Ok(3),
@@ -80,8 +73,8 @@ impl DocumentKind for PlacedDoc {
             ref_direction: vec![1.0, 0.0, 0.0],
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::None
     }
     fn set_time(&mut self, time: f64) {
         self.surface.set_time(time);

@@ -11,12 +11,13 @@ use splinekit::subdivision::surface::{
 };
 use splinekit::surface::Surface;
 
+use super::{SurfaceDecoration, SurfaceForm, Surfaces};
 use crate::budget::{F64, ShapeCost};
 use crate::defaults::is_false;
-use crate::dimension::{Surfaces, same_type};
+use crate::dimension::same_type;
 use crate::error::{DocumentError, Result};
 use crate::points::dimension_of;
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::DocumentKind;
 
 /// The subdivision scheme of a document.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -167,8 +168,8 @@ impl DocumentKind for SubdivisionSurfaceDoc {
     fn example() -> Self {
         Self::cube()
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::Cage { vertices: &self.vertices, faces: &self.faces }
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::Cage { vertices: &self.vertices, faces: &self.faces }
     }
     fn set_time(&mut self, _time: f64) {}
     /// A cage holds vertices and faces, not a control net.
@@ -177,8 +178,8 @@ impl DocumentKind for SubdivisionSurfaceDoc {
     }
     /// The limit is piecewise bicubic only on regular faces; exporters write its patches
     /// (STEP: `export_document`) or approximate it.
-    fn exact_form(&self) -> Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Approximate)
+    fn exact_form(&self) -> Result<SurfaceForm<'_>> {
+        Ok(SurfaceForm::Approximate)
     }
     const BLENDING_MODEL: bool = false;
 }

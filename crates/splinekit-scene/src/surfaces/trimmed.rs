@@ -4,12 +4,11 @@ use serde::{Deserialize, Serialize};
 use splinekit::curve::Curve;
 use splinekit::surface::{Surface, TrimmedSurface};
 
-use super::SurfaceDocument;
+use super::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
 use crate::curves::{CatmullRomDoc, CurveDocument};
-use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::{DocumentKind, self_form_kind_items};
 
 /// `{"type":"trimmed","surface":{…},"outer":{…},"holes":[{…}]}`: the surface restricted to
 /// the inside of `outer` (default: the whole domain) and outside every hole; loops are
@@ -40,13 +39,7 @@ fn trimming_loop(c: &CurveDocument, field: &str) -> Result<Box<dyn Curve<2>>> {
 
 impl DocumentKind for TrimmedDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::Trimmed(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(NetView, SurfaceForm::Trimmed);
     fn dimension(&self) -> Result<usize> {
         self.surface.dimension().map_err(|e| e.within("surface"))
     }
@@ -92,8 +85,8 @@ impl DocumentKind for TrimmedDoc {
             holes: vec![CurveDocument::CatmullRom(hole)],
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::None
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::None
     }
     fn set_time(&mut self, time: f64) {
         self.surface.set_time(time);

@@ -8,16 +8,14 @@ use serde_json::Value;
 use splinekit::blend::{BlendKnots, BlendingCurveOptions, BlendingSplineCurve, KnotSpacing, LocalKind};
 use splinekit::curve::Curve;
 
-use super::DEFAULT_BFUNCTION;
-use super::animation::{TrackDoc, tracks};
-use super::local_points::{self, LocalControlPoints};
-use crate::bfunctions::BFunctionDoc;
+use super::{CurveDecoration, CurveDocument, CurveForm, Curves, HeartDoc};
+use crate::bfunctions::{BFunctionDoc, DEFAULT_BFUNCTION};
+use crate::blending::local_points::{self, LocalControlPoints};
+use crate::blending::{TrackDoc, tracks};
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
-use crate::curves::{CurveDocument, HeartDoc};
-use crate::dimension::Curves;
 use crate::error::{DocumentError, Result};
 use crate::json::{kind, nested};
-use crate::registry::{Decoration, DocumentKind};
+use crate::registry::{DocumentKind, self_form_kind_items};
 use crate::transforms::LocalTransforms;
 
 /// Where a model-based blending spline puts its knots.
@@ -116,8 +114,8 @@ pub struct BlendingSplineDoc {
     #[serde(default, with = "crate::transforms::by_index", skip_serializing_if = "Vec::is_empty")]
     pub transforms: LocalTransforms,
     /// Edited control points of Bézier locals, by index, in each local's rest frame
-    /// (overriding the Hermite-fitted ones; see [`super::local_points`]).
-    #[serde(default, with = "super::local_points::by_index", skip_serializing_if = "Vec::is_empty")]
+    /// (overriding the Hermite-fitted ones; see [`crate::blending::local_points`]).
+    #[serde(default, with = "crate::blending::local_points::by_index", skip_serializing_if = "Vec::is_empty")]
     pub local_control_points: LocalControlPoints,
     /// Animation tracks.
     #[serde(default, deserialize_with = "crate::json::list", skip_serializing_if = "Vec::is_empty")]
@@ -311,13 +309,7 @@ fn local_curves_kind(with_model: bool, got: &str) -> DocumentError {
 
 impl DocumentKind for BlendingSplineDoc {
     type Family = Curves;
-    fn spline(&self) -> Option<crate::views::SplineView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::CurveForm<'_>> {
-        Ok(crate::forms::CurveForm::BlendingSpline(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(SplineView, CurveForm::BlendingSpline);
 
     /// Checks `local_curves` against `model`/`knots` on the JSON first (the message names
     /// its JSON kind), then the fields, then [`BlendingSplineDoc::source`].
@@ -422,8 +414,8 @@ impl DocumentKind for BlendingSplineDoc {
             time: None,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::LocalCurves(self)
+    fn decoration(&self) -> CurveDecoration<'_> {
+        CurveDecoration::LocalCurves(self)
     }
     fn set_time(&mut self, time: f64) {
         self.time = Some(time);

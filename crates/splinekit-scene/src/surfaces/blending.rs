@@ -9,15 +9,13 @@ use splinekit::blend::{BlendKnots, BlendingSplineSurface, BlendingSurfaceOptions
 use splinekit::frame::Affine;
 use splinekit::surface::Surface;
 
-use super::DEFAULT_BFUNCTION;
-use super::animation::{TrackDoc, tracks};
-use super::local_points::{self, PatchControlPoints};
-use crate::bfunctions::BFunctionDoc;
+use super::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces, TorusDoc};
+use crate::bfunctions::{BFunctionDoc, DEFAULT_BFUNCTION};
+use crate::blending::local_points::{self, PatchControlPoints};
+use crate::blending::{TrackDoc, tracks};
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
-use crate::dimension::Surfaces;
 use crate::error::{DocumentError, Result};
-use crate::registry::{Decoration, DocumentKind};
-use crate::surfaces::{SurfaceDocument, TorusDoc};
+use crate::registry::{DocumentKind, self_form_kind_items};
 use crate::transforms::PatchTransforms;
 
 /// The kind of local patches.
@@ -72,8 +70,8 @@ pub struct BlendingSplineSurfaceDoc {
     #[serde(default, with = "crate::transforms::by_pair", skip_serializing_if = "Vec::is_empty")]
     pub transforms: PatchTransforms,
     /// Edited control nets of Bézier patches, by `"k,l"`, in each patch's rest frame
-    /// (overriding the Hermite-fitted ones; see [`super::local_points`]).
-    #[serde(default, with = "super::local_points::by_pair", skip_serializing_if = "Vec::is_empty")]
+    /// (overriding the Hermite-fitted ones; see [`crate::blending::local_points`]).
+    #[serde(default, with = "crate::blending::local_points::by_pair", skip_serializing_if = "Vec::is_empty")]
     pub local_control_points: PatchControlPoints,
     /// Animation tracks (`local` is [k, l]).
     #[serde(default, deserialize_with = "crate::json::list", skip_serializing_if = "Vec::is_empty")]
@@ -184,13 +182,7 @@ impl BlendingSplineSurfaceDoc {
 
 impl DocumentKind for BlendingSplineSurfaceDoc {
     type Family = Surfaces;
-    fn spline(&self) -> Option<crate::views::NetView<'_>> {
-        None
-    }
-    fn exact_form(&self) -> crate::Result<crate::forms::SurfaceForm<'_>> {
-        Ok(crate::forms::SurfaceForm::BlendingSpline(self))
-    }
-    const BLENDING_MODEL: bool = false;
+    self_form_kind_items!(NetView, SurfaceForm::BlendingSpline);
     fn dimension(&self) -> Result<usize> {
         self.model.dimension().map_err(|e| e.within("model"))
     }
@@ -237,8 +229,8 @@ impl DocumentKind for BlendingSplineSurfaceDoc {
             time: None,
         }
     }
-    fn decoration(&self) -> Decoration<'_> {
-        Decoration::LocalPatches(self)
+    fn decoration(&self) -> SurfaceDecoration<'_> {
+        SurfaceDecoration::LocalPatches(self)
     }
     fn set_time(&mut self, time: f64) {
         self.time = Some(time);

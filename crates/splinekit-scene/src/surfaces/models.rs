@@ -1,0 +1,171 @@
+//! The model surfaces' documents: closed-form surfaces of the kernel (plane, sphere, torus,
+//! …), each a struct of fields with defaults declared by `model_document!`.
+
+use splinekit::surface::model::{
+    Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
+    dupin_cyclide,
+};
+
+use super::{SurfaceForm, Surfaces};
+use crate::points::to_point;
+use crate::registry::model_document;
+
+model_document! {
+    /// `{"type":"plane","origin":[0,0,0],"u_axis":[1,0,0],"v_axis":[0,1,0]}`
+    pub struct PlaneDoc in Surfaces {
+        /// S(0, 0) (default the origin).
+        pub origin: Vec<f64> = vec![0.0, 0.0, 0.0],
+        /// ∂S/∂u (default x).
+        pub u_axis: Vec<f64> = vec![1.0, 0.0, 0.0],
+        /// ∂S/∂v (default y).
+        pub v_axis: Vec<f64> = vec![0.0, 1.0, 0.0],
+    }
+    build(|d| Plane::new(to_point("origin", &d.origin)?, to_point("u_axis", &d.u_axis)?, to_point("v_axis", &d.v_axis)?))
+    exact(|d| SurfaceForm::Plane { origin: &d.origin, u_axis: &d.u_axis, v_axis: &d.v_axis })
+}
+
+model_document! {
+    /// `{"type":"cylinder","radius":1,"height":1}`
+    pub struct CylinderDoc in Surfaces {
+        /// Radius (default 1).
+        pub radius: f64 = 1.0,
+        /// Height (default 1).
+        pub height: f64 = 1.0,
+    }
+    build(|d| Cylinder::new(d.radius, d.height))
+    exact(|d| SurfaceForm::Cylinder { radius: d.radius, height: d.height })
+}
+
+model_document! {
+    /// `{"type":"cone","radius":1,"height":2}`
+    pub struct ConeDoc in Surfaces {
+        /// Base radius (default 1).
+        pub radius: f64 = 1.0,
+        /// Height (default 2).
+        pub height: f64 = 2.0,
+    }
+    build(|d| Cone::new(d.radius, d.height))
+    exact(|d| SurfaceForm::Cone { radius: d.radius, height: d.height })
+}
+
+model_document! {
+    /// `{"type":"sphere","radius":1}`
+    pub struct SphereDoc in Surfaces {
+        /// Radius (default 1).
+        pub radius: f64 = 1.0,
+    }
+    build(|d| Sphere::new(d.radius))
+    exact(|d| SurfaceForm::Sphere { radius: d.radius })
+}
+
+model_document! {
+    /// `{"type":"torus","major_radius":3,"minor_radius":1}`
+    pub struct TorusDoc in Surfaces {
+        /// R (default 3).
+        pub major_radius: f64 = 3.0,
+        /// r (default 1).
+        pub minor_radius: f64 = 1.0,
+    }
+    build(|d| Torus::new(d.major_radius, d.minor_radius))
+    exact(|d| SurfaceForm::Torus { major_radius: d.major_radius, minor_radius: d.minor_radius })
+}
+
+model_document! {
+    /// `{"type":"mobius","radius":1,"half_width":0.5}`
+    pub struct MobiusDoc in Surfaces {
+        /// Centre radius (default 1).
+        pub radius: f64 = 1.0,
+        /// Half-width (default 0.5).
+        pub half_width: f64 = 0.5,
+    }
+    build(|d| MobiusStrip::new(d.radius, d.half_width))
+    exact(|_d| SurfaceForm::Approximate)
+}
+
+model_document! {
+    /// `{"type":"klein_bottle","radius":3}`
+    pub struct KleinBottleDoc in Surfaces {
+        /// Radius R (default 3).
+        pub radius: f64 = 3.0,
+    }
+    build(|d| KleinBottle::new(d.radius))
+    exact(|_d| SurfaceForm::Approximate)
+}
+
+model_document! {
+    /// `{"type":"enneper","extent":2}`
+    pub struct EnneperDoc in Surfaces {
+        /// Half-extent of the square domain (default 2).
+        pub extent: f64 = 2.0,
+    }
+    build(|d| Enneper::new(d.extent))
+    exact(|_d| SurfaceForm::Approximate)
+}
+
+model_document! {
+    /// `{"type":"helicoid","radius":1,"pitch":1,"turns":2}`
+    pub struct HelicoidDoc in Surfaces {
+        /// Radius (default 1).
+        pub radius: f64 = 1.0,
+        /// Rise per turn (default 1).
+        pub pitch: f64 = 1.0,
+        /// Turns (default 2).
+        pub turns: f64 = 2.0,
+    }
+    build(|d| Helicoid::new(d.radius, d.pitch, d.turns))
+    exact(|_d| SurfaceForm::Approximate)
+}
+
+model_document! {
+    /// `{"type":"seashell","a":1,"b":2,"c":0.1,"turns":2}`
+    pub struct SeashellDoc in Surfaces {
+        /// Tube radius (default 1).
+        pub a: f64 = 1.0,
+        /// Height (default 2).
+        pub b: f64 = 2.0,
+        /// Inner radius (default 0.1).
+        pub c: f64 = 0.1,
+        /// Turns (default 2).
+        pub turns: f64 = 2.0,
+    }
+    build(|d| Seashell::new(d.a, d.b, d.c, d.turns))
+    exact(|_d| SurfaceForm::Approximate)
+}
+
+model_document! {
+    /// `{"type":"apple","scale":1}`
+    pub struct AppleDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| Apple::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}
+
+model_document! {
+    /// `{"type":"heart_surface","scale":1}`
+    pub struct HeartSurfaceDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| HeartSurface::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}
+
+model_document! {
+    /// `{"type":"dupin_cyclide","a":3,"c":1,"mu":2}`: the Dupin cyclide of a > c ≥ 0 and μ
+    /// (b² = a² − c²), exactly its rational biquadratic form on [0, 2π]²: the point at (u, v)
+    /// is (μ (c − a cos θ cos ψ) + b² cos θ, b sin θ (a − μ cos ψ), b sin ψ (c cos θ − μ))
+    /// / (a − c cos θ cos ψ) at the angles θ(u), ψ(v) of the nine-point NURBS circle (θ = u
+    /// at multiples of π/2); a ring cyclide for c < μ < a.
+    pub struct DupinCyclideDoc in Surfaces {
+        /// a (default 3).
+        pub a: f64 = 3.0,
+        /// c, 0 ≤ c < a (default 1).
+        pub c: f64 = 1.0,
+        /// μ (default 2).
+        pub mu: f64 = 2.0,
+    }
+    build(|d| dupin_cyclide(d.a, d.c, d.mu))
+    exact(|d| SurfaceForm::Spline(crate::views::NetView::of_nurbs(&dupin_cyclide(d.a, d.c, d.mu)?)))
+}
