@@ -511,14 +511,10 @@ impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
     ///
     /// [`BlendingSplineCurve`]: crate::blend::BlendingSplineCurve
     fn breakpoints_u(&self) -> Vec<f64> {
-        let mut b = self.knots_u.values().to_vec();
-        b.dedup();
-        b
+        self.knots_u.breakpoints()
     }
     fn breakpoints_v(&self) -> Vec<f64> {
-        let mut b = self.knots_v.values().to_vec();
-        b.dedup();
-        b
+        self.knots_v.breakpoints()
     }
 
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
