@@ -494,18 +494,7 @@ pub(super) fn hermite_patch<const D: usize>(
 }
 
 impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
-    fn domain_u(&self) -> Interval {
-        self.knots_u.domain()
-    }
-    fn domain_v(&self) -> Interval {
-        self.knots_v.domain()
-    }
-    fn is_closed_u(&self) -> bool {
-        self.knots_u.is_closed()
-    }
-    fn is_closed_v(&self) -> bool {
-        self.knots_v.is_closed()
-    }
+    crate::surface::axes::axes_surface_domains!(knots_u, knots_v);
     /// The knots: where the active patches change (as [`BlendingSplineCurve`]'s
     /// breakpoints).
     ///
