@@ -34,6 +34,7 @@ use crate::query::curve_cover::{CurveCover, SearchPiece};
 use crate::query::curve_intersection::{IntersectionKind, MIN_OVERLAP, TANGENT_RESOLUTION, TANGENT_SINE};
 use crate::query::newton::{self, Settle, Step, cap, settled_all};
 use crate::query::normal_cone::{normal_cone, transversal};
+use crate::query::pair_count::PairCount;
 use crate::query::project_curve::MIN_WIDTH;
 use crate::query::surface_cover::{SearchPatch, SurfaceCover};
 use crate::query::tangent_cone::TangentCone;
@@ -142,18 +143,12 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
         let tiny = self.tolerance.max(TANGENT_RESOLUTION * self.size);
         let (wt, wu, wv) =
             (MIN_WIDTH * cc.domain.length(), MIN_WIDTH * sc.domain_u.length(), MIN_WIDTH * sc.domain_v.length());
-        let mut examined = 0usize;
+        let mut count = PairCount::new(self.max_pairs);
         while let Some((pc, ps)) = pairs.pop() {
-            examined += 1;
-            if examined > self.max_pairs {
-                let limit = self.max_pairs;
-                return Err(Error::numerical(
-                    "curve-surface intersection",
-                    format!(
-                        "more than {limit} pairs of pieces (does the curve run inside the surface?); try a larger tolerance"
-                    ),
-                ));
-            }
+            count.next(
+                "curve-surface intersection",
+                "pairs of pieces (does the curve run inside the surface?); try a larger tolerance",
+            )?;
             let (x, y) = (pc.piece(), ps.patch());
             if !x.bounds.overlaps(&y.bounds, self.tolerance) {
                 continue;
