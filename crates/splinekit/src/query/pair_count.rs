@@ -27,3 +27,19 @@ impl PairCount {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn allows_the_limit_and_fails_one_past_it_with_the_callers_words() {
+        let mut count = PairCount::new(2);
+        assert!(count.next("intersection", "pairs of pieces").is_ok());
+        assert!(count.next("intersection", "pairs of pieces").is_ok());
+        assert_eq!(
+            count.next("intersection", "pairs of pieces"),
+            Err(Error::numerical("intersection", "more than 2 pairs of pieces"))
+        );
+    }
+}
