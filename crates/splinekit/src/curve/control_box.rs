@@ -7,11 +7,8 @@
 /// margin); `$kind` names the curve in the method's documentation ("a Bézier curve").
 macro_rules! control_point_box {
     ($kind:literal) => {
-        #[doc = concat!(
-                            "The box of the control points: it holds the curve, since ",
-                            $kind,
-                            " lies in the convex hull of its control points; not tight in general."
-                        )]
+        #[doc = concat!("The box of the control points: it holds the curve, since ", $kind, " lies in the")]
+        #[doc = "convex hull of its control points; not tight in general."]
         fn enclosing_box(&self) -> Option<$crate::query::Aabb<D>> {
             Some($crate::query::Aabb::around(self.control_points(), 0.0))
         }
