@@ -220,13 +220,9 @@ impl<'c, const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized> Search<'c, 
                 continue;
             }
             if dx >= dy {
-                for h in pa.split(cover_a, self.a) {
-                    pairs.push((h, pb.clone()));
-                }
+                pairs.extend(pa.split(cover_a, self.a).into_iter().map(|h| (h, pb.clone())));
             } else {
-                for h in pb.split(cover_b, self.b) {
-                    pairs.push((pa.clone(), h));
-                }
+                pairs.extend(pb.split(cover_b, self.b).into_iter().map(|h| (pa.clone(), h)));
             }
         }
         Ok(())

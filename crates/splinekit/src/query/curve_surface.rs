@@ -173,13 +173,9 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
                 continue;
             }
             if (dx >= dy || y.u().length() <= wu || y.v().length() <= wv) && x.interval().length() > wt {
-                for h in pc.split(cc, self.curve) {
-                    pairs.push((h, ps.clone()));
-                }
+                pairs.extend(pc.split(cc, self.curve).into_iter().map(|h| (h, ps.clone())));
             } else {
-                for q in ps.split_around_points(sc, self.surface) {
-                    pairs.push((pc.clone(), q));
-                }
+                pairs.extend(ps.split_around_points(sc, self.surface).into_iter().map(|q| (pc.clone(), q)));
             }
         }
         Ok(())

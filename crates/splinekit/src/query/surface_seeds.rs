@@ -218,13 +218,9 @@ where
             split_a
         };
         if first {
-            for q in pa.split(ca, m.a) {
-                stack.push((node(q), nb.clone()));
-            }
+            stack.extend(pa.split(ca, m.a).into_iter().map(|q| (node(q), nb.clone())));
         } else {
-            for q in pb.split(cb, m.b) {
-                stack.push((na.clone(), node(q)));
-            }
+            stack.extend(pb.split(cb, m.b).into_iter().map(|q| (na.clone(), node(q))));
         }
     }
     Ok(seeds)
