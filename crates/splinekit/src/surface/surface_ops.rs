@@ -77,13 +77,16 @@ struct NetSpline<T> {
     periodic: (bool, bool),
 }
 
+/// A surface's degrees, knots and periodic flags, each as (u, v).
+type NetAxes<'a> = ((usize, usize), (&'a [f64], &'a [f64]), (bool, bool));
+
 /// Applies `op` to the curve of every column (`Direction::U`) or row (`Direction::V`) of
 /// `net`, given the surface's degrees, knots and periodic flags. The lines share their
 /// knots, so they end with the same new degree, knots and closedness (read from the last
 /// line); the other direction is unchanged.
 fn map_net_lines<C: LineCurve>(
     direction: Direction,
-    (degrees, (ku, kv), periodic): ((usize, usize), (&[f64], &[f64]), (bool, bool)),
+    (degrees, (ku, kv), periodic): NetAxes<'_>,
     net: Vec<Vec<C::Coefficient>>,
     op: impl Fn(C) -> Result<C>,
 ) -> Result<NetSpline<C::Coefficient>>
