@@ -77,6 +77,12 @@ pub fn check_finite<'a>(field: &str, values: impl IntoIterator<Item = &'a f64>) 
     Ok(())
 }
 
+/// Checks that the field `degree` is at least 1: the fits, the interpolation and
+/// Lane–Riesenfeld subdivision have no meaning for degree 0.
+pub(crate) fn check_degree(degree: usize) -> Result<()> {
+    if degree == 0 { Err(Error::invalid("degree", "must be at least 1")) } else { Ok(()) }
+}
+
 /// Checks that every coordinate of every point is finite.
 pub fn check_points_finite<const D: usize>(field: &str, points: &[crate::Point<D>]) -> Result<()> {
     for (i, p) in points.iter().enumerate() {

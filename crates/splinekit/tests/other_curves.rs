@@ -34,14 +34,7 @@ fn check_closed_seam<const D: usize>(c: &dyn Curve<D>, name: &str, orders: usize
     let mut b = vec![Point::<D>::zeros(); orders + 1];
     c.eval_side(d.start, Side::Right, &mut a);
     c.eval_side(d.end, Side::Left, &mut b);
-    for k in 0..=orders {
-        assert!(
-            (a[k] - b[k]).norm() < 1e-9 * a[k].norm().max(1.0),
-            "{name}: derivative {k} at the seam {} vs {}",
-            a[k],
-            b[k]
-        );
-    }
+    assert_orders_close(&b, &a, 1e-9, &format!("{name}: at the seam"));
 }
 
 #[test]

@@ -601,9 +601,7 @@ impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
         self.knots.is_closed()
     }
     fn breakpoints(&self) -> Vec<f64> {
-        let mut b = self.knots.values().to_vec();
-        b.dedup();
-        b
+        self.knots.breakpoints()
     }
     /// Sub-curve locals are all the model: where both active locals see it at the same
     /// point (always but on the seam interval of a model closed by force), the model is

@@ -494,31 +494,16 @@ pub(super) fn hermite_patch<const D: usize>(
 }
 
 impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
-    fn domain_u(&self) -> Interval {
-        self.knots_u.domain()
-    }
-    fn domain_v(&self) -> Interval {
-        self.knots_v.domain()
-    }
-    fn is_closed_u(&self) -> bool {
-        self.knots_u.is_closed()
-    }
-    fn is_closed_v(&self) -> bool {
-        self.knots_v.is_closed()
-    }
+    crate::surface::axes::axes_surface_domains!(knots_u, knots_v);
     /// The knots: where the active patches change (as [`BlendingSplineCurve`]'s
     /// breakpoints).
     ///
     /// [`BlendingSplineCurve`]: crate::blend::BlendingSplineCurve
     fn breakpoints_u(&self) -> Vec<f64> {
-        let mut b = self.knots_u.values().to_vec();
-        b.dedup();
-        b
+        self.knots_u.breakpoints()
     }
     fn breakpoints_v(&self) -> Vec<f64> {
-        let mut b = self.knots_v.values().to_vec();
-        b.dedup();
-        b
+        self.knots_v.breakpoints()
     }
 
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {

@@ -103,6 +103,13 @@ impl BlendKnots {
     pub fn values(&self) -> &[f64] {
         &self.knots
     }
+    /// The distinct knot values in order: where the active locals change, the breakpoints
+    /// of a blending spline curve or surface in this direction.
+    pub(crate) fn breakpoints(&self) -> Vec<f64> {
+        let mut b = self.knots.clone();
+        b.dedup();
+        b
+    }
     /// The parameter domain.
     pub fn domain(&self) -> Interval {
         Interval::new(self.knots[0], *self.knots.last().unwrap())

@@ -20,6 +20,26 @@ fn swing(amplitude: f64) -> Motion {
     Motion::Swing { axis: Some(vec![0.0, 0.0, 1.0]), amplitude, frequency: 1.0, phase: 0.0, pivot: None }
 }
 
+/// One track for each of the `count` patches (k, `row`) around a surface closed in u: patch
+/// k at angle θ = 2πk/`count` moves radially, along (cos θ, sin θ, 0), by `amplitude` with
+/// phase `phase(θ)`, one cycle a second.
+fn radial_ring(count: usize, row: usize, amplitude: f64, phase: impl Fn(f64) -> f64) -> Vec<Track<(usize, usize)>> {
+    (0..count)
+        .map(|k| {
+            let angle = std::f64::consts::TAU * k as f64 / count as f64;
+            Track {
+                local: (k, row),
+                motions: vec![Motion::Oscillate {
+                    direction: vec![angle.cos(), angle.sin(), 0.0],
+                    amplitude,
+                    frequency: 1.0,
+                    phase: phase(angle),
+                }],
+            }
+        })
+        .collect()
+}
+
 /// The beating heart of the seed report: the closed heart (16 sin³t, 13 cos t − 5 cos 2t −
 /// 2 cos 3t − cos 4t, 0) as 10 sub-curve locals blended by ERBS; locals 1–4 (right side) and
 /// 6–9 (left side) move outwards and back along x, locals 0 (the dip) and 5 (the tip) along
@@ -89,19 +109,7 @@ pub fn animated_plane() -> Result<AnimatedSurface> {
 /// rotates about the axis.
 pub fn animated_cylinder() -> Result<AnimatedSurface> {
     let s = surface(Arc::new(Cylinder::new(1.0, 2.0)?), (8, 4), (true, false))?;
-    let mut tracks = Vec::new();
-    for k in 0..8 {
-        let angle = std::f64::consts::TAU * k as f64 / 8.0;
-        tracks.push(Track {
-            local: (k, 2),
-            motions: vec![Motion::Oscillate {
-                direction: vec![angle.cos(), angle.sin(), 0.0],
-                amplitude: 0.35,
-                frequency: 1.0,
-                phase: 2.0 * angle,
-            }],
-        });
-    }
+    let mut tracks = radial_ring(8, 2, 0.35, |angle| 2.0 * angle);
     tracks.push(Track {
         local: (2, 0),
         motions: vec![Motion::Swing {
@@ -120,19 +128,7 @@ pub fn animated_cylinder() -> Result<AnimatedSurface> {
 /// normal.
 pub fn animated_torus() -> Result<AnimatedSurface> {
     let s = surface(Arc::new(Torus::new(3.0, 1.0)?), (8, 6), (true, true))?;
-    let mut tracks = Vec::new();
-    for k in 0..8 {
-        let angle = std::f64::consts::TAU * k as f64 / 8.0;
-        tracks.push(Track {
-            local: (k, 0),
-            motions: vec![Motion::Oscillate {
-                direction: vec![angle.cos(), angle.sin(), 0.0],
-                amplitude: 0.6,
-                frequency: 1.0,
-                phase: -angle,
-            }],
-        });
-    }
+    let mut tracks = radial_ring(8, 0, 0.6, |angle| -angle);
     tracks.push(Track {
         local: (2, 1),
         motions: vec![Motion::Rotate {

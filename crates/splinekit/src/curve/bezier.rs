@@ -250,11 +250,7 @@ fn de_casteljau_triangle<T: Coefficient>(b: &mut [T], diff: &mut [T], t: f64, ou
 }
 
 impl<const D: usize> Curve<D> for BezierCurve<D> {
-    /// The box of the control points: it holds the curve, since a Bézier curve lies in the
-    /// convex hull of its control points; not tight in general.
-    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
-        Some(crate::query::Aabb::around(self.control_points(), 0.0))
-    }
+    crate::curve::control_box::control_point_box!("a Bézier curve");
     fn domain(&self) -> Interval {
         Interval::new(0.0, 1.0)
     }

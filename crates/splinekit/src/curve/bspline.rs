@@ -180,11 +180,7 @@ impl<const D: usize> BSplineCurve<D> {
 }
 
 impl<const D: usize> Curve<D> for BSplineCurve<D> {
-    /// The box of the control points: it holds the curve, since a B-spline curve lies in the
-    /// convex hull of its control points; not tight in general.
-    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
-        Some(crate::query::Aabb::around(self.control_points(), 0.0))
-    }
+    crate::curve::control_box::control_point_box!("a B-spline curve");
     fn domain(&self) -> Interval {
         self.axis.domain()
     }

@@ -5,6 +5,7 @@ pub mod bezier_spans;
 pub mod bspline;
 pub mod catmull_rom;
 pub mod circle_frame;
+pub(crate) mod control_box;
 pub mod hermite;
 pub mod model;
 pub mod nurbs;

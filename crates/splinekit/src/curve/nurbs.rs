@@ -183,11 +183,7 @@ pub(crate) fn check_weights(weights: &[f64], n: usize) -> Result<()> {
 }
 
 impl<const D: usize> Curve<D> for NurbsCurve<D> {
-    /// The box of the control points: it holds the curve, since a NURBS curve (weights > 0) lies in the
-    /// convex hull of its control points; not tight in general.
-    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
-        Some(crate::query::Aabb::around(self.control_points(), 0.0))
-    }
+    crate::curve::control_box::control_point_box!("a NURBS curve (weights > 0)");
     fn domain(&self) -> Interval {
         self.weighted.domain()
     }

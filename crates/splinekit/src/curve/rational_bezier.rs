@@ -78,11 +78,7 @@ impl<const D: usize> RationalBezierCurve<D> {
 }
 
 impl<const D: usize> Curve<D> for RationalBezierCurve<D> {
-    /// The box of the control points: it holds the curve, since a rational Bézier curve (weights > 0) lies in the
-    /// convex hull of its control points; not tight in general.
-    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
-        Some(crate::query::Aabb::around(self.control_points(), 0.0))
-    }
+    crate::curve::control_box::control_point_box!("a rational Bézier curve (weights > 0)");
     fn domain(&self) -> Interval {
         Interval::new(0.0, 1.0)
     }

@@ -5,7 +5,7 @@
 use crate::Point;
 use crate::basis::{Side, basis_derivatives, find_span};
 use crate::curve::{BSplineCurve, Curve};
-use crate::error::{Error, Result, check_points_finite};
+use crate::error::{Error, Result, check_degree, check_points_finite};
 use crate::fit::banded_qr::BandedLeastSquares;
 use crate::fit::parametrize::{Parametrization, parametrize};
 
@@ -65,9 +65,7 @@ pub fn interpolate<const D: usize>(points: &[Point<D>], options: &InterpolationO
     check_points_finite("points", points)?;
     let p = options.degree;
     let m = points.len();
-    if p == 0 {
-        return Err(Error::invalid("degree", "must be at least 1"));
-    }
+    check_degree(p)?;
     if m < p + 1 {
         return Err(Error::invalid(
             "points",

@@ -9,7 +9,7 @@ use smallvec::SmallVec;
 use crate::Point;
 use crate::basis::{advance_span, basis_functions};
 use crate::curve::{BSplineCurve, Curve};
-use crate::error::{Error, Result, check_finite, check_points_finite};
+use crate::error::{Error, Result, check_degree, check_finite, check_points_finite};
 use crate::fit::banded_qr::{BandedLeastSquares, Solution};
 use crate::fit::parametrize::{KnotPlacement, Parametrization, fit_knots, parametrize, periodic_knots};
 
@@ -95,9 +95,7 @@ impl FitOptions {
 pub fn fit<const D: usize>(points: &[Point<D>], options: &FitOptions) -> Result<Fit<D>> {
     check_points_finite("points", points)?;
     let (p, n, m) = (options.degree, options.control_points, points.len());
-    if p == 0 {
-        return Err(Error::invalid("degree", "must be at least 1"));
-    }
+    check_degree(p)?;
     if n < p + 1 {
         return Err(Error::invalid(
             "control_points",

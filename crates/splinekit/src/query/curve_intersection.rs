@@ -27,6 +27,7 @@ use crate::error::{Error, Result};
 use crate::query::bounds::Aabb;
 use crate::query::curve_cover::{CurveCover, SearchPiece};
 use crate::query::newton::{self, Step, cap, settled_all};
+use crate::query::pair_count::PairCount;
 use crate::query::tangent_cone::TangentCone;
 
 /// Sine of the angle below which an intersection counts as a tangential contact.
@@ -189,15 +190,9 @@ impl<'c, const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized> Search<'c, 
         cover_a: &'p CurveCover<D>,
         cover_b: &'p CurveCover<D>,
     ) -> Result<()> {
-        let mut examined = 0usize;
+        let mut count = PairCount::new(MAX_PAIRS);
         while let Some((pa, pb)) = pairs.pop() {
-            examined += 1;
-            if examined > MAX_PAIRS {
-                return Err(Error::numerical(
-                    "intersection",
-                    format!("more than {MAX_PAIRS} pairs of pieces; try a larger tolerance"),
-                ));
-            }
+            count.next("intersection", "pairs of pieces; try a larger tolerance")?;
             let (x, y) = (pa.piece(), pb.piece());
             if !x.bounds.overlaps(&y.bounds, self.tolerance) {
                 continue;
@@ -225,13 +220,9 @@ impl<'c, const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized> Search<'c, 
                 continue;
             }
             if dx >= dy {
-                for h in pa.split(cover_a, self.a) {
-                    pairs.push((h, pb.clone()));
-                }
+                pairs.extend(pa.split(cover_a, self.a).into_iter().map(|h| (h, pb.clone())));
             } else {
-                for h in pb.split(cover_b, self.b) {
-                    pairs.push((pa.clone(), h));
-                }
+                pairs.extend(pb.split(cover_b, self.b).into_iter().map(|h| (pa.clone(), h)));
             }
         }
         Ok(())

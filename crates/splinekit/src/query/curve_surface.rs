@@ -34,6 +34,7 @@ use crate::query::curve_cover::{CurveCover, SearchPiece};
 use crate::query::curve_intersection::{IntersectionKind, MIN_OVERLAP, TANGENT_RESOLUTION, TANGENT_SINE};
 use crate::query::newton::{self, Settle, Step, cap, settled_all};
 use crate::query::normal_cone::{normal_cone, transversal};
+use crate::query::pair_count::PairCount;
 use crate::query::project_curve::MIN_WIDTH;
 use crate::query::surface_cover::{SearchPatch, SurfaceCover};
 use crate::query::tangent_cone::TangentCone;
@@ -142,18 +143,12 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
         let tiny = self.tolerance.max(TANGENT_RESOLUTION * self.size);
         let (wt, wu, wv) =
             (MIN_WIDTH * cc.domain.length(), MIN_WIDTH * sc.domain_u.length(), MIN_WIDTH * sc.domain_v.length());
-        let mut examined = 0usize;
+        let mut count = PairCount::new(self.max_pairs);
         while let Some((pc, ps)) = pairs.pop() {
-            examined += 1;
-            if examined > self.max_pairs {
-                let limit = self.max_pairs;
-                return Err(Error::numerical(
-                    "curve-surface intersection",
-                    format!(
-                        "more than {limit} pairs of pieces (does the curve run inside the surface?); try a larger tolerance"
-                    ),
-                ));
-            }
+            count.next(
+                "curve-surface intersection",
+                "pairs of pieces (does the curve run inside the surface?); try a larger tolerance",
+            )?;
             let (x, y) = (pc.piece(), ps.patch());
             if !x.bounds.overlaps(&y.bounds, self.tolerance) {
                 continue;
@@ -178,13 +173,9 @@ impl<C: Curve<3> + ?Sized, S: Surface<3> + ?Sized> Search<'_, C, S> {
                 continue;
             }
             if (dx >= dy || y.u().length() <= wu || y.v().length() <= wv) && x.interval().length() > wt {
-                for h in pc.split(cc, self.curve) {
-                    pairs.push((h, ps.clone()));
-                }
+                pairs.extend(pc.split(cc, self.curve).into_iter().map(|h| (h, ps.clone())));
             } else {
-                for q in ps.split_around_points(sc, self.surface) {
-                    pairs.push((pc.clone(), q));
-                }
+                pairs.extend(ps.split_around_points(sc, self.surface).into_iter().map(|q| (pc.clone(), q)));
             }
         }
         Ok(())

@@ -23,6 +23,7 @@ pub mod march;
 pub mod newton;
 pub mod normal_cone;
 pub mod offset;
+pub(crate) mod pair_count;
 pub mod project_curve;
 pub mod project_surface;
 pub mod slope;

@@ -36,11 +36,12 @@
 
 use crate::Point;
 use crate::curve::Interval;
-use crate::error::{Error, Result};
+use crate::error::Result;
 pub use crate::query::branch::coincidence;
 use crate::query::branch::{IntersectionBranch, near_polyline};
 use crate::query::newton::{self, NEGLIGIBLE_STEP, Settle, cap};
 use crate::query::normal_cone::normal_cone;
+use crate::query::pair_count::PairCount;
 use crate::query::surface_cover::{SearchPatch, SurfaceCover, SurfacePatch};
 use crate::query::surface_pair::{MarchPoint, Marcher};
 use crate::query::tangent_cone::{TangentCone, angle};
@@ -157,7 +158,7 @@ where
             stack.push((na.clone(), nb.clone()));
         }
     }
-    let (mut seeds, mut examined) = (Seeds::default(), 0usize);
+    let (mut seeds, mut count) = (Seeds::default(), PairCount::new(MAX_SEED_PAIRS));
     let size = ca.nodes[..ca.roots]
         .iter()
         .chain(&cb.nodes[..cb.roots])
@@ -165,13 +166,7 @@ where
         .diagonal();
     let zero = Point::<3>::zeros();
     while let Some((na, nb)) = stack.pop() {
-        examined += 1;
-        if examined > MAX_SEED_PAIRS {
-            return Err(Error::numerical(
-                "surface intersection",
-                format!("more than {MAX_SEED_PAIRS} pairs of patches whose normals may be parallel"),
-            ));
-        }
+        count.next("surface intersection", "pairs of patches whose normals may be parallel")?;
         let ((pa, cone_a), (pb, cone_b)) = (&*na, &*nb);
         let (a, b) = (pa.patch(), pb.patch());
         if !a.bounds.overlaps(&b.bounds, m.tolerance) {
@@ -223,13 +218,9 @@ where
             split_a
         };
         if first {
-            for q in pa.split(ca, m.a) {
-                stack.push((node(q), nb.clone()));
-            }
+            stack.extend(pa.split(ca, m.a).into_iter().map(|q| (node(q), nb.clone())));
         } else {
-            for q in pb.split(cb, m.b) {
-                stack.push((na.clone(), node(q)));
-            }
+            stack.extend(pb.split(cb, m.b).into_iter().map(|q| (na.clone(), node(q))));
         }
     }
     Ok(seeds)

@@ -5,7 +5,7 @@
 
 use crate::Point;
 use crate::curve::BSplineCurve;
-use crate::error::{Error, Result, check_points_finite};
+use crate::error::{Error, Result, check_degree, check_points_finite};
 
 /// Upper bound on the number of output points a call may produce.
 pub const MAX_POINTS: usize = 50_000_000;
@@ -64,9 +64,7 @@ pub fn lane_riesenfeld<const D: usize>(
     steps: usize,
     closed: bool,
 ) -> Result<Vec<Point<D>>> {
-    if degree == 0 {
-        return Err(Error::invalid("degree", "must be at least 1"));
-    }
+    check_degree(degree)?;
     let min = if closed { 2 } else { degree + 1 };
     check_polygon(points, min, &format!(" for degree {degree}"), steps, 2)?;
     let mut p = points.to_vec();

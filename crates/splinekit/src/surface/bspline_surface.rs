@@ -1,8 +1,9 @@
 //! B-spline surfaces S(u, v) = Σ_i Σ_j N_{i,p}(u) M_{j,q}(v) P_ij.
 
-use crate::basis::KnotVector;
+use crate::basis::{KnotVector, SplineAxis};
 use crate::curve::BSplineCurve;
 use crate::error::Result;
+use crate::ops::spline_data::{SplineData, to_bspline};
 use crate::surface::Surface;
 use crate::surface::tensor::{TensorSpline, net_axes, net_shape, tensor_surface_accessors, tensor_surface_domains};
 use crate::{Interval, Point};
@@ -58,40 +59,24 @@ impl<const D: usize> BSplineSurface<D> {
     /// The isocurve u = u₀ as a B-spline in v (exact: its control points are
     /// Σ_i N_i(u₀) P_ij).
     pub fn iso_curve_u(&self, u0: f64) -> Result<BSplineCurve<D>> {
-        let (pu, pv) = self.degrees();
-        let u = self.spline.u.normalise(u0);
-        let su = self.spline.u.span(u);
-        let mut nb = vec![0.0; pu + 1];
-        crate::basis::basis_functions(self.spline.u.eval_knots(), pu, su, u, &mut nb);
-        let nu = self.net.len();
+        let (su, nb) = basis_at(&self.spline.u, u0);
+        let (pu, nu) = (nb.len() - 1, self.net.len());
         let pts: Vec<Point<D>> = (0..self.net[0].len())
             .map(|j| (0..=pu).fold(Point::<D>::zeros(), |acc, r| acc + self.net[(su - pu + r) % nu][j] * nb[r]))
             .collect();
-        if self.spline.v.is_periodic() {
-            BSplineCurve::new_periodic(pv, self.spline.v.knots().to_vec(), pts)
-        } else {
-            BSplineCurve::new(pv, self.spline.v.knots().to_vec(), pts)
-        }
+        curve_along(&self.spline.v, pts)
     }
 
     /// The isocurve v = v₀ as a B-spline in u (exact: control points Σ_j M_j(v₀) P_ij).
     pub fn iso_curve_v(&self, v0: f64) -> Result<BSplineCurve<D>> {
-        let (pu, pv) = self.degrees();
-        let v = self.spline.v.normalise(v0);
-        let sv = self.spline.v.span(v);
-        let mut nb = vec![0.0; pv + 1];
-        crate::basis::basis_functions(self.spline.v.eval_knots(), pv, sv, v, &mut nb);
-        let nv = self.net[0].len();
+        let (sv, nb) = basis_at(&self.spline.v, v0);
+        let (pv, nv) = (nb.len() - 1, self.net[0].len());
         let pts: Vec<Point<D>> = self
             .net
             .iter()
             .map(|row| (0..=pv).fold(Point::<D>::zeros(), |acc, r| acc + row[(sv - pv + r) % nv] * nb[r]))
             .collect();
-        if self.spline.u.is_periodic() {
-            BSplineCurve::new_periodic(pu, self.spline.u.knots().to_vec(), pts)
-        } else {
-            BSplineCurve::new(pu, self.spline.u.knots().to_vec(), pts)
-        }
+        curve_along(&self.spline.u, pts)
     }
 
     /// The same surface with every control point mapped by `f` (exact for affine maps).
@@ -118,4 +103,21 @@ impl<const D: usize> Surface<D> for BSplineSurface<D> {
     fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
         self.spline.eval_grid_points_normals(us, vs, points, normals);
     }
+}
+
+/// The span s of x on `axis` (x clamped or wrapped into its domain) and the p + 1 basis
+/// functions N_{s−p}(x), …, N_s(x) there: the weights of an isocurve's control points.
+fn basis_at(axis: &SplineAxis, x: f64) -> (usize, Vec<f64>) {
+    let (p, x) = (axis.degree(), axis.normalise(x));
+    let s = axis.span(x);
+    let mut nb = vec![0.0; p + 1];
+    crate::basis::basis_functions(axis.eval_knots(), p, s, x, &mut nb);
+    (s, nb)
+}
+
+/// The B-spline curve with these control points along `axis`: its degree, its knots as
+/// given and its periodicity (an isocurve runs along the other direction's axis).
+fn curve_along<const D: usize>(axis: &SplineAxis, points: Vec<Point<D>>) -> Result<BSplineCurve<D>> {
+    let data = SplineData { degree: axis.degree(), knots: axis.knots().to_vec(), coefficients: points };
+    to_bspline(data, axis.is_periodic())
 }

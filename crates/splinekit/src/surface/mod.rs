@@ -1,6 +1,7 @@
 //! Surfaces: the [`Surface`] trait, tensor-product Bézier, B-spline and NURBS surfaces,
 //! and model surfaces.
 
+pub(crate) mod axes;
 pub mod bezier_surface;
 pub mod bspline_surface;
 pub mod derived;

@@ -24,46 +24,113 @@ fn transpose<T: Clone>(net: &[Vec<T>]) -> Vec<Vec<T>> {
     (0..net[0].len()).map(|j| net.iter().map(|r| r[j].clone()).collect()).collect()
 }
 
+/// A spline curve that one line of a tensor-product net makes (a row or a column of the
+/// control points, with the weights for NURBS), and what [`map_net_lines`] reads back.
+trait LineCurve: Sized {
+    /// One coefficient of the net: a control point, or a control point and its weight.
+    type Coefficient;
+    /// The curve of one line, periodic when `closed`.
+    fn of_line(degree: usize, knots: Vec<f64>, line: Vec<Self::Coefficient>, closed: bool) -> Result<Self>;
+    /// The line of the curve's coefficients.
+    fn line(&self) -> Vec<Self::Coefficient>;
+    /// Degree, knots and periodicity.
+    fn spline(&self) -> (usize, &[f64], bool);
+}
+
+impl<const D: usize> LineCurve for BSplineCurve<D> {
+    type Coefficient = Point<D>;
+    fn of_line(degree: usize, knots: Vec<f64>, line: Vec<Point<D>>, closed: bool) -> Result<Self> {
+        if closed { BSplineCurve::new_periodic(degree, knots, line) } else { BSplineCurve::new(degree, knots, line) }
+    }
+    fn line(&self) -> Vec<Point<D>> {
+        self.control_points().to_vec()
+    }
+    fn spline(&self) -> (usize, &[f64], bool) {
+        (self.degree(), self.knots(), self.is_periodic())
+    }
+}
+
+impl<const D: usize> LineCurve for NurbsCurve<D> {
+    type Coefficient = (Point<D>, f64);
+    fn of_line(degree: usize, knots: Vec<f64>, line: Vec<(Point<D>, f64)>, closed: bool) -> Result<Self> {
+        let (points, weights) = line.into_iter().unzip();
+        if closed {
+            NurbsCurve::new_periodic(degree, knots, points, weights)
+        } else {
+            NurbsCurve::new(degree, knots, points, weights)
+        }
+    }
+    fn line(&self) -> Vec<(Point<D>, f64)> {
+        self.control_points().iter().copied().zip(self.weights().iter().copied()).collect()
+    }
+    fn spline(&self) -> (usize, &[f64], bool) {
+        (self.degree(), self.knots(), self.is_periodic())
+    }
+}
+
+/// A tensor-product net with its degrees, knots and periodic flags in u and v.
+struct NetSpline<T> {
+    degrees: (usize, usize),
+    knots_u: Vec<f64>,
+    knots_v: Vec<f64>,
+    net: Vec<Vec<T>>,
+    periodic: (bool, bool),
+}
+
+/// A surface's degrees, knots and periodic flags, each as (u, v).
+type NetAxes<'a> = ((usize, usize), (&'a [f64], &'a [f64]), (bool, bool));
+
+/// Applies `op` to the curve of every column (`Direction::U`) or row (`Direction::V`) of
+/// `net`, given the surface's degrees, knots and periodic flags. The lines share their
+/// knots, so they end with the same new degree, knots and closedness (read from the last
+/// line); the other direction is unchanged.
+fn map_net_lines<C: LineCurve>(
+    direction: Direction,
+    (degrees, (ku, kv), periodic): NetAxes<'_>,
+    net: Vec<Vec<C::Coefficient>>,
+    op: impl Fn(C) -> Result<C>,
+) -> Result<NetSpline<C::Coefficient>>
+where
+    C::Coefficient: Clone,
+{
+    let (lines, degree, knots, closed) = match direction {
+        Direction::U => (transpose(&net), degrees.0, ku, periodic.0),
+        Direction::V => (net, degrees.1, kv, periodic.1),
+    };
+    let mut out_lines = Vec::with_capacity(lines.len());
+    let mut new_knots = Vec::new();
+    let mut new_degree = degree;
+    let mut still_closed = closed;
+    for line in lines {
+        let r = op(C::of_line(degree, knots.to_vec(), line, closed)?)?;
+        let (d, k, p) = r.spline();
+        (new_degree, new_knots, still_closed) = (d, k.to_vec(), p);
+        out_lines.push(r.line());
+    }
+    Ok(match direction {
+        Direction::U => NetSpline {
+            degrees: (new_degree, degrees.1),
+            knots_u: new_knots,
+            knots_v: kv.to_vec(),
+            net: transpose(&out_lines),
+            periodic: (still_closed, periodic.1),
+        },
+        Direction::V => NetSpline {
+            degrees: (degrees.0, new_degree),
+            knots_u: ku.to_vec(),
+            knots_v: new_knots,
+            net: out_lines,
+            periodic: (periodic.0, still_closed),
+        },
+    })
+}
+
 impl<const D: usize> BSplineSurface<D> {
     /// Applies a curve operation to every column (u) or row (v) of the net.
     fn map_lines(&self, direction: Direction, op: impl Fn(BSplineCurve<D>) -> Result<BSplineCurve<D>>) -> Result<Self> {
-        let (degrees, (ku, kv), periodic) = (self.degrees(), self.knots(), self.periodic());
-        let (lines, degree, knots, closed) = match direction {
-            Direction::U => (transpose(self.control_points()), degrees.0, ku, periodic.0),
-            Direction::V => (self.control_points().to_vec(), degrees.1, kv, periodic.1),
-        };
-        let mut out_lines = Vec::with_capacity(lines.len());
-        let mut new_knots = Vec::new();
-        let mut new_degree = degree;
-        let mut still_closed = closed;
-        for line in lines {
-            let c = if closed {
-                BSplineCurve::new_periodic(degree, knots.to_vec(), line)?
-            } else {
-                BSplineCurve::new(degree, knots.to_vec(), line)?
-            };
-            let r = op(c)?;
-            new_knots = r.knots().to_vec();
-            new_degree = r.degree();
-            still_closed = r.is_periodic();
-            out_lines.push(r.control_points().to_vec());
-        }
-        match direction {
-            Direction::U => BSplineSurface::new(
-                (new_degree, degrees.1),
-                new_knots,
-                kv.to_vec(),
-                transpose(&out_lines),
-                (still_closed, periodic.1),
-            ),
-            Direction::V => BSplineSurface::new(
-                (degrees.0, new_degree),
-                ku.to_vec(),
-                new_knots,
-                out_lines,
-                (periodic.0, still_closed),
-            ),
-        }
+        let net = self.control_points().to_vec();
+        let m = map_net_lines(direction, (self.degrees(), self.knots(), self.periodic()), net, op)?;
+        BSplineSurface::new(m.degrees, m.knots_u, m.knots_v, m.net, m.periodic)
     }
 
     /// Inserts the knots (u-knots for `Direction::U`, v-knots for `Direction::V`).
@@ -118,47 +185,15 @@ impl<const D: usize> BSplineSurface<D> {
 
 impl<const D: usize> NurbsSurface<D> {
     fn map_lines(&self, direction: Direction, op: impl Fn(NurbsCurve<D>) -> Result<NurbsCurve<D>>) -> Result<Self> {
-        let (degrees, (ku, kv), periodic) = (self.degrees(), self.knots(), self.periodic());
-        let (lines, wlines, degree, knots, closed) = match direction {
-            Direction::U => (transpose(self.control_points()), transpose(self.weights()), degrees.0, ku, periodic.0),
-            Direction::V => (self.control_points().to_vec(), self.weights().to_vec(), degrees.1, kv, periodic.1),
-        };
-        let mut out_lines = Vec::with_capacity(lines.len());
-        let mut out_w = Vec::with_capacity(lines.len());
-        let mut new_knots = Vec::new();
-        let mut new_degree = degree;
-        let mut still_closed = closed;
-        for (line, w) in lines.into_iter().zip(wlines) {
-            let c = if closed {
-                NurbsCurve::new_periodic(degree, knots.to_vec(), line, w)?
-            } else {
-                NurbsCurve::new(degree, knots.to_vec(), line, w)?
-            };
-            let r = op(c)?;
-            new_knots = r.knots().to_vec();
-            new_degree = r.degree();
-            still_closed = r.is_periodic();
-            out_lines.push(r.control_points().to_vec());
-            out_w.push(r.weights().to_vec());
-        }
-        match direction {
-            Direction::U => NurbsSurface::new(
-                (new_degree, degrees.1),
-                new_knots,
-                kv.to_vec(),
-                transpose(&out_lines),
-                transpose(&out_w),
-                (still_closed, periodic.1),
-            ),
-            Direction::V => NurbsSurface::new(
-                (degrees.0, new_degree),
-                ku.to_vec(),
-                new_knots,
-                out_lines,
-                out_w,
-                (periodic.0, still_closed),
-            ),
-        }
+        let net = self
+            .control_points()
+            .iter()
+            .zip(self.weights())
+            .map(|(row, w)| row.iter().copied().zip(w.iter().copied()).collect())
+            .collect();
+        let m = map_net_lines(direction, (self.degrees(), self.knots(), self.periodic()), net, op)?;
+        let (points, weights) = m.net.into_iter().map(|row| row.into_iter().unzip()).unzip();
+        NurbsSurface::new(m.degrees, m.knots_u, m.knots_v, points, weights, m.periodic)
     }
     /// Inserts the knots in one direction.
     pub fn refine(&self, direction: Direction, knots: &[f64]) -> Result<Self> {

@@ -40,6 +40,16 @@ pub fn max_distance<const D: usize, A: Curve<D> + ?Sized, B: Curve<D> + ?Sized>(
         .fold(0.0, f64::max)
 }
 
+/// Asserts that two lists of derivatives (orders 0, 1, …) agree order by order within
+/// `rel` relative to the second (reference) list, at least 1 in size:
+/// |a_k − b_k| < rel · max(|b_k|, 1); a failure names `what`, the order and both values.
+pub fn assert_orders_close<const D: usize>(a: &[Point<D>], b: &[Point<D>], rel: f64, what: &str) {
+    assert_eq!(a.len(), b.len(), "{what}: as many orders on both sides");
+    for (k, (x, y)) in a.iter().zip(b).enumerate() {
+        assert!((x - y).norm() < rel * y.norm().max(1.0), "{what}: order {k}: {x} vs {y}");
+    }
+}
+
 pub fn p2(x: f64, y: f64) -> Point<2> {
     Point::<2>::new(x, y)
 }

@@ -1,8 +1,6 @@
 //! The circle (r cos t, r sin t, 0), t ∈ [0, 2π], closed.
 
 use super::trig::{Term, TrigCurve, TrigSeries, positive, trig_model_curve};
-use crate::curve::Interval;
-use std::f64::consts::TAU;
 
 /// Circle of radius r in the xy-plane about the origin; c^{(k)} has length r.
 #[derive(Debug, Clone, PartialEq)]
@@ -15,15 +13,10 @@ impl Circle {
     /// The circle of the given radius (> 0).
     pub fn new(radius: f64) -> crate::Result<Self> {
         let r = positive("radius", radius)?;
-        let curve = TrigCurve {
-            coordinates: [
-                TrigSeries::of(&[Term::cos(r, 1.0)]),
-                TrigSeries::of(&[Term::sin(r, 1.0)]),
-                TrigSeries::default(),
-            ],
-            domain: Interval::new(0.0, TAU),
-            closed: true,
-        };
+        let curve = TrigCurve::one_turn(
+            [TrigSeries::of(&[Term::cos(r, 1.0)]), TrigSeries::of(&[Term::sin(r, 1.0)]), TrigSeries::default()],
+            true,
+        );
         Ok(Circle { radius, curve })
     }
     /// The radius.

@@ -1,8 +1,6 @@
 //! The heart curve (16 sin³t, 13 cos t − 5 cos 2t − 2 cos 3t − cos 4t, 0), t ∈ [0, 2π], closed.
 
 use super::trig::{Term, TrigCurve, TrigSeries, positive, trig_model_curve};
-use crate::curve::Interval;
-use std::f64::consts::TAU;
 
 /// The classic heart curve, scaled by `scale`. With sin³t = (3 sin t − sin 3t)/4 both
 /// coordinates are trigonometric polynomials, so derivatives of every order are exact.
@@ -22,8 +20,7 @@ impl Heart {
             Term::cos(-2.0 * s, 3.0),
             Term::cos(-s, 4.0),
         ]);
-        let curve =
-            TrigCurve { coordinates: [x, y, TrigSeries::default()], domain: Interval::new(0.0, TAU), closed: true };
+        let curve = TrigCurve::one_turn([x, y, TrigSeries::default()], true);
         Ok(Heart { curve })
     }
 }

@@ -1,8 +1,6 @@
 //! Lissajous curves (A sin(a t + δ), B sin(b t), C sin(c t)), t ∈ [0, 2π].
 
 use super::trig::{Term, TrigCurve, TrigSeries, finite, trig_model_curve};
-use crate::curve::Interval;
-use std::f64::consts::TAU;
 
 /// Lissajous figure with amplitudes (A, B, C) and frequencies (a, b, c); c = 0 or C = 0
 /// keeps it planar. Closed over [0, 2π] when the frequencies are integers.
@@ -23,15 +21,14 @@ impl Lissajous {
         finite("delta", delta)?;
         let mut x = Term::sin(amplitudes[0], frequencies[0]);
         x.phase += delta;
-        let curve = TrigCurve {
-            coordinates: [
+        let curve = TrigCurve::one_turn(
+            [
                 TrigSeries::of(&[x]),
                 TrigSeries::of(&[Term::sin(amplitudes[1], frequencies[1])]),
                 TrigSeries::of(&[Term::sin(amplitudes[2], frequencies[2])]),
             ],
-            domain: Interval::new(0.0, TAU),
-            closed: frequencies.iter().all(|f| f.fract() == 0.0),
-        };
+            frequencies.iter().all(|f| f.fract() == 0.0),
+        );
         Ok(Lissajous { curve })
     }
 }

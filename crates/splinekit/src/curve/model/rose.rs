@@ -1,8 +1,6 @@
 //! The rose curve r cos(nt)(cos t, sin t) with z = r sin(nt) (3-D) or z = 0 (planar).
 
 use super::trig::{Term, TrigCurve, TrigSeries, positive, trig_model_curve};
-use crate::curve::Interval;
-use std::f64::consts::TAU;
 
 /// Rose (rhodonea) curve, t ∈ [0, 2π]: (r cos(nt) cos t, r cos(nt) sin t, r sin(nt)).
 ///
@@ -24,7 +22,7 @@ impl Rose {
         let y = TrigSeries::of(&[Term::sin(h, n + 1.0), Term::sin(-h, n - 1.0)]);
         let z = if planar { TrigSeries::default() } else { TrigSeries::of(&[Term::sin(r, n)]) };
         let closed = n.fract() == 0.0;
-        let curve = TrigCurve { coordinates: [x, y, z], domain: Interval::new(0.0, TAU), closed };
+        let curve = TrigCurve::one_turn([x, y, z], closed);
         Ok(Rose { curve })
     }
 }

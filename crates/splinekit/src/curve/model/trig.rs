@@ -145,6 +145,12 @@ pub struct TrigCurve {
 }
 
 impl TrigCurve {
+    /// The curve with these coordinates over one turn, t ∈ [0, 2π], closed there when
+    /// `closed` (every frequency an integer) and open otherwise.
+    pub(crate) fn one_turn(coordinates: [TrigSeries; 3], closed: bool) -> Self {
+        TrigCurve { coordinates, domain: Interval::new(0.0, std::f64::consts::TAU), closed }
+    }
+
     /// Writes the position and derivatives.
     #[inline]
     pub fn eval_into(&self, t: f64, out: &mut [Point<3>]) {

@@ -11,7 +11,7 @@
 //! of order 2 and more are central differences of it (about 1e-8 relative).
 
 use crate::Point;
-use crate::curve::{Curve, Interval};
+use crate::curve::Curve;
 use crate::error::{Error, Result};
 use crate::surface::Surface;
 use smallvec::{SmallVec, smallvec};
@@ -121,18 +121,7 @@ impl SweepSurface {
 }
 
 impl Surface<3> for SweepSurface {
-    fn domain_u(&self) -> Interval {
-        self.profile.domain()
-    }
-    fn domain_v(&self) -> Interval {
-        self.path.domain()
-    }
-    fn is_closed_u(&self) -> bool {
-        self.profile.is_closed()
-    }
-    fn is_closed_v(&self) -> bool {
-        self.path.is_closed()
-    }
+    crate::surface::axes::axes_surface_domains!(profile, path);
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<3>]) {
         let mut p: SmallVec<[Point<3>; 8]> = smallvec![Point::<3>::zeros(); du + 1];
         self.profile.eval(u, &mut p);
