@@ -120,12 +120,7 @@ impl Gpu {
     /// the blit shows ([`crate::view_blit`]). The composed scene's geometry stays on
     /// the device between frames: only the items the view lists as changed are written
     /// ([`keep_geometry`]); the overlays are uploaded each frame.
-    pub fn draw_view(
-        &mut self,
-        scene: &ViewScene,
-        size: (u32, u32),
-        multisampled: bool,
-    ) -> Result<(), GpuError> {
+    pub fn draw_view(&mut self, scene: &ViewScene, size: (u32, u32), multisampled: bool) -> Result<(), GpuError> {
         let max = splinekit_render::renderer::MAX_SIDE;
         let size = (size.0.clamp(1, max), size.1.clamp(1, max));
         if self.view.as_ref().is_none_or(|v| v.target.size() != size) {
@@ -287,10 +282,7 @@ impl Gpu {
                     view,
                     depth_slice: None,
                     resolve_target: None,
-                    ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(self.background),
-                        store: wgpu::StoreOp::Store,
-                    },
+                    ops: wgpu::Operations { load: wgpu::LoadOp::Clear(self.background), store: wgpu::StoreOp::Store },
                 })],
                 depth_stencil_attachment: None,
                 timestamp_writes: None,

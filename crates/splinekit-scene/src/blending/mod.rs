@@ -6,11 +6,13 @@ mod animation;
 mod curve;
 mod insert;
 pub mod local_points;
+mod split;
 mod surface;
 
 pub use animation::{MotionDoc, OscillateDoc, PulseDoc, RotateMotionDoc, SwingDoc, TrackDoc};
 pub use curve::{BlendingSource, BlendingSplineDoc, KnotSpacingDoc, LocalCurves, LocalDoc};
 pub use insert::{insert_knot_line, insert_local_curve};
+pub use split::{knot_to_split, split_local_curve};
 pub use surface::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 
 use crate::bfunctions::{BFunctionDoc, ErbsDoc};
