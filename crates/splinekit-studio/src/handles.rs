@@ -48,7 +48,8 @@ pub struct Handle {
     /// A copy of a split knot (a local curve whose support ends at its own knot): the
     /// joint, its moved origin o + t, about which a drag turns and scales it
     /// ([`crate::gesture`]); the handle itself then sits on the copy's local curve a third
-    /// of the way from the joint to the neighbouring knot. `None` for every other handle.
+    /// (the first copy) or half (the second) of the way from the joint to the neighbouring
+    /// knot. `None` for every other handle.
     pub pivot: Option<[f64; 3]>,
 }
 
@@ -177,8 +178,8 @@ fn to3(p: &[f64]) -> [f64; 3] {
 
 /// The moved origins o_k + t_k of a blending-spline curve's locals; for the two copies
 /// of a split knot (a local whose support [c_{k−1}, c_{k+1}] ends at its own knot c_k),
-/// the local's world point a third of the way from c_k to the other end of its support,
-/// with the moved origin (the joint) as the pivot.
+/// the local's world point a third (the first copy) or half (the second) of the way from
+/// c_k to the other end of its support, with the moved origin (the joint) as the pivot.
 fn local_curves(
     d: &BlendingSplineDoc,
     push: &mut impl FnMut(HandleKind, &[f64], &[f64], usize, Option<&[f64]>),
@@ -190,10 +191,12 @@ fn local_curves(
                 let o = c.origin(k);
                 let moved = c.transform(k).apply_point_about(&o, &o);
                 let (centre, support) = (c.centre(k), c.local_support(k));
-                let other = if support.end == centre { support.start } else { support.end };
+                // The first copy a third of the way, the second halfway: apart even where
+                // the local is symmetric about its knot (at a cusp of the model).
+                let (other, part) = if support.end == centre { (support.start, 3.0) } else { (support.end, 2.0) };
                 if support.start == centre || support.end == centre {
                     let mut at = [splinekit::Point::<$dim>::zeros(); 1];
-                    c.eval_local(k, centre + (other - centre) / 3.0, &mut at);
+                    c.eval_local(k, centre + (other - centre) / part, &mut at);
                     push(HandleKind::LocalCurve(k), at[0].as_slice(), o.as_slice(), $dim, Some(moved.as_slice()));
                 } else {
                     push(HandleKind::LocalCurve(k), moved.as_slice(), o.as_slice(), $dim, None);

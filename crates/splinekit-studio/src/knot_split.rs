@@ -5,8 +5,9 @@
 //! [`split_local_curve`] (the kernel's split: the knot doubled, the local copied, the
 //! curve unchanged).
 //!
-//! The two copies' handles then sit on their own local curves a third of the way from the
-//! joint to the neighbouring knots ([`crate::handles`]), and a drag turns and scales the
+//! The two copies' handles then sit on their own local curves a third (the first copy)
+//! and half (the second) of the way from the joint to the neighbouring knots
+//! ([`crate::handles`]), and a drag turns and scales the
 //! copy about the joint ([`crate::gesture`]), so the curve keeps its point there: a
 //! corner, C⁰.
 //!

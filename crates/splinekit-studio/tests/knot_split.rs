@@ -140,9 +140,7 @@ fn the_edit_menu_arms_the_tool() {
     assert_eq!(h.state().0.knot_tool, Some(KnotTool::SplitKnot));
 }
 
-/// With local curve 3 selected, D splits knot 3 at once (not knot 5: the heart's cusp at
-/// the bottom, where the quadratic local is symmetric about the knot and the copies'
-/// handles would coincide); the two copies' handles sit apart
+/// With local curve 3 selected, D splits knot 3 at once; the two copies' handles sit apart
 /// with the joint as their pivot, and a drag of the right copy turns and scales it about
 /// the joint: the curve is continuous there, unchanged left of it, and changed on the
 /// copy's side; one undo step each.
@@ -219,4 +217,22 @@ fn a_selected_local_splits_at_once_and_each_copy_turns_about_the_joint() {
     );
     studio.undo();
     assert_eq!(studio.document.scene().to_value(), split, "the drag is one undo step");
+}
+
+/// At the heart's bottom cusp (knot 5) the quadratic local is symmetric about its knot:
+/// the copies' handles (a third and half of the way to the neighbouring knots) are still
+/// apart, and each is picked by a click on it.
+#[test]
+fn the_copies_at_a_cusp_are_picked_apart() {
+    let mut studio = open("heart_local_curves.json");
+    studio.selection.object = Some(0);
+    let edit =
+        splinekit_studio::knot_split::split_local(&studio.document.scene().objects[0].shape, 0, 5).expect("splits");
+    assert!(studio.edit(edit, false));
+    let projector = projector(&mut studio);
+    for k in [5, 6] {
+        let h = studio.shown_handles().find(|h| h.kind == HandleKind::LocalCurve(k)).cloned().expect("a copy");
+        let (px, _) = projector.project(h.position).expect("in view");
+        assert_eq!(studio.pick(&projector, px).map(|h| h.kind), Some(HandleKind::LocalCurve(k)), "copy {k} at {px:?}");
+    }
 }
