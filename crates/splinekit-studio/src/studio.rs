@@ -59,7 +59,8 @@ impl ViewScene<'_> {
     }
 }
 
-/// The handles (patch origins and control points, which the renderer does not mark), the
+/// The handles (patch origins and control points, which the renderer does not mark, and
+/// the handles of a split knot's copies, each with a line to its joint), the
 /// control polygon of the selected local Bézier curve or the net (rows and columns) of the
 /// selected Bézier patch, and the selected handles (the last picked largest) and the hovered
 /// one drawn larger.
@@ -89,7 +90,14 @@ fn overlay_handles(
     for points in rows.into_iter().chain(columns).filter(|l| l.len() > 1) {
         rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
     }
-    for h in handles.iter().filter(|h| !matches!(h.kind, HandleKind::LocalCurve(_)) && h.shown_with(selected)) {
+    // The renderer marks local curves' origins; a copy of a split knot has its handle off
+    // the origin (the joint), drawn here with a line to the joint it turns about.
+    for h in handles.iter().filter(|h| h.pivot.is_some() && h.shown_with(selected)) {
+        let points = [h.pivot.unwrap_or(h.position), h.position].map(|p| p.map(|x| x as f32)).to_vec();
+        rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
+    }
+    let drawn = |h: &Handle| !matches!(h.kind, HandleKind::LocalCurve(_)) || h.pivot.is_some();
+    for h in handles.iter().filter(|h| drawn(h) && h.shown_with(selected)) {
         let position = h.position.map(|x| x as f32);
         rs.points.push(PointItem { position, color: [0.15, 0.15, 0.15, 1.0], size: 7.0 });
     }

@@ -221,7 +221,7 @@ fn a_selected_local_splits_at_once_and_each_copy_turns_about_the_joint() {
 
 /// At the heart's bottom cusp (knot 5) the quadratic local is symmetric about its knot:
 /// the copies' handles (a third and half of the way to the neighbouring knots) are still
-/// apart, and each is picked by a click on it.
+/// apart, drawn with a line to the joint, and each is picked by a click on it.
 #[test]
 fn the_copies_at_a_cusp_are_picked_apart() {
     let mut studio = open("heart_local_curves.json");
@@ -229,9 +229,15 @@ fn the_copies_at_a_cusp_are_picked_apart() {
     let edit =
         splinekit_studio::knot_split::split_local(&studio.document.scene().objects[0].shape, 0, 5).expect("splits");
     assert!(studio.edit(edit, false));
-    let projector = projector(&mut studio);
+    let rs: RenderScene = studio.render_scene((600, 600), true).expect("composes");
+    let projector = Projector::new(&rs, (600, 600));
     for k in [5, 6] {
         let h = studio.shown_handles().find(|h| h.kind == HandleKind::LocalCurve(k)).cloned().expect("a copy");
+        // Drawn (the renderer marks origins only), with a line to the joint.
+        let f = |p: [f64; 3]| p.map(|x| x as f32);
+        assert!(rs.points.iter().any(|p| p.position == f(h.position)), "copy {k}'s handle drawn");
+        let joint = f(h.pivot.expect("a copy"));
+        assert!(rs.lines.iter().any(|l| l.points == [joint, f(h.position)]), "copy {k}'s line to the joint");
         let (px, _) = projector.project(h.position).expect("in view");
         assert_eq!(studio.pick(&projector, px).map(|h| h.kind), Some(HandleKind::LocalCurve(k)), "copy {k} at {px:?}");
     }
