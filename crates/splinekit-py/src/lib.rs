@@ -11,6 +11,7 @@
 mod arrays;
 mod batch;
 mod blending;
+mod blending_edits;
 mod budget;
 mod curve;
 mod curve_kinds;

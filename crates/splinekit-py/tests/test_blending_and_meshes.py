@@ -151,3 +151,63 @@ def test_render_writes_a_png_or_says_why_not(tmp_path):
         assert str(e).startswith("render: no graphics adapter found")
         return
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def _heart_formula(t):
+    """The heart curve in closed form (docs/format.md), the truth for sub-curve locals."""
+    return np.stack(
+        [16 * np.sin(t) ** 3, 13 * np.cos(t) - 5 * np.cos(2 * t) - 2 * np.cos(3 * t) - np.cos(4 * t), 0 * t], axis=-1
+    )
+
+
+def test_insert_local_returns_a_new_curve_that_keeps_an_untransformed_sub_curve_spline():
+    c = sk.load({"type": "blending_spline", "model": {"type": "heart"}, "local_curves": 8, "local": {"type": "sub_curve"}})
+    t = np.linspace(0, 2 * np.pi, 401)
+    np.testing.assert_allclose(c(t), _heart_formula(t), atol=1e-12)
+    d, k = c.insert_local(1.0)
+    assert k == 2 and len(d.local_pieces()) == 9 and len(c.local_pieces()) == 8  # a new object
+    assert d.to_dict()["knots"][k] == 1.0
+    np.testing.assert_allclose(d(t), _heart_formula(t), atol=1e-12)
+
+
+def test_insert_local_on_bezier_locals_keeps_the_curve_outside_the_split_interval(heart):
+    c = sk.load(heart)
+    step = 2 * np.pi / 8
+    d, k = c.insert_local(2.5 * step)
+    assert k == 3
+    t = np.linspace(0, 2 * np.pi, 801)
+    outside = (t <= 2 * step) | (t >= 3 * step)
+    np.testing.assert_allclose(d(t[outside]), c(t[outside]), atol=1e-12)
+    np.testing.assert_allclose(d(2.5 * step), c(2.5 * step), atol=1e-12)  # and at the new knot
+
+
+def test_split_knot_keeps_the_curve_and_a_turned_copy_makes_a_corner(heart):
+    c = sk.load(heart)
+    d = c.split_knot(3)
+    knots = d.to_dict()["knots"]
+    assert knots[3] == knots[4] and len(knots) == 10 and len(d.local_pieces()) == 9
+    t = np.linspace(0, 2 * np.pi, 801)
+    np.testing.assert_allclose(d(t), c(t), atol=1e-12)
+    assert sk.load(d.to_json()) == d  # the document reads back as itself
+    d.set_transform(4, rotate={"axis": [0, 0, 1], "angle": 0.5}, scale=1.3)
+    joint, h = knots[3], 1e-7
+    left, right = d(joint - h), d(joint + h)
+    assert np.linalg.norm(left - right) < 1e-4, "continuous at the joint"
+    np.testing.assert_allclose(d(joint), c(joint), atol=1e-12)
+    tangents = d(np.array([joint - h, joint + h]), 1)
+    cosine = tangents[0] @ tangents[1] / np.linalg.norm(tangents[0]) / np.linalg.norm(tangents[1])
+    assert cosine < np.cos(0.3), "a corner"
+
+
+def test_insert_local_and_split_knot_errors_name_the_field(heart):
+    c = sk.load(heart)
+    with pytest.raises(ValueError, match=r"^k: only interior knots 1\.\.=7 can be split, got 0$"):
+        c.split_knot(0)
+    with pytest.raises(ValueError, match=r"^k: knot 3 is already double$"):
+        c.split_knot(3).split_knot(3)
+    with pytest.raises(ValueError, match=r"^t: a new knot must lie strictly inside the domain"):
+        c.insert_local(0.0)
+    with pytest.raises(ValueError, match=r"^type: insert_local works on blending_spline curves, not heart$"):
+        sk.load({"type": "heart"}).insert_local(1.0)
+    with pytest.raises(ValueError, match=r"^type: split_knot works on blending_spline curves, not heart$"):
+        sk.load({"type": "heart"}).split_knot(1)

@@ -64,6 +64,9 @@ pub enum Action {
     /// blending surface a row of local patches along the u-isocurve (Shift + click: a
     /// column along the v-isocurve).
     InsertLocal,
+    /// Split a knot of the selected blending-spline curve: that of the selected local
+    /// curve at once, else the next click splits the knot nearest it.
+    SplitKnot,
     /// Show or hide the curvature comb of the curves.
     ToggleComb,
     /// Show or hide the continuity at knots and junctions.
@@ -228,6 +231,17 @@ pub const ACTIONS: &[ActionSpec] = &[
                of local patches along the u-isocurve through the click (Shift + click: along v), each fitted to the \
                shape there (its Taylor polynomial), so the shape changes only between the neighbouring knots and little",
         keys: &[(NONE, Key::L)],
+        menu: Some(Menu::Edit),
+        panel: true,
+        undoable: true,
+    },
+    ActionSpec {
+        action: Action::SplitKnot,
+        label: "Split knot",
+        help: "double a knot of the selected blending-spline curve (that of the selected local curve, else the one \
+               nearest the next click) and copy its local: the curve does not change, and each copy, dragged, turns \
+               and scales about the joint (a corner that stays continuous)",
+        keys: &[(NONE, Key::D)],
         menu: Some(Menu::Edit),
         panel: true,
         undoable: true,

@@ -129,8 +129,8 @@ fn diagonal(points: impl Iterator<Item = [f64; 3]>) -> f64 {
 }
 
 /// The parameters where a curve's pieces meet: the distinct interior knots of a B-spline
-/// or NURBS document, the knots (local centres) of a blending-spline curve inside its
-/// domain.
+/// or NURBS document, the distinct knots (local centres; a split knot once) of a
+/// blending-spline curve inside its domain.
 fn junction_parameters(doc: &CurveDocument) -> Vec<f64> {
     let interior = |knots: &[f64]| -> Vec<f64> {
         let (Some(&a), Some(&b)) = (knots.first(), knots.last()) else { return Vec::new() };
@@ -140,7 +140,10 @@ fn junction_parameters(doc: &CurveDocument) -> Vec<f64> {
     };
     fn centres<const D: usize>(c: &BlendingSplineCurve<D>) -> Vec<f64> {
         let domain = c.domain();
-        (0..c.local_count()).map(|k| c.centre(k)).filter(|&t| t > domain.start && t < domain.end).collect()
+        let mut inner: Vec<f64> =
+            (0..c.local_count()).map(|k| c.centre(k)).filter(|&t| t > domain.start && t < domain.end).collect();
+        inner.dedup();
+        inner
     }
     match doc {
         CurveDocument::Bspline(d) => interior(&d.knots),

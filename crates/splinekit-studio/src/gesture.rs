@@ -5,7 +5,9 @@
 //! multiplies by the ratio of the cursor's distances from the handle. A control point of a
 //! local Bézier moves in the local's rest frame by the inverse of its frame's linear part
 //! applied to the world displacement, so that its world position o + T(P − o) follows the
-//! mouse (GMlib's `updateCoeffs`).
+//! mouse (GMlib's `updateCoeffs`). A copy of a split knot (a handle with a pivot, the
+//! joint) turns and scales about the joint instead of moving, so the curve stays continuous
+//! there: a plain drag does both at once, the handle following the cursor.
 
 use serde_json::Value;
 use splinekit_scene::scenes::SceneDocument;
@@ -29,6 +31,11 @@ pub enum GestureKind {
     /// Change the weight of a NURBS or rational Bézier control point (held W): dragging
     /// up multiplies it by e^(Δy/100) for Δy pixels, down divides.
     Weight,
+    /// Turn and scale about the handle's pivot at once, by the angle the cursor sweeps
+    /// around it and the ratio of its distances from it, so that the handle follows the
+    /// cursor in the view plane: a plain drag of a copy of a split knot, whose joint (the
+    /// pivot) stays put.
+    TurnScale,
 }
 
 /// The value a handle had when the drag started.
@@ -104,6 +111,15 @@ impl Gesture {
         mouse: [f64; 2],
     ) -> Option<Gesture> {
         let (handle_px, depth) = projector.project(handle.position)?;
+        // A copy of a split knot turns and scales about its joint, whatever the drag.
+        let pivot = handle.pivot.filter(|_| handle.kind.is_local() && kind != GestureKind::Weight);
+        let (handle_px, kind) = match pivot {
+            Some(p) => {
+                let kind = if matches!(kind, GestureKind::Move(_)) { GestureKind::TurnScale } else { kind };
+                (projector.project(p)?.0, kind)
+            }
+            None => (handle_px, kind),
+        };
         let weight = (kind == GestureKind::Weight).then(|| weight_of(scene, handle)).flatten();
         let start = if let Some((pointer, w)) = weight {
             Start::Weight { pointer, w }
@@ -195,8 +211,9 @@ impl Gesture {
                 GestureKind::Move(axis) => GroupMove::Translate(self.delta(projector, mouse, axis, snap)),
                 GestureKind::Rotate => GroupMove::Rotate { center: *center, axis, angle: self.angle(mouse) },
                 GestureKind::Scale => GroupMove::Scale { center: *center, factor: self.factor(mouse) },
-                // A weight drag changes one handle's weight, never a group's.
-                GestureKind::Weight => GroupMove::Translate([0.0; 3]),
+                // A weight drag changes one handle's weight, never a group's; a group is
+                // never turned and scaled about a copy's joint.
+                GestureKind::Weight | GestureKind::TurnScale => GroupMove::Translate([0.0; 3]),
             };
             return group.edit(&map);
         }
@@ -216,6 +233,14 @@ impl Gesture {
                 to_json(&rotated(t, &field, axis, angle, dim, self.handle.origin)?)
             }
             (Start::Transform(t), GestureKind::Scale | GestureKind::Weight) => to_json(&scaled(t, self.factor(mouse))),
+            (Start::Transform(t), GestureKind::TurnScale) => {
+                let d = projector.view_direction();
+                let axis = [-d[0], -d[1], -d[2]];
+                let angle = self.angle(mouse);
+                let angle = if dim == 2 { angle * axis[2].signum() } else { angle };
+                let turned = rotated(t, &field, axis, angle, dim, self.handle.origin)?;
+                to_json(&scaled(&turned, self.factor(mouse)))
+            }
             (Start::Coordinates(c), kind) => {
                 let delta = self.delta(projector, mouse, move_axis(kind), snap);
                 let moved: Vec<f64> =

@@ -45,6 +45,12 @@ pub struct Handle {
     pub origin: [f64; 3],
     /// Number of coordinates of the shape (2 or 3).
     pub dimension: usize,
+    /// A copy of a split knot (a local curve whose support ends at its own knot): the
+    /// joint, its moved origin o + t, about which a drag turns and scales it
+    /// ([`crate::gesture`]); the handle itself then sits on the copy's local curve a third
+    /// (the first copy) or half (the second) of the way from the joint to the neighbouring
+    /// knot. `None` for every other handle.
+    pub pivot: Option<[f64; 3]>,
 }
 
 impl HandleKind {
@@ -136,26 +142,27 @@ pub fn handles_with<'a>(
             ShapeDocument::Curve(c) => c.decoration(),
             ShapeDocument::Surface(s) => s.decoration(),
         };
-        let mut push = |kind, p: &[f64], o: &[f64], dimension| {
-            out.push(Handle { object, kind, position: to3(p), origin: to3(o), dimension })
+        let mut push = |kind, p: &[f64], o: &[f64], dimension, pivot: Option<&[f64]>| {
+            let pivot = pivot.map(to3);
+            out.push(Handle { object, kind, position: to3(p), origin: to3(o), dimension, pivot })
         };
         match decoration {
             Decoration::None => {}
             Decoration::ControlPolygon { points, field, .. } => {
                 for (i, p) in points.iter().enumerate() {
-                    push(HandleKind::ControlPoint(i, field), p, p, p.len().min(3));
+                    push(HandleKind::ControlPoint(i, field), p, p, p.len().min(3), None);
                 }
             }
             Decoration::ControlNet(net) => {
                 for (i, row) in net.iter().enumerate() {
                     for (j, p) in row.iter().enumerate() {
-                        push(HandleKind::NetPoint(i, j), p, p, p.len().min(3));
+                        push(HandleKind::NetPoint(i, j), p, p, p.len().min(3), None);
                     }
                 }
             }
             Decoration::Cage { vertices, .. } => {
                 for (i, p) in vertices.iter().enumerate() {
-                    push(HandleKind::ControlPoint(i, "vertices"), p, p, 3);
+                    push(HandleKind::ControlPoint(i, "vertices"), p, p, 3, None);
                 }
             }
             Decoration::LocalCurves(d) => local_curves(d, &mut push).map_err(within)?,
@@ -169,10 +176,13 @@ fn to3(p: &[f64]) -> [f64; 3] {
     [p.first().copied().unwrap_or(0.0), p.get(1).copied().unwrap_or(0.0), p.get(2).copied().unwrap_or(0.0)]
 }
 
-/// The moved origins o_k + t_k of a blending-spline curve's locals.
+/// The moved origins o_k + t_k of a blending-spline curve's locals; for the two copies
+/// of a split knot (a local whose support [c_{k−1}, c_{k+1}] ends at its own knot c_k),
+/// the local's world point a third (the first copy) or half (the second) of the way from
+/// c_k to the other end of its support, with the moved origin (the joint) as the pivot.
 fn local_curves(
     d: &BlendingSplineDoc,
-    push: &mut impl FnMut(HandleKind, &[f64], &[f64], usize),
+    push: &mut impl FnMut(HandleKind, &[f64], &[f64], usize, Option<&[f64]>),
 ) -> Result<(), DocumentError> {
     macro_rules! origins {
         ($dim:literal) => {{
@@ -180,9 +190,19 @@ fn local_curves(
             for k in 0..c.local_count() {
                 let o = c.origin(k);
                 let moved = c.transform(k).apply_point_about(&o, &o);
-                push(HandleKind::LocalCurve(k), moved.as_slice(), o.as_slice(), $dim);
+                let (centre, support) = (c.centre(k), c.local_support(k));
+                // The first copy a third of the way, the second halfway: apart even where
+                // the local is symmetric about its knot (at a cusp of the model).
+                let (other, part) = if support.end == centre { (support.start, 3.0) } else { (support.end, 2.0) };
+                if support.start == centre || support.end == centre {
+                    let mut at = [splinekit::Point::<$dim>::zeros(); 1];
+                    c.eval_local(k, centre + (other - centre) / part, &mut at);
+                    push(HandleKind::LocalCurve(k), at[0].as_slice(), o.as_slice(), $dim, Some(moved.as_slice()));
+                } else {
+                    push(HandleKind::LocalCurve(k), moved.as_slice(), o.as_slice(), $dim, None);
+                }
                 for (i, p) in c.local_bezier_world_points(k).unwrap_or_default().iter().enumerate() {
-                    push(HandleKind::LocalCurvePoint(k, i), p.as_slice(), p.as_slice(), $dim);
+                    push(HandleKind::LocalCurvePoint(k, i), p.as_slice(), p.as_slice(), $dim, None);
                 }
             }
         }};
@@ -201,7 +221,7 @@ fn local_curves(
 fn local_patches(
     d: &BlendingSplineSurfaceDoc,
     built: Option<&BlendingSplineSurface<3>>,
-    push: &mut impl FnMut(HandleKind, &[f64], &[f64], usize),
+    push: &mut impl FnMut(HandleKind, &[f64], &[f64], usize, Option<&[f64]>),
 ) -> Result<(), DocumentError> {
     let owned;
     let s = match built {
@@ -216,10 +236,16 @@ fn local_patches(
         for l in 0..nv {
             let o = s.origin(k, l);
             let moved = s.transform(k, l).apply_point_about(&o, &o);
-            push(HandleKind::LocalPatch(k, l), moved.as_slice(), o.as_slice(), 3);
+            push(HandleKind::LocalPatch(k, l), moved.as_slice(), o.as_slice(), 3, None);
             if let Some((world, (_, dv))) = s.bezier_net(k, l) {
                 for (j, p) in world.iter().enumerate() {
-                    push(HandleKind::LocalPatchPoint(k, l, j / (dv + 1), j % (dv + 1)), p.as_slice(), p.as_slice(), 3);
+                    push(
+                        HandleKind::LocalPatchPoint(k, l, j / (dv + 1), j % (dv + 1)),
+                        p.as_slice(),
+                        p.as_slice(),
+                        3,
+                        None,
+                    );
                 }
             }
         }

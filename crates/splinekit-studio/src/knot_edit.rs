@@ -28,6 +28,9 @@ pub enum KnotTool {
     /// Insert a local curve (on a blending surface, a row or column of local patches) at
     /// the clicked parameter of a blending spline ([`crate::local_insert`]).
     InsertLocal,
+    /// Split the knot of a blending-spline curve nearest the clicked parameter
+    /// ([`crate::knot_split`]).
+    SplitKnot,
 }
 
 /// The curve document of object `object`'s shape, when it is one `refine` works on: one

@@ -49,6 +49,7 @@ pub mod group_move;
 pub mod handles;
 pub mod history;
 pub mod knot_edit;
+pub mod knot_split;
 pub mod live_surfaces;
 pub mod live_view;
 pub mod local_insert;

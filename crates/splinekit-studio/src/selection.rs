@@ -170,6 +170,7 @@ mod tests {
             position: [i as f64, 0.0, 0.0],
             origin: [i as f64, 0.0, 0.0],
             dimension: 2,
+            pivot: None,
         }
     }
 

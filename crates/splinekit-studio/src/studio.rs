@@ -22,6 +22,7 @@ use crate::gesture::{Gesture, GestureKind};
 use crate::group_move::{GroupMove, GroupStart};
 use crate::handles::{Handle, HandleKind};
 use crate::knot_edit::{self, KnotTool};
+use crate::knot_split;
 use crate::live_view::Changes;
 use crate::local_insert;
 use crate::net_knot_edit;
@@ -58,7 +59,8 @@ impl ViewScene<'_> {
     }
 }
 
-/// The handles (patch origins and control points, which the renderer does not mark), the
+/// The handles (patch origins and control points, which the renderer does not mark, and
+/// the handles of a split knot's copies, each with a line to its joint), the
 /// control polygon of the selected local Bézier curve or the net (rows and columns) of the
 /// selected Bézier patch, and the selected handles (the last picked largest) and the hovered
 /// one drawn larger.
@@ -88,7 +90,14 @@ fn overlay_handles(
     for points in rows.into_iter().chain(columns).filter(|l| l.len() > 1) {
         rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
     }
-    for h in handles.iter().filter(|h| !matches!(h.kind, HandleKind::LocalCurve(_)) && h.shown_with(selected)) {
+    // The renderer marks local curves' origins; a copy of a split knot has its handle off
+    // the origin (the joint), drawn here with a line to the joint it turns about.
+    for h in handles.iter().filter(|h| h.pivot.is_some() && h.shown_with(selected)) {
+        let points = [h.pivot.unwrap_or(h.position), h.position].map(|p| p.map(|x| x as f32)).to_vec();
+        rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
+    }
+    let drawn = |h: &Handle| !matches!(h.kind, HandleKind::LocalCurve(_)) || h.pivot.is_some();
+    for h in handles.iter().filter(|h| drawn(h) && h.shown_with(selected)) {
         let position = h.position.map(|x| x as f32);
         rs.points.push(PointItem { position, color: [0.15, 0.15, 0.15, 1.0], size: 7.0 });
     }
@@ -261,6 +270,12 @@ impl Studio {
             KnotTool::Remove => {
                 self.curve_object().map(|_| "click on the curve near the knot to remove (Escape: cancel)".into())
             }
+            KnotTool::SplitKnot => match shape {
+                Some(shape) if knot_split::splits(shape) => {
+                    Ok("click on the blending spline near the knot to split (Escape: cancel)".into())
+                }
+                _ => Err("split knot: select a blending-spline curve first".into()),
+            },
         };
         match armed {
             Ok(m) => {
@@ -333,6 +348,11 @@ impl Studio {
             }
         };
         let shape = &self.document.scene().objects[object].shape;
+        if tool == KnotTool::SplitKnot && !knot_split::splits(shape) {
+            self.knot_tool = None;
+            self.status.message = Some("split knot: select a blending-spline curve first".into());
+            return;
+        }
         let at = knot_edit::curve_samples(shape, knot_edit::SAMPLES)
             .map(|samples| knot_edit::parameter_at(&samples, projector, mouse));
         let u = match at {
@@ -350,9 +370,51 @@ impl Studio {
             KnotTool::Insert => knot_edit::insert(shape, object, u),
             KnotTool::Remove => knot_edit::remove(shape, object, u, self.knot_tolerance),
             KnotTool::InsertLocal => local_insert::insert_curve(shape, object, u),
+            KnotTool::SplitKnot => {
+                let split = knot_split::split_near(shape, object, u);
+                self.knot_tool = None;
+                match split {
+                    Ok((edit, k)) => self.split_done(edit, k),
+                    Err(e) => self.status.message = Some(e),
+                }
+                return;
+            }
         };
         self.knot_tool = None;
         self.apply_or_say(edit);
+    }
+
+    /// Split knot: with a local curve (its origin or a control point) of the selected
+    /// blending-spline curve selected, splits its knot at once (one undo step); otherwise
+    /// arms the tool, and the next click splits the knot nearest it.
+    fn split_knot(&mut self) {
+        let Some(object) = self.selection.object else {
+            self.status.message = Some("split knot: select a blending-spline curve first".into());
+            return;
+        };
+        let shape = &self.document.scene().objects[object].shape;
+        let local = self.selection.handle.as_ref().filter(|h| h.object == object).and_then(|h| h.kind.piece());
+        match local {
+            Some((k, None)) if knot_split::splits(shape) => {
+                let edit = knot_split::split_local(shape, object, k);
+                match edit {
+                    Ok(edit) => self.split_done(edit, k),
+                    Err(e) => self.status.message = Some(e),
+                }
+            }
+            _ => self.arm(KnotTool::SplitKnot),
+        }
+    }
+
+    /// Applies a split of knot `k` (one undo step) and says what the copies do.
+    fn split_done(&mut self, edit: Edit, k: usize) {
+        if self.edit(edit, false) {
+            self.refresh_selection();
+            self.status.message = Some(format!(
+                "knot {k} split: local curves {k} and {} meet there; drag either to turn and scale it about the joint",
+                k + 1
+            ));
+        }
     }
 
     /// Selects no handle.
@@ -433,6 +495,7 @@ impl Studio {
             Action::InsertKnot => self.arm(KnotTool::Insert),
             Action::RemoveKnot => self.arm(KnotTool::Remove),
             Action::InsertLocal => self.arm(KnotTool::InsertLocal),
+            Action::SplitKnot => self.split_knot(),
             Action::ElevateDegree => {
                 let edit =
                     self.curve_object().and_then(|o| knot_edit::elevate(&self.document.scene().objects[o].shape, o));

@@ -95,7 +95,8 @@ pub struct BlendingSplineDoc {
     pub local_curves: LocalCurves,
     /// Knots: open, one per local; closed, one more. With a list of local curves, required;
     /// with a model, optional (default: spaced by `knot_spacing`; given, e.g. after a local
-    /// was inserted, they must span the model's domain).
+    /// was inserted or a knot split, they must span the model's domain). Non-decreasing; an
+    /// interior value may appear twice (a split knot: a C⁰ joint).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub knots: Option<Vec<f64>>,
     /// Knot placement along a model (default uniform).

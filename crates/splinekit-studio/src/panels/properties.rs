@@ -106,6 +106,7 @@ fn action_buttons(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, offered: &[Actio
                 Action::InsertKnot => cx.knot_tool == Some(KnotTool::Insert),
                 Action::RemoveKnot => cx.knot_tool == Some(KnotTool::Remove),
                 Action::InsertLocal => cx.knot_tool == Some(KnotTool::InsertLocal),
+                Action::SplitKnot => cx.knot_tool == Some(KnotTool::SplitKnot),
                 _ => false,
             };
             let button = ui.add(egui::Button::new(s.label).selected(armed)).on_hover_text(s.help);
@@ -175,8 +176,9 @@ fn blending_curve(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
     if read(cx, object, "/shape/model").is_some() {
         local_count(ui, cx, object, ["/shape/local_curves", "/shape/knots"], "local curves", 10);
         local_kind(ui, cx, object, false);
-        action_buttons(ui, cx, &[Action::InsertLocal]);
+        action_buttons(ui, cx, &[Action::InsertLocal, Action::SplitKnot]);
         ui.label("Insert local piece, then click on the curve: a local curve there");
+        ui.label("Split knot: the selected local's knot, else click near one");
     }
     let closed = is_closed(cx, object);
     toggle(ui, cx, object, "/shape/closed", "closed", closed);

@@ -368,9 +368,48 @@ impl<const D: usize> BlendingSplineCurve<D> {
     /// Splits interior knot k: the knot is doubled and local k copied, so the two copies
     /// can be moved independently (a C⁰ joint at c_k that stays continuous under rotations
     /// and scalings about the local origin). The copy has index k + 1.
+    ///
+    /// The curve does not change: on [c_{k−1}, c_k) locals k − 1 and k are blended as
+    /// before, on [c_k, c_{k+2}) the copy and the old local k + 1, and the zero-length
+    /// interval between the two copies is never active. At c_k the left limit is local
+    /// k's point there and the right limit the copy's: equal while the two frames agree
+    /// there, so turning or scaling either copy about its origin (the model's point at
+    /// c_k for a spline built from a model) keeps the curve continuous, while moving one
+    /// opens a gap of the move. A Bézier copy is re-expressed on its new support (the
+    /// left copy's [c_{k−1}, c_k], the right one's [c_k, c_{k+2}]; the same polynomial,
+    /// [`super::hermite::rebased`]), so [`Self::local_bezier_points`] are relative to
+    /// [`Self::local_support`] as for every other local.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use splinekit::blend::{BlendingCurveOptions, BlendingSplineCurve};
+    /// use splinekit::curve::Curve;
+    /// use splinekit::curve::model::Circle;
+    /// let circle = Arc::new(Circle::new(1.0).unwrap());
+    /// let mut c = BlendingSplineCurve::from_model(circle, 6, &BlendingCurveOptions::default()).unwrap();
+    /// let before = c.clone();
+    /// c.split_knot(2).unwrap();
+    /// assert_eq!((c.local_count(), c.centre(2), c.centre(3)), (7, before.centre(2), before.centre(2)));
+    /// assert!((c.point(1.3) - before.point(1.3)).norm() < 1e-12);
+    /// assert!(c.split_knot(2).unwrap_err().to_string().contains("already double"));
+    /// ```
     pub fn split_knot(&mut self, k: usize) -> Result<()> {
-        self.knots.split(k)?;
-        let copy = self.locals[k].clone();
+        let mut knots = self.knots.clone();
+        knots.split(k)?;
+        let mut copy = self.locals[k].clone();
+        let mut left = self.locals[k].clone();
+        for (local, j) in [(&mut left, k), (&mut copy, k + 1)] {
+            if let LocalCurve::Bezier { fitted, .. } = &local.curve {
+                let moved = super::hermite::rebased(fitted, knots.support(j))?;
+                let transform = local.transform;
+                local.curve = LocalCurve::bezier(moved);
+                local.set_transform(transform);
+            }
+        }
+        self.knots = knots;
+        self.locals[k] = left;
         self.locals.insert(k + 1, copy);
         Ok(())
     }
@@ -655,5 +694,121 @@ impl<const D: usize> Curve<D> for BlendingSplineCurve<D> {
         };
         let general = |t: f64, o: &mut [Point<D>]| self.eval_side(t, Side::Right, o);
         curve_batch::eval_many(&self.knots, &self.bfunction, local, general, params, order, out);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::curve::model::Heart;
+
+    fn heart(local: LocalKind) -> BlendingSplineCurve<3> {
+        let heart: Arc<dyn Curve<3>> = Arc::new(Heart::new(1.0).unwrap());
+        let options = BlendingCurveOptions { local, closed: Some(true), ..Default::default() };
+        BlendingSplineCurve::from_model(heart, 10, &options).unwrap()
+    }
+
+    /// Local 3's control points pulled and local 5 turned and moved: a split of knot 3
+    /// copies an edited local next to edited neighbours.
+    fn edited(local: LocalKind) -> BlendingSplineCurve<3> {
+        let mut c = heart(local);
+        if let Some(p) = c.local_bezier_points(3) {
+            let mut p = p.to_vec();
+            p[1] += Point::<3>::new(0.8, -0.5, 0.3);
+            c.set_local_bezier_points(3, p).unwrap();
+        }
+        let turn = Affine::rotation(Point::<3>::new(0.0, 0.0, 1.0), 0.2).unwrap();
+        c.set_transform(5, Affine::translation(Point::<3>::new(0.4, 0.2, 0.0)).after(&turn));
+        c
+    }
+
+    fn values(c: &BlendingSplineCurve<3>, t: f64, side: Side) -> [Point<3>; 3] {
+        let mut out = [Point::<3>::zeros(); 3];
+        c.eval_side(t, side, &mut out);
+        out
+    }
+
+    #[test]
+    fn a_split_knot_leaves_the_curve_as_it_was() {
+        // (The heart has a cusp at knot 0, where arc locals have no tangent.)
+        for local in [LocalKind::Bezier(2), LocalKind::Bezier(3), LocalKind::SubCurve] {
+            for k in [3, 9] {
+                let before = edited(local);
+                let mut c = before.clone();
+                c.split_knot(k).unwrap();
+                assert_eq!(c.local_count(), 11);
+                assert_eq!((c.centre(k), c.centre(k + 1)), (before.centre(k), before.centre(k)));
+                // The copies' Bézier points are relative to their new supports.
+                for j in [k, k + 1] {
+                    if let Some(p) = c.local_bezier_points(j) {
+                        let support = c.local_support(j);
+                        let at = |t: f64| {
+                            let mut o = [Point::<3>::zeros(); 1];
+                            c.eval_local(j, t, &mut o);
+                            o[0]
+                        };
+                        let bezier = BezierCurve::new(p.to_vec()).unwrap();
+                        let rest = |s: f64| bezier.point(s);
+                        // Untransformed (local 3): its rest points are its world points.
+                        if j <= 4 {
+                            assert!((at(support.start) - rest(0.0)).norm() < 1e-12, "{local:?} {j}");
+                            assert!((at(support.end) - rest(1.0)).norm() < 1e-12, "{local:?} {j}");
+                        }
+                    }
+                }
+                let n = 997;
+                let params: Vec<f64> = (0..=n).map(|i| c.domain().lerp(i as f64 / n as f64)).collect();
+                let mut many = vec![Point::<3>::zeros(); 2 * params.len()];
+                c.eval_many(&params, 1, &mut many);
+                for (i, &t) in params.iter().chain([before.centre(k)].iter()).enumerate() {
+                    for side in [Side::Left, Side::Right] {
+                        let (a, b) = (values(&c, t, side), values(&before, t, side));
+                        for order in 0..3 {
+                            let tol = 1e-12 * 10f64.powi(order as i32 * 2) * b[order].norm().max(1.0);
+                            assert!((a[order] - b[order]).norm() < tol, "{local:?} k={k} order {order} at {t}");
+                        }
+                    }
+                    if i < params.len() {
+                        assert!((many[2 * i] - before.point(t)).norm() < 1e-12, "{local:?} batch at {t}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn turning_or_scaling_one_copy_keeps_the_joint_and_moving_it_opens_a_gap() {
+        let mut c = heart(LocalKind::Bezier(3));
+        let before = c.clone();
+        c.split_knot(4).unwrap();
+        let t = c.centre(4);
+        let o = c.origin(5);
+        let turn = Affine::rotation(Point::<3>::new(0.2, 0.1, 1.0), 0.7).unwrap().after(&Affine::uniform_scale(1.6));
+        c.set_transform(5, turn);
+        let (left, right) = (values(&c, t, Side::Left), values(&c, t, Side::Right));
+        assert!((left[0] - right[0]).norm() < 1e-12, "C0: {} vs {}", left[0], right[0]);
+        assert!((left[0] - before.point(t)).norm() < 1e-12 && (o - before.point(t)).norm() < 1e-12);
+        // The tangents now differ: a corner.
+        assert!((left[1] - right[1]).norm() > 0.1, "a kink: {} vs {}", left[1], right[1]);
+        // Left of the joint nothing moved; right of it the turned copy's support did.
+        let (a, b) = (c.centre(3), c.centre(6));
+        assert!((c.point(0.5 * (a + t)) - before.point(0.5 * (a + t))).norm() < 1e-12);
+        assert!((c.point(0.5 * (t + b)) - before.point(0.5 * (t + b))).norm() > 1e-3);
+        // A move of the left copy opens a gap of its size at the joint.
+        c.set_transform(4, Affine::translation(Point::<3>::new(0.0, 0.3, 0.0)));
+        let gap = values(&c, t, Side::Left)[0] - values(&c, t, Side::Right)[0];
+        assert!((gap.norm() - 0.3).abs() < 1e-12, "{gap}");
+    }
+
+    #[test]
+    fn only_single_interior_knots_split() {
+        let mut c = heart(LocalKind::Bezier(3));
+        let e = c.split_knot(0).unwrap_err().to_string();
+        assert!(e.contains("1..=9 can be split, got 0"), "{e}");
+        assert!(c.split_knot(10).is_err());
+        c.split_knot(9).unwrap();
+        assert_eq!(c.local_count(), 11);
+        assert!(c.split_knot(9).unwrap_err().to_string().contains("already double"));
+        assert!(c.split_knot(10).unwrap_err().to_string().contains("already double"));
     }
 }
