@@ -50,8 +50,7 @@ pub enum ShapeDocument {
 impl ShapeDocument {
     /// Parses a shape document from JSON text.
     pub fn from_json(text: &str) -> Result<Self> {
-        let value: Value =
-            serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
+        let value = crate::json::parse_text(text)?;
         Self::from_value(value)
     }
 
