@@ -16,6 +16,7 @@ mod defaults;
 pub mod dimension;
 pub mod error;
 pub mod json;
+mod keyed;
 pub mod output_file;
 pub mod points;
 pub mod refine;

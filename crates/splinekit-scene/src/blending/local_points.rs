@@ -7,13 +7,13 @@
 //! first index along u, as in every net). Read from and written as an object keyed by the
 //! local's index; the entries are applied before the transforms and the animation.
 
-use serde::ser::SerializeMap;
 use serde::{Deserializer, Serializer};
 use serde_json::Value;
 use splinekit::Point;
 
 use crate::error::{DocumentError, Result};
 use crate::json::{fields, kind, nested};
+use crate::keyed;
 
 /// Edited control points of a blending-spline curve's Bézier locals, by local index.
 pub type LocalControlPoints = Vec<(usize, Vec<Vec<f64>>)>;
@@ -54,11 +54,7 @@ pub mod by_index {
 
     /// Writes `local_control_points` as an object keyed by index.
     pub fn serialize<S: Serializer>(entries: &LocalControlPoints, s: S) -> std::result::Result<S::Ok, S::Error> {
-        let mut map = s.serialize_map(Some(entries.len()))?;
-        for (k, points) in entries {
-            map.serialize_entry(&k.to_string(), points)?;
-        }
-        map.end()
+        keyed::serialize(entries, keyed::index_key, s)
     }
 }
 
@@ -72,9 +68,7 @@ pub mod by_pair {
             let Some(map) = object(value, "patch index \"k,l\"")? else { return Ok(Vec::new()) };
             map.into_iter()
                 .map(|(key, net)| {
-                    let pair = key
-                        .split_once(',')
-                        .and_then(|(a, b)| Some((a.trim().parse().ok()?, b.trim().parse().ok()?)))
+                    let pair = keyed::parse_pair(&key)
                         .ok_or_else(|| DocumentError::new(key.as_str(), "keys must be patch indices \"k,l\""))?;
                     Ok((pair, fields(net).map_err(|e| e.within(&key))?))
                 })
@@ -84,11 +78,7 @@ pub mod by_pair {
 
     /// Writes `local_control_points` as an object keyed by `"k,l"`.
     pub fn serialize<S: Serializer>(entries: &PatchControlPoints, s: S) -> std::result::Result<S::Ok, S::Error> {
-        let mut map = s.serialize_map(Some(entries.len()))?;
-        for ((k, l), net) in entries {
-            map.serialize_entry(&format!("{k},{l}"), net)?;
-        }
-        map.end()
+        keyed::serialize(entries, keyed::pair_key, s)
     }
 }
 
