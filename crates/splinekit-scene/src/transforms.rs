@@ -101,13 +101,7 @@ pub mod by_index {
                 .enumerate()
                 .map(|(i, t)| Ok((i, fields(t.clone()).map_err(|e| e.within(&format!("[{i}]")))?)))
                 .collect(),
-            Value::Object(map) => map
-                .iter()
-                .map(|(k, t)| {
-                    let i: usize = k.parse().map_err(|_| DocumentError::new(k, "keys must be local-curve indices"))?;
-                    Ok((i, fields(t.clone()).map_err(|e| e.within(k))?))
-                })
-                .collect(),
+            Value::Object(map) => keyed::entries(map, |key| key.parse().ok(), "keys must be local-curve indices"),
             other => Err(DocumentError::new("", format!("expected a list or an object, got {}", kind(&other)))),
         }
     }
@@ -155,14 +149,7 @@ pub mod by_pair {
                 }
                 Ok(out)
             }
-            Value::Object(map) => map
-                .iter()
-                .map(|(key, t)| {
-                    let pair = keyed::parse_pair(key)
-                        .ok_or_else(|| DocumentError::new(key, "keys must be patch indices \"k,l\""))?;
-                    Ok((pair, fields(t.clone()).map_err(|e| e.within(key))?))
-                })
-                .collect(),
+            Value::Object(map) => keyed::entries(map, keyed::parse_pair, "keys must be patch indices \"k,l\""),
             other => Err(DocumentError::new("", format!("expected a list of rows or an object, got {}", kind(&other)))),
         }
     }

@@ -12,7 +12,7 @@ use serde_json::Value;
 use splinekit::Point;
 
 use crate::error::{DocumentError, Result};
-use crate::json::{fields, kind, nested};
+use crate::json::{kind, nested};
 use crate::keyed;
 
 /// Edited control points of a blending-spline curve's Bézier locals, by local index.
@@ -40,15 +40,7 @@ pub mod by_index {
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<LocalControlPoints, D::Error> {
         nested(d, |value| {
             let Some(map) = object(value, "local-curve index")? else { return Ok(Vec::new()) };
-            map.into_iter()
-                .map(|(key, points)| {
-                    let k: usize = key
-                        .trim()
-                        .parse()
-                        .map_err(|_| DocumentError::new(key.as_str(), "keys must be local-curve indices (\"3\")"))?;
-                    Ok((k, fields(points).map_err(|e| e.within(&key))?))
-                })
-                .collect()
+            keyed::entries(map, |key| key.trim().parse().ok(), "keys must be local-curve indices (\"3\")")
         })
     }
 
@@ -66,13 +58,7 @@ pub mod by_pair {
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<PatchControlPoints, D::Error> {
         nested(d, |value| {
             let Some(map) = object(value, "patch index \"k,l\"")? else { return Ok(Vec::new()) };
-            map.into_iter()
-                .map(|(key, net)| {
-                    let pair = keyed::parse_pair(&key)
-                        .ok_or_else(|| DocumentError::new(key.as_str(), "keys must be patch indices \"k,l\""))?;
-                    Ok((pair, fields(net).map_err(|e| e.within(&key))?))
-                })
-                .collect()
+            keyed::entries(map, keyed::parse_pair, "keys must be patch indices \"k,l\"")
         })
     }
 
