@@ -56,3 +56,43 @@ pub(crate) fn entries<K, T: DeserializeOwned>(
         })
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use serde_json::json;
+
+    use super::*;
+
+    #[test]
+    fn pair_keys_parse_two_indices_and_refuse_the_rest() {
+        assert_eq!(parse_pair("2,3"), Some((2, 3)));
+        assert_eq!(parse_pair(" 2 , 3 "), Some((2, 3)));
+        for key in ["2", "2,", ",3", "2;3", "-1,0", "a,b", "1,2,3"] {
+            assert_eq!(parse_pair(key), None, "{key}");
+        }
+        assert_eq!(pair_key(&(2, 3)), "2,3");
+        assert_eq!(index_key(&7), "7");
+    }
+
+    #[test]
+    fn entries_keep_the_object_order_and_locate_errors() {
+        let Value::Object(map) = json!({"3": 1.5, "0": 2.5}) else { unreachable!() };
+        let read: Vec<(usize, f64)> = entries(map, |k| k.parse().ok(), "bad key").unwrap();
+        assert_eq!(read, vec![(3, 1.5), (0, 2.5)]);
+
+        let Value::Object(map) = json!({"0": 1.0, "x": 2.0}) else { unreachable!() };
+        let err = entries::<usize, f64>(map, |k| k.parse().ok(), "keys must be indices").unwrap_err();
+        assert_eq!(err.to_string(), "x: keys must be indices");
+
+        let Value::Object(map) = json!({"1,2": "text"}) else { unreachable!() };
+        let err = entries::<(usize, usize), f64>(map, parse_pair, "bad key").unwrap_err();
+        assert_eq!(err.path, "1,2");
+    }
+
+    #[test]
+    fn serialize_writes_one_object_in_list_order() {
+        let list = vec![((1, 0), 0.5), ((0, 2), 1.5)];
+        let value = serialize(&list, pair_key, serde_json::value::Serializer).unwrap();
+        assert_eq!(serde_json::to_string(&value).unwrap(), r#"{"1,0":0.5,"0,2":1.5}"#);
+    }
+}
