@@ -14,6 +14,9 @@ pub(crate) fn tau() -> f64 {
 pub(crate) fn origin() -> Vec<f64> {
     vec![0.0, 0.0, 0.0]
 }
+pub(crate) fn x_axis() -> Vec<f64> {
+    vec![1.0, 0.0, 0.0]
+}
 pub(crate) fn z_axis() -> Vec<f64> {
     vec![0.0, 0.0, 1.0]
 }

@@ -19,29 +19,21 @@ pub const MAX_DIMENSION: usize = 4;
 /// implement `From<DocumentError>`, such as the Python bindings' `PyErr`).
 #[macro_export]
 macro_rules! with_dimension {
+    // One arm per supported dimension, each binding its own `const $d`.
+    (@arms $dim:expr, $field:expr, $d:ident => $body:expr, or $err:path, [$($n:literal),+]) => {
+        match $dim {
+            $($n => {
+                const $d: usize = $n;
+                $body
+            })+
+            other => Err($err($crate::dimension::unsupported($field, other))),
+        }
+    };
     ($dim:expr, $field:expr, $d:ident => $body:expr) => {
         $crate::with_dimension!($dim, $field, $d => $body, or ::core::convert::From::from)
     };
     ($dim:expr, $field:expr, $d:ident => $body:expr, or $err:path) => {
-        match $dim {
-            1 => {
-                const $d: usize = 1;
-                $body
-            }
-            2 => {
-                const $d: usize = 2;
-                $body
-            }
-            3 => {
-                const $d: usize = 3;
-                $body
-            }
-            4 => {
-                const $d: usize = 4;
-                $body
-            }
-            other => Err($err($crate::dimension::unsupported($field, other))),
-        }
+        $crate::with_dimension!(@arms $dim, $field, $d => $body, or $err, [1, 2, 3, 4]) // 1 … MAX_DIMENSION
     };
 }
 

@@ -58,6 +58,12 @@ where
     })
 }
 
+/// Parses JSON text into a value; invalid text is refused at `document` with serde_json's
+/// message ("invalid JSON: …"), the one entry from text of shapes and scenes alike.
+pub fn parse_text(text: &str) -> Result<Value> {
+    serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))
+}
+
 /// Splits a document object into its `type` and the remaining fields (taking the object,
 /// so that a large document is not copied).
 pub fn split_type(value: Value) -> Result<(String, Value)> {

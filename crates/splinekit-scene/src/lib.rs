@@ -16,6 +16,7 @@ mod defaults;
 pub mod dimension;
 pub mod error;
 pub mod json;
+mod keyed;
 pub mod output_file;
 pub mod points;
 pub mod refine;
@@ -50,8 +51,7 @@ pub enum ShapeDocument {
 impl ShapeDocument {
     /// Parses a shape document from JSON text.
     pub fn from_json(text: &str) -> Result<Self> {
-        let value: Value =
-            serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
+        let value = crate::json::parse_text(text)?;
         Self::from_value(value)
     }
 

@@ -503,16 +503,14 @@ pub enum SceneOrShape {
 impl SceneOrShape {
     /// Parses JSON text that is either a scene or a shape.
     pub fn from_json(text: &str) -> Result<Self> {
-        let value: Value =
-            serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
+        let value = crate::json::parse_text(text)?;
         Self::from_value(value)
     }
     /// Parses JSON text read from a file in `folder` (the current folder for standard
     /// input): as [`Self::from_json`], with the cage files of subdivision surfaces read
     /// from paths relative to `folder` ([`crate::cage_file`]).
     pub fn from_json_in(text: &str, folder: &std::path::Path) -> Result<Self> {
-        let mut value: Value =
-            serde_json::from_str(text).map_err(|e| DocumentError::new("document", format!("invalid JSON: {e}")))?;
+        let mut value = crate::json::parse_text(text)?;
         crate::cage_file::read_cage_files(&mut value, folder)?;
         Self::from_value(value)
     }

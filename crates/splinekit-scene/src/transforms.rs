@@ -80,13 +80,13 @@ pub type PatchTransforms = Vec<((usize, usize), TransformDoc)>;
 /// Per-local transforms of a blending-spline curve (`with` module for serde): read from a
 /// list (one per local, in order) or an object keyed by local index; written as the object.
 pub mod by_index {
-    use serde::ser::SerializeMap;
     use serde::{Deserializer, Serializer};
     use serde_json::Value;
 
     use super::{LocalTransforms, TransformDoc};
     use crate::error::{DocumentError, Result};
     use crate::json::{fields, kind, nested};
+    use crate::keyed;
 
     /// Reads `transforms`.
     pub fn deserialize<'de, D: Deserializer<'de>>(deserializer: D) -> std::result::Result<LocalTransforms, D::Error> {
@@ -101,13 +101,7 @@ pub mod by_index {
                 .enumerate()
                 .map(|(i, t)| Ok((i, fields(t.clone()).map_err(|e| e.within(&format!("[{i}]")))?)))
                 .collect(),
-            Value::Object(map) => map
-                .iter()
-                .map(|(k, t)| {
-                    let i: usize = k.parse().map_err(|_| DocumentError::new(k, "keys must be local-curve indices"))?;
-                    Ok((i, fields(t.clone()).map_err(|e| e.within(k))?))
-                })
-                .collect(),
+            Value::Object(map) => keyed::entries(map, |key| key.parse().ok(), "keys must be local-curve indices"),
             other => Err(DocumentError::new("", format!("expected a list or an object, got {}", kind(&other)))),
         }
     }
@@ -117,24 +111,20 @@ pub mod by_index {
         transforms: &[(usize, TransformDoc)],
         serializer: S,
     ) -> std::result::Result<S::Ok, S::Error> {
-        let mut map = serializer.serialize_map(Some(transforms.len()))?;
-        for (i, t) in transforms {
-            map.serialize_entry(&i.to_string(), t)?;
-        }
-        map.end()
+        keyed::serialize(transforms, keyed::index_key, serializer)
     }
 }
 
 /// Per-patch transforms of a blending-spline surface (`with` module for serde): read from
 /// rows (n_u lists of n_v transforms) or an object keyed by `"k,l"`; written as the object.
 pub mod by_pair {
-    use serde::ser::SerializeMap;
     use serde::{Deserializer, Serializer};
     use serde_json::Value;
 
     use super::{PatchTransforms, TransformDoc};
     use crate::error::{DocumentError, Result};
     use crate::json::{fields, kind, nested};
+    use crate::keyed;
 
     /// Reads `transforms`.
     pub fn deserialize<'de, D: Deserializer<'de>>(deserializer: D) -> std::result::Result<PatchTransforms, D::Error> {
@@ -159,16 +149,7 @@ pub mod by_pair {
                 }
                 Ok(out)
             }
-            Value::Object(map) => map
-                .iter()
-                .map(|(key, t)| {
-                    let pair = key
-                        .split_once(',')
-                        .and_then(|(a, b)| Some((a.trim().parse().ok()?, b.trim().parse().ok()?)))
-                        .ok_or_else(|| DocumentError::new(key, "keys must be patch indices \"k,l\""))?;
-                    Ok((pair, fields(t.clone()).map_err(|e| e.within(key))?))
-                })
-                .collect(),
+            Value::Object(map) => keyed::entries(map, keyed::parse_pair, "keys must be patch indices \"k,l\""),
             other => Err(DocumentError::new("", format!("expected a list of rows or an object, got {}", kind(&other)))),
         }
     }
@@ -178,10 +159,6 @@ pub mod by_pair {
         transforms: &[((usize, usize), TransformDoc)],
         serializer: S,
     ) -> std::result::Result<S::Ok, S::Error> {
-        let mut map = serializer.serialize_map(Some(transforms.len()))?;
-        for ((k, l), t) in transforms {
-            map.serialize_entry(&format!("{k},{l}"), t)?;
-        }
-        map.end()
+        keyed::serialize(transforms, keyed::pair_key, serializer)
     }
 }

@@ -7,13 +7,13 @@
 //! first index along u, as in every net). Read from and written as an object keyed by the
 //! local's index; the entries are applied before the transforms and the animation.
 
-use serde::ser::SerializeMap;
 use serde::{Deserializer, Serializer};
 use serde_json::Value;
 use splinekit::Point;
 
 use crate::error::{DocumentError, Result};
-use crate::json::{fields, kind, nested};
+use crate::json::{kind, nested};
+use crate::keyed;
 
 /// Edited control points of a blending-spline curve's Bézier locals, by local index.
 pub type LocalControlPoints = Vec<(usize, Vec<Vec<f64>>)>;
@@ -40,25 +40,13 @@ pub mod by_index {
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<LocalControlPoints, D::Error> {
         nested(d, |value| {
             let Some(map) = object(value, "local-curve index")? else { return Ok(Vec::new()) };
-            map.into_iter()
-                .map(|(key, points)| {
-                    let k: usize = key
-                        .trim()
-                        .parse()
-                        .map_err(|_| DocumentError::new(key.as_str(), "keys must be local-curve indices (\"3\")"))?;
-                    Ok((k, fields(points).map_err(|e| e.within(&key))?))
-                })
-                .collect()
+            keyed::entries(map, |key| key.trim().parse().ok(), "keys must be local-curve indices (\"3\")")
         })
     }
 
     /// Writes `local_control_points` as an object keyed by index.
     pub fn serialize<S: Serializer>(entries: &LocalControlPoints, s: S) -> std::result::Result<S::Ok, S::Error> {
-        let mut map = s.serialize_map(Some(entries.len()))?;
-        for (k, points) in entries {
-            map.serialize_entry(&k.to_string(), points)?;
-        }
-        map.end()
+        keyed::serialize(entries, keyed::index_key, s)
     }
 }
 
@@ -70,25 +58,13 @@ pub mod by_pair {
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<PatchControlPoints, D::Error> {
         nested(d, |value| {
             let Some(map) = object(value, "patch index \"k,l\"")? else { return Ok(Vec::new()) };
-            map.into_iter()
-                .map(|(key, net)| {
-                    let pair = key
-                        .split_once(',')
-                        .and_then(|(a, b)| Some((a.trim().parse().ok()?, b.trim().parse().ok()?)))
-                        .ok_or_else(|| DocumentError::new(key.as_str(), "keys must be patch indices \"k,l\""))?;
-                    Ok((pair, fields(net).map_err(|e| e.within(&key))?))
-                })
-                .collect()
+            keyed::entries(map, keyed::parse_pair, "keys must be patch indices \"k,l\"")
         })
     }
 
     /// Writes `local_control_points` as an object keyed by `"k,l"`.
     pub fn serialize<S: Serializer>(entries: &PatchControlPoints, s: S) -> std::result::Result<S::Ok, S::Error> {
-        let mut map = s.serialize_map(Some(entries.len()))?;
-        for ((k, l), net) in entries {
-            map.serialize_entry(&format!("{k},{l}"), net)?;
-        }
-        map.end()
+        keyed::serialize(entries, keyed::pair_key, s)
     }
 }
 

@@ -190,6 +190,23 @@ impl DocumentKind for NurbsDoc {
     }
 }
 
+/// The declarations the curves through `points` (Hermite, Catmull–Rom) share, written
+/// inside their `impl DocumentKind`: the points are data, not a spline's control points,
+/// so exporters approximate the curve; they give its dimension (checking them), it costs
+/// one cubic piece per point ([`piecewise_cubic_cost`]), and it has nothing to pose in time.
+macro_rules! interpolating_cubic_items {
+    () => {
+        approximated_kind_items!(SplineView, CurveForm);
+        fn dimension(&self) -> Result<usize> {
+            dimension_of("points", &self.points)
+        }
+        fn cost(&self) -> ShapeCost {
+            piecewise_cubic_cost("points", &self.points)
+        }
+        fn set_time(&mut self, _time: f64) {}
+    };
+}
+
 /// `{"type":"hermite","points":[...],"tangents":[...],"params":[...]}`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -205,13 +222,7 @@ pub struct HermiteDoc {
 
 impl DocumentKind for HermiteDoc {
     type Family = Curves;
-    approximated_kind_items!(SplineView, CurveForm);
-    fn dimension(&self) -> Result<usize> {
-        dimension_of("points", &self.points)
-    }
-    fn cost(&self) -> ShapeCost {
-        piecewise_cubic_cost("points", &self.points)
-    }
+    interpolating_cubic_items!();
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
         if self.tangents.len() != self.points.len() {
             return Err(DocumentError::new(
@@ -236,7 +247,6 @@ impl DocumentKind for HermiteDoc {
     fn decoration(&self) -> CurveDecoration<'_> {
         CurveDecoration::ControlPolygon { points: &self.points, field: "points", closed: false }
     }
-    fn set_time(&mut self, _time: f64) {}
 }
 
 /// `{"type":"catmull_rom","points":[...],"alpha":0,"closed":false}`
@@ -255,13 +265,7 @@ pub struct CatmullRomDoc {
 
 impl DocumentKind for CatmullRomDoc {
     type Family = Curves;
-    approximated_kind_items!(SplineView, CurveForm);
-    fn dimension(&self) -> Result<usize> {
-        dimension_of("points", &self.points)
-    }
-    fn cost(&self) -> ShapeCost {
-        piecewise_cubic_cost("points", &self.points)
-    }
+    interpolating_cubic_items!();
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Curve<D>>> {
         Ok(Box::new(CatmullRomCurve::new(to_points::<D>(&self.points), self.alpha, self.closed)?))
     }
@@ -276,7 +280,6 @@ impl DocumentKind for CatmullRomDoc {
     fn decoration(&self) -> CurveDecoration<'_> {
         CurveDecoration::ControlPolygon { points: &self.points, field: "points", closed: self.closed }
     }
-    fn set_time(&mut self, _time: f64) {}
 }
 
 /// `{"type":"line","from":[...],"to":[...]}`, t ∈ [0, 1].

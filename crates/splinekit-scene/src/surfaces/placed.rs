@@ -6,6 +6,7 @@ use splinekit::surface::{PlacedSurface, Surface};
 
 use super::{SurfaceDecoration, SurfaceDocument, SurfaceForm, Surfaces};
 use crate::budget::ShapeCost;
+use crate::defaults::{origin, x_axis, z_axis};
 use crate::error::{DocumentError, Result};
 use crate::points::to_point;
 use crate::registry::{DocumentKind, self_form_kind_items};
@@ -28,16 +29,6 @@ pub struct PlacedDoc {
     /// Where its x axis goes, up to the part along `axis` (default x).
     #[serde(default = "x_axis")]
     pub ref_direction: Vec<f64>,
-}
-
-fn origin() -> Vec<f64> {
-    vec![0.0; 3]
-}
-fn z_axis() -> Vec<f64> {
-    vec![0.0, 0.0, 1.0]
-}
-fn x_axis() -> Vec<f64> {
-    vec![1.0, 0.0, 0.0]
 }
 
 fn three(field: &str, v: &[f64]) -> Result<[f64; 3]> {
