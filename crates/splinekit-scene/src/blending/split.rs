@@ -21,7 +21,7 @@
 
 use splinekit::curve::Curve;
 
-use super::curve::{BlendingSource, BlendingSplineDoc, LocalCurves};
+use crate::curves::{BlendingSource, BlendingSplineDoc, LocalCurves};
 use crate::error::{DocumentError, Result};
 use crate::registry::DocumentKind;
 use crate::with_dimension;
