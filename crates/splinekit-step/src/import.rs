@@ -190,11 +190,16 @@ fn real(p: &Param) -> Result<f64> {
     }
 }
 
-fn reals(p: &Param) -> Result<Vec<f64>> {
+/// The items of a list, each read by `item`; anything but a list is refused as not `what`.
+fn list<T>(p: &Param, what: &str, item: fn(&Param) -> Result<T>) -> Result<Vec<T>> {
     match p {
-        Param::List(items) => items.iter().map(real).collect(),
-        other => Err(bad("a list of numbers", other)),
+        Param::List(items) => items.iter().map(item).collect(),
+        other => Err(bad(what, other)),
     }
+}
+
+fn reals(p: &Param) -> Result<Vec<f64>> {
+    list(p, "a list of numbers", real)
 }
 
 fn integer(p: &Param) -> Result<usize> {
@@ -218,10 +223,12 @@ fn tail(inst: &Instance, from: usize) -> Vec<Param> {
 }
 
 fn refs(p: &Param) -> Result<Vec<u64>> {
-    match p {
-        Param::List(items) => items.iter().map(reference).collect(),
-        other => Err(bad("a list of references", other)),
-    }
+    list(p, "a list of references", reference)
+}
+
+/// The multiplicities of a B-spline's distinct knots.
+fn multiplicities(p: &Param) -> Result<Vec<usize>> {
+    list(p, "knot multiplicities", integer)
 }
 
 fn boolean(p: &Param) -> Result<bool> {
@@ -371,10 +378,7 @@ impl Reader<'_> {
         }
         let degree = integer(&curve[0])?;
         let points = refs(&curve[1])?.into_iter().map(|id| self.point(id)).collect::<Conv<Vec<_>>>()?;
-        let mults: Vec<usize> = match &knots[0] {
-            Param::List(m) => m.iter().map(integer).collect::<Result<_>>()?,
-            other => return Err(bad("knot multiplicities", other).into()),
-        };
+        let mults = multiplicities(&knots[0])?;
         let values = reals(&knots[1])?;
         let knots = checked_knots("B-spline curve", degree, points.len(), &values, &mults)?;
         let weights = match inst.record("RATIONAL_B_SPLINE_CURVE") {
@@ -467,13 +471,8 @@ impl Reader<'_> {
         for row in &rows {
             points.push(refs(row)?.into_iter().map(|id| self.point(id)).collect::<Conv<Vec<_>>>()?);
         }
-        let ints = |p: &Param| -> Result<Vec<usize>> {
-            match p {
-                Param::List(m) => m.iter().map(integer).collect(),
-                other => Err(bad("knot multiplicities", other)),
-            }
-        };
-        let (mu, mv, ku, kv) = (ints(&knots[0])?, ints(&knots[1])?, reals(&knots[2])?, reals(&knots[3])?);
+        let (mu, mv) = (multiplicities(&knots[0])?, multiplicities(&knots[1])?);
+        let (ku, kv) = (reals(&knots[2])?, reals(&knots[3])?);
         let weights = match inst.record("RATIONAL_B_SPLINE_SURFACE").map(|r| r.params.first()) {
             Some(Some(Param::List(rows))) => Some(rows.iter().map(reals).collect::<Result<Vec<_>>>()?),
             Some(Some(other)) => return Err(bad("rows of weights", other).into()),
