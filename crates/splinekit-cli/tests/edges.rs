@@ -32,6 +32,18 @@ fn temp_dir(name: &str) -> PathBuf {
     dir
 }
 
+/// `tessellate` writes `doc` as each format of `exts` (exit 0), each file over `min_bytes`.
+fn assert_tessellates(name: &str, doc: &str, exts: &[&str], min_bytes: u64) {
+    let dir = temp_dir(name);
+    for ext in exts {
+        let path = dir.join(format!("{name}.{ext}"));
+        let o = run(&["tessellate", "-", "-o", path.to_str().unwrap()], doc);
+        assert_eq!(o.code, 0, "{ext}: {}", o.stderr);
+        assert!(std::fs::metadata(&path).unwrap().len() > min_bytes, "{ext}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 fn names(dir: &Path) -> Vec<String> {
     let mut v: Vec<String> =
         std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
@@ -105,14 +117,7 @@ fn a_degree_five_surface_is_tessellated_and_has_grid_normals() {
     .to_string();
     let v = ok_json(&["eval", "-", "--grid", "4,5", "--derivatives", "1"], &doc);
     assert_eq!(v["normals"].as_array().unwrap().len(), 20, "{v}");
-    let dir = temp_dir("degree5");
-    for ext in ["obj", "stl", "glb"] {
-        let path = dir.join(format!("s.{ext}"));
-        let o = run(&["tessellate", "-", "-o", path.to_str().unwrap()], &doc);
-        assert_eq!(o.code, 0, "{ext}: {}", o.stderr);
-        assert!(std::fs::metadata(&path).unwrap().len() > 1000, "{ext}");
-    }
-    std::fs::remove_dir_all(&dir).ok();
+    assert_tessellates("degree5", &doc, &["obj", "stl", "glb"], 1000);
 }
 
 /// A line through a sphere's poles meets it at the poles (OpenCASCADE gives them); it
@@ -138,15 +143,8 @@ fn a_line_through_the_poles_meets_the_sphere_at_the_poles() {
 /// meeting at the centre used to refuse the whole mesh.
 #[test]
 fn a_horn_torus_is_written_as_stl() {
-    let dir = temp_dir("horn");
     let doc = r#"{"type":"torus","major_radius":1,"minor_radius":1}"#;
-    for ext in ["stl", "glb"] {
-        let path = dir.join(format!("horn.{ext}"));
-        let o = run(&["tessellate", "-", "-o", path.to_str().unwrap()], doc);
-        assert_eq!(o.code, 0, "{ext}: {}", o.stderr);
-        assert!(std::fs::metadata(&path).unwrap().len() > 10_000, "{ext}");
-    }
-    std::fs::remove_dir_all(&dir).ok();
+    assert_tessellates("horn", doc, &["stl", "glb"], 10_000);
 }
 
 /// Shapes with nothing to mesh say what is wrong instead of blaming `--density`.

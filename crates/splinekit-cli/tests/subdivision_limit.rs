@@ -20,6 +20,14 @@ fn subdivide(args: &[&str], stdin: &str) -> common::Output {
     o
 }
 
+/// `splinekit subdivide-surface - --scheme SCHEME FLAGS… -o OUT` on `stdin`, checked to
+/// succeed; returns the file it wrote.
+fn subdivided(scheme: &str, flags: &[&str], out: &std::path::Path, stdin: &str) -> String {
+    let path = out.to_str().unwrap();
+    subdivide(&[&["-", "--scheme", scheme], flags, &["-o", path]].concat(), stdin);
+    std::fs::read_to_string(out).unwrap()
+}
+
 /// `splinekit subdivide-surface ARGS` on `stdin`: exit 2, nothing on standard output, one
 /// line naming `must_contain`.
 fn assert_refused(args: &[&str], stdin: &str, must_contain: &str) {
@@ -46,8 +54,7 @@ fn steps_zero_limit_gives_the_cage_limit_points_in_order() {
     let dir = temp_dir("zero");
     let out = dir.join("limit.obj");
 
-    subdivide(&["-", "--scheme", "catmull-clark", "--steps", "0", "--limit", "-o", out.to_str().unwrap()], &cube());
-    let text = std::fs::read_to_string(&out).unwrap();
+    let text = subdivided("catmull-clark", &["--steps", "0", "--limit"], &out, &cube());
     let cage = lines(&cube(), "v ");
     let v = lines(&text, "v ");
     let n = lines(&text, "vn ");
@@ -62,8 +69,7 @@ fn steps_zero_limit_gives_the_cage_limit_points_in_order() {
     assert!(text.contains("f 1//1 3//3 4//4 2//2"));
     // Two steps: the face centre vertex (index 8 + face) is at the limit 68/81.
 
-    subdivide(&["-", "--scheme", "catmull-clark", "--steps", "2", "--limit", "-o", out.to_str().unwrap()], &cube());
-    let v = lines(&std::fs::read_to_string(&out).unwrap(), "v ");
+    let v = lines(&subdivided("catmull-clark", &["--steps", "2", "--limit"], &out, &cube()), "v ");
     assert!(v.iter().any(|p| p[0].abs() < 1e-15 && p[1].abs() < 1e-15 && (p[2] - 68.0 / 81.0).abs() < 1e-15));
     std::fs::remove_dir_all(&dir).ok();
 }
@@ -74,13 +80,11 @@ fn schemes_creases_and_boundaries() {
     let dir = temp_dir("schemes");
     let out = dir.join("out.obj");
 
-    subdivide(&["-", "--scheme", "loop", "--triangulate", "--steps", "1", "-o", out.to_str().unwrap()], &cube());
-    let text = std::fs::read_to_string(&out).unwrap();
+    let text = subdivided("loop", &["--triangulate", "--steps", "1"], &out, &cube());
     // 12 triangles → 48; 8 + 18 edges vertices.
     assert_eq!(lines(&text, "f ").len(), 48);
     assert_eq!(lines(&text, "v ").len(), 26);
-    subdivide(&["-", "--scheme", "bilinear", "--steps", "1", "--limit", "-o", out.to_str().unwrap()], &cube());
-    let v = lines(&std::fs::read_to_string(&out).unwrap(), "v ");
+    let v = lines(&subdivided("bilinear", &["--steps", "1", "--limit"], &out, &cube()), "v ");
     assert_eq!(v[7], vec![1.0, 1.0, 1.0], "bilinear keeps the cage's vertices");
     // An infinitely sharp crease ring around the cube's top face (OBJ tags, 0-based): the
     // top corners have two sharp edges, so they are crease vertices with the limit
@@ -88,36 +92,21 @@ fn schemes_creases_and_boundaries() {
     // neighbours (−1, 1, 1) and (1, −1, 1), (2/3, 2/3, 1).
     let creased =
         format!("{}t crease 2/1 4 5 10\nt crease 2/1 5 7 10\nt crease 2/1 7 6 10\nt crease 2/1 6 4 10\n", cube());
-    subdivide(&["-", "--scheme", "catmull-clark", "--steps", "0", "--limit", "-o", out.to_str().unwrap()], &creased);
-    let v = lines(&std::fs::read_to_string(&out).unwrap(), "v ");
+    let text = subdivided("catmull-clark", &["--steps", "0", "--limit"], &out, &creased);
+    let v = lines(&text, "v ");
     for (x, want) in v[7].iter().zip([2.0 / 3.0, 2.0 / 3.0, 1.0]) {
         assert!((x - want).abs() < 1e-15, "{:?}", v[7]);
     }
     // The crease splits the normals: the top face's corners and the side faces' corners at
     // the four top vertices each get their own `vn` (8 vertex normals + 8 side ones).
-    let text = std::fs::read_to_string(&out).unwrap();
     assert_eq!(lines(&text, "vn ").len(), 16);
     assert!(text.contains("f 5//5 6//6 8//8 7//7") && text.contains("f 1//1 2//2 6//9 5//10"), "{text}");
     let n = lines(&text, "vn ");
     assert!(n[8][2] < n[5][2] - 0.1, "the side's normal at the crease leans outward: {:?} vs {:?}", n[8], n[5]);
     // An open grid of one quad: edge-only smooths its corners, edge-and-corner keeps them.
     let quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
-    subdivide(
-        &[
-            "-",
-            "--scheme",
-            "catmull-clark",
-            "--steps",
-            "0",
-            "--limit",
-            "--boundary",
-            "edge-and-corner",
-            "-o",
-            out.to_str().unwrap(),
-        ],
-        quad,
-    );
-    assert_eq!(lines(&std::fs::read_to_string(&out).unwrap(), "v ")[2], vec![1.0, 1.0, 0.0]);
+    let text = subdivided("catmull-clark", &["--steps", "0", "--limit", "--boundary", "edge-and-corner"], &out, quad);
+    assert_eq!(lines(&text, "v ")[2], vec![1.0, 1.0, 0.0]);
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -129,10 +118,7 @@ fn schemes_creases_and_boundaries() {
 fn doo_sabin_limit_points_of_the_cube() {
     let dir = temp_dir("doo-sabin");
     let out = dir.join("limit.obj");
-    let limit_of = |steps: &str| {
-        subdivide(&["-", "--scheme", "doo-sabin", "--steps", steps, "--limit", "-o", out.to_str().unwrap()], &cube());
-        std::fs::read_to_string(&out).unwrap()
-    };
+    let limit_of = |steps: &str| subdivided("doo-sabin", &["--steps", steps, "--limit"], &out, &cube());
     let text = limit_of("0");
     let (cage, v, n) = (lines(&cube(), "v "), lines(&text, "v "), lines(&text, "vn "));
     assert_eq!((v.len(), n.len()), (8, 8));
@@ -144,8 +130,7 @@ fn doo_sabin_limit_points_of_the_cube() {
     }
     let limit = limit_of("2");
     let plain = dir.join("plain.obj");
-    subdivide(&["-", "--scheme", "doo-sabin", "--steps", "2", "-o", plain.to_str().unwrap()], &cube());
-    let plain = std::fs::read_to_string(&plain).unwrap();
+    let plain = subdivided("doo-sabin", &["--steps", "2"], &plain, &cube());
     let (a, b) = (lines(&limit, "v "), lines(&plain, "v "));
     assert_eq!(a.len(), b.len());
     assert_eq!(

@@ -616,21 +616,10 @@ mod tests {
     use splinekit::curve::model::Heart;
     use splinekit::surface::model::Torus;
 
-    /// z = h·g(u)·g(v), g(x) = exp(−(x − c)²/w²): a bump narrow enough to hide between the
-    /// corners and the 4 × 4 samples of the first cell (at 1/8, 3/8, …), a sixteenth away
-    /// from the nearest, so only the finer look sees it.
-    struct Bump;
-    impl Bump {
-        const C: f64 = 0.3125;
-        const W: f64 = 0.02;
-        /// g, g′, g″ at x.
-        fn g(x: f64) -> [f64; 3] {
-            let (d, w2) = (x - Self::C, Self::W * Self::W);
-            let g = (-d * d / w2).exp();
-            [g, -2.0 * d / w2 * g, (4.0 * d * d / (w2 * w2) - 2.0 / w2) * g]
-        }
-    }
-    impl Surface<3> for Bump {
+    /// The graph (u, v, h(u, v)) over the unit square, `h(u, v, i, j)` giving
+    /// ∂^(i+j) h / ∂u^i ∂v^j (the x and y partials are those of u and v).
+    struct Graph(fn(f64, f64, usize, usize) -> f64);
+    impl Surface<3> for Graph {
         fn domain_u(&self) -> Interval {
             Interval::new(0.0, 1.0)
         }
@@ -638,66 +627,50 @@ mod tests {
             Interval::new(0.0, 1.0)
         }
         fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<3>]) {
-            let (gu, gv) = (Self::g(u), Self::g(v));
             for i in 0..=du {
                 for j in 0..=dv {
-                    let x = if (i, j) == (0, 0) {
-                        u
-                    } else if (i, j) == (1, 0) {
-                        1.0
-                    } else {
-                        0.0
-                    };
-                    let y = if (i, j) == (0, 0) {
-                        v
-                    } else if (i, j) == (0, 1) {
-                        1.0
-                    } else {
-                        0.0
-                    };
-                    let z = if i <= 2 && j <= 2 { 0.01 * gu[i] * gv[j] } else { f64::NAN };
-                    out[i * (dv + 1) + j] = Point::<3>::from([x, y, z]);
+                    let x = [u, 1.0].get(i).copied().filter(|_| j == 0).unwrap_or(0.0);
+                    let y = [v, 1.0].get(j).copied().filter(|_| i == 0).unwrap_or(0.0);
+                    out[i * (dv + 1) + j] = Point::<3>::from([x, y, (self.0)(u, v, i, j)]);
                 }
             }
         }
     }
 
+    /// z = h·g(u)·g(v), g(x) = exp(−(x − c)²/w²): a bump narrow enough to hide between the
+    /// corners and the 4 × 4 samples of the first cell (at 1/8, 3/8, …), a sixteenth away
+    /// from the nearest, so only the finer look sees it (partials up to order 2 in each
+    /// direction, NaN above).
+    const BUMP: Graph = Graph(|u, v, i, j| {
+        /// g, g′, g″ at x.
+        fn g(x: f64) -> [f64; 3] {
+            const C: f64 = 0.3125;
+            const W: f64 = 0.02;
+            let (d, w2) = (x - C, W * W);
+            let g = (-d * d / w2).exp();
+            [g, -2.0 * d / w2 * g, (4.0 * d * d / (w2 * w2) - 2.0 / w2) * g]
+        }
+        if i <= 2 && j <= 2 { 0.01 * g(u)[i] * g(v)[j] } else { f64::NAN }
+    });
+
     #[test]
     fn a_bump_only_the_finer_look_sees_is_refined_not_looped_over() {
         // Before, the cells' coarse samples passed, the finer look failed, no interval was
         // marked and the grid never changed: the export hung.
-        let f = hermite_surface(&Bump, &[0.0, 1.0], &[0.0, 1.0], 1e-5).unwrap();
+        let f = hermite_surface(&BUMP, &[0.0, 1.0], &[0.0, 1.0], 1e-5).unwrap();
         assert!(f.max_deviation <= 1e-5, "{}", f.max_deviation);
         // One biquintic cell per direction has 12 knots; refinement adds interior ones.
         assert!(f.spline.knots_u.len() > 12, "the bump was not refined: {:?}", f.spline.knots_u);
     }
 
     /// The plane z = 0 with no value (NaN) on the strip 0.3 < u < 0.7 (which holds samples).
-    struct Torn;
-    impl Surface<3> for Torn {
-        fn domain_u(&self) -> Interval {
-            Interval::new(0.0, 1.0)
-        }
-        fn domain_v(&self) -> Interval {
-            Interval::new(0.0, 1.0)
-        }
-        fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<3>]) {
-            let torn = u > 0.3 && u < 0.7;
-            for i in 0..=du {
-                for j in 0..=dv {
-                    let x = [u, 1.0].get(i).copied().filter(|_| j == 0).unwrap_or(0.0);
-                    let y = [v, 1.0].get(j).copied().filter(|_| i == 0).unwrap_or(0.0);
-                    out[i * (dv + 1) + j] = Point::<3>::from([x, y, if torn { f64::NAN } else { 0.0 }]);
-                }
-            }
-        }
-    }
+    const TORN: Graph = Graph(|u, _, _, _| if u > 0.3 && u < 0.7 { f64::NAN } else { 0.0 });
 
     #[test]
     fn a_shape_without_finite_values_is_refused_not_passed_as_within_tolerance() {
-        let e = hermite_surface(&Torn, &[0.0, 1.0], &[0.0, 1.0], 1e-6).unwrap_err().to_string();
+        let e = hermite_surface(&TORN, &[0.0, 1.0], &[0.0, 1.0], 1e-6).unwrap_err().to_string();
         assert!(e.contains("no finite value near (u, v) = (0.375, "), "{e}");
-        let e = polynomial_surface(&Torn, &[0.0, 1.0], &[0.0, 1.0], (1, 1)).unwrap_err().to_string();
+        let e = polynomial_surface(&TORN, &[0.0, 1.0], &[0.0, 1.0], (1, 1)).unwrap_err().to_string();
         assert!(e.contains("no finite value near one of its cells"), "{e}");
     }
 

@@ -66,6 +66,15 @@ impl<'a> GeometryWriter<'a> {
         self.w.add("AXIS2_PLACEMENT_3D", vec![s(""), r(o), r(z), r(x)])
     }
 
+    /// An elementary curve or surface on a placement: `entity(name, #axes, sizes…)` (the
+    /// circle's radius, the torus's two radii, none for the plane), its
+    /// `AXIS2_PLACEMENT_3D` written first.
+    fn placed(&mut self, entity: &str, name: &str, axes: &Axes, sizes: &[f64]) -> u64 {
+        let a = self.axes(axes);
+        let params = [s(name), r(a)].into_iter().chain(sizes.iter().map(|&x| real(x))).collect();
+        self.w.add(entity, params)
+    }
+
     fn axis1(&mut self, origin: Point<3>, axis: Point<3>) -> u64 {
         let (o, z) = (self.point(origin.as_slice()), self.direction(axis.as_slice()));
         self.w.add("AXIS1_PLACEMENT", vec![s(""), r(o), r(z)])
@@ -85,14 +94,8 @@ impl<'a> GeometryWriter<'a> {
                 let (o, v) = (self.point(origin), self.vector(direction));
                 self.w.add("LINE", vec![s(name), r(o), r(v)])
             }
-            Curve::Circle { axes, radius } => {
-                let a = self.axes(axes);
-                self.w.add("CIRCLE", vec![s(name), r(a), real(*radius)])
-            }
-            Curve::Ellipse { axes, a, b } => {
-                let p = self.axes(axes);
-                self.w.add("ELLIPSE", vec![s(name), r(p), real(*a), real(*b)])
-            }
+            Curve::Circle { axes, radius } => self.placed("CIRCLE", name, axes, &[*radius]),
+            Curve::Ellipse { axes, a, b } => self.placed("ELLIPSE", name, axes, &[*a, *b]),
             Curve::Spline(sc) => self.spline_curve(sc, name),
             Curve::Trimmed { basis, start, end } => {
                 let b = self.curve(basis, "");
@@ -160,25 +163,14 @@ impl<'a> GeometryWriter<'a> {
     /// Writes a surface named `name`; returns its `#id`.
     pub fn surface(&mut self, sf: &Surface, name: &str) -> u64 {
         match sf {
-            Surface::Plane(axes) => {
-                let a = self.axes(axes);
-                self.w.add("PLANE", vec![s(name), r(a)])
-            }
-            Surface::Cylinder { axes, radius } => {
-                let a = self.axes(axes);
-                self.w.add("CYLINDRICAL_SURFACE", vec![s(name), r(a), real(*radius)])
-            }
+            Surface::Plane(axes) => self.placed("PLANE", name, axes, &[]),
+            Surface::Cylinder { axes, radius } => self.placed("CYLINDRICAL_SURFACE", name, axes, &[*radius]),
             Surface::Cone { axes, radius, semi_angle } => {
-                let a = self.axes(axes);
-                self.w.add("CONICAL_SURFACE", vec![s(name), r(a), real(*radius), real(*semi_angle)])
+                self.placed("CONICAL_SURFACE", name, axes, &[*radius, *semi_angle])
             }
-            Surface::Sphere { axes, radius } => {
-                let a = self.axes(axes);
-                self.w.add("SPHERICAL_SURFACE", vec![s(name), r(a), real(*radius)])
-            }
+            Surface::Sphere { axes, radius } => self.placed("SPHERICAL_SURFACE", name, axes, &[*radius]),
             Surface::Torus { axes, major_radius, minor_radius } => {
-                let a = self.axes(axes);
-                self.w.add("TOROIDAL_SURFACE", vec![s(name), r(a), real(*major_radius), real(*minor_radius)])
+                self.placed("TOROIDAL_SURFACE", name, axes, &[*major_radius, *minor_radius])
             }
             Surface::Spline(b) => self.spline_surface(b, name),
             Surface::Revolution { profile, axis_origin, axis } => {

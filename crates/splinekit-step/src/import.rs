@@ -190,11 +190,16 @@ fn real(p: &Param) -> Result<f64> {
     }
 }
 
-fn reals(p: &Param) -> Result<Vec<f64>> {
+/// The items of a list, each read by `item`; anything but a list is refused as not `what`.
+fn list<T>(p: &Param, what: &str, item: fn(&Param) -> Result<T>) -> Result<Vec<T>> {
     match p {
-        Param::List(items) => items.iter().map(real).collect(),
-        other => Err(bad("a list of numbers", other)),
+        Param::List(items) => items.iter().map(item).collect(),
+        other => Err(bad(what, other)),
     }
+}
+
+fn reals(p: &Param) -> Result<Vec<f64>> {
+    list(p, "a list of numbers", real)
 }
 
 fn integer(p: &Param) -> Result<usize> {
@@ -217,11 +222,35 @@ fn tail(inst: &Instance, from: usize) -> Vec<Param> {
     inst.records[0].params.get(from..).map_or_else(Vec::new, <[Param]>::to_vec)
 }
 
-fn refs(p: &Param) -> Result<Vec<u64>> {
-    match p {
-        Param::List(items) => items.iter().map(reference).collect(),
-        other => Err(bad("a list of references", other)),
+/// The `B_SPLINE_{kind}` and `B_SPLINE_{kind}_WITH_KNOTS` parameters of a B-spline
+/// (`kind` `CURVE` or `SURFACE`): the records of the complex (rational) entity, or the
+/// simple entity's parameters after its name split where the knot lists start
+/// (`knots_from`); refused when they are fewer than `least`.
+fn spline_params(
+    inst: &Instance,
+    kind: &str,
+    knots_from: usize,
+    least: (usize, usize),
+) -> Conv<(Vec<Param>, Vec<Param>)> {
+    let (spline, knots) = match inst.record(&format!("B_SPLINE_{kind}")) {
+        Some(s) => (s.params.clone(), inst.record(&format!("B_SPLINE_{kind}_WITH_KNOTS")).map(|k| k.params.clone())),
+        None => (tail(inst, 1), Some(tail(inst, knots_from))),
+    };
+    let knots = knots.ok_or_else(|| Unsupported::Type(inst.type_name()))?;
+    if spline.len() < least.0 || knots.len() < least.1 {
+        let what = kind.to_lowercase();
+        return Err(StepError::plain(format!("B-spline {what}: missing parameters")).into());
     }
+    Ok((spline, knots))
+}
+
+fn refs(p: &Param) -> Result<Vec<u64>> {
+    list(p, "a list of references", reference)
+}
+
+/// The multiplicities of a B-spline's distinct knots.
+fn multiplicities(p: &Param) -> Result<Vec<usize>> {
+    list(p, "knot multiplicities", integer)
 }
 
 fn boolean(p: &Param) -> Result<bool> {
@@ -361,20 +390,10 @@ impl Reader<'_> {
     }
 
     fn spline_curve(&mut self, inst: &Instance) -> Conv<SplineCurve> {
-        let (curve, knots) = match inst.record("B_SPLINE_CURVE") {
-            Some(c) => (c.params.clone(), inst.record("B_SPLINE_CURVE_WITH_KNOTS").map(|k| k.params.clone())),
-            None => (tail(inst, 1), Some(tail(inst, 6))),
-        };
-        let knots = knots.ok_or_else(|| Unsupported::Type(inst.type_name()))?;
-        if curve.len() < 5 || knots.len() < 2 {
-            return Err(StepError::plain("B-spline curve: missing parameters").into());
-        }
+        let (curve, knots) = spline_params(inst, "CURVE", 6, (5, 2))?;
         let degree = integer(&curve[0])?;
         let points = refs(&curve[1])?.into_iter().map(|id| self.point(id)).collect::<Conv<Vec<_>>>()?;
-        let mults: Vec<usize> = match &knots[0] {
-            Param::List(m) => m.iter().map(integer).collect::<Result<_>>()?,
-            other => return Err(bad("knot multiplicities", other).into()),
-        };
+        let mults = multiplicities(&knots[0])?;
         let values = reals(&knots[1])?;
         let knots = checked_knots("B-spline curve", degree, points.len(), &values, &mults)?;
         let weights = match inst.record("RATIONAL_B_SPLINE_CURVE") {
@@ -450,14 +469,7 @@ impl Reader<'_> {
     }
 
     fn spline_surface(&mut self, inst: &Instance) -> Conv<SplineSurface> {
-        let (surf, knots) = match inst.record("B_SPLINE_SURFACE") {
-            Some(s) => (s.params.clone(), inst.record("B_SPLINE_SURFACE_WITH_KNOTS").map(|k| k.params.clone())),
-            None => (tail(inst, 1), Some(tail(inst, 8))),
-        };
-        let knots = knots.ok_or_else(|| Unsupported::Type(inst.type_name()))?;
-        if surf.len() < 7 || knots.len() < 4 {
-            return Err(StepError::plain("B-spline surface: missing parameters").into());
-        }
+        let (surf, knots) = spline_params(inst, "SURFACE", 8, (7, 4))?;
         let degrees = (integer(&surf[0])?, integer(&surf[1])?);
         let rows = match &surf[2] {
             Param::List(rows) => rows.clone(),
@@ -467,13 +479,8 @@ impl Reader<'_> {
         for row in &rows {
             points.push(refs(row)?.into_iter().map(|id| self.point(id)).collect::<Conv<Vec<_>>>()?);
         }
-        let ints = |p: &Param| -> Result<Vec<usize>> {
-            match p {
-                Param::List(m) => m.iter().map(integer).collect(),
-                other => Err(bad("knot multiplicities", other)),
-            }
-        };
-        let (mu, mv, ku, kv) = (ints(&knots[0])?, ints(&knots[1])?, reals(&knots[2])?, reals(&knots[3])?);
+        let (mu, mv) = (multiplicities(&knots[0])?, multiplicities(&knots[1])?);
+        let (ku, kv) = (reals(&knots[2])?, reals(&knots[3])?);
         let weights = match inst.record("RATIONAL_B_SPLINE_SURFACE").map(|r| r.params.first()) {
             Some(Some(Param::List(rows))) => Some(rows.iter().map(reals).collect::<Result<Vec<_>>>()?),
             Some(Some(other)) => return Err(bad("rows of weights", other).into()),

@@ -3,7 +3,7 @@
 //! stand-ins within the tolerance around extraordinary vertices, the faces there refined
 //! locally as deep as the tolerance needs (up to 30 levels).
 
-use splinekit::subdivision::surface::bezier_patches::limit_patches;
+use splinekit::subdivision::surface::bezier_patches::{LimitPatches, limit_patches};
 use splinekit_scene::surfaces::{SchemeDoc, SubdivisionSurfaceDoc};
 use splinekit_scene::{SceneOrShape, ShapeDocument, SurfaceDocument};
 use splinekit_step::documents::export_document;
@@ -12,6 +12,36 @@ use splinekit_step::part21::writer::HeaderInfo;
 
 fn shape(doc: SubdivisionSurfaceDoc) -> SceneOrShape {
     SceneOrShape::Shape(ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(doc)))
+}
+
+/// The patches of `doc` within `relative` × 2√3 (the diagonal of the cube [−1, 1]³): within it, with bilinear stand-ins
+/// around the extraordinary vertices, and one level less is not within it; with `export`
+/// also written as STEP, one lossless item per patch (`exact` counts the exact ones).
+fn check_patches(
+    name: &str,
+    doc: &SubdivisionSurfaceDoc,
+    relative: f64,
+    export: bool,
+    exact: fn(&LimitPatches) -> usize,
+) -> LimitPatches {
+    let size = 2.0 * 3f64.sqrt();
+    let (patches, depth) = subdivision_patches(doc, relative).unwrap();
+    assert!(patches.max_deviation <= relative * size && !patches.bilinear.is_empty());
+    let s = doc.subdivision_surface().unwrap();
+    assert!(limit_patches(&s, depth - 1).unwrap().max_deviation > relative * size, "{name}: depth {depth}");
+    if export {
+        let (text, exported) = export_document(&shape(doc.clone()), name, relative, &HeaderInfo::default()).unwrap();
+        assert_eq!(exported.len(), exact(&patches) + patches.bilinear.len());
+        assert!(exported.iter().all(|e| e.max_deviation == 0.0));
+        assert!(text.matches("B_SPLINE_SURFACE").count() >= exported.len());
+    }
+    eprintln!(
+        "{name} within {relative:e}: depth {depth}, {} exact + {} bilinear patches, deviation {:.2e}",
+        exact(&patches),
+        patches.bilinear.len(),
+        patches.max_deviation / size
+    );
+    patches
 }
 
 /// `examples/meshes/creased_cube.obj` as a document (its sharp top ring and semi-sharp
@@ -31,32 +61,16 @@ fn creased_cube() -> SubdivisionSurfaceDoc {
 /// less does not meet it; the cube at 10⁻⁶ as one STEP item per patch (all exact).
 #[test]
 fn cubes_export_as_their_patches_within_the_tolerance() {
-    let size = 2.0 * 3f64.sqrt();
     for (name, doc, tolerances) in
         [("cube", SubdivisionSurfaceDoc::cube(), &[1e-6, 1e-8][..]), ("creased cube", creased_cube(), &[1e-6][..])]
     {
         assert!(!doc.creases.is_empty() || name == "cube");
         for &relative in tolerances {
-            let (patches, depth) = subdivision_patches(&doc, relative).unwrap();
-            assert!(patches.max_deviation <= relative * size && !patches.bilinear.is_empty());
-            let s = doc.subdivision_surface().unwrap();
-            assert!(limit_patches(&s, depth - 1).unwrap().max_deviation > relative * size, "{name}: depth {depth}");
             // Written at the default tolerance, the cube's (the creased cube's through
             // `subdivide-surface --tolerance 1e-6` in splinekit-cli; writing a thousand
             // patches takes long in a debug build).
-            if relative == 1e-6 && name == "cube" {
-                let (text, exported) =
-                    export_document(&shape(doc.clone()), "cube", relative, &HeaderInfo::default()).unwrap();
-                assert_eq!(exported.len(), patches.bicubic.len() + patches.bilinear.len());
-                assert!(exported.iter().all(|e| e.max_deviation == 0.0));
-                assert!(text.matches("B_SPLINE_SURFACE").count() >= exported.len());
-            }
-            eprintln!(
-                "{name} within {relative:e}: depth {depth}, {} exact + {} bilinear patches, deviation {:.2e}",
-                patches.bicubic.len(),
-                patches.bilinear.len(),
-                patches.max_deviation / size
-            );
+            let export = relative == 1e-6 && name == "cube";
+            check_patches(name, &doc, relative, export, |p| p.bicubic.len());
         }
     }
 }
@@ -85,29 +99,12 @@ fn an_unreachable_tolerance_names_the_reachable_one() {
 /// and the flat triangles written without loss.
 #[test]
 fn loop_surfaces_export_within_the_tolerance() {
-    let size = 2.0 * 3f64.sqrt();
     let mut doc = SubdivisionSurfaceDoc::cube();
     doc.scheme = SchemeDoc::Loop;
     doc.triangulate = true;
-    let s = doc.subdivision_surface().unwrap();
     for relative in [1e-4, 1e-6] {
-        let (patches, depth) = subdivision_patches(&doc, relative).unwrap();
-        assert!(patches.max_deviation <= relative * size && !patches.bilinear.is_empty());
+        let patches = check_patches("loop cube", &doc, relative, relative == 1e-4, |p| p.quartic.len());
         assert!(patches.bicubic.is_empty() && !patches.quartic.is_empty());
-        assert!(limit_patches(&s, depth - 1).unwrap().max_deviation > relative * size, "depth {depth}");
-        if relative == 1e-4 {
-            let (text, exported) =
-                export_document(&shape(doc.clone()), "loop cube", relative, &HeaderInfo::default()).unwrap();
-            assert_eq!(exported.len(), patches.quartic.len() + patches.bilinear.len());
-            assert!(exported.iter().all(|e| e.max_deviation == 0.0));
-            assert!(text.matches("B_SPLINE_SURFACE").count() >= exported.len());
-        }
-        eprintln!(
-            "loop cube within {relative:e}: depth {depth}, {} exact + {} stand-ins, deviation {:.2e}",
-            patches.quartic.len(),
-            patches.bilinear.len(),
-            patches.max_deviation / size
-        );
     }
 }
 

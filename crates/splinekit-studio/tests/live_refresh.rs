@@ -3,36 +3,21 @@
 //! composes equals, bit for bit, the scene composed afresh from the edited document.
 
 use serde_json::json;
-use splinekit_render::{RenderScene, compose};
+use splinekit_render::compose;
 use splinekit_studio::edit::Edit;
 use splinekit_studio::studio::Studio;
 
-const SIZE: (u32, u32) = (400, 300);
+mod common;
+use common::{assert_same_items, studio};
 
-fn studio(text: &str) -> Studio {
-    Studio::new(splinekit_studio::document::parse(text).expect("a valid scene"), None)
-}
+const SIZE: (u32, u32) = (400, 300);
 
 /// Asserts that what the studio composed equals a fresh composition of its document.
 fn assert_fresh(studio: &mut Studio, what: &str) {
     let live = studio.render_scene(SIZE, false).expect("composes");
     let mut fresh = compose(studio.document.scene(), studio.time(), SIZE.0 as f32 / SIZE.1 as f32).expect("composes");
     fresh.camera = live.camera;
-    assert_same(&live, &fresh, what);
-}
-
-fn assert_same(a: &RenderScene, b: &RenderScene, what: &str) {
-    assert_eq!(a.meshes.len(), b.meshes.len(), "{what}: meshes");
-    for (m, n) in a.meshes.iter().zip(&b.meshes) {
-        assert!(m.positions == n.positions && m.normals == n.normals, "{what}: mesh vertices differ");
-        assert!(m.triangles == n.triangles && m.colors == n.colors && m.color == n.color, "{what}: mesh");
-    }
-    assert_eq!(a.lines.len(), b.lines.len(), "{what}: lines");
-    for (l, m) in a.lines.iter().zip(&b.lines) {
-        assert!(l.points == m.points && l.color == m.color && l.width == m.width, "{what}: a line differs");
-    }
-    let points = |s: &RenderScene| s.points.iter().map(|p| (p.position, p.color, p.size)).collect::<Vec<_>>();
-    assert_eq!(points(a), points(b), "{what}: points");
+    assert_same_items(&live, &fresh, what);
 }
 
 #[test]

@@ -18,24 +18,14 @@ use splinekit_studio::live_view::Changes;
 use splinekit_studio::studio::Studio;
 use splinekit_studio::view_camera::Projector;
 
+mod common;
+use common::studio;
+
 const SIZE: (u32, u32) = (500, 400);
 
-fn studio(text: &str) -> Studio {
-    Studio::new(splinekit_studio::document::parse(text).expect("a valid scene"), None)
-}
-
+/// The items of `a` and `b` and their drawing order are the same.
 fn assert_same_items(a: &RenderScene, b: &RenderScene, what: &str) {
-    assert_eq!(a.meshes.len(), b.meshes.len(), "{what}: meshes");
-    for (m, n) in a.meshes.iter().zip(&b.meshes) {
-        assert!(m.positions == n.positions && m.normals == n.normals, "{what}: mesh vertices differ");
-        assert!(m.triangles == n.triangles && m.colors == n.colors && m.color == n.color, "{what}: mesh");
-    }
-    assert_eq!(a.lines.len(), b.lines.len(), "{what}: lines");
-    for (i, (l, m)) in a.lines.iter().zip(&b.lines).enumerate() {
-        assert!(l.points == m.points && l.color == m.color && l.width == m.width, "{what}: line {i} differs");
-    }
-    let points = |s: &RenderScene| s.points.iter().map(|p| (p.position, p.color, p.size)).collect::<Vec<_>>();
-    assert_eq!(points(a), points(b), "{what}: points");
+    common::assert_same_items(a, b, what);
     assert_eq!(a.painter_order, b.painter_order, "{what}: painter's order");
 }
 

@@ -15,6 +15,12 @@ fn panel(draw: fn(&mut egui::Ui, &mut Studio)) -> impl FnMut(&mut egui::Ui, &mut
     }
 }
 
+/// Clicks the widget labelled `label` and runs the frame that follows.
+fn click(h: &mut Harness<'_, Studio>, label: &str) {
+    h.get_by_label(label).click();
+    h.run();
+}
+
 fn heart() -> Studio {
     let text =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/scenes/heart_local_curves.json"))
@@ -33,14 +39,11 @@ fn bfunction(studio: &Studio) -> String {
 fn properties_toggle_styles_and_switch_the_bfunction_and_back() {
     let mut h = Harness::new_ui_state(panel(properties_panel), heart());
     h.run();
-    h.get_by_label("control polygon / net").click();
-    h.run();
+    click(&mut h, "control polygon / net");
     assert!(h.state().document.scene().objects[0].style.control_net);
     assert_eq!(bfunction(h.state()), "erbs (default)");
-    h.get_by_label("B-function").click();
-    h.run();
-    h.get_by_label("trigonometric").click();
-    h.run();
+    click(&mut h, "B-function");
+    click(&mut h, "trigonometric");
     assert_eq!(bfunction(h.state()), "trigonometric");
     // The ERBS parameters are gone from the panel; undo brings ERBS back.
     assert!(h.query_by_label("alpha").is_none());
@@ -54,18 +57,15 @@ fn properties_toggle_styles_and_switch_the_bfunction_and_back() {
 fn objects_are_duplicated_and_deleted_from_the_panel() {
     let mut h = Harness::new_ui_state(panel(objects_panel), heart());
     h.run();
-    h.get_by_label("Duplicate").click();
-    h.run();
+    click(&mut h, "Duplicate");
     assert_eq!(h.state().document.scene().objects.len(), 2);
     assert_eq!(h.state().selection.object, Some(1));
-    h.get_by_label("Delete").click();
-    h.run();
+    click(&mut h, "Delete");
     assert_eq!(h.state().document.scene().objects.len(), 1);
     // The last object cannot go: the library's message, the document unchanged.
     h.state_mut().selection.object = Some(0);
     h.run();
-    h.get_by_label("Delete").click();
-    h.run();
+    click(&mut h, "Delete");
     assert_eq!(h.state().document.scene().objects.len(), 1);
     let message = h.state().status.message.clone().unwrap_or_default();
     assert!(message.contains("objects"), "{message}");
@@ -80,16 +80,12 @@ fn the_knot_style_switches_at_once_and_undoes_in_one_step() {
     let mut h = Harness::new_ui_state(panel(properties_panel), studio);
     h.run();
     let shape = |s: &Studio| s.document.scene().objects[0].to_value()["shape"].clone();
-    h.get_by_label("knots").click();
-    h.run();
-    h.get_by_label("periodic").click();
-    h.run();
+    click(&mut h, "knots");
+    click(&mut h, "periodic");
     assert_eq!(shape(h.state())["periodic"], serde_json::json!(true));
     assert_eq!(shape(h.state())["knots"].as_array().map(Vec::len), Some(7));
-    h.get_by_label("knots").click();
-    h.run();
-    h.get_by_label("clamped").click();
-    h.run();
+    click(&mut h, "knots");
+    click(&mut h, "clamped");
     assert!(shape(h.state()).get("periodic").is_none());
     h.state_mut().undo();
     h.run();

@@ -329,22 +329,27 @@
         }
 
         play() {
-            if (!this.mixer) {
-                return;
+            if (this.setPlaying(true)) {
+                requestFrame();
             }
-            this.playing = true;
-            this.button.textContent = 'pause';
-            this.button.setAttribute('aria-pressed', 'true');
-            requestFrame();
         }
 
         pause() {
+            this.setPlaying(false);
+        }
+
+        /**
+         * Starts (true) or stops the animation and shows it on the button: it offers the
+         * other action and is pressed while playing. False (nothing done) without one.
+         */
+        setPlaying(playing) {
             if (!this.mixer) {
-                return;
+                return false;
             }
-            this.playing = false;
-            this.button.textContent = 'play';
-            this.button.setAttribute('aria-pressed', 'false');
+            this.playing = playing;
+            this.button.textContent = playing ? 'pause' : 'play';
+            this.button.setAttribute('aria-pressed', String(playing));
+            return true;
         }
 
         /** Shows the animation at time t (seconds, taken modulo the period). */
