@@ -16,25 +16,16 @@ use splinekit::blend::BlendingSplineCurve;
 use splinekit::curve::Curve;
 use splinekit_render::RenderScene;
 use splinekit_scene::{CurveDocument, ShapeDocument};
-use splinekit_studio::actions::{self, Action, menu_label};
+use splinekit_studio::actions::{Action, menu_label};
 use splinekit_studio::gesture::GestureKind;
 use splinekit_studio::handles::HandleKind;
 use splinekit_studio::knot_edit::{KnotTool, curve_samples};
-use splinekit_studio::panels::{FileFields, menu_bar, properties_panel};
 use splinekit_studio::studio::Studio;
 use splinekit_studio::view_camera::Projector;
 
-fn open(name: &str) -> Studio {
-    let path = format!("{}/../../examples/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(path).expect("the example");
-    Studio::new(splinekit_studio::document::parse(&text).expect("valid"), None)
-}
-
-/// The view's projector, the view caches (handles) composed afresh.
-fn projector(studio: &mut Studio) -> Projector {
-    let rs: RenderScene = studio.render_scene((600, 600), false).expect("composes");
-    Projector::new(&rs, (600, 600))
-}
+#[path = "common/knot_tools.rs"]
+mod knot_tools;
+use knot_tools::{assert_edit_menu_arms, frame, open, projector};
 
 fn shape(studio: &Studio) -> Value {
     studio.document.scene().objects[0].to_value()["shape"].clone()
@@ -49,15 +40,6 @@ fn built(studio: &Studio) -> BlendingSplineCurve<3> {
 
 fn knots(studio: &Studio) -> Vec<f64> {
     serde_json::from_value(shape(studio)["knots"].clone()).expect("explicit knots")
-}
-
-/// A harness frame as the window runs it: the panel, the shortcuts pressed, the commands.
-fn frame(ui: &mut egui::Ui, s: &mut Studio) {
-    properties_panel(ui, s);
-    for a in actions::pressed(ui.ctx()) {
-        s.run_action(a);
-    }
-    s.run_commands();
 }
 
 /// The curves agree at 601 samples of the domain and at `extra`, both sides, to 10⁻¹².
@@ -120,24 +102,7 @@ fn a_click_near_a_knot_of_the_heart_splits_it_and_undo_takes_it_back() {
 
 #[test]
 fn the_edit_menu_arms_the_tool() {
-    let mut studio = open("heart_local_curves.json");
-    studio.selection.object = Some(0);
-    let mut h = Harness::new_ui_state(
-        |ui, state: &mut (Studio, FileFields)| {
-            let (studio, files) = state;
-            if let Some(command) = menu_bar(ui, files, &[]) {
-                studio.queue(command);
-            }
-            studio.run_commands();
-        },
-        (studio, FileFields::default()),
-    );
-    h.run();
-    h.get_by_label("Edit").click();
-    h.run();
-    h.get_by_label("Split knot  D").click();
-    h.run();
-    assert_eq!(h.state().0.knot_tool, Some(KnotTool::SplitKnot));
+    assert_edit_menu_arms("heart_local_curves.json", "Split knot  D", KnotTool::SplitKnot);
 }
 
 /// With local curve 3 selected, D splits knot 3 at once; the two copies' handles sit apart

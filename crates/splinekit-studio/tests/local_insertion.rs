@@ -11,25 +11,15 @@ use egui_kittest::kittest::Queryable;
 use serde_json::Value;
 use splinekit::curve::Curve;
 use splinekit::surface::{Direction, Surface};
-use splinekit_render::RenderScene;
 use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
-use splinekit_studio::actions::{self, Action, menu_label};
+use splinekit_studio::actions::{Action, menu_label};
 use splinekit_studio::knot_edit::{KnotTool, curve_samples};
 use splinekit_studio::net_knot_edit::{GRID, parameters_at, surface_samples};
-use splinekit_studio::panels::{FileFields, menu_bar, properties_panel};
 use splinekit_studio::studio::Studio;
-use splinekit_studio::view_camera::Projector;
 
-fn open(name: &str) -> Studio {
-    let path = format!("{}/../../examples/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(path).expect("the example");
-    Studio::new(splinekit_studio::document::parse(&text).expect("valid"), None)
-}
-
-fn projector(studio: &mut Studio) -> Projector {
-    let rs: RenderScene = studio.render_scene((600, 600), false).expect("composes");
-    Projector::new(&rs, (600, 600))
-}
+#[path = "common/knot_tools.rs"]
+mod knot_tools;
+use knot_tools::{assert_edit_menu_arms, frame, open, projector};
 
 fn shape(studio: &Studio, object: usize) -> Value {
     studio.document.scene().objects[object].to_value()["shape"].clone()
@@ -45,15 +35,6 @@ fn diagonal(samples: &[(f64, [f64; 3])]) -> f64 {
         }
     }
     (0..3).map(|i| (hi[i] - lo[i]).powi(2)).sum::<f64>().sqrt()
-}
-
-/// A harness frame as the window runs it: the panel, the shortcuts pressed, the commands.
-fn frame(ui: &mut egui::Ui, s: &mut Studio) {
-    properties_panel(ui, s);
-    for a in actions::pressed(ui.ctx()) {
-        s.run_action(a);
-    }
-    s.run_commands();
 }
 
 #[test]
@@ -127,24 +108,7 @@ fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
 
 #[test]
 fn the_edit_menu_arms_the_tool() {
-    let mut studio = open("heart_local_curves.json");
-    studio.selection.object = Some(0);
-    let mut h = Harness::new_ui_state(
-        |ui, state: &mut (Studio, FileFields)| {
-            let (studio, files) = state;
-            if let Some(command) = menu_bar(ui, files, &[]) {
-                studio.queue(command);
-            }
-            studio.run_commands();
-        },
-        (studio, FileFields::default()),
-    );
-    h.run();
-    h.get_by_label("Edit").click();
-    h.run();
-    h.get_by_label("Insert local piece  L").click();
-    h.run();
-    assert_eq!(h.state().0.knot_tool, Some(KnotTool::InsertLocal));
+    assert_edit_menu_arms("heart_local_curves.json", "Insert local piece  L", KnotTool::InsertLocal);
 }
 
 #[test]
