@@ -6,15 +6,12 @@
 
 use splinekit::curve::Curve;
 use splinekit::surface::{Direction, Surface};
-use splinekit_scene::blending::{BlendingSplineDoc, BlendingSplineSurfaceDoc, insert_knot_line, insert_local_curve};
-use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
+use splinekit_scene::blending::{BlendingSplineSurfaceDoc, insert_knot_line, insert_local_curve};
+use splinekit_scene::{ShapeDocument, SurfaceDocument};
 
-fn curve_doc(json: &str) -> BlendingSplineDoc {
-    match ShapeDocument::from_json(json).unwrap() {
-        ShapeDocument::Curve(CurveDocument::BlendingSpline(d)) => d,
-        _ => panic!("a blending spline"),
-    }
-}
+#[path = "common/edited_heart.rs"]
+mod edited_heart;
+use edited_heart::{HEART, curve_doc, curve_value};
 
 fn surface_doc(json: &str) -> BlendingSplineSurfaceDoc {
     match ShapeDocument::from_json(json).unwrap() {
@@ -23,21 +20,9 @@ fn surface_doc(json: &str) -> BlendingSplineSurfaceDoc {
     }
 }
 
-fn curve_value(d: &BlendingSplineDoc) -> serde_json::Value {
-    CurveDocument::BlendingSpline(d.clone()).to_value()
-}
-
 fn surface_value(d: &BlendingSplineSurfaceDoc) -> serde_json::Value {
     SurfaceDocument::BlendingSplineSurface(d.clone()).to_value()
 }
-
-/// The heart with quadratic locals as in examples/scenes/heart_local_curves.json, plus a
-/// moved local 4, an edited local 7 and an animated local 6.
-const HEART: &str = r#"{"type": "blending_spline", "model": {"type": "heart"}, "local_curves": 10,
-    "local": {"type": "bezier", "degree": 2},
-    "transforms": {"4": {"translate": [0.5, -0.3, 0], "scale": 1.1}, "1": {"translate": [0, 1, 0]}},
-    "local_control_points": {"7": [[-11, -6, 0], [-13, -3, 0.5], [-14, 1, 0]]},
-    "animation": [{"local": 6, "motions": [{"pulse": {"amplitude": 0.2}}]}]}"#;
 
 #[test]
 fn the_written_curve_document_builds_what_the_kernel_inserted() {

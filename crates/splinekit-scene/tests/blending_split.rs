@@ -6,27 +6,12 @@
 use splinekit::basis::Side;
 use splinekit::curve::Curve;
 use splinekit::{Interval, Point};
+use splinekit_scene::DocumentKind;
 use splinekit_scene::blending::{BlendingSplineDoc, knot_to_split, split_local_curve};
-use splinekit_scene::{CurveDocument, DocumentKind, ShapeDocument};
 
-fn curve_doc(json: &str) -> BlendingSplineDoc {
-    match ShapeDocument::from_json(json).unwrap() {
-        ShapeDocument::Curve(CurveDocument::BlendingSpline(d)) => d,
-        _ => panic!("a blending spline"),
-    }
-}
-
-fn value(d: &BlendingSplineDoc) -> serde_json::Value {
-    CurveDocument::BlendingSpline(d.clone()).to_value()
-}
-
-/// The heart with quadratic locals as in examples/scenes/heart_local_curves.json, plus a
-/// moved local 4, an edited local 7 and an animated local 6.
-const HEART: &str = r#"{"type": "blending_spline", "model": {"type": "heart"}, "local_curves": 10,
-    "local": {"type": "bezier", "degree": 2},
-    "transforms": {"4": {"translate": [0.5, -0.3, 0], "scale": 1.1}, "1": {"translate": [0, 1, 0]}},
-    "local_control_points": {"7": [[-11, -6, 0], [-13, -3, 0.5], [-14, 1, 0]]},
-    "animation": [{"local": 6, "motions": [{"pulse": {"amplitude": 0.2}}]}]}"#;
+#[path = "common/edited_heart.rs"]
+mod edited_heart;
+use edited_heart::{HEART, curve_doc, curve_value};
 
 fn assert_same(a: &dyn Curve<3>, b: &dyn Curve<3>, domain: Interval, what: &str) {
     for i in 0..=2000 {
@@ -56,7 +41,7 @@ fn the_split_document_builds_the_kernels_split_which_is_the_curve_before() {
         b.set_time(0.3);
         assert_same(&a.curve::<3>().unwrap(), &b.curve::<3>().unwrap(), before.domain(), &format!("k = {k} at 0.3"));
         // The document reads back as itself, through JSON text.
-        let text = serde_json::to_string(&value(&after)).unwrap();
+        let text = serde_json::to_string(&curve_value(&after)).unwrap();
         let back = curve_doc(&text);
         assert_eq!(back, after, "k = {k}: the round trip");
         assert_same(&back.curve::<3>().unwrap(), &built, before.domain(), "read back");
@@ -86,7 +71,7 @@ fn turning_one_copy_keeps_the_curve_continuous_at_the_split_knot() {
     let doc = curve_doc(r#"{"type": "blending_spline", "model": {"type": "heart"}, "local_curves": 10}"#);
     let split = split_local_curve(&doc, 3).unwrap();
     let t = split.knots.as_ref().unwrap()[3];
-    let mut turned = value(&split);
+    let mut turned = curve_value(&split);
     turned["transforms"] = serde_json::json!({"4": {"rotate": {"axis": [0, 0, 1], "angle": 0.6}, "scale": 1.4}});
     let turned = curve_doc(&turned.to_string());
     let c = turned.curve::<3>().unwrap();
