@@ -16,7 +16,7 @@ use splinekit::blend::BlendingSplineCurve;
 use splinekit::curve::Curve;
 use splinekit_render::RenderScene;
 use splinekit_scene::{CurveDocument, ShapeDocument};
-use splinekit_studio::actions::{Action, menu_label};
+use splinekit_studio::actions::Action;
 use splinekit_studio::gesture::GestureKind;
 use splinekit_studio::handles::HandleKind;
 use splinekit_studio::knot_edit::{KnotTool, curve_samples};
@@ -25,7 +25,7 @@ use splinekit_studio::view_camera::Projector;
 
 #[path = "common/knot_tools.rs"]
 mod knot_tools;
-use knot_tools::{assert_edit_menu_arms, frame, open, projector};
+use knot_tools::{assert_edit_menu_arms, assert_key_arms, frame, open, projector};
 
 fn shape(studio: &Studio) -> Value {
     studio.document.scene().objects[0].to_value()["shape"].clone()
@@ -94,10 +94,7 @@ fn a_click_near_a_knot_of_the_heart_splits_it_and_undo_takes_it_back() {
     studio.undo();
     assert_eq!(studio.document.scene().to_value(), original, "one undo step gives the document back");
     // The key D arms the tool as well, and the Edit menu lists the action with its key.
-    h.key_press(egui::Key::D);
-    h.run();
-    assert_eq!(h.state().knot_tool, Some(KnotTool::SplitKnot));
-    assert_eq!(menu_label(Action::SplitKnot), "Split knot  D");
+    assert_key_arms(&mut h, egui::Key::D, KnotTool::SplitKnot, Action::SplitKnot, "Split knot  D");
 }
 
 #[test]
@@ -113,7 +110,7 @@ fn the_edit_menu_arms_the_tool() {
 fn a_selected_local_splits_at_once_and_each_copy_turns_about_the_joint() {
     let mut studio = open("heart_local_curves.json");
     let mut projector = projector(&mut studio);
-    let handle = studio.shown_handles().find(|h| h.kind == HandleKind::LocalCurve(3)).cloned().expect("local 5");
+    let handle = studio.shown_handles().find(|h| h.kind == HandleKind::LocalCurve(3)).cloned().expect("local 3");
     assert_eq!(handle.pivot, None, "a single knot's handle is its origin");
     let (px, _) = projector.project(handle.position).expect("in view");
     studio.click(studio.pick(&projector, px), false);

@@ -12,14 +12,14 @@ use serde_json::Value;
 use splinekit::curve::Curve;
 use splinekit::surface::{Direction, Surface};
 use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
-use splinekit_studio::actions::{Action, menu_label};
+use splinekit_studio::actions::Action;
 use splinekit_studio::knot_edit::{KnotTool, curve_samples};
 use splinekit_studio::net_knot_edit::{GRID, parameters_at, surface_samples};
 use splinekit_studio::studio::Studio;
 
 #[path = "common/knot_tools.rs"]
 mod knot_tools;
-use knot_tools::{assert_edit_menu_arms, frame, open, projector};
+use knot_tools::{assert_edit_menu_arms, assert_key_arms, frame, open, projector};
 
 fn shape(studio: &Studio, object: usize) -> Value {
     studio.document.scene().objects[object].to_value()["shape"].clone()
@@ -100,10 +100,7 @@ fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
     studio.undo();
     assert_eq!(studio.document.scene().to_value(), original, "one undo step gives the document back");
     // The key L arms the tool as well, and the Edit menu lists the action with its key.
-    h.key_press(egui::Key::L);
-    h.run();
-    assert_eq!(h.state().knot_tool, Some(KnotTool::InsertLocal));
-    assert_eq!(menu_label(Action::InsertLocal), "Insert local piece  L");
+    assert_key_arms(&mut h, egui::Key::L, KnotTool::InsertLocal, Action::InsertLocal, "Insert local piece  L");
 }
 
 #[test]

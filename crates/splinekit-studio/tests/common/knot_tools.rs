@@ -1,11 +1,11 @@
 //! What the tests of the knot tools armed from the window share (local insertion, knot
 //! split): the example scenes opened in a studio, the view's projector, a harness frame as
-//! the window runs it, and the check that the Edit menu arms a tool.
+//! the window runs it, and the checks that a key and the Edit menu arm a tool.
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use splinekit_render::RenderScene;
-use splinekit_studio::actions;
+use splinekit_studio::actions::{self, Action, menu_label};
 use splinekit_studio::knot_edit::KnotTool;
 use splinekit_studio::panels::{FileFields, menu_bar, properties_panel};
 use splinekit_studio::studio::Studio;
@@ -55,4 +55,13 @@ pub fn assert_edit_menu_arms(scene: &str, label: &str, tool: KnotTool) {
     h.get_by_label(label).click();
     h.run();
     assert_eq!(h.state().0.knot_tool, Some(tool));
+}
+
+/// The key `key` arms `tool` in the harness, and the Edit menu lists `action` as `label`
+/// (with that key).
+pub fn assert_key_arms(h: &mut Harness<'_, Studio>, key: egui::Key, tool: KnotTool, action: Action, label: &str) {
+    h.key_press(key);
+    h.run();
+    assert_eq!(h.state().knot_tool, Some(tool));
+    assert_eq!(menu_label(action), label);
 }
