@@ -246,7 +246,7 @@ fn model_cases() -> Vec<(&'static str, Value, Shape)> {
     let meridian = [[0.0, -1.0, 1.0], [1.0, -1.0, r2], [1.0, 0.0, 1.0], [1.0, 1.0, r2], [0.0, 1.0, 1.0]];
     let (mut net, mut weights) = (vec![], vec![]);
     for (k, c) in ring.iter().enumerate() {
-        let wu = if k % 2 == 1 { r2 } else { 1.0 };
+        let wu = circle_weights[k];
         net.push(
             meridian.iter().map(|m| json!([1.5 * m[0] * c[0], 1.5 * m[0] * c[1], 1.5 * m[1]])).collect::<Vec<_>>(),
         );
