@@ -10,6 +10,7 @@
 //! there: a plain drag does both at once, the handle following the cursor.
 
 use serde_json::Value;
+use splinekit_scene::DocumentError;
 use splinekit_scene::scenes::SceneDocument;
 use splinekit_scene::transforms::TransformDoc;
 
@@ -188,6 +189,16 @@ impl Gesture {
         -(sweep(mouse) - sweep(self.start_mouse))
     }
 
+    /// `t` turned about the axis towards the eye, through the handle's origin, by the angle
+    /// the cursor swept ([`Self::angle`]; in the plane about z, with the view's sign).
+    fn turned(&self, t: &TransformDoc, projector: &Projector, mouse: [f64; 2]) -> Result<TransformDoc, DocumentError> {
+        let d = projector.view_direction();
+        let axis = [-d[0], -d[1], -d[2]];
+        let dim = self.handle.dimension;
+        let angle = if dim == 2 { self.angle(mouse) * axis[2].signum() } else { self.angle(mouse) };
+        rotated(t, &self.handle.kind.field(), axis, angle, dim, self.handle.origin)
+    }
+
     /// The ratio of the cursor's distances from the pivot now and when the drag started.
     fn factor(&self, mouse: [f64; 2]) -> f64 {
         let dist = |m: [f64; 2]| (m[0] - self.handle_px[0]).hypot(m[1] - self.handle_px[1]);
@@ -225,21 +236,10 @@ impl Gesture {
             (Start::Transform(t), GestureKind::Move(axis)) => {
                 to_json(&translated(t, &self.delta(projector, mouse, axis, snap), dim))
             }
-            (Start::Transform(t), GestureKind::Rotate) => {
-                let d = projector.view_direction();
-                let axis = [-d[0], -d[1], -d[2]];
-                let angle = self.angle(mouse);
-                let angle = if dim == 2 { angle * axis[2].signum() } else { angle };
-                to_json(&rotated(t, &field, axis, angle, dim, self.handle.origin)?)
-            }
+            (Start::Transform(t), GestureKind::Rotate) => to_json(&self.turned(t, projector, mouse)?),
             (Start::Transform(t), GestureKind::Scale | GestureKind::Weight) => to_json(&scaled(t, self.factor(mouse))),
             (Start::Transform(t), GestureKind::TurnScale) => {
-                let d = projector.view_direction();
-                let axis = [-d[0], -d[1], -d[2]];
-                let angle = self.angle(mouse);
-                let angle = if dim == 2 { angle * axis[2].signum() } else { angle };
-                let turned = rotated(t, &field, axis, angle, dim, self.handle.origin)?;
-                to_json(&scaled(&turned, self.factor(mouse)))
+                to_json(&scaled(&self.turned(t, projector, mouse)?, self.factor(mouse)))
             }
             (Start::Coordinates(c), kind) => {
                 let delta = self.delta(projector, mouse, move_axis(kind), snap);

@@ -167,9 +167,8 @@ impl Gpu {
             usage: wgpu::TextureUsages::COPY_DST | wgpu::TextureUsages::TEXTURE_BINDING,
             view_formats: &[],
         });
-        if let Some(blit) = self.egui.callback_resources.get_mut::<ViewBlit>() {
-            blit.show(device, &shown.create_view(&Default::default()));
-        }
+        let blit = self.egui.callback_resources.get_mut::<ViewBlit>().expect("inserted by Gpu::new");
+        blit.show(device, &shown.create_view(&Default::default()));
         Ok(View { target, single: None, shown })
     }
 

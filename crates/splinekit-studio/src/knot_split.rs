@@ -19,11 +19,14 @@ use splinekit_scene::{CurveDocument, ShapeDocument};
 
 use crate::edit::Edit;
 
+/// What Split knot says when the selection is not a blending-spline curve.
+pub const SELECT_A_BLENDING_CURVE: &str = "split knot: select a blending-spline curve first";
+
 /// The blending-spline curve document of `shape`, or the message saying what to select.
 fn blending_curve(shape: &ShapeDocument) -> Result<&BlendingSplineDoc, String> {
     match shape {
         ShapeDocument::Curve(CurveDocument::BlendingSpline(doc)) => Ok(doc),
-        _ => Err("split knot: select a blending-spline curve".into()),
+        _ => Err(SELECT_A_BLENDING_CURVE.into()),
     }
 }
 

@@ -92,12 +92,12 @@ fn overlay_handles(
     }
     // The renderer marks local curves' origins; a copy of a split knot has its handle off
     // the origin (the joint), drawn here with a line to the joint it turns about.
-    for h in handles.iter().filter(|h| h.pivot.is_some() && h.shown_with(selected)) {
-        let points = [h.pivot.unwrap_or(h.position), h.position].map(|p| p.map(|x| x as f32)).to_vec();
-        rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
-    }
     let drawn = |h: &Handle| !matches!(h.kind, HandleKind::LocalCurve(_)) || h.pivot.is_some();
     for h in handles.iter().filter(|h| drawn(h) && h.shown_with(selected)) {
+        if let Some(pivot) = h.pivot {
+            let points = [pivot, h.position].map(|p| p.map(|x| x as f32)).to_vec();
+            rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
+        }
         let position = h.position.map(|x| x as f32);
         rs.points.push(PointItem { position, color: [0.15, 0.15, 0.15, 1.0], size: 7.0 });
     }
@@ -274,7 +274,7 @@ impl Studio {
                 Some(shape) if knot_split::splits(shape) => {
                     Ok("click on the blending spline near the knot to split (Escape: cancel)".into())
                 }
-                _ => Err("split knot: select a blending-spline curve first".into()),
+                _ => Err(knot_split::SELECT_A_BLENDING_CURVE.into()),
             },
         };
         match armed {
@@ -348,11 +348,6 @@ impl Studio {
             }
         };
         let shape = &self.document.scene().objects[object].shape;
-        if tool == KnotTool::SplitKnot && !knot_split::splits(shape) {
-            self.knot_tool = None;
-            self.status.message = Some("split knot: select a blending-spline curve first".into());
-            return;
-        }
         let at = knot_edit::curve_samples(shape, knot_edit::SAMPLES)
             .map(|samples| knot_edit::parameter_at(&samples, projector, mouse));
         let u = match at {
@@ -389,7 +384,7 @@ impl Studio {
     /// arms the tool, and the next click splits the knot nearest it.
     fn split_knot(&mut self) {
         let Some(object) = self.selection.object else {
-            self.status.message = Some("split knot: select a blending-spline curve first".into());
+            self.status.message = Some(knot_split::SELECT_A_BLENDING_CURVE.into());
             return;
         };
         let shape = &self.document.scene().objects[object].shape;
