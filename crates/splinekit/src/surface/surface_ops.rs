@@ -98,15 +98,20 @@ where
         Direction::V => (net, degrees.1, kv, periodic.1),
     };
     let mut out_lines = Vec::with_capacity(lines.len());
-    let mut new_knots = Vec::new();
-    let mut new_degree = degree;
-    let mut still_closed = closed;
+    let mut last = None;
     for line in lines {
         let r = op(C::of_line(degree, knots.to_vec(), line, closed)?)?;
-        let (d, k, p) = r.spline();
-        (new_degree, new_knots, still_closed) = (d, k.to_vec(), p);
         out_lines.push(r.line());
+        last = Some(r);
     }
+    // Every line comes out with the same degree, knots and periodicity: the last one's.
+    let (new_degree, new_knots, still_closed) = match &last {
+        Some(r) => {
+            let (d, k, p) = r.spline();
+            (d, k.to_vec(), p)
+        }
+        None => (degree, Vec::new(), closed),
+    };
     Ok(match direction {
         Direction::U => NetSpline {
             degrees: (new_degree, degrees.1),
