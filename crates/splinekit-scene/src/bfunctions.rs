@@ -24,9 +24,14 @@ pub struct ErbsDoc {
     pub lambda: f64,
 }
 
+impl ErbsDoc {
+    /// α = β = γ = 1, λ = ½.
+    pub const DEFAULT: ErbsDoc = ErbsDoc { alpha: 1.0, beta: 1.0, gamma: 1.0, lambda: 0.5 };
+}
+
 impl Default for ErbsDoc {
     fn default() -> Self {
-        ErbsDoc { alpha: 1.0, beta: 1.0, gamma: 1.0, lambda: 0.5 }
+        ErbsDoc::DEFAULT
     }
 }
 
@@ -134,5 +139,4 @@ impl<'de> Deserialize<'de> for BFunctionDoc {
 }
 
 /// The B-function of blending splines when none is given: ERBS with α = β = γ = 1, λ = ½.
-pub const DEFAULT_BFUNCTION: BFunctionDoc =
-    BFunctionDoc::Erbs(ErbsDoc { alpha: 1.0, beta: 1.0, gamma: 1.0, lambda: 0.5 });
+pub const DEFAULT_BFUNCTION: BFunctionDoc = BFunctionDoc::Erbs(ErbsDoc::DEFAULT);
