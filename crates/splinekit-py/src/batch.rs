@@ -8,7 +8,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyList;
 use rayon::prelude::*;
 
-use crate::arrays::{Numbers, RowWriter, unfilled_rows};
+use crate::arrays::Numbers;
+use crate::row_writer::{RowWriter, unfilled_rows};
 use crate::curve::{EvalTask, PyCurve};
 use crate::curve_kinds::wrap;
 use crate::errors::value_error;
@@ -162,13 +163,13 @@ pub fn evaluate_many<'py>(
     py.detach(|| {
         on_pool(threads, || {
             tasks.par_iter().for_each(|(i, rows)| {
-                // SAFETY: every (output, chunk) pair is one task, run once; the outputs are
-                // alive until after this call.
-                let out = unsafe { writers[*i].chunk(rows.clone()) };
-                match jobs[*i].as_ref().expect("a job per shape") {
+                let fill = |out: &mut [f64]| match jobs[*i].as_ref().expect("a job per shape") {
                     Job::Curve(task) => task.fill(rows.clone(), out),
                     Job::Surface(s, us, vs) => s.fill_grid(us, vs, out),
-                }
+                };
+                // SAFETY: every (output, chunk) pair is one task, run once; the outputs are
+                // alive until after this call.
+                unsafe { writers[*i].write(rows.clone(), fill) };
             })
         })
     })?;

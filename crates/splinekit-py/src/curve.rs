@@ -12,7 +12,8 @@ use splinekit_scene::{AnyCurve, CurveDocument, Curves, DimensionVisitor};
 
 use splinekit_scene::budget::{Cost, F64};
 
-use crate::arrays::{Numbers, as_points_mut, check_params, filled_rows};
+use crate::arrays::{Numbers, as_points_mut, check_params};
+use crate::row_writer::filled_rows;
 use crate::budget;
 use crate::errors::{OrValueError, value_error};
 

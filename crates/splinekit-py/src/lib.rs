@@ -25,6 +25,7 @@ mod kind_classes;
 mod knot_ops;
 mod mesh;
 mod render;
+mod row_writer;
 mod shape_methods;
 mod subdivision;
 mod surface;

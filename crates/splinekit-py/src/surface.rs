@@ -9,7 +9,8 @@ use splinekit::surface::{Surface, SurfaceNearest, unit_normal};
 use splinekit_scene::budget::{Cost, F64};
 use splinekit_scene::{AnySurface, DimensionVisitor, SurfaceDocument, Surfaces};
 
-use crate::arrays::{Numbers, RowWriter, as_points_mut, check_params, filled, unfilled_rows};
+use crate::arrays::{Numbers, as_points_mut, check_params, filled};
+use crate::row_writer::{RowWriter, unfilled_rows};
 use crate::budget;
 use crate::errors::{OrValueError, value_error};
 

@@ -111,6 +111,27 @@ def test_evaluate_many_is_the_loop(nu, threads):
         assert g.tobytes() == w.tobytes()
 
 
+@pytest.mark.parametrize("nu", [0, 2])
+def test_large_outputs_are_the_small_calls(nu):
+    # Outputs of 4 MB or more are written through a scratch chunk with streaming stores,
+    # smaller ones in place: the same values either way, whole chunks and an odd tail, on
+    # one thread or many (evaluate_many splits a large curve into the same chunks).
+    rng = np.random.default_rng(7)
+    knots = np.concatenate([[0.0] * 3, np.linspace(0.0, 1.0, 998), [1.0] * 3])
+    curve = sk.BSpline(knots, rng.normal(size=(1000, 3)), 3)
+    t = np.concatenate([np.linspace(0.0, 1.0, 150_000), rng.random(50_003)])
+    large = curve(t, nu)
+    assert large.nbytes >= 4 << 20 and large.flags.c_contiguous
+    small = np.concatenate([curve(t[i : i + 5000], nu) for i in range(0, t.size, 5000)])
+    assert large.tobytes() == small.tobytes()
+    derivatives = curve.derivatives(t, 2)
+    pieces = [curve.derivatives(t[i : i + 5000], 2) for i in range(0, t.size, 5000)]
+    assert derivatives.tobytes() == np.concatenate(pieces).tobytes()
+    for threads in (1, 2):
+        (many,) = sk.evaluate_many([curve], [t], nu=nu, threads=threads)
+        assert many.tobytes() == large.tobytes()
+
+
 def test_evaluate_many_refuses_with_the_single_calls_message_indexed():
     shapes, params = shapes_and_params()
     outside = list(params)
