@@ -9,11 +9,11 @@ use pyo3::types::PyList;
 use rayon::prelude::*;
 
 use crate::arrays::Numbers;
-use crate::row_writer::{RowWriter, unfilled_rows};
 use crate::curve::{EvalTask, PyCurve};
 use crate::curve_kinds::wrap;
 use crate::errors::value_error;
 use crate::fitting::{Choice, FitRequest, fitted};
+use crate::row_writer::{RowWriter, unfilled_rows};
 use crate::surface::PySurface;
 
 /// Runs `work` on a pool of `threads` threads, or on rayon's global pool (one thread per

@@ -13,9 +13,9 @@ use splinekit_scene::{AnyCurve, CurveDocument, Curves, DimensionVisitor};
 use splinekit_scene::budget::{Cost, F64};
 
 use crate::arrays::{Numbers, as_points_mut, check_params};
-use crate::row_writer::filled_rows;
 use crate::budget;
 use crate::errors::{OrValueError, value_error};
+use crate::row_writer::filled_rows;
 
 /// Highest derivative order one call may ask for (as `splinekit eval --derivatives`).
 pub const MAX_DERIVATIVES: usize = 64;

@@ -10,9 +10,9 @@ use splinekit_scene::budget::{Cost, F64};
 use splinekit_scene::{AnySurface, DimensionVisitor, SurfaceDocument, Surfaces};
 
 use crate::arrays::{Numbers, as_points_mut, check_params, filled};
-use crate::row_writer::{RowWriter, unfilled_rows};
 use crate::budget;
 use crate::errors::{OrValueError, value_error};
+use crate::row_writer::{RowWriter, unfilled_rows};
 
 /// Highest total order of partials one call may ask for (as ``splinekit eval``).
 pub const MAX_SURFACE_DERIVATIVES: usize = 16;
