@@ -39,6 +39,24 @@ fn as_array<'py>(py: Python<'py>, values: Vec<f64>, shape: Vec<usize>) -> PyResu
     PyArray1::from_vec(py, values).reshape(shape).map_err(value_error)
 }
 
+/// One local piece as `local_pieces` returns it: `{"index", "support", "origin",
+/// "points"}`, the points (row-major samples of D coordinates) shaped `shape`.
+fn local_piece<'py>(
+    py: Python<'py>,
+    index: impl IntoPyObject<'py>,
+    support: impl IntoPyObject<'py>,
+    origin: &[f64],
+    points: Vec<f64>,
+    shape: Vec<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("index", index)?;
+    d.set_item("support", support)?;
+    d.set_item("origin", PyArray1::from_slice(py, origin))?;
+    d.set_item("points", as_array(py, points, shape)?)?;
+    Ok(d)
+}
+
 /// The local curves of a blending-spline document: support, origin and `samples` points
 /// of each over its support.
 pub(crate) fn local_curves<'py, const D: usize>(
@@ -58,12 +76,8 @@ pub(crate) fn local_curves<'py, const D: usize>(
             c.eval_local(k, support.lerp(i as f64 / (samples - 1) as f64), &mut v);
             points.extend(v[0].iter());
         }
-        let d = PyDict::new(py);
-        d.set_item("index", k)?;
-        d.set_item("support", (support.start, support.end))?;
-        d.set_item("origin", PyArray1::from_iter(py, c.origin(k).iter().copied()))?;
-        d.set_item("points", as_array(py, points, vec![samples, D])?)?;
-        list.append(d)?;
+        let origin = c.origin(k);
+        list.append(local_piece(py, k, (support.start, support.end), origin.as_slice(), points, vec![samples, D])?)?;
     }
     Ok(list)
 }
@@ -89,12 +103,9 @@ pub(crate) fn local_patches<'py, const D: usize>(
             s.eval_local((k, l), (rect.u.lerp(at(i)), rect.v.lerp(at(j))), 0, 0, &mut v);
             points.extend(v[0].iter());
         }
-        let d = PyDict::new(py);
-        d.set_item("index", (k, l))?;
-        d.set_item("support", ((rect.u.start, rect.u.end), (rect.v.start, rect.v.end)))?;
-        d.set_item("origin", PyArray1::from_iter(py, s.origin(k, l).iter().copied()))?;
-        d.set_item("points", as_array(py, points, vec![samples, samples, D])?)?;
-        list.append(d)?;
+        let support = ((rect.u.start, rect.u.end), (rect.v.start, rect.v.end));
+        let origin = s.origin(k, l);
+        list.append(local_piece(py, (k, l), support, origin.as_slice(), points, vec![samples, samples, D])?)?;
     }
     Ok(list)
 }
