@@ -291,19 +291,8 @@ impl<const D: usize> BezierSpans<Point<D>> {
         // The last span that is not empty: the end of the domain belongs to it (the spans
         // of knots repeated at the end are empty and never evaluated, nor moved into).
         let last_span = self.first_span + self.frames.iter().rposition(|f| f.0 < f.1).unwrap_or(self.frames.len() - 1);
-        let one = |at: &mut SpanCursor<W, Point<D>>, t: f64, o: &mut [Point<D>]| {
-            let t = map(t);
-            let (b, start, inv_h) = match at.find(self, t, &locate) {
-                None => (&at.points, at.start, at.inv_h),
-                Some(j) => self.span_at::<W>(j),
-            };
-            let u = (t - start) * inv_h;
-            if K == 1 {
-                o[0] = bernstein_sum::<W, Point<D>>(b, u);
-            } else {
-                eval_fixed::<W, Point<D>>(b, u, inv_h, o);
-            }
-        };
+        let one =
+            |at: &mut SpanCursor<W, Point<D>>, t: f64, o: &mut [Point<D>]| self.one::<W, K>(at, map(t), o, &locate);
         let in_span = |t: f64, start: f64, end: f64, span: usize| t >= start && (t < end || span == last_span);
         let mut blocks = params.chunks_exact(LANES).zip(out.chunks_exact_mut(LANES * K));
         for (raw, os) in &mut blocks {
@@ -349,6 +338,31 @@ impl<const D: usize> BezierSpans<Point<D>> {
         let rest = params.len() - params.len() % LANES;
         for (&t, o) in params[rest..].iter().zip(out[rest * K..].chunks_exact_mut(K)) {
             one(&mut at, t, o);
+        }
+    }
+}
+
+impl<const D: usize> BezierSpans<Point<D>> {
+    /// The K = order + 1 outputs at one parameter `t` (in the domain) of a batch, by the
+    /// cursor: in its span, or in t's span read in place (`SpanCursor::find`). Always
+    /// inlined, so that `locate` is inlined into the batch loop.
+    #[inline(always)]
+    fn one<const W: usize, const K: usize>(
+        &self,
+        at: &mut SpanCursor<W, Point<D>>,
+        t: f64,
+        o: &mut [Point<D>],
+        locate: &impl Fn(usize, f64) -> usize,
+    ) {
+        let (b, start, inv_h) = match at.find(self, t, locate) {
+            None => (&at.points, at.start, at.inv_h),
+            Some(j) => self.span_at::<W>(j),
+        };
+        let u = (t - start) * inv_h;
+        if K == 1 {
+            o[0] = bernstein_sum::<W, Point<D>>(b, u);
+        } else {
+            eval_fixed::<W, Point<D>>(b, u, inv_h, o);
         }
     }
 }
