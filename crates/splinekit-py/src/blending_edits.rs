@@ -8,15 +8,16 @@ use pyo3::prelude::*;
 use splinekit_scene::CurveDocument;
 use splinekit_scene::blending::{insert_local_curve, split_local_curve};
 
+use crate::blending::only_on;
 use crate::curve::PyCurve;
 use crate::curve_kinds::curve_object;
-use crate::errors::{OrValueError, value_error};
+use crate::errors::OrValueError;
 
 /// The blending-spline document of `doc`, or the error naming what `method` works on.
 fn blending(doc: &CurveDocument, method: &str) -> PyResult<splinekit_scene::blending::BlendingSplineDoc> {
     match doc {
         CurveDocument::BlendingSpline(d) => Ok(d.clone()),
-        other => Err(value_error(format!("type: {method} works on blending_spline curves, not {}", other.type_name()))),
+        other => Err(only_on(method, "blending_spline curves", other.type_name())),
     }
 }
 
