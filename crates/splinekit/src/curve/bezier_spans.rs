@@ -8,26 +8,15 @@
 //! All Bernstein weights are positive and sum to one, so the evaluation error stays at a
 //! few ulps of the control points, like de Boor's; it needs no knot access and no division.
 
+use crate::basis::bernstein::binomial_table;
 use crate::curve::span_kernel::ReciprocalKnotDifferences;
 use crate::{Coefficient, Point};
 
 /// Highest degree served by the Bézier-span path.
 pub const MAX_DEGREE: usize = 7;
 
-pub(crate) const BINOMIAL: [[f64; 8]; 8] = {
-    let mut t = [[0.0; 8]; 8];
-    let mut n = 0;
-    while n < 8 {
-        t[n][0] = 1.0;
-        let mut k = 1;
-        while k <= n {
-            t[n][k] = t[n - 1][k - 1] + if k < n { t[n - 1][k] } else { 0.0 };
-            k += 1;
-        }
-        n += 1;
-    }
-    t
-};
+/// C(n, k) for n, k ≤ [`MAX_DEGREE`].
+pub(crate) const BINOMIAL: [[f64; 8]; 8] = binomial_table::<8>();
 
 /// The Bézier form of every span s ∈ [p, N − 1] of a spline of degree 1 … 7.
 #[derive(Debug, Clone, PartialEq)]
