@@ -29,6 +29,24 @@ pub fn binomial(n: usize, k: usize) -> f64 {
     c.round()
 }
 
+/// Pascal's triangle as a table, `t[n][k]` = C(n, k) for n, k < N (zero for k > n), built
+/// at compile time row by row from C(n, k) = C(n − 1, k − 1) + C(n − 1, k); exact in f64
+/// for N ≤ 57. The fixed-width kernels read their binomial weights from such a table.
+pub(crate) const fn binomial_table<const N: usize>() -> [[f64; N]; N] {
+    let mut t = [[0.0; N]; N];
+    let mut n = 0;
+    while n < N {
+        t[n][0] = 1.0;
+        let mut k = 1;
+        while k <= n {
+            t[n][k] = t[n - 1][k - 1] + t[n - 1][k];
+            k += 1;
+        }
+        n += 1;
+    }
+    t
+}
+
 /// The single Bernstein polynomial B_{i,n}(t).
 pub fn bernstein(i: usize, degree: usize, t: f64) -> f64 {
     if i > degree {
@@ -83,5 +101,17 @@ mod tests {
             let sum: f64 = out[r * 4..r * 4 + 4].iter().sum();
             assert!((sum - if r == 0 { 1.0 } else { 0.0 }).abs() < 1e-13, "partition of unity, order {r}");
         }
+    }
+    #[test]
+    fn binomial_table_is_pascals_triangle() {
+        // Against the product formula of `binomial`, row 15 included (C(15, 7) = 6435),
+        // and zero right of the diagonal.
+        let t = binomial_table::<16>();
+        for n in 0..16 {
+            for k in 0..16 {
+                assert_eq!(t[n][k], binomial(n, k), "C({n}, {k})");
+            }
+        }
+        assert_eq!((t[15][7], t[3][4]), (6435.0, 0.0));
     }
 }

@@ -119,18 +119,13 @@ pub(crate) fn eval_many<'a, const D: usize>(
     let degree = local(0).map_or(0, |l| l.points.len().saturating_sub(1));
     debug_assert!((1..=MAX_DEGREE).contains(&degree) && order <= MAX_ORDER);
     // Monomorphised on the degree and on the number of outputs, so that every sum unrolls.
-    macro_rules! by_order {
-        ($w:literal) => {
-            match order {
-                0 => eval_many_fixed::<$w, 1, D>(knots, bfunction, local, general, params, out),
-                1 => eval_many_fixed::<$w, 2, D>(knots, bfunction, local, general, params, out),
-                2 => eval_many_fixed::<$w, 3, D>(knots, bfunction, local, general, params, out),
-                3 => eval_many_fixed::<$w, 4, D>(knots, bfunction, local, general, params, out),
-                _ => eval_many_fixed::<$w, 5, D>(knots, bfunction, local, general, params, out),
-            }
-        };
-    }
-    by_width!(degree, by_order)
+    by_width!(degree, W => match order {
+        0 => eval_many_fixed::<W, 1, D>(knots, bfunction, local, general, params, out),
+        1 => eval_many_fixed::<W, 2, D>(knots, bfunction, local, general, params, out),
+        2 => eval_many_fixed::<W, 3, D>(knots, bfunction, local, general, params, out),
+        3 => eval_many_fixed::<W, 4, D>(knots, bfunction, local, general, params, out),
+        _ => eval_many_fixed::<W, 5, D>(knots, bfunction, local, general, params, out),
+    })
 }
 
 /// [`eval_many`] for W = d + 1 Bézier points per local and K = order + 1 outputs.

@@ -8,26 +8,15 @@
 //! All Bernstein weights are positive and sum to one, so the evaluation error stays at a
 //! few ulps of the control points, like de Boor's; it needs no knot access and no division.
 
+use crate::basis::bernstein::binomial_table;
 use crate::curve::span_kernel::ReciprocalKnotDifferences;
 use crate::{Coefficient, Point};
 
 /// Highest degree served by the Bézier-span path.
 pub const MAX_DEGREE: usize = 7;
 
-pub(crate) const BINOMIAL: [[f64; 8]; 8] = {
-    let mut t = [[0.0; 8]; 8];
-    let mut n = 0;
-    while n < 8 {
-        t[n][0] = 1.0;
-        let mut k = 1;
-        while k <= n {
-            t[n][k] = t[n - 1][k - 1] + if k < n { t[n - 1][k] } else { 0.0 };
-            k += 1;
-        }
-        n += 1;
-    }
-    t
-};
+/// C(n, k) for n, k ≤ [`MAX_DEGREE`].
+pub(crate) const BINOMIAL: [[f64; 8]; 8] = binomial_table::<8>();
 
 /// The Bézier form of every span s ∈ [p, N − 1] of a spline of degree 1 … 7.
 #[derive(Debug, Clone, PartialEq)]
@@ -88,33 +77,30 @@ impl<T: Coefficient> BezierSpans<T> {
         let (start, _, inv_h) = self.frames[i];
         let u = (t - start) * inv_h;
         let b = &self.points[i * w..(i + 1) * w];
-        match self.degree {
-            1 => eval_fixed::<2, T>(b, u, inv_h, out),
-            2 => eval_fixed::<3, T>(b, u, inv_h, out),
-            3 => eval_fixed::<4, T>(b, u, inv_h, out),
-            4 => eval_fixed::<5, T>(b, u, inv_h, out),
-            5 => eval_fixed::<6, T>(b, u, inv_h, out),
-            6 => eval_fixed::<7, T>(b, u, inv_h, out),
-            _ => eval_fixed::<8, T>(b, u, inv_h, out),
-        }
+        by_width!(self.degree, W => eval_fixed::<W, T>(b, u, inv_h, out))
     }
 }
 
-/// Calls `$then!(W)` with the literal width W = p + 1 of a span of degree p = 1 … 7, so
-/// that the code under it is monomorphised on W and its sums unroll (p = 0 is never asked
-/// for; the widest, 8, takes every degree above 6).
+/// `by_width!(degree, W => body)`: `body` with the constant `W` = p + 1, the width of a
+/// span of degree p = 1 … 7, so that the code under it (`f::<W>(…)`) is monomorphised on W
+/// and its sums unroll (p = 0 is never asked for; the widest, 8, takes every degree above
+/// 6). One match on the degree for every fixed-width kernel.
 macro_rules! by_width {
-    ($degree:expr, $then:ident) => {
+    ($degree:expr, $w:ident => $body:expr) => {
         match $degree {
-            1 => $then!(2),
-            2 => $then!(3),
-            3 => $then!(4),
-            4 => $then!(5),
-            5 => $then!(6),
-            6 => $then!(7),
-            _ => $then!(8),
+            1 => $crate::curve::bezier_spans::by_width!(@ $w = 2, $body),
+            2 => $crate::curve::bezier_spans::by_width!(@ $w = 3, $body),
+            3 => $crate::curve::bezier_spans::by_width!(@ $w = 4, $body),
+            4 => $crate::curve::bezier_spans::by_width!(@ $w = 5, $body),
+            5 => $crate::curve::bezier_spans::by_width!(@ $w = 6, $body),
+            6 => $crate::curve::bezier_spans::by_width!(@ $w = 7, $body),
+            _ => $crate::curve::bezier_spans::by_width!(@ $w = 8, $body),
         }
     };
+    (@ $w:ident = $width:literal, $body:expr) => {{
+        const $w: usize = $width;
+        $body
+    }};
 }
 pub(crate) use by_width;
 
@@ -124,15 +110,7 @@ impl<T: Coefficient> BezierSpans<T> {
     #[inline]
     pub fn point(&self, span: usize, t: f64) -> T {
         let j = span - self.first_span;
-        match self.degree {
-            1 => self.point_fixed::<2>(j, t),
-            2 => self.point_fixed::<3>(j, t),
-            3 => self.point_fixed::<4>(j, t),
-            4 => self.point_fixed::<5>(j, t),
-            5 => self.point_fixed::<6>(j, t),
-            6 => self.point_fixed::<7>(j, t),
-            _ => self.point_fixed::<8>(j, t),
-        }
+        by_width!(self.degree, W => self.point_fixed::<W>(j, t))
     }
 
     #[inline(always)]
@@ -155,15 +133,7 @@ impl<T: Coefficient> BezierSpans<T> {
         map: impl Fn(f64) -> f64,
         locate: impl Fn(usize, f64) -> usize,
     ) {
-        match self.degree {
-            1 => self.eval_many_fixed::<2>(params, order, out, map, locate),
-            2 => self.eval_many_fixed::<3>(params, order, out, map, locate),
-            3 => self.eval_many_fixed::<4>(params, order, out, map, locate),
-            4 => self.eval_many_fixed::<5>(params, order, out, map, locate),
-            5 => self.eval_many_fixed::<6>(params, order, out, map, locate),
-            6 => self.eval_many_fixed::<7>(params, order, out, map, locate),
-            _ => self.eval_many_fixed::<8>(params, order, out, map, locate),
-        }
+        by_width!(self.degree, W => self.eval_many_fixed::<W>(params, order, out, map, locate))
     }
 
     #[inline(always)]
@@ -227,7 +197,7 @@ impl<const D: usize> BezierSpans<Point<D>> {
         locate: impl Fn(usize, f64) -> usize,
     ) {
         macro_rules! fixed {
-            ($w:literal, $k:literal) => {{
+            ($w:ident, $k:literal) => {{
                 #[cfg(target_arch = "x86_64")]
                 if std::arch::is_x86_feature_detected!("avx2") {
                     // SAFETY: the CPU has AVX2 (checked just above).
@@ -236,19 +206,14 @@ impl<const D: usize> BezierSpans<Point<D>> {
                 self.lanes::<$w, $k>(params, out, map, locate)
             }};
         }
-        macro_rules! by_order {
-            ($w:literal) => {
-                match order {
-                    0 => fixed!($w, 1),
-                    1 => fixed!($w, 2),
-                    _ => fixed!($w, 3),
-                }
-            };
-        }
         if order > MAX_LANE_ORDER {
             return self.eval_many(params, order, out, map, locate);
         }
-        by_width!(self.degree, by_order)
+        by_width!(self.degree, W => match order {
+            0 => fixed!(W, 1),
+            1 => fixed!(W, 2),
+            _ => fixed!(W, 3),
+        })
     }
 
     /// [`Self::lanes`] compiled for AVX2 (four lanes of doubles): the same operations in

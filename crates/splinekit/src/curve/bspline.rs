@@ -179,15 +179,27 @@ impl<const D: usize> BSplineCurve<D> {
     }
 }
 
+/// Writes, inside an `impl Curve<D> for …` of a spline curve, the methods it takes from its
+/// knots — `domain`, `is_closed` (periodic knots) and `breakpoints` — as those of the field
+/// `$knots` (the `SplineAxis` of a B-spline curve, the B-spline curve a NURBS curve keeps).
+macro_rules! spline_curve_knots {
+    ($knots:ident) => {
+        fn domain(&self) -> $crate::Interval {
+            self.$knots.domain()
+        }
+        fn is_closed(&self) -> bool {
+            self.$knots.is_periodic()
+        }
+        fn breakpoints(&self) -> Vec<f64> {
+            self.$knots.breakpoints()
+        }
+    };
+}
+pub(crate) use spline_curve_knots;
+
 impl<const D: usize> Curve<D> for BSplineCurve<D> {
     crate::curve::control_box::control_point_box!("a B-spline curve");
-    fn domain(&self) -> Interval {
-        self.axis.domain()
-    }
-
-    fn is_closed(&self) -> bool {
-        self.axis.is_periodic()
-    }
+    spline_curve_knots!(axis);
 
     #[inline]
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
@@ -229,10 +241,6 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
             let span = axis.span(t);
             self.eval_on(span, t, &mut out[i * w..(i + 1) * w]);
         }
-    }
-
-    fn breakpoints(&self) -> Vec<f64> {
-        self.axis.breakpoints()
     }
 }
 

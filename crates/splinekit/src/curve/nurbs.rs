@@ -7,7 +7,7 @@ use crate::basis::Side;
 use crate::curve::bezier_spans::BezierSpans;
 use crate::curve::rational::rational_derivatives;
 use crate::curve::span_kernel::eval_on_span;
-use crate::curve::{BSplineCurve, CircleFrame, Curve, Interval};
+use crate::curve::{BSplineCurve, CircleFrame, Curve};
 use crate::error::{Error, Result, check_finite};
 use crate::ops::homogeneous::Homogeneous;
 use crate::tolerance::ANGLE_SLACK;
@@ -184,12 +184,7 @@ pub(crate) fn check_weights(weights: &[f64], n: usize) -> Result<()> {
 
 impl<const D: usize> Curve<D> for NurbsCurve<D> {
     crate::curve::control_box::control_point_box!("a NURBS curve (weights > 0)");
-    fn domain(&self) -> Interval {
-        self.weighted.domain()
-    }
-    fn is_closed(&self) -> bool {
-        self.weighted.is_periodic()
-    }
+    crate::curve::bspline::spline_curve_knots!(weighted);
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
         let t = self.weighted.normalise(t, side);
         let span = self.weighted.span_of(t, side);
@@ -213,8 +208,5 @@ impl<const D: usize> Curve<D> for NurbsCurve<D> {
             w[k] = hk.weight;
         }
         rational_derivatives(out, &w);
-    }
-    fn breakpoints(&self) -> Vec<f64> {
-        self.weighted.breakpoints()
     }
 }

@@ -163,57 +163,44 @@ pub fn curvature_from<const D: usize>(d1: &Point<D>, d2: &Point<D>) -> f64 {
     cross2.sqrt() / (s2 * s2.sqrt())
 }
 
-/// Implements [`Curve`] for a pointer to a curve, forwarding every method — the provided
-/// ones too, so an override in the pointee (a faster `eval_many`, an exact `length`) is
-/// kept behind `&C`, `Box<C>` and `Arc<C>`.
-macro_rules! forward_curve {
-    ($($lt:lifetime)? ; $ptr:ty) => {
-        impl<$($lt,)? const D: usize, C: Curve<D> + ?Sized> Curve<D> for $ptr {
-            #[inline]
-            fn domain(&self) -> Interval {
-                (**self).domain()
-            }
-            #[inline]
-            fn is_closed(&self) -> bool {
-                (**self).is_closed()
-            }
-            #[inline]
-            fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-                (**self).eval_side(t, side, out)
-            }
-            #[inline]
-            fn eval(&self, t: f64, out: &mut [Point<D>]) {
-                (**self).eval(t, out)
-            }
-            fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
-                (**self).eval_many(params, order, out)
-            }
-            fn breakpoints(&self) -> Vec<f64> {
-                (**self).breakpoints()
-            }
-            #[inline]
-            fn point(&self, t: f64) -> Point<D> {
-                (**self).point(t)
-            }
-            fn derivative(&self, t: f64, order: usize) -> Point<D> {
-                (**self).derivative(t, order)
-            }
-            fn tangent(&self, t: f64) -> Point<D> {
-                (**self).tangent(t)
-            }
-            fn curvature(&self, t: f64) -> f64 {
-                (**self).curvature(t)
-            }
-            fn frame(&self, t: f64) -> Option<FrenetFrame<D>> {
-                (**self).frame(t)
-            }
-            fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
-                (**self).enclosing_box()
-            }
+/// Implements a kernel trait (`Curve` or `Surface`, generic over the dimension D) for
+/// `&T`, `Box<T>` and `Arc<T>` of any `T` that implements it, forwarding every listed
+/// method — given by its signature, `fn name(&self, arg: Type, …) -> Return;`, attributes
+/// first — to the pointee, `(**self).name(arg, …)`. Listing the provided methods too keeps
+/// an override in the pointee (a faster `eval_many`, a trimmed surface's loops) behind
+/// any pointer.
+macro_rules! forward_through_pointers {
+    ($tr:ident { $($methods:tt)* }) => {
+        $crate::curve::traits::forward_through_pointers!(@impl ['a] &'a T, $tr { $($methods)* });
+        $crate::curve::traits::forward_through_pointers!(@impl [] Box<T>, $tr { $($methods)* });
+        $crate::curve::traits::forward_through_pointers!(@impl [] std::sync::Arc<T>, $tr { $($methods)* });
+    };
+    (@impl [$($lt:lifetime)?] $ptr:ty, $tr:ident {
+        $($(#[$attr:meta])* fn $name:ident(&self $(, $arg:ident: $ty:ty)*) $(-> $ret:ty)?;)*
+    }) => {
+        impl<$($lt,)? const D: usize, T: $tr<D> + ?Sized> $tr<D> for $ptr {
+            $(
+                $(#[$attr])*
+                fn $name(&self $(, $arg: $ty)*) $(-> $ret)? {
+                    (**self).$name($($arg),*)
+                }
+            )*
         }
     };
 }
+pub(crate) use forward_through_pointers;
 
-forward_curve!('a; &'a C);
-forward_curve!(; Box<C>);
-forward_curve!(; std::sync::Arc<C>);
+forward_through_pointers!(Curve {
+    #[inline] fn domain(&self) -> Interval;
+    #[inline] fn is_closed(&self) -> bool;
+    #[inline] fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]);
+    #[inline] fn eval(&self, t: f64, out: &mut [Point<D>]);
+    fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]);
+    fn breakpoints(&self) -> Vec<f64>;
+    #[inline] fn point(&self, t: f64) -> Point<D>;
+    fn derivative(&self, t: f64, order: usize) -> Point<D>;
+    fn tangent(&self, t: f64) -> Point<D>;
+    fn curvature(&self, t: f64) -> f64;
+    fn frame(&self, t: f64) -> Option<FrenetFrame<D>>;
+    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>>;
+});

@@ -62,20 +62,7 @@ pub fn product_2d<A, B>(
 }
 
 /// Pascal's triangle, C(n, k) for n, k < 16 (exact in f64).
-const BINOMIALS: [[f64; 16]; 16] = {
-    let mut t = [[0.0; 16]; 16];
-    let mut n = 0;
-    while n < 16 {
-        t[n][0] = 1.0;
-        let mut k = 1;
-        while k <= n {
-            t[n][k] = t[n - 1][k - 1] + t[n - 1][k];
-            k += 1;
-        }
-        n += 1;
-    }
-    t
-};
+const BINOMIALS: [[f64; 16]; 16] = crate::basis::bernstein::binomial_table::<16>();
 
 /// The row C(n, 0 …) of binomial coefficients, n ≤ 15.
 #[inline]

@@ -54,7 +54,8 @@ where
     let marcher = Marcher { a, b, tolerance, chord, max_step: size / 16.0 };
     let (cover_a, cover_b) = (SurfaceCover::new(a), SurfaceCover::new(b));
     let (h0, reach) = (size / 128.0, 4.0 * chord + 10.0 * tolerance);
-    let seeds = pair_seeds(&marcher, &cover_a, &cover_b, |seed| trace(&marcher, seed, h0, reach, Contact::Touching))?;
+    let tracer = |contact| Tracer { m: &marcher, h0, reach, contact };
+    let seeds = pair_seeds(&marcher, &cover_a, &cover_b, |seed| tracer(Contact::Touching).trace(seed))?;
     let mut branches = seeds.touching;
     for seed in seeds.crossing {
         if branches.iter().any(|br| near_polyline(&br.points, &seed.point, reach)) {
@@ -63,7 +64,7 @@ where
         if branches.len() >= MAX_BRANCHES {
             break;
         }
-        branches.push(trace(&marcher, seed, h0, reach, Contact::Crossing));
+        branches.push(tracer(Contact::Crossing).trace(seed));
     }
     if branches.len() >= MAX_BRANCHES {
         return Err(Error::numerical("surface intersection", format!("more than {MAX_BRANCHES} branches")));
@@ -79,34 +80,73 @@ fn extent<S: Surface<3> + ?Sized>(s: &S) -> f64 {
     crate::query::bounds::Aabb::around(&pts, 0.0).diagonal()
 }
 
-/// The branch of the given contact through `seed`: forward, and backward unless it closed.
-fn trace<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(
-    m: &Marcher<'_, A, B>,
-    seed: MarchPoint,
+/// The tracing of the branches of one contact: the marcher, its first step `h0`, the
+/// closing distance `reach` (> 0) and the contact followed.
+struct Tracer<'m, 's, A: ?Sized, B: ?Sized> {
+    m: &'m Marcher<'s, A, B>,
     h0: f64,
     reach: f64,
     contact: Contact,
-) -> IntersectionBranch {
-    let tangent = contact == Contact::Touching;
-    let (forward, closed, stop_f) = march(m, seed, h0, reach, contact);
-    let mut pts = if closed {
-        forward
-    } else {
-        let back_seed = MarchPoint { tangent: -seed.tangent, ..seed };
-        let (mut backward, _, stop_b) = march(m, back_seed, h0, 0.0, contact);
-        backward.reverse();
-        backward.pop();
-        backward.extend(forward);
-        // Both ends on a seam stored as a boundary (a NURBS circle's): one closed loop.
-        let (first, last) = (backward[0].point, backward[backward.len() - 1].point);
-        let stop = stop_f.or(stop_b);
-        let seam = stop.is_none() && backward.len() > 2 && (first - last).norm() <= reach;
-        return branch(backward, seam, stop, tangent);
-    };
-    if closed {
-        pts.push(seed);
+}
+
+impl<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized> Tracer<'_, '_, A, B> {
+    /// The branch through `seed`: forward, and backward unless it closed.
+    fn trace(&self, seed: MarchPoint) -> IntersectionBranch {
+        let (reach, tangent) = (self.reach, self.contact == Contact::Touching);
+        let (forward, closed, stop_f) = self.march(seed, true);
+        let mut pts = if closed {
+            forward
+        } else {
+            let back_seed = MarchPoint { tangent: -seed.tangent, ..seed };
+            let (mut backward, _, stop_b) = self.march(back_seed, false);
+            backward.reverse();
+            backward.pop();
+            backward.extend(forward);
+            // Both ends on a seam stored as a boundary (a NURBS circle's): one closed loop.
+            let (first, last) = (backward[0].point, backward[backward.len() - 1].point);
+            let stop = stop_f.or(stop_b);
+            let seam = stop.is_none() && backward.len() > 2 && (first - last).norm() <= reach;
+            return branch(backward, seam, stop, tangent);
+        };
+        if closed {
+            pts.push(seed);
+        }
+        branch(pts, closed, stop_f, tangent)
     }
-    branch(pts, closed, stop_f, tangent)
+
+    /// Marches from `seed` along its tangent; with `close`, closes the loop when a step
+    /// passes within `reach` of the seed after the march has been farther than 4·`reach`
+    /// from it. The points (seed first), whether it closed, and why it stopped early.
+    fn march(&self, seed: MarchPoint, close: bool) -> (Vec<MarchPoint>, bool, Option<EarlyStop>) {
+        let reach = self.reach;
+        let mut pts = vec![seed];
+        let (mut h, mut far) = (self.h0, 0.0f64);
+        while pts.len() < MAX_POINTS {
+            let last = pts[pts.len() - 1];
+            let (next, stop) = match self.m.step(&last, h, self.contact) {
+                StepEnd::Inside(p, grow) => {
+                    h = grow;
+                    (p, false)
+                }
+                StepEnd::Boundary(p) => (p, true),
+                StepEnd::Tangential => return (pts, false, Some(EarlyStop::Tangential)),
+                StepEnd::StepLimit => return (pts, false, Some(EarlyStop::StepLimit)),
+            };
+            far = far.max((next.point - seed.point).norm());
+            let closes = close
+                && pts.len() >= 4
+                && far > 4.0 * reach
+                && segment_distance(&last.point, &next.point, &seed.point) <= reach;
+            if closes {
+                return (pts, true, None);
+            }
+            pts.push(next);
+            if stop {
+                return (pts, false, None);
+            }
+        }
+        (pts, false, Some(EarlyStop::PointLimit))
+    }
 }
 
 fn branch(pts: Vec<MarchPoint>, closed: bool, early_stop: Option<EarlyStop>, tangent: bool) -> IntersectionBranch {
@@ -118,44 +158,4 @@ fn branch(pts: Vec<MarchPoint>, closed: bool, early_stop: Option<EarlyStop>, tan
         early_stop,
         tangent,
     }
-}
-
-/// Marches from `seed` along its tangent on a curve of the given contact; closes the loop
-/// when `reach` > 0 and a step passes within it of the seed after the march has been
-/// farther than 4·`reach` from it. The points (seed first), whether it closed, and why it
-/// stopped early.
-fn march<A: Surface<3> + ?Sized, B: Surface<3> + ?Sized>(
-    m: &Marcher<'_, A, B>,
-    seed: MarchPoint,
-    h0: f64,
-    reach: f64,
-    contact: Contact,
-) -> (Vec<MarchPoint>, bool, Option<EarlyStop>) {
-    let mut pts = vec![seed];
-    let (mut h, mut far) = (h0, 0.0f64);
-    while pts.len() < MAX_POINTS {
-        let last = pts[pts.len() - 1];
-        let (next, stop) = match m.step(&last, h, contact) {
-            StepEnd::Inside(p, grow) => {
-                h = grow;
-                (p, false)
-            }
-            StepEnd::Boundary(p) => (p, true),
-            StepEnd::Tangential => return (pts, false, Some(EarlyStop::Tangential)),
-            StepEnd::StepLimit => return (pts, false, Some(EarlyStop::StepLimit)),
-        };
-        far = far.max((next.point - seed.point).norm());
-        let closes = reach > 0.0
-            && pts.len() >= 4
-            && far > 4.0 * reach
-            && segment_distance(&last.point, &next.point, &seed.point) <= reach;
-        if closes {
-            return (pts, true, None);
-        }
-        pts.push(next);
-        if stop {
-            return (pts, false, None);
-        }
-    }
-    (pts, false, Some(EarlyStop::PointLimit))
 }

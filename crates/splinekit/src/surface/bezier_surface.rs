@@ -45,11 +45,7 @@ impl<const D: usize> BezierSurface<D> {
 }
 
 impl<const D: usize> Surface<D> for BezierSurface<D> {
-    /// The box of the control net: it holds the surface, since a Bézier surface lies in the
-    /// convex hull of its control points; not tight in general.
-    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
-        Some(crate::query::Aabb::around(self.control_points().iter().flatten(), 0.0))
-    }
+    crate::curve::control_box::control_point_box!(net "a Bézier surface");
     crate::surface::unit_square::unit_square_domains!();
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let (u, v) = (u.clamp(0.0, 1.0), v.clamp(0.0, 1.0));

@@ -88,11 +88,7 @@ impl<const D: usize> BSplineSurface<D> {
 }
 
 impl<const D: usize> Surface<D> for BSplineSurface<D> {
-    /// The box of the control net: it holds the surface, since a B-spline surface lies in the
-    /// convex hull of its control points; not tight in general.
-    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
-        Some(crate::query::Aabb::around(self.control_points().iter().flatten(), 0.0))
-    }
+    crate::curve::control_box::control_point_box!(net "a B-spline surface");
     tensor_surface_domains!();
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         self.spline.eval_partials(u, v, du, dv, out)

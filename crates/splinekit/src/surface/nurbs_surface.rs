@@ -95,11 +95,7 @@ fn rational_partials<const D: usize>(h: &[Homogeneous<D>], du: usize, dv: usize,
 }
 
 impl<const D: usize> Surface<D> for NurbsSurface<D> {
-    /// The box of the control net: it holds the surface, since a NURBS surface (weights > 0) lies in the
-    /// convex hull of its control points; not tight in general.
-    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
-        Some(crate::query::Aabb::around(self.control_points().iter().flatten(), 0.0))
-    }
+    crate::curve::control_box::control_point_box!(net "a NURBS surface (weights > 0)");
     tensor_surface_domains!();
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let n = (du + 1) * (dv + 1);

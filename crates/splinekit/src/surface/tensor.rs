@@ -5,6 +5,7 @@ use smallvec::{SmallVec, smallvec};
 
 use crate::Coefficient;
 use crate::basis::{SplineAxis, basis_derivatives};
+use crate::curve::bezier_spans::by_width;
 use crate::curve::span_kernel::eval_local;
 use crate::error::{Error, Result};
 
@@ -295,25 +296,14 @@ impl<const D: usize> TensorSpline<crate::Point<D>> {
                 normals[k] = crate::surface::unit_normal(&su, &sv).unwrap_or_else(crate::Point::<D>::zeros);
             });
         }
-        macro_rules! fixed {
-            ($w:literal) => {{
-                #[cfg(target_arch = "x86_64")]
-                if std::arch::is_x86_feature_detected!("avx2") {
-                    // SAFETY: the CPU has AVX2 (checked just above).
-                    return unsafe { self.grid_points_normals_avx2::<$w>(us, vs, points, normals) };
-                }
-                self.grid_points_normals::<$w>(us, vs, points, normals)
-            }};
-        }
-        match wv {
-            2 => fixed!(2),
-            3 => fixed!(3),
-            4 => fixed!(4),
-            5 => fixed!(5),
-            6 => fixed!(6),
-            7 => fixed!(7),
-            _ => fixed!(8),
-        }
+        by_width!(self.v.degree(), W => {
+            #[cfg(target_arch = "x86_64")]
+            if std::arch::is_x86_feature_detected!("avx2") {
+                // SAFETY: the CPU has AVX2 (checked just above).
+                return unsafe { self.grid_points_normals_avx2::<W>(us, vs, points, normals) };
+            }
+            self.grid_points_normals::<W>(us, vs, points, normals)
+        })
     }
 
     /// [`Self::grid_points_normals`] compiled for AVX2: the same operations in the same

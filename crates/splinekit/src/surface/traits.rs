@@ -290,82 +290,25 @@ fn unit_normal_rescaled<const D: usize>(a: &Point<D>, b: &Point<D>) -> Option<Po
     (len > 0.0 && len.is_finite()).then(|| n / len)
 }
 
-/// Implements [`Surface`] for a pointer to a surface, forwarding every method — the
-/// provided ones too (a tensor-product grid path, a trimmed surface's loops), behind `&S`,
-/// `Box<S>` and `Arc<S>`.
-macro_rules! forward_surface {
-    ($($lt:lifetime)? ; $ptr:ty) => {
-        impl<$($lt,)? const D: usize, S: Surface<D> + ?Sized> Surface<D> for $ptr {
-            #[inline]
-            fn domain_u(&self) -> Interval {
-                (**self).domain_u()
-            }
-            #[inline]
-            fn domain_v(&self) -> Interval {
-                (**self).domain_v()
-            }
-            #[inline]
-            fn is_closed_u(&self) -> bool {
-                (**self).is_closed_u()
-            }
-            #[inline]
-            fn is_closed_v(&self) -> bool {
-                (**self).is_closed_v()
-            }
-            #[inline]
-            fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
-                (**self).eval_partials(u, v, du, dv, out)
-            }
-            fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
-                (**self).eval_grid(us, vs, du, dv, out)
-            }
-            fn eval_grid_with_normals(
-                &self,
-                us: &[f64],
-                vs: &[f64],
-                points: &mut [Point<D>],
-                normals: &mut [Point<D>],
-            ) {
-                (**self).eval_grid_with_normals(us, vs, points, normals)
-            }
-            fn trim_contains(&self, u: f64, v: f64) -> Option<bool> {
-                (**self).trim_contains(u, v)
-            }
-            fn trim_loops(&self) -> Option<TrimLoops<'_>> {
-                (**self).trim_loops()
-            }
-            fn subdivision(&self) -> Option<&crate::subdivision::surface::SubdivisionSurface> {
-                (**self).subdivision()
-            }
-            fn breakpoints_u(&self) -> Vec<f64> {
-                (**self).breakpoints_u()
-            }
-            fn breakpoints_v(&self) -> Vec<f64> {
-                (**self).breakpoints_v()
-            }
-            fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
-                (**self).enclosing_box()
-            }
-            #[inline]
-            fn point(&self, u: f64, v: f64) -> Point<D> {
-                (**self).point(u, v)
-            }
-            fn partial(&self, u: f64, v: f64, i: usize, j: usize) -> Point<D> {
-                (**self).partial(u, v, i, j)
-            }
-            fn normal(&self, u: f64, v: f64) -> Option<Point<D>> {
-                (**self).normal(u, v)
-            }
-            fn fundamental_forms(&self, u: f64, v: f64) -> Option<FundamentalForms> {
-                (**self).fundamental_forms(u, v)
-            }
-            fn curvatures(&self, u: f64, v: f64) -> Option<Curvatures> {
-                (**self).curvatures(u, v)
-            }
-        }
-    };
-}
-
-forward_surface!('a; &'a S);
-forward_surface!(; Box<S>);
-forward_surface!(; std::sync::Arc<S>);
+// Every method, the provided ones too (a tensor-product grid path, a trimmed surface's
+// loops), behind `&S`, `Box<S>` and `Arc<S>`.
+crate::curve::traits::forward_through_pointers!(Surface {
+    #[inline] fn domain_u(&self) -> Interval;
+    #[inline] fn domain_v(&self) -> Interval;
+    #[inline] fn is_closed_u(&self) -> bool;
+    #[inline] fn is_closed_v(&self) -> bool;
+    #[inline] fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]);
+    fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]);
+    fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]);
+    fn trim_contains(&self, u: f64, v: f64) -> Option<bool>;
+    fn trim_loops(&self) -> Option<TrimLoops<'_>>;
+    fn subdivision(&self) -> Option<&crate::subdivision::surface::SubdivisionSurface>;
+    fn breakpoints_u(&self) -> Vec<f64>;
+    fn breakpoints_v(&self) -> Vec<f64>;
+    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>>;
+    #[inline] fn point(&self, u: f64, v: f64) -> Point<D>;
+    fn partial(&self, u: f64, v: f64, i: usize, j: usize) -> Point<D>;
+    fn normal(&self, u: f64, v: f64) -> Option<Point<D>>;
+    fn fundamental_forms(&self, u: f64, v: f64) -> Option<FundamentalForms>;
+    fn curvatures(&self, u: f64, v: f64) -> Option<Curvatures>;
+});
