@@ -10,10 +10,16 @@ use serde_json::{Map, Value};
 use crate::error::{DocumentError, Result};
 use crate::json::fields;
 
+/// The index k of a key `"k"` (blanks around it allowed), or `None` when the key is not
+/// one index. Every keyed field reads a local's index with it.
+pub(crate) fn parse_index(key: &str) -> Option<usize> {
+    key.trim().parse().ok()
+}
+
 /// The pair (k, l) of a key `"k,l"` (blanks around either index allowed), or `None` when
 /// the key is not two indices separated by a comma.
 pub(crate) fn parse_pair(key: &str) -> Option<(usize, usize)> {
-    key.split_once(',').and_then(|(a, b)| Some((a.trim().parse().ok()?, b.trim().parse().ok()?)))
+    key.split_once(',').and_then(|(a, b)| Some((parse_index(a)?, parse_index(b)?)))
 }
 
 /// The key `"k"` of local k.
@@ -64,6 +70,15 @@ mod tests {
     use super::*;
 
     #[test]
+    fn index_keys_parse_one_index_and_refuse_the_rest() {
+        assert_eq!(parse_index("3"), Some(3));
+        assert_eq!(parse_index(" 3 "), Some(3));
+        for key in ["", "-1", "a", "3,", "1.5"] {
+            assert_eq!(parse_index(key), None, "{key}");
+        }
+    }
+
+    #[test]
     fn pair_keys_parse_two_indices_and_refuse_the_rest() {
         assert_eq!(parse_pair("2,3"), Some((2, 3)));
         assert_eq!(parse_pair(" 2 , 3 "), Some((2, 3)));
@@ -77,7 +92,7 @@ mod tests {
     #[test]
     fn entries_keep_the_object_order_and_locate_errors() {
         let Value::Object(map) = json!({"3": 1.5, "0": 2.5}) else { unreachable!() };
-        let read: Vec<(usize, f64)> = entries(map, |k| k.parse().ok(), "bad key").unwrap();
+        let read: Vec<(usize, f64)> = entries(map, parse_index, "bad key").unwrap();
         assert_eq!(read, vec![(3, 1.5), (0, 2.5)]);
 
         let Value::Object(map) = json!({"0": 1.0, "x": 2.0}) else { unreachable!() };

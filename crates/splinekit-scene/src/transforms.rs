@@ -101,7 +101,7 @@ pub mod by_index {
                 .enumerate()
                 .map(|(i, t)| Ok((i, fields(t.clone()).map_err(|e| e.within(&format!("[{i}]")))?)))
                 .collect(),
-            Value::Object(map) => keyed::entries(map, |key| key.parse().ok(), "keys must be local-curve indices"),
+            Value::Object(map) => keyed::entries(map, keyed::parse_index, "keys must be local-curve indices"),
             other => Err(DocumentError::new("", format!("expected a list or an object, got {}", kind(&other)))),
         }
     }

@@ -40,7 +40,7 @@ pub mod by_index {
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<LocalControlPoints, D::Error> {
         nested(d, |value| {
             let Some(map) = object(value, "local-curve index")? else { return Ok(Vec::new()) };
-            keyed::entries(map, |key| key.trim().parse().ok(), "keys must be local-curve indices (\"3\")")
+            keyed::entries(map, keyed::parse_index, "keys must be local-curve indices (\"3\")")
         })
     }
 
