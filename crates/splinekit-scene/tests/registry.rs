@@ -123,6 +123,18 @@ fn errors_in_nested_documents_name_the_full_path() {
             "transforms.x: keys must be local-curve indices",
         ),
         (
+            json!({"type": "blending_spline", "model": {"type": "circle"}, "local_curves": 4, "transforms": 3}),
+            "transforms: expected a list or an object, got a number",
+        ),
+        (
+            json!({"type": "blending_spline_surface", "model": {"type": "torus"}, "local_surfaces": [4, 4], "transforms": "all"}),
+            "transforms: expected a list of rows or an object, got a string",
+        ),
+        (
+            json!({"type": "blending_spline_surface", "model": {"type": "torus"}, "local_surfaces": [4, 4], "transforms": {"1": {}}}),
+            "transforms.1: keys must be patch indices \"k,l\"",
+        ),
+        (
             json!({"type": "blending_spline", "model": {"type": "circle"}, "local_curves": 4, "transforms": [{}, {"scale": "big"}]}),
             "transforms[1].scale: invalid type: string \"big\", expected f64",
         ),
