@@ -2,9 +2,12 @@
 //! applied in the local piece's frame about its origin: scale, then rotate, then translate.
 
 use serde::{Deserialize, Serialize};
+use serde_json::Value;
 use splinekit::frame::Affine;
 
 use crate::error::{DocumentError, Result};
+use crate::json::kind;
+use crate::keyed;
 
 /// A rotation: about `axis` (3-D) by `angle` radians; 2-D rotations give only the angle.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -77,64 +80,60 @@ pub type LocalTransforms = Vec<(usize, TransformDoc)>;
 /// Rest transforms of a blending-spline surface's patches, by patch index (k, l).
 pub type PatchTransforms = Vec<((usize, usize), TransformDoc)>;
 
+/// Per-piece transforms as a document holds them: `null` (none), a list (read by `list`;
+/// `what` names it in the message for other values) or an object keyed by the pieces'
+/// indices (a key naming none is refused with `refusal`).
+fn read<K: keyed::Key>(
+    value: Value,
+    what: &str,
+    refusal: &str,
+    list: impl FnOnce(&[Value]) -> Result<Vec<(K, TransformDoc)>>,
+) -> Result<Vec<(K, TransformDoc)>> {
+    match value {
+        Value::Null => Ok(Vec::new()),
+        Value::Array(items) => list(&items),
+        Value::Object(map) => keyed::entries(map, refusal),
+        other => Err(DocumentError::new("", format!("expected {what} or an object, got {}", kind(&other)))),
+    }
+}
+
 /// Per-local transforms of a blending-spline curve (`with` module for serde): read from a
 /// list (one per local, in order) or an object keyed by local index; written as the object.
 pub mod by_index {
-    use serde::{Deserializer, Serializer};
-    use serde_json::Value;
+    use serde::Deserializer;
 
-    use super::{LocalTransforms, TransformDoc};
-    use crate::error::{DocumentError, Result};
-    use crate::json::{fields, kind, nested};
-    use crate::keyed;
+    use super::{LocalTransforms, read};
+    use crate::json::{fields, nested};
+    pub(crate) use crate::keyed::serialize;
 
     /// Reads `transforms`.
     pub fn deserialize<'de, D: Deserializer<'de>>(deserializer: D) -> std::result::Result<LocalTransforms, D::Error> {
-        nested(deserializer, parse)
-    }
-
-    fn parse(value: Value) -> Result<LocalTransforms> {
-        match value {
-            Value::Null => Ok(Vec::new()),
-            Value::Array(list) => list
-                .iter()
-                .enumerate()
-                .map(|(i, t)| Ok((i, fields(t.clone()).map_err(|e| e.within(&format!("[{i}]")))?)))
-                .collect(),
-            Value::Object(map) => keyed::entries(map, |key| key.parse().ok(), "keys must be local-curve indices"),
-            other => Err(DocumentError::new("", format!("expected a list or an object, got {}", kind(&other)))),
-        }
-    }
-
-    /// Writes `transforms` as an object keyed by index.
-    pub fn serialize<S: Serializer>(
-        transforms: &[(usize, TransformDoc)],
-        serializer: S,
-    ) -> std::result::Result<S::Ok, S::Error> {
-        keyed::serialize(transforms, keyed::index_key, serializer)
+        nested(deserializer, |value| {
+            read(value, "a list", "keys must be local-curve indices", |list| {
+                list.iter()
+                    .enumerate()
+                    .map(|(i, t)| Ok((i, fields(t.clone()).map_err(|e| e.within(&format!("[{i}]")))?)))
+                    .collect()
+            })
+        })
     }
 }
 
 /// Per-patch transforms of a blending-spline surface (`with` module for serde): read from
 /// rows (n_u lists of n_v transforms) or an object keyed by `"k,l"`; written as the object.
 pub mod by_pair {
-    use serde::{Deserializer, Serializer};
+    use serde::Deserializer;
     use serde_json::Value;
 
-    use super::{PatchTransforms, TransformDoc};
-    use crate::error::{DocumentError, Result};
+    use super::{PatchTransforms, read};
+    use crate::error::DocumentError;
     use crate::json::{fields, kind, nested};
-    use crate::keyed;
+    pub(crate) use crate::keyed::serialize;
 
     /// Reads `transforms`.
     pub fn deserialize<'de, D: Deserializer<'de>>(deserializer: D) -> std::result::Result<PatchTransforms, D::Error> {
-        nested(deserializer, parse)
-    }
-
-    fn parse(value: Value) -> Result<PatchTransforms> {
-        match value {
-            Value::Null => Ok(Vec::new()),
-            Value::Array(rows) => {
+        nested(deserializer, |value| {
+            read(value, "a list of rows", "keys must be patch indices \"k,l\"", |rows| {
                 let mut out = Vec::new();
                 for (k, row) in rows.iter().enumerate() {
                     let Value::Array(row) = row else {
@@ -148,17 +147,7 @@ pub mod by_pair {
                     }
                 }
                 Ok(out)
-            }
-            Value::Object(map) => keyed::entries(map, keyed::parse_pair, "keys must be patch indices \"k,l\""),
-            other => Err(DocumentError::new("", format!("expected a list of rows or an object, got {}", kind(&other)))),
-        }
-    }
-
-    /// Writes `transforms` as an object keyed by `"k,l"`.
-    pub fn serialize<S: Serializer>(
-        transforms: &[((usize, usize), TransformDoc)],
-        serializer: S,
-    ) -> std::result::Result<S::Ok, S::Error> {
-        keyed::serialize(transforms, keyed::pair_key, serializer)
+            })
+        })
     }
 }

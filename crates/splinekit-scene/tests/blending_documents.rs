@@ -142,3 +142,26 @@ fn a_rotation_pivot_is_a_world_point_on_the_axis() {
     let p = c.build_in::<3>().unwrap().point(0.0);
     assert!((p - Point::<3>::new(1.0, 0.0, 0.0)).norm() < 1e-12, "{p}");
 }
+
+#[test]
+fn local_indices_read_alike_in_transforms_and_local_control_points() {
+    // Both fields read a local's key with one parser: blanks around the index are allowed
+    // in each (transforms refused " 3" before, while local_control_points took it).
+    let read = |transform: &str, points: &str| {
+        ShapeDocument::from_json(&format!(
+            r#"{{"type": "blending_spline", "model": {{"type": "heart"}}, "local_curves": 10,
+                "transforms": {{"{transform}": {{"scale": 1.5}}}},
+                "local_control_points": {{"{points}": [[0, 0, 0], [1, 0, 0], [2, 1, 0], [3, 0, 0]]}}}}"#
+        ))
+    };
+    let plain = read("3", "3").unwrap();
+    for key in [" 3", "3 ", " 3 "] {
+        assert_eq!(read(key, key).unwrap(), plain, "{key:?}");
+    }
+    for key in ["x", "3,1", "-3"] {
+        let e = read(key, "3").unwrap_err().to_string();
+        assert_eq!(e, format!("transforms.{key}: keys must be local-curve indices"));
+        let e = read("3", key).unwrap_err().to_string();
+        assert_eq!(e, format!("local_control_points.{key}: keys must be local-curve indices (\"3\")"));
+    }
+}

@@ -107,6 +107,8 @@ fn splits_are_refused_by_field_and_the_nearest_single_knot_is_found() {
                              {"type": "line", "from": [0, 1], "to": [1, 1]},
                              {"type": "line", "from": [0, 2], "to": [1, 2]}]}"#,
     );
-    let e = split_local_curve(&explicit, 1).unwrap_err().to_string();
-    assert!(e.starts_with("local_curves") && e.contains("built from a model"), "{e}");
+    let refusal = "local_curves: a knot is split only in a blending spline built from a model (explicit local \
+                   curves are mapped onto their supports, which a split halves)";
+    assert_eq!(split_local_curve(&explicit, 1).unwrap_err().to_string(), refusal);
+    assert_eq!(knot_to_split(&explicit, 1.0).unwrap_err().to_string(), refusal);
 }

@@ -36,41 +36,39 @@ impl DimensionVisitor<Surfaces> for SurfaceSamples {
     }
 }
 
+/// Checks every kind of a family (`$Doc`, parsed back as the `ShapeDocument` variant
+/// `$Shape`): the examples follow the registry's list of types, each writes its `type`,
+/// parses back through `ShapeDocument::parse` as that family to an equal document, builds
+/// in its dimension and evaluates to finite samples (`$samples`).
+macro_rules! check_every_kind {
+    ($Doc:ident, $Shape:ident, $samples:expr) => {
+        let examples = $Doc::examples();
+        assert_eq!(examples.iter().map($Doc::type_name).collect::<Vec<_>>(), $Doc::TYPES);
+        for doc in examples {
+            let name = doc.type_name();
+            let value = doc.to_value();
+            assert_eq!(value["type"], json!(name));
+            let ShapeDocument::$Shape(back) = ShapeDocument::parse(&value).unwrap_or_else(|e| panic!("{name}: {e}"))
+            else {
+                panic!("{name} parsed as a shape of the other family");
+            };
+            assert_eq!(back, doc, "{name} round trip");
+            let shape = doc.build().unwrap_or_else(|e| panic!("{name}: {e}"));
+            assert_eq!(shape.dimension(), doc.dimension().unwrap());
+            let samples = shape.visit($samples);
+            assert!(samples.iter().all(|x| x.is_finite()), "{name}: {samples:?}");
+        }
+    };
+}
+
 #[test]
 fn every_curve_kind_has_an_example_that_round_trips_builds_and_evaluates() {
-    let examples = CurveDocument::examples();
-    assert_eq!(examples.iter().map(CurveDocument::type_name).collect::<Vec<_>>(), CurveDocument::TYPES);
-    for doc in examples {
-        let name = doc.type_name();
-        let value = doc.to_value();
-        assert_eq!(value["type"], json!(name));
-        let back = CurveDocument::parse(&value).unwrap_or_else(|e| panic!("{name}: {e}"));
-        assert_eq!(back, doc, "{name} round trip");
-        let curve = doc.build().unwrap_or_else(|e| panic!("{name}: {e}"));
-        assert_eq!(curve.dimension(), doc.dimension().unwrap());
-        let samples = curve.visit(CurveSamples);
-        assert!(samples.iter().all(|x| x.is_finite()), "{name}: {samples:?}");
-    }
+    check_every_kind!(CurveDocument, Curve, CurveSamples);
 }
 
 #[test]
 fn every_surface_kind_has_an_example_that_round_trips_builds_and_evaluates() {
-    let examples = SurfaceDocument::examples();
-    assert_eq!(examples.iter().map(SurfaceDocument::type_name).collect::<Vec<_>>(), SurfaceDocument::TYPES);
-    for doc in examples {
-        let name = doc.type_name();
-        let value = doc.to_value();
-        assert_eq!(value["type"], json!(name));
-        let ShapeDocument::Surface(back) = ShapeDocument::parse(&value).unwrap_or_else(|e| panic!("{name}: {e}"))
-        else {
-            panic!("{name} parsed as a curve");
-        };
-        assert_eq!(back, doc, "{name} round trip");
-        let surface = doc.build().unwrap_or_else(|e| panic!("{name}: {e}"));
-        assert_eq!(surface.dimension(), doc.dimension().unwrap());
-        let samples = surface.visit(SurfaceSamples);
-        assert!(samples.iter().all(|x| x.is_finite()), "{name}: {samples:?}");
-    }
+    check_every_kind!(SurfaceDocument, Surface, SurfaceSamples);
 }
 
 #[test]
@@ -123,6 +121,18 @@ fn errors_in_nested_documents_name_the_full_path() {
         (
             json!({"type": "blending_spline", "model": {"type": "circle"}, "local_curves": 4, "transforms": {"x": {}}}),
             "transforms.x: keys must be local-curve indices",
+        ),
+        (
+            json!({"type": "blending_spline", "model": {"type": "circle"}, "local_curves": 4, "transforms": 3}),
+            "transforms: expected a list or an object, got a number",
+        ),
+        (
+            json!({"type": "blending_spline_surface", "model": {"type": "torus"}, "local_surfaces": [4, 4], "transforms": "all"}),
+            "transforms: expected a list of rows or an object, got a string",
+        ),
+        (
+            json!({"type": "blending_spline_surface", "model": {"type": "torus"}, "local_surfaces": [4, 4], "transforms": {"1": {}}}),
+            "transforms.1: keys must be patch indices \"k,l\"",
         ),
         (
             json!({"type": "blending_spline", "model": {"type": "circle"}, "local_curves": 4, "transforms": [{}, {"scale": "big"}]}),

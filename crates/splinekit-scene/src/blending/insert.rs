@@ -22,8 +22,9 @@
 
 use splinekit::surface::Direction;
 
-use crate::curves::{BlendingSource, BlendingSplineDoc, LocalCurves};
-use crate::error::{DocumentError, Result};
+use super::rebuilt::{local_points, model_built, rebuilt_doc};
+use crate::curves::BlendingSplineDoc;
+use crate::error::Result;
 use crate::registry::DocumentKind;
 use crate::surfaces::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 use crate::with_dimension;
@@ -44,39 +45,23 @@ use crate::with_dimension;
 /// assert_eq!(after.local_control_points[0].0, 2); // the new local's points
 /// ```
 pub fn insert_local_curve(doc: &BlendingSplineDoc, t: f64) -> Result<(BlendingSplineDoc, usize)> {
-    if let BlendingSource::Explicit { .. } = doc.source()? {
-        return Err(DocumentError::new(
-            "local_curves",
-            "a local curve is inserted only into a blending spline built from a model (explicit local curves are \
-             mapped onto their supports, and an insertion would stretch its neighbours)",
-        ));
-    }
+    model_built(doc, "a local curve is inserted only into", "and an insertion would stretch its neighbours")?;
     let dim = doc.dimension()?;
     with_dimension!(dim, "model", D => curve_in::<D>(doc, t))
 }
 
 fn curve_in<const D: usize>(doc: &BlendingSplineDoc, t: f64) -> Result<(BlendingSplineDoc, usize)> {
-    let mut rest = doc.clone();
-    rest.time = None;
-    let mut c = rest.curve::<D>()?;
-    let k = c.insert_local(t)?;
-    let mut out = doc.clone();
-    out.knots = Some(c.knots().values().to_vec());
-    out.knot_spacing = None;
-    out.local_curves = LocalCurves::Count(c.local_count());
+    let (mut out, c, k) = rebuilt_doc::<D, _>(doc, |c| c.insert_local(t))?;
     let up = |i: usize| if i >= k { i + 1 } else { i };
     out.transforms.iter_mut().for_each(|(i, _)| *i = up(*i));
     out.animation.iter_mut().for_each(|track| track.local = up(track.local));
-    let points = |i: usize| -> Option<Vec<Vec<f64>>> {
-        Some(c.local_bezier_points(i)?.iter().map(|p| p.iter().copied().collect()).collect())
-    };
     for (i, entry) in out.local_control_points.iter_mut() {
         *i = up(*i);
-        if let Some(p) = points(*i) {
+        if let Some(p) = local_points(&c, *i) {
             *entry = p;
         }
     }
-    if let Some(p) = points(k) {
+    if let Some(p) = local_points(&c, k) {
         let at = out.local_control_points.iter().position(|(i, _)| *i > k).unwrap_or(out.local_control_points.len());
         out.local_control_points.insert(at, (k, p));
     }

@@ -7,7 +7,7 @@
 //! first index along u, as in every net). Read from and written as an object keyed by the
 //! local's index; the entries are applied before the transforms and the animation.
 
-use serde::{Deserializer, Serializer};
+use serde::Deserializer;
 use serde_json::Value;
 use splinekit::Point;
 
@@ -36,17 +36,14 @@ fn object(value: Value, what: &str) -> Result<Option<serde_json::Map<String, Val
 pub mod by_index {
     use super::*;
 
+    pub(crate) use crate::keyed::serialize;
+
     /// Reads `local_control_points`.
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<LocalControlPoints, D::Error> {
         nested(d, |value| {
             let Some(map) = object(value, "local-curve index")? else { return Ok(Vec::new()) };
-            keyed::entries(map, |key| key.trim().parse().ok(), "keys must be local-curve indices (\"3\")")
+            keyed::entries(map, "keys must be local-curve indices (\"3\")")
         })
-    }
-
-    /// Writes `local_control_points` as an object keyed by index.
-    pub fn serialize<S: Serializer>(entries: &LocalControlPoints, s: S) -> std::result::Result<S::Ok, S::Error> {
-        keyed::serialize(entries, keyed::index_key, s)
     }
 }
 
@@ -54,17 +51,14 @@ pub mod by_index {
 pub mod by_pair {
     use super::*;
 
+    pub(crate) use crate::keyed::serialize;
+
     /// Reads `local_control_points`.
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<PatchControlPoints, D::Error> {
         nested(d, |value| {
             let Some(map) = object(value, "patch index \"k,l\"")? else { return Ok(Vec::new()) };
-            keyed::entries(map, keyed::parse_pair, "keys must be patch indices \"k,l\"")
+            keyed::entries(map, "keys must be patch indices \"k,l\"")
         })
-    }
-
-    /// Writes `local_control_points` as an object keyed by `"k,l"`.
-    pub fn serialize<S: Serializer>(entries: &PatchControlPoints, s: S) -> std::result::Result<S::Ok, S::Error> {
-        keyed::serialize(entries, keyed::pair_key, s)
     }
 }
 

@@ -8,6 +8,7 @@
 mod animation;
 mod insert;
 pub mod local_points;
+mod rebuilt;
 mod split;
 
 pub use crate::curves::{BlendingSource, BlendingSplineDoc, KnotSpacingDoc, LocalCurves, LocalDoc};

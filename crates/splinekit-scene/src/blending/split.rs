@@ -21,7 +21,8 @@
 
 use splinekit::curve::Curve;
 
-use crate::curves::{BlendingSource, BlendingSplineDoc, LocalCurves};
+use super::rebuilt::{local_points, model_built, rebuilt_doc};
+use crate::curves::BlendingSplineDoc;
 use crate::error::{DocumentError, Result};
 use crate::registry::DocumentKind;
 use crate::with_dimension;
@@ -43,7 +44,7 @@ use crate::with_dimension;
 /// assert!(split_local_curve(&after, 3).unwrap_err().to_string().contains("already double"));
 /// ```
 pub fn split_local_curve(doc: &BlendingSplineDoc, k: usize) -> Result<BlendingSplineDoc> {
-    model_built(doc, "a knot is split")?;
+    model_built(doc, "a knot is split only in", "which a split halves")?;
     let dim = doc.dimension()?;
     with_dimension!(dim, "model", D => split_in::<D>(doc, k))
 }
@@ -63,22 +64,9 @@ pub fn split_local_curve(doc: &BlendingSplineDoc, k: usize) -> Result<BlendingSp
 /// assert_eq!(knot_to_split(&doc, 9.0).unwrap(), 2);
 /// ```
 pub fn knot_to_split(doc: &BlendingSplineDoc, t: f64) -> Result<usize> {
-    model_built(doc, "a knot is split")?;
+    model_built(doc, "a knot is split only in", "which a split halves")?;
     let dim = doc.dimension()?;
     with_dimension!(dim, "model", D => nearest_in::<D>(doc, t))
-}
-
-fn model_built(doc: &BlendingSplineDoc, what: &str) -> Result<()> {
-    if let BlendingSource::Explicit { .. } = doc.source()? {
-        return Err(DocumentError::new(
-            "local_curves",
-            format!(
-                "{what} only in a blending spline built from a model (explicit local curves are mapped onto their \
-                 supports, which a split halves)"
-            ),
-        ));
-    }
-    Ok(())
 }
 
 fn nearest_in<const D: usize>(doc: &BlendingSplineDoc, t: f64) -> Result<usize> {
@@ -100,14 +88,7 @@ fn nearest_in<const D: usize>(doc: &BlendingSplineDoc, t: f64) -> Result<usize> 
 }
 
 fn split_in<const D: usize>(doc: &BlendingSplineDoc, k: usize) -> Result<BlendingSplineDoc> {
-    let mut rest = doc.clone();
-    rest.time = None;
-    let mut c = rest.curve::<D>()?;
-    c.split_knot(k)?;
-    let mut out = doc.clone();
-    out.knots = Some(c.knots().values().to_vec());
-    out.knot_spacing = None;
-    out.local_curves = LocalCurves::Count(c.local_count());
+    let (mut out, c, ()) = rebuilt_doc::<D, _>(doc, |c| c.split_knot(k))?;
     let up = |i: usize| if i > k { i + 1 } else { i };
     out.transforms = copied(&doc.transforms, k, up);
     let mut animation = Vec::with_capacity(doc.animation.len());
@@ -122,12 +103,9 @@ fn split_in<const D: usize>(doc: &BlendingSplineDoc, k: usize) -> Result<Blendin
         }
     }
     out.animation = animation;
-    let points = |i: usize| -> Option<Vec<Vec<f64>>> {
-        Some(c.local_bezier_points(i)?.iter().map(|p| p.iter().copied().collect()).collect())
-    };
     out.local_control_points = copied(&doc.local_control_points, k, up);
     for (i, entry) in out.local_control_points.iter_mut().filter(|(i, _)| *i == k || *i == k + 1) {
-        if let Some(p) = points(*i) {
+        if let Some(p) = local_points(&c, *i) {
             *entry = p;
         }
     }

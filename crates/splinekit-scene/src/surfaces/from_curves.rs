@@ -13,6 +13,20 @@ use crate::error::{DocumentError, Result};
 use crate::points::to_point;
 use crate::registry::{DocumentKind, KindName, ModelFamily, approximated_kind_items, self_form_kind_items};
 
+/// The declarations the surfaces made from curve documents share, written inside their
+/// `impl DocumentKind` with the fields that hold the curves: a scene draws nothing besides
+/// the surface, and posing the document in time poses each curve.
+macro_rules! made_of_curves_items {
+    ($($curve:ident),+) => {
+        fn decoration(&self) -> SurfaceDecoration<'_> {
+            SurfaceDecoration::None
+        }
+        fn set_time(&mut self, time: f64) {
+            $( self.$curve.set_time(time); )+
+        }
+    };
+}
+
 /// `{"type":"revolution","curve":{…},"axis_point":[0,0,0],"axis":[0,0,1],"angle":2π}`:
 /// the curve turned about the axis; u is the angle, v the curve's parameter.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -34,6 +48,7 @@ pub struct RevolutionDoc {
 impl DocumentKind for RevolutionDoc {
     type Family = Surfaces;
     self_form_kind_items!(NetView, SurfaceForm::Revolution);
+    made_of_curves_items!(curve);
     fn dimension(&self) -> Result<usize> {
         Ok(3)
     }
@@ -63,12 +78,6 @@ impl DocumentKind for RevolutionDoc {
             angle: tau(),
         }
     }
-    fn decoration(&self) -> SurfaceDecoration<'_> {
-        SurfaceDecoration::None
-    }
-    fn set_time(&mut self, time: f64) {
-        self.curve.set_time(time);
-    }
 }
 
 /// `{"type":"ruled","first":{…},"second":{…}}`: (1 − v) first(u) + v second(u), both curves
@@ -85,6 +94,7 @@ pub struct RuledDoc {
 impl DocumentKind for RuledDoc {
     type Family = Surfaces;
     approximated_kind_items!(NetView, SurfaceForm);
+    made_of_curves_items!(first, second);
     fn dimension(&self) -> Result<usize> {
         same_dimension(&[("first", &self.first), ("second", &self.second)])
     }
@@ -103,13 +113,6 @@ impl DocumentKind for RuledDoc {
         let line = LineDoc { from: vec![0.0, 0.0, 1.0], to: vec![2.0, 0.0, 1.0] };
         RuledDoc { first: Box::new(CurveDocument::Bezier(arc)), second: Box::new(CurveDocument::Line(line)) }
     }
-    fn decoration(&self) -> SurfaceDecoration<'_> {
-        SurfaceDecoration::None
-    }
-    fn set_time(&mut self, time: f64) {
-        self.first.set_time(time);
-        self.second.set_time(time);
-    }
 }
 
 /// `{"type":"extrusion","curve":{…},"direction":[0,0,1]}`: curve(u) + v·direction.
@@ -125,6 +128,7 @@ pub struct ExtrusionDoc {
 impl DocumentKind for ExtrusionDoc {
     type Family = Surfaces;
     self_form_kind_items!(NetView, SurfaceForm::Extrusion);
+    made_of_curves_items!(curve);
     fn dimension(&self) -> Result<usize> {
         let dim = self.curve.dimension().map_err(|e| e.within("curve"))?;
         if self.direction.len() != dim {
@@ -147,12 +151,6 @@ impl DocumentKind for ExtrusionDoc {
     /// The unit circle extruded along z: a cylinder.
     fn example() -> Self {
         ExtrusionDoc { curve: Box::new(CurveDocument::Circle(CircleDoc::default())), direction: vec![0.0, 0.0, 1.0] }
-    }
-    fn decoration(&self) -> SurfaceDecoration<'_> {
-        SurfaceDecoration::None
-    }
-    fn set_time(&mut self, time: f64) {
-        self.curve.set_time(time);
     }
 }
 
@@ -198,6 +196,7 @@ pub struct CoonsDoc {
 impl DocumentKind for CoonsDoc {
     type Family = Surfaces;
     approximated_kind_items!(NetView, SurfaceForm);
+    made_of_curves_items!(bottom, top, left, right);
     fn dimension(&self) -> Result<usize> {
         same_dimension(&[("bottom", &self.bottom), ("top", &self.top), ("left", &self.left), ("right", &self.right)])
     }
@@ -235,14 +234,6 @@ impl DocumentKind for CoonsDoc {
             blend: CoonsBlendDoc::Cubic,
         }
     }
-    fn decoration(&self) -> SurfaceDecoration<'_> {
-        SurfaceDecoration::None
-    }
-    fn set_time(&mut self, time: f64) {
-        for c in [&mut self.bottom, &mut self.top, &mut self.left, &mut self.right] {
-            c.set_time(time);
-        }
-    }
 }
 
 /// `{"type":"sweep","profile":{…},"path":{…}}`: the profile (x, y in the path's normal
@@ -260,6 +251,7 @@ pub struct SweepDoc {
 impl DocumentKind for SweepDoc {
     type Family = Surfaces;
     approximated_kind_items!(NetView, SurfaceForm);
+    made_of_curves_items!(profile, path);
     fn dimension(&self) -> Result<usize> {
         Ok(3)
     }
@@ -287,13 +279,6 @@ impl DocumentKind for SweepDoc {
             profile: Box::new(CurveDocument::Circle(CircleDoc { radius: 0.3 })),
             path: Box::new(CurveDocument::Trefoil(TrefoilDoc::default())),
         }
-    }
-    fn decoration(&self) -> SurfaceDecoration<'_> {
-        SurfaceDecoration::None
-    }
-    fn set_time(&mut self, time: f64) {
-        self.profile.set_time(time);
-        self.path.set_time(time);
     }
 }
 

@@ -84,14 +84,7 @@ impl DocumentKind for BSplineSurfaceDoc {
         tensor_spline_cost(self.degree_u, self.degree_v, &self.control_points, 0.0)
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
-        check_knotted((self.degree_u, self.degree_v), &self.knots_u, &self.knots_v)?;
-        Ok(Box::new(BSplineSurface::new(
-            (self.degree_u, self.degree_v),
-            self.knots_u.clone(),
-            self.knots_v.clone(),
-            net_points::<D>(&self.control_points),
-            (self.periodic_u, self.periodic_v),
-        )?))
+        knotted_surface(&self.spline().expect("a spline kind"))
     }
     /// The biquadratic bump as one clamped B-spline patch.
     fn example() -> Self {
@@ -149,18 +142,7 @@ impl DocumentKind for NurbsSurfaceDoc {
         tensor_spline_cost(self.degree_u, self.degree_v, &self.control_points, 1.0)
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
-        check_knotted((self.degree_u, self.degree_v), &self.knots_u, &self.knots_v)?;
-        for (i, row) in self.weights.iter().enumerate() {
-            check_finite_list(&format!("weights[{i}]"), row)?;
-        }
-        Ok(Box::new(NurbsSurface::new(
-            (self.degree_u, self.degree_v),
-            self.knots_u.clone(),
-            self.knots_v.clone(),
-            net_points::<D>(&self.control_points),
-            self.weights.clone(),
-            (self.periodic_u, self.periodic_v),
-        )?))
+        knotted_surface(&self.spline().expect("a spline kind"))
     }
     /// A bilinear patch pulled towards its raised corner by the weight 3.
     fn example() -> Self {
@@ -203,13 +185,24 @@ fn net_dimension(field: &str, net: &[Vec<Vec<f64>>]) -> Result<usize> {
     Ok(d)
 }
 
-/// Refuses a tensor-product spline's degrees above the budget's and knots that are not
-/// finite, naming the fields (`degree_u`, `degree_v`, `knots_u`, `knots_v`, in that order).
-fn check_knotted(degrees: (usize, usize), knots_u: &[f64], knots_v: &[f64]) -> Result<()> {
-    check_degree("degree_u", degrees.0)?;
-    check_degree("degree_v", degrees.1)?;
+/// The kernel surface of a knotted net kind's view: the B-spline surface, or with weights
+/// the NURBS surface. Its degrees above the budget's and numbers that are not finite are
+/// refused first, naming the fields (`degree_u`, `degree_v`, `knots_u`, `knots_v`, then
+/// `weights[i]`, in that order).
+fn knotted_surface<const D: usize>(view: &NetView<'_>) -> Result<Box<dyn Surface<D>>> {
+    let (knots_u, knots_v) = view.knots.as_ref().expect("a knotted net");
+    check_degree("degree_u", view.degrees.0)?;
+    check_degree("degree_v", view.degrees.1)?;
     check_finite_list("knots_u", knots_u)?;
-    check_finite_list("knots_v", knots_v)
+    check_finite_list("knots_v", knots_v)?;
+    for (i, row) in view.weights.iter().flat_map(|w| w.iter()).enumerate() {
+        check_finite_list(&format!("weights[{i}]"), row)?;
+    }
+    let (knots_u, knots_v, points) = (knots_u.to_vec(), knots_v.to_vec(), net_points::<D>(&view.control_points));
+    Ok(match &view.weights {
+        None => Box::new(BSplineSurface::new(view.degrees, knots_u, knots_v, points, view.periodic)?),
+        Some(w) => Box::new(NurbsSurface::new(view.degrees, knots_u, knots_v, points, w.to_vec(), view.periodic)?),
+    })
 }
 
 /// What a scene draws besides a net kind: its control net (`control_points`).
