@@ -1,10 +1,14 @@
 //! What the tests of the knot tools armed from the window share (local insertion, knot
 //! split): the example scenes opened in a studio, the view's projector, a harness frame as
-//! the window runs it, and the checks that a key and the Edit menu arm a tool.
+//! the window runs it, the blending-spline curve a document builds, the check that the
+//! Properties panel, a key and the Edit menu arm a tool, and that a click off the shape
+//! leaves it armed.
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use splinekit::blend::BlendingSplineCurve;
 use splinekit_render::RenderScene;
+use splinekit_scene::{CurveDocument, ShapeDocument};
 use splinekit_studio::actions::{self, Action, menu_label};
 use splinekit_studio::knot_edit::KnotTool;
 use splinekit_studio::panels::{FileFields, menu_bar, properties_panel};
@@ -34,11 +38,35 @@ pub fn frame(ui: &mut egui::Ui, s: &mut Studio) {
     s.run_commands();
 }
 
-/// With object 0 of `examples/scenes/{scene}` selected, the Edit menu's entry `label` arms
-/// `tool`.
-pub fn assert_edit_menu_arms(scene: &str, label: &str, tool: KnotTool) {
-    let mut studio = open(scene);
-    studio.selection.object = Some(0);
+/// The blending-spline curve that object `object` of the studio's document builds.
+pub fn blending_curve(studio: &Studio, object: usize) -> BlendingSplineCurve<3> {
+    match &studio.document.scene().objects[object].shape {
+        ShapeDocument::Curve(CurveDocument::BlendingSpline(d)) => d.curve::<3>().expect("builds"),
+        _ => panic!("a blending spline"),
+    }
+}
+
+/// With object 0 of `examples/scenes/{scene}` selected (no handle), each way the window
+/// offers arms `tool`: the Properties panel's button of `action`, the key `key`, and the
+/// Edit menu's entry, which reads `menu` (the action's label and key).
+pub fn assert_armed_from_the_window(scene: &str, tool: KnotTool, action: Action, key: egui::Key, menu: &str) {
+    assert_eq!(menu_label(action), menu);
+    let selected = || {
+        let mut studio = open(scene);
+        studio.selection.object = Some(0);
+        studio
+    };
+    let label = actions::spec(action).label;
+    let mut h = Harness::new_ui_state(frame, selected());
+    h.run();
+    h.get_by_label(label).click();
+    h.run();
+    assert_eq!(h.state().knot_tool, Some(tool), "the panel's {label}");
+    let mut h = Harness::new_ui_state(frame, selected());
+    h.run();
+    h.key_press(key);
+    h.run();
+    assert_eq!(h.state().knot_tool, Some(tool), "the key {key:?}");
     let mut h = Harness::new_ui_state(
         |ui, state: &mut (Studio, FileFields)| {
             let (studio, files) = state;
@@ -47,21 +75,21 @@ pub fn assert_edit_menu_arms(scene: &str, label: &str, tool: KnotTool) {
             }
             studio.run_commands();
         },
-        (studio, FileFields::default()),
+        (selected(), FileFields::default()),
     );
     h.run();
     h.get_by_label("Edit").click();
     h.run();
-    h.get_by_label(label).click();
+    h.get_by_label(menu).click();
     h.run();
-    assert_eq!(h.state().0.knot_tool, Some(tool));
+    assert_eq!(h.state().0.knot_tool, Some(tool), "the Edit menu's {menu}");
 }
 
-/// The key `key` arms `tool` in the harness, and the Edit menu lists `action` as `label`
-/// (with that key).
-pub fn assert_key_arms(h: &mut Harness<'_, Studio>, key: egui::Key, tool: KnotTool, action: Action, label: &str) {
-    h.key_press(key);
-    h.run();
-    assert_eq!(h.state().knot_tool, Some(tool));
-    assert_eq!(menu_label(action), label);
+/// With `tool` armed, a click off the shape (at pixel (1, 1) of `projector`'s view) keeps
+/// the document as it was and the tool armed.
+pub fn assert_click_off_keeps_armed(studio: &mut Studio, projector: &Projector, tool: KnotTool) {
+    let before = studio.document.scene().to_value();
+    studio.knot_click(tool, projector, [1.0, 1.0], false);
+    assert_eq!(studio.document.scene().to_value(), before, "a click off the shape keeps the document");
+    assert_eq!(studio.knot_tool, Some(tool), "and the tool armed");
 }
