@@ -23,7 +23,7 @@ use splinekit_studio::view_camera::Projector;
 
 #[path = "common/knot_tools.rs"]
 mod knot_tools;
-use knot_tools::{assert_armed_from_the_window, assert_click_off_keeps_armed, blending_curve, frame, open, projector};
+use knot_tools::{armed, assert_armed_from_the_window, blending_curve, frame, open, open_selected, projector};
 
 fn shape(studio: &Studio) -> Value {
     studio.document.scene().objects[0].to_value()["shape"].clone()
@@ -47,23 +47,11 @@ fn assert_same(a: &BlendingSplineCurve<3>, b: &BlendingSplineCurve<3>, extra: &[
 }
 
 #[test]
-fn the_panel_the_key_and_the_edit_menu_arm_the_tool() {
-    let (tool, action) = (KnotTool::SplitKnot, Action::SplitKnot);
-    assert_armed_from_the_window("heart_local_curves.json", tool, action, egui::Key::D, "Split knot  D");
-}
-
-#[test]
 fn a_click_near_a_knot_of_the_heart_splits_it_and_undo_takes_it_back() {
-    let mut studio = open("heart_local_curves.json");
-    studio.selection.object = Some(0);
-    let projector = projector(&mut studio);
-    let original = studio.document.scene().to_value();
+    let (mut studio, projector, original) = armed("heart_local_curves.json", Action::SplitKnot, KnotTool::SplitKnot);
     let original_curve = blending_curve(&studio, 0);
     let knot3 = original_curve.centre(3);
     let samples = curve_samples(&studio.document.scene().objects[0].shape, 600).expect("samples");
-    studio.run_action(Action::SplitKnot);
-    assert_eq!(studio.knot_tool, Some(KnotTool::SplitKnot), "no local selected: the tool arms");
-    assert_click_off_keeps_armed(&mut studio, &projector, KnotTool::SplitKnot);
     // A click on the curve a little past knot 3 (0.63 from its neighbours).
     let (_, p) =
         *samples.iter().min_by(|a, b| (a.0 - knot3 - 0.1).abs().total_cmp(&(b.0 - knot3 - 0.1).abs())).unwrap();
@@ -169,8 +157,7 @@ fn a_selected_local_splits_at_once_and_each_copy_turns_about_the_joint() {
 /// apart, drawn with a line to the joint, and each is picked by a click on it.
 #[test]
 fn the_copies_at_a_cusp_are_picked_apart() {
-    let mut studio = open("heart_local_curves.json");
-    studio.selection.object = Some(0);
+    let mut studio = open_selected("heart_local_curves.json");
     let edit =
         splinekit_studio::knot_split::split_local(&studio.document.scene().objects[0].shape, 0, 5).expect("splits");
     assert!(studio.edit(edit, false));
@@ -186,4 +173,10 @@ fn the_copies_at_a_cusp_are_picked_apart() {
         let (px, _) = projector.project(h.position).expect("in view");
         assert_eq!(studio.pick(&projector, px).map(|h| h.kind), Some(HandleKind::LocalCurve(k)), "copy {k} at {px:?}");
     }
+}
+
+#[test]
+fn the_panel_the_key_and_the_edit_menu_arm_the_tool() {
+    let (tool, action) = (KnotTool::SplitKnot, Action::SplitKnot);
+    assert_armed_from_the_window("heart_local_curves.json", tool, action, egui::Key::D, "Split knot  D");
 }

@@ -19,7 +19,7 @@ use splinekit_studio::studio::Studio;
 
 #[path = "common/knot_tools.rs"]
 mod knot_tools;
-use knot_tools::{assert_armed_from_the_window, assert_click_off_keeps_armed, blending_curve, frame, open, projector};
+use knot_tools::{armed, assert_armed_from_the_window, blending_curve, frame, open, open_selected, projector};
 
 fn shape(studio: &Studio, object: usize) -> Value {
     studio.document.scene().objects[object].to_value()["shape"].clone()
@@ -38,22 +38,11 @@ fn diagonal(samples: &[(f64, [f64; 3])]) -> f64 {
 }
 
 #[test]
-fn the_panel_the_key_and_the_edit_menu_arm_the_tool() {
-    let (tool, action) = (KnotTool::InsertLocal, Action::InsertLocal);
-    assert_armed_from_the_window("heart_local_curves.json", tool, action, egui::Key::L, "Insert local piece  L");
-}
-
-#[test]
 fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
-    let mut studio = open("heart_local_curves.json");
-    studio.selection.object = Some(0);
-    let projector = projector(&mut studio);
-    let original = studio.document.scene().to_value();
+    let (mut studio, projector, original) =
+        armed("heart_local_curves.json", Action::InsertLocal, KnotTool::InsertLocal);
     let before = curve_samples(&studio.document.scene().objects[0].shape, 600).expect("samples");
     let original_curve = blending_curve(&studio, 0);
-    studio.run_action(Action::InsertLocal);
-    assert_eq!(studio.knot_tool, Some(KnotTool::InsertLocal));
-    assert_click_off_keeps_armed(&mut studio, &projector, KnotTool::InsertLocal);
     // Sample 130 of 600, t ≈ 1.36: between knots 2 and 3 (0.63 apart).
     let (t, p) = before[130];
     let (px, _) = projector.project(p).expect("in view");
@@ -169,8 +158,7 @@ fn a_click_on_the_blending_torus_inserts_a_row_of_patches_and_shift_a_column() {
 
 #[test]
 fn after_an_insertion_the_count_follows_the_knots_and_even_knots_respaces_them() {
-    let mut studio = open("heart_local_curves.json");
-    studio.selection.object = Some(0);
+    let mut studio = open_selected("heart_local_curves.json");
     let projector = projector(&mut studio);
     let (_, p) = curve_samples(&studio.document.scene().objects[0].shape, 600).expect("samples")[130];
     let (px, _) = projector.project(p).expect("in view");
@@ -190,4 +178,10 @@ fn after_an_insertion_the_count_follows_the_knots_and_even_knots_respaces_them()
     assert!(h.query_by_label("knots").is_some(), "and the knot spacing");
     h.state_mut().undo();
     assert!(shape(h.state(), 0).get("knots").is_some(), "one undo step");
+}
+
+#[test]
+fn the_panel_the_key_and_the_edit_menu_arm_the_tool() {
+    let (tool, action) = (KnotTool::InsertLocal, Action::InsertLocal);
+    assert_armed_from_the_window("heart_local_curves.json", tool, action, egui::Key::L, "Insert local piece  L");
 }

@@ -1,11 +1,12 @@
 //! What the tests of the knot tools armed from the window share (local insertion, knot
 //! split): the example scenes opened in a studio, the view's projector, a harness frame as
 //! the window runs it, the blending-spline curve a document builds, the check that the
-//! Properties panel, a key and the Edit menu arm a tool, and that a click off the shape
-//! leaves it armed.
+//! Properties panel, a key and the Edit menu arm a tool, and a studio with a tool armed,
+//! checked to stay armed after a click off the shape.
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use serde_json::Value;
 use splinekit::blend::BlendingSplineCurve;
 use splinekit_render::RenderScene;
 use splinekit_scene::{CurveDocument, ShapeDocument};
@@ -20,6 +21,13 @@ pub fn open(name: &str) -> Studio {
     let path = format!("{}/../../examples/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(path).expect("the example");
     Studio::new(splinekit_studio::document::parse(&text).expect("valid"), None)
+}
+
+/// A studio on `examples/scenes/{name}` with object 0 selected.
+pub fn open_selected(name: &str) -> Studio {
+    let mut studio = open(name);
+    studio.selection.object = Some(0);
+    studio
 }
 
 /// The projector of a 600 × 600 view, the view caches (handles) composed afresh.
@@ -51,18 +59,13 @@ pub fn blending_curve(studio: &Studio, object: usize) -> BlendingSplineCurve<3> 
 /// Edit menu's entry, which reads `menu` (the action's label and key).
 pub fn assert_armed_from_the_window(scene: &str, tool: KnotTool, action: Action, key: egui::Key, menu: &str) {
     assert_eq!(menu_label(action), menu);
-    let selected = || {
-        let mut studio = open(scene);
-        studio.selection.object = Some(0);
-        studio
-    };
     let label = actions::spec(action).label;
-    let mut h = Harness::new_ui_state(frame, selected());
+    let mut h = Harness::new_ui_state(frame, open_selected(scene));
     h.run();
     h.get_by_label(label).click();
     h.run();
     assert_eq!(h.state().knot_tool, Some(tool), "the panel's {label}");
-    let mut h = Harness::new_ui_state(frame, selected());
+    let mut h = Harness::new_ui_state(frame, open_selected(scene));
     h.run();
     h.key_press(key);
     h.run();
@@ -75,7 +78,7 @@ pub fn assert_armed_from_the_window(scene: &str, tool: KnotTool, action: Action,
             }
             studio.run_commands();
         },
-        (selected(), FileFields::default()),
+        (open_selected(scene), FileFields::default()),
     );
     h.run();
     h.get_by_label("Edit").click();
@@ -85,11 +88,17 @@ pub fn assert_armed_from_the_window(scene: &str, tool: KnotTool, action: Action,
     assert_eq!(h.state().0.knot_tool, Some(tool), "the Edit menu's {menu}");
 }
 
-/// With `tool` armed, a click off the shape (at pixel (1, 1) of `projector`'s view) keeps
-/// the document as it was and the tool armed.
-pub fn assert_click_off_keeps_armed(studio: &mut Studio, projector: &Projector, tool: KnotTool) {
-    let before = studio.document.scene().to_value();
-    studio.knot_click(tool, projector, [1.0, 1.0], false);
-    assert_eq!(studio.document.scene().to_value(), before, "a click off the shape keeps the document");
+/// A studio on `examples/scenes/{scene}` with object 0 selected (no handle) and `action`
+/// run, which arms `tool`; a click off the shape (at pixel (1, 1)) keeps the tool armed and
+/// the document as it was. Returns the studio, its view's projector and the document.
+pub fn armed(scene: &str, action: Action, tool: KnotTool) -> (Studio, Projector, Value) {
+    let mut studio = open_selected(scene);
+    let projector = projector(&mut studio);
+    let original = studio.document.scene().to_value();
+    studio.run_action(action);
+    assert_eq!(studio.knot_tool, Some(tool), "no handle selected: {action:?} arms the tool");
+    studio.knot_click(tool, &projector, [1.0, 1.0], false);
+    assert_eq!(studio.document.scene().to_value(), original, "a click off the shape keeps the document");
     assert_eq!(studio.knot_tool, Some(tool), "and the tool armed");
+    (studio, projector, original)
 }
