@@ -56,25 +56,29 @@ pub struct Handle {
 impl HandleKind {
     /// The JSON pointer (within the object's document) of the value the handle edits.
     pub fn pointer(&self) -> String {
-        match *self {
-            HandleKind::LocalCurve(k) => format!("/shape/transforms/{k}"),
-            HandleKind::LocalPatch(k, l) => format!("/shape/transforms/{k},{l}"),
-            HandleKind::ControlPoint(i, field) => format!("/shape/{field}/{i}"),
-            HandleKind::NetPoint(i, j) => format!("/shape/control_points/{i}/{j}"),
-            HandleKind::LocalCurvePoint(k, _) => format!("/shape/local_control_points/{k}"),
-            HandleKind::LocalPatchPoint(k, l, _, _) => format!("/shape/local_control_points/{k},{l}"),
-        }
+        let (field, pointer, _) = self.place();
+        format!("/shape/{field}{pointer}")
     }
 
     /// The field as the library names it in messages (`transforms[3]`).
     pub fn field(&self) -> String {
+        let (field, _, message) = self.place();
+        format!("{field}{message}")
+    }
+
+    /// Where in the shape's document the handle's value lives: the document field, and
+    /// what follows it in [`Self::pointer`] (down to the value the handle edits: a local's
+    /// whole point list) and in [`Self::field`] (down to the point itself).
+    fn place(&self) -> (&'static str, String, String) {
         match *self {
-            HandleKind::LocalCurve(k) => format!("transforms[{k}]"),
-            HandleKind::LocalPatch(k, l) => format!("transforms[{k},{l}]"),
-            HandleKind::ControlPoint(i, field) => format!("{field}[{i}]"),
-            HandleKind::NetPoint(i, j) => format!("control_points[{i}][{j}]"),
-            HandleKind::LocalCurvePoint(k, i) => format!("local_control_points.{k}[{i}]"),
-            HandleKind::LocalPatchPoint(k, l, a, b) => format!("local_control_points.{k},{l}[{a}][{b}]"),
+            HandleKind::LocalCurve(k) => ("transforms", format!("/{k}"), format!("[{k}]")),
+            HandleKind::LocalPatch(k, l) => ("transforms", format!("/{k},{l}"), format!("[{k},{l}]")),
+            HandleKind::ControlPoint(i, field) => (field, format!("/{i}"), format!("[{i}]")),
+            HandleKind::NetPoint(i, j) => ("control_points", format!("/{i}/{j}"), format!("[{i}][{j}]")),
+            HandleKind::LocalCurvePoint(k, i) => ("local_control_points", format!("/{k}"), format!(".{k}[{i}]")),
+            HandleKind::LocalPatchPoint(k, l, a, b) => {
+                ("local_control_points", format!("/{k},{l}"), format!(".{k},{l}[{a}][{b}]"))
+            }
         }
     }
 
@@ -313,5 +317,30 @@ pub fn local_points_of(scene: &SceneDocument, handle: &Handle, time: Option<f64>
             Some((serde_json::to_value(rows).ok()?, m))
         }
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::HandleKind;
+
+    /// Each kind's value as a JSON pointer and as the library's messages name it.
+    #[test]
+    fn pointers_and_fields_of_every_kind() {
+        let cases = [
+            (HandleKind::LocalCurve(3), "/shape/transforms/3", "transforms[3]"),
+            (HandleKind::LocalPatch(1, 2), "/shape/transforms/1,2", "transforms[1,2]"),
+            (HandleKind::ControlPoint(4, "points"), "/shape/points/4", "points[4]"),
+            (HandleKind::NetPoint(1, 5), "/shape/control_points/1/5", "control_points[1][5]"),
+            (HandleKind::LocalCurvePoint(2, 1), "/shape/local_control_points/2", "local_control_points.2[1]"),
+            (
+                HandleKind::LocalPatchPoint(0, 3, 1, 2),
+                "/shape/local_control_points/0,3",
+                "local_control_points.0,3[1][2]",
+            ),
+        ];
+        for (kind, pointer, field) in cases {
+            assert_eq!((kind.pointer().as_str(), kind.field().as_str()), (pointer, field), "{kind:?}");
+        }
     }
 }

@@ -54,33 +54,13 @@ impl History {
     /// Undoes the last step; `false` when there is none.
     pub fn undo(&mut self, scene: &mut SceneDocument) -> Result<bool, EditError> {
         self.open = false;
-        let Some(step) = self.done.pop() else { return Ok(false) };
-        match step.undo.apply(scene) {
-            Ok(_) => {
-                self.undone.push(step);
-                Ok(true)
-            }
-            Err(e) => {
-                self.done.push(step);
-                Err(e)
-            }
-        }
+        replay(scene, &mut self.done, &mut self.undone, |step| &step.undo)
     }
 
     /// Redoes the last undone step; `false` when there is none.
     pub fn redo(&mut self, scene: &mut SceneDocument) -> Result<bool, EditError> {
         self.open = false;
-        let Some(step) = self.undone.pop() else { return Ok(false) };
-        match step.done.apply(scene) {
-            Ok(_) => {
-                self.done.push(step);
-                Ok(true)
-            }
-            Err(e) => {
-                self.undone.push(step);
-                Err(e)
-            }
-        }
+        replay(scene, &mut self.undone, &mut self.done, |step| &step.done)
     }
 
     /// Whether there is something to undo.
@@ -91,5 +71,27 @@ impl History {
     /// Whether there is something to redo.
     pub fn can_redo(&self) -> bool {
         !self.undone.is_empty()
+    }
+}
+
+/// Undo and redo alike: applies `edit` of the last step of `from` (its undo, or its edit as
+/// done) and moves the step to `to`; a step whose edit fails stays on `from`. `false` when
+/// `from` is empty.
+fn replay(
+    scene: &mut SceneDocument,
+    from: &mut Vec<Step>,
+    to: &mut Vec<Step>,
+    edit: fn(&Step) -> &Edit,
+) -> Result<bool, EditError> {
+    let Some(step) = from.pop() else { return Ok(false) };
+    match edit(&step).apply(scene) {
+        Ok(_) => {
+            to.push(step);
+            Ok(true)
+        }
+        Err(e) => {
+            from.push(step);
+            Err(e)
+        }
     }
 }

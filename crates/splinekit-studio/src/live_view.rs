@@ -348,7 +348,7 @@ impl Splice<'_> {
         };
         let bps = curve.breakpoints();
         let last = bps.len().checked_sub(1).filter(|&l| l > 0)?;
-        let mut spans: Vec<Range<usize>> = changed
+        let spans: Vec<Range<usize>> = changed
             .iter()
             .flat_map(|&k| curve.affected_ranges(k))
             .map(|r| {
@@ -357,17 +357,9 @@ impl Splice<'_> {
                 from..to
             })
             .collect();
-        spans.sort_by_key(|s| s.start);
-        let mut merged: Vec<Range<usize>> = Vec::new();
-        for s in spans {
-            match merged.last_mut() {
-                Some(m) if s.start <= m.end => m.end = m.end.max(s.end),
-                _ => merged.push(s),
-            }
-        }
         let closed = composed.lines[line].closed;
         let (mut runs, mut closing) = (Vec::new(), false);
-        for span in merged {
+        for span in merged(spans) {
             let (mut params, mut points) =
                 Polyline::adaptive_span(curve, kept.tolerance, span.clone(), CURVE_POINTS).ok()?;
             let start = kept.params.binary_search_by(|t| t.total_cmp(&bps[span.start])).ok()?;

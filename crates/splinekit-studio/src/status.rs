@@ -11,3 +11,10 @@ pub struct Status {
     /// The field (JSON pointer) whose last change was refused, and the message.
     pub field_error: Option<(String, String)>,
 }
+
+impl Status {
+    /// The value of `result`; its error instead becomes the status line's message (`None`).
+    pub fn said<T>(&mut self, result: Result<T, String>) -> Option<T> {
+        result.map_err(|e| self.message = Some(e)).ok()
+    }
+}

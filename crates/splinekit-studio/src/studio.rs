@@ -113,6 +113,12 @@ fn overlay_handles(
     }
 }
 
+/// The parameter a knot tool's click hits: `at` is what the shape's samples say (`None`: the
+/// click missed the shape, here named `what`); the error is the status line's message.
+fn clicked<T>(at: Result<Option<T>, String>, what: &str) -> Result<T, String> {
+    at?.ok_or_else(|| format!("click on the {what} itself (Escape: cancel)"))
+}
+
 /// The studio's state: the document (with its history), what is selected, what the view
 /// keeps between frames and the messages shown, composed with the view's camera, the
 /// tools' settings, the drag in progress, the clock and the queued commands. Edits reach
@@ -294,17 +300,7 @@ impl Studio {
         let shape = &self.document.scene().objects[object].shape;
         let at = net_knot_edit::surface_samples(shape, net_knot_edit::GRID)
             .map(|grid| net_knot_edit::parameters_at(&grid, projector, mouse));
-        let (u, v) = match at {
-            Ok(Some(uv)) => uv,
-            Ok(None) => {
-                self.status.message = Some("click on the surface itself (Escape: cancel)".into());
-                return;
-            }
-            Err(e) => {
-                self.status.message = Some(e);
-                return;
-            }
-        };
+        let Some((u, v)) = self.status.said(clicked(at, "surface")) else { return };
         let (direction, t) = if shift { (Direction::V, v) } else { (Direction::U, u) };
         let edit = if local {
             local_insert::insert_line(shape, object, direction, t)
@@ -350,17 +346,7 @@ impl Studio {
         let shape = &self.document.scene().objects[object].shape;
         let at = knot_edit::curve_samples(shape, knot_edit::SAMPLES)
             .map(|samples| knot_edit::parameter_at(&samples, projector, mouse));
-        let u = match at {
-            Ok(Some(u)) => u,
-            Ok(None) => {
-                self.status.message = Some("click on the curve itself (Escape: cancel)".into());
-                return;
-            }
-            Err(e) => {
-                self.status.message = Some(e);
-                return;
-            }
-        };
+        let Some(u) = self.status.said(clicked(at, "curve")) else { return };
         let edit = match tool {
             KnotTool::Insert => knot_edit::insert(shape, object, u),
             KnotTool::Remove => knot_edit::remove(shape, object, u, self.knot_tolerance),

@@ -8,14 +8,12 @@
 //! continuous at the doubled knot.
 
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
 use serde_json::Value;
 use splinekit::Point;
 use splinekit::basis::Side;
 use splinekit::blend::BlendingSplineCurve;
 use splinekit::curve::Curve;
 use splinekit_render::RenderScene;
-use splinekit_scene::{CurveDocument, ShapeDocument};
 use splinekit_studio::actions::Action;
 use splinekit_studio::gesture::GestureKind;
 use splinekit_studio::handles::HandleKind;
@@ -25,17 +23,10 @@ use splinekit_studio::view_camera::Projector;
 
 #[path = "common/knot_tools.rs"]
 mod knot_tools;
-use knot_tools::{assert_edit_menu_arms, assert_key_arms, frame, open, projector};
+use knot_tools::{armed, assert_armed_from_the_window, blending_curve, frame, open, open_selected, projector};
 
 fn shape(studio: &Studio) -> Value {
     studio.document.scene().objects[0].to_value()["shape"].clone()
-}
-
-fn built(studio: &Studio) -> BlendingSplineCurve<3> {
-    match &studio.document.scene().objects[0].shape {
-        ShapeDocument::Curve(CurveDocument::BlendingSpline(d)) => d.curve::<3>().expect("builds"),
-        _ => panic!("a blending spline"),
-    }
 }
 
 fn knots(studio: &Studio) -> Vec<f64> {
@@ -57,49 +48,29 @@ fn assert_same(a: &BlendingSplineCurve<3>, b: &BlendingSplineCurve<3>, extra: &[
 
 #[test]
 fn a_click_near_a_knot_of_the_heart_splits_it_and_undo_takes_it_back() {
-    let mut studio = open("heart_local_curves.json");
-    studio.selection.object = Some(0);
-    let projector = projector(&mut studio);
-    let original = studio.document.scene().to_value();
-    let original_curve = built(&studio);
+    let (mut studio, projector, original) = armed("heart_local_curves.json", Action::SplitKnot, KnotTool::SplitKnot);
+    let original_curve = blending_curve(&studio, 0);
     let knot3 = original_curve.centre(3);
     let samples = curve_samples(&studio.document.scene().objects[0].shape, 600).expect("samples");
-    let mut h = Harness::new_ui_state(frame, studio);
-    h.run();
-    h.get_by_label("Split knot").click();
-    h.run();
-    assert_eq!(h.state().knot_tool, Some(KnotTool::SplitKnot), "no local selected: the tool arms");
-    let studio = h.state_mut();
-    // A click off the curve keeps the tool armed and the document.
-    studio.knot_click(KnotTool::SplitKnot, &projector, [1.0, 1.0], false);
-    assert_eq!(studio.document.scene().to_value(), original);
-    assert_eq!(studio.knot_tool, Some(KnotTool::SplitKnot));
     // A click on the curve a little past knot 3 (0.63 from its neighbours).
     let (_, p) =
         *samples.iter().min_by(|a, b| (a.0 - knot3 - 0.1).abs().total_cmp(&(b.0 - knot3 - 0.1).abs())).unwrap();
     let (px, _) = projector.project(p).expect("in view");
     studio.knot_click(KnotTool::SplitKnot, &projector, px, false);
     assert_eq!(studio.knot_tool, None);
-    let s = shape(studio);
+    let s = shape(&studio);
     assert_eq!(s["local_curves"], serde_json::json!(11), "one local more");
-    let knots_now = knots(studio);
+    let knots_now = knots(&studio);
     assert_eq!(knots_now.len(), 12, "closed: one knot more than locals");
     assert_eq!((knots_now[3], knots_now[4]), (knot3, knot3), "knot 3 twice");
     // What the document builds is the kernel's split, and the curve as it was.
     let mut expected = original_curve.clone();
     expected.split_knot(3).expect("splits");
-    let now = built(studio);
+    let now = blending_curve(&studio, 0);
     assert_same(&now, &expected, &[knot3], "the kernel's split");
     assert_same(&now, &original_curve, &[knot3], "the curve before");
     studio.undo();
     assert_eq!(studio.document.scene().to_value(), original, "one undo step gives the document back");
-    // The key D arms the tool as well, and the Edit menu lists the action with its key.
-    assert_key_arms(&mut h, egui::Key::D, KnotTool::SplitKnot, Action::SplitKnot, "Split knot  D");
-}
-
-#[test]
-fn the_edit_menu_arms_the_tool() {
-    assert_edit_menu_arms("heart_local_curves.json", "Split knot  D", KnotTool::SplitKnot);
 }
 
 /// With local curve 3 selected, D splits knot 3 at once; the two copies' handles sit apart
@@ -116,7 +87,7 @@ fn a_selected_local_splits_at_once_and_each_copy_turns_about_the_joint() {
     studio.click(studio.pick(&projector, px), false);
     assert_eq!(studio.selection.handle.as_ref().map(|h| h.kind), Some(HandleKind::LocalCurve(3)));
     let original = studio.document.scene().to_value();
-    let before = built(&studio);
+    let before = blending_curve(&studio, 0);
     let knot = before.centre(3);
     let mut h = Harness::new_ui_state(frame, studio);
     h.run();
@@ -126,7 +97,7 @@ fn a_selected_local_splits_at_once_and_each_copy_turns_about_the_joint() {
     assert_eq!(studio.knot_tool, None, "split at once");
     let split = studio.document.scene().to_value();
     assert_eq!((knots(studio)[3], knots(studio)[4]), (knot, knot));
-    assert_same(&built(studio), &before, &[knot], "the curve before");
+    assert_same(&blending_curve(studio, 0), &before, &[knot], "the curve before");
     studio.undo();
     assert_eq!(studio.document.scene().to_value(), original, "one undo step");
     studio.redo();
@@ -155,7 +126,7 @@ fn a_selected_local_splits_at_once_and_each_copy_turns_about_the_joint() {
     assert_eq!(transforms.keys().collect::<Vec<_>>(), ["4"], "the right copy's only");
     assert!(transforms["4"].get("rotate").is_some() && transforms["4"].get("scale").is_some(), "{}", transforms["4"]);
     assert!(transforms["4"].get("translate").is_none(), "no move: {}", transforms["4"]);
-    let now = built(studio);
+    let now = blending_curve(studio, 0);
     let side = |t, s| {
         let mut out = [Point::<3>::zeros(); 1];
         now.eval_side(t, s, &mut out);
@@ -186,8 +157,7 @@ fn a_selected_local_splits_at_once_and_each_copy_turns_about_the_joint() {
 /// apart, drawn with a line to the joint, and each is picked by a click on it.
 #[test]
 fn the_copies_at_a_cusp_are_picked_apart() {
-    let mut studio = open("heart_local_curves.json");
-    studio.selection.object = Some(0);
+    let mut studio = open_selected("heart_local_curves.json");
     let edit =
         splinekit_studio::knot_split::split_local(&studio.document.scene().objects[0].shape, 0, 5).expect("splits");
     assert!(studio.edit(edit, false));
@@ -203,4 +173,10 @@ fn the_copies_at_a_cusp_are_picked_apart() {
         let (px, _) = projector.project(h.position).expect("in view");
         assert_eq!(studio.pick(&projector, px).map(|h| h.kind), Some(HandleKind::LocalCurve(k)), "copy {k} at {px:?}");
     }
+}
+
+#[test]
+fn the_panel_the_key_and_the_edit_menu_arm_the_tool() {
+    let (tool, action) = (KnotTool::SplitKnot, Action::SplitKnot);
+    assert_armed_from_the_window("heart_local_curves.json", tool, action, egui::Key::D, "Split knot  D");
 }

@@ -11,7 +11,7 @@ use egui_kittest::kittest::Queryable;
 use serde_json::Value;
 use splinekit::curve::Curve;
 use splinekit::surface::{Direction, Surface};
-use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument};
+use splinekit_scene::{ShapeDocument, SurfaceDocument};
 use splinekit_studio::actions::Action;
 use splinekit_studio::knot_edit::{KnotTool, curve_samples};
 use splinekit_studio::net_knot_edit::{GRID, parameters_at, surface_samples};
@@ -19,7 +19,7 @@ use splinekit_studio::studio::Studio;
 
 #[path = "common/knot_tools.rs"]
 mod knot_tools;
-use knot_tools::{assert_edit_menu_arms, assert_key_arms, frame, open, projector};
+use knot_tools::{armed, assert_armed_from_the_window, blending_curve, frame, open, open_selected, projector};
 
 fn shape(studio: &Studio, object: usize) -> Value {
     studio.document.scene().objects[object].to_value()["shape"].clone()
@@ -39,31 +39,16 @@ fn diagonal(samples: &[(f64, [f64; 3])]) -> f64 {
 
 #[test]
 fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
-    let mut studio = open("heart_local_curves.json");
-    studio.selection.object = Some(0);
-    let projector = projector(&mut studio);
-    let original = studio.document.scene().to_value();
+    let (mut studio, projector, original) =
+        armed("heart_local_curves.json", Action::InsertLocal, KnotTool::InsertLocal);
     let before = curve_samples(&studio.document.scene().objects[0].shape, 600).expect("samples");
-    let original_curve = match &studio.document.scene().objects[0].shape {
-        ShapeDocument::Curve(CurveDocument::BlendingSpline(d)) => d.curve::<3>().expect("builds"),
-        _ => panic!("a blending spline"),
-    };
-    let mut h = Harness::new_ui_state(frame, studio);
-    h.run();
-    h.get_by_label("Insert local piece").click();
-    h.run();
-    assert_eq!(h.state().knot_tool, Some(KnotTool::InsertLocal));
-    let studio = h.state_mut();
-    // A click off the curve keeps the tool armed and the document.
-    studio.knot_click(KnotTool::InsertLocal, &projector, [1.0, 1.0], false);
-    assert_eq!(studio.document.scene().to_value(), original);
-    assert_eq!(studio.knot_tool, Some(KnotTool::InsertLocal));
+    let original_curve = blending_curve(&studio, 0);
     // Sample 130 of 600, t ≈ 1.36: between knots 2 and 3 (0.63 apart).
     let (t, p) = before[130];
     let (px, _) = projector.project(p).expect("in view");
     studio.knot_click(KnotTool::InsertLocal, &projector, px, false);
     assert_eq!(studio.knot_tool, None);
-    let s = shape(studio, 0);
+    let s = shape(&studio, 0);
     assert_eq!(s["local_curves"], serde_json::json!(11), "one local more");
     let knots: Vec<f64> = serde_json::from_value(s["knots"].clone()).expect("knots");
     assert_eq!(knots.len(), 12, "closed: one knot more than locals");
@@ -80,13 +65,9 @@ fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
         worst = worst.max(change);
     }
     // What the document now builds is the kernel's insertion into the curve before.
-    let built = |studio: &Studio| match &studio.document.scene().objects[0].shape {
-        ShapeDocument::Curve(CurveDocument::BlendingSpline(d)) => d.curve::<3>().expect("builds"),
-        _ => panic!("a blending spline"),
-    };
     let mut expected = original_curve.clone();
     assert_eq!(expected.insert_local(knots[k]).expect("inserts"), k);
-    let now = built(studio);
+    let now = blending_curve(&studio, 0);
     for i in 0..=600 {
         let t = now.domain().lerp(i as f64 / 600.0);
         assert!((now.point(t) - expected.point(t)).norm() < 1e-12, "at {t}: the kernel's insertion");
@@ -99,13 +80,6 @@ fn a_click_on_the_heart_inserts_one_local_curve_and_undo_takes_it_back() {
     assert!(worst < 0.01 * diagonal, "{worst} of {diagonal}");
     studio.undo();
     assert_eq!(studio.document.scene().to_value(), original, "one undo step gives the document back");
-    // The key L arms the tool as well, and the Edit menu lists the action with its key.
-    assert_key_arms(&mut h, egui::Key::L, KnotTool::InsertLocal, Action::InsertLocal, "Insert local piece  L");
-}
-
-#[test]
-fn the_edit_menu_arms_the_tool() {
-    assert_edit_menu_arms("heart_local_curves.json", "Insert local piece  L", KnotTool::InsertLocal);
 }
 
 #[test]
@@ -184,8 +158,7 @@ fn a_click_on_the_blending_torus_inserts_a_row_of_patches_and_shift_a_column() {
 
 #[test]
 fn after_an_insertion_the_count_follows_the_knots_and_even_knots_respaces_them() {
-    let mut studio = open("heart_local_curves.json");
-    studio.selection.object = Some(0);
+    let mut studio = open_selected("heart_local_curves.json");
     let projector = projector(&mut studio);
     let (_, p) = curve_samples(&studio.document.scene().objects[0].shape, 600).expect("samples")[130];
     let (px, _) = projector.project(p).expect("in view");
@@ -205,4 +178,10 @@ fn after_an_insertion_the_count_follows_the_knots_and_even_knots_respaces_them()
     assert!(h.query_by_label("knots").is_some(), "and the knot spacing");
     h.state_mut().undo();
     assert!(shape(h.state(), 0).get("knots").is_some(), "one undo step");
+}
+
+#[test]
+fn the_panel_the_key_and_the_edit_menu_arm_the_tool() {
+    let (tool, action) = (KnotTool::InsertLocal, Action::InsertLocal);
+    assert_armed_from_the_window("heart_local_curves.json", tool, action, egui::Key::L, "Insert local piece  L");
 }

@@ -155,9 +155,9 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
             let out = mesh.subdivide(SurfaceScheme::DooSabin, steps).map_err(|e| anyhow!("mesh: {e}"))?;
             if args.limit {
                 let m = doo_sabin_limit_mesh(&out).map_err(|e| anyhow!("mesh: {e}"))?;
-                return write_limit(&m, &name, &ext, &output);
+                return write(Written::Limit(&m), &name, &ext, &output);
             }
-            return write(&out, &name, &ext, &output);
+            return write(Written::Polygons(&out), &name, &ext, &output);
         }
         Scheme::CatmullClark => KernelScheme::CatmullClark,
         Scheme::Loop => KernelScheme::Loop,
@@ -185,22 +185,40 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
     let result = surface.subdivide(steps).map_err(|e| anyhow!("mesh: {e}"))?;
     if args.limit {
         let m = limit_mesh(&result).map_err(|e| anyhow!("mesh: {e}"))?;
-        return write_limit(&m, &name, &ext, &output);
+        return write(Written::Limit(&m), &name, &ext, &output);
     }
     let c = result.cage();
     let faces: Vec<Vec<u32>> = (0..c.face_count()).map(|f| c.face(f).to_vec()).collect();
     let out = PolygonMesh { vertices: c.vertices.iter().map(|p| [p.x, p.y, p.z]).collect(), faces };
-    write(&out, &name, &ext, &output)
+    write(Written::Polygons(&out), &name, &ext, &output)
 }
 
-/// A limit mesh (`--limit`): OBJ with its normals (`vn`), the other formats as triangles.
-fn write_limit(m: &LimitMesh, name: &str, ext: &str, output: &str) -> Result<()> {
-    write_as(
-        ext,
-        output,
-        |bytes| write_obj_with_normals(m, name, bytes),
-        || mesh_bytes(Cow::Owned(m.triangles()), name, ext),
-    )
+/// What is written: the subdivided polygons, or (`--limit`) the limit mesh, its vertices
+/// on the limit surface with their normals.
+enum Written<'a> {
+    Polygons(&'a PolygonMesh),
+    Limit(&'a LimitMesh),
+}
+
+/// Writes `mesh` to `path`: for `.obj` as it is (the polygons, or the limit mesh with its
+/// normals, `vn`), the other formats triangulated.
+fn write(mesh: Written<'_>, name: &str, ext: &str, path: &str) -> Result<()> {
+    let bytes = if ext == "obj" {
+        let mut bytes = Vec::new();
+        match mesh {
+            Written::Polygons(m) => write_obj_polygons(m, name, &mut bytes),
+            Written::Limit(m) => write_obj_with_normals(m, name, &mut bytes),
+        }
+        .map(|()| bytes)
+    } else {
+        let triangles = match mesh {
+            Written::Polygons(m) => m.triangulate(),
+            Written::Limit(m) => m.triangles(),
+        };
+        mesh_bytes(Cow::Owned(triangles), name, ext)
+    }
+    .map_err(|e| anyhow!("{e}"))?;
+    crate::output::write_bytes(&bytes, Some(path))
 }
 
 /// The limit surface as STEP: one Bézier surface per patch of
@@ -256,33 +274,6 @@ fn write_step(
         patches.max_deviation
     );
     crate::output::write_bytes(text.as_bytes(), Some(path))
-}
-
-fn write(out: &PolygonMesh, name: &str, ext: &str, path: &str) -> Result<()> {
-    write_as(
-        ext,
-        path,
-        |bytes| write_obj_polygons(out, name, bytes),
-        || mesh_bytes(Cow::Owned(out.triangulate()), name, ext),
-    )
-}
-
-/// Writes `path`: by `obj` (the polygons as they are) for `.obj`, else the bytes of
-/// `triangles` (the other formats, triangulated).
-fn write_as(
-    ext: &str,
-    path: &str,
-    obj: impl FnOnce(&mut Vec<u8>) -> std::result::Result<(), ExportError>,
-    triangles: impl FnOnce() -> std::result::Result<Vec<u8>, ExportError>,
-) -> Result<()> {
-    let bytes = if ext == "obj" {
-        let mut bytes = Vec::new();
-        obj(&mut bytes).map(|()| bytes)
-    } else {
-        triangles()
-    }
-    .map_err(|e| anyhow!("{e}"))?;
-    crate::output::write_bytes(&bytes, Some(path))
 }
 
 /// OBJ of a limit mesh: `v` per vertex, `vn` per normal, faces `f v//n …`.

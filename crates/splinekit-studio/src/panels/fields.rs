@@ -39,26 +39,33 @@ pub fn toggle(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, point
 
 /// A whole-number field; the value is applied when it changes.
 pub fn count(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, pointer: &str, label: &str, default: u64) {
-    let mut n = read(cx, object, pointer).and_then(|v| v.as_u64()).unwrap_or(default);
-    let changed = ui.horizontal(|ui| {
-        let name = ui.label(label);
-        ui.add(egui::DragValue::new(&mut n).range(0..=4096).speed(0.1)).labelled_by(name.id).changed()
-    });
-    if changed.inner {
-        write(cx, object, pointer, Some(n.into()));
-    }
-    error_label(ui, cx, pointer);
+    let n = read(cx, object, pointer).and_then(|v| v.as_u64()).unwrap_or(default);
+    drag_field(ui, cx, object, pointer, label, n, |drag| drag.range(0..=4096).speed(0.1));
 }
 
 /// A real-number field.
 pub fn number(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, pointer: &str, label: &str, default: f64) {
-    let mut x = read(cx, object, pointer).and_then(|v| v.as_f64()).unwrap_or(default);
+    let x = read(cx, object, pointer).and_then(|v| v.as_f64()).unwrap_or(default);
+    drag_field(ui, cx, object, pointer, label, x, |drag| drag.speed(0.01));
+}
+
+/// A labelled drag value showing `value`, set up by `drag` (range, speed); a change is
+/// written to `pointer`, and a refused one's message shown under the field.
+fn drag_field<T: egui::emath::Numeric + Into<Value>>(
+    ui: &mut egui::Ui,
+    cx: &mut PanelContext<'_>,
+    object: usize,
+    pointer: &str,
+    label: &str,
+    mut value: T,
+    drag: impl FnOnce(egui::DragValue<'_>) -> egui::DragValue<'_>,
+) {
     let changed = ui.horizontal(|ui| {
         let name = ui.label(label);
-        ui.add(egui::DragValue::new(&mut x).speed(0.01)).labelled_by(name.id).changed()
+        ui.add(drag(egui::DragValue::new(&mut value))).labelled_by(name.id).changed()
     });
     if changed.inner {
-        write(cx, object, pointer, Some(x.into()));
+        write(cx, object, pointer, Some(value.into()));
     }
     error_label(ui, cx, pointer);
 }
