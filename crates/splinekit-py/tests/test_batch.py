@@ -113,9 +113,9 @@ def test_evaluate_many_is_the_loop(nu, threads):
 
 @pytest.mark.parametrize("nu", [0, 2])
 def test_large_outputs_are_the_small_calls(nu):
-    # Outputs of 4 MB or more are written through a scratch chunk with streaming stores,
-    # smaller ones in place: the same values either way, whole chunks and an odd tail, on
-    # one thread or many (evaluate_many splits a large curve into the same chunks).
+    # A large output is written chunk by chunk (2048 rows): the same values as small
+    # calls, over whole chunks and an odd tail, on one thread or many (evaluate_many splits
+    # a large curve into the same chunks).
     rng = np.random.default_rng(7)
     knots = np.concatenate([[0.0] * 3, np.linspace(0.0, 1.0, 998), [1.0] * 3])
     curve = sk.BSpline(knots, rng.normal(size=(1000, 3)), 3)
