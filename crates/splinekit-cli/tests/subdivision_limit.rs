@@ -261,3 +261,38 @@ fn step_export_meets_a_tolerance() {
         "--tolerance: is for .step output",
     );
 }
+
+/// An open cage around an extraordinary vertex: vertex 1 at the origin (valence 5, four
+/// quads and a triangle around it), its ring on the boundary, off the plane by a little.
+fn open_fan() -> String {
+    let mut obj = String::from("v 0 0 0.1\n");
+    let angle = |k: f64| std::f64::consts::TAU * k / 5.0;
+    for k in 0..5 {
+        let (s, c) = angle(k as f64).sin_cos();
+        obj += &format!("v {} {} {}\n", c, s, 0.3 * (1.3 * k as f64).sin());
+    }
+    for k in 0..4 {
+        let (s, c) = angle(k as f64 + 0.5).sin_cos();
+        obj += &format!("v {} {} {}\n", 1.7 * c, 1.7 * s, 0.2 * (0.7 * k as f64).cos());
+    }
+    for k in 0..4 {
+        obj += &format!("f 1 {} {} {}\n", k + 2, k + 7, k + 3);
+    }
+    obj + "f 1 6 2\n"
+}
+
+/// The output depends on the input only: separate runs (each hash map seeded anew) of
+/// both polygon schemes write the same bytes, a face order fixed by the input.
+#[test]
+fn subdivide_surface_writes_the_same_bytes_every_run() {
+    let dir = temp_dir("same");
+    let out = dir.join("out.obj");
+    for scheme in ["doo-sabin", "catmull-clark"] {
+        let first = subdivided(scheme, &["--steps", "3"], &out, &open_fan());
+        for _ in 0..4 {
+            let again = subdivided(scheme, &["--steps", "3"], &out, &open_fan());
+            assert!(again == first, "{scheme}: the output changed between runs");
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

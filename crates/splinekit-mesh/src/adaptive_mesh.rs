@@ -4,6 +4,8 @@
 //! ([`crate::boundary_gluing`]); trimmed surfaces hand the quad-tree's vertices to the
 //! constrained triangulation that follows their trimming loops ([`crate::trimmed_mesh`]).
 
+use std::collections::BTreeMap;
+
 use foldhash::{HashMap, HashMapExt, HashSet};
 
 use splinekit::surface::{Surface, unit_normal};
@@ -205,9 +207,10 @@ impl<'a, const D: usize, S: Surface<D> + ?Sized> QuadTree<'a, D, S> {
         }
         Ok(())
     }
-    /// Every corner of a leaf, with the size of the smallest leaf it is a corner of.
-    fn leaf_corners(&self) -> HashMap<(i64, i64), i64> {
-        let mut out: HashMap<(i64, i64), i64> = HashMap::new();
+    /// Every corner of a leaf, with the size of the smallest leaf it is a corner of, in
+    /// lattice order (the trimmed mesh inserts them in this order, so it fixes the mesh).
+    fn leaf_corners(&self) -> BTreeMap<(i64, i64), i64> {
+        let mut out: BTreeMap<(i64, i64), i64> = BTreeMap::new();
         for &(i, j, size) in &self.leaves {
             for corner in [(i, j), (i + size, j), (i + size, j + size), (i, j + size)] {
                 let s = out.entry(corner).or_insert(size);

@@ -16,6 +16,16 @@
 //! per face (its corner points), one per interior edge (4 points), one per interior vertex
 //! (the corner points around it).
 //! Boundary edges and vertices make no faces, so the surface pulls away from open borders.
+//!
+//! Output order: a function of the input alone (hash maps serve lookups only; their order,
+//! seeded anew for every map, never reaches the output). Catmull–Clark: the moved vertices
+//! in input order, then the face points in face order, then the edge points in sorted
+//! (min, max) vertex-pair order; each face's quads in face order, from its first corner; a
+//! vertex's sum R over its edges in sorted edge order. Doo–Sabin: the face faces in face
+//! order; then the edge faces in the order faces and their edges first meet each interior
+//! edge (edge a→b of the lower-numbered face f, b→a of face g: f's corners at b and a, then
+//! g's at a and b); then the vertex faces in vertex order, each starting at the vertex's
+//! corner in its lowest-numbered face.
 
 use foldhash::{HashMap, HashMapExt};
 
@@ -101,7 +111,8 @@ impl PolygonMesh {
         }
         let mut edges_of = vec![Vec::new(); nv];
         let mut boundary_of = vec![Vec::new(); nv];
-        for (&(a, b), fs) in &ef {
+        for &(a, b) in &edges {
+            let fs = &ef[&(a, b)];
             edges_of[a as usize].push(b);
             edges_of[b as usize].push(a);
             if fs.len() == 1 {
@@ -172,15 +183,23 @@ impl PolygonMesh {
             }
             out.faces.push((first..first + face.len() as u32).collect());
         }
-        // Edge faces: for an interior edge a→b in face f (and b→a in face g).
-        let mut directed: HashMap<Edge, usize> = HashMap::new();
-        for (f, face) in self.faces.iter().enumerate() {
-            for k in 0..face.len() {
-                directed.insert((face[k], face[(k + 1) % face.len()]), f);
-            }
+        // The directed edges a→b of each face f, in face order, and each vertex's outgoing
+        // edges (b, f) in the same order.
+        let face_edges = || {
+            self.faces
+                .iter()
+                .enumerate()
+                .flat_map(|(f, face)| (0..face.len()).map(move |k| (face[k], face[(k + 1) % face.len()], f)))
+        };
+        let directed: HashMap<Edge, usize> = face_edges().map(|(a, b, f)| ((a, b), f)).collect();
+        let mut outgoing: Vec<Vec<(u32, usize)>> = vec![Vec::new(); self.vertices.len()];
+        for (a, b, f) in face_edges() {
+            outgoing[a as usize].push((b, f));
         }
+        // Edge faces: for an interior edge a→b in face f (and b→a in face g), where the
+        // faces in order first meet it.
         let mut done = foldhash::HashSet::default();
-        for (&(a, b), &f) in &directed {
+        for (a, b, f) in face_edges() {
             if let Some(&g) = directed.get(&(b, a))
                 && done.insert(edge(a, b))
             {
@@ -188,19 +207,17 @@ impl PolygonMesh {
             }
         }
         // Vertex faces: around each interior vertex (none of its edges on the boundary), in
-        // the order of its faces.
-        let mut on_boundary = foldhash::HashSet::default();
+        // vertex order, in the order of its faces from its first.
+        let mut on_boundary = vec![false; self.vertices.len()];
         for (e, fs) in &ef {
             if fs.len() == 1 {
-                on_boundary.extend([e.0, e.1]);
+                on_boundary[e.0 as usize] = true;
+                on_boundary[e.1 as usize] = true;
             }
         }
-        let mut outgoing: HashMap<u32, Vec<(u32, usize)>> = HashMap::new();
-        for (&(a, b), &f) in &directed {
-            outgoing.entry(a).or_default().push((b, f));
-        }
-        for (&v, list) in &outgoing {
-            if list.len() < 3 || on_boundary.contains(&v) {
+        for (v, list) in outgoing.iter().enumerate() {
+            let v = v as u32;
+            if list.len() < 3 || on_boundary[v as usize] {
                 continue;
             }
             // Walk the faces around v: from face f (edge v→b) the next face owns edge b'→v ... use
@@ -220,7 +237,9 @@ impl PolygonMesh {
                     break;
                 }
             }
-            ring.reverse();
+            // The walk turns clockwise around v (seen from outside); the new face runs
+            // counter-clockwise, from the same first corner.
+            ring[1..].reverse();
             out.faces.push(ring);
         }
         Ok(out)

@@ -5,6 +5,8 @@
 //! curves instead of a staircase of cells. Points on the sides of the domain are glued
 //! like those of untrimmed meshes ([`crate::boundary_gluing`]).
 
+use std::collections::BTreeMap;
+
 use foldhash::{HashMap, HashMapExt};
 
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
@@ -49,13 +51,14 @@ pub fn trimmed<const D: usize, S: Surface<D> + ?Sized>(
 }
 
 /// The mesh of a trimmed surface through the corners of an adaptive quad-tree's leaves
-/// (`corners`: lattice point → size of the smallest leaf at it, on a `size` lattice), with
-/// the loops sampled so that no chord is farther than the chord height from the surface.
+/// (`corners`: lattice point → size of the smallest leaf at it, on a `size` lattice, in
+/// lattice order, which fixes the order of insertion and so the mesh), with the loops
+/// sampled so that no chord is farther than the chord height from the surface.
 pub(crate) fn trimmed_adaptive<const D: usize, S: Surface<D> + ?Sized>(
     surface: &S,
     loops: &TrimLoops<'_>,
     size: (i64, i64),
-    corners: &HashMap<(i64, i64), i64>,
+    corners: &BTreeMap<(i64, i64), i64>,
     tolerance: AdaptiveTolerance,
     options: MeshOptions,
 ) -> Result<TriangleMesh> {

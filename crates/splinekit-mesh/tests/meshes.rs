@@ -381,3 +381,25 @@ fn a_horn_torus_is_written_without_collapsed_triangles() {
     let back = obj::read_obj(&common::text(|out| obj::write_obj(&m, "horn", out))).unwrap();
     assert_eq!(back.triangles.len(), whole + 1);
 }
+
+/// An adaptive mesh of a trimmed surface depends on the surface only: the leaf corners go
+/// into the triangulation in lattice order, not in the order of a freshly seeded hash map
+/// (two calls in one process seed theirs differently).
+#[test]
+fn trimmed_adaptive_meshes_are_the_same_on_every_call() {
+    use splinekit::curve::{CircleFrame, NurbsCurve};
+    use splinekit::surface::TrimmedSurface;
+    let hole = NurbsCurve::<2>::circle(&CircleFrame::in_xy_plane(Point::<2>::new(0.4, 0.6), 0.2)).unwrap();
+    let s = TrimmedSurface::new(Box::new(torus()), None, &[&hole]).unwrap();
+    let tol = AdaptiveTolerance { chord_height: 0.02, normal_angle: 0.4, max_depth: 6 };
+    let bits = |m: &TriangleMesh| {
+        let p: Vec<[u64; 3]> = m.positions.iter().map(|p| p.map(f64::to_bits)).collect();
+        (p, m.triangles.clone())
+    };
+    let first = bits(&adaptive(&s, (4, 4), tol, MeshOptions::default()).unwrap());
+    assert!(first.1.len() > 100);
+    for _ in 0..4 {
+        let again = bits(&adaptive(&s, (4, 4), tol, MeshOptions::default()).unwrap());
+        assert!(again == first, "the mesh changed between calls");
+    }
+}

@@ -147,3 +147,39 @@ fn limit_triangles_split_vertices_once_per_crease_side() {
     }
     assert!(fan.next().is_none());
 }
+
+/// An open cage around an extraordinary vertex: vertex 0 (valence 5, four quads and a
+/// triangle around it) inside, its ring on the boundary, off the plane by a little.
+fn open_fan() -> PolygonMesh {
+    let angle = |k: f64| std::f64::consts::TAU * k / 5.0;
+    let mut vertices = vec![[0.0, 0.0, 0.1]];
+    vertices.extend((0..5).map(|k| {
+        let (s, c) = angle(k as f64).sin_cos();
+        [c, s, 0.3 * (1.3 * k as f64).sin()]
+    }));
+    vertices.extend((0..4).map(|k| {
+        let (s, c) = angle(k as f64 + 0.5).sin_cos();
+        [1.7 * c, 1.7 * s, 0.2 * (0.7 * k as f64).cos()]
+    }));
+    let mut faces: Vec<Vec<u32>> = (0..4).map(|k| vec![0, k + 1, k + 6, k + 2]).collect();
+    faces.push(vec![0, 5, 1]);
+    PolygonMesh { vertices, faces }
+}
+
+/// The vertices' bits and the faces.
+fn bits(m: &PolygonMesh) -> (Vec<[u64; 3]>, Vec<Vec<u32>>) {
+    (m.vertices.iter().map(|p| p.map(f64::to_bits)).collect(), m.faces.clone())
+}
+
+/// Each step's output depends on the input only, not on the hash maps' seeds (foldhash
+/// seeds every map anew, so two calls in one process differ in any order taken from one).
+#[test]
+fn both_schemes_give_the_same_bits_on_every_call() {
+    for scheme in [SurfaceScheme::CatmullClark, SurfaceScheme::DooSabin] {
+        let first = bits(&open_fan().subdivide(scheme, 3).unwrap());
+        for _ in 0..8 {
+            let again = bits(&open_fan().subdivide(scheme, 3).unwrap());
+            assert!(again == first, "{scheme:?}: the output changed between calls");
+        }
+    }
+}
