@@ -4,7 +4,10 @@
 # writes into OUT, for each JSON document of examples/scenes, examples/shapes,
 # fuzz/seeds/document and EXTRA_DIR (e.g. every registry kind's example document): eval
 # (curve samples or a surface grid, two derivatives), tessellate (.obj, .glb; .svg for
-# curves), convert to STEP with its report, each with its standard error and exit status.
+# curves; an adaptive .obj at tolerance 0.01), convert to STEP with its report, each with its
+# standard error and exit status; and subdivide-surface of every cage in examples/meshes by
+# every scheme (2 steps, and with --limit). Two snapshots of one binary compared show output
+# that changes from run to run (hash order, threads).
 # `bash tools/behaviour_snapshot.sh --compare A B` compares two such folders byte for byte,
 # but for the folder's name inside messages and STEP's FILE_NAME (the time of writing).
 set -uo pipefail
@@ -34,5 +37,15 @@ for doc in "${docs[@]}"; do
     run glb tessellate -o "$o.glb" "$doc"
     run svg tessellate -o "$o.svg" "$doc"
     run step convert -o "$o.step" --report "$o.report.json" "$doc"
+    run adaptive tessellate --tolerance 0.01 -o "$o.adaptive.obj" "$doc"
+done
+# Subdivision of every example cage by every scheme, and with vertices on the limit.
+for mesh in examples/meshes/*.obj; do
+    for scheme in catmull-clark loop bilinear doo-sabin; do
+        o="$out/$(echo "$mesh" | tr '/' '_').$scheme"
+        run() { local tag="$1"; shift; "$bin" "$@" >"$o.$tag.out" 2>"$o.$tag.err"; echo $? >"$o.$tag.rc"; }
+        run steps subdivide-surface --scheme "$scheme" --triangulate --steps 2 -o "$o.obj" "$mesh"
+        run limit subdivide-surface --scheme "$scheme" --triangulate --steps 2 --limit -o "$o.limit.obj" "$mesh"
+    done
 done
 echo "$(ls "$out" | wc -l) files in $out"
