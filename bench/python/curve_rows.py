@@ -6,25 +6,11 @@ one process. Run it three times on a quiet machine; the README quotes the ranges
     python bench/python/curve_rows.py
 """
 
-import time
-
 import numpy as np
 from scipy.interpolate import BSpline
 
 import splinekit as sk
-
-
-def clamped_uniform(n, p=3):
-    return np.concatenate([[0.0] * p, np.linspace(0.0, 1.0, n - p + 1), [1.0] * p])
-
-
-def best(f, repeat):
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        f()
-        times.append(time.perf_counter() - start)
-    return min(times)
+from bench import best, clamped_uniform
 
 
 def main():
@@ -37,8 +23,8 @@ def main():
             count = m if order == "sorted" or n <= 1000 else m // 50
             t = np.linspace(0.0, 1.0, count) if order == "sorted" else rng.random(count)
             np.testing.assert_allclose(ours(t), ref(t), atol=1e-10)
-            t_ours = best(lambda: ours(t), 9)
-            t_ref = best(lambda: ref(t), 5 if count == m else 3)
+            t_ours, _ = best(lambda: ours(t), 9)
+            t_ref, _ = best(lambda: ref(t), 5 if count == m else 3)
             print(f"{n} control points, {count} {order} parameters: splinekit {t_ours / count * 1e9:6.2f} ns, "
                   f"scipy {t_ref / count * 1e9:8.1f} ns ({t_ref / t_ours:5.1f}x)", flush=True)
 
