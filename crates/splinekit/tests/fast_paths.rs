@@ -315,6 +315,27 @@ fn check_curve<const D: usize>(case: &CurveCase) {
             }
         }
     }
+    // Into memory not yet written (`Curve::eval_many_uninit`, the slot-generic kernel
+    // behind Python's arrays; orders past the lanes' zero the slots first): bit for bit
+    // `eval_many`, and every slot written.
+    for order in 0..=3 {
+        let len = dense.len() * (order + 1);
+        let mut many = vec![Point::<D>::zeros(); len];
+        curve.eval_many(&dense, order, &mut many);
+        let mut fresh: Vec<std::mem::MaybeUninit<Point<D>>> = Vec::with_capacity(len);
+        // SAFETY: the capacity is `len`; `eval_many_uninit` writes every slot (checked
+        // below only after it returned, as the contract promises).
+        unsafe { fresh.set_len(len) };
+        curve.eval_many_uninit(&dense, order, &mut fresh);
+        // SAFETY: every slot written by `eval_many_uninit`.
+        let fresh: Vec<Point<D>> = fresh.into_iter().map(|v| unsafe { v.assume_init() }).collect();
+        for (i, (a, b)) in fresh.iter().zip(&many).enumerate() {
+            assert!(
+                a.iter().zip(b.iter()).all(|(x, y)| x.to_bits() == y.to_bits()),
+                "{case:?}: eval_many_uninit value {i} of order {order}: {a:?} against eval_many's {b:?}"
+            );
+        }
+    }
     // The triangular kernel behind B-spline curves (the Bézier spans bypassed).
     if !case.rational {
         let c = if periodic {

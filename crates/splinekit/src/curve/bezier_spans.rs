@@ -9,6 +9,7 @@
 //! few ulps of the control points, like de Boor's; it needs no knot access and no division.
 
 use crate::basis::bernstein::binomial_table;
+use crate::curve::output_slot::Slot;
 use crate::curve::span_kernel::ReciprocalKnotDifferences;
 use crate::{Coefficient, Point};
 
@@ -77,7 +78,7 @@ impl<T: Coefficient> BezierSpans<T> {
         let (start, _, inv_h) = self.frames[i];
         let u = (t - start) * inv_h;
         let b = &self.points[i * w..(i + 1) * w];
-        by_width!(self.degree, W => eval_fixed::<W, T>(b, u, inv_h, out))
+        by_width!(self.degree, W => eval_fixed::<W, T, T>(b, u, inv_h, out))
     }
 }
 
@@ -166,10 +167,10 @@ impl<T: Coefficient> BezierSpans<T> {
         for (&t, o) in params.iter().zip(out.chunks_exact_mut(w)) {
             let t = map(t);
             match at.find(self, t, &locate) {
-                None => eval_fixed::<W, T>(&at.points, (t - at.start) * at.inv_h, at.inv_h, o),
+                None => eval_fixed::<W, T, T>(&at.points, (t - at.start) * at.inv_h, at.inv_h, o),
                 Some(j) => {
                     let (b, start, inv_h) = self.span_at::<W>(j);
-                    eval_fixed::<W, T>(b, (t - start) * inv_h, inv_h, o)
+                    eval_fixed::<W, T, T>(b, (t - start) * inv_h, inv_h, o)
                 }
             }
         }
@@ -188,11 +189,11 @@ impl<const D: usize> BezierSpans<Point<D>> {
     /// same values, bit for bit, by blocks of parameters evaluated in step (see `lanes`),
     /// compiled for AVX2 where the CPU has it (chosen at run time; the portable build
     /// stays SSE2); higher orders go to [`BezierSpans::eval_many`].
-    pub fn eval_many_lanes(
+    pub fn eval_many_lanes<O: Slot<Point<D>>>(
         &self,
         params: &[f64],
         order: usize,
-        out: &mut [Point<D>],
+        out: &mut [O],
         map: impl Fn(f64) -> f64,
         locate: impl Fn(usize, f64) -> usize,
     ) {
@@ -201,13 +202,13 @@ impl<const D: usize> BezierSpans<Point<D>> {
                 #[cfg(target_arch = "x86_64")]
                 if std::arch::is_x86_feature_detected!("avx2") {
                     // SAFETY: the CPU has AVX2 (checked just above).
-                    return unsafe { self.lanes_avx2::<$w, $k>(params, out, map, locate) };
+                    return unsafe { self.lanes_avx2::<$w, $k, O>(params, out, map, locate) };
                 }
-                self.lanes::<$w, $k>(params, out, map, locate)
+                self.lanes::<$w, $k, O>(params, out, map, locate)
             }};
         }
         if order > MAX_LANE_ORDER {
-            return self.eval_many(params, order, out, map, locate);
+            return self.eval_many(params, order, O::initialised(out), map, locate);
         }
         by_width!(self.degree, W => match order {
             0 => fixed!(W, 1),
@@ -224,14 +225,14 @@ impl<const D: usize> BezierSpans<Point<D>> {
     /// The CPU must support AVX2.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    unsafe fn lanes_avx2<const W: usize, const K: usize>(
+    unsafe fn lanes_avx2<const W: usize, const K: usize, O: Slot<Point<D>>>(
         &self,
         params: &[f64],
-        out: &mut [Point<D>],
+        out: &mut [O],
         map: impl Fn(f64) -> f64,
         locate: impl Fn(usize, f64) -> usize,
     ) {
-        self.lanes::<W, K>(params, out, map, locate)
+        self.lanes::<W, K, O>(params, out, map, locate)
     }
 
     /// The batch of K = order + 1 outputs per parameter by blocks of [`LANES`] parameters:
@@ -245,10 +246,10 @@ impl<const D: usize> BezierSpans<Point<D>> {
     /// points) in their order, so the result does not depend on the blocking.
     /// (Non-temporal stores for large outputs were tried: slower here than ordinary ones.)
     #[inline(always)]
-    fn lanes<const W: usize, const K: usize>(
+    fn lanes<const W: usize, const K: usize, O: Slot<Point<D>>>(
         &self,
         params: &[f64],
-        out: &mut [Point<D>],
+        out: &mut [O],
         map: impl Fn(f64) -> f64,
         locate: impl Fn(usize, f64) -> usize,
     ) {
@@ -256,8 +257,7 @@ impl<const D: usize> BezierSpans<Point<D>> {
         // The last span that is not empty: the end of the domain belongs to it (the spans
         // of knots repeated at the end are empty and never evaluated, nor moved into).
         let last_span = self.first_span + self.frames.iter().rposition(|f| f.0 < f.1).unwrap_or(self.frames.len() - 1);
-        let one =
-            |at: &mut SpanCursor<W, Point<D>>, t: f64, o: &mut [Point<D>]| self.one::<W, K>(at, map(t), o, &locate);
+        let one = |at: &mut SpanCursor<W, Point<D>>, t: f64, o: &mut [O]| self.one::<W, K, O>(at, map(t), o, &locate);
         let in_span = |t: f64, start: f64, end: f64, span: usize| t >= start && (t < end || span == last_span);
         let mut blocks = params.chunks_exact(LANES).zip(out.chunks_exact_mut(LANES * K));
         for (raw, os) in &mut blocks {
@@ -270,7 +270,7 @@ impl<const D: usize> BezierSpans<Point<D>> {
                 }
             }
             if ts.iter().all(|&t| in_span(t, at.start, at.end, at.span)) {
-                bernstein_lanes::<W, K, D>(&at.points, at.start, at.inv_h, &ts, os);
+                bernstein_lanes::<W, K, D, O>(&at.points, at.start, at.inv_h, &ts, os);
                 continue;
             }
             // A sorted block running from the cursor's span into the next (a dense batch
@@ -284,13 +284,15 @@ impl<const D: usize> BezierSpans<Point<D>> {
                 if next(ts[LANES - 1]) && ts.iter().all(|&t| next(t) || in_span(t, at.start, at.end, at.span)) {
                     let mut before = [Point::<D>::zeros(); 3 * LANES];
                     let before = &mut before[..LANES * K];
-                    bernstein_lanes::<W, K, D>(&at.points, at.start, at.inv_h, &ts, before);
+                    bernstein_lanes::<W, K, D, Point<D>>(&at.points, at.start, at.inv_h, &ts, before);
                     let old_end = at.end;
                     at.load(self, at.span + 1);
-                    bernstein_lanes::<W, K, D>(&at.points, at.start, at.inv_h, &ts, os);
+                    bernstein_lanes::<W, K, D, O>(&at.points, at.start, at.inv_h, &ts, os);
                     for (l, &t) in ts.iter().enumerate() {
                         if t < old_end {
-                            os[l * K..(l + 1) * K].copy_from_slice(&before[l * K..(l + 1) * K]);
+                            for k in 0..K {
+                                os[l * K + k].put(before[l * K + k]);
+                            }
                         }
                     }
                     continue;
@@ -312,11 +314,11 @@ impl<const D: usize> BezierSpans<Point<D>> {
     /// cursor: in its span, or in t's span read in place (`SpanCursor::find`). Always
     /// inlined, so that `locate` is inlined into the batch loop.
     #[inline(always)]
-    fn one<const W: usize, const K: usize>(
+    fn one<const W: usize, const K: usize, O: Slot<Point<D>>>(
         &self,
         at: &mut SpanCursor<W, Point<D>>,
         t: f64,
-        o: &mut [Point<D>],
+        o: &mut [O],
         locate: &impl Fn(usize, f64) -> usize,
     ) {
         let (b, start, inv_h) = match at.find(self, t, locate) {
@@ -325,9 +327,9 @@ impl<const D: usize> BezierSpans<Point<D>> {
         };
         let u = (t - start) * inv_h;
         if K == 1 {
-            o[0] = bernstein_sum::<W, Point<D>>(b, u);
+            o[0].put(bernstein_sum::<W, Point<D>>(b, u));
         } else {
-            eval_fixed::<W, Point<D>>(b, u, inv_h, o);
+            eval_fixed::<W, Point<D>, O>(b, u, inv_h, o);
         }
     }
 }
@@ -432,12 +434,12 @@ const LANES: usize = 4;
 /// first-derivative batch), and each derivative level is its own call with a constant
 /// degree, so that every loop has constant bounds and unrolls.
 #[inline(always)]
-fn bernstein_lanes<const W: usize, const K: usize, const D: usize>(
+fn bernstein_lanes<const W: usize, const K: usize, const D: usize, O: Slot<Point<D>>>(
     b: &[Point<D>; W],
     start: f64,
     inv_h: f64,
     ts: &[f64; LANES],
-    out: &mut [Point<D>],
+    out: &mut [O],
 ) {
     let out = &mut out[..LANES * K];
     let p = W - 1;
@@ -453,15 +455,15 @@ fn bernstein_lanes<const W: usize, const K: usize, const D: usize>(
     let mut d: [[f64; W]; D] = std::array::from_fn(|c| std::array::from_fn(|i| b[i][c]));
     let level0 = lane_level::<W, D>(&d, &up, &sp, p);
     for l in 0..LANES {
-        out[l * K] = Point::<D>::from_fn(|c, _| level0[c][l]);
+        out[l * K].put(Point::<D>::from_fn(|c, _| level0[c][l]));
     }
     let mut scale = 1.0;
     // k = 1, 2 (K ≤ 3), written out so that q = p − k is a constant of each call.
     if K > 1 {
-        lane_derivative::<W, K, D>(1, &mut d, &mut scale, inv_h, &up, &sp, out);
+        lane_derivative::<W, K, D, O>(1, &mut d, &mut scale, inv_h, &up, &sp, out);
     }
     if K > 2 {
-        lane_derivative::<W, K, D>(2, &mut d, &mut scale, inv_h, &up, &sp, out);
+        lane_derivative::<W, K, D, O>(2, &mut d, &mut scale, inv_h, &up, &sp, out);
     }
 }
 
@@ -469,19 +471,19 @@ fn bernstein_lanes<const W: usize, const K: usize, const D: usize>(
 /// p!/(p−k)! h⁻ᵏ, and the degree-(p−k) Bernstein sums into output k of every lane (zero
 /// when k > p).
 #[inline(always)]
-fn lane_derivative<const W: usize, const K: usize, const D: usize>(
+fn lane_derivative<const W: usize, const K: usize, const D: usize, O: Slot<Point<D>>>(
     k: usize,
     d: &mut [[f64; W]; D],
     scale: &mut f64,
     inv_h: f64,
     up: &[[f64; LANES]; W],
     sp: &[[f64; LANES]; W],
-    out: &mut [Point<D>],
+    out: &mut [O],
 ) {
     let p = W - 1;
     if k > p {
         for l in 0..LANES {
-            out[l * K + k] = Point::<D>::zeros();
+            out[l * K + k].put(Point::<D>::zeros());
         }
         return;
     }
@@ -493,7 +495,7 @@ fn lane_derivative<const W: usize, const K: usize, const D: usize>(
     *scale *= (p - k + 1) as f64 * inv_h;
     let level = lane_level::<W, D>(d, up, sp, p - k);
     for l in 0..LANES {
-        out[l * K + k] = Point::<D>::from_fn(|c, _| level[c][l] * *scale);
+        out[l * K + k].put(Point::<D>::from_fn(|c, _| level[c][l] * *scale));
     }
 }
 
@@ -534,11 +536,11 @@ fn bernstein_sum<const W: usize, T: Coefficient>(b: &[T; W], u: f64) -> T {
 }
 
 #[inline(always)]
-fn eval_fixed<const W: usize, T: Coefficient>(b: &[T], u: f64, inv_h: f64, out: &mut [T]) {
+fn eval_fixed<const W: usize, T: Coefficient, O: Slot<T>>(b: &[T], u: f64, inv_h: f64, out: &mut [O]) {
     let p = W - 1;
     let b: &[T; W] = b.try_into().expect("p + 1 points per span");
     let (up, sp) = powers::<W>(u);
-    out[0] = bernstein(b, &up, &sp, p);
+    out[0].put(bernstein(b, &up, &sp, p));
     if out.len() == 1 {
         return;
     }
@@ -546,13 +548,13 @@ fn eval_fixed<const W: usize, T: Coefficient>(b: &[T], u: f64, inv_h: f64, out: 
     let mut scale = 1.0;
     for k in 1..out.len() {
         if k > p {
-            out[k] = T::zero();
+            out[k].put(T::zero());
             continue;
         }
         for i in 0..W - k {
             d[i] = d[i + 1] - d[i];
         }
         scale *= (p - k + 1) as f64 * inv_h;
-        out[k] = bernstein(&d, &up, &sp, p - k) * scale;
+        out[k].put(bernstein(&d, &up, &sp, p - k) * scale);
     }
 }

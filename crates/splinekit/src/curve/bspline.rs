@@ -3,6 +3,7 @@
 use crate::Point;
 use crate::basis::{KnotVector, Side, SplineAxis};
 use crate::curve::bezier_spans::BezierSpans;
+use crate::curve::output_slot::{Slot, zeroed};
 use crate::curve::span_kernel::{ReciprocalKnotDifferences, eval_on_span};
 use crate::curve::{Curve, Interval};
 use crate::error::{Error, Result, check_points_finite};
@@ -177,6 +178,25 @@ impl<const D: usize> BSplineCurve<D> {
     pub(crate) fn span_of(&self, t: f64, side: Side) -> usize {
         self.axis.span_side(t, side)
     }
+
+    /// The batch by the Bézier spans into any [`Slot`]s (points, or memory not yet
+    /// written): parameters clamped into the domain (wrapped when periodic), spans located
+    /// by the axis in any order of the parameters.
+    fn span_batch<O: Slot<Point<D>>>(
+        &self,
+        spans: &BezierSpans<Point<D>>,
+        params: &[f64],
+        order: usize,
+        out: &mut [O],
+    ) {
+        let axis = &self.axis;
+        // The domain and the kind of axis, read once for the batch.
+        let (domain, periodic) = (axis.domain(), axis.is_periodic());
+        let map = |t: f64| if periodic { domain.wrap_periodic(t, Side::Right) } else { domain.clamp(t) };
+        let locate = |_: usize, t: f64| axis.span(t);
+        let out = &mut out[..params.len() * (order + 1)];
+        spans.eval_many_lanes(params, order, out, map, locate);
+    }
 }
 
 /// Writes, inside an `impl Curve<D> for …` of a spline curve, the methods it takes from its
@@ -225,21 +245,22 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
     }
 
     fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]) {
-        let axis = &self.axis;
         if let Some(spans) = &self.spans {
-            // The domain and the kind of axis, read once for the batch.
-            let (domain, periodic) = (axis.domain(), axis.is_periodic());
-            let map = |t: f64| if periodic { domain.wrap_periodic(t, Side::Right) } else { domain.clamp(t) };
-            let locate = |_: usize, t: f64| axis.span(t);
-            let out = &mut out[..params.len() * (order + 1)];
-            spans.eval_many_lanes(params, order, out, map, locate);
-            return;
+            return self.span_batch(spans, params, order, out);
         }
+        let axis = &self.axis;
         let w = order + 1;
         for (i, &t) in params.iter().enumerate() {
             let t = self.normalise(t, Side::Right);
             let span = axis.span(t);
             self.eval_on(span, t, &mut out[i * w..(i + 1) * w]);
+        }
+    }
+
+    fn eval_many_uninit(&self, params: &[f64], order: usize, out: &mut [std::mem::MaybeUninit<Point<D>>]) {
+        match &self.spans {
+            Some(spans) => self.span_batch(spans, params, order, out),
+            None => self.eval_many(params, order, zeroed(out)),
         }
     }
 }

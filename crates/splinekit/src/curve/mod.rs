@@ -9,6 +9,7 @@ pub(crate) mod control_box;
 pub mod hermite;
 pub mod model;
 pub mod nurbs;
+pub mod output_slot;
 #[cfg(feature = "parallel")]
 pub mod parallel;
 pub mod rational;

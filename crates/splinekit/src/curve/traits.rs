@@ -76,6 +76,14 @@ pub trait Curve<const D: usize>: Send + Sync {
         }
     }
 
+    /// [`Curve::eval_many`] into memory not yet written (a new output array): the same
+    /// values, and every one of the first `params.len() · (order + 1)` slots written. The
+    /// default zeroes `out` and calls `eval_many`; B-spline curves write each slot once
+    /// ([`crate::curve::output_slot`]).
+    fn eval_many_uninit(&self, params: &[f64], order: usize, out: &mut [std::mem::MaybeUninit<Point<D>>]) {
+        self.eval_many(params, order, crate::curve::output_slot::zeroed(out))
+    }
+
     /// Parameters where the curve may lose smoothness (knots, segment joins), including
     /// both ends of the domain, in increasing order. Integration and search use them.
     fn breakpoints(&self) -> Vec<f64> {
@@ -196,6 +204,7 @@ forward_through_pointers!(Curve {
     #[inline] fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]);
     #[inline] fn eval(&self, t: f64, out: &mut [Point<D>]);
     fn eval_many(&self, params: &[f64], order: usize, out: &mut [Point<D>]);
+    fn eval_many_uninit(&self, params: &[f64], order: usize, out: &mut [std::mem::MaybeUninit<Point<D>>]);
     fn breakpoints(&self) -> Vec<f64>;
     #[inline] fn point(&self, t: f64) -> Point<D>;
     fn derivative(&self, t: f64, order: usize) -> Point<D>;
