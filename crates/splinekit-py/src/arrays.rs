@@ -5,6 +5,8 @@
 //! then read in place, without a copy). Outputs are new C-contiguous float64 arrays that
 //! the kernel writes into directly.
 
+use std::mem::MaybeUninit;
+
 use numpy::{PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use splinekit::{Interval, Point};
@@ -162,6 +164,17 @@ pub fn as_points_mut<const D: usize>(values: &mut [f64]) -> &mut [Point<D>] {
     assert_eq!(values.len() % D.max(1), 0, "whole points");
     // SAFETY: as in `as_points`; the slice is borrowed mutably once.
     unsafe { std::slice::from_raw_parts_mut(values.as_mut_ptr().cast::<Point<D>>(), values.len() / D.max(1)) }
+}
+
+/// Writes points into C-ordered coordinates (n × D numbers) not yet written, in place.
+pub fn as_points_uninit<const D: usize>(values: &mut [MaybeUninit<f64>]) -> &mut [MaybeUninit<Point<D>>] {
+    const { assert!(std::mem::size_of::<Point<D>>() == D * std::mem::size_of::<f64>()) };
+    assert_eq!(values.len() % D.max(1), 0, "whole points");
+    // SAFETY: as in `as_points`; `MaybeUninit<T>` has `T`'s layout, and the slice is
+    // borrowed mutably once.
+    unsafe {
+        std::slice::from_raw_parts_mut(values.as_mut_ptr().cast::<MaybeUninit<Point<D>>>(), values.len() / D.max(1))
+    }
 }
 
 /// A new zero-filled C-contiguous float64 array of `shape`, which `fill` writes into with

@@ -163,13 +163,16 @@ pub fn evaluate_many<'py>(
     py.detach(|| {
         on_pool(threads, || {
             tasks.par_iter().for_each(|(i, rows)| {
-                let fill = |out: &mut [f64]| match jobs[*i].as_ref().expect("a job per shape") {
-                    Job::Curve(task) => task.fill(rows.clone(), out),
-                    Job::Surface(s, us, vs) => s.fill_grid(us, vs, out),
-                };
                 // SAFETY: every (output, chunk) pair is one task, run once; the outputs are
-                // alive until after this call.
-                unsafe { writers[*i].write(rows.clone(), fill) };
+                // alive until after this call; a curve's fill writes every value.
+                match jobs[*i].as_ref().expect("a job per shape") {
+                    Job::Curve(task) => unsafe {
+                        writers[*i].write_uninit(rows.clone(), |out| task.fill(rows.clone(), out))
+                    },
+                    Job::Surface(s, us, vs) => unsafe {
+                        writers[*i].write(rows.clone(), |out| s.fill_grid(us, vs, out))
+                    },
+                }
             })
         })
     })?;

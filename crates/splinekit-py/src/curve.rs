@@ -4,6 +4,8 @@
 //! round-trips and operations reuse the document functions of the CLI) and the kernel
 //! curve built from it, of the dimension its points ask for.
 
+use std::mem::MaybeUninit;
+
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 use splinekit::Interval;
@@ -12,7 +14,7 @@ use splinekit_scene::{AnyCurve, CurveDocument, Curves, DimensionVisitor};
 
 use splinekit_scene::budget::{Cost, F64};
 
-use crate::arrays::{Numbers, as_points_mut, check_params};
+use crate::arrays::{Numbers, as_points_uninit, check_params};
 use crate::budget;
 use crate::errors::{OrValueError, value_error};
 use crate::row_writer::filled_rows;
@@ -45,17 +47,17 @@ impl DimensionVisitor<Curves> for Shape {
 }
 
 /// c(t_i), c'(t_i), …, c^(order)(t_i) for every parameter, written into `out`
-/// (`out[(i·(order+1) + k)·D + j]`).
+/// (`out[(i·(order+1) + k)·D + j]`), every value once.
 struct EvalInto<'a> {
     params: &'a [f64],
     order: usize,
-    out: &'a mut [f64],
+    out: &'a mut [MaybeUninit<f64>],
 }
 
 impl DimensionVisitor<Curves> for EvalInto<'_> {
     type Output = ();
     fn visit<const D: usize>(self, c: &dyn Curve<D>) {
-        c.eval_many(self.params, self.order, as_points_mut::<D>(self.out));
+        c.eval_many_uninit(self.params, self.order, as_points_uninit::<D>(self.out));
     }
 }
 
@@ -164,17 +166,18 @@ pub struct EvalTask<'a> {
 }
 
 impl EvalTask<'_> {
-    /// Writes the rows `rows` of the result into `out`.
-    pub fn fill(&self, rows: std::ops::Range<usize>, out: &mut [f64]) {
+    /// Writes the rows `rows` of the result into `out`, every value.
+    pub fn fill(&self, rows: std::ops::Range<usize>, out: &mut [MaybeUninit<f64>]) {
         let (order, d) = (self.order, self.d);
         let params = &self.params[rows];
         if self.all || order == 0 {
             return self.curve.visit(EvalInto { params, order, out });
         }
         // All orders up to `order`, then the last of each block.
-        let mut blocks = vec![0.0; params.len() * (order + 1) * d];
+        let mut blocks = vec![MaybeUninit::<f64>::uninit(); params.len() * (order + 1) * d];
         self.curve.visit(EvalInto { params, order, out: &mut blocks });
         for (o, block) in out.chunks_exact_mut(d).zip(blocks.chunks_exact((order + 1) * d)) {
+            // `block` was written whole by `EvalInto`: copied as the slots they are.
             o.copy_from_slice(&block[order * d..]);
         }
     }

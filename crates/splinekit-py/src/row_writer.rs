@@ -1,13 +1,15 @@
 //! New output arrays written row chunk by row chunk with the GIL released: the writer of
 //! every batch evaluation of curves (`Curve.__call__`, `derivatives`, `evaluate_many`).
 //!
-//! The array is allocated like `numpy.empty` (numpy backs large arrays with huge pages) and
-//! each chunk of [`CHUNK_ROWS`] rows is zeroed just before it is evaluated, so no reference
-//! to unwritten memory exists and the chunk is still in cache when the kernel writes it.
-//! (Evaluating each chunk into a per-thread scratch and copying it out with streaming
-//! stores was tried: no faster from Python, where the freed output of the previous call is
-//! usually still in the L3 cache.)
+//! The array is allocated like `numpy.empty` (numpy backs large arrays with huge pages).
+//! A curve batch writes each chunk of [`CHUNK_ROWS`] rows once, through slots of memory
+//! not yet written (`Curve::eval_many_uninit`); what cannot (a surface grid) gets its chunk
+//! zeroed first, so that no reference to unwritten memory exists. (Evaluating each chunk
+//! into a per-thread scratch and copying it out with streaming stores was tried: no faster
+//! from Python, where the freed output of the previous call is usually still in the L3
+//! cache; zeroing costs a second pass over the output.)
 
+use std::mem::MaybeUninit;
 use std::ops::Range;
 
 use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
@@ -34,19 +36,20 @@ impl SendPtr {
 
 /// A new C-contiguous float64 array of `shape` whose leading axis has `rows` rows of
 /// `row_len` values, written by `fill(rows_range, chunk)` chunk by chunk with the GIL
-/// released; `chunk` starts zeroed.
+/// released; `chunk` is not yet written, and `fill` must write every value of it.
 pub fn filled_rows<'py>(
     py: Python<'py>,
     shape: &[usize],
     rows: usize,
     row_len: usize,
-    fill: impl Fn(Range<usize>, &mut [f64]) + Send + Sync,
+    fill: impl Fn(Range<usize>, &mut [MaybeUninit<f64>]) + Send + Sync,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let (out, writer) = unfilled_rows(py, shape, rows, row_len);
     py.detach(|| {
         for range in writer.chunks() {
-            // SAFETY: each chunk range once, from this thread.
-            unsafe { writer.write(range.clone(), |chunk| fill(range, chunk)) };
+            // SAFETY: each chunk range once, from this thread; `fill` writes every value
+            // (its caller's promise).
+            unsafe { writer.write_uninit(range.clone(), |chunk| fill(range, chunk)) };
         }
     });
     Ok(out)
@@ -83,6 +86,24 @@ impl RowWriter {
     pub fn chunks(&self) -> impl Iterator<Item = Range<usize>> + use<> {
         let rows = self.rows;
         (0..rows).step_by(CHUNK_ROWS).map(move |start| start..(start + CHUNK_ROWS).min(rows))
+    }
+
+    /// Writes the rows `range` by `fill`, which receives them not yet written and must
+    /// write every value (as [`splinekit::curve::Curve::eval_many_uninit`] does): the
+    /// memory is written once.
+    ///
+    /// # Safety
+    /// As for [`RowWriter::write`]; and `fill` writes every value.
+    pub unsafe fn write_uninit(&self, range: Range<usize>, fill: impl FnOnce(&mut [MaybeUninit<f64>])) {
+        assert!(range.start <= range.end && range.end <= self.rows, "rows of the array");
+        let len = range.len() * self.row_len;
+        // SAFETY: inside the array (asserted), not written by anyone else (the caller's
+        // promise); slots of `MaybeUninit` may hold unwritten memory.
+        let chunk = unsafe {
+            let target = self.base.get().add(range.start * self.row_len);
+            std::slice::from_raw_parts_mut(target.cast::<MaybeUninit<f64>>(), len)
+        };
+        fill(chunk);
     }
 
     /// Writes the rows `range` by `fill`, which receives their values zeroed.
