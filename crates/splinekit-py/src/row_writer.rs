@@ -14,9 +14,11 @@ use std::ops::Range;
 
 use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::prelude::*;
+use splinekit::curve::output_slot::zeroed;
 
-/// Rows evaluated per chunk: small enough that a chunk stays in cache between its zeroing
-/// and its evaluation.
+/// Rows evaluated per chunk: the unit of work `evaluate_many` shares between threads, and
+/// small enough that a zeroed chunk ([`RowWriter::write`]) stays in cache until it is
+/// evaluated.
 const CHUNK_ROWS: usize = 2048;
 
 /// A raw pointer that may cross into the GIL-free closure (the array it points into is
@@ -65,8 +67,8 @@ pub fn unfilled_rows<'py>(
     row_len: usize,
 ) -> (Bound<'py, PyArrayDyn<f64>>, RowWriter) {
     // SAFETY: a new C-contiguous array of `rows · row_len` f64 (checked below); its
-    // memory is only written, through the raw pointer or through slices of memory
-    // zeroed before they exist (`RowWriter::write`).
+    // memory is only written, through `MaybeUninit` slots (`RowWriter::write_uninit`), never
+    // read before it is.
     let out = unsafe { PyArrayDyn::<f64>::new(py, shape, false) };
     assert_eq!(out.len(), rows * row_len, "shape holds the rows");
     let writer = RowWriter { base: SendPtr(out.data()), rows, row_len };
@@ -106,21 +108,14 @@ impl RowWriter {
         fill(chunk);
     }
 
-    /// Writes the rows `range` by `fill`, which receives their values zeroed.
+    /// Writes the rows `range` by `fill`, which receives their values zeroed (for what
+    /// cannot write through slots, a surface grid).
     ///
     /// # Safety
     /// `range` lies within the rows, the array is alive, and no other thread writes these
     /// rows meanwhile (each chunk is written once, by one thread).
     pub unsafe fn write(&self, range: Range<usize>, fill: impl FnOnce(&mut [f64])) {
-        assert!(range.start <= range.end && range.end <= self.rows, "rows of the array");
-        let len = range.len() * self.row_len;
-        // SAFETY: inside the array (asserted), not written by anyone else (the caller's
-        // promise), and zeroed through the raw pointer before the slice exists.
-        let chunk = unsafe {
-            let target = self.base.get().add(range.start * self.row_len);
-            target.write_bytes(0, len);
-            std::slice::from_raw_parts_mut(target, len)
-        };
-        fill(chunk);
+        // SAFETY: the caller's promise; every value is written (zero) before `fill` runs.
+        unsafe { self.write_uninit(range, |chunk| fill(zeroed(chunk))) }
     }
 }
