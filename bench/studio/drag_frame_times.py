@@ -71,9 +71,14 @@ def shown(report):
 
 
 def main():
+    with tempfile.TemporaryDirectory(prefix="splinekit-frames-") as tmp:
+        measure(tmp)
+
+
+def measure(tmp):
+    """Opens the studio, drags one handle, and prints the frame times; reports go in `tmp`."""
     doc, kind, index = sys.argv[1], sys.argv[2], [int(x) for x in sys.argv[3].split(",")]
     steps = int(os.environ.get("STEPS", "40"))
-    tmp = tempfile.mkdtemp(prefix="splinekit-frames-")
     report, frames = os.path.join(tmp, "handles.json"), os.path.join(tmp, "frames.json")
     child = subprocess.Popen([BIN, "view", doc, "--window-size", "1280x800", "--report-handles", report,
                               "--report-frame-times", frames])

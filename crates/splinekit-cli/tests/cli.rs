@@ -3,7 +3,7 @@
 use serde_json::{Value, json};
 
 mod common;
-use common::run;
+use common::{ScratchDir, run};
 
 fn ok_json(args: &[&str], stdin: &str) -> Value {
     let o = run(args, stdin);
@@ -23,13 +23,6 @@ fn assert_bad(args: &[&str], stdin: &str, must_contain: &str) {
     assert!(o.stderr.starts_with("error: "), "{:?}", o.stderr);
     assert!(!o.stderr.contains("panicked"), "{:?}", o.stderr);
     assert!(o.stderr.contains(must_contain), "{args:?} with {stdin:?}: {:?} lacks {must_contain:?}", o.stderr);
-}
-
-/// A fresh folder `splinekit-NAME-PID` in the system's temporary folder.
-fn temp_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("splinekit-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 /// Writes `text` to the file `name` in `dir`, returning its path.
@@ -188,7 +181,7 @@ fn interpolate_refine_and_subdivide() {
 
 #[test]
 fn output_to_a_file() {
-    let dir = temp_dir("cli-test");
+    let dir = ScratchDir::new("cli-test");
     let path = dir.join("out.json");
     let o =
         run(&["eval", "-", "--at", "0.5", "-o", path.to_str().unwrap()], r#"{"type":"line","from":[0,0],"to":[2,4]}"#);
@@ -196,7 +189,6 @@ fn output_to_a_file() {
     assert!(o.stdout.is_empty());
     let v: Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
     assert_eq!(v["points"], json!([[1.0, 2.0]]));
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
@@ -307,7 +299,7 @@ fn every_example_in_docs_format_md_is_a_valid_document() {
 
 #[test]
 fn tessellate_writes_svg_and_obj_polylines() {
-    let dir = temp_dir("tessellate");
+    let dir = ScratchDir::new("tessellate");
     let svg = dir.join("heart.svg");
     let o = run(&["tessellate", "-", "-o", svg.to_str().unwrap(), "--tolerance", "0.01"], r#"{"type":"heart"}"#);
     assert_eq!(o.code, 0, "{}", o.stderr);
@@ -328,12 +320,11 @@ fn tessellate_writes_svg_and_obj_polylines() {
         r#"{"type":"heart"}"#,
         "tolerance",
     );
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
 fn gallery_writes_every_figure_and_an_index() {
-    let dir = temp_dir("gallery");
+    let dir = ScratchDir::new("gallery");
     let o = run(&["gallery", "-o", dir.to_str().unwrap()], "");
     assert_eq!(o.code, 0, "{}", o.stderr);
     let index = std::fs::read_to_string(dir.join("index.html")).unwrap();
@@ -385,12 +376,11 @@ fn gallery_writes_every_figure_and_an_index() {
     for l in step {
         assert!(l.ends_with(".step") && std::fs::read(dir.join(l)).unwrap().starts_with(b"ISO-10303-21;"), "{l}");
     }
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
 fn tessellate_writes_surface_meshes_and_render_and_animate_write_pictures() {
-    let dir = temp_dir("meshes");
+    let dir = ScratchDir::new("meshes");
     let torus = r#"{"type":"torus"}"#;
     for ext in ["obj", "stl", "stla", "ply", "gltf", "glb"] {
         let out = dir.join(format!("torus.{ext}"));
@@ -456,7 +446,6 @@ fn tessellate_writes_surface_meshes_and_render_and_animate_write_pictures() {
     // Four image descriptors (0x2C after a graphic control extension block).
     assert_eq!(bytes.windows(2).filter(|w| w == &[0x00, 0x2C]).count(), 4);
     assert_bad(&["animate", "-", "-o", gif.to_str().unwrap(), "--fps", "0"], &heart, "--fps");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
@@ -700,7 +689,7 @@ fn view_refuses_bad_arguments_and_explains_a_missing_display() {
 
 #[test]
 fn subdivide_surface_writes_meshes_and_refuses_bad_ones() {
-    let dir = temp_dir("subdivision");
+    let dir = ScratchDir::new("subdivision");
     let cube = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/meshes/cube.obj")).unwrap();
     let obj = dir.join("cc.obj");
     let o = run(
@@ -731,7 +720,6 @@ fn subdivide_surface_writes_meshes_and_refuses_bad_ones() {
     // Loop takes triangles: the cube's quads are refused unless --triangulate.
     assert_bad(&["subdivide-surface", "-", "--scheme", "loop", "-o", obj.to_str().unwrap()], &cube, "triangulation");
     assert_bad(&["subdivide-surface", "-", "--scheme", "spline", "-o", obj.to_str().unwrap()], &cube, "scheme");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
@@ -760,7 +748,7 @@ fn project_finds_nearest_points_and_every_minimum() {
 
 #[test]
 fn intersect_reports_crossings_tangents_overlaps_and_self_intersections() {
-    let dir = temp_dir("intersect");
+    let dir = ScratchDir::new("intersect");
     let write = |name: &str, text: &str| write_in(&dir, name, text);
     let circle = r#"{"type":"nurbs","degree":2,"knots":[0,0,0,0.25,0.25,0.5,0.5,0.75,0.75,1,1,1],
         "control_points":[[1,0],[1,1],[0,1],[-1,1],[-1,0],[-1,-1],[0,-1],[1,-1],[1,0]],
@@ -791,12 +779,11 @@ fn intersect_reports_crossings_tangents_overlaps_and_self_intersections() {
     let helix = write("helix.json", r#"{"type":"helix"}"#);
     assert_bad(&["intersect", &a, &helix], "", "B: the curves must have the same dimension");
     assert_bad(&["intersect", &a, &line, "--tolerance", "0"], "", "--tolerance");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
 fn intersect_and_section_cut_surfaces() {
-    let dir = temp_dir("intersect-surfaces");
+    let dir = ScratchDir::new("intersect-surfaces");
     let write = |name: &str, text: &str| write_in(&dir, name, text);
     let sphere = write("sphere.json", r#"{"type":"sphere","radius":2}"#);
     let line = write("line.json", r#"{"type":"line","from":[-3,0.5,0.3],"to":[3,0.5,0.3]}"#);
@@ -848,7 +835,6 @@ fn intersect_and_section_cut_surfaces() {
         (&["section", &line, "--plane", "0,0,0/0,0,1"], "", "SURFACE"),
         (&["intersect", &torus, &cylinder, "--chord", "0"], "", "--chord"),
     ]);
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
@@ -908,7 +894,7 @@ fn edited_local_control_points_are_honoured_and_checked_by_the_commands() {
     for (a, b) in p.iter().zip(expected) {
         assert!((a - b).abs() < 1e-12, "{p:?} vs {expected:?}");
     }
-    let dir = temp_dir("lcp");
+    let dir = ScratchDir::new("lcp");
     let obj = dir.join("heart.obj");
     let o = run(&["tessellate", "-", "-o", obj.to_str().unwrap()], doc);
     assert_eq!(o.code, 0, "{}", o.stderr);
@@ -928,5 +914,4 @@ fn edited_local_control_points_are_honoured_and_checked_by_the_commands() {
         "local_control_points.3: expected 4 control points for a Bézier local of degree 3, got 3",
     );
     assert!(!png.exists(), "nothing written for a bad document");
-    std::fs::remove_dir_all(&dir).ok();
 }

@@ -3,10 +3,10 @@
 //! scenes where one shape was expected.
 
 use serde_json::{Value, json};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 mod common;
-use common::run;
+use common::{ScratchDir, run};
 
 fn ok_json(args: &[&str], stdin: &str) -> Value {
     let o = run(args, stdin);
@@ -25,23 +25,15 @@ fn assert_bad(args: &[&str], stdin: &str, must_contain: &str) -> String {
     o.stderr
 }
 
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("splinekit-edges-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 /// `tessellate` writes `doc` as each format of `exts` (exit 0), each file over `min_bytes`.
 fn assert_tessellates(name: &str, doc: &str, exts: &[&str], min_bytes: u64) {
-    let dir = temp_dir(name);
+    let dir = ScratchDir::new(&format!("edges-{name}"));
     for ext in exts {
         let path = dir.join(format!("{name}.{ext}"));
         let o = run(&["tessellate", "-", "-o", path.to_str().unwrap()], doc);
         assert_eq!(o.code, 0, "{ext}: {}", o.stderr);
         assert!(std::fs::metadata(&path).unwrap().len() > min_bytes, "{ext}");
     }
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 fn names(dir: &Path) -> Vec<String> {
@@ -59,7 +51,7 @@ const POINT_PATCH: &str = r#"{"type":"bezier_surface","control_points":[[[1,1,1]
 /// truncated, then removed) and no temporary file beside it.
 #[test]
 fn a_failed_write_keeps_the_old_file() {
-    let dir = temp_dir("old-file");
+    let dir = ScratchDir::new("edges-old-file");
     let path = dir.join("result.json");
     std::fs::write(&path, "the user's old result\n").unwrap();
     let p = path.to_str().unwrap();
@@ -72,7 +64,6 @@ fn a_failed_write_keeps_the_old_file() {
     let v: Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
     assert_eq!(v["points"], json!([[1.0, 2.0]]));
     assert_eq!(names(&dir), ["result.json"]);
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Devices and symbolic links are written in place and never removed: a link to /dev/full
@@ -83,7 +74,7 @@ fn a_failed_write_never_removes_a_device_or_a_link() {
     if !Path::new("/dev/full").exists() {
         return;
     }
-    let dir = temp_dir("device");
+    let dir = ScratchDir::new("edges-device");
     let link = dir.join("full.json");
     std::os::unix::fs::symlink("/dev/full", &link).unwrap();
     let doc = r#"{"type":"line","from":[0,0],"to":[2,4]}"#;
@@ -101,7 +92,6 @@ fn a_failed_write_never_removes_a_device_or_a_link() {
     assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
     let v: Value = serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
     assert_eq!(v["points"], json!([[1.0, 2.0]]));
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// A B-spline surface of degree 5 in v (what CAD files carry): tessellated, exported and
@@ -124,7 +114,7 @@ fn a_degree_five_surface_is_tessellated_and_has_grid_normals() {
 /// used to end after "more than 400000 pairs of pieces".
 #[test]
 fn a_line_through_the_poles_meets_the_sphere_at_the_poles() {
-    let dir = temp_dir("poles");
+    let dir = ScratchDir::new("edges-poles");
     let (line, sphere) = (dir.join("line.json"), dir.join("sphere.json"));
     std::fs::write(&line, r#"{"type":"line","from":[0,0,-3],"to":[0,0,3]}"#).unwrap();
     std::fs::write(&sphere, r#"{"type":"sphere","radius":2}"#).unwrap();
@@ -136,7 +126,6 @@ fn a_line_through_the_poles_meets_the_sphere_at_the_poles() {
         assert!(xyz[0].abs() < 1e-9 && xyz[1].abs() < 1e-9 && (xyz[2] - z).abs() < 1e-9, "{p}");
         assert_eq!(p["kind"], "crossing", "{p}");
     }
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// A horn torus (major radius = minor radius) is written as STL and glTF; its vertices
@@ -150,7 +139,7 @@ fn a_horn_torus_is_written_as_stl() {
 /// Shapes with nothing to mesh say what is wrong instead of blaming `--density`.
 #[test]
 fn nothing_to_mesh_is_named() {
-    let dir = temp_dir("nothing");
+    let dir = ScratchDir::new("edges-nothing");
     let out = dir.join("m.obj");
     let o = out.to_str().unwrap();
     let covered = r#"{"type":"trimmed","surface":{"type":"plane"},
@@ -160,7 +149,6 @@ fn nothing_to_mesh_is_named() {
     let e = assert_bad(&["tessellate", "-", "-o", o], POINT_PATCH, "the surface is the single point (1, 1, 1)");
     assert!(!e.contains("--density"), "{e}");
     assert_eq!(names(&dir), Vec::<String>::new(), "nothing written");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// `offset` prints a scene when the offset has several pieces; `eval` answers per object:
@@ -183,13 +171,11 @@ fn eval_answers_a_scene_per_object() {
     let mixed = r#"{"type":"scene","objects":[{"shape":{"type":"circle"}},{"shape":{"type":"sphere"}}]}"#;
     assert_bad(&["eval", "-", "--samples", "3"], mixed, "objects[1].shape: --samples");
     // `intersect`, which combines two shapes, names the scene instead of "unknown shape type".
-    let dir = std::env::temp_dir().join(format!("splinekit-edges-scene-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = ScratchDir::new("edges-scene");
     let path = dir.join("scene.json");
     std::fs::write(&path, &text).unwrap();
     let path = path.to_str().unwrap();
     assert_bad(&["intersect", path, path], "", "a scene of 2 objects");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// The other commands that answer for one shape take a scene too: the queries (`project`,

@@ -2,17 +2,11 @@
 //! `render`, glTF), each against the kernel's exact evaluation and limit masks.
 
 mod common;
-use common::run;
+use common::{ScratchDir, run};
 
 use serde_json::{Value, json};
 use splinekit::Point;
 use splinekit::subdivision::surface::{Cage, Crease, Scheme, SubdivisionSurface};
-
-fn temp_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("splinekit-subdoc-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 fn cube_doc() -> Value {
     json!({
@@ -199,7 +193,7 @@ fn triangles_and_polygons_map_as_documented() {
 fn tessellate_puts_the_mesh_on_the_limit_within_the_tolerance() {
     let mut doc = cube_doc();
     doc.as_object_mut().unwrap().remove("creases");
-    let dir = temp_dir("tess");
+    let dir = ScratchDir::new("subdoc-tess");
     for tolerance in [1e-2, 1e-3] {
         let out = dir.join("cube.obj");
         let o = run(
@@ -258,7 +252,7 @@ fn tessellate_puts_the_mesh_on_the_limit_within_the_tolerance() {
 /// as the cage given inline; a missing file names the field and the path.
 #[test]
 fn a_cage_file_is_read_relative_to_the_document() {
-    let dir = temp_dir("obj");
+    let dir = ScratchDir::new("subdoc-obj");
     let cage = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/meshes/creased_cube.obj"))
         .unwrap();
     std::fs::write(dir.join("creased.obj"), &cage).unwrap();
@@ -312,7 +306,7 @@ fn bad_cages_name_the_field() {
 /// glTF export and rendering of a document and of a scene holding it (with its cage drawn).
 #[test]
 fn gltf_and_render_take_the_document() {
-    let dir = temp_dir("gltf");
+    let dir = ScratchDir::new("subdoc-gltf");
     let glb = dir.join("cube.glb");
     let o = run(&["tessellate", "-", "-o", glb.to_str().unwrap(), "--density", "16"], &cube_doc().to_string());
     assert_eq!(o.code, 0, "{}", o.stderr);

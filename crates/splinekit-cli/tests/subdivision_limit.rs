@@ -1,16 +1,10 @@
 //! `splinekit subdivide-surface` with the schemes, creases and `--limit` of issue 24.
 
 mod common;
-use common::run;
+use common::{ScratchDir, run};
 
 fn cube() -> String {
     std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/meshes/cube.obj")).unwrap()
-}
-
-fn temp_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("splinekit-subdiv-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 /// Runs `splinekit subdivide-surface ARGS` on `stdin` and checks that it succeeds.
@@ -51,7 +45,7 @@ fn lines(text: &str, tag: &str) -> Vec<Vec<f64>> {
 /// valence-3 mask (9v + 4Σe + Σd)/24), with normals along them.
 #[test]
 fn steps_zero_limit_gives_the_cage_limit_points_in_order() {
-    let dir = temp_dir("zero");
+    let dir = ScratchDir::new("subdiv-zero");
     let out = dir.join("limit.obj");
 
     let text = subdivided("catmull-clark", &["--steps", "0", "--limit"], &out, &cube());
@@ -71,13 +65,12 @@ fn steps_zero_limit_gives_the_cage_limit_points_in_order() {
 
     let v = lines(&subdivided("catmull-clark", &["--steps", "2", "--limit"], &out, &cube()), "v ");
     assert!(v.iter().any(|p| p[0].abs() < 1e-15 && p[1].abs() < 1e-15 && (p[2] - 68.0 / 81.0).abs() < 1e-15));
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Loop on triangles, bilinear, OBJ crease tags and boundary rules from the command line.
 #[test]
 fn schemes_creases_and_boundaries() {
-    let dir = temp_dir("schemes");
+    let dir = ScratchDir::new("subdiv-schemes");
     let out = dir.join("out.obj");
 
     let text = subdivided("loop", &["--triangulate", "--steps", "1"], &out, &cube());
@@ -107,7 +100,6 @@ fn schemes_creases_and_boundaries() {
     let quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
     let text = subdivided("catmull-clark", &["--steps", "0", "--limit", "--boundary", "edge-and-corner"], &out, quad);
     assert_eq!(lines(&text, "v ")[2], vec![1.0, 1.0, 0.0]);
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Doo–Sabin's `--limit` on the cube [−1, 1]³: a corner's points in its three faces are
@@ -116,7 +108,7 @@ fn schemes_creases_and_boundaries() {
 /// has moved (the polygons' count and order kept).
 #[test]
 fn doo_sabin_limit_points_of_the_cube() {
-    let dir = temp_dir("doo-sabin");
+    let dir = ScratchDir::new("subdiv-doo-sabin");
     let out = dir.join("limit.obj");
     let limit_of = |steps: &str| subdivided("doo-sabin", &["--steps", steps, "--limit"], &out, &cube());
     let text = limit_of("0");
@@ -138,7 +130,6 @@ fn doo_sabin_limit_points_of_the_cube() {
         plain.lines().filter(|l| l.starts_with("f ")).count()
     );
     assert!(a.iter().zip(&b).all(|(p, q)| p != q), "every vertex moves onto the limit");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
@@ -187,7 +178,7 @@ fn at_evaluates_the_limit_exactly() {
 /// the extraordinary vertices); --steps 0 and more than 30 levels are refused.
 #[test]
 fn step_export_writes_bicubic_patches() {
-    let dir = temp_dir("step");
+    let dir = ScratchDir::new("subdiv-step");
     let out = dir.join("cube.step");
     let o = subdivide(&["-", "--scheme", "catmull-clark", "--steps", "3", "-o", out.to_str().unwrap()], &cube());
     assert!(o.stderr.contains("144 exact bicubic patches, 24 bilinear stand-ins (down to level 3)"), "{}", o.stderr);
@@ -206,7 +197,7 @@ fn step_export_writes_bicubic_patches() {
 /// `--scheme bilinear` writes the six faces.
 #[test]
 fn step_export_of_loop_surfaces() {
-    let dir = temp_dir("step-loop");
+    let dir = ScratchDir::new("subdiv-step-loop");
     let out = dir.join("loop.step");
     let o = subdivide(
         &["-", "--scheme", "loop", "--triangulate", "--tolerance", "1e-4", "-o", out.to_str().unwrap()],
@@ -235,7 +226,7 @@ fn degrees(text: &str, d: &str) -> usize {
 /// reach is refused with the one they do, and --tolerance is for STEP only.
 #[test]
 fn step_export_meets_a_tolerance() {
-    let dir = temp_dir("step-tolerance");
+    let dir = ScratchDir::new("subdiv-step-tolerance");
     let out = dir.join("creased.step");
     let mesh = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/meshes/creased_cube.obj");
     let o = subdivide(&[mesh, "--scheme", "catmull-clark", "--tolerance", "1e-6", "-o", out.to_str().unwrap()], "");
@@ -285,7 +276,7 @@ fn open_fan() -> String {
 /// both polygon schemes write the same bytes, a face order fixed by the input.
 #[test]
 fn subdivide_surface_writes_the_same_bytes_every_run() {
-    let dir = temp_dir("same");
+    let dir = ScratchDir::new("subdiv-same");
     let out = dir.join("out.obj");
     for scheme in ["doo-sabin", "catmull-clark"] {
         let first = subdivided(scheme, &["--steps", "3"], &out, &open_fan());
@@ -294,5 +285,4 @@ fn subdivide_surface_writes_the_same_bytes_every_run() {
             assert!(again == first, "{scheme}: the output changed between runs");
         }
     }
-    std::fs::remove_dir_all(&dir).ok();
 }

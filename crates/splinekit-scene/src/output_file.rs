@@ -137,11 +137,27 @@ fn temporary_beside(target: &Path) -> io::Result<(File, PathBuf)> {
 mod tests {
     use super::*;
 
-    fn scratch(name: &str) -> PathBuf {
+    /// A new empty folder for one test, removed with its contents when dropped.
+    struct Scratch(PathBuf);
+
+    impl std::ops::Deref for Scratch {
+        type Target = Path;
+        fn deref(&self) -> &Path {
+            &self.0
+        }
+    }
+
+    impl Drop for Scratch {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
+
+    fn scratch(name: &str) -> Scratch {
         let d = std::env::temp_dir().join(format!("splinekit-output-file-{name}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&d);
         std::fs::create_dir_all(&d).unwrap();
-        d
+        Scratch(d)
     }
 
     fn leftovers(dir: &Path) -> Vec<String> {
@@ -219,7 +235,7 @@ mod tests {
     #[test]
     fn a_directory_is_refused() {
         let d = scratch("dir");
-        assert!(OutputFile::create(&d).is_err());
+        assert!(OutputFile::create(&*d).is_err());
         assert!(d.is_dir());
     }
 }

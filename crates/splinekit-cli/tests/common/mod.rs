@@ -28,3 +28,30 @@ pub fn run(args: &[&str], stdin: &str) -> Output {
         stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
     }
 }
+
+/// A folder of its own under the system's temporary folder for one test, emptied when made
+/// and removed with everything in it when dropped, so that test runs leave nothing behind.
+pub struct ScratchDir(std::path::PathBuf);
+
+impl ScratchDir {
+    /// `splinekit-{name}-{process id}` in the temporary folder, new and empty.
+    pub fn new(name: &str) -> ScratchDir {
+        let dir = std::env::temp_dir().join(format!("splinekit-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("a temporary folder");
+        ScratchDir(dir)
+    }
+}
+
+impl std::ops::Deref for ScratchDir {
+    type Target = std::path::Path;
+    fn deref(&self) -> &std::path::Path {
+        &self.0
+    }
+}
+
+impl Drop for ScratchDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
