@@ -109,6 +109,10 @@ impl<const D: usize> TrimmedSurface<D> {
     }
 }
 
+/// The base surface's geometry, every method forwarded (its fast grids, its closed-form
+/// normals and curvatures, its breakpoints and its enclosing box: the box of the whole
+/// surface holds the trimmed part); the trim is the trimmed surface's own. `subdivision` is
+/// not forwarded: a subdivision limit drawn from its cage would lose the trim.
 impl<const D: usize> Surface<D> for TrimmedSurface<D> {
     crate::wrapped_surface_domains!(surface);
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
@@ -116,6 +120,33 @@ impl<const D: usize> Surface<D> for TrimmedSurface<D> {
     }
     fn eval_grid(&self, us: &[f64], vs: &[f64], du: usize, dv: usize, out: &mut [Point<D>]) {
         self.surface.eval_grid(us, vs, du, dv, out)
+    }
+    fn eval_grid_with_normals(&self, us: &[f64], vs: &[f64], points: &mut [Point<D>], normals: &mut [Point<D>]) {
+        self.surface.eval_grid_with_normals(us, vs, points, normals)
+    }
+    fn point(&self, u: f64, v: f64) -> Point<D> {
+        self.surface.point(u, v)
+    }
+    fn partial(&self, u: f64, v: f64, i: usize, j: usize) -> Point<D> {
+        self.surface.partial(u, v, i, j)
+    }
+    fn normal(&self, u: f64, v: f64) -> Option<Point<D>> {
+        self.surface.normal(u, v)
+    }
+    fn fundamental_forms(&self, u: f64, v: f64) -> Option<crate::surface::FundamentalForms> {
+        self.surface.fundamental_forms(u, v)
+    }
+    fn curvatures(&self, u: f64, v: f64) -> Option<crate::surface::Curvatures> {
+        self.surface.curvatures(u, v)
+    }
+    fn breakpoints_u(&self) -> Vec<f64> {
+        self.surface.breakpoints_u()
+    }
+    fn breakpoints_v(&self) -> Vec<f64> {
+        self.surface.breakpoints_v()
+    }
+    fn enclosing_box(&self) -> Option<crate::query::Aabb<D>> {
+        self.surface.enclosing_box()
     }
     fn trim_contains(&self, u: f64, v: f64) -> Option<bool> {
         Some(self.contains(u, v))
