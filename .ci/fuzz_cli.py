@@ -6,7 +6,7 @@ internal error (CONTRACT.md section 3). Standard library only.
 
 Usage: python3 .ci/fuzz_cli.py BINARY [SEED] [CASES]
 """
-import json, os, random, subprocess, sys, tempfile
+import json, os, random, shutil, subprocess, sys, tempfile
 B = sys.argv[1]
 random.seed(int(sys.argv[2]) if len(sys.argv) > 2 else 1)
 TMP = tempfile.mkdtemp()
@@ -141,4 +141,5 @@ for i in range(int(sys.argv[3]) if len(sys.argv) > 3 else 400):
         bad += 1
         print("BAD", r.returncode, args, text[:400], "->", err[:300], r.stdout[:100])
 print(f"fuzz: {bad} bad outcomes")
+shutil.rmtree(TMP, ignore_errors=True)
 sys.exit(1 if bad else 0)

@@ -25,6 +25,8 @@ from OCP.Geom2dAPI import Geom2dAPI_InterCurveCurve, Geom2dAPI_ProjectPointOnCur
 from OCP.GeomAPI import GeomAPI_IntCS, GeomAPI_IntSS, GeomAPI_ProjectPointOnCurve, GeomAPI_ProjectPointOnSurf
 
 TOLERANCE = 1e-9
+# The documents handed to the command line, removed with the folder when the script ends.
+SCRATCH = tempfile.TemporaryDirectory(prefix="splinekit-ocp-")
 failures = []
 
 
@@ -67,7 +69,7 @@ def cubic_curve(n=12, pts=None):
 
 
 def splinekit(binary, doc, *args):
-    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False, dir=SCRATCH.name) as f:
         json.dump(doc, f)
     start = time.perf_counter()
     out = subprocess.run([binary, *args[:1], f.name, *args[1:]], capture_output=True, text=True)
@@ -100,7 +102,7 @@ def query_points(count, lo, hi):
 def project_surface(binary, count):
     doc, surface = bicubic_surface()
     pts = query_points(count, (-1.0, -1.0, -2.0), (8.0, 8.0, 2.0))
-    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False, dir=SCRATCH.name) as f:
         json.dump(pts, f)
     ours, elapsed = splinekit(binary, doc, "project", "--points", f.name)
     ours = [p["nearest"]["distance"] for p in ours["projections"]]
@@ -131,7 +133,7 @@ def project_surface(binary, count):
 def project_curve(binary, count):
     doc, curve = cubic_curve()
     pts = query_points(count, (-1.0, -3.0, -2.0), (12.0, 3.0, 2.0))
-    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False, dir=SCRATCH.name) as f:
         json.dump(pts, f)
     ours, elapsed = splinekit(binary, doc, "project", "--points", f.name)
     ours = [p["nearest"]["distance"] for p in ours["projections"]]
@@ -168,7 +170,7 @@ def wavy_curves():
 
 def intersect_curves(binary):
     (doc_a, ca), (doc_b, cb) = wavy_curves()
-    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False, dir=SCRATCH.name) as f:
         json.dump(doc_b, f)
     ours, elapsed = splinekit(binary, doc_a, "intersect", f.name)
     ours = [p["point"] for p in ours["points"]]
@@ -206,7 +208,7 @@ def intersect_curve_surface(binary):
     sdoc, surface = bicubic_surface()
     zigzag = [[0.5 + 0.55 * i, 3.5 + 2.0 * math.sin(0.8 * i), 1.6 * (-1) ** i] for i in range(12)]
     for label, (cdoc, curve) in [("zigzag", cubic_curve(pts=zigzag)), ("wiggly", cubic_curve())]:
-        with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False, dir=SCRATCH.name) as f:
             json.dump(sdoc, f)
         ours, elapsed = splinekit(binary, cdoc, "intersect", f.name)
         ours = [p["point"] for p in ours["points"]]
@@ -280,7 +282,7 @@ def intersect_surfaces(binary):
                                      ("bicubic 8×8 patch–plane z = 0.2", (sdoc, plane), (bicubic, occ_plane)),
                                      ("small loop: plane–unit sphere, radius sin 0.02", (small, {"type": "sphere", "radius": 1.0}),
                                       (occ_small, occ_sphere))]:
-        with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False, dir=SCRATCH.name) as f:
             json.dump(db, f)
         ours, elapsed = splinekit(binary, da, "intersect", f.name, "--chord", "1e-5")
         start = time.perf_counter()
@@ -327,7 +329,7 @@ def intersect_touching(binary):
          (cylinder(0.0, 0.0, 1.0), cylinder(2.0, -0.5, 1.5)), segment, 1.0, False),
     ]
     for name, (da, db), (oa, ob), off, length, closed in cases:
-        with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False, dir=SCRATCH.name) as f:
             json.dump(db, f)
         ours, elapsed = splinekit(binary, da, "intersect", f.name, "--chord", "1e-5")
         curves = ours["curves"]
