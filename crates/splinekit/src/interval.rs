@@ -51,16 +51,13 @@ impl Interval {
     /// start is the value at its end, so c(start) and c(end) agree to the last bit.
     #[inline]
     pub fn wrap_periodic(&self, t: f64, side: Side) -> f64 {
-        let w = if t >= self.start && t < self.end { t } else { self.wrap_into_period(t) };
+        let w = if t >= self.start && t < self.end {
+            t
+        } else {
+            let r = self.start + (t - self.start).rem_euclid(self.length());
+            if r >= self.end { self.start } else { r }
+        };
         if side == Side::Left && w == self.start { self.end } else { w }
-    }
-    /// `t` outside [start, end) brought into it by whole periods (the remainder out of line:
-    /// the parameters of a periodic curve are mostly inside already).
-    #[cold]
-    #[inline(never)]
-    fn wrap_into_period(&self, t: f64) -> f64 {
-        let r = self.start + (t - self.start).rem_euclid(self.length());
-        if r >= self.end { self.start } else { r }
     }
     /// The parameter start + s·(end − start).
     #[inline]

@@ -249,29 +249,17 @@ pub fn advance_span_side(knots: &[f64], degree: usize, n: usize, hint: usize, t:
 /// The galloping search of [`advance_span`] for a predicate `below` that holds for a
 /// prefix of the knots (k ≤ t for the right limit, k < t for the left): returns
 /// max{i ∈ [p, n − 1] : below(t_i)}, or p when there is none.
-///
-/// The hint itself is tried inline (the span of a sorted batch's previous parameter, the
-/// arithmetic guess for uniform knots: almost always right); the search proper is out of
-/// line, so that a caller evaluating one point stays small enough to inline.
 #[inline(always)]
 fn gallop_span(knots: &[f64], degree: usize, n: usize, hint: usize, below: impl Fn(f64) -> bool) -> usize {
     let (p, last) = (degree, n - 1);
     let hint = hint.clamp(p, last);
-    if (hint == p || below(knots[hint])) && (hint == last || !below(knots[hint + 1])) {
-        return hint;
-    }
-    gallop_from(knots, degree, n, hint, below)
-}
-
-/// [`gallop_span`] when the hint (in [p, n − 1]) is not the answer: steps 1, 2, 4, … knots
-/// from it towards t until they bracket t, then bisects the bracket.
-#[inline(never)]
-fn gallop_from(knots: &[f64], degree: usize, n: usize, hint: usize, below: impl Fn(f64) -> bool) -> usize {
-    let (p, last) = (degree, n - 1);
     // Invariant: below(knots[lo]) (or lo = p) and !below(knots[hi]) (or hi = n); the answer
     // lies in [lo, hi − 1].
     let (lo, hi) = if hint == p || below(knots[hint]) {
-        // Forward (below(knots[hint + 1]) holds, or the hint would be the answer).
+        // Forward: the common case of a sorted batch ends at the first test.
+        if hint == last || !below(knots[hint + 1]) {
+            return hint;
+        }
         let (mut lo, mut step) = (hint + 1, 1);
         loop {
             let probe = lo + step;

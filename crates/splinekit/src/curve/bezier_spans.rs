@@ -29,29 +29,6 @@ pub struct BezierSpans<T> {
     frames: Vec<(f64, f64, f64)>,
     /// p + 1 control points per span.
     points: Vec<T>,
-    /// [`BezierSpans::point`]'s Bernstein sum for this degree, chosen once here.
-    point_kernel: PointKernel<T>,
-}
-
-/// The point of span j at t: `point_fixed::<W>` for W = p + 1, monomorphised on the width
-/// and picked at construction. [`BezierSpans::point`] is then a few instructions and one
-/// well-predicted indirect call, small enough to inline into a caller's loop (where the
-/// loads of the knots and the domain hoist out of it); a match over the seven widths made
-/// it a 10 KB function called out of line, a third slower at random parameters.
-#[derive(Clone, Copy)]
-struct PointKernel<T>(fn(&BezierSpans<T>, usize, f64) -> T);
-
-impl<T> PartialEq for PointKernel<T> {
-    /// Always equal: the kernel is a function of the degree, which is compared beside it.
-    fn eq(&self, _: &Self) -> bool {
-        true
-    }
-}
-
-impl<T> std::fmt::Debug for PointKernel<T> {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("PointKernel")
-    }
 }
 
 impl<T: Coefficient> BezierSpans<T> {
@@ -90,8 +67,7 @@ impl<T: Coefficient> BezierSpans<T> {
                 points.push(d[p]);
             }
         }
-        let point_kernel = PointKernel(by_width!(p, W => Self::point_fixed::<W> as fn(&Self, usize, f64) -> T));
-        Some(BezierSpans { degree, first_span: p, frames, points, point_kernel })
+        Some(BezierSpans { degree, first_span: p, frames, points })
     }
 
     /// Writes c^{(k)}(t), k = 0 … out.len() − 1, using span `span` (which contains t).
@@ -134,11 +110,11 @@ impl<T: Coefficient> BezierSpans<T> {
     /// the derivative machinery of [`BezierSpans::eval`] (the same value as its `out[0]`).
     #[inline]
     pub fn point(&self, span: usize, t: f64) -> T {
-        (self.point_kernel.0)(self, span - self.first_span, t)
+        let j = span - self.first_span;
+        by_width!(self.degree, W => self.point_fixed::<W>(j, t))
     }
 
-    /// [`BezierSpans::point`] for W = p + 1 (the [`PointKernel`] of degree p), on span
-    /// index j counted from the first span.
+    #[inline(always)]
     fn point_fixed<const W: usize>(&self, j: usize, t: f64) -> T {
         let (b, start, inv_h) = self.span_at::<W>(j);
         bernstein_sum::<W, T>(b, (t - start) * inv_h)

@@ -179,17 +179,6 @@ impl<const D: usize> BSplineCurve<D> {
         self.axis.span_side(t, side)
     }
 
-    /// c(t) on `span` by the triangular Cox–de Boor kernel: [`Curve::point`] of the degrees
-    /// without Bézier spans (0 and above 7), kept out of line so that `point` stays small
-    /// enough to inline into a caller's loop.
-    #[inline(never)]
-    fn point_by_de_boor(&self, span: usize, t: f64) -> Point<D> {
-        let mut out = [Point::<D>::zeros()];
-        let (knots, pts) = self.evaluation_data();
-        eval_on_span(knots, self.axis.reciprocals(), pts, self.degree(), span, t, &mut out);
-        out[0]
-    }
-
     /// The batch by the Bézier spans into any [`Slot`]s (points, or memory not yet
     /// written): parameters clamped into the domain (wrapped when periodic), spans located
     /// by the axis in any order of the parameters.
@@ -241,18 +230,17 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
 
     /// c(t) alone: on the Bézier-span path the span's Bernstein sum without the derivative
     /// machinery of [`Curve::eval_side`] (the same value as its `out[0]`).
-    ///
-    /// Always inlined (about 200 instructions, every rare path out of line: the span search
-    /// beyond the guess, the periodic wrap, the degree's Bernstein sum behind one indirect
-    /// call), so that a loop over `point` keeps the knots, the domain and the span guide
-    /// in registers: out of line it took 12 ns a point at random parameters, inline 8.
-    #[inline(always)]
+    #[inline]
     fn point(&self, t: f64) -> Point<D> {
         let t = self.normalise(t, Side::Right);
         let span = self.span_of(t, Side::Right);
         match &self.spans {
             Some(b) => b.point(span, t),
-            None => self.point_by_de_boor(span, t),
+            None => {
+                let mut out = [Point::<D>::zeros()];
+                self.eval_on(span, t, &mut out);
+                out[0]
+            }
         }
     }
 
