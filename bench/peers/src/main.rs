@@ -141,35 +141,35 @@ fn main() {
         let c = BSplineCurve::new(3, k.clone(), (0..N).map(|i| Point::<3>::from(control(i))).collect()).unwrap();
         let mut out = vec![Point::<3>::zeros(); 2 * M];
         rows.push(("splinekit".into(), "point, random order".into(), 0.0, 0.0));
-        let r = time(&mut || random.iter().map(|&t| c.point(t)[1]).sum());
+        let r = time(&mut || random.iter().map(|&t| c.point(t).sum()).sum());
         rows.last_mut().unwrap().2 = r.0;
         rows.last_mut().unwrap().3 = r.1;
-        let r = time_batch(M, &mut out[..M], &mut |o| c.eval_many(&sorted, 0, o), &|o| o.iter().map(|p| p[1]).sum());
+        let r = time_batch(M, &mut out[..M], &mut |o| c.eval_many(&sorted, 0, o), &|o| o.iter().map(|p| p.sum()).sum());
         rows.push(("splinekit".into(), "point, sorted batch".into(), r.0, r.1));
         let r = time_batch(M, &mut out, &mut |o| c.eval_many(&sorted, 1, o), &|o| {
             o.iter().skip(1).step_by(2).map(|p| p[1]).sum()
         });
         rows.push(("splinekit".into(), "first derivative, sorted".into(), r.0, r.1));
-        let r = time_batch(M, &mut out[..M], &mut |o| c.eval_many(&random, 0, o), &|o| o.iter().map(|p| p[1]).sum());
+        let r = time_batch(M, &mut out[..M], &mut |o| c.eval_many(&random, 0, o), &|o| o.iter().map(|p| p.sum()).sum());
         rows.push(("splinekit".into(), "point, random order (batch)".into(), r.0, r.1));
         {
             let r =
                 time_batch(M, &mut out[..M], &mut |o| splinekit::curve::parallel::eval_many(&c, &sorted, 0, o), &|o| {
-                    o.iter().map(|p| p[1]).sum()
+                    o.iter().map(|p| p.sum()).sum()
                 });
             rows.push(("splinekit (parallel)".into(), "point, sorted batch".into(), r.0, r.1));
             let r =
                 time_batch(M, &mut out[..M], &mut |o| splinekit::curve::parallel::eval_many(&c, &random, 0, o), &|o| {
-                    o.iter().map(|p| p[1]).sum()
+                    o.iter().map(|p| p.sum()).sum()
                 });
             rows.push(("splinekit (parallel)".into(), "point, random order (batch)".into(), r.0, r.1));
         }
         let large = BSplineCurve::new(3, k_large.clone(), (0..N_LARGE).map(|i| Point::<3>::from(control(i))).collect())
             .unwrap();
-        let r = time_per(M_LARGE, &mut || random_large.iter().map(|&t| large.point(t)[1]).sum());
+        let r = time_per(M_LARGE, &mut || random_large.iter().map(|&t| large.point(t).sum()).sum());
         rows.push(("splinekit".into(), "point, random, 10^5 cp".into(), r.0, r.1));
         let r = time_batch(M_LARGE, &mut out[..M_LARGE], &mut |o| large.eval_many(random_large, 0, o), &|o| {
-            o.iter().map(|p| p[1]).sum()
+            o.iter().map(|p| p.sum()).sum()
         });
         rows.push(("splinekit".into(), "point, random, 10^5 cp (batch)".into(), r.0, r.1));
 
@@ -231,9 +231,9 @@ fn main() {
             })
             .collect();
         let c = NurbsCurve3D::<f64>::try_new(3, pts, k.clone()).unwrap();
-        let r = time(&mut || random.iter().map(|&t| c.point_at(t).y).sum());
+        let r = time(&mut || random.iter().map(|&t| c.point_at(t).coords.sum()).sum());
         rows.push(("curvo 0.3".into(), "point, random order".into(), r.0, r.1));
-        let r = time(&mut || sorted.iter().map(|&t| c.point_at(t).y).sum());
+        let r = time(&mut || sorted.iter().map(|&t| c.point_at(t).coords.sum()).sum());
         rows.push(("curvo 0.3".into(), "point, sorted batch".into(), r.0, r.1));
         let r = time(&mut || sorted.iter().map(|&t| c.rational_derivatives(t, 1)[1].y).sum());
         rows.push(("curvo 0.3".into(), "first derivative, sorted".into(), r.0, r.1));
@@ -244,7 +244,7 @@ fn main() {
             })
             .collect();
         let large = NurbsCurve3D::<f64>::try_new(3, pts, k_large.clone()).unwrap();
-        let r = time_per(M_LARGE, &mut || random_large.iter().map(|&t| large.point_at(t).y).sum());
+        let r = time_per(M_LARGE, &mut || random_large.iter().map(|&t| large.point_at(t).coords.sum()).sum());
         rows.push(("curvo 0.3".into(), "point, random, 10^5 cp".into(), r.0, r.1));
     }
 
@@ -252,15 +252,39 @@ fn main() {
     {
         use truck_geometry::prelude::*;
         let c = BSplineCurve::new(KnotVec::from(k.clone()), (0..N).map(|i| Point3::from(control(i))).collect());
-        let r = time(&mut || random.iter().map(|&t| c.subs(t).y).sum());
+        let r = time(&mut || {
+            random
+                .iter()
+                .map(|&t| {
+                    let p = c.subs(t);
+                    p.x + p.y + p.z
+                })
+                .sum()
+        });
         rows.push(("truck-geometry 0.5".into(), "point, random order".into(), r.0, r.1));
-        let r = time(&mut || sorted.iter().map(|&t| c.subs(t).y).sum());
+        let r = time(&mut || {
+            sorted
+                .iter()
+                .map(|&t| {
+                    let p = c.subs(t);
+                    p.x + p.y + p.z
+                })
+                .sum()
+        });
         rows.push(("truck-geometry 0.5".into(), "point, sorted batch".into(), r.0, r.1));
         let r = time(&mut || sorted.iter().map(|&t| c.der(t).y).sum());
         rows.push(("truck-geometry 0.5".into(), "first derivative, sorted".into(), r.0, r.1));
         let large =
             BSplineCurve::new(KnotVec::from(k_large.clone()), (0..N_LARGE).map(|i| Point3::from(control(i))).collect());
-        let r = time_per(M_LARGE, &mut || random_large.iter().map(|&t| large.subs(t).y).sum());
+        let r = time_per(M_LARGE, &mut || {
+            random_large
+                .iter()
+                .map(|&t| {
+                    let p = large.subs(t);
+                    p.x + p.y + p.z
+                })
+                .sum()
+        });
         rows.push(("truck-geometry 0.5".into(), "point, random, 10^5 cp".into(), r.0, r.1));
     }
 

@@ -93,7 +93,7 @@ fn main() {
     }
     if run("random points") {
         // The peers' workload: point(t) one parameter at a time, random order, summed.
-        let ns = best(repeats, M, &mut || random.iter().map(|&t| c.point(t)[1]).sum());
+        let ns = best(repeats, M, &mut || random.iter().map(|&t| c.point(t).sum()).sum());
         report("random points, point(t)", ns, floor(repeats, M, 1));
     }
     if run("sorted first derivative") {
