@@ -1,5 +1,7 @@
 //! Evaluation of a cubic 3-D B-spline with 1000 control points: single points at random
-//! parameters, and sorted batches of 10⁶ parameters with 0, 1 and 2 derivatives.
+//! parameters (and on a curve of 100 control points, whose spans sit in L1; its second
+//! caller of `point` also shows that `point` stays inlined), and sorted batches of 10⁶
+//! parameters with 0, 1 and 2 derivatives.
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use splinekit::Point;
@@ -39,6 +41,16 @@ fn bench(c: &mut Criterion) {
             let mut acc = Point::<3>::zeros();
             for &t in &random {
                 acc += curve.point(black_box(t));
+            }
+            acc
+        })
+    });
+    let small = self::curve(100);
+    g.bench_function("point at random parameters, 100 cp", |b| {
+        b.iter(|| {
+            let mut acc = Point::<3>::zeros();
+            for &t in &random {
+                acc += small.point(black_box(t));
             }
             acc
         })

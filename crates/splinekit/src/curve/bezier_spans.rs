@@ -108,7 +108,7 @@ pub(crate) use by_width;
 impl<T: Coefficient> BezierSpans<T> {
     /// The point c(t) on span `span` (which contains t): the Bernstein sum alone, without
     /// the derivative machinery of [`BezierSpans::eval`] (the same value as its `out[0]`).
-    #[inline]
+    #[inline(always)]
     pub fn point(&self, span: usize, t: f64) -> T {
         let j = span - self.first_span;
         by_width!(self.degree, W => self.point_fixed::<W>(j, t))
