@@ -143,7 +143,8 @@ impl<const D: usize> BSplineCurve<D> {
     /// Evaluates on a known span: Bézier form when available, else the triangular kernel.
     /// Kept out of line: inlined into a caller's loop (the seven widths' derivative kernels
     /// with their runtime output count), a point with two derivatives took 29 ns at random
-    /// parameters instead of 26.5.
+    /// parameters instead of 22; and [`Curve::point`], which calls it for the degrees
+    /// without Bézier spans (0 and above 7), stays small enough to inline.
     #[inline(never)]
     fn eval_on(&self, span: usize, t: f64, out: &mut [Point<D>]) {
         match &self.spans {
@@ -180,17 +181,6 @@ impl<const D: usize> BSplineCurve<D> {
     #[inline]
     pub(crate) fn span_of(&self, t: f64, side: Side) -> usize {
         self.axis.span_side(t, side)
-    }
-
-    /// c(t) on `span` by the triangular Cox–de Boor kernel: [`Curve::point`] of the degrees
-    /// without Bézier spans (0 and above 7), out of line so that `point` stays small enough
-    /// to inline into a caller's loop.
-    #[inline(never)]
-    fn point_by_de_boor(&self, span: usize, t: f64) -> Point<D> {
-        let mut out = [Point::<D>::zeros()];
-        let (knots, pts) = self.evaluation_data();
-        eval_on_span(knots, self.axis.reciprocals(), pts, self.degree(), span, t, &mut out);
-        out[0]
     }
 
     /// The batch by the Bézier spans into any [`Slot`]s (points, or memory not yet
@@ -256,7 +246,11 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
         let span = self.span_of(t, Side::Right);
         match &self.spans {
             Some(b) => b.point(span, t),
-            None => self.point_by_de_boor(span, t),
+            None => {
+                let mut out = [Point::<D>::zeros()];
+                self.eval_on(span, t, &mut out);
+                out[0]
+            }
         }
     }
 
