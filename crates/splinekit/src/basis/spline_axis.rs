@@ -33,7 +33,8 @@ pub struct SplineAxis {
 struct SpanGuide {
     start: f64,
     buckets_per_unit: f64,
-    last_bucket: usize,
+    /// B − 1, the last bucket, as a float (the guess clamps to it before converting).
+    last_bucket: f64,
     uniform: bool,
     /// The span of the start of each bucket; empty for uniform knots (and for more than
     /// 2³² spans, where the arithmetic guess p + b is only a starting point).
@@ -50,7 +51,7 @@ impl SpanGuide {
         let mut guide = SpanGuide {
             start: a,
             buckets_per_unit: 1.0 / h,
-            last_bucket: buckets - 1,
+            last_bucket: (buckets - 1) as f64,
             uniform: false,
             table: Vec::new(),
         };
@@ -71,8 +72,13 @@ impl SpanGuide {
     /// The guessed span of t (any t; NaN guesses the first span).
     #[inline(always)]
     fn guess(&self, t: f64, p: usize) -> usize {
-        // `as usize` saturates: NaN and negative values give 0.
-        let k = ((t - self.start) * self.buckets_per_unit).min(self.last_bucket as f64) as usize;
+        // The bucket clamped into [0, B − 1] by comparisons, which compile to one `max` and
+        // one `min` instruction each (`f64::max`/`min` add NaN tests); NaN gives 0. The
+        // conversion then only truncates.
+        let x = (t - self.start) * self.buckets_per_unit;
+        let x = if x > 0.0 { x } else { 0.0 };
+        let x = if x < self.last_bucket { x } else { self.last_bucket };
+        let k = x as i64 as usize;
         match self.table.get(k) {
             Some(&s) => s as usize,
             None => p + k,
@@ -179,10 +185,32 @@ impl SplineAxis {
     /// t_s < t ≤ t_{s+1} (`Left`). Guessed by arithmetic (uniform knots) or a bucket table,
     /// then verified against the knots by galloping search: O(1) for evenly spread knots,
     /// O(log N) at worst.
-    #[inline]
+    ///
+    /// Always inlined, with the check that the guess is already the span (two knot
+    /// comparisons, the common case); the search behind a wrong guess is out of line. A
+    /// span whose ends bracket t is the answer, and non-empty, so the check returns what the
+    /// search would.
+    #[inline(always)]
     pub fn span_side(&self, t: f64, side: Side) -> usize {
         let (p, n) = (self.degree, self.eval_count());
-        advance_span_side(&self.eval_knots, p, n, self.guide.guess(t, p), t, side)
+        let guess = self.guide.guess(t, p);
+        if guess >= p && guess < n {
+            if let (Some(&a), Some(&b)) = (self.eval_knots.get(guess), self.eval_knots.get(guess + 1)) {
+                let inside = match side {
+                    Side::Right => a <= t && t < b,
+                    Side::Left => a < t && t <= b,
+                };
+                if inside {
+                    return guess;
+                }
+            }
+        }
+        self.searched_span(guess, t, side)
+    }
+    /// [`SplineAxis::span_side`] when the guess is not the span: galloping from it.
+    #[inline(never)]
+    fn searched_span(&self, guess: usize, t: f64, side: Side) -> usize {
+        advance_span_side(&self.eval_knots, self.degree, self.eval_count(), guess, t, side)
     }
     /// Whether the knots of the domain are uniform (each within a quarter span of t_p + i·h),
     /// detected once at construction: spans are then guessed by arithmetic.
