@@ -250,6 +250,10 @@ mod tests {
         let clustered: Vec<f64> = (0..60).map(|i| if i < 50 { i as f64 * 1e-9 } else { (i - 49) as f64 }).collect();
         cases.push((2, clustered, 57, false));
         cases.push((2, vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 3.0, 3.0, 3.0, 4.0, 4.0, 4.0], 9, false));
+        // Unclamped, with the domain's end knots repeated inside it (t_p = t_{p+1},
+        // t_{n−1} = t_n): empty first and last spans, where the inline check of the guess
+        // must leave the answer to the search.
+        cases.push((2, vec![0.0, 1.0, 2.0, 2.0, 3.0, 4.0, 4.0, 5.0, 6.0], 6, false));
         let gaps = [1.0, 5.0, 0.5, 2.0, 9.0, 1.0, 0.25, 3.0, 1.5];
         let periodic: Vec<f64> = (0..12).scan(0.0, |x, i| Some(std::mem::replace(x, *x + gaps[i % 9]))).collect();
         cases.push((2, periodic, 9, true));
