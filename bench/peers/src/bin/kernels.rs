@@ -96,6 +96,14 @@ fn main() {
         let ns = best(repeats, M, &mut || random.iter().map(|&t| c.point(t).sum()).sum());
         report("random points, point(t)", ns, floor(repeats, M, 1));
     }
+    if run("random batch") {
+        // The same parameters in one call: at least as fast as the loop of point(t).
+        let ns = best(repeats, M, &mut || {
+            c.eval_many(&random, 0, &mut out[..M]);
+            out[M / 3][1]
+        });
+        report("random batch, eval_many", ns, floor(repeats, M, 1));
+    }
     if run("sorted first derivative") {
         let ns = best(repeats, M, &mut || {
             c.eval_many(&sorted, 1, &mut out[..2 * M]);

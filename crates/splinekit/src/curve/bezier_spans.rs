@@ -240,8 +240,9 @@ impl<const D: usize> BezierSpans<Point<D>> {
     /// Bernstein weights and sums as arrays over the lanes, which vectorise), a block from
     /// the cursor's span into the next twice so (once with each span, every lane keeping
     /// its own span's values: cheaper than four single evaluations when a span holds
-    /// only a few parameters), any other block one parameter at a time with the cursor,
-    /// as [`BezierSpans::eval_many`] does.
+    /// only a few parameters), a block in no order (random parameters) lane by lane, each
+    /// in its own span read in place, any other block one parameter at a time with the
+    /// cursor, as [`BezierSpans::eval_many`] does.
     /// Every value is computed by the operations of `eval_fixed` (`bernstein_sum` for
     /// points) in their order, so the result does not depend on the blocking.
     /// (Non-temporal stores for large outputs were tried: slower here than ordinary ones.)
@@ -262,6 +263,24 @@ impl<const D: usize> BezierSpans<Point<D>> {
         let mut blocks = params.chunks_exact(LANES).zip(out.chunks_exact_mut(LANES * K));
         for (raw, os) in &mut blocks {
             let ts: [f64; LANES] = std::array::from_fn(|l| map(raw[l]));
+            // Parameters in no order (a random batch): each lane's span located and read in
+            // place, the cursor left at the last lane's span (a reversed batch runs on from
+            // there). Both tests are computed without a branch per lane, so that random
+            // parameters do not make the processor mispredict them; they cost a block in
+            // the cursor's span two branches it predicts.
+            let inside =
+                ts.iter().fold(true, |all, &t| all & (t >= at.start) & ((t < at.end) | (at.span == last_span)));
+            let ordered = ts.windows(2).fold(true, |all, w| all & (w[0] <= w[1]));
+            if !inside && !ordered {
+                let mut span = at.span;
+                for (&t, o) in ts.iter().zip(os.chunks_exact_mut(K)) {
+                    span = locate(span, t);
+                    let (b, start, inv_h) = self.span_at::<W>(span - self.first_span);
+                    put_outputs::<W, K, D, O>(b, start, inv_h, t, o);
+                }
+                at.load(self, span);
+                continue;
+            }
             // A sorted batch whose block starts just past the cursor's span: the next span.
             if ts[0] >= at.end && at.span < last_span {
                 let (start, end, _) = self.frames[at.span + 1 - self.first_span];
@@ -325,12 +344,26 @@ impl<const D: usize> BezierSpans<Point<D>> {
             None => (&at.points, at.start, at.inv_h),
             Some(j) => self.span_at::<W>(j),
         };
-        let u = (t - start) * inv_h;
-        if K == 1 {
-            o[0].put(bernstein_sum::<W, Point<D>>(b, u));
-        } else {
-            eval_fixed::<W, Point<D>, O>(b, u, inv_h, o);
-        }
+        put_outputs::<W, K, D, O>(b, start, inv_h, t, o);
+    }
+}
+
+/// The K outputs at `t` of the span with Bézier points `b`, start and 1/h: the point alone
+/// by [`bernstein_sum`], with derivatives by `eval_fixed` (one home for a batch's single
+/// evaluation).
+#[inline(always)]
+fn put_outputs<const W: usize, const K: usize, const D: usize, O: Slot<Point<D>>>(
+    b: &[Point<D>; W],
+    start: f64,
+    inv_h: f64,
+    t: f64,
+    o: &mut [O],
+) {
+    let u = (t - start) * inv_h;
+    if K == 1 {
+        o[0].put(bernstein_sum::<W, Point<D>>(b, u));
+    } else {
+        eval_fixed::<W, Point<D>, O>(b, u, inv_h, o);
     }
 }
 
