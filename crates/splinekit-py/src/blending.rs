@@ -11,6 +11,8 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use splinekit::Point;
 use splinekit_scene::budget::{Cost, F64, ShapeCost};
+use splinekit_scene::curves::BlendingSplineDoc;
+use splinekit_scene::surfaces::BlendingSplineSurfaceDoc;
 use splinekit_scene::transforms::TransformDoc;
 
 use crate::budget;
@@ -57,57 +59,74 @@ fn local_piece<'py>(
     Ok(d)
 }
 
-/// The local curves of a blending-spline document: support, origin and `samples` points
-/// of each over its support.
-pub(crate) fn local_curves<'py, const D: usize>(
-    py: Python<'py>,
-    doc: &splinekit_scene::curves::BlendingSplineDoc,
-    cost: &ShapeCost,
-    samples: usize,
-) -> PyResult<Bound<'py, PyList>> {
-    let c = doc.curve::<D>().or_value_error()?;
-    check_pieces::<D>(cost, c.local_count(), samples)?;
-    let list = PyList::empty(py);
-    let mut v = [Point::<D>::zeros(); 1];
-    for k in 0..c.local_count() {
-        let support = c.local_support(k);
-        let mut points = Vec::with_capacity(samples * D);
-        for i in 0..samples {
-            c.eval_local(k, support.lerp(i as f64 / (samples - 1) as f64), &mut v);
-            points.extend(v[0].iter());
-        }
-        let origin = c.origin(k);
-        list.append(local_piece(py, k, (support.start, support.end), origin.as_slice(), points, vec![samples, D])?)?;
-    }
-    Ok(list)
+/// A `local_pieces` call: the Python session, the cost of the shape (for the budget) and
+/// the samples per piece, or per direction of a patch.
+pub(crate) struct PieceSampling<'py, 'c> {
+    /// The session the dicts and arrays are made in.
+    pub py: Python<'py>,
+    /// The shape's cost, for the budget check of the samples.
+    pub cost: &'c ShapeCost,
+    /// Samples per local curve, or per direction of a local patch (checked by
+    /// [`check_samples`]).
+    pub samples: usize,
 }
 
-/// The local patches of a blending-spline surface document: support, origin and a
-/// `samples` × `samples` grid of points of each over its support.
-pub(crate) fn local_patches<'py, const D: usize>(
-    py: Python<'py>,
-    doc: &splinekit_scene::surfaces::BlendingSplineSurfaceDoc,
-    cost: &ShapeCost,
-    samples: usize,
-) -> PyResult<Bound<'py, PyList>> {
-    let s = doc.surface::<D>().or_value_error()?;
-    let (nu, nv) = s.local_count();
-    check_pieces::<D>(cost, nu * nv, samples * samples)?;
-    let list = PyList::empty(py);
-    let mut v = [Point::<D>::zeros(); 1];
-    let at = |i: usize| i as f64 / (samples - 1) as f64;
-    for (k, l) in (0..nu).flat_map(|k| (0..nv).map(move |l| (k, l))) {
-        let rect = s.local_support(k, l);
-        let mut points = Vec::with_capacity(samples * samples * D);
-        for (i, j) in (0..samples).flat_map(|i| (0..samples).map(move |j| (i, j))) {
-            s.eval_local((k, l), (rect.u.lerp(at(i)), rect.v.lerp(at(j))), 0, 0, &mut v);
-            points.extend(v[0].iter());
-        }
-        let support = ((rect.u.start, rect.u.end), (rect.v.start, rect.v.end));
-        let origin = s.origin(k, l);
-        list.append(local_piece(py, (k, l), support, origin.as_slice(), points, vec![samples, samples, D])?)?;
+impl<'py> PieceSampling<'py, '_> {
+    /// The local curves of a blending-spline document: support, origin and `samples` points
+    /// of each over its support.
+    pub(crate) fn local_curves<const D: usize>(&self, doc: &BlendingSplineDoc) -> PyResult<Bound<'py, PyList>> {
+        let c = doc.curve::<D>().or_value_error()?;
+        let samples = self.samples;
+        let mut v = [Point::<D>::zeros(); 1];
+        self.pieces(c.local_count(), vec![samples, D], |k, points| {
+            let support = c.local_support(k);
+            for i in 0..samples {
+                c.eval_local(k, support.lerp(i as f64 / (samples - 1) as f64), &mut v);
+                points.extend(v[0].iter());
+            }
+            (k, (support.start, support.end), c.origin(k))
+        })
     }
-    Ok(list)
+
+    /// The local patches of a blending-spline surface document: support, origin and a
+    /// `samples` × `samples` grid of points of each over its support.
+    pub(crate) fn local_patches<const D: usize>(&self, doc: &BlendingSplineSurfaceDoc) -> PyResult<Bound<'py, PyList>> {
+        let s = doc.surface::<D>().or_value_error()?;
+        let (nu, nv) = s.local_count();
+        let samples = self.samples;
+        let mut v = [Point::<D>::zeros(); 1];
+        let at = |i: usize| i as f64 / (samples - 1) as f64;
+        self.pieces(nu * nv, vec![samples, samples, D], |piece, points| {
+            let (k, l) = (piece / nv, piece % nv);
+            let rect = s.local_support(k, l);
+            for (i, j) in (0..samples).flat_map(|i| (0..samples).map(move |j| (i, j))) {
+                s.eval_local((k, l), (rect.u.lerp(at(i)), rect.v.lerp(at(j))), 0, 0, &mut v);
+                points.extend(v[0].iter());
+            }
+            ((k, l), ((rect.u.start, rect.u.end), (rect.v.start, rect.v.end)), s.origin(k, l))
+        })
+    }
+
+    /// The list of `count` local pieces, each of the points `shape` gives (the last entry
+    /// D): refused over the budget before any is sampled, then piece i's dict from
+    /// `sample(i, points)`, which writes its points' coordinates and returns its index,
+    /// support and origin.
+    fn pieces<const D: usize, K: IntoPyObject<'py>, S: IntoPyObject<'py>>(
+        &self,
+        count: usize,
+        shape: Vec<usize>,
+        mut sample: impl FnMut(usize, &mut Vec<f64>) -> (K, S, Point<D>),
+    ) -> PyResult<Bound<'py, PyList>> {
+        let per_piece: usize = shape[..shape.len() - 1].iter().product();
+        check_pieces::<D>(self.cost, count, per_piece)?;
+        let list = PyList::empty(self.py);
+        for i in 0..count {
+            let mut points = Vec::with_capacity(per_piece * D);
+            let (index, support, origin) = sample(i, &mut points);
+            list.append(local_piece(self.py, index, support, origin.as_slice(), points, shape.clone())?)?;
+        }
+        Ok(list)
+    }
 }
 
 /// Refuses `pieces` local pieces of `points` sampled points each in `D` coordinates over

@@ -88,7 +88,7 @@ macro_rules! shape_methods {
                 splinekit_scene::with_dimension!(
                     self.dimension(),
                     "control_points",
-                    D => $crate::blending::$pieces::<D>(py, d, &self.doc.cost(), samples),
+                    D => $crate::blending::PieceSampling { py, cost: &self.doc.cost(), samples }.$pieces::<D>(d),
                     or $crate::errors::value_error
                 )
             }

@@ -6,7 +6,7 @@ use clap::Args;
 use serde_json::{Value, json};
 use splinekit::Point;
 use splinekit::curve::Curve;
-use splinekit::query::{CurveProjector, SurfaceProjector};
+use splinekit::query::{CurveProjector, Nearest, NearestOnSurface, SurfaceProjector};
 use splinekit::surface::Surface;
 use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument, Surfaces};
 
@@ -57,22 +57,21 @@ impl Query {
     }
 
     /// The answer for every query point: with --all the list of its local minima of the
-    /// distance (`minima`), else its nearest point (`nearest`), each written by `entry`;
-    /// wrapped as [`Query::wrap`] says.
-    fn answer<const D: usize, N>(
+    /// distance (`minima`), else its nearest point (`nearest`), each written as its
+    /// [`Entry`]; wrapped as [`Query::wrap`] says.
+    fn answer<const D: usize, N: Entry>(
         &self,
         single: bool,
         nearest: impl Fn(&Point<D>, f64) -> Result<N>,
         minima: impl Fn(&Point<D>, f64) -> Result<Vec<N>>,
-        entry: impl Fn(&N) -> Value,
     ) -> Result<Value> {
         let mut entries = Vec::with_capacity(self.points.len());
         for i in 0..self.points.len() {
             let q = self.point::<D>(i)?;
             entries.push(if self.all {
-                Value::Array(minima(&q, self.accuracy)?.iter().map(&entry).collect())
+                Value::Array(minima(&q, self.accuracy)?.iter().map(Entry::entry).collect())
             } else {
-                entry(&nearest(&q, self.accuracy)?)
+                nearest(&q, self.accuracy)?.entry()
             });
         }
         Ok(self.wrap(entries, single))
@@ -94,35 +93,41 @@ fn coords<const D: usize>(p: &Point<D>) -> Vec<f64> {
     p.iter().copied().collect()
 }
 
-struct ProjectCurve<'a>(&'a Query, bool);
+/// A nearest point or local minimum as the answer writes it: its parameters, the point
+/// and the distance.
+trait Entry {
+    fn entry(&self) -> Value;
+}
 
-impl DimensionVisitor<Curves> for ProjectCurve<'_> {
-    type Output = Result<Value>;
-    fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Result<Value> {
-        let projector = CurveProjector::new(curve);
-        self.0.answer(
-            self.1,
-            |q, accuracy| Ok(projector.nearest(q, accuracy)?),
-            |q, accuracy| Ok(projector.local_minima(q, accuracy)?),
-            |n: &splinekit::query::Nearest<D>| json!({"t": n.t, "point": coords(&n.point), "distance": n.distance}),
-        )
+impl<const D: usize> Entry for Nearest<D> {
+    fn entry(&self) -> Value {
+        json!({"t": self.t, "point": coords(&self.point), "distance": self.distance})
     }
 }
 
-struct ProjectSurface<'a>(&'a Query, bool);
+impl<const D: usize> Entry for NearestOnSurface<D> {
+    fn entry(&self) -> Value {
+        json!({"u": self.u, "v": self.v, "point": coords(&self.point), "distance": self.distance})
+    }
+}
 
-impl DimensionVisitor<Surfaces> for ProjectSurface<'_> {
+/// Answers the query (the flag: a single `--point`) on a curve or on a surface, through
+/// the shape's projector.
+struct Project<'a>(&'a Query, bool);
+
+impl DimensionVisitor<Curves> for Project<'_> {
+    type Output = Result<Value>;
+    fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Result<Value> {
+        let projector = CurveProjector::new(curve);
+        self.0.answer(self.1, |q, a| Ok(projector.nearest(q, a)?), |q, a| Ok(projector.local_minima(q, a)?))
+    }
+}
+
+impl DimensionVisitor<Surfaces> for Project<'_> {
     type Output = Result<Value>;
     fn visit<const D: usize>(self, surface: &dyn Surface<D>) -> Result<Value> {
         let projector = SurfaceProjector::new(surface);
-        self.0.answer(
-            self.1,
-            |q, accuracy| Ok(projector.nearest(q, accuracy)?),
-            |q, accuracy| Ok(projector.local_minima(q, accuracy)?),
-            |n: &splinekit::query::NearestOnSurface<D>| {
-                json!({"u": n.u, "v": n.v, "point": coords(&n.point), "distance": n.distance})
-            },
-        )
+        self.0.answer(self.1, |q, a| Ok(projector.nearest(q, a)?), |q, a| Ok(projector.local_minima(q, a)?))
     }
 }
 
@@ -143,8 +148,8 @@ pub fn run(args: &ProjectArgs) -> Result<()> {
     let query = Query { points, all: args.all, accuracy };
     // A scene is answered object by object: `{"objects": [ANSWER, …]}`.
     let value = read_shapes(&args.shape)?.answer_each(|doc| match doc {
-        ShapeDocument::Curve(c) => c.build()?.visit(ProjectCurve(&query, single)),
-        ShapeDocument::Surface(s) => s.build()?.visit(ProjectSurface(&query, single)),
+        ShapeDocument::Curve(c) => c.build()?.visit(Project(&query, single)),
+        ShapeDocument::Surface(s) => s.build()?.visit(Project(&query, single)),
     })?;
     check_finite(&value, "result")?;
     write_json(&value, args.output.as_deref())
