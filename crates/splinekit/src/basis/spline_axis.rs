@@ -73,12 +73,13 @@ impl SpanGuide {
     #[inline(always)]
     fn guess(&self, t: f64, p: usize) -> usize {
         // The bucket clamped into [0, B − 1] by comparisons, which compile to one `max` and
-        // one `min` instruction each (`f64::max`/`min` add NaN tests); NaN gives 0. The
-        // conversion then only truncates.
+        // one `min` instruction each (`f64::max`/`min` add NaN tests); NaN gives 0.
         let x = (t - self.start) * self.buckets_per_unit;
         let x = if x > 0.0 { x } else { 0.0 };
         let x = if x < self.last_bucket { x } else { self.last_bucket };
-        let k = x as i64 as usize;
+        // SAFETY: x is finite and in [0, B − 1], and B ≤ the number of knots < 2⁶³, so x
+        // truncated fits an i64. (`as` would add range and NaN branches to every lookup.)
+        let k = unsafe { x.to_int_unchecked::<i64>() } as usize;
         match self.table.get(k) {
             Some(&s) => s as usize,
             None => p + k,
