@@ -266,6 +266,8 @@ mod tests {
             ts.extend((0..2000).map(|i| d.start + (d.end - d.start) * ((i * 7919) % 2000) as f64 / 1999.0));
             ts.extend(ek[p..=ne].iter().map(|&x| x.next_up().min(d.end)));
             ts.extend(ek[p..=ne].iter().map(|&x| x.next_down().max(d.start)));
+            // Outside the domain and not numbers: the guess stays a valid index.
+            ts.extend([f64::NAN, f64::NEG_INFINITY, f64::INFINITY, d.start - 1.0, d.end + 1.0, -1e300, 1e300]);
             for &t in &ts {
                 for side in [Side::Right, Side::Left] {
                     assert_eq!(axis.span_side(t, side), find_span(ek, p, ne, t, side), "n {n} t {t} {side:?}");
