@@ -263,15 +263,20 @@ impl<const D: usize> BezierSpans<Point<D>> {
         let mut blocks = params.chunks_exact(LANES).zip(out.chunks_exact_mut(LANES * K));
         for (raw, os) in &mut blocks {
             let ts: [f64; LANES] = std::array::from_fn(|l| map(raw[l]));
+            // Every lane in the cursor's span (most blocks of a sorted batch): in step. The
+            // test, and the order test below, are computed without a branch per lane, so
+            // that random parameters do not make the processor mispredict them.
+            let all_in = |at: &SpanCursor<W, Point<D>>| {
+                ts.iter().fold(true, |all, &t| all & (t >= at.start) & ((t < at.end) | (at.span == last_span)))
+            };
+            if all_in(&at) {
+                bernstein_lanes::<W, K, D, O>(&at.points, at.start, at.inv_h, &ts, os);
+                continue;
+            }
             // Parameters in no order (a random batch): each lane's span located and read in
             // place, the cursor left at the last lane's span (a reversed batch runs on from
-            // there). Both tests are computed without a branch per lane, so that random
-            // parameters do not make the processor mispredict them; they cost a block in
-            // the cursor's span two branches it predicts.
-            let inside =
-                ts.iter().fold(true, |all, &t| all & (t >= at.start) & ((t < at.end) | (at.span == last_span)));
-            let ordered = ts.windows(2).fold(true, |all, w| all & (w[0] <= w[1]));
-            if !inside && !ordered {
+            // there).
+            if !ts.windows(2).fold(true, |all, w| all & (w[0] <= w[1])) {
                 let mut span = at.span;
                 for (&t, o) in ts.iter().zip(os.chunks_exact_mut(K)) {
                     span = locate(span, t);
@@ -281,16 +286,16 @@ impl<const D: usize> BezierSpans<Point<D>> {
                 at.load(self, span);
                 continue;
             }
-            // A sorted batch whose block starts just past the cursor's span: the next span.
+            // A sorted block that starts just past the cursor's span: the next span.
             if ts[0] >= at.end && at.span < last_span {
                 let (start, end, _) = self.frames[at.span + 1 - self.first_span];
                 if in_span(ts[0], start, end, at.span + 1) {
                     at.load(self, at.span + 1);
+                    if all_in(&at) {
+                        bernstein_lanes::<W, K, D, O>(&at.points, at.start, at.inv_h, &ts, os);
+                        continue;
+                    }
                 }
-            }
-            if ts.iter().all(|&t| in_span(t, at.start, at.end, at.span)) {
-                bernstein_lanes::<W, K, D, O>(&at.points, at.start, at.inv_h, &ts, os);
-                continue;
             }
             // A sorted block running from the cursor's span into the next (a dense batch
             // crosses a knot in about (LANES − 1)/(parameters a span) of its blocks):
