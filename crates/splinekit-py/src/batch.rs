@@ -8,11 +8,10 @@ use pyo3::prelude::*;
 use pyo3::types::PyList;
 use rayon::prelude::*;
 
-use crate::arrays::Numbers;
 use crate::curve::{EvalTask, PyCurve};
 use crate::curve_kinds::wrap;
 use crate::errors::value_error;
-use crate::fitting::{Choice, FitRequest, fitted};
+use crate::fitting::{FitRequest, fit_function, fitted};
 use crate::row_writer::{RowWriter, unfilled_rows};
 use crate::surface::PySurface;
 
@@ -38,40 +37,28 @@ fn item_error(field: &str, i: usize, e: PyErr, py: Python<'_>) -> PyErr {
     }
 }
 
-/// Least-squares fits of many point sets, ``[fit(points, …) for points in point_sets]``
-/// computed in parallel with the GIL released: the same keyword arguments as ``fit``
-/// (applied to every set; an array of ``params``, ``knots`` or ``weights`` is shared by
-/// all), and ``threads`` threads (default: one per core). Each fit is the single call's,
-/// so the curves and reports are bit for bit the loop's. A bad set raises the single
-/// call's ``ValueError`` with its index first (``point_sets[3]: points: …``).
-#[pyfunction]
-#[pyo3(
-    signature = (point_sets, degree, n_control_points = None, params = Choice::Name("chord".into()), knots = Choice::Name("averaged".into()), closed = false, weights = None, fix_ends = false, threads = None),
-    text_signature = "(point_sets, degree, n_control_points=None, params='chord', knots='averaged', closed=False, weights=None, fix_ends=False, threads=None)"
-)]
-#[allow(clippy::too_many_arguments)]
-pub fn fit_many<'py>(
+fit_function! {
+    /// Least-squares fits of many point sets, ``[fit(points, …) for points in point_sets]``
+    /// computed in parallel with the GIL released: the same keyword arguments as ``fit``
+    /// (applied to every set; an array of ``params``, ``knots`` or ``weights`` is shared by
+    /// all), and ``threads`` threads (default: one per core). Each fit is the single call's,
+    /// so the curves and reports are bit for bit the loop's. A bad set raises the single
+    /// call's ``ValueError`` with its index first (``point_sets[3]: points: …``).
+    fn fit_many(point_sets, threads: Option<usize> = None) -> Bound<'py, PyList> = fit_sets;
+    text_signature = "(point_sets, degree, n_control_points=None, params='chord', knots='averaged', closed=False, weights=None, fix_ends=False, threads=None)";
+}
+
+/// `fit_many`'s work once its keywords are read: every set read and checked with the GIL
+/// held, the fits on the pool without it, and the `BSpline`s in order.
+fn fit_sets<'py>(
     py: Python<'py>,
     point_sets: &Bound<'py, PyAny>,
-    degree: usize,
-    n_control_points: Option<usize>,
-    params: Choice<'py>,
-    knots: Choice<'py>,
-    closed: bool,
-    weights: Option<&Bound<'py, PyAny>>,
-    fix_ends: bool,
+    request: FitRequest,
     threads: Option<usize>,
 ) -> PyResult<Bound<'py, PyList>> {
-    let request = FitRequest::new(degree, n_control_points, params, knots, closed, weights, fix_ends)?;
     let mut sets = Vec::new();
     for (i, ob) in point_sets.try_iter()?.enumerate() {
-        let checked = (|| {
-            let data = Numbers::new(&ob?)?;
-            let (m, d) = data.rows("points")?;
-            request.check_budget(m, d)?;
-            Ok::<_, PyErr>((data, d))
-        })();
-        sets.push(checked.map_err(|e| item_error("point_sets", i, e, py))?);
+        sets.push(ob.and_then(|ob| request.points(&ob)).map_err(|e| item_error("point_sets", i, e, py))?);
     }
     let jobs: Vec<(&[f64], usize)> = sets.iter().map(|(data, d)| (data.values(), *d)).collect();
     let results = py.detach(|| {

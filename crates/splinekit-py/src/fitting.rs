@@ -27,7 +27,19 @@ pub enum Choice<'py> {
     Values(Bound<'py, PyAny>),
 }
 
-fn parametrization(name: &str) -> PyResult<Parametrization> {
+impl Choice<'_> {
+    /// The method named, read by `by_name` (which refuses an unknown name), or the array
+    /// given, as the finite numbers of the argument `field`.
+    pub fn read<T>(self, field: &str, by_name: fn(&str) -> PyResult<T>) -> PyResult<Result<T, Vec<f64>>> {
+        Ok(match self {
+            Choice::Name(n) => Ok(by_name(&n)?),
+            Choice::Values(v) => Err(numbers_of(field, &v)?),
+        })
+    }
+}
+
+/// The parametrization named by `params` (a message naming the choices otherwise).
+pub fn parametrization(name: &str) -> PyResult<Parametrization> {
     Ok(match name {
         "uniform" => Parametrization::Uniform,
         "chord" => Parametrization::ChordLength,
@@ -40,7 +52,8 @@ fn parametrization(name: &str) -> PyResult<Parametrization> {
     })
 }
 
-fn placement(name: &str) -> PyResult<KnotPlacement> {
+/// The knot placement named by `knots` (a message naming the choices otherwise).
+pub fn placement(name: &str) -> PyResult<KnotPlacement> {
     Ok(match name {
         "uniform" => KnotPlacement::Uniform,
         "averaged" => KnotPlacement::Averaged,
@@ -52,7 +65,8 @@ fn placement(name: &str) -> PyResult<KnotPlacement> {
     })
 }
 
-fn check_degree(p: usize) -> PyResult<()> {
+/// Refuses a degree outside 1 ..= [`MAX_DEGREE`].
+pub fn check_degree(p: usize) -> PyResult<()> {
     if p == 0 || p > MAX_DEGREE {
         return Err(value_error(format!("degree: must be between 1 and {MAX_DEGREE}, got {p}")));
     }
@@ -70,30 +84,57 @@ fn fit_error(e: splinekit::Error) -> String {
     }
 }
 
-impl FitRequest {
-    /// Reads `fit`'s keyword arguments (names or numbers), checked.
-    pub fn new(
-        degree: usize,
-        control_points: Option<usize>,
-        params: Choice<'_>,
-        knots: Choice<'_>,
-        closed: bool,
-        weights: Option<&Bound<'_, PyAny>>,
-        fix_ends: bool,
-    ) -> PyResult<Self> {
-        check_degree(degree)?;
-        let params = match params {
-            Choice::Name(n) => Ok(parametrization(&n)?),
-            Choice::Values(v) => Err(numbers_of("params", &v)?),
-        };
-        let knots = match knots {
-            Choice::Name(n) => Ok(placement(&n)?),
-            Choice::Values(v) => Err(numbers_of("knots", &v)?),
-        };
-        let weights = weights.map(|w| numbers_of("weights", w)).transpose()?;
-        Ok(FitRequest { degree, control_points, params, knots, closed, weights, fix_ends })
-    }
+/// Declares the `#[pyfunction]` `$name` whose arguments are `$first`, then `fit`'s
+/// keyword arguments with `fit`'s defaults (`degree`, `n_control_points=None`,
+/// `params='chord'`, `knots='averaged'`, `closed=False`, `weights=None`, `fix_ends=False`),
+/// then its own `$extra` ones with theirs. It reads and checks the keywords into a
+/// [`FitRequest`] (the degree, then `params`, `knots` and `weights`) and returns
+/// `$run(py, $first, request, $extra…)`. The one declaration of the keywords, so that `fit`
+/// and `fit_many` take them alike; the text signature (a literal, for pyo3) is each
+/// function's own.
+macro_rules! fit_function {
+    (
+        $(#[$doc:meta])*
+        fn $name:ident($first:ident $(, $extra:ident: $extra_ty:ty = $default:tt)*) -> $ret:ty = $run:path;
+        text_signature = $text:tt;
+    ) => {
+        $(#[$doc])*
+        #[pyo3::pyfunction]
+        #[pyo3(
+            signature = ($first, degree, n_control_points = None, params = $crate::fitting::Choice::Name("chord".into()), knots = $crate::fitting::Choice::Name("averaged".into()), closed = false, weights = None, fix_ends = false $(, $extra = $default)*),
+            text_signature = $text
+        )]
+        #[allow(clippy::too_many_arguments)]
+        pub fn $name<'py>(
+            py: pyo3::Python<'py>,
+            $first: &pyo3::Bound<'py, pyo3::PyAny>,
+            degree: usize,
+            n_control_points: Option<usize>,
+            params: $crate::fitting::Choice<'py>,
+            knots: $crate::fitting::Choice<'py>,
+            closed: bool,
+            weights: Option<&pyo3::Bound<'py, pyo3::PyAny>>,
+            fix_ends: bool,
+            $($extra: $extra_ty,)*
+        ) -> pyo3::PyResult<$ret> {
+            use $crate::fitting::{check_degree, numbers_of, parametrization, placement};
+            check_degree(degree)?;
+            let request = $crate::fitting::FitRequest {
+                degree,
+                control_points: n_control_points,
+                params: params.read("params", parametrization)?,
+                knots: knots.read("knots", placement)?,
+                closed,
+                weights: weights.map(|w| numbers_of("weights", w)).transpose()?,
+                fix_ends,
+            };
+            $run(py, $first, request $(, $extra)*)
+        }
+    };
+}
+pub(crate) use fit_function;
 
+impl FitRequest {
     /// Refuses a fit of `m` points of dimension `d` whose least-squares solve would not
     /// fit the budget (see [`splinekit_scene::budget::least_squares_fit`]). More control
     /// points than points are left to the fit, which refuses them before allocating.
@@ -110,6 +151,15 @@ impl FitRequest {
         let cost = splinekit_scene::budget::least_squares_fit(m as f64, n as f64, p, d);
         let what = format!("a degree-{p} fit of {m} points with {n} control points");
         crate::budget::current()?.check("points", &what, cost).or_value_error()
+    }
+
+    /// The argument `ob` read as an array of points of shape (m, d), with d, refused when
+    /// the fit of m points would not fit the budget ([`FitRequest::check_budget`]).
+    pub fn points<'py>(&self, ob: &Bound<'py, PyAny>) -> PyResult<(Numbers<'py>, usize)> {
+        let data = Numbers::new(ob)?;
+        let (m, d) = data.rows("points")?;
+        self.check_budget(m, d)?;
+        Ok((data, d))
     }
 }
 
@@ -128,23 +178,23 @@ fn dimension_error(e: splinekit_scene::DocumentError) -> String {
 }
 
 /// Owned numbers of a 1-D argument, checked finite.
-fn numbers_of(field: &str, ob: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+pub fn numbers_of(field: &str, ob: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
     let n = Numbers::new(ob)?;
     let v = n.list(field)?.to_vec();
     check_finite(field, &v)?;
     Ok(v)
 }
 
-/// Everything `fit` was asked for, read from Python.
+/// Everything `fit` was asked for, read from Python and checked (by [`fit_function!`]).
 #[derive(Clone)]
 pub struct FitRequest {
-    degree: usize,
-    control_points: Option<usize>,
-    params: Result<Parametrization, Vec<f64>>,
-    knots: Result<KnotPlacement, Vec<f64>>,
-    closed: bool,
-    weights: Option<Vec<f64>>,
-    fix_ends: bool,
+    pub(crate) degree: usize,
+    pub(crate) control_points: Option<usize>,
+    pub(crate) params: Result<Parametrization, Vec<f64>>,
+    pub(crate) knots: Result<KnotPlacement, Vec<f64>>,
+    pub(crate) closed: bool,
+    pub(crate) weights: Option<Vec<f64>>,
+    pub(crate) fix_ends: bool,
 }
 
 impl FitRequest {
@@ -203,37 +253,25 @@ impl FitRequest {
     }
 }
 
-/// Least-squares B-spline c minimising Σᵢ (wᵢ |c(tᵢ) − Qᵢ|)² over its control points, by
-/// banded Givens QR (the problem of scipy's ``make_lsq_spline``).
-///
-/// ``points`` (m, D); ``degree`` p; ``n_control_points`` n (p + 1 ≤ n ≤ m). ``params``:
-/// ``"uniform"`` (tᵢ = i/(m − 1)), ``"chord"`` (accumulated chord length) or
-/// ``"centripetal"`` on [0, 1], or an array of m parameters. ``knots``: ``"averaged"``
-/// (every knot span holds data), ``"uniform"``, or an array of n + p + 1 knots (then n may
-/// be omitted). ``closed`` fits a periodic curve; ``weights`` (m,) ≥ 0 multiply the
-/// residuals; ``fix_ends`` makes the curve start and end at the first and last points.
-/// Returns a ``BSpline`` whose ``fit_report`` holds the errors.
-#[pyfunction]
-#[pyo3(
-    signature = (points, degree, n_control_points = None, params = Choice::Name("chord".into()), knots = Choice::Name("averaged".into()), closed = false, weights = None, fix_ends = false),
-    text_signature = "(points, degree, n_control_points=None, params='chord', knots='averaged', closed=False, weights=None, fix_ends=False)"
-)]
-#[allow(clippy::too_many_arguments)]
-pub fn fit<'py>(
-    py: Python<'py>,
-    points: &Bound<'py, PyAny>,
-    degree: usize,
-    n_control_points: Option<usize>,
-    params: Choice<'py>,
-    knots: Choice<'py>,
-    closed: bool,
-    weights: Option<&Bound<'py, PyAny>>,
-    fix_ends: bool,
-) -> PyResult<Bound<'py, PyAny>> {
-    let request = FitRequest::new(degree, n_control_points, params, knots, closed, weights, fix_ends)?;
-    let data = Numbers::new(points)?;
-    let (m, d) = data.rows("points")?;
-    request.check_budget(m, d)?;
+fit_function! {
+    /// Least-squares B-spline c minimising Σᵢ (wᵢ |c(tᵢ) − Qᵢ|)² over its control points, by
+    /// banded Givens QR (the problem of scipy's ``make_lsq_spline``).
+    ///
+    /// ``points`` (m, D); ``degree`` p; ``n_control_points`` n (p + 1 ≤ n ≤ m). ``params``:
+    /// ``"uniform"`` (tᵢ = i/(m − 1)), ``"chord"`` (accumulated chord length) or
+    /// ``"centripetal"`` on [0, 1], or an array of m parameters. ``knots``: ``"averaged"``
+    /// (every knot span holds data), ``"uniform"``, or an array of n + p + 1 knots (then n may
+    /// be omitted). ``closed`` fits a periodic curve; ``weights`` (m,) ≥ 0 multiply the
+    /// residuals; ``fix_ends`` makes the curve start and end at the first and last points.
+    /// Returns a ``BSpline`` whose ``fit_report`` holds the errors.
+    fn fit(points) -> Bound<'py, PyAny> = fit_points;
+    text_signature = "(points, degree, n_control_points=None, params='chord', knots='averaged', closed=False, weights=None, fix_ends=False)";
+}
+
+/// `fit`'s work once its keywords are read: the points, the fit with the GIL released, and
+/// the `BSpline` that keeps its report.
+fn fit_points<'py>(py: Python<'py>, points: &Bound<'py, PyAny>, request: FitRequest) -> PyResult<Bound<'py, PyAny>> {
+    let (data, d) = request.points(points)?;
     let values = data.values();
     let (doc, report) = py.detach(|| fitted(request, values, d)).map_err(value_error)?;
     wrap(py, PyCurve::new(doc)?, Some(Py::new(py, report)?))

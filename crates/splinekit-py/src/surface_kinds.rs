@@ -116,53 +116,47 @@ impl<'a, 'py> SplineNet<'a, 'py> {
     }
 }
 
+/// The `#[new]` of a tensor-product spline-net class: `(knots_u, knots_v, control_points,
+/// [weights,] degree_u, degree_v, periodic_u=False, periodic_v=False)`, the arguments
+/// gathered in a [`SplineNet`] (weighted when the class takes `weights`) and parsed as the
+/// document of type `$ty`. The one declaration of those arguments for `BSplineSurface` and
+/// `NURBSSurface`, which differ only by the weights.
+macro_rules! spline_net_new {
+    ($Class:ident, $ty:literal $(, $weights:ident)?) => {
+        #[pymethods]
+        impl $Class {
+            #[new]
+            #[pyo3(signature = (knots_u, knots_v, control_points, $($weights,)? degree_u, degree_v, periodic_u = false, periodic_v = false))]
+            #[allow(clippy::too_many_arguments)]
+            fn new(
+                knots_u: &Bound<'_, PyAny>,
+                knots_v: &Bound<'_, PyAny>,
+                control_points: &Bound<'_, PyAny>,
+                $($weights: &Bound<'_, PyAny>,)?
+                degree_u: &Bound<'_, PyAny>,
+                degree_v: &Bound<'_, PyAny>,
+                periodic_u: bool,
+                periodic_v: bool,
+            ) -> PyResult<PyClassInitializer<Self>> {
+                let net = SplineNet::new([knots_u, knots_v], control_points, [degree_u, degree_v], [periodic_u, periodic_v]);
+                $(let net = net.weighted($weights);)?
+                Ok(net.base($ty)?.add_subclass($Class))
+            }
+        }
+    };
+}
+
 /// Tensor-product B-spline surface S(u, v) = Σᵢ Σⱼ N_{i,p}(u) N_{j,q}(v) P_ij.
 #[pyclass(extends = PySurface, module = "splinekit", name = "BSplineSurface")]
 pub struct PyBSplineSurface;
 
-#[pymethods]
-impl PyBSplineSurface {
-    #[new]
-    #[pyo3(signature = (knots_u, knots_v, control_points, degree_u, degree_v, periodic_u = false, periodic_v = false))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        knots_u: &Bound<'_, PyAny>,
-        knots_v: &Bound<'_, PyAny>,
-        control_points: &Bound<'_, PyAny>,
-        degree_u: &Bound<'_, PyAny>,
-        degree_v: &Bound<'_, PyAny>,
-        periodic_u: bool,
-        periodic_v: bool,
-    ) -> PyResult<PyClassInitializer<Self>> {
-        let net = SplineNet::new([knots_u, knots_v], control_points, [degree_u, degree_v], [periodic_u, periodic_v]);
-        Ok(net.base("bspline_surface")?.add_subclass(PyBSplineSurface))
-    }
-}
+spline_net_new!(PyBSplineSurface, "bspline_surface");
 
 /// NURBS surface S(u, v) = Σ N_{i,p}(u) N_{j,q}(v) w_ij P_ij / Σ N_{i,p}(u) N_{j,q}(v) w_ij.
 #[pyclass(extends = PySurface, module = "splinekit", name = "NURBSSurface")]
 pub struct PyNurbsSurface;
 
-#[pymethods]
-impl PyNurbsSurface {
-    #[new]
-    #[pyo3(signature = (knots_u, knots_v, control_points, weights, degree_u, degree_v, periodic_u = false, periodic_v = false))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        knots_u: &Bound<'_, PyAny>,
-        knots_v: &Bound<'_, PyAny>,
-        control_points: &Bound<'_, PyAny>,
-        weights: &Bound<'_, PyAny>,
-        degree_u: &Bound<'_, PyAny>,
-        degree_v: &Bound<'_, PyAny>,
-        periodic_u: bool,
-        periodic_v: bool,
-    ) -> PyResult<PyClassInitializer<Self>> {
-        let net = SplineNet::new([knots_u, knots_v], control_points, [degree_u, degree_v], [periodic_u, periodic_v])
-            .weighted(weights);
-        Ok(net.base("nurbs_surface")?.add_subclass(PyNurbsSurface))
-    }
-}
+spline_net_new!(PyNurbsSurface, "nurbs_surface", weights);
 
 /// Tensor-product Bézier surface S(u, v) = Σ B_{i,n}(u) B_{j,m}(v) P_ij on [0, 1]².
 #[pyclass(extends = PySurface, module = "splinekit", name = "BezierSurface")]

@@ -22,15 +22,32 @@ pub struct IntersectArgs {
     pub a: String,
     /// Second shape document; without it, the self-intersections of the first.
     pub b: Option<String>,
+    #[command(flatten)]
+    pub precision: Precision,
+    /// Write the JSON here instead of standard output.
+    #[arg(short, long)]
+    pub output: Option<String>,
+}
+
+/// The `--tolerance` and `--chord` of a search for intersection curves, declared once for
+/// `intersect` and `section` (the same names, defaults and checks; `section` words their
+/// help for its planes with `mut_arg`).
+#[derive(Args, Debug)]
+pub struct Precision {
     /// Distance below which the shapes count as meeting (> 0).
     #[arg(long, default_value = "1e-9", allow_hyphen_values = true)]
     pub tolerance: String,
     /// Chord error of the polylines of surface–surface intersection curves (> 0).
     #[arg(long, default_value = "1e-4", allow_hyphen_values = true)]
     pub chord: String,
-    /// Write the JSON here instead of standard output.
-    #[arg(short, long)]
-    pub output: Option<String>,
+}
+
+impl Precision {
+    /// The tolerance and the chord error, in that order, each one number > 0 (else the
+    /// flag's error).
+    pub fn parse(&self) -> Result<(f64, f64)> {
+        Ok((positive("--tolerance", &self.tolerance)?, positive("--chord", &self.chord)?))
+    }
 }
 
 fn kind_name(kind: IntersectionKind) -> &'static str {
@@ -150,8 +167,7 @@ impl DimensionVisitor<Curves> for Intersect<'_> {
 }
 
 pub fn run(args: &IntersectArgs) -> Result<()> {
-    let tolerance = positive("--tolerance", &args.tolerance)?;
-    let chord = positive("--chord", &args.chord)?;
+    let (tolerance, chord) = args.precision.parse()?;
     let a = read_shape(&args.a)?;
     let b = args.b.as_deref().map(read_shape).transpose()?;
     let value = match (&a, &b) {

@@ -9,7 +9,7 @@ use splinekit::query::intersect_surfaces;
 use splinekit::surface::Surface;
 use splinekit::surface::model::Plane;
 
-use crate::commands::intersect::{branches_json, positive};
+use crate::commands::intersect::{Precision, branches_json};
 use crate::input::{parse_numbers, read_shapes};
 use crate::output::{check_finite, write_json};
 use splinekit_scene::ShapeDocument;
@@ -18,6 +18,10 @@ use splinekit_scene::ShapeDocument;
 pub const MAX_LEVELS: usize = 100;
 
 #[derive(Args, Debug)]
+#[command(
+    mut_arg("tolerance", |a| a.help("Distance within which points lie on both the surface and the plane (> 0)")),
+    mut_arg("chord", |a| a.help("Chord error of the contour polylines (> 0)"))
+)]
 pub struct SectionArgs {
     /// Surface document (JSON file, or - for standard input); 3-D. A scene of surfaces is
     /// answered object by object (`{"objects": [{"sections": …}, …]}`).
@@ -29,12 +33,8 @@ pub struct SectionArgs {
     /// N equal slabs of the surface's extent along the normal.
     #[arg(long, default_value_t = 1)]
     pub levels: usize,
-    /// Distance within which points lie on both the surface and the plane (> 0).
-    #[arg(long, default_value = "1e-9", allow_hyphen_values = true)]
-    pub tolerance: String,
-    /// Chord error of the contour polylines (> 0).
-    #[arg(long, default_value = "1e-4", allow_hyphen_values = true)]
-    pub chord: String,
+    #[command(flatten)]
+    pub precision: Precision,
     /// Write the JSON here instead of standard output.
     #[arg(short, long)]
     pub output: Option<String>,
@@ -84,7 +84,7 @@ fn big_plane(o: &Point<3>, n: &Point<3>, h: f64, centre: &Point<3>, size: f64) -
 
 pub fn run(args: &SectionArgs) -> Result<()> {
     let (o, n) = parse_plane(&args.plane)?;
-    let (tolerance, chord) = (positive("--tolerance", &args.tolerance)?, positive("--chord", &args.chord)?);
+    let (tolerance, chord) = args.precision.parse()?;
     if args.levels == 0 || args.levels > MAX_LEVELS {
         bail!("--levels: expected 1 … {MAX_LEVELS}, got {}", args.levels);
     }
