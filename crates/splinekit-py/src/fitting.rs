@@ -228,9 +228,10 @@ impl FitRequest {
             Ok(method) => kfit::parametrize(points, method, self.closed)?,
             Err(values) => values,
         };
+        kfit::check_data(points, &params, self.weights.as_deref())?;
         let knots = match self.knots {
-            Ok(placement) if self.closed => kfit::periodic_knots(&params, p, n, placement),
-            Ok(placement) => kfit::fit_knots(&params, p, n, placement),
+            Ok(placement) if self.closed => kfit::periodic_knots(&params, p, n, placement)?,
+            Ok(placement) => kfit::fit_knots(&params, p, n, placement)?,
             Err(k) if self.control_points.is_some_and(|n| n != count_from_knots(&k)) => {
                 return Err(splinekit::Error::invalid(
                     "n_control_points",

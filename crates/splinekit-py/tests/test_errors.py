@@ -117,6 +117,13 @@ def test_fit_errors():
         sk.fit(pts, 3)
     with pytest.raises(ValueError, match=r"^params: expected 50 values, one per point, got 3$"):
         sk.fit(pts, 3, params=[0, 0.5, 1], knots=[0, 0, 0, 0, 1, 1, 1, 1])
+    # Parameters given as numbers: counted before knots are averaged from them (a single
+    # number once reached the knot placement and panicked).
+    with pytest.raises(ValueError, match=r"^params: expected 50 values, one per point, got 1$"):
+        sk.fit(pts, 2, 4, params=3)
+    for closed in (False, True):
+        with pytest.raises(ValueError, match=r"^n_control_points: degree 3 needs at least 4 control points, got 2$"):
+            sk.fit(pts, 3, 2, params=np.linspace(0, 0.98, 50), closed=closed)
     with pytest.raises(ValueError, match=r"^n_control_points: 5 does not match the 8 knots of degree 3, which give 4 control points$"):
         sk.fit(pts, 3, 5, params=np.linspace(0, 1, 50), knots=[0, 0, 0, 0, 1, 1, 1, 1])
     with pytest.raises(ValueError, match=r"^points: expected an array of points of shape \(n, d\), got shape \[50\]$"):

@@ -12,7 +12,7 @@ fn bench(c: &mut Criterion) {
         .iter()
         .map(|&t| Point::<3>::new((40.0 * t).cos(), (40.0 * t).sin(), t + 0.1 * (7.0 * t).sin()))
         .collect();
-    let knots = fit_knots(&params, 3, 1000, KnotPlacement::Uniform);
+    let knots = fit_knots(&params, 3, 1000, KnotPlacement::Uniform).expect("1000 control points for 10⁶ parameters");
     let mut g = c.benchmark_group("fit 10^6 samples, 1000 control points, cubic 3d");
     g.sample_size(10);
     g.bench_function("fit_with_knots (given params and knots)", |b| {

@@ -11,7 +11,7 @@ use crate::basis::{advance_span, basis_functions};
 use crate::curve::{BSplineCurve, Curve};
 use crate::error::{Error, Result, check_degree, check_finite, check_points_finite};
 use crate::fit::banded_qr::{BandedLeastSquares, Solution};
-use crate::fit::parametrize::{KnotPlacement, Parametrization, fit_knots, parametrize, periodic_knots};
+use crate::fit::parametrize::{KnotPlacement, Parametrization, check_counts, fit_knots, parametrize, periodic_knots};
 
 /// A fitted curve with its data parameters and quality figures.
 #[derive(Debug, Clone)]
@@ -96,23 +96,12 @@ pub fn fit<const D: usize>(points: &[Point<D>], options: &FitOptions) -> Result<
     check_points_finite("points", points)?;
     let (p, n, m) = (options.degree, options.control_points, points.len());
     check_degree(p)?;
-    if n < p + 1 {
-        return Err(Error::invalid(
-            "control_points",
-            format!("degree {p} needs at least {} control points, got {n}", p + 1),
-        ));
-    }
-    if n > m {
-        return Err(Error::invalid(
-            "control_points",
-            format!("{n} control points need at least {n} data points, got {m}"),
-        ));
-    }
+    check_counts(p, n, m)?;
     let params = parametrize(points, options.params, options.closed)?;
     let knots = if options.closed {
-        periodic_knots(&params, p, n, options.knots)
+        periodic_knots(&params, p, n, options.knots)?
     } else {
-        fit_knots(&params, p, n, options.knots)
+        fit_knots(&params, p, n, options.knots)?
     };
     fit_with_knots(points, &params, &options.with_knots(knots))
 }
@@ -171,8 +160,11 @@ pub fn fit_with_knots<const D: usize>(
     problem.finish(points, params, unknowns)
 }
 
-/// Finite points, one finite parameter per point, finite non-negative weights.
-fn check_data<const D: usize>(points: &[Point<D>], params: &[f64], weights: Option<&[f64]>) -> Result<()> {
+/// Checks the data of [`fit_with_knots`]: finite points, one finite parameter per point,
+/// finite non-negative weights (an error naming the field otherwise). Callers that place
+/// knots from the parameters ([`crate::fit::fit_knots`]) check the data first, so that a
+/// wrong count is reported as such.
+pub fn check_data<const D: usize>(points: &[Point<D>], params: &[f64], weights: Option<&[f64]>) -> Result<()> {
     check_points_finite("points", points)?;
     check_finite("params", params)?;
     let m = points.len();
@@ -351,6 +343,6 @@ pub fn fit_curve<const D: usize, C: Curve<D> + ?Sized>(
         ));
     }
     let knots =
-        if closed { periodic_knots(&params, p, n, options.knots) } else { fit_knots(&params, p, n, options.knots) };
+        if closed { periodic_knots(&params, p, n, options.knots)? } else { fit_knots(&params, p, n, options.knots)? };
     fit_with_knots(&points, &params, &options.with_knots(knots))
 }

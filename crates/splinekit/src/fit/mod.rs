@@ -9,6 +9,6 @@ pub mod surface_fit;
 
 pub use banded_qr::BandedLeastSquares;
 pub use interpolate::{Interpolation, InterpolationOptions, interpolate};
-pub use lsq::{Fit, FitOptions, FitWithKnotsOptions, fit, fit_curve, fit_with_knots};
+pub use lsq::{Fit, FitOptions, FitWithKnotsOptions, check_data, fit, fit_curve, fit_with_knots};
 pub use parametrize::{KnotPlacement, Parametrization, fit_knots, parametrize, periodic_knots};
 pub use surface_fit::{SurfaceFitOptions, fit_surface, interpolate_surface, interpolate_surface_on_knots};

@@ -74,8 +74,29 @@ pub fn parametrize<const D: usize>(points: &[Point<D>], method: Parametrization,
     Ok(t)
 }
 
-/// Clamped knots on [0, 1] for `n` control points of degree `p` fitted to parameters `t`.
-pub fn fit_knots(t: &[f64], p: usize, n: usize, placement: KnotPlacement) -> Vec<f64> {
+/// Checks the counts a fit's knots are placed for: degree `p` needs at least p + 1 control
+/// points, and `n` control points need at least `n` data points (here `m` parameters), so
+/// that every knot span can hold data.
+pub(crate) fn check_counts(p: usize, n: usize, m: usize) -> Result<()> {
+    if n < p + 1 {
+        return Err(Error::invalid(
+            "control_points",
+            format!("degree {p} needs at least {} control points, got {n}", p + 1),
+        ));
+    }
+    if n > m {
+        return Err(Error::invalid(
+            "control_points",
+            format!("{n} control points need at least {n} data points, got {m}"),
+        ));
+    }
+    Ok(())
+}
+
+/// Clamped knots on [0, 1] for `n` control points of degree `p` fitted to parameters `t`
+/// (p + 1 ≤ n ≤ the number of parameters; an error naming `control_points` otherwise).
+pub fn fit_knots(t: &[f64], p: usize, n: usize, placement: KnotPlacement) -> Result<Vec<f64>> {
+    check_counts(p, n, t.len())?;
     let mut knots = vec![0.0; p + 1];
     let inner = n - p - 1;
     match placement {
@@ -96,14 +117,16 @@ pub fn fit_knots(t: &[f64], p: usize, n: usize, placement: KnotPlacement) -> Vec
         }
     }
     knots.extend(vec![1.0; p + 1]);
-    knots
+    Ok(knots)
 }
 
 /// Periodic knots t_0 … t_{n+p} with period 1 for `n` control points of degree `p`:
 /// one period of knots s_0 = 0 < s_1 < … < s_{n−1} < 1 (uniform, or averaged from the
-/// cyclic parameters), repeated.
-pub fn periodic_knots(t: &[f64], p: usize, n: usize, placement: KnotPlacement) -> Vec<f64> {
+/// cyclic parameters), repeated (p + 1 ≤ n ≤ the number of parameters; an error naming
+/// `control_points` otherwise).
+pub fn periodic_knots(t: &[f64], p: usize, n: usize, placement: KnotPlacement) -> Result<Vec<f64>> {
     let m = t.len();
+    check_counts(p, n, m)?;
     let s: Vec<f64> = match placement {
         KnotPlacement::Uniform => (0..n).map(|j| j as f64 / n as f64).collect(),
         KnotPlacement::Averaged => {
@@ -119,11 +142,34 @@ pub fn periodic_knots(t: &[f64], p: usize, n: usize, placement: KnotPlacement) -
                 .collect()
         }
     };
-    (0..n + p + 1)
+    Ok((0..n + p + 1)
         .map(|i| {
             let j = i as isize - p as isize;
             let r = j.rem_euclid(n as isize) as usize;
             s[r] + j.div_euclid(n as isize) as f64
         })
-        .collect()
+        .collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn knots_for_impossible_counts_are_refused_with_the_counts() {
+        let t: Vec<f64> = (0..5).map(|i| i as f64 / 4.0).collect();
+        for placement in [KnotPlacement::Uniform, KnotPlacement::Averaged] {
+            for (p, n) in [(3, 2), (2, 0), (3, 6)] {
+                for knots in [fit_knots(&t, p, n, placement), periodic_knots(&t, p, n, placement)] {
+                    let message = knots.expect_err("impossible counts").to_string();
+                    assert!(message.starts_with("control_points: "), "{message}");
+                    assert!(message.contains(&n.to_string()), "{message}");
+                }
+            }
+            // The extremes that are possible: n = p + 1 and n = m.
+            assert_eq!(fit_knots(&t, 3, 4, placement).unwrap().len(), 8);
+            assert_eq!(fit_knots(&t, 1, 5, placement).unwrap().len(), 7);
+            assert_eq!(periodic_knots(&t, 3, 5, placement).unwrap().len(), 9);
+        }
+    }
 }

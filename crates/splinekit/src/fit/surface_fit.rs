@@ -88,8 +88,8 @@ pub fn fit_surface<const D: usize>(grid: &[Vec<Point<D>>], options: &SurfaceFitO
     let vparams = grid_params(grid, options.params)?;
     let columns = transpose(grid);
     let uparams = grid_params(&columns, options.params)?;
-    let kv = fit_knots(&vparams, q, nv, options.knots);
-    let ku = fit_knots(&uparams, p, nu, options.knots);
+    let kv = fit_knots(&vparams, q, nv, options.knots)?;
+    let ku = fit_knots(&uparams, p, nu, options.knots)?;
     // Rows in v, then the columns of the intermediate net in u.
     let mut mid = Vec::with_capacity(mu);
     for row in grid {
