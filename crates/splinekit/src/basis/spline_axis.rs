@@ -33,8 +33,8 @@ pub struct SplineAxis {
 struct SpanGuide {
     start: f64,
     buckets_per_unit: f64,
-    /// B − 1, the last bucket, as a float (the guess clamps to it before converting).
-    last_bucket: f64,
+    /// B − 1, the last bucket (the guess clamps to it after truncating).
+    last_bucket: i64,
     uniform: bool,
     /// The span of the start of each bucket; empty for uniform knots (and for more than
     /// 2³² spans, where the arithmetic guess p + b is only a starting point).
@@ -51,7 +51,7 @@ impl SpanGuide {
         let mut guide = SpanGuide {
             start: a,
             buckets_per_unit: 1.0 / h,
-            last_bucket: (buckets - 1) as f64,
+            last_bucket: (buckets - 1) as i64,
             uniform: false,
             table: Vec::new(),
         };
@@ -72,18 +72,35 @@ impl SpanGuide {
     /// The guessed span of t (any t; NaN guesses the first span).
     #[inline(always)]
     fn guess(&self, t: f64, p: usize) -> usize {
-        // The bucket clamped into [0, B − 1] by comparisons, which compile to one `max` and
-        // one `min` instruction each (`f64::max`/`min` add NaN tests); NaN gives 0.
-        let x = (t - self.start) * self.buckets_per_unit;
-        let x = if x > 0.0 { x } else { 0.0 };
-        let x = if x < self.last_bucket { x } else { self.last_bucket };
-        // SAFETY: x is finite and in [0, B − 1], and B ≤ the number of knots < 2⁶³, so x
-        // truncated fits an i64. (`as` would add range and NaN branches to every lookup.)
-        let k = unsafe { x.to_int_unchecked::<i64>() } as usize;
+        // The bucket truncated, then clamped into [0, B − 1] as an integer (two conditional
+        // moves, shorter on the way from t to the span's data than clamping the float).
+        let k = truncate((t - self.start) * self.buckets_per_unit);
+        let k = if k > 0 { k } else { 0 };
+        let k = (if k < self.last_bucket { k } else { self.last_bucket }) as usize;
         match self.table.get(k) {
             Some(&s) => s as usize,
             None => p + k,
         }
+    }
+}
+
+/// x truncated toward zero, any integer where x is NaN or out of the i64 range (a guess
+/// only: the caller clamps it). On x86-64 one `cvttsd2si`, whose answer there is i64::MIN;
+/// elsewhere the saturating `as`.
+#[inline(always)]
+fn truncate(x: f64) -> i64 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_cvttsd_si64, _mm_set_sd};
+        // SAFETY: SSE2, all these need, is part of every x86-64 target.
+        #[allow(unused_unsafe)]
+        unsafe {
+            _mm_cvttsd_si64(_mm_set_sd(x))
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        x as i64
     }
 }
 
@@ -193,8 +210,29 @@ impl SplineAxis {
     /// search would.
     #[inline(always)]
     pub fn span_side(&self, t: f64, side: Side) -> usize {
+        self.span_side_guessed(t, t, side)
+    }
+    /// Any parameter brought into the domain ([`SplineAxis::normalise_side`]) and its span
+    /// ([`SplineAxis::span_side`]). On an open axis the span is guessed from the parameter
+    /// as given, which the guess clamps into the domain's buckets anyway: the guess need not
+    /// wait for the clamp, which shortens the chain of latencies from t to the span's data
+    /// (a point at random parameters, whose loop is bound by that chain: 9.3 → 8.3 ns).
+    #[inline(always)]
+    pub fn locate_side(&self, t: f64, side: Side) -> (f64, usize) {
+        if self.periodic {
+            let t = self.domain().wrap_periodic(t, side);
+            (t, self.span_side_guessed(t, t, side))
+        } else {
+            let clamped = self.domain().clamp(t);
+            (clamped, self.span_side_guessed(t, clamped, side))
+        }
+    }
+    /// [`SplineAxis::span_side`] of `t`, the guess taken from `guess_from` (any number: the
+    /// guess is only where the verification starts).
+    #[inline(always)]
+    fn span_side_guessed(&self, guess_from: f64, t: f64, side: Side) -> usize {
         let (p, n) = (self.degree, self.eval_count());
-        let guess = self.guide.guess(t, p);
+        let guess = self.guide.guess(guess_from, p);
         if guess >= p && guess < n {
             if let (Some(&a), Some(&b)) = (self.eval_knots.get(guess), self.eval_knots.get(guess + 1)) {
                 let inside = match side {
@@ -268,9 +306,16 @@ mod tests {
             ts.extend(ek[p..=ne].iter().map(|&x| x.next_down().max(d.start)));
             // Outside the domain and not numbers: the guess stays a valid index.
             ts.extend([f64::NAN, f64::NEG_INFINITY, f64::INFINITY, d.start - 1.0, d.end + 1.0, -1e300, 1e300]);
+            ts.extend([d.start - 1e-300, d.end + 1e-9, d.end * 1e17 + 1e17, -(d.end * 1e17 + 1e17)]);
             for &t in &ts {
                 for side in [Side::Right, Side::Left] {
                     assert_eq!(axis.span_side(t, side), find_span(ek, p, ne, t, side), "n {n} t {t} {side:?}");
+                    // Located from t as given (guessed before the clamp on open axes): the
+                    // parameter normalised and that parameter's span, bit for bit.
+                    let (located, span) = axis.locate_side(t, side);
+                    let normalised = axis.normalise_side(t, side);
+                    assert_eq!(located.to_bits(), normalised.to_bits(), "n {n} t {t} {side:?}");
+                    assert_eq!(span, find_span(ek, p, ne, normalised, side), "n {n} t {t} {side:?}");
                 }
             }
         }

@@ -159,8 +159,7 @@ impl<const D: usize> BSplineCurve<D> {
     /// Evaluates with the triangular Cox–de Boor kernel, bypassing the Bézier spans
     /// (a reference for tests and benchmarks).
     pub fn eval_de_boor(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-        let t = self.normalise(t, side);
-        let span = self.span_of(t, side);
+        let (t, span) = self.locate(t, side);
         let (knots, pts) = self.evaluation_data();
         eval_on_span(knots, self.axis.reciprocals(), pts, self.degree(), span, t, out)
     }
@@ -171,16 +170,11 @@ impl<const D: usize> BSplineCurve<D> {
         self.axis.reciprocals()
     }
 
-    /// Maps a parameter into the domain: clamped (open) or wrapped (periodic).
-    #[inline]
-    pub(crate) fn normalise(&self, t: f64, side: Side) -> f64 {
-        self.axis.normalise_side(t, side)
-    }
-
-    /// The span of `t` (already in the domain); see [`SplineAxis::span_side`].
-    #[inline]
-    pub(crate) fn span_of(&self, t: f64, side: Side) -> usize {
-        self.axis.span_side(t, side)
+    /// A parameter mapped into the domain (clamped when open, wrapped when periodic) and its
+    /// span; see [`SplineAxis::locate_side`].
+    #[inline(always)]
+    pub(crate) fn locate(&self, t: f64, side: Side) -> (f64, usize) {
+        self.axis.locate_side(t, side)
     }
 
     /// The batch by the Bézier spans into any [`Slot`]s (points, or memory not yet
@@ -227,8 +221,7 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
 
     #[inline]
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-        let t = self.normalise(t, side);
-        let span = self.span_of(t, side);
+        let (t, span) = self.locate(t, side);
         self.eval_on(span, t, out);
     }
 
@@ -242,8 +235,7 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
     /// at random parameters.
     #[inline(always)]
     fn point(&self, t: f64) -> Point<D> {
-        let t = self.normalise(t, Side::Right);
-        let span = self.span_of(t, Side::Right);
+        let (t, span) = self.locate(t, Side::Right);
         match &self.spans {
             Some(b) => b.point(span, t),
             None => {
@@ -261,8 +253,7 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
         let axis = &self.axis;
         let w = order + 1;
         for (i, &t) in params.iter().enumerate() {
-            let t = self.normalise(t, Side::Right);
-            let span = axis.span(t);
+            let (t, span) = axis.locate_side(t, Side::Right);
             self.eval_on(span, t, &mut out[i * w..(i + 1) * w]);
         }
     }

@@ -186,8 +186,7 @@ impl<const D: usize> Curve<D> for NurbsCurve<D> {
     crate::curve::control_box::control_point_box!("a NURBS curve (weights > 0)");
     crate::curve::bspline::spline_curve_knots!(weighted);
     fn eval_side(&self, t: f64, side: Side, out: &mut [Point<D>]) {
-        let t = self.weighted.normalise(t, side);
-        let span = self.weighted.span_of(t, side);
+        let (t, span) = self.weighted.locate(t, side);
         let knots = self.weighted.evaluation_data().0;
         let mut h: SmallVec<[Homogeneous<D>; 8]> = smallvec![Homogeneous::lift(&Point::<D>::zeros(), 0.0); out.len()];
         match &self.spans {
