@@ -259,7 +259,10 @@ impl<const D: usize> BezierSpans<Point<D>> {
         // of knots repeated at the end are empty and never evaluated, nor moved into).
         let last_span = self.first_span + self.frames.iter().rposition(|f| f.0 < f.1).unwrap_or(self.frames.len() - 1);
         let one = |at: &mut SpanCursor<W, Point<D>>, t: f64, o: &mut [O]| self.one::<W, K, O>(at, map(t), o, &locate);
-        let in_span = |t: f64, start: f64, end: f64, span: usize| t >= start && (t < end || span == last_span);
+        // Whether t lies in the span [start, end) (the last span closed at its end), the
+        // comparisons combined without branches (`&`, `|`), so that a test over the four
+        // lanes of a block costs no branch per lane.
+        let in_span = |t: f64, start: f64, end: f64, span: usize| (t >= start) & ((t < end) | (span == last_span));
         let mut blocks = params.chunks_exact(LANES).zip(out.chunks_exact_mut(LANES * K));
         for (raw, os) in &mut blocks {
             let ts: [f64; LANES] = std::array::from_fn(|l| map(raw[l]));
@@ -267,7 +270,7 @@ impl<const D: usize> BezierSpans<Point<D>> {
             // test, and the order test below, are computed without a branch per lane, so
             // that random parameters do not make the processor mispredict them.
             let all_in = |at: &SpanCursor<W, Point<D>>| {
-                ts.iter().fold(true, |all, &t| all & (t >= at.start) & ((t < at.end) | (at.span == last_span)))
+                ts.iter().fold(true, |all, &t| all & in_span(t, at.start, at.end, at.span))
             };
             if all_in(&at) {
                 bernstein_lanes::<W, K, D, O>(&at.points, at.start, at.inv_h, &ts, os);

@@ -250,10 +250,9 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
         if let Some(spans) = &self.spans {
             return self.span_batch(spans, params, order, out);
         }
-        let axis = &self.axis;
         let w = order + 1;
         for (i, &t) in params.iter().enumerate() {
-            let (t, span) = axis.locate_side(t, Side::Right);
+            let (t, span) = self.locate(t, Side::Right);
             self.eval_on(span, t, &mut out[i * w..(i + 1) * w]);
         }
     }
