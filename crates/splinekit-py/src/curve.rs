@@ -5,6 +5,7 @@
 //! curve built from it, of the dimension its points ask for.
 
 use std::mem::MaybeUninit;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
@@ -14,7 +15,7 @@ use splinekit_scene::{AnyCurve, CurveDocument, Curves, DimensionVisitor};
 
 use splinekit_scene::budget::{Cost, F64};
 
-use crate::arrays::{Numbers, as_points_uninit, check_params};
+use crate::arrays::{Numbers, as_points_uninit, check_params, params_pass};
 use crate::budget;
 use crate::errors::{OrValueError, value_error};
 use crate::row_writer::filled_rows;
@@ -77,7 +78,12 @@ impl PyCurve {
     /// Refuses non-finite parameters and, on open curves, parameters outside the domain
     /// (with the slack of `splinekit eval --at`).
     pub fn check_params(&self, field: &str, params: &[f64]) -> PyResult<()> {
-        check_params(field, params, (!self.closed).then_some(self.domain), "curve")
+        check_params(field, params, self.open_domain(), "curve")
+    }
+
+    /// The domain parameters must lie in: that of an open curve, none for a closed one.
+    fn open_domain(&self) -> Option<Interval> {
+        (!self.closed).then_some(self.domain)
     }
 
     /// Refuses evaluating derivatives up to `order` at `n` parameters and holding `row`
@@ -94,21 +100,54 @@ impl PyCurve {
     /// The derivatives of `order` at the parameters `t` (all orders 0 … `order` when `all`):
     /// shaped (N, D) (`all`: (N, order + 1, D)), without N for a number, written straight
     /// into the new array chunk by chunk with the GIL released. `field` names the order.
+    ///
+    /// The parameters are checked chunk by chunk, each just before it is evaluated (one
+    /// pass over memory instead of two: a separate pass over 10⁶ parameters cost a sixth
+    /// of a sorted cubic's evaluation). A chunk that fails stops the work: the rest is
+    /// zeroed, the array dropped, and the error is [`PyCurve::check_params`]'s over all
+    /// the parameters, as if they had been checked first.
     fn evaluate<'py>(
         &self,
         t: &Bound<'py, PyAny>,
         (field, order): (&str, usize),
         all: bool,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let job = self.evaluation(t, (field, order), all)?;
+        let job = self.unchecked_evaluation(t, (field, order), all)?;
         let (shape, rows, row) = job.layout();
-        let task = job.task();
-        filled_rows(t.py(), &shape, rows, row, |rows, out| task.fill(rows, out))
+        let (task, params, domain) = (job.task(), job.params(), self.open_domain());
+        let refused = AtomicBool::new(false);
+        let out = filled_rows(t.py(), &shape, rows, row, |rows, out| {
+            if !refused.load(Ordering::Relaxed) && params_pass(&params[rows.clone()], domain) {
+                return task.fill(rows, out);
+            }
+            refused.store(true, Ordering::Relaxed);
+            out.fill(MaybeUninit::new(0.0));
+        })?;
+        if refused.into_inner() {
+            self.check_params("t", params)?;
+            // Not reached: a chunk that fails `params_pass` fails `check_params` too. Were
+            // it reached, the parameters are good, and they are evaluated whole.
+            return filled_rows(t.py(), &shape, rows, row, |rows, out| task.fill(rows, out));
+        }
+        Ok(out)
     }
 
     /// Checks an evaluation of the derivatives of `order` (all orders up to it when `all`)
     /// at the parameters `t` (order, parameters, budget) and returns it, to be run.
     pub fn evaluation<'a, 'py>(
+        &'a self,
+        t: &Bound<'py, PyAny>,
+        order: (&str, usize),
+        all: bool,
+    ) -> PyResult<Evaluation<'a, 'py>> {
+        let job = self.unchecked_evaluation(t, order, all)?;
+        self.check_params("t", job.params())?;
+        Ok(job)
+    }
+
+    /// [`PyCurve::evaluation`] without the check of the parameters' values (the order,
+    /// the shape of `t` and the budget are checked).
+    fn unchecked_evaluation<'a, 'py>(
         &'a self,
         t: &Bound<'py, PyAny>,
         (field, order): (&str, usize),
@@ -117,7 +156,6 @@ impl PyCurve {
         check_order(field, order)?;
         let numbers = Numbers::new(t)?;
         let n = numbers.list("t")?.len();
-        self.check_params("t", numbers.values())?;
         let d = self.dimension();
         self.check_budget(n, if all { (order + 1) * d } else { d }, (field, order))?;
         Ok(Evaluation { curve: &self.curve, numbers, order, all, d })

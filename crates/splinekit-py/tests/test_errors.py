@@ -73,6 +73,37 @@ def test_evaluation_errors():
         c([0.5, np.nan])
     with pytest.raises(ValueError, match=r"^t: expected a number or a 1-D array, got an array of shape \[2, 2\]$"):
         c(np.zeros((2, 2)))
+    # Long batches are checked chunk by chunk as they are evaluated; the message is still
+    # that of a check of all the parameters first: the first non-finite value wherever it
+    # is, else the first parameter outside the domain, in any chunk.
+    t = np.linspace(0.0, 2.0, 20_000)
+    t[100], t[15_000] = 2.5, np.inf
+    for nu in (0, 1):
+        with pytest.raises(ValueError, match=r"^t\[15000\]: value is not finite \(inf\)$"):
+            c(t, nu)
+    t[15_000] = 1.0
+    with pytest.raises(ValueError, match=r"^t: parameter 2.5 is outside the domain \[0, 2\] of this open curve$"):
+        c(t)
+    t[100], t[19_999] = 1.0, -0.75
+    with pytest.raises(ValueError, match=r"^t: parameter -0.75 is outside the domain \[0, 2\] of this open curve$"):
+        c(t)
+    with pytest.raises(ValueError, match=r"^t: parameter -0.75 is outside the domain \[0, 2\] of this open curve$"):
+        c.derivatives(t, 2)
+    t[19_999] = 2.0
+    np.testing.assert_array_equal(c(t), np.array([c(x) for x in t]))
+    # The vectorised check sees a bad value in every lane, in the remainder after its
+    # blocks of eight, and in the second chunk of a batch.
+    for n in (1, 7, 8, 9, 17, 4100):
+        for i in sorted({0, n // 2, n - 1, min(n - 1, 8), min(n - 1, 2048)}):
+            for bad, message in ((np.nan, rf"^t\[{i}\]: value is not finite \(NaN\)$"),
+                                 (np.inf, rf"^t\[{i}\]: value is not finite \(inf\)$"),
+                                 (-np.inf, rf"^t\[{i}\]: value is not finite \(-inf\)$"),
+                                 (2.5, r"^t: parameter 2.5 is outside the domain \[0, 2\] of this open curve$"),
+                                 (-0.5, r"^t: parameter -0.5 is outside the domain \[0, 2\] of this open curve$")):
+                t = np.full(n, 1.0)
+                t[i] = bad
+                with pytest.raises(ValueError, match=message):
+                    c(t)
     with pytest.raises(ValueError, match=r"^order: 65 is more than the limit of 64$"):
         c.derivatives(0.5, 65)
     with pytest.raises(ValueError, match=r"^p: expected 2 coordinates like the curve's points, got 3$"):
