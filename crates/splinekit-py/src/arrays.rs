@@ -9,6 +9,7 @@ use std::mem::MaybeUninit;
 
 use numpy::{PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::prelude::*;
+use pyo3::types::{PyFloat, PyInt};
 use splinekit::{Interval, Point};
 
 use crate::errors::value_error;
@@ -24,6 +25,12 @@ pub fn contiguous<'py>(ob: &Bound<'py, PyAny>) -> PyResult<PyReadonlyArrayDyn<'p
     {
         return Ok(a.readonly());
     }
+    if let Some(x) = plain_number(ob) {
+        let a = PyArrayDyn::<f64>::zeros(ob.py(), numpy::IxDyn(&[]), false);
+        // SAFETY: a new 0-d array holding one f64, not yet shared with anyone.
+        unsafe { *a.data() = x };
+        return Ok(a.readonly());
+    }
     let np = ob.py().import("numpy")?;
     let kwargs = pyo3::types::PyDict::new(ob.py());
     kwargs.set_item("dtype", np.getattr("float64")?)?;
@@ -33,6 +40,20 @@ pub fn contiguous<'py>(ob: &Bound<'py, PyAny>) -> PyResult<PyReadonlyArrayDyn<'p
         return Ok(converted.readonly());
     }
     Ok(converted.call_method0("copy")?.cast_into::<PyArrayDyn<f64>>()?.readonly())
+}
+
+/// The value of a Python `float` (numpy's `float64` scalars are floats too) or `int`, which
+/// `numpy.asarray(ob, dtype=float64)` would give (ints are rounded to the nearest double by
+/// both); `None` for anything else, and for an int too large for a double (numpy's error
+/// then). A scalar call (`c(0.5)`) so skips numpy's conversion: 0.55 µs against 1.4.
+fn plain_number(ob: &Bound<'_, PyAny>) -> Option<f64> {
+    if let Ok(f) = ob.cast::<PyFloat>() {
+        return Some(f.value());
+    }
+    if ob.is_exact_instance_of::<PyInt>() {
+        return ob.extract::<f64>().ok();
+    }
+    None
 }
 
 /// Numbers read from an argument: the values, the shape, and whether it was a scalar.

@@ -65,6 +65,30 @@ def test_accepts_lists_tuples_float32_and_strided_arrays():
     np.testing.assert_array_equal(c(np.float32(0.5)), c(0.5))
 
 
+def test_python_numbers_are_read_as_numpy_reads_them():
+    # Python floats and ints skip numpy's conversion; the values, shapes and errors are
+    # those of the 0-d array numpy makes of them.
+    c = sk.BSpline([0, 0, 0, 0, 2**60, 2**61, 2**61, 2**61, 2**61], np.arange(15.0).reshape(5, 3), 3)
+    class Half(float):
+        pass
+    for x in (0.5, np.float64(0.5), Half(0.5), 1, 2**53 + 1, 2**60 + 3, True, np.int64(7), np.float32(0.25), -0.0):
+        ours = c(x)
+        assert ours.shape == (3,) and ours.dtype == np.float64
+        np.testing.assert_array_equal(ours, c(np.asarray(x, dtype=np.float64)))
+        np.testing.assert_array_equal(ours, c([x])[0])
+        np.testing.assert_array_equal(c(x, 1), c(np.asarray(x, dtype=np.float64), 1))
+    for x, message in ((2**62, r"^t: parameter 4611686018427388000 is outside the domain"),
+                       (-10**7, r"^t: parameter -10000000 is outside the domain"),
+                       (float("nan"), r"^t\[0\]: value is not finite \(NaN\)$"),
+                       (np.float64("inf"), r"^t\[0\]: value is not finite \(inf\)$")):
+        with pytest.raises(ValueError, match=message):
+            c(x)
+    with pytest.raises(OverflowError):
+        np.asarray(10**400, dtype=np.float64)
+    with pytest.raises(OverflowError):
+        c(10**400)
+
+
 def test_bezier_rational_hermite_catmull_rom():
     b = sk.Bezier([[0, 0], [1, 2], [3, 2], [4, 0]])
     np.testing.assert_allclose(b(0.5), [2.0, 1.5])
