@@ -91,6 +91,27 @@ fn main() {
         });
         report("sorted points, 10⁵ control points", ns, floor(repeats, M, 1));
     }
+    if run("sparse sorted") {
+        // Sorted parameters about as many as the spans, or fewer (plotting a large curve):
+        // blocks of four run over four spans or more.
+        let big = curve(N_LARGE);
+        for per_span in [1.0, 0.3] {
+            let m = (N_LARGE as f64 * per_span) as usize;
+            let ts: Vec<f64> = (0..m).map(|i| i as f64 / (m - 1) as f64).collect();
+            let reps = repeats * (M / m);
+            let ns = best(reps, m, &mut || {
+                big.eval_many(&ts, 0, &mut out[..m]);
+                out[m / 3][1]
+            });
+            let random: Vec<f64> = random[..m].to_vec();
+            let nr = best(reps, m, &mut || {
+                big.eval_many(&random, 0, &mut out[..m]);
+                out[m / 3][1]
+            });
+            report(&format!("sparse sorted, {per_span} a span, 10⁵ cp"), ns, floor(reps, m, 1));
+            report("  random parameters, as many", nr, floor(reps, m, 1));
+        }
+    }
     if run("random points") {
         // The peers' workload: point(t) one parameter at a time, random order, summed.
         let ns = best(repeats, M, &mut || random.iter().map(|&t| c.point(t).sum()).sum());

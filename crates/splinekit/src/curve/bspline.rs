@@ -319,7 +319,19 @@ mod tests {
         let mut jumbled = knots.clone();
         jumbled.reverse();
         knots.extend(jumbled);
-        vec![("sorted", sorted), ("reversed", reversed), ("random", random), ("repeated", repeated), ("knots", knots)]
+        // Sorted and sparser than the knots: the middle of every other span (blocks of four
+        // over seven spans), then the end.
+        let breaks = c.breakpoints();
+        let mut sparse: Vec<f64> = breaks.windows(2).step_by(2).map(|w| 0.5 * (w[0] + w[1])).collect();
+        sparse.push(d.end);
+        vec![
+            ("sorted", sorted),
+            ("reversed", reversed),
+            ("random", random),
+            ("repeated", repeated),
+            ("knots", knots),
+            ("sparse", sparse),
+        ]
     }
 
     /// The batch path (Bézier spans with a span cursor for degrees 1 … 7, the Cox–de Boor
