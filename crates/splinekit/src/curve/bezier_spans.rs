@@ -284,13 +284,7 @@ impl<const D: usize> BezierSpans<Point<D>> {
             // place, the cursor left at the last lane's span (a reversed batch runs on from
             // there).
             if !ts.windows(2).fold(true, |all, w| all & (w[0] <= w[1])) {
-                let mut span = at.span;
-                for (&t, o) in ts.iter().zip(os.chunks_exact_mut(K)) {
-                    span = locate(span, t);
-                    let (b, start, inv_h) = self.span_at::<W>(span - self.first_span);
-                    put_outputs::<W, K, D, O>(b, start, inv_h, t, o);
-                }
-                at.load(self, span);
+                self.lanes_in_place::<W, K, O>(&mut at, &ts, os, &locate);
                 continue;
             }
             // A sorted block that starts just past the cursor's span: the next span.
@@ -341,12 +335,25 @@ impl<const D: usize> BezierSpans<Point<D>> {
 }
 
 impl<const D: usize> BezierSpans<Point<D>> {
-    /// A block of [`LANES`] sorted parameters over more than two spans, lane by lane: each
-    /// lane's span located and its Bézier points read in place, the cursor left at the
-    /// last lane's span. Out of line, so that the blocked loop stays as it is for the
-    /// blocks that matter to it (inlined, this path slowed random batches by a sixth).
+    /// A block of [`LANES`] sorted parameters over more than two spans:
+    /// [`Self::lanes_in_place`] out of line, so that the blocked loop stays as it is for
+    /// the blocks that matter to it (inlined a second time, this path slowed random
+    /// batches by a sixth).
     #[inline(never)]
     fn sparse_block<const W: usize, const K: usize, O: Slot<Point<D>>>(
+        &self,
+        at: &mut SpanCursor<W, Point<D>>,
+        ts: &[f64; LANES],
+        os: &mut [O],
+        locate: &impl Fn(usize, f64) -> usize,
+    ) {
+        self.lanes_in_place::<W, K, O>(at, ts, os, locate)
+    }
+
+    /// A block of [`LANES`] parameters lane by lane: each lane's span located and its
+    /// Bézier points read in place, the cursor left at the last lane's span.
+    #[inline(always)]
+    fn lanes_in_place<const W: usize, const K: usize, O: Slot<Point<D>>>(
         &self,
         at: &mut SpanCursor<W, Point<D>>,
         ts: &[f64; LANES],
