@@ -80,6 +80,9 @@ fn one_line(s: &str) -> String {
 }
 
 fn main() {
+    // SAFETY: the first statement of `main`, before any thread is spawned; the Vulkan
+    // loader reads the variable later (see splinekit_render::backends).
+    unsafe { splinekit_render::prepare_headless_environment() };
     std::panic::set_hook(Box::new(|info| {
         let msg = info
             .payload()

@@ -8,6 +8,7 @@
 
 #![warn(missing_docs)]
 
+pub mod backends;
 pub mod camera;
 pub mod compose;
 pub mod geometry;
@@ -16,6 +17,7 @@ pub mod image;
 pub mod renderer;
 pub mod scene;
 
+pub use backends::prepare_headless_environment;
 pub use camera::Camera;
 pub use compose::{SurfaceFor, compose, compose_with, recompose_object};
 pub use geometry::{Geometry, GeometryData};

@@ -93,7 +93,8 @@ impl RenderTarget {
 pub use crate::geometry::{MESH_VERTEX_FLOATS, POINT_FLOATS, SEGMENT_FLOATS};
 
 impl Renderer {
-    /// Finds an adapter (Vulkan or GL; headless GL works on Mesa's llvmpipe) and builds the
+    /// Finds an adapter (Vulkan or GL, or what `WGPU_BACKEND` names: see
+    /// [`crate::backends`]; headless, Mesa's llvmpipe and lavapipe both work) and builds the
     /// pipelines.
     pub fn new() -> Result<Self, RenderError> {
         pollster::block_on(Self::new_async())
@@ -101,7 +102,7 @@ impl Renderer {
 
     async fn new_async() -> Result<Self, RenderError> {
         let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-        desc.backends = wgpu::Backends::VULKAN | wgpu::Backends::GL;
+        desc.backends = crate::backends::backends();
         desc.flags = wgpu::InstanceFlags::empty();
         let instance = wgpu::Instance::new(desc);
         let adapter = instance

@@ -34,7 +34,19 @@ fn torus_scene() -> RenderScene {
 }
 
 fn renderer() -> Renderer {
-    Renderer::new().expect("a graphics adapter (Mesa llvmpipe headless)")
+    Renderer::new().expect("a graphics adapter (Mesa llvmpipe or lavapipe headless)")
+}
+
+/// CI runs these tests on each of Mesa's software backends by naming one in `WGPU_BACKEND`
+/// (`.ci/run`): the renderer must then use that one, or the run tested the other twice.
+#[test]
+fn the_backend_named_by_wgpu_backend_is_the_one_used() {
+    let name = renderer().adapter_name().to_string();
+    match std::env::var("WGPU_BACKEND").as_deref() {
+        Ok("gl") => assert!(name.ends_with("(Gl)"), "{name}"),
+        Ok("vulkan") => assert!(name.ends_with("(Vulkan)"), "{name}"),
+        _ => assert!(name.ends_with("(Gl)") || name.ends_with("(Vulkan)"), "{name}"),
+    }
 }
 
 /// The stored reference image; `SPLINEKIT_BLESS=1` writes `img` as the new reference (a

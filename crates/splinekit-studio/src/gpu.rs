@@ -56,12 +56,13 @@ struct View {
 }
 
 impl Gpu {
-    /// Graphics for `window` on the first adapter that can present to it (Vulkan or GL;
-    /// GL on Mesa's llvmpipe without a GPU).
+    /// Graphics for `window` on the first adapter that can present to it (Vulkan or GL, or
+    /// what `WGPU_BACKEND` names, as the offscreen renderer; GL on Mesa's llvmpipe or Vulkan
+    /// on lavapipe without a GPU).
     /// The window is cleared to `background` before egui paints.
     pub fn new(window: Arc<Window>, display: OwnedDisplayHandle, background: egui::Color32) -> Result<Self, GpuError> {
         let mut desc = wgpu::InstanceDescriptor::new_with_display_handle(Box::new(display));
-        desc.backends = wgpu::Backends::VULKAN | wgpu::Backends::GL;
+        desc.backends = splinekit_render::backends::backends();
         desc.flags = wgpu::InstanceFlags::empty();
         let instance = wgpu::Instance::new(desc);
         let size = window.inner_size();

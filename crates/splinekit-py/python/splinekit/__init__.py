@@ -8,6 +8,30 @@ splinekit kernel (Rust). Arrays in, float64 C-contiguous arrays out; bad input r
 ``ValueError`` with the command line's one-line message.
 """
 
+import os as _os
+
+
+def _quiet_headless_vulkan() -> None:
+    """Turn Mesa's Vulkan device-selection layer off where no Wayland session is reachable.
+
+    Without it the layer makes libwayland print ``error: XDG_RUNTIME_DIR is invalid or not
+    set in the environment.`` at every render on machines with Mesa's Vulkan driver and no
+    desktop session (servers, containers, CI). The same rule as the command line's
+    (``splinekit_render::backends``): only when neither ``WAYLAND_SOCKET``, an absolute
+    ``WAYLAND_DISPLAY`` nor an absolute ``XDG_RUNTIME_DIR`` is set, and the user has not
+    chosen a device (``NODEVICE_SELECT``, ``MESA_VK_DEVICE_SELECT``, ``DRI_PRIME``).
+    """
+    env = _os.environ
+    if any(name in env for name in ("NODEVICE_SELECT", "MESA_VK_DEVICE_SELECT", "DRI_PRIME")):
+        return
+    absolute = lambda name: env.get(name, "").startswith("/")  # noqa: E731
+    if "WAYLAND_SOCKET" in env or absolute("WAYLAND_DISPLAY") or absolute("XDG_RUNTIME_DIR"):
+        return
+    env["NODEVICE_SELECT"] = "1"
+
+
+_quiet_headless_vulkan()
+
 from ._bfunction import BFunction, bfunction
 from ._splinekit import (
     BSpline,
