@@ -2,10 +2,12 @@
 
 pub mod catalog;
 pub mod dupin_cyclide;
+pub mod rational;
 pub mod separable;
 
 pub use catalog::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
 };
 pub use dupin_cyclide::dupin_cyclide;
+pub use rational::{RationalCoordinate, RationalSurface};
 pub use separable::{Factor, SeparableSurface, SeparableTerm};
