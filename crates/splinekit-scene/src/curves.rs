@@ -18,9 +18,9 @@ use splinekit::curve::Curve;
 
 pub use blending::{BlendingSource, BlendingSplineDoc, KnotSpacingDoc, LocalCurves, LocalDoc};
 pub use composite::{BFunctionShapeDoc, BlendDoc};
-pub use models::{
-    ButterflyDoc, CircleDoc, EllipseDoc, HeartDoc, HelixDoc, LissajousDoc, RollingDoc, RoseDoc, TrefoilDoc, TrochoidDoc,
-};
+// Every document that `models.rs` declares, so that a model kind is its declaration and
+// its line in the list below.
+pub use models::*;
 pub use splines::{BSplineDoc, BezierDoc, CatmullRomDoc, HermiteDoc, LineDoc, NurbsDoc, RationalBezierDoc};
 
 use crate::dimension::{AnyDimension, ShapeFamily};

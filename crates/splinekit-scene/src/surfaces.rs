@@ -22,10 +22,9 @@ use splinekit::surface::Surface;
 
 pub use blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, RuledDoc, SweepDoc};
-pub use models::{
-    AppleDoc, ConeDoc, CylinderDoc, DupinCyclideDoc, EnneperDoc, HeartSurfaceDoc, HelicoidDoc, KleinBottleDoc,
-    MobiusDoc, PlaneDoc, SeashellDoc, SphereDoc, TorusDoc,
-};
+// Every document that `models.rs` declares, so that a model kind is its declaration and
+// its line in the list below.
+pub use models::*;
 pub use nets::{BSplineSurfaceDoc, BezierSurfaceDoc, NurbsSurfaceDoc};
 pub use placed::PlacedDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
