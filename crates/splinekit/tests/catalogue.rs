@@ -1,0 +1,95 @@
+//! The catalogue of model surfaces and curves (GMlib's, written from their published
+//! formulas): each kind against its closed form written here independently at
+//! pseudo-random parameters, its implicit equation or curvature identity where the
+//! literature gives one, its partials of orders up to 3 in each parameter against central
+//! differences of the exact partial one order lower, and its seams where it is closed.
+
+mod common;
+use common::*;
+use splinekit::Point;
+use splinekit::surface::Surface;
+use splinekit::surface::model::*;
+use std::f64::consts::TAU;
+
+/// `n` pseudo-random pairs in (0, 1)² (a fixed linear congruential sequence).
+fn unit_pairs(n: usize) -> Vec<(f64, f64)> {
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    (0..n).map(|_| (next(), next())).collect()
+}
+
+/// `n` pseudo-random parameters inside the surface's domain, 2 % away from its edges.
+fn params<S: Surface<3> + ?Sized>(s: &S, n: usize) -> Vec<(f64, f64)> {
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    unit_pairs(n).into_iter().map(|(a, b)| (du.lerp(0.02 + 0.96 * a), dv.lerp(0.02 + 0.96 * b))).collect()
+}
+
+/// ∂^{i+j} by the fourth-order central difference of the exact (i−1, j) or (i, j−1) partial.
+fn fd<S: Surface<3> + ?Sized>(s: &S, u: f64, v: f64, i: usize, j: usize, h: f64) -> Point<3> {
+    let f = |du: f64, dv: f64| if i > 0 { s.partial(u + du, v, i - 1, j) } else { s.partial(u, v + dv, i, j - 1) };
+    let (e1, e2) = if i > 0 { ((h, 0.0), (2.0 * h, 0.0)) } else { ((0.0, h), (0.0, 2.0 * h)) };
+    (f(-e2.0, -e2.1) - f(e2.0, e2.1) + (f(e1.0, e1.1) - f(-e1.0, -e1.1)) * 8.0) / (12.0 * h)
+}
+
+/// Every partial of order ≤ 3 in u and in v at pseudo-random parameters against [`fd`],
+/// and the positions against `formula`, written independently.
+fn check_surface<S: Surface<3> + ?Sized>(s: &S, name: &str, formula: impl Fn(f64, f64) -> Point<3>) {
+    let h = 1e-4 * s.domain_u().length().min(s.domain_v().length());
+    for (u, v) in params(s, 24) {
+        let mut out = [Point::<3>::zeros(); 16];
+        s.eval_partials(u, v, 3, 3, &mut out);
+        let want = formula(u, v);
+        assert!((out[0] - want).norm() <= 1e-12 * want.norm().max(1.0), "{name} at ({u}, {v}): {} vs {want}", out[0]);
+        for i in 0..=3 {
+            for j in 0..=3 {
+                if i + j == 0 {
+                    continue;
+                }
+                let f = fd(s, u, v, i, j, h);
+                let scale = out[i * 4 + j].norm().max(out[0].norm()).max(1.0);
+                assert!(
+                    (out[i * 4 + j] - f).norm() < 1e-6 * scale,
+                    "{name}: ∂({i},{j}) at ({u}, {v}): {} vs {f}",
+                    out[i * 4 + j]
+                );
+            }
+        }
+    }
+    // Closed directions: the partials at both ends agree (a period of the formula).
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    for t in [0.1, 0.37, 0.8] {
+        let mut a = [Point::<3>::zeros(); 9];
+        let mut b = [Point::<3>::zeros(); 9];
+        let ends = [
+            (s.is_closed_u(), (du.start, dv.lerp(t)), (du.end - 1e-13 * du.length(), dv.lerp(t))),
+            (s.is_closed_v(), (du.lerp(t), dv.start), (du.lerp(t), dv.end - 1e-13 * dv.length())),
+        ];
+        for (closed, (u0, v0), (u1, v1)) in ends {
+            if closed {
+                s.eval_partials(u0, v0, 2, 2, &mut a);
+                s.eval_partials(u1, v1, 2, 2, &mut b);
+                for (p, q) in a.iter().zip(&b) {
+                    assert!((p - q).norm() < 1e-9 * p.norm().max(1.0), "{name}: seam at t = {t}: {p} vs {q}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_figure_8_klein_bottle_is_gmlibs_bottle_8() {
+    // GMlib's "bottle 8" is the figure-8 immersion that `klein_bottle` already is:
+    // a = R + cos(u/2) sin v − sin(u/2) sin 2v, (a cos u, a sin u, sin(u/2) sin v + cos(u/2) sin 2v).
+    let k = KleinBottle::new(2.5).unwrap();
+    check_surface(&k, "klein_bottle", |u, v| {
+        let a = 2.5 + (u / 2.0).cos() * v.sin() - (u / 2.0).sin() * (2.0 * v).sin();
+        p3(a * u.cos(), a * u.sin(), (u / 2.0).sin() * v.sin() + (u / 2.0).cos() * (2.0 * v).sin())
+    });
+    // The u-ends meet with a flip: S(2π, v) = S(0, 2π − v).
+    for (_, v) in params(&k, 8) {
+        assert!((k.point(TAU, v) - k.point(0.0, TAU - v)).norm() < 1e-12);
+    }
+}
