@@ -83,6 +83,8 @@ macro_rules! surface_kinds {
                 HeartSurface(HeartSurfaceDoc) = "heart_surface", python(base),
                 /// Dupin cyclide.
                 DupinCyclide(DupinCyclideDoc) = "dupin_cyclide", python(fields "DupinCyclide"),
+                /// Asteroidal sphere (the sphere cubed).
+                AsteroidalSphere(AsteroidalSphereDoc) = "asteroidal_sphere", python(fields "AsteroidalSphere"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

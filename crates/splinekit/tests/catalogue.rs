@@ -93,3 +93,20 @@ fn the_figure_8_klein_bottle_is_gmlibs_bottle_8() {
         assert!((k.point(TAU, v) - k.point(0.0, TAU - v)).norm() < 1e-12);
     }
 }
+
+#[test]
+fn the_asteroidal_sphere_is_the_sphere_cubed_and_lies_on_the_3d_astroid() {
+    let (a, b, c) = (1.2, 0.9, 1.5);
+    let s = AsteroidalSphere::new(a, b, c).unwrap();
+    check_surface(&s, "asteroidal_sphere", |u, v| {
+        p3((a * u.cos() * v.cos()).powi(3), (b * u.sin() * v.cos()).powi(3), (c * v.sin()).powi(3))
+    });
+    for (u, v) in params(&s, 32) {
+        let p = s.point(u, v);
+        let astroid = p.x.abs().cbrt().powi(2) / (a * a)
+            + p.y.abs().cbrt().powi(2) / (b * b)
+            + p.z.abs().cbrt().powi(2) / (c * c);
+        assert!((astroid - 1.0).abs() < 1e-12, "|x|^(2/3)/a² + … = {astroid} at ({u}, {v})");
+    }
+    assert!(AsteroidalSphere::new(0.0, 1.0, 1.0).is_err() && AsteroidalSphere::new(1.0, f64::NAN, 1.0).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "AsteroidalSphere",
     "Scene",
     "FitReport",
     "Mesh",
@@ -201,6 +202,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class AsteroidalSphere(Surface):
+    def __new__(cls, **fields: Any) -> "AsteroidalSphere": ...
 
 @final
 class Mesh(_Pickled):

@@ -169,3 +169,18 @@ model_document! {
     build(|d| dupin_cyclide(d.a, d.c, d.mu))
     exact(|d| SurfaceForm::Spline(crate::views::NetView::of_nurbs(&dupin_cyclide(d.a, d.c, d.mu)?)))
 }
+
+model_document! {
+    /// `{"type":"asteroidal_sphere","a":1,"b":1,"c":1}`: ((a cos u cos v)³, (b sin u cos v)³,
+    /// (c sin v)³), u ∈ [0, 2π], v ∈ [−π/2, π/2].
+    pub struct AsteroidalSphereDoc in Surfaces {
+        /// Semi-axis a (default 1).
+        pub a: f64 = 1.0,
+        /// Semi-axis b (default 1).
+        pub b: f64 = 1.0,
+        /// Semi-axis c (default 1).
+        pub c: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::AsteroidalSphere::new(d.a, d.b, d.c))
+    exact(|_d| SurfaceForm::Approximate)
+}
