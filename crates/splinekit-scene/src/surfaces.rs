@@ -85,6 +85,8 @@ macro_rules! surface_kinds {
                 DupinCyclide(DupinCyclideDoc) = "dupin_cyclide", python(fields "DupinCyclide"),
                 /// Asteroidal sphere (the sphere cubed).
                 AsteroidalSphere(AsteroidalSphereDoc) = "asteroidal_sphere", python(fields "AsteroidalSphere"),
+                /// Bent horns.
+                BentHorns(BentHornsDoc) = "bent_horns", python(fields "BentHorns"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

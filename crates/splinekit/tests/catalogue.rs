@@ -110,3 +110,19 @@ fn the_asteroidal_sphere_is_the_sphere_cubed_and_lies_on_the_3d_astroid() {
     }
     assert!(AsteroidalSphere::new(0.0, 1.0, 1.0).is_err() && AsteroidalSphere::new(1.0, f64::NAN, 1.0).is_err());
 }
+
+#[test]
+fn bent_horns_match_bourkes_formula() {
+    let phi = TAU / 3.0;
+    let s = BentHorns::new(0.5).unwrap();
+    check_surface(&s, "bent_horns", |u, v| {
+        p3(
+            (2.0 + u.cos()) * (v / 3.0 - v.sin()),
+            (2.0 + (u - phi).cos()) * (v.cos() - 1.0),
+            (2.0 + (u + phi).cos()) * (v.cos() - 1.0),
+        ) * 0.5
+    });
+    // The horns meet in a point at v = 0, whatever u.
+    assert!(s.point(0.3, 0.0).norm() < 1e-15 && s.point(-2.0, 0.0).norm() < 1e-15);
+    assert!(BentHorns::new(-1.0).is_err() && BentHorns::new(f64::INFINITY).is_err());
+}

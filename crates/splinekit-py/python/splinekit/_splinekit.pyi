@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "BentHorns",
     "AsteroidalSphere",
     "Scene",
     "FitReport",
@@ -202,6 +203,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class BentHorns(Surface):
+    def __new__(cls, **fields: Any) -> "BentHorns": ...
 
 @final
 class AsteroidalSphere(Surface):

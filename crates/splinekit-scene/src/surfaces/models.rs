@@ -184,3 +184,14 @@ model_document! {
     build(|d| splinekit::surface::model::AsteroidalSphere::new(d.a, d.b, d.c))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"bent_horns","scale":1}`: with φ = 2π/3, s·((2 + cos u)(v/3 − sin v),
+    /// (2 + cos(u − φ))(cos v − 1), (2 + cos(u + φ))(cos v − 1)), u ∈ [−π, π], v ∈ [−2π, 2π].
+    pub struct BentHornsDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::BentHorns::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}

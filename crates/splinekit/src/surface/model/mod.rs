@@ -1,12 +1,14 @@
 //! Model surfaces with exact partial derivatives of every order.
 
 pub mod asteroidal_sphere;
+pub mod bent_horns;
 pub mod catalog;
 pub mod dupin_cyclide;
 pub mod rational;
 pub mod separable;
 
 pub use asteroidal_sphere::AsteroidalSphere;
+pub use bent_horns::BentHorns;
 pub use catalog::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
 };
