@@ -87,6 +87,8 @@ macro_rules! surface_kinds {
                 AsteroidalSphere(AsteroidalSphereDoc) = "asteroidal_sphere", python(fields "AsteroidalSphere"),
                 /// Bent horns.
                 BentHorns(BentHornsDoc) = "bent_horns", python(fields "BentHorns"),
+                /// Bohemian dome.
+                BohemianDome(BohemianDomeDoc) = "bohemian_dome", python(fields "BohemianDome"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

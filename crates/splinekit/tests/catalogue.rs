@@ -126,3 +126,17 @@ fn bent_horns_match_bourkes_formula() {
     assert!(s.point(0.3, 0.0).norm() < 1e-15 && s.point(-2.0, 0.0).norm() < 1e-15);
     assert!(BentHorns::new(-1.0).is_err() && BentHorns::new(f64::INFINITY).is_err());
 }
+
+#[test]
+fn the_bohemian_dome_is_a_circle_moved_along_an_ellipse_and_lies_on_its_quartic() {
+    let (a, b, c) = (1.0, 0.8, 0.6);
+    let s = BohemianDome::new(a, b, c).unwrap();
+    check_surface(&s, "bohemian_dome", |u, v| p3(a * u.cos(), a * u.sin() + b * v.cos(), c * v.sin()));
+    for (u, v) in params(&s, 32) {
+        let p = s.point(u, v);
+        let w = b * b * (1.0 - p.z * p.z / (c * c));
+        let quartic = (p.x * p.x + p.y * p.y + w - a * a).powi(2) - 4.0 * p.y * p.y * w;
+        assert!(quartic.abs() < 1e-12, "quartic = {quartic} at ({u}, {v})");
+    }
+    assert!(BohemianDome::new(1.0, 0.0, 1.0).is_err() && BohemianDome::new(1.0, 1.0, -2.0).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "BohemianDome",
     "BentHorns",
     "AsteroidalSphere",
     "Scene",
@@ -203,6 +204,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class BohemianDome(Surface):
+    def __new__(cls, **fields: Any) -> "BohemianDome": ...
 
 @final
 class BentHorns(Surface):

@@ -195,3 +195,18 @@ model_document! {
     build(|d| splinekit::surface::model::BentHorns::new(d.scale))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"bohemian_dome","a":1,"b":1,"c":1}`: (a cos u, a sin u + b cos v, c sin v),
+    /// u, v ∈ [0, 2π].
+    pub struct BohemianDomeDoc in Surfaces {
+        /// Radius of the moving circle (default 1).
+        pub a: f64 = 1.0,
+        /// Semi-axis of its path along y (default 1).
+        pub b: f64 = 1.0,
+        /// Semi-axis of its path along z (default 1).
+        pub c: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::BohemianDome::new(d.a, d.b, d.c))
+    exact(|_d| SurfaceForm::Approximate)
+}
