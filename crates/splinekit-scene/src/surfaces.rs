@@ -89,6 +89,8 @@ macro_rules! surface_kinds {
                 BentHorns(BentHornsDoc) = "bent_horns", python(fields "BentHorns"),
                 /// Bohemian dome.
                 BohemianDome(BohemianDomeDoc) = "bohemian_dome", python(fields "BohemianDome"),
+                /// Boy's surface.
+                BoySurface(BoySurfaceDoc) = "boy_surface", python(fields "BoySurface"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

@@ -140,3 +140,43 @@ fn the_bohemian_dome_is_a_circle_moved_along_an_ellipse_and_lies_on_its_quartic(
     }
     assert!(BohemianDome::new(1.0, 0.0, 1.0).is_err() && BohemianDome::new(1.0, 1.0, -2.0).is_err());
 }
+
+/// Apéry's sextic of Boy's surface.
+fn apery(x: f64, y: f64, z: f64) -> f64 {
+    let (r2, q) = (std::f64::consts::SQRT_2, x * x + y * y);
+    64.0 * (1.0 - z).powi(3) * z.powi(3) - 48.0 * (1.0 - z).powi(2) * z * z * (3.0 * q + 2.0 * z * z)
+        + 12.0
+            * (1.0 - z)
+            * z
+            * (27.0 * q * q - 24.0 * z * z * q + 36.0 * r2 * y * z * (y * y - 3.0 * x * x) + 4.0 * z.powi(4))
+        + (9.0 * q - 2.0 * z * z)
+            * (-81.0 * q * q - 72.0 * z * z * q + 108.0 * r2 * x * z * (x * x - 3.0 * y * y) + 4.0 * z.powi(4))
+}
+
+#[test]
+fn boys_surface_lies_on_aperys_sextic_and_its_u_ends_meet_flipped() {
+    let r2 = std::f64::consts::SQRT_2;
+    let s = BoySurface::new(1.0).unwrap();
+    check_surface(&s, "boy_surface", |u, v| {
+        let d = 2.0 - r2 * (3.0 * u).sin() * (2.0 * v).sin();
+        let c2 = v.cos() * v.cos();
+        p3(
+            (r2 * c2 * (2.0 * u).cos() + u.cos() * (2.0 * v).sin()) / d,
+            (r2 * c2 * (2.0 * u).sin() - u.sin() * (2.0 * v).sin()) / d,
+            3.0 * c2 / d,
+        )
+    });
+    for (u, v) in params(&s, 32) {
+        let p = s.point(u, v) * (2.0 / 3.0);
+        // The sextic's terms are of size up to ~10³ here.
+        assert!(apery(p.x, p.y, p.z).abs() < 1e-10, "Apéry's sextic = {} at ({u}, {v})", apery(p.x, p.y, p.z));
+    }
+    let h = std::f64::consts::FRAC_PI_2;
+    for t in [0.3, 1.2, 2.9] {
+        assert!((s.point(h, t) - s.point(-h, std::f64::consts::PI - t)).norm() < 1e-12, "u-ends at v = {t}");
+    }
+    // Scaling scales; a bad scale is refused.
+    let big = BoySurface::new(2.5).unwrap();
+    assert!((big.partial(0.4, 1.1, 1, 2) - s.partial(0.4, 1.1, 1, 2) * 2.5).norm() < 1e-12);
+    assert!(BoySurface::new(0.0).is_err());
+}

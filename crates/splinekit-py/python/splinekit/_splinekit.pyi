@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "BoySurface",
     "BohemianDome",
     "BentHorns",
     "AsteroidalSphere",
@@ -204,6 +205,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class BoySurface(Surface):
+    def __new__(cls, **fields: Any) -> "BoySurface": ...
 
 @final
 class BohemianDome(Surface):

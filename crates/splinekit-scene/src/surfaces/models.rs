@@ -210,3 +210,15 @@ model_document! {
     build(|d| splinekit::surface::model::BohemianDome::new(d.a, d.b, d.c))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"boy_surface","scale":1}`: Apéry's Boy surface; with d = 2 − √2 sin 3u sin 2v,
+    /// s·((√2 cos²v cos 2u + cos u sin 2v)/d, (√2 cos²v sin 2u − sin u sin 2v)/d, 3 cos²v/d),
+    /// u ∈ [−π/2, π/2], v ∈ [0, π].
+    pub struct BoySurfaceDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::BoySurface::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}

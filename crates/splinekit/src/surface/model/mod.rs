@@ -3,6 +3,7 @@
 pub mod asteroidal_sphere;
 pub mod bent_horns;
 pub mod bohemian_dome;
+pub mod boy_surface;
 pub mod catalog;
 pub mod dupin_cyclide;
 pub mod rational;
@@ -11,6 +12,7 @@ pub mod separable;
 pub use asteroidal_sphere::AsteroidalSphere;
 pub use bent_horns::BentHorns;
 pub use bohemian_dome::BohemianDome;
+pub use boy_surface::BoySurface;
 pub use catalog::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
 };
