@@ -91,6 +91,8 @@ macro_rules! surface_kinds {
                 BohemianDome(BohemianDomeDoc) = "bohemian_dome", python(fields "BohemianDome"),
                 /// Boy's surface.
                 BoySurface(BoySurfaceDoc) = "boy_surface", python(fields "BoySurface"),
+                /// Cross-cap.
+                CrossCap(CrossCapDoc) = "cross_cap", python(fields "CrossCap"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

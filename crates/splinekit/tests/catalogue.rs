@@ -180,3 +180,21 @@ fn boys_surface_lies_on_aperys_sextic_and_its_u_ends_meet_flipped() {
     assert!((big.partial(0.4, 1.1, 1, 2) - s.partial(0.4, 1.1, 1, 2) * 2.5).norm() < 1e-12);
     assert!(BoySurface::new(0.0).is_err());
 }
+
+#[test]
+fn the_cross_cap_is_the_sphere_under_a_quadratic_map_and_lies_on_its_quartic() {
+    let s = CrossCap::new(1.0).unwrap();
+    check_surface(&s, "cross_cap", |u, v| {
+        // p = (cos u sin v, sin u sin v, cos v) ↦ (p₂p₃, 2p₁p₂, p₁² − p₂²).
+        let p = p3(u.cos() * v.sin(), u.sin() * v.sin(), v.cos());
+        p3(p.y * p.z, 2.0 * p.x * p.y, p.x * p.x - p.y * p.y)
+    });
+    for (u, v) in params(&s, 32) {
+        let p = s.point(u, v);
+        let quartic = 4.0 * p.x * p.x * (p.norm_squared() + p.z) + p.y * p.y * (p.y * p.y + p.z * p.z - 1.0);
+        assert!(quartic.abs() < 1e-13, "quartic = {quartic} at ({u}, {v})");
+    }
+    let twice = CrossCap::new(2.0).unwrap();
+    assert!((twice.point(1.0, 0.7) - s.point(1.0, 0.7) * 2.0).norm() < 1e-15);
+    assert!(CrossCap::new(f64::NAN).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "CrossCap",
     "BoySurface",
     "BohemianDome",
     "BentHorns",
@@ -205,6 +206,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class CrossCap(Surface):
+    def __new__(cls, **fields: Any) -> "CrossCap": ...
 
 @final
 class BoySurface(Surface):

@@ -222,3 +222,14 @@ model_document! {
     build(|d| splinekit::surface::model::BoySurface::new(d.scale))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"cross_cap","scale":1}`: s·(½ sin u sin 2v, sin 2u sin²v, cos 2u sin²v),
+    /// u ∈ [0, 2π], v ∈ [0, π/2].
+    pub struct CrossCapDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::CrossCap::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}

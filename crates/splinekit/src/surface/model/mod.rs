@@ -5,6 +5,7 @@ pub mod bent_horns;
 pub mod bohemian_dome;
 pub mod boy_surface;
 pub mod catalog;
+pub mod cross_cap;
 pub mod dupin_cyclide;
 pub mod rational;
 pub mod separable;
@@ -16,6 +17,7 @@ pub use boy_surface::BoySurface;
 pub use catalog::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
 };
+pub use cross_cap::CrossCap;
 pub use dupin_cyclide::dupin_cyclide;
 pub use rational::{RationalCoordinate, RationalSurface};
 pub use separable::{Factor, SeparableSurface, SeparableTerm};
