@@ -93,6 +93,8 @@ macro_rules! surface_kinds {
                 BoySurface(BoySurfaceDoc) = "boy_surface", python(fields "BoySurface"),
                 /// Cross-cap.
                 CrossCap(CrossCapDoc) = "cross_cap", python(fields "CrossCap"),
+                /// Dini's surface.
+                DiniSurface(DiniSurfaceDoc) = "dini_surface", python(fields "DiniSurface"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

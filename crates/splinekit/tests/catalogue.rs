@@ -198,3 +198,20 @@ fn the_cross_cap_is_the_sphere_under_a_quadratic_map_and_lies_on_its_quartic() {
     assert!((twice.point(1.0, 0.7) - s.point(1.0, 0.7) * 2.0).norm() < 1e-15);
     assert!(CrossCap::new(f64::NAN).is_err());
 }
+
+#[test]
+fn dinis_surface_has_constant_gaussian_curvature() {
+    let (a, b) = (1.0, 0.2);
+    let s = DiniSurface::new(a, b).unwrap();
+    check_surface(&s, "dini_surface", |u, v| {
+        p3(a * u.cos() * v.sin(), a * u.sin() * v.sin(), a * (v.cos() + (v / 2.0).tan().ln()) + b * u)
+    });
+    let other = DiniSurface::new(1.5, -0.4).unwrap();
+    for (surface, a, b) in [(&s, a, b), (&other, 1.5, -0.4)] {
+        for (u, v) in params(surface, 32) {
+            let k = surface.curvatures(u, v).unwrap().gaussian;
+            assert!((k + 1.0 / (a * a + b * b)).abs() < 1e-10, "K = {k} at ({u}, {v})");
+        }
+    }
+    assert!(DiniSurface::new(0.0, 0.2).is_err() && DiniSurface::new(1.0, f64::NAN).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "DiniSurface",
     "CrossCap",
     "BoySurface",
     "BohemianDome",
@@ -206,6 +207,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class DiniSurface(Surface):
+    def __new__(cls, **fields: Any) -> "DiniSurface": ...
 
 @final
 class CrossCap(Surface):

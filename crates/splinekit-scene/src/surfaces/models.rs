@@ -233,3 +233,16 @@ model_document! {
     build(|d| splinekit::surface::model::CrossCap::new(d.scale))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"dini_surface","a":1,"b":0.2}`: (a cos u sin v, a sin u sin v,
+    /// a (cos v + ln tan(v/2)) + b u), u ∈ [0, 4π], v ∈ [0.1, 2]; K = −1/(a² + b²).
+    pub struct DiniSurfaceDoc in Surfaces {
+        /// Radius a (default 1).
+        pub a: f64 = 1.0,
+        /// Twist b, any finite value (default 0.2).
+        pub b: f64 = 0.2,
+    }
+    build(|d| splinekit::surface::model::DiniSurface::new(d.a, d.b))
+    exact(|_d| SurfaceForm::Approximate)
+}

@@ -6,6 +6,7 @@ pub mod bohemian_dome;
 pub mod boy_surface;
 pub mod catalog;
 pub mod cross_cap;
+pub mod dini_surface;
 pub mod dupin_cyclide;
 pub mod rational;
 pub mod separable;
@@ -18,6 +19,7 @@ pub use catalog::{
     Apple, Cone, Cylinder, Enneper, HeartSurface, Helicoid, KleinBottle, MobiusStrip, Plane, Seashell, Sphere, Torus,
 };
 pub use cross_cap::CrossCap;
+pub use dini_surface::DiniSurface;
 pub use dupin_cyclide::dupin_cyclide;
 pub use rational::{RationalCoordinate, RationalSurface};
 pub use separable::{Factor, SeparableSurface, SeparableTerm};
