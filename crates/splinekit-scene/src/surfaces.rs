@@ -95,6 +95,8 @@ macro_rules! surface_kinds {
                 CrossCap(CrossCapDoc) = "cross_cap", python(fields "CrossCap"),
                 /// Dini's surface.
                 DiniSurface(DiniSurfaceDoc) = "dini_surface", python(fields "DiniSurface"),
+                /// Eight surface.
+                EightSurface(EightSurfaceDoc) = "eight_surface", python(fields "EightSurface"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

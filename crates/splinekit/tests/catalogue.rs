@@ -215,3 +215,15 @@ fn dinis_surface_has_constant_gaussian_curvature() {
     }
     assert!(DiniSurface::new(0.0, 0.2).is_err() && DiniSurface::new(1.0, f64::NAN).is_err());
 }
+
+#[test]
+fn the_eight_surface_turns_a_figure_eight_and_lies_on_its_quartic() {
+    let s = EightSurface::new(1.0).unwrap();
+    check_surface(&s, "eight_surface", |u, v| p3(u.cos() * (2.0 * v).sin(), u.sin() * (2.0 * v).sin(), v.sin()));
+    for (u, v) in params(&s, 32) {
+        let p = s.point(u, v);
+        let quartic = p.x * p.x + p.y * p.y - 4.0 * p.z * p.z * (1.0 - p.z * p.z);
+        assert!(quartic.abs() < 1e-14, "x² + y² − 4z²(1 − z²) = {quartic} at ({u}, {v})");
+    }
+    assert!(EightSurface::new(-1.0).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "EightSurface",
     "DiniSurface",
     "CrossCap",
     "BoySurface",
@@ -207,6 +208,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class EightSurface(Surface):
+    def __new__(cls, **fields: Any) -> "EightSurface": ...
 
 @final
 class DiniSurface(Surface):

@@ -246,3 +246,14 @@ model_document! {
     build(|d| splinekit::surface::model::DiniSurface::new(d.a, d.b))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"eight_surface","scale":1}`: s·(cos u sin 2v, sin u sin 2v, sin v),
+    /// u ∈ [0, 2π], v ∈ [−π/2, π/2].
+    pub struct EightSurfaceDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::EightSurface::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}

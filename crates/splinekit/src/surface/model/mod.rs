@@ -8,6 +8,7 @@ pub mod catalog;
 pub mod cross_cap;
 pub mod dini_surface;
 pub mod dupin_cyclide;
+pub mod eight_surface;
 pub mod rational;
 pub mod separable;
 
@@ -21,5 +22,6 @@ pub use catalog::{
 pub use cross_cap::CrossCap;
 pub use dini_surface::DiniSurface;
 pub use dupin_cyclide::dupin_cyclide;
+pub use eight_surface::EightSurface;
 pub use rational::{RationalCoordinate, RationalSurface};
 pub use separable::{Factor, SeparableSurface, SeparableTerm};
