@@ -97,6 +97,8 @@ macro_rules! surface_kinds {
                 DiniSurface(DiniSurfaceDoc) = "dini_surface", python(fields "DiniSurface"),
                 /// Eight surface.
                 EightSurface(EightSurfaceDoc) = "eight_surface", python(fields "EightSurface"),
+                /// Inside-out (elliptic-tube) torus.
+                InsideOutTorus(InsideOutTorusDoc) = "inside_out_torus", python(fields "InsideOutTorus"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

@@ -227,3 +227,21 @@ fn the_eight_surface_turns_a_figure_eight_and_lies_on_its_quartic() {
     }
     assert!(EightSurface::new(-1.0).is_err());
 }
+
+#[test]
+fn the_inside_out_torus_is_an_elliptic_torus_through_its_axis() {
+    let (a, b, c) = (1.0, 2.0, 1.5);
+    let s = InsideOutTorus::new(a, b, c).unwrap();
+    check_surface(&s, "inside_out_torus", |u, v| {
+        p3((a + b * v.cos()) * u.cos(), (a + b * v.cos()) * u.sin(), c * v.sin())
+    });
+    for (u, v) in params(&s, 32) {
+        let p = s.point(u, v);
+        let rho = (p.x * p.x + p.y * p.y).sqrt();
+        let e = |r: f64| (r - a).powi(2) / (b * b) + p.z * p.z / (c * c) - 1.0;
+        assert!((e(rho) * e(-rho)).abs() < 1e-12, "not on the torus at ({u}, {v})");
+    }
+    // With b > a the tube crosses the axis: the inner equator is on the far side.
+    assert!((s.point(0.0, std::f64::consts::PI) - p3(a - b, 0.0, 0.0)).norm() < 1e-15);
+    assert!(InsideOutTorus::new(1.0, 0.0, 1.0).is_err() && InsideOutTorus::new(1.0, 1.0, f64::INFINITY).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "InsideOutTorus",
     "EightSurface",
     "DiniSurface",
     "CrossCap",
@@ -208,6 +209,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class InsideOutTorus(Surface):
+    def __new__(cls, **fields: Any) -> "InsideOutTorus": ...
 
 @final
 class EightSurface(Surface):

@@ -257,3 +257,18 @@ model_document! {
     build(|d| splinekit::surface::model::EightSurface::new(d.scale))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"inside_out_torus","wheel_radius":1,"tube_radius_1":2,"tube_radius_2":1.5}`:
+    /// ((a + b cos v) cos u, (a + b cos v) sin u, c sin v), u, v ∈ [0, 2π].
+    pub struct InsideOutTorusDoc in Surfaces {
+        /// Wheel radius a (default 1).
+        pub wheel_radius: f64 = 1.0,
+        /// Radial semi-axis b of the tube (default 2: through the axis).
+        pub tube_radius_1: f64 = 2.0,
+        /// Axial semi-axis c of the tube (default 1.5).
+        pub tube_radius_2: f64 = 1.5,
+    }
+    build(|d| splinekit::surface::model::InsideOutTorus::new(d.wheel_radius, d.tube_radius_1, d.tube_radius_2))
+    exact(|_d| SurfaceForm::Approximate)
+}

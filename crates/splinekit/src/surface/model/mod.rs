@@ -9,6 +9,7 @@ pub mod cross_cap;
 pub mod dini_surface;
 pub mod dupin_cyclide;
 pub mod eight_surface;
+pub mod inside_out_torus;
 pub mod rational;
 pub mod separable;
 
@@ -23,5 +24,6 @@ pub use cross_cap::CrossCap;
 pub use dini_surface::DiniSurface;
 pub use dupin_cyclide::dupin_cyclide;
 pub use eight_surface::EightSurface;
+pub use inside_out_torus::InsideOutTorus;
 pub use rational::{RationalCoordinate, RationalSurface};
 pub use separable::{Factor, SeparableSurface, SeparableTerm};
