@@ -99,6 +99,8 @@ macro_rules! surface_kinds {
                 EightSurface(EightSurfaceDoc) = "eight_surface", python(fields "EightSurface"),
                 /// Inside-out (elliptic-tube) torus.
                 InsideOutTorus(InsideOutTorusDoc) = "inside_out_torus", python(fields "InsideOutTorus"),
+                /// Kuen's surface.
+                KuenSurface(KuenSurfaceDoc) = "kuen_surface", python(fields "KuenSurface"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

@@ -245,3 +245,24 @@ fn the_inside_out_torus_is_an_elliptic_torus_through_its_axis() {
     assert!((s.point(0.0, std::f64::consts::PI) - p3(a - b, 0.0, 0.0)).norm() < 1e-15);
     assert!(InsideOutTorus::new(1.0, 0.0, 1.0).is_err() && InsideOutTorus::new(1.0, 1.0, f64::INFINITY).is_err());
 }
+
+#[test]
+fn kuens_surface_has_constant_gaussian_curvature_minus_one() {
+    let s = KuenSurface::new(1.0).unwrap();
+    check_surface(&s, "kuen_surface", |u, v| {
+        let d = 1.0 + u * u * v.sin() * v.sin();
+        p3(
+            2.0 * (u.cos() + u * u.sin()) * v.sin() / d,
+            2.0 * (u.sin() - u * u.cos()) * v.sin() / d,
+            (v / 2.0).tan().ln() + 2.0 * v.cos() / d,
+        )
+    });
+    for (u, v) in params(&s, 48) {
+        let k = s.curvatures(u, v).unwrap().gaussian;
+        assert!((k + 1.0).abs() < 1e-9, "K = {k} at ({u}, {v})");
+    }
+    // Scaled by r, K = −1/r².
+    let r = KuenSurface::new(2.0).unwrap();
+    assert!((r.curvatures(0.7, 1.3).unwrap().gaussian + 0.25).abs() < 1e-10);
+    assert!(KuenSurface::new(0.0).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "KuenSurface",
     "InsideOutTorus",
     "EightSurface",
     "DiniSurface",
@@ -209,6 +210,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class KuenSurface(Surface):
+    def __new__(cls, **fields: Any) -> "KuenSurface": ...
 
 @final
 class InsideOutTorus(Surface):

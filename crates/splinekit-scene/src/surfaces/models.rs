@@ -272,3 +272,15 @@ model_document! {
     build(|d| splinekit::surface::model::InsideOutTorus::new(d.wheel_radius, d.tube_radius_1, d.tube_radius_2))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"kuen_surface","scale":1}`: with d = 1 + u² sin²v, s·(2(cos u + u sin u) sin v/d,
+    /// 2(sin u − u cos u) sin v/d, ln tan(v/2) + 2 cos v/d), u ∈ [−4.5, 4.5],
+    /// v ∈ [0.1, π − 0.1]; K = −1/s².
+    pub struct KuenSurfaceDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::KuenSurface::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}

@@ -10,6 +10,7 @@ pub mod dini_surface;
 pub mod dupin_cyclide;
 pub mod eight_surface;
 pub mod inside_out_torus;
+pub mod kuen_surface;
 pub mod rational;
 pub mod separable;
 
@@ -25,5 +26,6 @@ pub use dini_surface::DiniSurface;
 pub use dupin_cyclide::dupin_cyclide;
 pub use eight_surface::EightSurface;
 pub use inside_out_torus::InsideOutTorus;
+pub use kuen_surface::KuenSurface;
 pub use rational::{RationalCoordinate, RationalSurface};
 pub use separable::{Factor, SeparableSurface, SeparableTerm};
