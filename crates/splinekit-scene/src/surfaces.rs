@@ -101,6 +101,8 @@ macro_rules! surface_kinds {
                 InsideOutTorus(InsideOutTorusDoc) = "inside_out_torus", python(fields "InsideOutTorus"),
                 /// Kuen's surface.
                 KuenSurface(KuenSurfaceDoc) = "kuen_surface", python(fields "KuenSurface"),
+                /// Sine surface.
+                SineSurface(SineSurfaceDoc) = "sine_surface", python(fields "SineSurface"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

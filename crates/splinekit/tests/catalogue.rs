@@ -266,3 +266,10 @@ fn kuens_surface_has_constant_gaussian_curvature_minus_one() {
     assert!((r.curvatures(0.7, 1.3).unwrap().gaussian + 0.25).abs() < 1e-10);
     assert!(KuenSurface::new(0.0).is_err());
 }
+
+#[test]
+fn the_sine_surface_matches_its_formula() {
+    let s = SineSurface::new(1.5).unwrap();
+    check_surface(&s, "sine_surface", |u, v| p3(u.sin(), v.sin(), (u + v).sin()) * 1.5);
+    assert!(SineSurface::new(0.0).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "SineSurface",
     "KuenSurface",
     "InsideOutTorus",
     "EightSurface",
@@ -210,6 +211,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class SineSurface(Surface):
+    def __new__(cls, **fields: Any) -> "SineSurface": ...
 
 @final
 class KuenSurface(Surface):

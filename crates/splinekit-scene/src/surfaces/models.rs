@@ -284,3 +284,13 @@ model_document! {
     build(|d| splinekit::surface::model::KuenSurface::new(d.scale))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"sine_surface","scale":1}`: s·(sin u, sin v, sin(u + v)), u, v ∈ [0, 2π].
+    pub struct SineSurfaceDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::SineSurface::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}

@@ -13,6 +13,7 @@ pub mod inside_out_torus;
 pub mod kuen_surface;
 pub mod rational;
 pub mod separable;
+pub mod sine_surface;
 
 pub use asteroidal_sphere::AsteroidalSphere;
 pub use bent_horns::BentHorns;
@@ -29,3 +30,4 @@ pub use inside_out_torus::InsideOutTorus;
 pub use kuen_surface::KuenSurface;
 pub use rational::{RationalCoordinate, RationalSurface};
 pub use separable::{Factor, SeparableSurface, SeparableTerm};
+pub use sine_surface::SineSurface;
