@@ -103,6 +103,8 @@ macro_rules! surface_kinds {
                 KuenSurface(KuenSurfaceDoc) = "kuen_surface", python(fields "KuenSurface"),
                 /// Sine surface.
                 SineSurface(SineSurfaceDoc) = "sine_surface", python(fields "SineSurface"),
+                /// Slippers surface.
+                SlippersSurface(SlippersSurfaceDoc) = "slippers_surface", python(fields "SlippersSurface"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

@@ -273,3 +273,17 @@ fn the_sine_surface_matches_its_formula() {
     check_surface(&s, "sine_surface", |u, v| p3(u.sin(), v.sin(), (u + v).sin()) * 1.5);
     assert!(SineSurface::new(0.0).is_err());
 }
+
+#[test]
+fn the_slippers_surface_matches_bourkes_formula() {
+    let phi = TAU / 3.0;
+    let s = SlippersSurface::new(1.0).unwrap();
+    check_surface(&s, "slippers_surface", |u, v| {
+        p3(
+            (2.0 + u.cos()) * v.cos().powi(3) * v.sin(),
+            (2.0 + (u + phi).cos()) * (v + phi).cos().powi(2) * (v + phi).sin().powi(2),
+            -(2.0 + (u - phi).cos()) * (phi - v).cos().powi(2) * (phi - v).sin().powi(3),
+        )
+    });
+    assert!(SlippersSurface::new(-0.5).is_err());
+}

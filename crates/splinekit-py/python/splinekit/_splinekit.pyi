@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "SlippersSurface",
     "SineSurface",
     "KuenSurface",
     "InsideOutTorus",
@@ -211,6 +212,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class SlippersSurface(Surface):
+    def __new__(cls, **fields: Any) -> "SlippersSurface": ...
 
 @final
 class SineSurface(Surface):

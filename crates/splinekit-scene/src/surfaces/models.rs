@@ -294,3 +294,15 @@ model_document! {
     build(|d| splinekit::surface::model::SineSurface::new(d.scale))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"slippers_surface","scale":1}`: with φ = 2π/3, s·((2 + cos u) cos³v sin v,
+    /// (2 + cos(u + φ)) cos²(v + φ) sin²(v + φ), −(2 + cos(u − φ)) cos²(φ − v) sin³(φ − v)),
+    /// u, v ∈ [0, 2π].
+    pub struct SlippersSurfaceDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::SlippersSurface::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}

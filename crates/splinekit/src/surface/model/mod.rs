@@ -14,6 +14,7 @@ pub mod kuen_surface;
 pub mod rational;
 pub mod separable;
 pub mod sine_surface;
+pub mod slippers_surface;
 
 pub use asteroidal_sphere::AsteroidalSphere;
 pub use bent_horns::BentHorns;
@@ -31,3 +32,4 @@ pub use kuen_surface::KuenSurface;
 pub use rational::{RationalCoordinate, RationalSurface};
 pub use separable::{Factor, SeparableSurface, SeparableTerm};
 pub use sine_surface::SineSurface;
+pub use slippers_surface::SlippersSurface;
