@@ -105,6 +105,8 @@ macro_rules! surface_kinds {
                 SineSurface(SineSurfaceDoc) = "sine_surface", python(fields "SineSurface"),
                 /// Slippers surface.
                 SlippersSurface(SlippersSurfaceDoc) = "slippers_surface", python(fields "SlippersSurface"),
+                /// Steiner's Roman surface.
+                RomanSurface(RomanSurfaceDoc) = "roman_surface", python(fields "RomanSurface"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

@@ -287,3 +287,19 @@ fn the_slippers_surface_matches_bourkes_formula() {
     });
     assert!(SlippersSurface::new(-0.5).is_err());
 }
+
+#[test]
+fn steiners_roman_surface_lies_on_steiners_quartic() {
+    let r = 1.3;
+    let s = RomanSurface::new(r).unwrap();
+    check_surface(&s, "roman_surface", |u, v| {
+        let p = p3(u.cos() * v.cos(), u.sin() * v.cos(), v.sin());
+        p3(p.x * p.z, p.y * p.z, p.x * p.y) * (r * r)
+    });
+    for (u, v) in params(&s, 32) {
+        let p = s.point(u, v);
+        let quartic = p.x * p.x * p.y * p.y + p.y * p.y * p.z * p.z + p.z * p.z * p.x * p.x - r * r * p.x * p.y * p.z;
+        assert!(quartic.abs() < 1e-14, "quartic = {quartic} at ({u}, {v})");
+    }
+    assert!(RomanSurface::new(0.0).is_err());
+}

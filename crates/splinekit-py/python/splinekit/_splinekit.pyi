@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "RomanSurface",
     "SlippersSurface",
     "SineSurface",
     "KuenSurface",
@@ -212,6 +213,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class RomanSurface(Surface):
+    def __new__(cls, **fields: Any) -> "RomanSurface": ...
 
 @final
 class SlippersSurface(Surface):

@@ -306,3 +306,14 @@ model_document! {
     build(|d| splinekit::surface::model::SlippersSurface::new(d.scale))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"roman_surface","radius":1}`: r²·(cos u cos v sin v, sin u cos v sin v,
+    /// cos u sin u cos²v), u ∈ [0, 2π], v ∈ [−π/2, π/2].
+    pub struct RomanSurfaceDoc in Surfaces {
+        /// r, of Steiner's quartic x²y² + y²z² + z²x² = r²xyz (default 1).
+        pub radius: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::RomanSurface::new(d.radius))
+    exact(|_d| SurfaceForm::Approximate)
+}
