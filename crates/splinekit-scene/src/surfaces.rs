@@ -107,6 +107,8 @@ macro_rules! surface_kinds {
                 SlippersSurface(SlippersSurfaceDoc) = "slippers_surface", python(fields "SlippersSurface"),
                 /// Steiner's Roman surface.
                 RomanSurface(RomanSurfaceDoc) = "roman_surface", python(fields "RomanSurface"),
+                /// Swallowtail.
+                Swallowtail(SwallowtailDoc) = "swallowtail", python(fields "Swallowtail"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

@@ -303,3 +303,16 @@ fn steiners_roman_surface_lies_on_steiners_quartic() {
     }
     assert!(RomanSurface::new(0.0).is_err());
 }
+
+#[test]
+fn the_swallowtail_is_where_the_quartic_has_a_double_root() {
+    let s = Swallowtail::new(1.0).unwrap();
+    check_surface(&s, "swallowtail", |u, v| p3(u * v * v + 3.0 * v.powi(4), -2.0 * u * v - 4.0 * v.powi(3), u));
+    for (u, v) in params(&s, 32) {
+        // t⁴ + z t² + y t + x and its derivative vanish at t = v.
+        let p = s.point(u, v);
+        let (q, dq) = (v.powi(4) + p.z * v * v + p.y * v + p.x, 4.0 * v.powi(3) + 2.0 * p.z * v + p.y);
+        assert!(q.abs() < 1e-13 && dq.abs() < 1e-13, "q = {q}, q′ = {dq} at ({u}, {v})");
+    }
+    assert!(Swallowtail::new(f64::NEG_INFINITY).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "Swallowtail",
     "RomanSurface",
     "SlippersSurface",
     "SineSurface",
@@ -213,6 +214,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class Swallowtail(Surface):
+    def __new__(cls, **fields: Any) -> "Swallowtail": ...
 
 @final
 class RomanSurface(Surface):

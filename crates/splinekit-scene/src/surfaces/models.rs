@@ -317,3 +317,14 @@ model_document! {
     build(|d| splinekit::surface::model::RomanSurface::new(d.radius))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"swallowtail","scale":1}`: s·(u v² + 3v⁴, −2uv − 4v³, u), u ∈ [−2, 2],
+    /// v ∈ [−1, 1].
+    pub struct SwallowtailDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::Swallowtail::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}

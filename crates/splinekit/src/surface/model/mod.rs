@@ -16,6 +16,7 @@ pub mod roman_surface;
 pub mod separable;
 pub mod sine_surface;
 pub mod slippers_surface;
+pub mod swallowtail;
 
 pub use asteroidal_sphere::AsteroidalSphere;
 pub use bent_horns::BentHorns;
@@ -35,3 +36,4 @@ pub use roman_surface::RomanSurface;
 pub use separable::{Factor, SeparableSurface, SeparableTerm};
 pub use sine_surface::SineSurface;
 pub use slippers_surface::SlippersSurface;
+pub use swallowtail::Swallowtail;
