@@ -109,6 +109,8 @@ macro_rules! surface_kinds {
                 RomanSurface(RomanSurfaceDoc) = "roman_surface", python(fields "RomanSurface"),
                 /// Swallowtail.
                 Swallowtail(SwallowtailDoc) = "swallowtail", python(fields "Swallowtail"),
+                /// Trianguloid trefoil.
+                TrianguloidTrefoil(TrianguloidTrefoilDoc) = "trianguloid_trefoil", python(fields "TrianguloidTrefoil"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

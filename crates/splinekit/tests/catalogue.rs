@@ -316,3 +316,17 @@ fn the_swallowtail_is_where_the_quartic_has_a_double_root() {
     }
     assert!(Swallowtail::new(f64::NEG_INFINITY).is_err());
 }
+
+#[test]
+fn the_trianguloid_trefoil_matches_bourkes_formula() {
+    let phi = TAU / 3.0;
+    let s = TrianguloidTrefoil::new(1.0).unwrap();
+    check_surface(&s, "trianguloid_trefoil", |u, v| {
+        p3(
+            2.0 * (3.0 * u).sin() / (2.0 + v.cos()),
+            2.0 * (u.sin() + 2.0 * (2.0 * u).sin()) / (2.0 + (v + phi).cos()),
+            (u.cos() - 2.0 * (2.0 * u).cos()) * (2.0 + v.cos()) * (2.0 + (v + phi).cos()) / 4.0,
+        )
+    });
+    assert!(TrianguloidTrefoil::new(0.0).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "TrianguloidTrefoil",
     "Swallowtail",
     "RomanSurface",
     "SlippersSurface",
@@ -214,6 +215,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class TrianguloidTrefoil(Surface):
+    def __new__(cls, **fields: Any) -> "TrianguloidTrefoil": ...
 
 @final
 class Swallowtail(Surface):

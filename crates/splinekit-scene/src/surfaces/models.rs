@@ -328,3 +328,15 @@ model_document! {
     build(|d| splinekit::surface::model::Swallowtail::new(d.scale))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"trianguloid_trefoil","scale":1}`: with φ = 2π/3, s·(2 sin 3u/(2 + cos v),
+    /// 2(sin u + 2 sin 2u)/(2 + cos(v + φ)), (cos u − 2 cos 2u)(2 + cos v)(2 + cos(v + φ))/4),
+    /// u, v ∈ [−π, π].
+    pub struct TrianguloidTrefoilDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::TrianguloidTrefoil::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}

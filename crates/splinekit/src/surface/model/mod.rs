@@ -17,6 +17,7 @@ pub mod separable;
 pub mod sine_surface;
 pub mod slippers_surface;
 pub mod swallowtail;
+pub mod trianguloid_trefoil;
 
 pub use asteroidal_sphere::AsteroidalSphere;
 pub use bent_horns::BentHorns;
@@ -37,3 +38,4 @@ pub use separable::{Factor, SeparableSurface, SeparableTerm};
 pub use sine_surface::SineSurface;
 pub use slippers_surface::SlippersSurface;
 pub use swallowtail::Swallowtail;
+pub use trianguloid_trefoil::TrianguloidTrefoil;
