@@ -111,6 +111,8 @@ macro_rules! surface_kinds {
                 Swallowtail(SwallowtailDoc) = "swallowtail", python(fields "Swallowtail"),
                 /// Trianguloid trefoil.
                 TrianguloidTrefoil(TrianguloidTrefoilDoc) = "trianguloid_trefoil", python(fields "TrianguloidTrefoil"),
+                /// Whitney umbrella.
+                WhitneyUmbrella(WhitneyUmbrellaDoc) = "whitney_umbrella", python(fields "WhitneyUmbrella"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

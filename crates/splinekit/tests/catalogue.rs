@@ -330,3 +330,17 @@ fn the_trianguloid_trefoil_matches_bourkes_formula() {
     });
     assert!(TrianguloidTrefoil::new(0.0).is_err());
 }
+
+#[test]
+fn the_whitney_umbrella_lies_on_x2_equals_y2_z() {
+    let s = WhitneyUmbrella::new(1.0).unwrap();
+    check_surface(&s, "whitney_umbrella", |u, v| p3(u * v, u, v * v));
+    let scaled = WhitneyUmbrella::new(2.0).unwrap();
+    for (u, v) in params(&s, 32) {
+        let p = s.point(u, v);
+        assert!((p.x * p.x - p.y * p.y * p.z).abs() < 1e-15, "x² − y²z at ({u}, {v})");
+        let q = scaled.point(u, v);
+        assert!((2.0 * q.x * q.x - q.y * q.y * q.z).abs() < 1e-14, "r x² − y²z at ({u}, {v})");
+    }
+    assert!(WhitneyUmbrella::new(0.0).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "WhitneyUmbrella",
     "TrianguloidTrefoil",
     "Swallowtail",
     "RomanSurface",
@@ -215,6 +216,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class WhitneyUmbrella(Surface):
+    def __new__(cls, **fields: Any) -> "WhitneyUmbrella": ...
 
 @final
 class TrianguloidTrefoil(Surface):

@@ -340,3 +340,13 @@ model_document! {
     build(|d| splinekit::surface::model::TrianguloidTrefoil::new(d.scale))
     exact(|_d| SurfaceForm::Approximate)
 }
+
+model_document! {
+    /// `{"type":"whitney_umbrella","scale":1}`: s·(uv, u, v²), u, v ∈ [−1, 1].
+    pub struct WhitneyUmbrellaDoc in Surfaces {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::surface::model::WhitneyUmbrella::new(d.scale))
+    exact(|_d| SurfaceForm::Approximate)
+}

@@ -18,6 +18,7 @@ pub mod sine_surface;
 pub mod slippers_surface;
 pub mod swallowtail;
 pub mod trianguloid_trefoil;
+pub mod whitney_umbrella;
 
 pub use asteroidal_sphere::AsteroidalSphere;
 pub use bent_horns::BentHorns;
@@ -39,3 +40,4 @@ pub use sine_surface::SineSurface;
 pub use slippers_surface::SlippersSurface;
 pub use swallowtail::Swallowtail;
 pub use trianguloid_trefoil::TrianguloidTrefoil;
+pub use whitney_umbrella::WhitneyUmbrella;
