@@ -76,6 +76,8 @@ macro_rules! curve_kinds {
                 Butterfly(ButterflyDoc) = "butterfly", python(base),
                 /// Hypotrochoid or epitrochoid (spirograph curve).
                 Trochoid(TrochoidDoc) = "trochoid", python(base),
+                /// Logarithmic spiral.
+                LogarithmicSpiral(LogarithmicSpiralDoc) = "logarithmic_spiral", python(fields "LogarithmicSpiral"),
                 /// A B-function as a 1-D curve.
                 Bfunction(BFunctionShapeDoc) = "bfunction", python(base),
                 /// Blend of two curves.

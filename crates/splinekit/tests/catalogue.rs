@@ -344,3 +344,49 @@ fn the_whitney_umbrella_lies_on_x2_equals_y2_z() {
     }
     assert!(WhitneyUmbrella::new(0.0).is_err());
 }
+
+/// The curve's derivatives of orders 1 … 4 at pseudo-random parameters against the
+/// central difference, of step h, of the exact order below.
+fn check_curve(c: &dyn splinekit::curve::Curve<3>, name: &str, h: f64) {
+    let dom = c.domain();
+    for (a, _) in unit_pairs(16) {
+        let t = dom.lerp(0.02 + 0.96 * a);
+        let mut out = [Point::<3>::zeros(); 5];
+        c.eval(t, &mut out);
+        for k in 1..=4 {
+            let f = finite_difference(c, t, k, h);
+            let scale = out[k].norm().max(out[k - 1].norm()).max(1.0);
+            assert!((out[k] - f).norm() < 2e-6 * scale, "{name}: order {k} at {t}: {} vs {f}", out[k]);
+        }
+    }
+}
+
+#[test]
+fn the_logarithmic_spiral_keeps_its_angle_and_has_its_closed_form_length() {
+    use splinekit::curve::model::LogarithmicSpiral;
+    use splinekit::curve::{Curve, CurveArcLength};
+    let (a, b) = (0.5, 0.15);
+    let c = LogarithmicSpiral::new(a, b, 3.0).unwrap();
+    check_curve(&c, "logarithmic_spiral", 1e-4);
+    assert_eq!((c.domain().start, c.domain().end), (0.0, 6.0 * std::f64::consts::PI));
+    let cot_psi = b;
+    for (s, _) in unit_pairs(24) {
+        let t = c.domain().lerp(s);
+        let r = a * (b * t).exp();
+        assert!((c.point(t) - p3(r * t.cos(), r * t.sin(), 0.0)).norm() < 1e-13 * r.max(1.0));
+        // The angle ψ between the radius and the tangent: cot ψ = b.
+        let (p, d) = (c.point(t), c.derivative(t, 1));
+        let cos = p.dot(&d) / (p.norm() * d.norm());
+        assert!((cos / (1.0 - cos * cos).sqrt() - cot_psi).abs() < 1e-12, "cot ψ at {t}");
+        assert!((c.curvature(t) - 1.0 / (r * (1.0 + b * b).sqrt())).abs() < 1e-12 / r, "κ at {t}");
+    }
+    let end = c.domain().end;
+    let length = a * (1.0 + b * b).sqrt() * ((b * end).exp() - 1.0) / b;
+    assert!((c.length(1e-12) - length).abs() < 1e-9 * length, "{} vs {length}", c.length(1e-12));
+    // b = 0 is the circle; an overflowing growth and bad fields are refused.
+    let circle = LogarithmicSpiral::new(2.0, 0.0, 1.0).unwrap();
+    assert!((circle.length(1e-12) - 4.0 * std::f64::consts::PI).abs() < 1e-10);
+    assert!(LogarithmicSpiral::new(1.0, 1e3, 1e3).is_err());
+    assert!(LogarithmicSpiral::new(0.0, 0.1, 1.0).is_err() && LogarithmicSpiral::new(1.0, f64::NAN, 1.0).is_err());
+    assert!(LogarithmicSpiral::new(1.0, 0.1, 0.0).is_err());
+}

@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "LogarithmicSpiral",
     "WhitneyUmbrella",
     "TrianguloidTrefoil",
     "Swallowtail",
@@ -216,6 +217,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class LogarithmicSpiral(Curve):
+    def __new__(cls, **fields: Any) -> "LogarithmicSpiral": ...
 
 @final
 class WhitneyUmbrella(Surface):
