@@ -78,6 +78,8 @@ macro_rules! curve_kinds {
                 Trochoid(TrochoidDoc) = "trochoid", python(base),
                 /// Logarithmic spiral.
                 LogarithmicSpiral(LogarithmicSpiralDoc) = "logarithmic_spiral", python(fields "LogarithmicSpiral"),
+                /// Chrysanthemum curve.
+                Chrysanthemum(ChrysanthemumDoc) = "chrysanthemum", python(fields "Chrysanthemum"),
                 /// A B-function as a 1-D curve.
                 Bfunction(BFunctionShapeDoc) = "bfunction", python(base),
                 /// Blend of two curves.

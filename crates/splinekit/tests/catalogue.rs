@@ -390,3 +390,21 @@ fn the_logarithmic_spiral_keeps_its_angle_and_has_its_closed_form_length() {
     assert!(LogarithmicSpiral::new(0.0, 0.1, 1.0).is_err() && LogarithmicSpiral::new(1.0, f64::NAN, 1.0).is_err());
     assert!(LogarithmicSpiral::new(1.0, 0.1, 0.0).is_err());
 }
+
+#[test]
+fn the_chrysanthemum_curve_matches_its_polar_formula() {
+    use splinekit::curve::Curve;
+    use splinekit::curve::model::Chrysanthemum;
+    let c = Chrysanthemum::new(0.5).unwrap();
+    // sin⁸ of an angle turning at up to 34 rad per unit t has harmonics up to 272: a step of
+    // 10⁻⁵ keeps the difference's h⁴ f⁽⁷⁾/30 below its tolerance.
+    check_curve(&c, "chrysanthemum", 1e-5);
+    assert_eq!((c.domain().start, c.domain().end), (0.0, 21.0 * std::f64::consts::PI));
+    for (s, _) in unit_pairs(200) {
+        let t = c.domain().lerp(s);
+        let r = 5.0 * (1.0 + (11.0 * t / 5.0).sin())
+            - 4.0 * (17.0 * t / 3.0).sin().powi(4) * (2.0 * (3.0 * t).cos() - 28.0 * t).sin().powi(8);
+        assert!((c.point(t) - p3(r * t.cos(), r * t.sin(), 0.0) * 0.5).norm() < 1e-12, "at {t}");
+    }
+    assert!(!c.is_closed() && Chrysanthemum::new(0.0).is_err());
+}

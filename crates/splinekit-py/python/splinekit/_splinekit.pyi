@@ -24,6 +24,7 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "Chrysanthemum",
     "LogarithmicSpiral",
     "WhitneyUmbrella",
     "TrianguloidTrefoil",
@@ -217,6 +218,10 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class Chrysanthemum(Curve):
+    def __new__(cls, **fields: Any) -> "Chrysanthemum": ...
 
 @final
 class LogarithmicSpiral(Curve):

@@ -148,6 +148,17 @@ model_document! {
     exact(|_d| CurveForm::Approximate)
 }
 
+model_document! {
+    /// `{"type":"chrysanthemum","scale":1}`: s·r(t)(cos t, sin t, 0),
+    /// r = 5(1 + sin(11t/5)) − 4 sin⁴(17t/3) sin⁸(2 cos 3t − 28t), t ∈ [0, 21π].
+    pub struct ChrysanthemumDoc in Curves {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::curve::model::Chrysanthemum::new(d.scale))
+    exact(|_d| CurveForm::Approximate)
+}
+
 /// Where the circle of a trochoid rolls: `"inside"` or `"outside"` the fixed circle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]

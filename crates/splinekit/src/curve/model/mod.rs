@@ -2,6 +2,7 @@
 //! z = 0), except [`Line`], which lives in any dimension.
 
 pub mod butterfly;
+pub mod chrysanthemum;
 pub mod circle;
 pub mod ellipse;
 pub mod heart;
@@ -15,6 +16,7 @@ pub mod trig;
 pub mod trochoid;
 
 pub use butterfly::Butterfly;
+pub use chrysanthemum::Chrysanthemum;
 pub use circle::Circle;
 pub use ellipse::Ellipse;
 pub use heart::Heart;
