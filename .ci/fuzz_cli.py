@@ -11,8 +11,8 @@ B = sys.argv[1]
 random.seed(int(sys.argv[2]) if len(sys.argv) > 2 else 1)
 TMP = tempfile.mkdtemp()
 SVG, OBJ, STL, GLB, PNG = (os.path.join(TMP, "fuzz." + e) for e in ("svg", "obj", "stl", "glb", "png"))
-types = ["bezier","rational_bezier","bspline","nurbs","hermite","catmull_rom","line","circle","ellipse","helix","heart","rose","lissajous","trefoil","butterfly","bfunction","blend","blending_spline",
-         "bezier_surface","bspline_surface","nurbs_surface","plane","cylinder","cone","sphere","torus","mobius","klein_bottle","enneper","helicoid","seashell","apple","heart_surface","revolution","ruled","extrusion","coons","sweep","trimmed","blending_spline_surface","subdivision_surface"]
+types = ["bezier","rational_bezier","bspline","nurbs","hermite","catmull_rom","line","circle","ellipse","helix","heart","rose","lissajous","trefoil","butterfly","logarithmic_spiral","chrysanthemum","bfunction","blend","blending_spline",
+         "bezier_surface","bspline_surface","nurbs_surface","plane","cylinder","cone","sphere","torus","mobius","klein_bottle","enneper","helicoid","seashell","apple","heart_surface","asteroidal_sphere","bent_horns","bohemian_dome","boy_surface","cross_cap","dini_surface","eight_surface","inside_out_torus","kuen_surface","sine_surface","slippers_surface","roman_surface","swallowtail","trianguloid_trefoil","whitney_umbrella","revolution","ruled","extrusion","coons","sweep","trimmed","blending_spline_surface","subdivision_surface"]
 def num():
     return random.choice([0, 1, -1, 0.5, 2, 3, 1e300, -1e300, 1e-300, 7, 100000, -0.0, 1e9, 0.25, 12, "x", None, [], True])
 def pt(d):
@@ -31,7 +31,7 @@ def animation(local):
                        {"pulse": {"amplitude": num()}}, {"spin": {}}, 3])
     return random.choice([[{"local": local, "motions": [m]}], [{"local": local}], {"0": m}])
 def curve(depth=0):
-    t = random.choice(types[:18]) if depth < 2 else "line"
+    t = random.choice(types[:20]) if depth < 2 else "line"
     d = random.choice([1,2,3,3,3,4,5])
     n = random.choice([0,1,2,3,4,5,8])
     p = random.choice([0,1,2,3,5,-1,100000])
@@ -47,6 +47,8 @@ def curve(depth=0):
     if t == "line": doc.update({"from": pt(d), "to": pt(d)})
     if t in ("circle","rose","helix"): doc["radius"] = num()
     if t == "rose": doc["n"] = num()
+    if t == "logarithmic_spiral": doc.update({f: num() for f in ("a", "b", "turns") if random.random() < 0.6})
+    if t == "chrysanthemum" and random.random() < 0.7: doc["scale"] = num()
     if t == "bfunction" or (t == "blend" and random.random() < 0.7):
         bt = random.choice(["linear", "polynomial", "beta", "trigonometric", "half_cosine", "rational", "erbs", "erbs", "nope"])
         bf = {"type": bt}
@@ -72,7 +74,7 @@ def curve(depth=0):
     if random.random() < 0.05: doc["bogus"] = 1
     return doc
 def surface(depth=0):
-    t = random.choice(types[15:])
+    t = random.choice(types[17:])
     doc = {"type": t}
     d = random.choice([2,3,3,3])
     nu, nv = random.choice([0,1,2,3,4]), random.choice([1,2,3,4])
@@ -85,6 +87,12 @@ def surface(depth=0):
     if t == "nurbs_surface": doc["weights"] = [[random.choice([1, 2, 0]) for _ in range(nv)] for _ in range(nu)]
     if t in ("sphere","cylinder","cone"): doc["radius"] = num()
     if t == "torus": doc.update(major_radius=num(), minor_radius=num())
+    # The catalogue's fields (a scale, semi-axes, radii).
+    for f in {"asteroidal_sphere": "abc", "bohemian_dome": "abc", "dini_surface": "ab"}.get(t, ""):
+        if random.random() < 0.5: doc[f] = num()
+    if t in ("roman_surface",): doc["radius"] = num()
+    if t == "inside_out_torus": doc.update(wheel_radius=num(), tube_radius_1=num(), tube_radius_2=num())
+    if t in ("bent_horns","boy_surface","cross_cap","eight_surface","kuen_surface","sine_surface","slippers_surface","swallowtail","trianguloid_trefoil","whitney_umbrella") and random.random() < 0.7: doc["scale"] = num()
     if t in ("revolution","extrusion"): doc["curve"] = curve(1)
     if t == "extrusion": doc["direction"] = pt(random.choice([2,3]))
     if t == "revolution": doc["angle"] = num(); doc["axis"] = pt(3)

@@ -328,7 +328,24 @@ fn gallery_writes_every_figure_and_an_index() {
     let o = run(&["gallery", "-o", dir.to_str().unwrap()], "");
     assert_eq!(o.code, 0, "{}", o.stderr);
     let index = std::fs::read_to_string(dir.join("index.html")).unwrap();
-    let figures: Vec<&str> = index.split("<img src=\"").skip(1).map(|s| s.split('"').next().unwrap()).collect();
+    let pictures: Vec<&str> = index.split("<img src=\"").skip(1).map(|s| s.split('"').next().unwrap()).collect();
+    // The catalogue: one picture of every model kind's example, named after its type, and
+    // the sheet of all of them.
+    let (catalogue, figures): (Vec<&str>, Vec<&str>) = pictures.iter().partition(|f| f.starts_with("catalogue/"));
+    let models: Vec<&str> = splinekit_scene::SurfaceDocument::examples()
+        .iter()
+        .filter(|d| d.blending_model())
+        .map(|d| d.type_name())
+        .chain(splinekit_scene::CurveDocument::examples().iter().filter(|d| d.blending_model()).map(|d| d.type_name()))
+        .collect();
+    assert_eq!(catalogue, models.iter().map(|m| format!("catalogue/{m}.png")).collect::<Vec<_>>());
+    assert!(models.len() >= 39 && models.contains(&"boy_surface") && models.contains(&"chrysanthemum"));
+    for f in &catalogue {
+        let img = splinekit_render::Image::from_png(&std::fs::read(dir.join(f)).unwrap()).unwrap();
+        assert!(img.coverage() > 0.002 && img.coverage() < 0.95, "{f}: {} of the picture is drawn", img.coverage());
+    }
+    let sheet = splinekit_render::Image::from_png(&std::fs::read(dir.join("catalogue/all.png")).unwrap()).unwrap();
+    assert_eq!((sheet.width, sheet.height), (6 * 240, models.len().div_ceil(6) as u32 * 180));
     assert!(figures.len() >= 40, "{figures:?}");
     let (mut png, mut gif) = (0, 0);
     for f in &figures {
@@ -346,7 +363,12 @@ fn gallery_writes_every_figure_and_an_index() {
         }
     }
     assert!(png >= 18 && gif >= 4, "{png} PNG, {gif} GIF");
-    let links: Vec<&str> = index.split("<a href=\"").skip(1).map(|s| s.split('"').next().unwrap()).collect();
+    let links: Vec<&str> = index
+        .split("<a href=\"")
+        .skip(1)
+        .map(|s| s.split('"').next().unwrap())
+        .filter(|l| *l != "catalogue/all.png")
+        .collect();
     let (gltf, others): (Vec<&str>, Vec<&str>) = links.iter().partition(|l| l.ends_with(".glb"));
     let (step, pictures): (Vec<&str>, Vec<&str>) = others.iter().partition(|l| l.ends_with(".step"));
     assert_eq!(gltf.len(), png + gif);

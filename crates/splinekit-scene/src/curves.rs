@@ -18,9 +18,9 @@ use splinekit::curve::Curve;
 
 pub use blending::{BlendingSource, BlendingSplineDoc, KnotSpacingDoc, LocalCurves, LocalDoc};
 pub use composite::{BFunctionShapeDoc, BlendDoc};
-pub use models::{
-    ButterflyDoc, CircleDoc, EllipseDoc, HeartDoc, HelixDoc, LissajousDoc, RollingDoc, RoseDoc, TrefoilDoc, TrochoidDoc,
-};
+// Every document that `models.rs` declares, so that a model kind is its declaration and
+// its line in the list below.
+pub use models::*;
 pub use splines::{BSplineDoc, BezierDoc, CatmullRomDoc, HermiteDoc, LineDoc, NurbsDoc, RationalBezierDoc};
 
 use crate::dimension::{AnyDimension, ShapeFamily};
@@ -76,6 +76,10 @@ macro_rules! curve_kinds {
                 Butterfly(ButterflyDoc) = "butterfly", python(base),
                 /// Hypotrochoid or epitrochoid (spirograph curve).
                 Trochoid(TrochoidDoc) = "trochoid", python(base),
+                /// Logarithmic spiral.
+                LogarithmicSpiral(LogarithmicSpiralDoc) = "logarithmic_spiral", python(fields "LogarithmicSpiral"),
+                /// Chrysanthemum curve.
+                Chrysanthemum(ChrysanthemumDoc) = "chrysanthemum", python(fields "Chrysanthemum"),
                 /// A B-function as a 1-D curve.
                 Bfunction(BFunctionShapeDoc) = "bfunction", python(base),
                 /// Blend of two curves.

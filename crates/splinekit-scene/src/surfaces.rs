@@ -22,10 +22,9 @@ use splinekit::surface::Surface;
 
 pub use blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, RuledDoc, SweepDoc};
-pub use models::{
-    AppleDoc, ConeDoc, CylinderDoc, DupinCyclideDoc, EnneperDoc, HeartSurfaceDoc, HelicoidDoc, KleinBottleDoc,
-    MobiusDoc, PlaneDoc, SeashellDoc, SphereDoc, TorusDoc,
-};
+// Every document that `models.rs` declares, so that a model kind is its declaration and
+// its line in the list below.
+pub use models::*;
 pub use nets::{BSplineSurfaceDoc, BezierSurfaceDoc, NurbsSurfaceDoc};
 pub use placed::PlacedDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
@@ -84,6 +83,36 @@ macro_rules! surface_kinds {
                 HeartSurface(HeartSurfaceDoc) = "heart_surface", python(base),
                 /// Dupin cyclide.
                 DupinCyclide(DupinCyclideDoc) = "dupin_cyclide", python(fields "DupinCyclide"),
+                /// Asteroidal sphere (the sphere cubed).
+                AsteroidalSphere(AsteroidalSphereDoc) = "asteroidal_sphere", python(fields "AsteroidalSphere"),
+                /// Bent horns.
+                BentHorns(BentHornsDoc) = "bent_horns", python(fields "BentHorns"),
+                /// Bohemian dome.
+                BohemianDome(BohemianDomeDoc) = "bohemian_dome", python(fields "BohemianDome"),
+                /// Boy's surface.
+                BoySurface(BoySurfaceDoc) = "boy_surface", python(fields "BoySurface"),
+                /// Cross-cap.
+                CrossCap(CrossCapDoc) = "cross_cap", python(fields "CrossCap"),
+                /// Dini's surface.
+                DiniSurface(DiniSurfaceDoc) = "dini_surface", python(fields "DiniSurface"),
+                /// Eight surface.
+                EightSurface(EightSurfaceDoc) = "eight_surface", python(fields "EightSurface"),
+                /// Inside-out (elliptic-tube) torus.
+                InsideOutTorus(InsideOutTorusDoc) = "inside_out_torus", python(fields "InsideOutTorus"),
+                /// Kuen's surface.
+                KuenSurface(KuenSurfaceDoc) = "kuen_surface", python(fields "KuenSurface"),
+                /// Sine surface.
+                SineSurface(SineSurfaceDoc) = "sine_surface", python(fields "SineSurface"),
+                /// Slippers surface.
+                SlippersSurface(SlippersSurfaceDoc) = "slippers_surface", python(fields "SlippersSurface"),
+                /// Steiner's Roman surface.
+                RomanSurface(RomanSurfaceDoc) = "roman_surface", python(fields "RomanSurface"),
+                /// Swallowtail.
+                Swallowtail(SwallowtailDoc) = "swallowtail", python(fields "Swallowtail"),
+                /// Trianguloid trefoil.
+                TrianguloidTrefoil(TrianguloidTrefoilDoc) = "trianguloid_trefoil", python(fields "TrianguloidTrefoil"),
+                /// Whitney umbrella.
+                WhitneyUmbrella(WhitneyUmbrellaDoc) = "whitney_umbrella", python(fields "WhitneyUmbrella"),
                 /// Surface of revolution.
                 Revolution(RevolutionDoc) = "revolution", python(base),
                 /// Ruled surface between two curves.

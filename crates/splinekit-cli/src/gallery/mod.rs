@@ -2,6 +2,7 @@
 //! glTF exports, and plots (SVG) — into a folder with an index page that shows every glTF
 //! export in a 3-D viewer (three.js, `viewer.rs`) and works opened from the file system.
 
+mod catalogue;
 mod figures;
 mod queries;
 mod scenes;
@@ -47,11 +48,13 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
     let renderer =
         Renderer::new().map_err(|e| anyhow!("gallery: the plots are in {}, but {e}", args.output.display()))?;
     let rendered = rendered(&folder, &renderer)?;
+    let tiles = catalogue::catalogue(&folder, &renderer)?;
     viewer::write_scripts(&folder)?;
-    folder.write("index.html", index_html(&rendered, &plots).as_bytes())?;
+    folder.write("index.html", index_html(&rendered, &catalogue::html(&tiles), &plots).as_bytes())?;
     eprintln!(
-        "gallery: {} rendered scenes and {} plots in {} ({:.1} s, {}); open {}",
+        "gallery: {} rendered scenes, the catalogue of {} model kinds and {} plots in {} ({:.1} s, {}); open {}",
         rendered.len(),
+        tiles.len(),
         plots.len(),
         args.output.display(),
         start.elapsed().as_secs_f64(),
@@ -203,8 +206,8 @@ fn render_scene(
 }
 
 /// The index page: the rendered figures, each in a 3-D viewer with its picture as the poster,
-/// then the plots.
-fn index_html(rendered: &[Entry], plots: &[Entry]) -> String {
+/// the catalogue's section, then the plots.
+fn index_html(rendered: &[Entry], catalogue: &str, plots: &[Entry]) -> String {
     let mut html = String::from(
         "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>splinekit gallery</title>\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
@@ -221,6 +224,8 @@ fn index_html(rendered: &[Entry], plots: &[Entry]) -> String {
          .view.failed::after{content:\"picture only: the 3-D view failed\"}\
          .timebar{display:flex;gap:0.6em;align-items:center;margin:0.3em 0}\
          .timebar button{min-width:4.5em}.timebar input{flex:1}.timebar output{font-variant-numeric:tabular-nums}\
+         .catalogue{display:grid;grid-template-columns:repeat(auto-fill,minmax(160px,1fr));gap:0.5em}\
+         .catalogue figcaption{text-align:center}\
          </style></head>\n\
          <body><h1>splinekit gallery</h1><p>Every figure is computed and drawn by splinekit: shaded scenes \
          rendered offscreen with wgpu (the scene documents are in <code>examples/scenes/</code>), animations \
@@ -232,6 +237,9 @@ fn index_html(rendered: &[Entry], plots: &[Entry]) -> String {
          picture link shows the rendering.</p>\n",
     );
     for (title, entries) in [("Scenes and animations", rendered), ("Plots", plots)] {
+        if title == "Plots" {
+            html.push_str(catalogue);
+        }
         html.push_str(&format!("<h2>{title}</h2><div class=\"grid\">\n"));
         for e in entries {
             let mut link = String::new();

@@ -24,6 +24,23 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "Chrysanthemum",
+    "LogarithmicSpiral",
+    "WhitneyUmbrella",
+    "TrianguloidTrefoil",
+    "Swallowtail",
+    "RomanSurface",
+    "SlippersSurface",
+    "SineSurface",
+    "KuenSurface",
+    "InsideOutTorus",
+    "EightSurface",
+    "DiniSurface",
+    "CrossCap",
+    "BoySurface",
+    "BohemianDome",
+    "BentHorns",
+    "AsteroidalSphere",
     "Scene",
     "FitReport",
     "Mesh",
@@ -201,6 +218,74 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class Chrysanthemum(Curve):
+    def __new__(cls, **fields: Any) -> "Chrysanthemum": ...
+
+@final
+class LogarithmicSpiral(Curve):
+    def __new__(cls, **fields: Any) -> "LogarithmicSpiral": ...
+
+@final
+class WhitneyUmbrella(Surface):
+    def __new__(cls, **fields: Any) -> "WhitneyUmbrella": ...
+
+@final
+class TrianguloidTrefoil(Surface):
+    def __new__(cls, **fields: Any) -> "TrianguloidTrefoil": ...
+
+@final
+class Swallowtail(Surface):
+    def __new__(cls, **fields: Any) -> "Swallowtail": ...
+
+@final
+class RomanSurface(Surface):
+    def __new__(cls, **fields: Any) -> "RomanSurface": ...
+
+@final
+class SlippersSurface(Surface):
+    def __new__(cls, **fields: Any) -> "SlippersSurface": ...
+
+@final
+class SineSurface(Surface):
+    def __new__(cls, **fields: Any) -> "SineSurface": ...
+
+@final
+class KuenSurface(Surface):
+    def __new__(cls, **fields: Any) -> "KuenSurface": ...
+
+@final
+class InsideOutTorus(Surface):
+    def __new__(cls, **fields: Any) -> "InsideOutTorus": ...
+
+@final
+class EightSurface(Surface):
+    def __new__(cls, **fields: Any) -> "EightSurface": ...
+
+@final
+class DiniSurface(Surface):
+    def __new__(cls, **fields: Any) -> "DiniSurface": ...
+
+@final
+class CrossCap(Surface):
+    def __new__(cls, **fields: Any) -> "CrossCap": ...
+
+@final
+class BoySurface(Surface):
+    def __new__(cls, **fields: Any) -> "BoySurface": ...
+
+@final
+class BohemianDome(Surface):
+    def __new__(cls, **fields: Any) -> "BohemianDome": ...
+
+@final
+class BentHorns(Surface):
+    def __new__(cls, **fields: Any) -> "BentHorns": ...
+
+@final
+class AsteroidalSphere(Surface):
+    def __new__(cls, **fields: Any) -> "AsteroidalSphere": ...
 
 @final
 class Mesh(_Pickled):

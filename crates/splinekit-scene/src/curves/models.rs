@@ -133,6 +133,32 @@ model_document! {
     exact(|_d| CurveForm::Approximate)
 }
 
+model_document! {
+    /// `{"type":"logarithmic_spiral","a":1,"b":0.1,"turns":4}`: (a e^{bt} cos t, a e^{bt} sin t, 0),
+    /// t ∈ [0, 2π·turns].
+    pub struct LogarithmicSpiralDoc in Curves {
+        /// Radius at t = 0 (default 1).
+        pub a: f64 = 1.0,
+        /// Growth per radian, any finite value (default 0.1).
+        pub b: f64 = 0.1,
+        /// Turns (default 4).
+        pub turns: f64 = 4.0,
+    }
+    build(|d| splinekit::curve::model::LogarithmicSpiral::new(d.a, d.b, d.turns))
+    exact(|_d| CurveForm::Approximate)
+}
+
+model_document! {
+    /// `{"type":"chrysanthemum","scale":1}`: s·r(t)(cos t, sin t, 0),
+    /// r = 5(1 + sin(11t/5)) − 4 sin⁴(17t/3) sin⁸(2 cos 3t − 28t), t ∈ [0, 21π].
+    pub struct ChrysanthemumDoc in Curves {
+        /// Uniform scale (default 1).
+        pub scale: f64 = 1.0,
+    }
+    build(|d| splinekit::curve::model::Chrysanthemum::new(d.scale))
+    exact(|_d| CurveForm::Approximate)
+}
+
 /// Where the circle of a trochoid rolls: `"inside"` or `"outside"` the fixed circle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]

@@ -19,6 +19,9 @@ pub enum Factor {
     LogOneMinus(f64),
     /// The product of two factors (Leibniz rule).
     Product(Box<Factor>, Box<Factor>),
+    /// ln tan(t/2) (for 0 < t < π), whose derivative is csc t = 1/sin t; the higher ones
+    /// are csc's, from Taylor-mode division of 1 by the jet of sin t.
+    LogTanHalf,
 }
 
 impl Factor {
@@ -37,6 +40,10 @@ impl Factor {
     /// The product self · other.
     pub fn times(self, other: Factor) -> Self {
         Factor::Product(Box::new(self), Box::new(other))
+    }
+    /// c + Σ terms.
+    pub fn trig(constant: f64, terms: &[Term]) -> Self {
+        Factor::Series(TrigSeries { constant, linear: 0.0, terms: SmallVec::from_slice(terms) })
     }
 
     /// The k-th derivative at t.
@@ -63,6 +70,11 @@ impl Factor {
             }
             Factor::Product(f, g) => {
                 (0..=k).map(|j| binomial(k, j) * f.derivative(t, j) * g.derivative(t, k - j)).sum()
+            }
+            Factor::LogTanHalf => {
+                let mut all = SmallVec::<[f64; 8]>::from_elem(0.0, k + 1);
+                log_tan_half(t, &mut all);
+                all[k]
             }
         }
     }
@@ -91,6 +103,7 @@ impl Factor {
                     *o = (0..=k).map(|j| binomial(k, j) * a[j] * b[k - j]).sum();
                 }
             }
+            Factor::LogTanHalf => log_tan_half(t, out),
             _ => {
                 for (k, o) in out.iter_mut().enumerate() {
                     *o = self.derivative(t, k);
@@ -98,6 +111,44 @@ impl Factor {
             }
         }
     }
+}
+
+/// The derivatives of ln tan(t/2) of orders 0 … out.len() − 1: the value, then those of
+/// csc t = 1/sin t of orders 0 … out.len() − 2, from the jet of sin t (Taylor mode,
+/// [`crate::taylor::div`]).
+fn log_tan_half(t: f64, out: &mut [f64]) {
+    let n = out.len();
+    if n == 0 {
+        return;
+    }
+    out[0] = (t / 2.0).tan().ln();
+    let m = n - 1;
+    let (s, c) = t.sin_cos();
+    let (mut sin_jet, mut one) = (SmallVec::<[f64; 8]>::from_elem(0.0, m), SmallVec::<[f64; 8]>::from_elem(0.0, m));
+    let mut fact = 1.0;
+    for (k, g) in sin_jet.iter_mut().enumerate() {
+        if k > 0 {
+            fact *= k as f64;
+        }
+        *g = [s, c, -s, -c][k % 4] / fact;
+    }
+    if let Some(o) = one.first_mut() {
+        *o = 1.0;
+    }
+    let mut csc = SmallVec::<[f64; 8]>::from_elem(0.0, m);
+    crate::taylor::div(&one, &sin_jet, &mut csc);
+    let mut fact = 1.0;
+    for (k, o) in out[1..].iter_mut().enumerate() {
+        if k > 0 {
+            fact *= k as f64;
+        }
+        *o = csc[k] * fact;
+    }
+}
+
+/// The parameter evaluated: wrapped into the domain when closed, clamped to it otherwise.
+pub(crate) fn in_domain(domain: Interval, closed: bool, t: f64) -> f64 {
+    if closed { domain.wrap_periodic(t, crate::basis::Side::Right) } else { domain.clamp(t) }
 }
 
 /// One separable term a·f(u)·g(v).
@@ -134,16 +185,7 @@ pub struct SeparableSurface {
 impl SeparableSurface {
     /// Writes the partials (layout of [`crate::surface::Surface::eval_partials`]).
     pub fn eval_into(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<3>]) {
-        let u = if self.closed_u {
-            self.domain_u.wrap_periodic(u, crate::basis::Side::Right)
-        } else {
-            self.domain_u.clamp(u)
-        };
-        let v = if self.closed_v {
-            self.domain_v.wrap_periodic(v, crate::basis::Side::Right)
-        } else {
-            self.domain_v.clamp(v)
-        };
+        let (u, v) = (in_domain(self.domain_u, self.closed_u, u), in_domain(self.domain_v, self.closed_v, v));
         let count = (du + 1) * (dv + 1);
         for o in out[..count].iter_mut() {
             *o = Point::<3>::zeros();
@@ -165,7 +207,8 @@ impl SeparableSurface {
     }
 }
 
-/// Implements `Surface<3>` for a model-surface struct with a `surface: SeparableSurface`.
+/// Implements `Surface<3>` for a model-surface struct with a `surface: SeparableSurface`
+/// (or a [`super::rational::RationalSurface`], which has the same fields and `eval_into`).
 macro_rules! separable_model_surface {
     ($ty:ty) => {
         impl $crate::surface::Surface<3> for $ty {
@@ -217,15 +260,30 @@ mod tests {
             Factor::Polynomial(vec![1.0, -2.0, 0.5, 3.0]),
             Factor::LogOneMinus(0.4),
             series.times(Factor::Polynomial(vec![0.0, 2.0, 1.0])),
+            Factor::LogTanHalf,
         ];
         for f in &factors {
-            for t in [-0.9, 0.0, 0.37, 1.7] {
+            for t in [-0.9, 0.0, 0.37, 1.7].map(|t| if *f == Factor::LogTanHalf { t + 1.0 } else { t }) {
                 let mut all = [0.0; 6];
                 f.derivatives(t, &mut all);
                 for (k, v) in all.iter().enumerate() {
                     let one = f.derivative(t, k);
                     assert!((v - one).abs() <= 1e-12 * one.abs().max(1.0), "{f:?} order {k} at {t}: {v} vs {one}");
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn log_tan_half_has_the_derivatives_of_csc() {
+        // d/dt ln tan(t/2) = csc t, d²/dt² = −csc t cot t, d³/dt³ = csc t (cot² t + csc² t).
+        for t in [0.2f64, 1.0, 2.5] {
+            let (csc, cot) = (1.0 / t.sin(), 1.0 / t.tan());
+            let mut d = [0.0; 4];
+            Factor::LogTanHalf.derivatives(t, &mut d);
+            let exact = [(t / 2.0).tan().ln(), csc, -csc * cot, csc * (cot * cot + csc * csc)];
+            for (k, (a, b)) in d.iter().zip(exact).enumerate() {
+                assert!((a - b).abs() <= 1e-13 * b.abs().max(1.0), "order {k} at {t}: {a} vs {b}");
             }
         }
     }
