@@ -4,7 +4,7 @@
 //! file's product, unit and representation structure is counted by type, so callers can
 //! say what was left out.
 
-use std::collections::{BTreeMap, HashSet};
+use std::collections::{BTreeMap, HashMap, HashSet};
 
 use splinekit::Point;
 use splinekit::axes::{OrthonormalAxes, unit_vector};
@@ -12,6 +12,7 @@ use splinekit::axes::{OrthonormalAxes, unit_vector};
 use crate::error::{Result, StepError};
 use crate::geometry::{Axes, Curve, SplineCurve, SplineSurface, Surface, expand_knots};
 use crate::part21::{Instance, Param, StepFile};
+use crate::units::{Units, context_units};
 
 /// A face: a surface and its bounds as closed loops of curves in the surface's (u, v)
 /// parameters (each loop a list of 2-D curves end to end).
@@ -93,24 +94,26 @@ fn structural(type_name: &str) -> bool {
 /// Reads every curve, surface and face the file's geometric sets, shape representations
 /// and shells hold.
 pub fn import(file: &StepFile) -> Result<Imported> {
-    let mut r = Reader { file, visited: HashSet::new() };
+    let mut r = Reader {
+        file,
+        visited: HashSet::new(),
+        scale: None,
+        units: Units::default(),
+        contexts: crate::units::item_contexts(file),
+        context_units: HashMap::new(),
+    };
     let mut out = Imported::default();
-    let mut roots: Vec<u64> = Vec::new();
-    for set in ["GEOMETRIC_SET", "GEOMETRIC_CURVE_SET"] {
-        for id in file.ids_of_type(set) {
+    // Each root with the set or shell that holds it, whose context gives its units.
+    let mut roots: Vec<(u64, u64)> = Vec::new();
+    for container in ["GEOMETRIC_SET", "GEOMETRIC_CURVE_SET", "OPEN_SHELL", "CLOSED_SHELL"] {
+        for id in file.ids_of_type(container) {
             r.visited.insert(id);
             let inst = file.get(id)?;
-            roots.extend(refs(param(&inst, 1)?).map_err(|e| e.within(inst.line, id))?);
+            roots.extend(refs(param(&inst, 1)?).map_err(|e| e.within(inst.line, id))?.into_iter().map(|e| (id, e)));
         }
     }
-    for shell in ["OPEN_SHELL", "CLOSED_SHELL"] {
-        for id in file.ids_of_type(shell) {
-            r.visited.insert(id);
-            let inst = file.get(id)?;
-            roots.extend(refs(param(&inst, 1)?).map_err(|e| e.within(inst.line, id))?);
-        }
-    }
-    for id in roots {
+    for (container, id) in roots {
+        r.units = r.units_of(container)?;
         r.visited.insert(id);
         let inst = file.get(id)?;
         let name = inst_name(&inst);
@@ -301,10 +304,74 @@ fn unit(v: Point<3>) -> Result<Point<3>> {
     unit_vector(v.into(), "direction").map(Point::<3>::from).map_err(|e| StepError::plain(e.to_string()))
 }
 
+/// The curve entities that carry a 3-D curve and the pcurves or surfaces it lies on
+/// (`SURFACE_CURVE` and its subtypes).
+const SURFACE_CURVES: &[&str] = &["SURFACE_CURVE", "SEAM_CURVE", "INTERSECTION_CURVE", "BOUNDED_SURFACE_CURVE"];
+
 /// Follows references, marking what it reads.
 struct Reader<'a> {
     file: &'a StepFile,
     visited: HashSet<u64>,
+    /// The size of the model, for tolerances (made on first use).
+    scale: Option<f64>,
+    /// The units of what is being read (its representation's context); lengths are
+    /// multiplied by `units.length` into millimetres, angles by `units.angle` into radians.
+    units: Units,
+    /// The context of every representation item, shell and set (`units::item_contexts`).
+    contexts: HashMap<u64, u64>,
+    /// The units of each context read so far.
+    context_units: HashMap<u64, Units>,
+}
+
+/// Computed pcurves follow their edges within this fraction of the model's size (the
+/// largest vertex coordinate).
+const PCURVE_TOLERANCE: f64 = 1e-7;
+
+impl Reader<'_> {
+    /// The largest coordinate of the file's vertices (at least 1): the model's size.
+    fn scale(&mut self) -> f64 {
+        if let Some(s) = self.scale {
+            return s;
+        }
+        let mut size = 1.0_f64;
+        for id in self.file.ids_of_type("VERTEX_POINT") {
+            let Ok(v) = self.file.get(id) else { continue };
+            let Some(Param::Reference(p)) = v.records[0].params.get(1) else { continue };
+            let Ok(p) = self.file.get(*p) else { continue };
+            if let Some(Ok(c)) = p.records[0].params.get(1).map(reals) {
+                size = c.iter().fold(size, |m, x| m.max(x.abs()));
+            }
+        }
+        self.scale = Some(size);
+        size
+    }
+
+    /// The 3-D tolerance of computed pcurves (in millimetres, as the geometry read).
+    fn tolerance(&mut self) -> f64 {
+        PCURVE_TOLERANCE * self.scale() * self.units.length
+    }
+
+    /// The units of the set or shell `container`: those of its representation's context,
+    /// millimetres and radians where it has none.
+    fn units_of(&mut self, container: u64) -> Result<Units> {
+        let Some(&context) = self.contexts.get(&container) else { return Ok(Units::default()) };
+        if let Some(u) = self.context_units.get(&context) {
+            return Ok(u.clone());
+        }
+        let u = context_units(self.file, context)?;
+        self.context_units.insert(context, u.clone());
+        Ok(u)
+    }
+
+    /// A length read from the file, in millimetres.
+    fn length(&self, p: &Param) -> Result<f64> {
+        Ok(real(p)? * self.units.length)
+    }
+
+    /// A plane angle read from the file, in radians.
+    fn angle(&self, p: &Param) -> Result<f64> {
+        Ok(real(p)? * self.units.angle)
+    }
 }
 
 impl Reader<'_> {
@@ -328,13 +395,14 @@ impl Reader<'_> {
     }
 
     fn point(&mut self, id: u64) -> Conv<Vec<f64>> {
+        let length = self.units.length;
         self.with(id, |_, inst| match inst.records[0].name.as_str() {
             "CARTESIAN_POINT" => {
                 let c = reals(param(inst, 1)?)?;
                 if !(1..=3).contains(&c.len()) {
                     return Err(StepError::plain(format!("a point has 1 to 3 coordinates, got {}", c.len())).into());
                 }
-                Ok(c)
+                Ok(c.into_iter().map(|x| x * length).collect())
             }
             other => Err(Unsupported::Type(other.to_string())),
         })
@@ -348,7 +416,7 @@ impl Reader<'_> {
         self.with(id, |r, inst| {
             let d = r.with(reference(param(inst, 1)?)?, |_, i| Ok(reals(param(i, 1)?)?))?;
             let len = to3(&d).norm();
-            let m = real(param(inst, 2)?)?;
+            let m = r.length(param(inst, 2)?)?;
             Ok(d.iter().map(|c| c / len * m).collect())
         })
     }
@@ -426,19 +494,25 @@ impl Reader<'_> {
                     direction: r.vector(reference(param(inst, 2)?)?)?,
                 },
                 "CIRCLE" => {
-                    Curve::Circle { axes: r.axes(reference(param(inst, 1)?)?)?, radius: real(param(inst, 2)?)? }
+                    Curve::Circle { axes: r.axes(reference(param(inst, 1)?)?)?, radius: r.length(param(inst, 2)?)? }
                 }
                 "ELLIPSE" => Curve::Ellipse {
                     axes: r.axes(reference(param(inst, 1)?)?)?,
-                    a: real(param(inst, 2)?)?,
-                    b: real(param(inst, 3)?)?,
+                    a: r.length(param(inst, 2)?)?,
+                    b: r.length(param(inst, 3)?)?,
                 },
                 "TRIMMED_CURVE" => {
                     let basis = r.curve(reference(param(inst, 1)?)?)?;
+                    // A conic's parameter is a plane angle; a line's and a spline's are
+                    // numbers (a line's vector carries the length).
+                    let unit = match basis {
+                        Curve::Circle { .. } | Curve::Ellipse { .. } => r.units.angle,
+                        _ => 1.0,
+                    };
                     let trim = |p: &Param| -> Option<f64> {
                         match p {
                             Param::List(items) => items.iter().find_map(|i| match i {
-                                Param::Typed(n, v) if n == "PARAMETER_VALUE" => real(v).ok(),
+                                Param::Typed(n, v) if n == "PARAMETER_VALUE" => real(v).ok().map(|t| t * unit),
                                 _ => None,
                             }),
                             _ => None,
@@ -462,7 +536,25 @@ impl Reader<'_> {
                     }
                     Curve::Trimmed { basis: Box::new(basis), start, end }
                 }
-                "SURFACE_CURVE" | "SEAM_CURVE" => r.curve(reference(param(inst, 1)?)?)?,
+                name if SURFACE_CURVES.contains(&name) => r.curve(reference(param(inst, 1)?)?)?,
+                "POLYLINE" => {
+                    // Segment i runs over parameters [i − 1, i] (ISO 10303-42): the degree-1
+                    // B-spline through the points with knots 0, 0, 1, …, n − 1, n − 1.
+                    let points = refs(param(inst, 1)?)?.into_iter().map(|id| r.point(id)).collect::<Conv<Vec<_>>>()?;
+                    if points.len() < 2 {
+                        return Err(StepError::plain(format!("a polyline of {} points", points.len())).into());
+                    }
+                    let n = points.len();
+                    let knots =
+                        std::iter::once(0.0).chain((0..n).map(|i| i as f64)).chain(std::iter::once((n - 1) as f64));
+                    Curve::Spline(SplineCurve {
+                        degree: 1,
+                        knots: knots.collect(),
+                        points,
+                        weights: None,
+                        closed: false,
+                    })
+                }
                 other => return Err(Unsupported::Type(other.to_string())),
             })
         })
@@ -522,15 +614,17 @@ impl Reader<'_> {
             let axes = |r: &mut Self| -> Conv<Axes> { r.axes(reference(param(inst, 1)?)?) };
             Ok(match inst.records[0].name.as_str() {
                 "PLANE" => Surface::Plane(axes(r)?),
-                "CYLINDRICAL_SURFACE" => Surface::Cylinder { axes: axes(r)?, radius: real(param(inst, 2)?)? },
-                "CONICAL_SURFACE" => {
-                    Surface::Cone { axes: axes(r)?, radius: real(param(inst, 2)?)?, semi_angle: real(param(inst, 3)?)? }
-                }
-                "SPHERICAL_SURFACE" => Surface::Sphere { axes: axes(r)?, radius: real(param(inst, 2)?)? },
+                "CYLINDRICAL_SURFACE" => Surface::Cylinder { axes: axes(r)?, radius: r.length(param(inst, 2)?)? },
+                "CONICAL_SURFACE" => Surface::Cone {
+                    axes: axes(r)?,
+                    radius: r.length(param(inst, 2)?)?,
+                    semi_angle: r.angle(param(inst, 3)?)?,
+                },
+                "SPHERICAL_SURFACE" => Surface::Sphere { axes: axes(r)?, radius: r.length(param(inst, 2)?)? },
                 "TOROIDAL_SURFACE" => Surface::Torus {
                     axes: axes(r)?,
-                    major_radius: real(param(inst, 2)?)?,
-                    minor_radius: real(param(inst, 3)?)?,
+                    major_radius: r.length(param(inst, 2)?)?,
+                    minor_radius: r.length(param(inst, 3)?)?,
                 },
                 "SURFACE_OF_REVOLUTION" => {
                     let profile = r.curve(reference(param(inst, 1)?)?)?;
@@ -554,7 +648,27 @@ impl Reader<'_> {
                     if !(boolean(param(inst, 6)?)? && boolean(param(inst, 7)?)?) {
                         return Err(Unsupported::Type("RECTANGULAR_TRIMMED_SURFACE (reversed sense)".into()));
                     }
-                    Surface::Trimmed { basis: Box::new(basis), u: (v(2)?, v(3)?), v: (v(4)?, v(5)?) }
+                    // Each parameter in its unit: lengths on planes and along axes, angles
+                    // around them, numbers on splines and along swept profiles.
+                    let (length, angle) = (r.units.length, r.units.angle);
+                    let (su, sv) = match &basis {
+                        Surface::Plane(_) => (length, length),
+                        Surface::Cylinder { .. } | Surface::Cone { .. } => (angle, length),
+                        Surface::Sphere { .. } | Surface::Torus { .. } => (angle, angle),
+                        Surface::Revolution { profile, .. } => match profile {
+                            Curve::Circle { .. } | Curve::Ellipse { .. } => (angle, angle),
+                            _ => (angle, 1.0),
+                        },
+                        Surface::Extrusion { profile: Curve::Circle { .. } | Curve::Ellipse { .. }, .. } => {
+                            (angle, 1.0)
+                        }
+                        _ => (1.0, 1.0),
+                    };
+                    Surface::Trimmed {
+                        basis: Box::new(basis),
+                        u: (v(2)? * su, v(3)? * su),
+                        v: (v(4)? * sv, v(5)? * sv),
+                    }
                 }
                 other => return Err(Unsupported::Type(other.to_string())),
             })
@@ -597,7 +711,7 @@ impl Reader<'_> {
                     ends.push(to3(&self.point(reference(param(&vp, 1)?)?)?));
                 }
                 let same_sense = boolean(param(&edge, 4)?)?;
-                let (space, pcurves) = self.pcurves_on(reference(param(&edge, 3)?)?, surface_id)?;
+                let (space, mut pcurves) = self.pcurves_on(reference(param(&edge, 3)?)?, surface_id)?;
                 let one_vertex = reference(param(&edge, 1)?)? == reference(param(&edge, 2)?)?;
                 let (lo, hi) = match &space {
                     // A closed spline edge (one vertex) runs over the whole curve.
@@ -611,6 +725,17 @@ impl Reader<'_> {
                         (lo, hi)
                     }
                 };
+                if pcurves.is_empty() {
+                    // The file gives the edge's 3-D curve alone (most CAD systems do): its
+                    // pcurve on this face's surface is computed (`crate::pcurve`).
+                    let tolerance = self.tolerance();
+                    // A pcurve that cannot be computed leaves this face out, named with the
+                    // reason, and the rest of the file is read.
+                    let computed = crate::pcurve::pcurve(&space, &surface, (lo, hi), tolerance)
+                        .map_err(|e| Unsupported::Type(format!("face #{} (edge #{edge_id}: {e})", inst.id)))?;
+                    pcurves.push(computed.curve);
+                    pcurves.extend(computed.twin);
+                }
                 // A generatrix of a cone: its 3-D line runs by length, its pcurve (a line of
                 // constant u) by the height v of the cone's parametrisation, whatever the
                 // pcurve's speed and start; the pcurve's parameters at the edge's ends
@@ -651,7 +776,13 @@ impl Reader<'_> {
             loops.push(curves);
             seam_twins.push(twins);
         }
-        Ok(Face { name: inst_name(inst), surface, loops, seam_twins, outer })
+        let same_sense = match inst.records[0].params.get(3) {
+            Some(p) => boolean(p)?,
+            None => true,
+        };
+        let mut face = Face { name: inst_name(inst), surface, loops, seam_twins, outer };
+        crate::wrapping_loops::close_wrapping_loops(&mut face, same_sense);
+        Ok(face)
     }
 
     /// The 3-D curve of an edge's geometry and its 2-D pcurves on the surface `surface_id`
@@ -659,24 +790,27 @@ impl Reader<'_> {
     /// a seam curve on a closed surface.
     fn pcurves_on(&mut self, edge_geometry: u64, surface_id: u64) -> Conv<(Curve, Vec<Curve>)> {
         let g = self.get(edge_geometry)?;
-        if !matches!(g.records[0].name.as_str(), "SURFACE_CURVE" | "SEAM_CURVE") {
-            return Err(Unsupported::Type(format!("face edge without pcurves ({})", g.records[0].name)));
+        if !SURFACE_CURVES.contains(&g.records[0].name.as_str()) {
+            return Ok((self.curve(edge_geometry)?, Vec::new()));
         }
         let space = self.curve(reference(param(&g, 1)?)?)?;
         let mut found = Vec::new();
         for pc in refs(param(&g, 2)?)? {
             let pci = self.get(pc)?;
             if pci.records[0].name != "PCURVE" || reference(param(&pci, 1)?)? != surface_id {
+                // A pcurve on the other face's surface, or the surface itself (writers may
+                // name the surfaces a curve lies on instead of its pcurves).
                 continue;
             }
             let rep = self.get(reference(param(&pci, 2)?)?)?;
             let items = refs(param(&rep, 1)?)?;
             self.visited.insert(reference(param(&rep, 2)?)?);
             let c = items.first().ok_or_else(|| StepError::plain("an empty pcurve representation"))?;
-            found.push(self.curve(*c)?);
-        }
-        if found.is_empty() {
-            return Err(Unsupported::Type("face edge without a pcurve on its face's surface".into()));
+            // A pcurve lies in the surface's parameter plane, a context without units.
+            let units = std::mem::replace(&mut self.units, Units::none());
+            let pcurve = self.curve(*c);
+            self.units = units;
+            found.push(pcurve?);
         }
         Ok((space, found))
     }
@@ -693,7 +827,9 @@ fn reversed_circle(axes: Axes, radius: f64, (a, b): (f64, f64)) -> Curve {
 }
 
 /// The same curve run backwards: c(a + b − t) on [a, b] (lines, splines, circles and their
-/// trimmed pieces; `None` for ellipses, whose reversal is no ellipse in standard form).
+/// trimmed pieces), or for a trimmed ellipse the arc with its ends swapped (`start > end`:
+/// no ellipse in standard form runs backwards over the same parameters); `None` for a
+/// whole ellipse.
 pub fn reversed(c: Curve) -> Option<Curve> {
     Some(match c {
         Curve::Spline(mut s) => {
@@ -718,6 +854,10 @@ pub fn reversed(c: Curve) -> Option<Curve> {
             Curve::Circle { axes, radius } => {
                 Curve::Trimmed { basis: Box::new(reversed_circle(axes, radius, (start, end))), start, end }
             }
+            // No ellipse in standard form runs backwards over the same parameters: the arc
+            // is kept with its ends swapped (start > end), a run against the parameter,
+            // which the parameter-space loops read as such.
+            basis @ Curve::Ellipse { .. } => Curve::Trimmed { basis: Box::new(basis), start: end, end: start },
             _ => return None,
         },
         Curve::Circle { axes, radius } => reversed_circle(axes, radius, (0.0, std::f64::consts::TAU)),

@@ -26,7 +26,7 @@ fn import(text: String) -> ShapeDocument {
     let imported = import_items(&StepFile::from_bytes(text.into_bytes()).unwrap()).unwrap();
     assert!(imported.not_understood.is_empty(), "{:?}", imported.not_understood);
     assert_eq!(imported.items.len(), 1);
-    imported.items[0].1.clone()
+    imported.items[0].document.clone()
 }
 
 fn points(c: &CurveDocument) -> Vec<Vec<f64>> {

@@ -18,7 +18,7 @@ fn import(name: &str) -> ShapeDocument {
     // Everything is read: the representation's own placement is structure, not geometry
     // left behind.
     assert!(imported.not_understood.is_empty(), "{name}: {:?}", imported.not_understood);
-    imported.items[0].1.clone()
+    imported.items[0].document.clone()
 }
 
 #[test]

@@ -13,7 +13,7 @@ fn round_trip(json: &str) -> ShapeDocument {
     let imported = import_items(&file).unwrap();
     assert!(imported.not_understood.is_empty(), "{:?}", imported.not_understood);
     assert_eq!(imported.items.len(), 1);
-    imported.items[0].1.clone()
+    imported.items[0].document.clone()
 }
 
 #[test]

@@ -177,18 +177,18 @@ fn step_to_any(args: &ConvertArgs, output: Format) -> Result<()> {
     }
     match output {
         Format::Step => {
-            let items: Vec<_> = imported.items.iter().map(|(item, _)| item.clone()).collect();
+            let items = imported.step_items().map_err(|e| anyhow!("IN: {e}"))?;
             let name = stem(&args.input);
             splinekit_scene::write_file(&args.output, write_step(&items, &name, &header(&name)).as_bytes())
                 .map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
         }
         Format::Json => {
-            let value: Value = if let [(_, doc)] = imported.items.as_slice() {
-                shape_value(doc)
+            let value: Value = if let [item] = imported.items.as_slice() {
+                shape_value(&item.document)
             } else {
                 json!({
                     "type": "scene",
-                    "objects": imported.items.iter().map(|(_, doc)| json!({"shape": shape_value(doc)})).collect::<Vec<_>>(),
+                    "objects": imported.items.iter().map(|i| json!({"shape": shape_value(&i.document)})).collect::<Vec<_>>(),
                 })
             };
             crate::output::write_json(&value, (args.output != "-").then_some(args.output.as_str()))?;

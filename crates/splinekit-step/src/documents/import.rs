@@ -29,8 +29,8 @@ use crate::part21::StepFile;
 /// Documents read from a STEP file.
 #[derive(Debug, Clone, Default)]
 pub struct ImportedDocuments {
-    /// Each converted object: its STEP geometry (for STEP → STEP) and its document.
-    pub items: Vec<(Item, ShapeDocument)>,
+    /// Each converted object.
+    pub items: Vec<ImportedItem>,
     /// Entity types not converted, with counts (to report; nothing is dropped silently).
     pub not_understood: Vec<(String, usize)>,
 }
@@ -53,14 +53,39 @@ pub fn import_items(file: &StepFile) -> Result<ImportedDocuments> {
             GeometryOrFace::Face(_) => None,
         };
         match (converted, geometry) {
-            (Some(doc), Some(geometry)) => out.items.push((Item { name, geometry }, doc)),
             // Faces travel as their `trimmed` documents, and STEP → STEP writes those.
-            (Some(doc), None) => out.items.push((face_item(&name, &doc)?, doc)),
+            (Some(document), geometry) => out.items.push(ImportedItem { name, geometry, document }),
             (None, _) => *skipped.entry(format!("{label} (no document form)")).or_default() += 1,
         }
     }
     out.not_understood = skipped.into_iter().filter(|(_, c)| *c > 0).collect();
     Ok(out)
+}
+
+/// One object read from a STEP file.
+#[derive(Debug, Clone)]
+pub struct ImportedItem {
+    /// Its name in the file (the entity's `name`).
+    pub name: String,
+    /// Its STEP geometry, for STEP → STEP; `None` for a face, which travels as its
+    /// `trimmed` document, exported by [`ImportedDocuments::step_items`] when asked.
+    pub geometry: Option<Geometry>,
+    /// Its document.
+    pub document: ShapeDocument,
+}
+
+impl ImportedDocuments {
+    /// The STEP items of every object (for STEP → STEP): the geometry read, and for a face
+    /// the export of its `trimmed` document (named as the face).
+    pub fn step_items(&self) -> Result<Vec<Item>> {
+        self.items
+            .iter()
+            .map(|i| match &i.geometry {
+                Some(geometry) => Ok(Item { name: i.name.clone(), geometry: geometry.clone() }),
+                None => face_item(&i.name, &i.document),
+            })
+            .collect()
+    }
 }
 
 /// What a converted object is, for the list of those without a document form.
@@ -399,9 +424,23 @@ fn plane_doc(a: &Axes, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> SurfaceDoc
     })
 }
 
-/// One piece of a parameter-space loop as a clamped 2-D NURBS curve.
+/// The same NURBS curve run backwards, c(a + b − t): points, weights and knots reversed.
+fn reversed_nurbs(c: &NurbsCurve<2>) -> Result<NurbsCurve<2>> {
+    let d = c.domain();
+    let knots = c.knots().iter().rev().map(|k| d.start + d.end - k).collect();
+    let points = c.control_points().iter().rev().copied().collect();
+    let weights = c.weights().iter().rev().copied().collect();
+    NurbsCurve::new(c.degree(), knots, points, weights).map_err(|e| StepError::plain(format!("loop: {e}")))
+}
+
+/// One piece of a parameter-space loop as a clamped 2-D NURBS curve (a piece trimmed with
+/// `start > end` runs against its parameter).
 fn loop_piece(c: &Curve) -> Result<Option<NurbsCurve<2>>> {
     let Curve::Trimmed { basis, start, end } = c else { return Ok(None) };
+    if start > end {
+        let forward = Curve::Trimmed { basis: basis.clone(), start: *end, end: *start };
+        return loop_piece(&forward)?.map(|p| reversed_nurbs(&p)).transpose();
+    }
     Ok(Some(match basis.as_ref() {
         Curve::Line { origin, direction } => {
             let at = |t: f64| Point::<2>::new(origin[0] + t * direction[0], origin[1] + t * direction[1]);

@@ -55,4 +55,4 @@ pub fn export_document(
 }
 
 pub mod import;
-pub use import::{ImportedDocuments, import_items};
+pub use import::{ImportedDocuments, ImportedItem, import_items};

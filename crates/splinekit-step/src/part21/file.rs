@@ -305,10 +305,9 @@ fn scan<S: ByteSource>(src: S) -> Result<Scan> {
     if sections == 0 {
         return Err(StepError::at(p.token_line(), None, "the file has no DATA section"));
     }
-    match p.next_token()? {
-        Token::End => Ok(Scan { header, entries, type_names }),
-        t => Err(StepError::at(p.token_line(), None, format!("unexpected {} after END-ISO-10303-21;", t.describe()))),
-    }
+    // What follows END-ISO-10303-21; is not part of the exchange structure: edition 3's
+    // digital signature (CATIA writes one), mail trailers, padding. It is not read.
+    Ok(Scan { header, entries, type_names })
 }
 
 fn data_section<S: ByteSource>(

@@ -435,9 +435,19 @@ fn show_byte(b: u8) -> String {
 }
 
 /// Decodes the body of a string (between the apostrophes, `''` already undone): the
-/// control directives of ISO 10303-21 §6.4.3 and UTF-8 text.
+/// control directives of ISO 10303-21 §6.4.3 and UTF-8 text. A string that is not UTF-8
+/// holds raw 8-bit bytes, which CAD systems write for names in their user's code page
+/// against the standard: they are read as ISO 8859-1, the standard's default page (a name
+/// may show the wrong accented letter, but the file opens).
 pub fn decode_string(raw: &[u8]) -> std::result::Result<String, String> {
-    let text = std::str::from_utf8(raw).map_err(|_| "string is neither ISO 10303-21 ASCII nor UTF-8".to_string())?;
+    let latin1: String;
+    let text = match std::str::from_utf8(raw) {
+        Ok(text) => text,
+        Err(_) => {
+            latin1 = raw.iter().map(|&b| char::from(b)).collect();
+            &latin1
+        }
+    };
     if !text.contains('\\') {
         return Ok(text.to_string());
     }

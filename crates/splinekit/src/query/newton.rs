@@ -38,6 +38,9 @@ pub mod cap {
     /// The extent of a shape: one coordinate's extreme on a line (safeguarded Newton) or
     /// inside a surface.
     pub const EXTENT: usize = 60;
+    /// The parameters of a point on (or within a file's tolerance of) a surface, from the
+    /// parameters of a nearby point: Gauss–Newton (STEP reading's pcurves from 3-D edges).
+    pub const POINT_PARAMETERS: usize = 40;
 }
 
 /// Relative step at which an iteration has reached rounding: 4ε.
