@@ -10,6 +10,7 @@
 //! CONTRIBUTING.md); the compiler asks for everything else.
 
 mod blending;
+mod brep;
 mod from_curves;
 mod models;
 mod nets;
@@ -21,6 +22,7 @@ use serde_json::Value;
 use splinekit::surface::Surface;
 
 pub use blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
+pub use brep::{BrepDoc, BrepEdgeDoc, BrepFaceDoc, BrepShellDoc, BrepSolidDoc, BrepUseDoc};
 pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, RuledDoc, SweepDoc};
 // Every document that `models.rs` declares, so that a model kind is its declaration and
 // its line in the list below.
@@ -131,6 +133,8 @@ macro_rules! surface_kinds {
                 BlendingSplineSurface(BlendingSplineSurfaceDoc) = "blending_spline_surface", python(base),
                 /// The limit surface of a subdivision cage.
                 SubdivisionSurface(SubdivisionSurfaceDoc) = "subdivision_surface", python(base),
+                /// Solids, shells and faces sharing their edges (a boundary representation).
+                Brep(BrepDoc) = "brep", python(base),
             }
         }
     };
@@ -227,6 +231,8 @@ pub enum SurfaceForm<'a> {
     /// A blending-spline surface: a B-spline when its locals are Bézier patches and its
     /// B-function a polynomial, else approximated.
     BlendingSpline(&'a BlendingSplineSurfaceDoc),
+    /// A boundary representation: exporters write its faces with their shared edges.
+    Brep(&'a BrepDoc),
     /// No exact form: exporters approximate the surface within a tolerance.
     Approximate,
 }

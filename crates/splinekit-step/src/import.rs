@@ -31,6 +31,70 @@ pub struct Face {
     pub seam_twins: Vec<Vec<Option<(u64, Curve)>>>,
     /// Which loop is the outer bound (`FACE_OUTER_BOUND`), if one is marked.
     pub outer: Option<usize>,
+    /// What each piece of each loop is (parallel to `loops`).
+    pub roles: Vec<Vec<Role>>,
+    /// The face's `#id`.
+    pub id: u64,
+    /// Whether the face's normal is the surface's (`same_sense`).
+    pub same_sense: bool,
+}
+
+/// What a piece of a face's loop is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Role {
+    /// A use of the edge `#id`, from its start vertex to its end (`forward`) or back.
+    Edge {
+        /// The `EDGE_CURVE`'s `#id`.
+        id: u64,
+        /// Whether the loop runs from the edge's start vertex to its end.
+        forward: bool,
+    },
+    /// One side of a cut across a periodic surface; `twin` is the other side's index in
+    /// the loop.
+    Cut {
+        /// The other side.
+        twin: usize,
+    },
+    /// The line of a pole or apex (one point in space).
+    Pole,
+}
+
+/// An edge read from a face: its 3-D curve and the parameters of its ends.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EdgeRead {
+    /// The 3-D curve.
+    pub curve: Curve,
+    /// The parameters of the start and end vertex on the curve, (lo, hi) increasing (the
+    /// curve runs from start to end when `same_sense`).
+    pub range: (f64, f64),
+    /// Whether the curve's direction is from the start vertex to the end.
+    pub same_sense: bool,
+    /// The start and end `VERTEX_POINT`s.
+    pub vertices: [u64; 2],
+}
+
+/// A shell as read: its faces' indices in [`Imported::geometry`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShellRead {
+    /// The shell's `#id`.
+    pub id: u64,
+    /// `CLOSED_SHELL` (else `OPEN_SHELL`).
+    pub closed: bool,
+    /// The faces converted.
+    pub faces: Vec<usize>,
+    /// Faces of the shell that were not converted.
+    pub missing: usize,
+}
+
+/// A solid as read.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SolidRead {
+    /// The solid's `#id`.
+    pub id: u64,
+    /// Its name.
+    pub name: String,
+    /// Its shells' indices in [`Imported::shells`], the outer one first.
+    pub shells: Vec<usize>,
 }
 
 /// What an import found.
@@ -40,6 +104,16 @@ pub struct Imported {
     pub geometry: Vec<(String, GeometryOrFace)>,
     /// Entity types read but not converted, with counts.
     pub not_understood: BTreeMap<String, usize>,
+    /// The shells whose faces were read.
+    pub shells: Vec<ShellRead>,
+    /// The solids of those shells.
+    pub solids: Vec<SolidRead>,
+    /// The edges the faces use, by `#id`.
+    pub edges: BTreeMap<u64, EdgeRead>,
+    /// The vertices of those edges, by `#id`, in millimetres.
+    pub vertices: BTreeMap<u64, Point<3>>,
+    /// The length unit of the geometry read (the first context's).
+    pub source_unit: Option<String>,
 }
 
 /// A free curve or surface, or a bounded face.
@@ -101,6 +175,8 @@ pub fn import(file: &StepFile) -> Result<Imported> {
         units: Units::default(),
         contexts: crate::units::item_contexts(file),
         context_units: HashMap::new(),
+        edges: BTreeMap::new(),
+        vertices: BTreeMap::new(),
     };
     let mut out = Imported::default();
     // Each root with the set or shell that holds it, whose context gives its units.
@@ -112,8 +188,12 @@ pub fn import(file: &StepFile) -> Result<Imported> {
             roots.extend(refs(param(&inst, 1)?).map_err(|e| e.within(inst.line, id))?.into_iter().map(|e| (id, e)));
         }
     }
+    let mut shell_index: HashMap<u64, usize> = HashMap::new();
     for (container, id) in roots {
         r.units = r.units_of(container)?;
+        if out.source_unit.is_none() && r.contexts.contains_key(&container) {
+            out.source_unit = Some(r.units.length_name.clone());
+        }
         r.visited.insert(id);
         let inst = file.get(id)?;
         let name = inst_name(&inst);
@@ -122,12 +202,50 @@ pub fn import(file: &StepFile) -> Result<Imported> {
             _ if r.is_surface(&inst) => r.surface(id).map(GeometryOrFace::Surface),
             _ => r.curve(id).map(GeometryOrFace::Curve),
         };
+        let shell = match file.type_of(container) {
+            Some(t @ ("OPEN_SHELL" | "CLOSED_SHELL")) => {
+                let closed = t == "CLOSED_SHELL";
+                let k = *shell_index.entry(container).or_insert_with(|| {
+                    out.shells.push(ShellRead { id: container, closed, faces: Vec::new(), missing: 0 });
+                    out.shells.len() - 1
+                });
+                Some(k)
+            }
+            _ => None,
+        };
         match geometry {
-            Ok(g) => out.geometry.push((name, g)),
-            Err(Unsupported::Type(t)) => *out.not_understood.entry(t).or_default() += 1,
+            Ok(g) => {
+                if let Some(k) = shell {
+                    out.shells[k].faces.push(out.geometry.len());
+                }
+                out.geometry.push((name, g));
+            }
+            Err(Unsupported::Type(t)) => {
+                if let Some(k) = shell {
+                    out.shells[k].missing += 1;
+                }
+                *out.not_understood.entry(t).or_default() += 1
+            }
             Err(Unsupported::Bad(e)) => return Err(e),
         }
     }
+    // Solids: an outer shell, and the shells of its voids.
+    for (kind, voids) in [("MANIFOLD_SOLID_BREP", false), ("BREP_WITH_VOIDS", true)] {
+        for id in file.ids_of_type(kind) {
+            r.visited.insert(id);
+            let inst = file.get(id)?;
+            let mut shells = vec![reference(param(&inst, 1)?).map_err(|e| e.within(inst.line, id))?];
+            if voids {
+                shells.extend(refs(param(&inst, 2)?).map_err(|e| e.within(inst.line, id))?);
+            }
+            let shells: Vec<usize> = shells.iter().filter_map(|s| shell_index.get(s).copied()).collect();
+            if !shells.is_empty() {
+                out.solids.push(SolidRead { id, name: inst_name(&inst), shells });
+            }
+        }
+    }
+    out.edges = std::mem::take(&mut r.edges);
+    out.vertices = std::mem::take(&mut r.vertices);
     // A placement passed over as structure (a representation's own frame, which places
     // nothing) takes its point and directions with it.
     for id in file.ids_of_type("AXIS2_PLACEMENT_3D") {
@@ -321,6 +439,10 @@ struct Reader<'a> {
     contexts: HashMap<u64, u64>,
     /// The units of each context read so far.
     context_units: HashMap<u64, Units>,
+    /// The edges read so far, by `#id`.
+    edges: BTreeMap<u64, EdgeRead>,
+    /// Their vertices, by `#id`.
+    vertices: BTreeMap<u64, Point<3>>,
 }
 
 /// Computed pcurves follow their edges within this fraction of the model's size (the
@@ -518,12 +640,40 @@ impl Reader<'_> {
                             _ => None,
                         }
                     };
-                    let (Some(start), Some(end)) = (trim(param(inst, 2)?), trim(param(inst, 3)?)) else {
-                        return Err(Unsupported::Type("TRIMMED_CURVE (trimmed by points)".into()));
+                    // Trimmed by a point where no parameter is given: the point's parameter
+                    // on the basis.
+                    let mut by_point = |p: &Param| -> Conv<Option<f64>> {
+                        let Param::List(items) = p else { return Ok(None) };
+                        for i in items {
+                            if let Param::Reference(id) = i {
+                                let q = to3(&r.point(*id)?);
+                                return Ok(Some(parameter_on(&basis, q)?));
+                            }
+                        }
+                        Ok(None)
                     };
-                    if !boolean(param(inst, 4)?)? {
-                        return Err(Unsupported::Type("TRIMMED_CURVE (reversed sense)".into()));
-                    }
+                    let (p1, p2) = (param(inst, 2)?, param(inst, 3)?);
+                    let start = match trim(p1) {
+                        Some(t) => Some(t),
+                        None => by_point(p1)?,
+                    };
+                    let end = match trim(p2) {
+                        Some(t) => Some(t),
+                        None => by_point(p2)?,
+                    };
+                    let (Some(start), Some(end)) = (start, end) else {
+                        return Err(Unsupported::Type("TRIMMED_CURVE (trimmed by neither parameter nor point)".into()));
+                    };
+                    // Against the basis' sense the piece runs from the second trim back to
+                    // the first: the same points (an edge's curve is bounded by its vertices
+                    // anyway; a free curve is read with the basis' direction).
+                    let (start, end) = if boolean(param(inst, 4)?)? { (start, end) } else { (end, start) };
+                    let (start, end) = match basis {
+                        Curve::Circle { .. } | Curve::Ellipse { .. } if end < start => {
+                            (start, end + std::f64::consts::TAU)
+                        }
+                        _ => (start, end),
+                    };
                     // Trimming points given beside the parameters say the same (the
                     // parameters are read; the points are not left behind as unread).
                     for select in [param(inst, 2)?, param(inst, 3)?] {
@@ -681,6 +831,7 @@ impl Reader<'_> {
         let surface = self.surface(surface_id)?;
         let mut loops = Vec::new();
         let mut seam_twins = Vec::new();
+        let mut roles = Vec::new();
         let mut outer = None;
         for bound in refs(param(inst, 1)?)? {
             let b = self.get(bound)?;
@@ -706,9 +857,14 @@ impl Reader<'_> {
                 let edge_id = reference(param(&oe, 3)?)?;
                 let edge = self.get(edge_id)?;
                 let mut ends = Vec::with_capacity(2);
+                let mut vertex_ids = [0u64; 2];
                 for v in [1, 2] {
-                    let vp = self.get(reference(param(&edge, v)?)?)?;
-                    ends.push(to3(&self.point(reference(param(&vp, 1)?)?)?));
+                    let vertex = reference(param(&edge, v)?)?;
+                    let vp = self.get(vertex)?;
+                    let p = to3(&self.point(reference(param(&vp, 1)?)?)?);
+                    self.vertices.insert(vertex, p);
+                    vertex_ids[v - 1] = vertex;
+                    ends.push(p);
                 }
                 let same_sense = boolean(param(&edge, 4)?)?;
                 let (space, mut pcurves) = self.pcurves_on(reference(param(&edge, 3)?)?, surface_id)?;
@@ -719,7 +875,7 @@ impl Reader<'_> {
                     _ => {
                         let (t0, t1) = (parameter_on(&space, ends[0])?, parameter_on(&space, ends[1])?);
                         let (lo, mut hi) = if same_sense { (t0, t1) } else { (t1, t0) };
-                        if hi <= lo && matches!(space, Curve::Circle { .. } | Curve::Ellipse { .. }) {
+                        if hi <= lo && is_conic(&space) {
                             hi += std::f64::consts::TAU;
                         }
                         (lo, hi)
@@ -736,6 +892,12 @@ impl Reader<'_> {
                     pcurves.push(computed.curve);
                     pcurves.extend(computed.twin);
                 }
+                self.edges.entry(edge_id).or_insert_with(|| EdgeRead {
+                    curve: space.clone(),
+                    range: (lo, hi),
+                    same_sense,
+                    vertices: vertex_ids,
+                });
                 // A generatrix of a cone: its 3-D line runs by length, its pcurve (a line of
                 // constant u) by the height v of the cone's parametrisation, whatever the
                 // pcurve's speed and start; the pcurve's parameters at the edge's ends
@@ -756,16 +918,27 @@ impl Reader<'_> {
                     };
                     Curve::Trimmed { basis: Box::new(c.clone()), start, end }
                 };
-                pieces.push((trim(&pcurves[0]), pcurves.get(1).map(|c| (edge_id, trim(c))), oriented == same_sense));
+                pieces.push((
+                    trim(&pcurves[0]),
+                    pcurves.get(1).map(|c| (edge_id, trim(c))),
+                    oriented == same_sense,
+                    Role::Edge { id: edge_id, forward: oriented },
+                ));
             }
             if !forward {
                 pieces.reverse();
-                pieces.iter_mut().for_each(|p| p.2 = !p.2);
+                pieces.iter_mut().for_each(|p| {
+                    p.2 = !p.2;
+                    if let Role::Edge { forward, .. } = &mut p.3 {
+                        *forward = !*forward;
+                    }
+                });
             }
             let run = |c: Curve, fwd: bool| if fwd { Some(c) } else { reversed(c) };
             let mut curves = Vec::new();
             let mut twins = Vec::new();
-            for (c, twin, fwd) in pieces {
+            roles.push(pieces.iter().map(|p| p.3).collect());
+            for (c, twin, fwd, _) in pieces {
                 let no_reversal = || Unsupported::Type("face loop with a reversed ellipse pcurve".into());
                 curves.push(run(c, fwd).ok_or_else(no_reversal)?);
                 twins.push(match twin {
@@ -780,8 +953,9 @@ impl Reader<'_> {
             Some(p) => boolean(p)?,
             None => true,
         };
-        let mut face = Face { name: inst_name(inst), surface, loops, seam_twins, outer };
-        crate::wrapping_loops::close_wrapping_loops(&mut face, same_sense);
+        let mut face =
+            Face { name: inst_name(inst), surface, loops, seam_twins, outer, roles, id: inst.id, same_sense };
+        crate::wrapping_loops::close_wrapping_loops(&mut face);
         Ok(face)
     }
 
@@ -867,6 +1041,16 @@ pub fn reversed(c: Curve) -> Option<Curve> {
         }
         _ => return None,
     })
+}
+
+/// Whether the curve is a circle or an ellipse (or a trimmed piece of one): its parameter
+/// is an angle, periodic.
+fn is_conic(c: &Curve) -> bool {
+    match c {
+        Curve::Circle { .. } | Curve::Ellipse { .. } => true,
+        Curve::Trimmed { basis, .. } => is_conic(basis),
+        _ => false,
+    }
 }
 
 /// Whether a placement is the world frame.

@@ -34,7 +34,7 @@ use std::f64::consts::FRAC_PI_2;
 
 use crate::evaluate::{CurveEval, SurfaceEval};
 use crate::geometry::{Curve, Surface};
-use crate::import::Face;
+use crate::import::{Face, Role};
 
 /// Relative gap (to the period) below which a piece's start is its predecessor's end moved
 /// by whole periods.
@@ -150,7 +150,8 @@ fn pole(surface: &SurfaceEval, step: &Surface, upper: bool) -> Option<f64> {
 
 /// Closes the face's loops that wrap around its surface (see the module). Faces whose
 /// loops use seam edges, and loops that do not wrap, are left as they are.
-pub fn close_wrapping_loops(face: &mut Face, same_sense: bool) {
+pub fn close_wrapping_loops(face: &mut Face) {
+    let same_sense = face.same_sense;
     let Ok(surface) = SurfaceEval::new(&face.surface) else { return };
     let periods = surface.periods();
     if periods == (None, None) || face.seam_twins.iter().flatten().any(Option::is_some) {
@@ -169,6 +170,15 @@ pub fn close_wrapping_loops(face: &mut Face, same_sense: bool) {
         [(a, wa), (b, wb)] if wa.0 == -wb.0 && wa.1 == -wb.1 => {
             let (a, b) = if wa.0 + wa.1 > 0.0 { (*a, *b) } else { (*b, *a) };
             let Some(band) = band(&face.loops[a], &face.loops[b], periods) else { return };
+            // A, the cut up, B, the cut down (the same cut one period back).
+            let (na, nb) = (face.loops[a].len(), face.loops[b].len());
+            let (up, down) = (na, na + 1 + nb);
+            let mut roles = face.roles[a].clone();
+            roles.push(Role::Cut { twin: down });
+            roles.extend(face.roles[b].iter().copied());
+            roles.push(Role::Cut { twin: up });
+            face.roles[a] = roles;
+            face.roles.remove(b);
             face.seam_twins[a] = vec![None; band.len()];
             face.loops[a] = band;
             face.loops.remove(b);
@@ -185,7 +195,10 @@ pub fn close_wrapping_loops(face: &mut Face, same_sense: bool) {
                 return;
             };
             let (top_end, top_start) = (Point::<2>::new(end[0], v_pole), Point::<2>::new(start[0], v_pole));
+            let n = pieces.len();
             pieces.extend([segment(end, top_end), segment(top_end, top_start), segment(top_start, start)]);
+            // Up along u = a + P and down along u = a: one cut, one period apart.
+            face.roles[*a].extend([Role::Cut { twin: n + 2 }, Role::Pole, Role::Cut { twin: n }]);
             face.seam_twins[*a] = vec![None; pieces.len()];
             face.outer = Some(*a);
         }

@@ -25,6 +25,7 @@
 pub mod axes;
 pub mod basis;
 pub mod blend;
+pub mod brep;
 pub mod curve;
 pub mod error;
 pub mod fit;

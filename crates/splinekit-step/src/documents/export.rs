@@ -124,6 +124,7 @@ fn elementary_surface(doc: &SurfaceDocument) -> Result<Option<(Surface, ParamMap
         | SurfaceForm::Trimmed(_)
         | SurfaceForm::Placed(_)
         | SurfaceForm::BlendingSpline(_)
+        | SurfaceForm::Brep(_)
         | SurfaceForm::Approximate => return Ok(None),
     }))
 }
@@ -238,6 +239,9 @@ pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64
         ));
     }
     let form = doc.exact_form().map_err(|e| plain("document", e))?;
+    if let SurfaceForm::Brep(_) = form {
+        return Err(StepError::plain("brep: a B-rep is exported face by face, one item each (export_document)"));
+    }
     if let SurfaceForm::Trimmed(t) = form {
         let within = |e: StepError| StepError::plain(format!("surface: {}", e.message));
         let base = export_surface(&t.surface, name, relative_tolerance).map_err(within)?;
@@ -294,6 +298,7 @@ pub fn exports_exactly(doc: &ShapeDocument) -> bool {
 fn surface_exports_exactly(doc: &SurfaceDocument) -> bool {
     match doc.exact_form() {
         Err(_) | Ok(SurfaceForm::Approximate) => false,
+        Ok(SurfaceForm::Brep(b)) => super::solid::brep_faces(b).is_ok_and(|faces| faces.iter().all(exports_exactly)),
         Ok(SurfaceForm::Revolution(d)) => curve_exports_exactly(&d.curve),
         Ok(SurfaceForm::Extrusion(d)) => curve_exports_exactly(&d.curve),
         Ok(SurfaceForm::Trimmed(t)) => {

@@ -22,7 +22,7 @@ use std::f64::consts::{FRAC_PI_2, TAU};
 
 use crate::error::{Result, StepError};
 use crate::geometry::{Axes, Curve, Geometry, Item, SplineCurve, SplineSurface, Surface};
-use crate::import::{Face, GeometryOrFace, import, is_world, radial};
+use crate::import::{Face, GeometryOrFace, Role, import, is_world, radial};
 use crate::kernel::nurbs;
 use crate::part21::StepFile;
 
@@ -35,12 +35,23 @@ pub struct ImportedDocuments {
     pub not_understood: Vec<(String, usize)>,
 }
 
-/// Reads every curve, surface and face of the file as documents.
+/// Reads every curve, surface and face of the file as documents: the faces of solids and
+/// of shells of several faces as one `brep` document each (`documents::solid`), other
+/// faces as `trimmed` documents.
 pub fn import_items(file: &StepFile) -> Result<ImportedDocuments> {
-    let found = import(file)?;
+    let mut found = import(file)?;
     let mut out = ImportedDocuments::default();
-    let mut skipped = found.not_understood;
-    for (name, g) in found.geometry {
+    let breps = super::solid::brep_documents(&found)?;
+    let mut skipped = std::mem::take(&mut found.not_understood);
+    for (reason, count) in breps.left_out {
+        *skipped.entry(reason).or_default() += count;
+    }
+    let in_brep: std::collections::HashSet<usize> = breps.faces_used.into_iter().collect();
+    for (name, doc) in breps.documents {
+        let document = ShapeDocument::Surface(SurfaceDocument::Brep(doc));
+        out.items.push(ImportedItem { name, geometry: None, document });
+    }
+    for (name, g) in found.geometry.into_iter().enumerate().filter(|(k, _)| !in_brep.contains(k)).map(|(_, g)| g) {
         let label = if name.is_empty() { what(&g) } else { format!("'{name}' ({})", what(&g)) };
         let converted = match &g {
             GeometryOrFace::Curve(c) => curve_doc(c).map(|d| d.map(ShapeDocument::Curve)),
@@ -80,11 +91,17 @@ impl ImportedDocuments {
     pub fn step_items(&self) -> Result<Vec<Item>> {
         self.items
             .iter()
-            .map(|i| match &i.geometry {
-                Some(geometry) => Ok(Item { name: i.name.clone(), geometry: geometry.clone() }),
-                None => face_item(&i.name, &i.document),
+            .map(|i| -> Result<Vec<Item>> {
+                match (&i.geometry, &i.document) {
+                    (Some(geometry), _) => Ok(vec![Item { name: i.name.clone(), geometry: geometry.clone() }]),
+                    (None, ShapeDocument::Surface(SurfaceDocument::Brep(b))) => {
+                        super::solid::brep_faces(b)?.iter().map(|f| face_item(&i.name, f)).collect()
+                    }
+                    (None, doc) => Ok(vec![face_item(&i.name, doc)?]),
+                }
             })
-            .collect()
+            .collect::<Result<Vec<_>>>()
+            .map(|v| v.into_iter().flatten().collect())
     }
 }
 
@@ -123,7 +140,7 @@ fn pts_of<const D: usize>(c: &NurbsCurve<D>) -> Vec<Vec<f64>> {
 }
 
 /// A kernel NURBS curve as a `bspline` (all weights 1) or `nurbs` document.
-fn nurbs_doc<const D: usize>(c: &NurbsCurve<D>) -> CurveDocument {
+pub(crate) fn nurbs_doc<const D: usize>(c: &NurbsCurve<D>) -> CurveDocument {
     if c.weights().iter().all(|&w| w == 1.0) {
         CurveDocument::Bspline(BSplineDoc {
             degree: c.degree(),
@@ -159,7 +176,7 @@ fn periodic_form<T: PartialEq + Clone>(items: &[T], knots: &[f64], p: usize) -> 
     tail_ok.then(|| (items[..n].to_vec(), knots[..n + p + 1].to_vec()))
 }
 
-fn spline_curve_doc(s: &SplineCurve) -> CurveDocument {
+pub(crate) fn spline_curve_doc(s: &SplineCurve) -> CurveDocument {
     let p = s.degree;
     let periodic = if s.closed {
         let tagged: Vec<(Vec<f64>, Option<f64>)> =
@@ -188,7 +205,7 @@ fn spline_curve_doc(s: &SplineCurve) -> CurveDocument {
 
 /// An exact rational arc of an ellipse with semi-axes (a, b) in a placement, angles
 /// [t0, t1].
-fn conic_arc<const D: usize>(axes: &Axes, a: f64, b: f64, t0: f64, t1: f64) -> Result<NurbsCurve<D>> {
+pub(crate) fn conic_arc<const D: usize>(axes: &Axes, a: f64, b: f64, t0: f64, t1: f64) -> Result<NurbsCurve<D>> {
     let v = |p: Point<3>| Point::<D>::from_fn(|k, _| p[k]);
     let (x, y) = (axes.x.map(|c| c * a), axes.y().map(|c| c * b));
     let frame = CircleFrame { center: v(axes.origin), x_axis: v(x), y_axis: v(y), radius: 1.0 };
@@ -197,7 +214,7 @@ fn conic_arc<const D: usize>(axes: &Axes, a: f64, b: f64, t0: f64, t1: f64) -> R
 
 /// A piece [start, end] of a spline, by knot insertion (the whole curve when the range
 /// is its domain).
-fn spline_piece<const D: usize>(s: &SplineCurve, start: f64, end: f64) -> Result<NurbsCurve<D>> {
+pub(crate) fn spline_piece<const D: usize>(s: &SplineCurve, start: f64, end: f64) -> Result<NurbsCurve<D>> {
     let mut c = nurbs::<D>(s)?.clamped().map_err(|e| StepError::plain(format!("B-spline curve: {e}")))?;
     let d = c.domain();
     let err = |e: splinekit::Error| StepError::plain(format!("B-spline curve: {e}"));
@@ -454,22 +471,26 @@ fn loop_piece(c: &Curve) -> Result<Option<NurbsCurve<2>>> {
     }))
 }
 
-/// Loop pieces end to end as one clamped NURBS loop: every piece elevated to the highest
-/// degree, its parameter mapped onto [k, k + 1], joints kept at multiplicity p (exact).
-fn join_loop(
+/// A loop's pieces as clamped 2-D NURBS curves in the document's (u, v), each with what it
+/// is: mapped by `map`, seam sides chosen, moved by whole periods to run on from one
+/// another, and bridged where one does not start where the one before it ends (the
+/// degenerate edge at a pole, which writers leave out: a [`Role::Pole`] piece). `None`
+/// where a piece has no NURBS form.
+pub(crate) fn loop_parts(
     pieces: &[Curve],
     seam_twins: &[Option<(u64, Curve)>],
+    roles: &[Role],
     map: &dyn Fn(Point<2>) -> Point<2>,
     periodic: (bool, bool),
-) -> Result<Option<CurveDocument>> {
+) -> Result<Option<Vec<(NurbsCurve<2>, Role)>>> {
     let mut parts = Vec::new();
     let mut twins = Vec::new();
     for (c, twin) in pieces.iter().zip(seam_twins) {
         let Some(p) = loop_piece(c)? else { return Ok(None) };
-        parts.push(p.map_points(|q| map(*q)));
+        parts.push(mapped(&p, map)?);
         twins.push(match twin {
             Some((edge, t)) => match loop_piece(t)? {
-                Some(t) => Some((*edge, t.map_points(|q| map(*q)))),
+                Some(t) => Some((*edge, mapped(&t, map)?)),
                 None => return Ok(None),
             },
             None => None,
@@ -477,7 +498,21 @@ fn join_loop(
     }
     choose_seam_sides(&mut parts, twins);
     align_periods(&mut parts, periodic);
-    let parts = bridge_gaps(parts)?;
+    Ok(Some(bridge_gaps(parts.into_iter().zip(roles.iter().copied()).collect())?))
+}
+
+/// The curve with its control points mapped by `map`; an error where the map gives a
+/// point that is not finite (a face whose loops span no area).
+fn mapped(c: &NurbsCurve<2>, map: &dyn Fn(Point<2>) -> Point<2>) -> Result<NurbsCurve<2>> {
+    if c.control_points().iter().any(|q| !map(*q).iter().all(|x| x.is_finite())) {
+        return Err(StepError::plain("a face's loops span no area of its surface"));
+    }
+    Ok(c.map_points(|q| map(*q)))
+}
+
+/// Parts end to end as one clamped NURBS loop: every part elevated to the highest degree,
+/// its parameter mapped onto [k, k + 1], joints kept at multiplicity p (exact).
+pub(crate) fn join_parts(parts: &[NurbsCurve<2>]) -> Result<NurbsCurve<2>> {
     let p = parts.iter().map(|c| c.degree()).max().unwrap_or(1);
     let err = |e: splinekit::Error| StepError::plain(format!("loop: {e}"));
     let mut knots = vec![0.0; p + 1];
@@ -496,7 +531,20 @@ fn join_loop(
     let first = points[0];
     let last = points.len() - 1;
     points[last] = first; // the loop closes; pieces meet at shared vertices
-    Ok(Some(nurbs_doc(&NurbsCurve::new(p, knots, points, weights).map_err(err)?)))
+    NurbsCurve::new(p, knots, points, weights).map_err(err)
+}
+
+/// Loop pieces end to end as one clamped NURBS loop ([`loop_parts`], [`join_parts`]).
+fn join_loop(
+    pieces: &[Curve],
+    seam_twins: &[Option<(u64, Curve)>],
+    roles: &[Role],
+    map: &dyn Fn(Point<2>) -> Point<2>,
+    periodic: (bool, bool),
+) -> Result<Option<CurveDocument>> {
+    let Some(parts) = loop_parts(pieces, seam_twins, roles, map, periodic)? else { return Ok(None) };
+    let parts: Vec<NurbsCurve<2>> = parts.into_iter().map(|(c, _)| c).collect();
+    Ok(Some(nurbs_doc(&join_parts(&parts)?)))
 }
 
 /// The box of a face's loops in its (u, v) plane: the box of the loops' control points
@@ -546,14 +594,14 @@ fn translated(doc: CurveDocument, offset: Point<3>) -> Option<CurveDocument> {
 }
 
 /// A face's surface as a document and the map of its (u, v) onto the document's.
-type FaceSurface = (SurfaceDocument, Box<dyn Fn(Point<2>) -> Point<2>>);
+pub(crate) type FaceSurface = (SurfaceDocument, Box<dyn Fn(Point<2>) -> Point<2>>);
 
 /// The document of a face's surface: splines and revolutions keep their parameters, and so
 /// do spheres and tori (`placed` model surfaces, whose parametrisation is STEP's); a plane
 /// spans the loops' box (loops map onto [0, 1]²); a cylinder or cone is the exact
 /// revolution of its generatrix and an extrusion its profile moved to the loops' lowest v,
 /// both spanning the loops' v range (v maps onto [0, 1]). `None` for other surfaces.
-fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
+pub(crate) fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
     let identity = |q: Point<2>| q;
     let span_v = |b: Aabb<2>| {
         let (v0, dv) = (b.min[1], b.max[1] - b.min[1]);
@@ -606,22 +654,30 @@ fn face_surface(f: &Face) -> Result<Option<FaceSurface>> {
     }))
 }
 
-/// Pieces with a straight segment wherever one does not start where the one before it ends
-/// (cyclically): a degenerate edge at a pole, which STEP writers leave out, is a point in
-/// space but a segment of the parameter plane.
-fn bridge_gaps(parts: Vec<NurbsCurve<2>>) -> Result<Vec<NurbsCurve<2>>> {
+/// Pieces with a straight segment (a [`Role::Pole`]) wherever one does not start where the
+/// one before it ends (cyclically): a degenerate edge at a pole, which STEP writers leave
+/// out, is a point in space but a segment of the parameter plane. The twins of cuts are
+/// renumbered past the inserted segments.
+fn bridge_gaps(parts: Vec<(NurbsCurve<2>, Role)>) -> Result<Vec<(NurbsCurve<2>, Role)>> {
     let start = |c: &NurbsCurve<2>| c.control_points()[0];
     let end = |c: &NurbsCurve<2>| c.control_points()[c.control_points().len() - 1];
-    let scale = parts.iter().flat_map(|c| c.control_points()).fold(1.0_f64, |m, q| m.max(q.amax()));
+    let scale = parts.iter().flat_map(|c| c.0.control_points()).fold(1.0_f64, |m, q| m.max(q.amax()));
     let n = parts.len();
     let mut out = Vec::with_capacity(n + 2);
+    let mut index = Vec::with_capacity(n);
     for k in 0..n {
-        let (a, b) = (end(&parts[k]), start(&parts[(k + 1) % n]));
+        let (a, b) = (end(&parts[k].0), start(&parts[(k + 1) % n].0));
+        index.push(out.len());
         out.push(parts[k].clone());
         if (b - a).norm() > GAP_TOLERANCE * scale {
             let line = NurbsCurve::new(1, vec![0.0, 0.0, 1.0, 1.0], vec![a, b], vec![1.0, 1.0])
                 .map_err(|e| StepError::plain(format!("loop: {e}")))?;
-            out.push(line);
+            out.push((line, Role::Pole));
+        }
+    }
+    for (_, role) in &mut out {
+        if let Role::Cut { twin } = role {
+            *twin = index[*twin];
         }
     }
     Ok(out)
@@ -711,7 +767,7 @@ fn periodic_angles(s: &Surface) -> (bool, bool) {
 /// surfaces without poles (tori, cylinders). On a sphere, a cone or a revolution a gap of a
 /// whole turn in u is the degenerate edge at a pole or apex, which writers leave out and
 /// the loop bridges.
-fn seam_crossings(s: &Surface) -> (bool, bool) {
+pub(crate) fn seam_crossings(s: &Surface) -> (bool, bool) {
     match s {
         Surface::Torus { .. } => (true, true),
         Surface::Cylinder { .. } => (true, false),
@@ -723,7 +779,10 @@ fn seam_crossings(s: &Surface) -> (bool, bool) {
 /// its loops' lowest u (and v, around a torus' tube) into [0, 2π) where the document's
 /// angle is periodic: STEP writers place faces at any angle (OpenCASCADE's cones run over
 /// u ∈ [−α, 0]), the documents' domains start at 0. Loops across the seam stay as they are.
-fn into_domain(f: &Face, map: Box<dyn Fn(Point<2>) -> Point<2>>) -> Result<Box<dyn Fn(Point<2>) -> Point<2>>> {
+pub(crate) fn into_domain(
+    f: &Face,
+    map: Box<dyn Fn(Point<2>) -> Point<2>>,
+) -> Result<Box<dyn Fn(Point<2>) -> Point<2>>> {
     let periodic = periodic_angles(&f.surface);
     let Some(b) = loops_box(f)? else { return Ok(map) };
     let low = map(b.min);
@@ -750,7 +809,7 @@ fn face_doc(f: &Face) -> Result<Option<SurfaceDocument>> {
     let mut outer = None;
     let mut holes = Vec::new();
     for (i, l) in f.loops.iter().enumerate() {
-        let Some(doc) = join_loop(l, &f.seam_twins[i], map.as_ref(), seam_crossings(&f.surface))? else {
+        let Some(doc) = join_loop(l, &f.seam_twins[i], &f.roles[i], map.as_ref(), seam_crossings(&f.surface))? else {
             return Ok(None);
         };
         if Some(i) == f.outer || (f.outer.is_none() && i == 0) {

@@ -36,7 +36,7 @@ pub fn export_document(
     relative_tolerance: f64,
     header: &HeaderInfo,
 ) -> Result<(String, Vec<Exported>)> {
-    let expanded = subdivision::expand_subdivision_surfaces(doc, relative_tolerance)?;
+    let expanded = solid::expand_breps(&subdivision::expand_subdivision_surfaces(doc, relative_tolerance)?)?;
     let exported: Vec<Exported> = match &expanded {
         SceneOrShape::Shape(shape) => vec![export_shape(shape, name, relative_tolerance)?],
         SceneOrShape::Scene(scene) => scene
@@ -55,4 +55,5 @@ pub fn export_document(
 }
 
 pub mod import;
+pub mod solid;
 pub use import::{ImportedDocuments, ImportedItem, import_items};
