@@ -272,6 +272,84 @@ impl<const D: usize> BlendingSplineCurve<D> {
         Ok(BlendingSplineCurve { locals, knots, bfunction, source: None })
     }
 
+    /// The blending spline of Hermite data (GMlib's `PERBSCurve(DVector<DVector<Vector>>, t)`):
+    /// `data[k]` = [c(c_k), c′(c_k), …, c^{(d)}(c_k)] at each knot c_k of `knots`, the same
+    /// number d + 1 ≥ 2 of values at every knot (d ≤ 20). Local k is the Bézier curve of
+    /// degree d on its support [c_{k−1}, c_{k+1}] whose value and first d derivatives at c_k
+    /// are `data[k]` (its Taylor polynomial: P = H⁻¹ data[k], see [`super::hermite`]),
+    /// its frame's origin the position `data[k][0]`.
+    ///
+    /// Since ℓ_k alone is active at c_k with B(0) = 0, B(1) = 1, the curve passes through
+    /// every position; its derivative of order j ≤ d at c_k is `data[k][j]` when the
+    /// B-function's derivatives of orders 1 … j vanish at 0 and 1 (every order for ERBS,
+    /// up to the smoothness for the polynomial B-functions). Errors name `hermite` (counts,
+    /// non-finite values) or `knots`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::basis::BFunction;
+    /// use splinekit::blend::{BlendKnots, BlendingSplineCurve};
+    /// use splinekit::curve::Curve;
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// // Positions, first and second derivatives at the knots 0, 1, 3.
+    /// let data = vec![
+    ///     vec![p(0.0, 0.0), p(1.0, 1.0), p(0.0, -1.0)],
+    ///     vec![p(1.0, 1.0), p(1.0, 0.0), p(0.0, 0.0)],
+    ///     vec![p(3.0, 0.0), p(1.0, -1.0), p(0.5, 0.0)],
+    /// ];
+    /// let knots = BlendKnots::new(vec![0.0, 1.0, 3.0], false).unwrap();
+    /// let c = BlendingSplineCurve::from_hermite(knots, data.clone(), BFunction::erbs_default()).unwrap();
+    /// for (k, &t) in [0.0, 1.0, 3.0].iter().enumerate() {
+    ///     for j in 0..3 {
+    ///         assert!((c.derivative(t, j) - data[k][j]).norm() < 1e-12);
+    ///     }
+    /// }
+    /// ```
+    pub fn from_hermite(knots: BlendKnots, data: Vec<Vec<Point<D>>>, bfunction: BFunction) -> Result<Self> {
+        let n = knots.count();
+        if data.len() != n {
+            return Err(Error::invalid(
+                "hermite",
+                format!(
+                    "expected {n} entries, one per local curve of the {} knots{}, got {}",
+                    knots.values().len(),
+                    if knots.is_closed() { " of a closed curve" } else { "" },
+                    data.len()
+                ),
+            ));
+        }
+        let order = data[0].len();
+        if !(2..=21).contains(&order) {
+            return Err(Error::invalid(
+                "hermite[0]",
+                format!("expected a position and 1 to 20 derivatives, got {order} values"),
+            ));
+        }
+        let mut locals = Vec::with_capacity(n);
+        for (k, values) in data.iter().enumerate() {
+            if values.len() != order {
+                return Err(Error::invalid(
+                    format!("hermite[{k}]"),
+                    format!(
+                        "expected {order} values (a position and {} derivatives) like hermite[0], got {}",
+                        order - 1,
+                        values.len()
+                    ),
+                ));
+            }
+            for (j, v) in values.iter().enumerate() {
+                if !v.iter().all(|x| x.is_finite()) {
+                    return Err(Error::invalid(format!("hermite[{k}][{j}]"), "must be finite"));
+                }
+            }
+            let curve = LocalCurve::bezier(hermite_bezier(values, knots.support(k), knots.centre(k))?);
+            locals.push(Local { curve, origin: values[0], transform: Affine::identity() });
+        }
+        Ok(BlendingSplineCurve { locals, knots, bfunction, source: None })
+    }
+
     /// The same spline rebuilt from its model with `local_curves` locals of `kind` (frames
     /// are reset). An error for splines made from explicit locals.
     pub fn rebuilt(&self, local_curves: usize, kind: LocalKind) -> Result<Self> {

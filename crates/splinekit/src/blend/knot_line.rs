@@ -68,16 +68,20 @@ impl<const D: usize> BlendingSplineSurface<D> {
         for l in 0..others {
             let (a, b) = if along_u { (k, l) } else { (l, k) };
             let (uc, vc) = (new_u.centre(a), new_v.centre(b));
-            let shape = match self.kind {
-                PatchKind::SubSurface => PatchShape::Shared(self.model.clone()),
-                PatchKind::Bezier(du, dv) => {
+            let (shape, own) = match (self.kind, &self.model) {
+                (PatchKind::SubSurface, Some(model)) => (PatchShape::Shared(model.clone()), model.point(uc, vc)),
+                // (A surface without a model has Bézier patches; bicubic for the type's sake.)
+                (kind, _) => {
+                    let (du, dv) = if let PatchKind::Bezier(du, dv) = kind { (du, dv) } else { (3, 3) };
                     let mut g = vec![Point::<D>::zeros(); (du + 1) * (dv + 1)];
                     self.eval_partials(uc, vc, du, dv, &mut g);
                     let support = crate::ParamRect::new(new_u.support(a), new_v.support(b));
-                    PatchShape::Bezier(hermite_patch(&g, (du, dv), support, (uc, vc), "the surface's")?)
+                    (PatchShape::Bezier(hermite_patch(&g, (du, dv), support, (uc, vc), "the surface's")?), g[0])
                 }
             };
-            let origin = self.model.point(uc, vc);
+            // The frame's centre: the model's point, as for every patch made from a model;
+            // without a model (Hermite data), the surface's own point there.
+            let origin = self.model.as_ref().map_or(own, |m| m.point(uc, vc));
             fresh.push(LocalPatch { shape, origin, transform: Affine::identity() });
         }
         // Patch (a, b) at a·n_v′ + b in the new grid.
