@@ -344,7 +344,14 @@ impl<const D: usize> BlendingSplineCurve<D> {
                     return Err(Error::invalid(format!("hermite[{k}][{j}]"), "must be finite"));
                 }
             }
-            let curve = LocalCurve::bezier(hermite_bezier(values, knots.support(k), knots.centre(k))?);
+            let support = knots.support(k);
+            let fitted = hermite_bezier(values, support, knots.centre(k)).map_err(|e| {
+                Error::invalid(
+                    format!("hermite[{k}]"),
+                    format!("no Bézier local of these data on the support [{}, {}] ({e})", support.start, support.end),
+                )
+            })?;
+            let curve = LocalCurve::bezier(fitted);
             locals.push(Local { curve, origin: values[0], transform: Affine::identity() });
         }
         Ok(BlendingSplineCurve { locals, knots, bfunction, source: None })

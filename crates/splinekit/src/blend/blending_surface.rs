@@ -294,7 +294,15 @@ impl<const D: usize> BlendingSplineSurface<D> {
             }
             let (uc, vc) = (knots_u.centre(k), knots_v.centre(l));
             let support = ParamRect::new(knots_u.support(k), knots_v.support(l));
-            let patch = hermite_patch(g, (du, dv), support, (uc, vc), "the data's")?;
+            let patch = hermite_patch(g, (du, dv), support, (uc, vc), "the data's").map_err(|e| {
+                Error::invalid(
+                    format!("hermite[{k}][{l}]"),
+                    format!(
+                        "no Bézier patch of these data on the support [{}, {}] × [{}, {}] ({e})",
+                        support.u.start, support.u.end, support.v.start, support.v.end
+                    ),
+                )
+            })?;
             patches.push(LocalPatch { shape: PatchShape::Bezier(patch), origin: g[0], transform: Affine::identity() });
         }
         Ok(BlendingSplineSurface { patches, knots_u, knots_v, bfunction, model: None, kind: PatchKind::Bezier(du, dv) })
