@@ -29,6 +29,8 @@ pub enum KnotSpacingDoc {
     Uniform,
     /// At equal chord length along the model.
     ChordLength,
+    /// At equal arc length along the model, by quadrature (GMlib's `generateCuLenKnotVector`).
+    ArcLength,
 }
 
 /// The kind of local curves of a blending spline built from a model.
@@ -270,6 +272,7 @@ impl BlendingSplineDoc {
                 let spacing = match knot_spacing {
                     KnotSpacingDoc::Uniform => KnotSpacing::Uniform,
                     KnotSpacingDoc::ChordLength => KnotSpacing::ChordLength,
+                    KnotSpacingDoc::ArcLength => KnotSpacing::ArcLength,
                 };
                 let options = BlendingCurveOptions { local: kind, bfunction: b, closed: Some(closed), spacing };
                 match knots {
@@ -465,6 +468,9 @@ impl DocumentKind for BlendingSplineDoc {
                 let spacing = match knot_spacing {
                     KnotSpacingDoc::Uniform => 0.0,
                     KnotSpacingDoc::ChordLength => 256.0 * n * m.eval,
+                    // The length table (64 pieces of adaptive Gauss–Legendre) and a Newton
+                    // inversion per knot, each a few quadratures.
+                    KnotSpacingDoc::ArcLength => (64.0 * 60.0 + n * 600.0) * m.eval,
                 };
                 let own = ShapeCost::new("local_curves", n * LOCAL_PIECE + bytes, build + spacing, 0.0);
                 let mut cost = own.and(m);
