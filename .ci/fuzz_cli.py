@@ -135,6 +135,9 @@ def surface(depth=0):
         if random.random() < 0.2: doc["boundary"] = random.choice(["edge-only", "edge-and-corner", "none"])
         if random.random() < 0.2: doc["triangulate"] = True
         if random.random() < 0.1: doc["obj"] = random.choice(["missing.obj", "/dev/null", ""])
+    if t == "sub_surface":
+        doc["surface"] = surface(1) if depth < 1 and random.random() < 0.5 else {"type": random.choice(["torus", "plane", "sphere"])}
+        doc["corners"] = random.choice([[pt(2) for _ in range(4)], [[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 0], [1, 1], [1, 0], [0, 1]], [pt(2)], 5])
     if t == "trimmed": doc.update(surface={"type":"plane"} if random.random()<0.5 else surface(1) if depth < 1 else {"type":"sphere"}, outer=curve(1))
     return doc
 bad = 0
