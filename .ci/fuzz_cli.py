@@ -6,13 +6,21 @@ internal error (CONTRACT.md section 3). Standard library only.
 
 Usage: python3 .ci/fuzz_cli.py BINARY [SEED] [CASES]
 """
-import json, os, random, shutil, subprocess, sys, tempfile
+import json, os, random, re, shutil, subprocess, sys, tempfile
 B = sys.argv[1]
 random.seed(int(sys.argv[2]) if len(sys.argv) > 2 else 1)
 TMP = tempfile.mkdtemp()
 SVG, OBJ, STL, GLB, PNG = (os.path.join(TMP, "fuzz." + e) for e in ("svg", "obj", "stl", "glb", "png"))
-types = ["bezier","rational_bezier","bspline","nurbs","hermite","catmull_rom","line","circle","ellipse","helix","heart","rose","lissajous","trefoil","butterfly","logarithmic_spiral","chrysanthemum","bfunction","blend","blending_spline",
-         "bezier_surface","bspline_surface","nurbs_surface","plane","cylinder","cone","sphere","torus","mobius","klein_bottle","enneper","helicoid","seashell","apple","heart_surface","asteroidal_sphere","bent_horns","bohemian_dome","boy_surface","cross_cap","dini_surface","eight_surface","inside_out_torus","kuen_surface","sine_surface","slippers_surface","roman_surface","swallowtail","trianguloid_trefoil","whitney_umbrella","revolution","ruled","extrusion","coons","sweep","trimmed","blending_spline_surface","subdivision_surface"]
+def registry():
+    """The curve and surface types of the binary's registry, read from its message for an
+    unknown type, so that a new kind is fuzzed without an edit here (its fields below, where
+    this file knows them; otherwise its defaults, with the stray fields every kind gets)."""
+    r = subprocess.run([B, "eval", "-", "--at", "0"], input='{"type": "?"}', capture_output=True, text=True, timeout=20)
+    m = re.search(r"curves: ([^;]+); surfaces: ([^)]+)\)", r.stderr)
+    if not m:
+        sys.exit(f"fuzz: no list of types in the message for an unknown type: {r.stderr.strip()}")
+    return [t.strip() for t in m.group(1).split(",")], [t.strip() for t in m.group(2).split(",")]
+CURVES, SURFACES = registry()
 def num():
     return random.choice([0, 1, -1, 0.5, 2, 3, 1e300, -1e300, 1e-300, 7, 100000, -0.0, 1e9, 0.25, 12, "x", None, [], True])
 def pt(d):
@@ -31,7 +39,7 @@ def animation(local):
                        {"pulse": {"amplitude": num()}}, {"spin": {}}, 3])
     return random.choice([[{"local": local, "motions": [m]}], [{"local": local}], {"0": m}])
 def curve(depth=0):
-    t = random.choice(types[:20]) if depth < 2 else "line"
+    t = random.choice(CURVES) if depth < 2 else "line"
     d = random.choice([1,2,3,3,3,4,5])
     n = random.choice([0,1,2,3,4,5,8])
     p = random.choice([0,1,2,3,5,-1,100000])
@@ -71,10 +79,16 @@ def curve(depth=0):
             doc.pop("model", None); doc.pop("local", None)
             doc["knots"] = knots(random.choice([0, 2, 3, 4]))
             doc["local_curves"] = [curve(2) for _ in range(random.choice([0, 2, 3, 4]))]
+        elif random.random() < 0.15:
+            # Hermite data: a position and derivatives per knot, counts and shapes sometimes off.
+            doc.pop("model", None); doc.pop("local", None); doc.pop("local_curves", None)
+            n, order = random.choice([0, 2, 3, 4]), random.choice([1, 2, 3, 22])
+            doc["knots"] = knots(n + random.choice([0, 0, 1]))
+            doc["hermite"] = [pts(order + random.choice([0, 0, 0, 1]), d) for _ in range(n)]
     if random.random() < 0.05: doc["bogus"] = 1
     return doc
 def surface(depth=0):
-    t = random.choice(types[17:])
+    t = random.choice(SURFACES)
     doc = {"type": t}
     d = random.choice([2,3,3,3])
     nu, nv = random.choice([0,1,2,3,4]), random.choice([1,2,3,4])
@@ -106,6 +120,12 @@ def surface(depth=0):
         if random.random() < 0.3: doc["closed_u"] = random.random() < 0.5
         if random.random() < 0.3: doc["transforms"] = random.choice([{"1,1": {"scale": num()}}, [[{}], [{"translate": pt(3)}]], {"a": {}}, 4])
         if random.random() < 0.3: doc["animation"] = animation(random.choice([[0, 1], [9, 0], 1]))
+        if random.random() < 0.15:
+            # Hermite data at knot pairs: rows of partials per pair, shapes sometimes off.
+            doc.pop("model", None); doc.pop("local_surfaces", None); doc.pop("local", None)
+            nu, nv, du, dv = random.choice([0, 2, 3]), random.choice([1, 2, 3]), random.choice([0, 1, 3, 13]), random.choice([1, 2])
+            doc["knots_u"], doc["knots_v"] = knots(nu), knots(nv + random.choice([0, 0, 1]))
+            doc["hermite"] = [[[pts(dv + 1, d) for _ in range(du + 1)] for _ in range(nv)] for _ in range(nu)]
     if t == "subdivision_surface":
         nvert = random.choice([0, 3, 4, 8])
         doc["vertices"] = pts(nvert, 3 if random.random() < 0.9 else 2)
@@ -115,6 +135,9 @@ def surface(depth=0):
         if random.random() < 0.2: doc["boundary"] = random.choice(["edge-only", "edge-and-corner", "none"])
         if random.random() < 0.2: doc["triangulate"] = True
         if random.random() < 0.1: doc["obj"] = random.choice(["missing.obj", "/dev/null", ""])
+    if t == "sub_surface":
+        doc["surface"] = surface(1) if depth < 1 and random.random() < 0.5 else {"type": random.choice(["torus", "plane", "sphere"])}
+        doc["corners"] = random.choice([[pt(2) for _ in range(4)], [[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 0], [1, 1], [1, 0], [0, 1]], [pt(2)], 5])
     if t == "trimmed": doc.update(surface={"type":"plane"} if random.random()<0.5 else surface(1) if depth < 1 else {"type":"sphere"}, outer=curve(1))
     return doc
 bad = 0

@@ -5,13 +5,16 @@
 //! `ValueError`s with the library's message, naming the field (`t`, `k`, `local_curves`).
 
 use pyo3::prelude::*;
-use splinekit_scene::CurveDocument;
-use splinekit_scene::blending::{insert_local_curve, split_local_curve};
+use splinekit::surface::Direction;
+use splinekit_scene::blending::{insert_knot_line, insert_local_curve, set_closed, split_knot_line, split_local_curve};
+use splinekit_scene::{CurveDocument, SurfaceDocument};
 
 use crate::blending::only_on;
 use crate::curve::PyCurve;
 use crate::curve_kinds::curve_object;
-use crate::errors::OrValueError;
+use crate::errors::{OrValueError, value_error};
+use crate::surface::PySurface;
+use crate::surface_kinds::surface_object;
 
 /// The blending-spline document of `doc`, or the error naming what `method` works on.
 fn blending(doc: &CurveDocument, method: &str) -> PyResult<splinekit_scene::blending::BlendingSplineDoc> {
@@ -44,5 +47,59 @@ impl PyCurve {
         let doc = blending(&self.doc, "split_knot")?;
         let out = split_local_curve(&doc, k).or_value_error()?;
         curve_object(py, CurveDocument::BlendingSpline(out))
+    }
+
+    /// A new blending spline turned open (``closed=False``) or closed, keeping the locals it
+    /// can (GMlib's ``toggleClose``): opening copies local 0 one period on to the end (the
+    /// same curve); closing drops the last local where the ends meet (value and first
+    /// derivative), else keeps every local and bridges from the end to the start over one
+    /// more interval (a model-built spline drops its last local in any case). Explicit local
+    /// curves refuse it.
+    fn set_closed<'py>(&self, py: Python<'py>, closed: bool) -> PyResult<Bound<'py, PyAny>> {
+        let doc = blending(&self.doc, "set_closed")?;
+        let out = set_closed(&doc, closed).or_value_error()?;
+        curve_object(py, CurveDocument::BlendingSpline(out))
+    }
+}
+
+/// The blending-spline surface document of `doc`, or the error naming what `method` works on.
+fn blending_surface(
+    doc: &SurfaceDocument,
+    method: &str,
+) -> PyResult<splinekit_scene::blending::BlendingSplineSurfaceDoc> {
+    match doc {
+        SurfaceDocument::BlendingSplineSurface(d) => Ok(d.clone()),
+        other => Err(only_on(method, "blending_spline_surface surfaces", other.type_name())),
+    }
+}
+
+/// `"u"` or `"v"` as a direction.
+fn direction(d: &str) -> PyResult<Direction> {
+    match d {
+        "u" => Ok(Direction::U),
+        "v" => Ok(Direction::V),
+        other => Err(value_error(format!("direction: must be \"u\" or \"v\", got \"{other}\""))),
+    }
+}
+
+#[pymethods]
+impl PySurface {
+    /// ``(surface, k)``: a new blending-spline surface with the knot line ``direction`` =
+    /// t inserted (``"u"``: a row of patches fitted to the surface at u = t; ``"v"``: a
+    /// column), and the new row's (column's) index k.
+    fn insert_knot_line<'py>(&self, py: Python<'py>, direction: &str, t: f64) -> PyResult<(Bound<'py, PyAny>, usize)> {
+        let doc = blending_surface(&self.doc, "insert_knot_line")?;
+        let (out, k) = insert_knot_line(&doc, self::direction(direction)?, t).or_value_error()?;
+        Ok((surface_object(py, SurfaceDocument::BlendingSplineSurface(out))?, k))
+    }
+
+    /// A new blending-spline surface with knot line k of ``direction`` (``"u"`` or
+    /// ``"v"``) split along the other direction (GMlib's ``splitKnotAlong``): the knot
+    /// doubled and its row (column) of patches copied, the same surface, whose copies
+    /// ``set_transform`` can turn into a crease at the knot pairs.
+    fn split_knot_line<'py>(&self, py: Python<'py>, direction: &str, k: usize) -> PyResult<Bound<'py, PyAny>> {
+        let doc = blending_surface(&self.doc, "split_knot_line")?;
+        let out = split_knot_line(&doc, self::direction(direction)?, k).or_value_error()?;
+        surface_object(py, SurfaceDocument::BlendingSplineSurface(out))
     }
 }

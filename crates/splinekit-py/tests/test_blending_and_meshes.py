@@ -211,3 +211,35 @@ def test_insert_local_and_split_knot_errors_name_the_field(heart):
         sk.load({"type": "heart"}).insert_local(1.0)
     with pytest.raises(ValueError, match=r"^type: split_knot works on blending_spline curves, not heart$"):
         sk.load({"type": "heart"}).split_knot(1)
+
+
+def test_hermite_data_curve_reproduces_its_data_and_opens_and_closes():
+    data = [[[0, 0], [1, 1], [0, -2]], [[1, 1], [1, 0], [0.5, 0]], [[2, 0.5], [0, -1], [1, 1]], [[3, 0], [1, 0.2], [0, 0]]]
+    knots = [0, 1, 2.5, 3]
+    c = sk.load({"type": "blending_spline", "knots": knots, "hermite": data})
+    for k, t in enumerate(knots):
+        for j in range(3):
+            np.testing.assert_allclose(c(t, j), data[k][j], atol=1e-12)
+    closed = c.set_closed(True)  # the ends differ: every datum kept, one bridging interval
+    assert closed.to_dict()["knots"] == [0, 1, 2.5, 3, 3.5] and len(closed.local_pieces()) == 4
+    t = np.linspace(0, 3, 301)
+    np.testing.assert_allclose(closed(t), c(t), atol=1e-12)
+    np.testing.assert_allclose(closed(3.5 - 1e-12), c(0.0), atol=1e-9)
+    with pytest.raises(ValueError, match=r"^hermite\[1\]: expected 3 values"):
+        sk.load({"type": "blending_spline", "knots": knots, "hermite": [data[0], data[1][:2], data[2], data[3]]})
+
+
+def test_hermite_data_surface_and_knot_lines():
+    two = lambda z: [[[0, 0, z], [0, 1, 0]], [[1, 0, 0], [0, 0, 0]]]  # noqa: E731
+    s = sk.load({"type": "blending_spline_surface", "knots_u": [0, 1, 2], "knots_v": [0, 1],
+                 "hermite": [[two(0), two(1)], [two(2), two(0)], [two(1), two(1)]]})
+    np.testing.assert_allclose(s(1.0, 1.0, grid=False), [0, 0, 0], atol=1e-12)
+    np.testing.assert_allclose(s(1.0, 0.0, grid=False), [0, 0, 2], atol=1e-12)
+    split = s.split_knot_line("u", 1)
+    assert len(split.to_dict()["hermite"]) == 4
+    u, v = np.linspace(0, 2, 21), np.linspace(0, 1, 11)
+    np.testing.assert_allclose(split(u, v), s(u, v), atol=1e-12)
+    inserted, k = s.insert_knot_line("v", 0.5)
+    assert k == 1 and len(inserted.to_dict()["hermite"][0]) == 3
+    with pytest.raises(ValueError, match=r'^direction: must be "u" or "v", got "w"$'):
+        s.split_knot_line("w", 1)

@@ -15,6 +15,7 @@ mod from_curves;
 mod models;
 mod nets;
 mod placed;
+mod sub_surface;
 mod subdivision;
 mod trimmed;
 
@@ -29,6 +30,7 @@ pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, Rule
 pub use models::*;
 pub use nets::{BSplineSurfaceDoc, BezierSurfaceDoc, NurbsSurfaceDoc};
 pub use placed::PlacedDoc;
+pub use sub_surface::SubSurfaceDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
 pub use trimmed::TrimmedDoc;
 
@@ -129,6 +131,8 @@ macro_rules! surface_kinds {
                 Trimmed(TrimmedDoc) = "trimmed", python(base),
                 /// A surface moved rigidly into a frame.
                 Placed(PlacedDoc) = "placed", python(base),
+                /// A surface over a quadrilateral of another's domain.
+                SubSurface(SubSurfaceDoc) = "sub_surface", python(base),
                 /// Blending-spline surface.
                 BlendingSplineSurface(BlendingSplineSurfaceDoc) = "blending_spline_surface", python(base),
                 /// The limit surface of a subdivision cage.

@@ -407,3 +407,34 @@ fn rebuilding_changes_count_degree_and_bfunction_and_refresh_only_touches_the_af
     let fresh = CurveSamples::uniform(&c, 2001, 2).unwrap();
     assert!((0..2001).all(|i| samples.at(i) == fresh.at(i)));
 }
+
+#[test]
+fn arc_length_knots_are_where_the_spirals_closed_form_length_is_k_l_over_n() {
+    use splinekit::blend::KnotSpacing;
+    use splinekit::curve::model::LogarithmicSpiral;
+    // r = a e^{bt}: length from 0 to t is a√(1 + b²)(e^{bt} − 1)/b, so the knot of
+    // length k L/(n − 1) is t_k = ln(1 + k(e^{bT} − 1)/(n − 1))/b, T = 2π·turns.
+    let (a, b, turns) = (0.5, 0.2, 3.0);
+    let spiral: Arc<dyn Curve<3>> = Arc::new(LogarithmicSpiral::new(a, b, turns).unwrap());
+    let n = 12;
+    let options = BlendingCurveOptions { spacing: KnotSpacing::ArcLength, closed: Some(false), ..Default::default() };
+    let c = BlendingSplineCurve::from_model(spiral.clone(), n, &options).unwrap();
+    let end = (b * std::f64::consts::TAU * turns).exp();
+    for k in 0..n {
+        let want = (1.0 + k as f64 * (end - 1.0) / (n - 1) as f64).ln() / b;
+        assert!((c.centre(k) - want).abs() < 1e-9, "knot {k}: {} vs {want}", c.centre(k));
+    }
+    // The polyline spacing is close but an order of magnitude and more less accurate.
+    let chord = BlendingCurveOptions { spacing: KnotSpacing::ChordLength, ..options.clone() };
+    let rough = BlendingSplineCurve::from_model(spiral.clone(), n, &chord).unwrap();
+    let worst = (1..n - 1).map(|k| (rough.centre(k) - c.centre(k)).abs()).fold(0.0, f64::max);
+    assert!(worst > 1e-8 && worst < 1e-3, "{worst:e}");
+    // Still Hermite at the uneven knots.
+    for k in 0..n {
+        let t = c.centre(k);
+        let (mut got, mut want) = ([Point::<3>::zeros(); 4], [Point::<3>::zeros(); 4]);
+        c.eval(t, &mut got);
+        spiral.eval(t, &mut want);
+        assert_orders_close(&got, &want, 1e-10, &format!("knot {k}"));
+    }
+}

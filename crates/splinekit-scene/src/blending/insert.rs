@@ -14,13 +14,17 @@
 //!   Unedited neighbours are fitted to the model again on their new supports: a Taylor
 //!   polynomial does not depend on the support, so they are the same curves.
 //!
-//! Only splines built from a model take insertions: explicit local curves are each mapped
+//! - with Hermite data (`hermite`), the new local's entry is the curve's value and first
+//!   d derivatives at t* (the data its Bézier interpolates), inserted at its index.
+//!
+//! Only splines built from a model or from Hermite data take insertions: explicit local curves are each mapped
 //! onto their support, so shrinking a support would stretch the neighbour.
 //!
 //! [`BlendingSplineCurve::insert_local`]: splinekit::blend::BlendingSplineCurve::insert_local
 //! [`BlendingSplineSurface::insert_knot_line`]: splinekit::blend::BlendingSplineSurface::insert_knot_line
 
-use splinekit::surface::Direction;
+use splinekit::curve::Curve;
+use splinekit::surface::{Direction, Surface};
 
 use super::rebuilt::{local_points, model_built, rebuilt_doc};
 use crate::curves::BlendingSplineDoc;
@@ -61,7 +65,15 @@ fn curve_in<const D: usize>(doc: &BlendingSplineDoc, t: f64) -> Result<(Blending
             *entry = p;
         }
     }
-    if let Some(p) = local_points(&c, k) {
+    if let Some(data) = &mut out.hermite {
+        // Hermite data: the new local's datum is the curve's value and first d derivatives
+        // at t* before the insertion, which is what the kernel's new local interpolates.
+        let mut values = vec![splinekit::Point::<D>::zeros(); data.first().map_or(2, Vec::len)];
+        let mut rest = doc.clone();
+        rest.time = None;
+        rest.curve::<D>()?.eval(t, &mut values);
+        data.insert(k, crate::points::from_points(&values));
+    } else if let Some(p) = local_points(&c, k) {
         let at = out.local_control_points.iter().position(|(i, _)| *i > k).unwrap_or(out.local_control_points.len());
         out.local_control_points.insert(at, (k, p));
     }
@@ -80,7 +92,7 @@ fn curve_in<const D: usize>(doc: &BlendingSplineDoc, t: f64) -> Result<(Blending
 /// let doc: BlendingSplineSurfaceDoc =
 ///     serde_json::from_str(r#"{"model": {"type": "torus"}, "local_surfaces": [6, 4]}"#).unwrap();
 /// let (after, k) = insert_knot_line(&doc, Direction::V, 1.0).unwrap();
-/// assert_eq!((k, after.local_surfaces), (1, [6, 5]));
+/// assert_eq!((k, after.local_surfaces), (1, Some([6, 5])));
 /// assert_eq!(after.knots_v.as_ref().map(Vec::len), Some(6));
 /// assert!(after.knots_u.is_none(), "u stays uniform");
 /// assert_eq!(after.local_control_points.len(), 6, "one fitted net per new patch");
@@ -106,7 +118,9 @@ fn surface_in<const D: usize>(
     let mut out = doc.clone();
     let along_u = direction == Direction::U;
     let (nu, nv) = s.local_count();
-    out.local_surfaces = [nu, nv];
+    if out.hermite.is_none() {
+        out.local_surfaces = Some([nu, nv]);
+    }
     if along_u {
         out.knots_u = Some(s.knots().0.values().to_vec());
     } else {
@@ -129,7 +143,30 @@ fn surface_in<const D: usize>(
             *entry = n;
         }
     }
-    if matches!(doc.local, None | Some(LocalPatchDoc::Bezier { .. })) {
+    if let Some(data) = &mut out.hermite {
+        // Hermite data: the new patches' entries are the surface's partials at the new knot
+        // pairs, which is what the kernel's new patches interpolate.
+        let (Some(first), (ku, kv)) = (data.first().and_then(|r| r.first()), s.knots()) else {
+            return Ok((out, k));
+        };
+        let (du, dv) = (first.len() - 1, first.first().map_or(1, Vec::len) - 1);
+        // The partials were taken before the insertion: those of the surface as it was,
+        // which the kernel's new patches interpolate (`rest` is that surface).
+        let before = rest.surface::<D>()?;
+        let entry = |u: f64, v: f64| {
+            let mut g = vec![splinekit::Point::<D>::zeros(); (du + 1) * (dv + 1)];
+            before.eval_partials(u, v, du, dv, &mut g);
+            g.chunks(dv + 1).map(crate::points::from_points).collect::<Vec<_>>()
+        };
+        if along_u {
+            let row = (0..nv).map(|l| entry(ku.centre(k), kv.centre(l))).collect();
+            data.insert(k, row);
+        } else {
+            for (a, row) in data.iter_mut().enumerate() {
+                row.insert(k, entry(ku.centre(a), kv.centre(k)));
+            }
+        }
+    } else if matches!(doc.local, None | Some(LocalPatchDoc::Bezier { .. })) {
         let others = if along_u { nv } else { nu };
         for l in 0..others {
             let at = if along_u { (k, l) } else { (l, k) };

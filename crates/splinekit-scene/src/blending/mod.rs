@@ -10,6 +10,7 @@ mod insert;
 pub mod local_points;
 mod rebuilt;
 mod split;
+mod topology;
 
 pub use crate::curves::{BlendingSource, BlendingSplineDoc, KnotSpacingDoc, LocalCurves, LocalDoc};
 pub use crate::surfaces::{BlendingSplineSurfaceDoc, LocalPatchDoc};
@@ -17,3 +18,4 @@ pub(crate) use animation::tracks;
 pub use animation::{MotionDoc, OscillateDoc, PulseDoc, RotateMotionDoc, SwingDoc, TrackDoc};
 pub use insert::{insert_knot_line, insert_local_curve};
 pub use split::{knot_to_split, split_local_curve};
+pub use topology::{set_closed, split_knot_line};

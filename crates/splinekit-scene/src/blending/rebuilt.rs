@@ -38,7 +38,9 @@ pub(super) fn rebuilt_doc<const D: usize, R>(
     let mut out = doc.clone();
     out.knots = Some(c.knots().values().to_vec());
     out.knot_spacing = None;
-    out.local_curves = LocalCurves::Count(c.local_count());
+    if out.hermite.is_none() {
+        out.local_curves = Some(LocalCurves::Count(c.local_count()));
+    }
     Ok((out, c, edited))
 }
 

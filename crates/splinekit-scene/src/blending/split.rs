@@ -14,7 +14,9 @@
 //!   one is fitted to the model again on the new supports: a Taylor polynomial does not
 //!   depend on the support, so both copies are the local as it was.
 //!
-//! Only splines built from a model split: explicit local curves are each mapped onto their
+//! - with Hermite data, local k's entry of `hermite` is copied to k + 1.
+//!
+//! Only splines built from a model or from Hermite data split: explicit local curves are each mapped onto their
 //! support, which the split halves.
 //!
 //! [`BlendingSplineCurve::split_knot`]: splinekit::blend::BlendingSplineCurve::split_knot
@@ -103,6 +105,10 @@ fn split_in<const D: usize>(doc: &BlendingSplineDoc, k: usize) -> Result<Blendin
         }
     }
     out.animation = animation;
+    if let Some(data) = &mut out.hermite {
+        // Both copies interpolate local k's datum (the same Taylor polynomial).
+        data.insert(k + 1, data[k].clone());
+    }
     out.local_control_points = copied(&doc.local_control_points, k, up);
     for (i, entry) in out.local_control_points.iter_mut().filter(|(i, _)| *i == k || *i == k + 1) {
         if let Some(p) = local_points(&c, *i) {

@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use serde::{Deserialize, Deserializer, Serialize};
 use serde_json::Value;
+use splinekit::Point;
 use splinekit::blend::{BlendKnots, BlendingCurveOptions, BlendingSplineCurve, KnotSpacing, LocalKind};
 use splinekit::curve::Curve;
 
@@ -15,6 +16,7 @@ use crate::blending::{TrackDoc, tracks};
 use crate::budget::{BFUNCTION_EVALUATION, F64, LOCAL_PIECE, ShapeCost};
 use crate::error::{DocumentError, Result};
 use crate::json::{kind, nested};
+use crate::points::{dimension_of, to_point};
 use crate::registry::{DocumentKind, self_form_kind_items};
 use crate::transforms::LocalTransforms;
 
@@ -27,6 +29,8 @@ pub enum KnotSpacingDoc {
     Uniform,
     /// At equal chord length along the model.
     ChordLength,
+    /// At equal arc length along the model, by quadrature (GMlib's `generateCuLenKnotVector`).
+    ArcLength,
 }
 
 /// The kind of local curves of a blending spline built from a model.
@@ -91,8 +95,15 @@ pub struct BlendingSplineDoc {
     /// The model curve (with a count of local curves).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub model: Option<Box<CurveDocument>>,
-    /// A count (with a model) or the local curves (with knots).
-    pub local_curves: LocalCurves,
+    /// A count (with a model) or the local curves (with knots); absent with `hermite`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub local_curves: Option<LocalCurves>,
+    /// Hermite data, one entry per knot: [c(c_k), c′(c_k), …, c^{(d)}(c_k)], the same count
+    /// d + 1 ≥ 2 at every knot (with `knots`, without `model` and `local_curves`). Each local
+    /// is the Bézier of degree d with those derivatives at its knot (GMlib's
+    /// `PERBSCurve(DVector<DVector<Vector>>, t)`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hermite: Option<Vec<Vec<Vec<f64>>>>,
     /// Knots: open, one per local; closed, one more. With a list of local curves, required;
     /// with a model, optional (default: spaced by `knot_spacing`; given, e.g. after a local
     /// was inserted or a knot split, they must span the model's domain). Non-decreasing; an
@@ -143,6 +154,13 @@ pub enum BlendingSource<'a> {
         /// The knots themselves, when given.
         knots: Option<&'a [f64]>,
     },
+    /// Bézier locals of Hermite data at the knots.
+    Hermite {
+        /// Open: one knot per entry; closed: one more (the first plus the period).
+        knots: &'a [f64],
+        /// Per knot, the position and its first d derivatives.
+        data: &'a [Vec<Vec<f64>>],
+    },
     /// Explicit knots and local curves, each mapped onto its support.
     Explicit {
         /// Open: one knot per local; closed: one more (the first plus the period).
@@ -155,12 +173,41 @@ pub enum BlendingSource<'a> {
 const BEZIER_LOCALS: LocalDoc = LocalDoc::Bezier { degree: 3 };
 
 impl BlendingSplineDoc {
-    /// The source of the locals: a model with a count, or knots with a list of curves.
+    /// The source of the locals: a model with a count, knots with a list of curves, or
+    /// knots with Hermite data.
     pub fn source(&self) -> Result<BlendingSource<'_>> {
-        match (&self.model, &self.knots, &self.local_curves) {
-            (None, None, _) => {
-                Err(DocumentError::new("model", "missing (give a model curve, or knots and a list of local curves)"))
+        if let Some(data) = &self.hermite {
+            let clash = [
+                ("model", self.model.is_some()),
+                ("local_curves", self.local_curves.is_some()),
+                ("local", self.local.is_some()),
+                ("knot_spacing", self.knot_spacing.is_some()),
+            ];
+            if let Some((field, _)) = clash.iter().find(|(_, given)| *given) {
+                return Err(DocumentError::new(
+                    *field,
+                    "not with hermite data (each entry of hermite is the data of one Bézier local at its knot)",
+                ));
             }
+            let knots = self.knots.as_deref().ok_or_else(|| {
+                DocumentError::new(
+                    "knots",
+                    "missing (hermite data is given at knots: one per entry, one more when closed)",
+                )
+            })?;
+            return Ok(BlendingSource::Hermite { knots, data });
+        }
+        let Some(local_curves) = &self.local_curves else {
+            return Err(DocumentError::new(
+                "local_curves",
+                "missing (a count with a model, a list of curves with knots; or hermite data with knots)",
+            ));
+        };
+        match (&self.model, &self.knots, local_curves) {
+            (None, None, _) => Err(DocumentError::new(
+                "model",
+                "missing (give a model curve, or knots and a list of local curves, or knots and hermite data)",
+            )),
             (Some(_), Some(_), _) if self.knot_spacing.is_some() => {
                 Err(DocumentError::new("knot_spacing", "not with explicit knots (they are where the locals go)"))
             }
@@ -185,6 +232,27 @@ impl BlendingSplineDoc {
         }
     }
 
+    /// The Hermite data of `hermite` as points of dimension D, checked: the same count of
+    /// values at every knot (errors name `hermite[k]` and `hermite[k][j]`).
+    pub fn hermite_points<const D: usize>(data: &[Vec<Vec<f64>>]) -> Result<Vec<Vec<Point<D>>>> {
+        let order = data.first().map_or(0, Vec::len);
+        data.iter()
+            .enumerate()
+            .map(|(k, values)| {
+                if values.len() != order {
+                    return Err(DocumentError::new(
+                        format!("hermite[{k}]"),
+                        format!(
+                            "expected {order} values (a position and its derivatives) like hermite[0], got {}",
+                            values.len()
+                        ),
+                    ));
+                }
+                values.iter().enumerate().map(|(j, p)| to_point::<D>(&format!("hermite[{k}][{j}]"), p)).collect()
+            })
+            .collect()
+    }
+
     /// The kernel curve in dimension D (the document's), posed at [`Self::time`].
     pub fn curve<const D: usize>(&self) -> Result<BlendingSplineCurve<D>> {
         let b = self.bfunction.as_ref().unwrap_or(&DEFAULT_BFUNCTION).build().map_err(|e| e.within("bfunction"))?;
@@ -204,6 +272,7 @@ impl BlendingSplineDoc {
                 let spacing = match knot_spacing {
                     KnotSpacingDoc::Uniform => KnotSpacing::Uniform,
                     KnotSpacingDoc::ChordLength => KnotSpacing::ChordLength,
+                    KnotSpacingDoc::ArcLength => KnotSpacing::ArcLength,
                 };
                 let options = BlendingCurveOptions { local: kind, bfunction: b, closed: Some(closed), spacing };
                 match knots {
@@ -224,6 +293,12 @@ impl BlendingSplineDoc {
                         BlendingSplineCurve::from_model_with_knots(model, knots, &options)?
                     }
                 }
+            }
+            BlendingSource::Hermite { knots, data } => {
+                let points = Self::hermite_points::<D>(data)?;
+                bezier_degree = Some(points.first().map_or(0, Vec::len).saturating_sub(1));
+                let knots = BlendKnots::new(knots.to_vec(), self.closed.unwrap_or(false))?;
+                BlendingSplineCurve::from_hermite(knots, points, b)?
             }
             BlendingSource::Explicit { knots, local_curves } => {
                 let locals = local_curves
@@ -316,7 +391,7 @@ impl DocumentKind for BlendingSplineDoc {
     /// its JSON kind), then the fields, then [`BlendingSplineDoc::source`].
     fn from_fields(fields: Value) -> Result<Self> {
         let given = |key: &str| fields.get(key).is_some_and(|v| !v.is_null());
-        if let Some(local_curves) = fields.get("local_curves") {
+        if let (Some(local_curves), false) = (fields.get("local_curves"), given("hermite")) {
             match (given("model"), given("knots")) {
                 (true, false) if local_curves.as_u64().is_none() => {
                     return Err(local_curves_kind(true, kind(local_curves)));
@@ -332,6 +407,21 @@ impl DocumentKind for BlendingSplineDoc {
     fn dimension(&self) -> Result<usize> {
         match self.source()? {
             BlendingSource::Model { model, .. } => model.dimension().map_err(|e| e.within("model")),
+            BlendingSource::Hermite { data, .. } => {
+                let first = dimension_of("hermite[0]", data.first().map_or(&[][..], Vec::as_slice)).map_err(|e| {
+                    if data.is_empty() { DocumentError::new("hermite", "the list is empty") } else { e }
+                })?;
+                for (k, values) in data.iter().enumerate().skip(1) {
+                    let d = dimension_of(&format!("hermite[{k}]"), values)?;
+                    if d != first {
+                        return Err(DocumentError::new(
+                            format!("hermite[{k}]"),
+                            format!("expected points of dimension {first} like hermite[0], got {d}"),
+                        ));
+                    }
+                }
+                Ok(first)
+            }
             BlendingSource::Explicit { local_curves, .. } => {
                 let first = local_curves
                     .first()
@@ -378,11 +468,21 @@ impl DocumentKind for BlendingSplineDoc {
                 let spacing = match knot_spacing {
                     KnotSpacingDoc::Uniform => 0.0,
                     KnotSpacingDoc::ChordLength => 256.0 * n * m.eval,
+                    // The length table (64 pieces of adaptive Gauss–Legendre) and a Newton
+                    // inversion per knot, each a few quadratures.
+                    KnotSpacingDoc::ArcLength => (64.0 * 60.0 + n * 600.0) * m.eval,
                 };
                 let own = ShapeCost::new("local_curves", n * LOCAL_PIECE + bytes, build + spacing, 0.0);
                 let mut cost = own.and(m);
                 cost.eval = eval + blend;
                 cost
+            }
+            Ok(BlendingSource::Hermite { data, .. }) => {
+                // As Bézier locals made from a model, with the data in place of the model.
+                let (n, d) = (data.len() as f64, 4.0);
+                let q = data.first().map_or(1, Vec::len) as f64;
+                let bytes = 3.0 * n * q * d * F64;
+                ShapeCost::new("hermite", n * LOCAL_PIECE + bytes, n * q * q * d, 2.0 * q * q * d + blend)
             }
             Ok(BlendingSource::Explicit { local_curves, .. }) => {
                 let n = local_curves.len() as f64;
@@ -403,7 +503,8 @@ impl DocumentKind for BlendingSplineDoc {
     fn example() -> Self {
         BlendingSplineDoc {
             model: Some(Box::new(CurveDocument::Heart(HeartDoc::default()))),
-            local_curves: LocalCurves::Count(10),
+            local_curves: Some(LocalCurves::Count(10)),
+            hermite: None,
             knots: None,
             knot_spacing: None,
             local: None,
@@ -423,7 +524,7 @@ impl DocumentKind for BlendingSplineDoc {
         if let Some(model) = &mut self.model {
             model.set_time(time);
         }
-        if let LocalCurves::List(list) = &mut self.local_curves {
+        if let Some(LocalCurves::List(list)) = &mut self.local_curves {
             list.iter_mut().for_each(|c| c.set_time(time));
         }
     }

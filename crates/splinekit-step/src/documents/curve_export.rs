@@ -95,6 +95,7 @@ pub(super) fn blending_polynomial_degree(d: &BlendingSplineDoc) -> Option<usize>
     let beta = bfunction_degree(d.bfunction.as_ref()?)?;
     let local = match d.source().ok()? {
         BlendingSource::Model { local: LocalDoc::Bezier { degree }, .. } => *degree,
+        BlendingSource::Hermite { data, .. } => data.first()?.len().checked_sub(1)?,
         BlendingSource::Explicit { local_curves, .. } => {
             local_curves.iter().map(polynomial_local_degree).collect::<Option<Vec<_>>>()?.into_iter().max()?
         }

@@ -250,7 +250,7 @@ fn local_kind(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, surfa
         let current = spacing.unwrap_or_else(|| "uniform".into());
         let mut chosen = current.clone();
         egui::ComboBox::from_label("knots").selected_text(&chosen).show_ui(ui, |ui| {
-            for k in ["uniform", "chord_length"] {
+            for k in ["uniform", "chord_length", "arc_length"] {
                 ui.selectable_value(&mut chosen, k.to_string(), k);
             }
         });

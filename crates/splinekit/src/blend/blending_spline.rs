@@ -51,6 +51,11 @@ pub enum KnotSpacing {
     Uniform,
     /// At equal chord length along the model (its arc length, measured on a fine polyline).
     ChordLength,
+    /// At equal arc length along the model (GMlib's `generateCuLenKnotVector`): the knots
+    /// t_k with ∫_{t₀}^{t_k} |c′| = k L/(n − 1) (closed: k L/n), L the model's length, the
+    /// integral by adaptive Gauss–Legendre quadrature and inverted by Newton's method
+    /// ([`crate::query::ArcLengthTable`]) to 10⁻¹¹ L.
+    ArcLength,
 }
 
 /// A local curve: a Bézier piece (kept with its frame applied to the control points, which
@@ -178,6 +183,7 @@ impl<const D: usize> BlendingSplineCurve<D> {
         let knots = match spacing {
             KnotSpacing::Uniform => uniform,
             KnotSpacing::ChordLength => BlendKnots::new(chord_length_knots(model.as_ref(), uniform.values()), closed)?,
+            KnotSpacing::ArcLength => BlendKnots::new(arc_length_knots(model.as_ref(), uniform.values())?, closed)?,
         };
         Self::built(model, knots, options)
     }
@@ -269,6 +275,91 @@ impl<const D: usize> BlendingSplineCurve<D> {
                 Ok(Local::new(LocalCurve::General(mapped), knots.centre(k)))
             })
             .collect::<Result<_>>()?;
+        Ok(BlendingSplineCurve { locals, knots, bfunction, source: None })
+    }
+
+    /// The blending spline of Hermite data (GMlib's `PERBSCurve(DVector<DVector<Vector>>, t)`):
+    /// `data[k]` = [c(c_k), c′(c_k), …, c^{(d)}(c_k)] at each knot c_k of `knots`, the same
+    /// number d + 1 ≥ 2 of values at every knot (d ≤ 20). Local k is the Bézier curve of
+    /// degree d on its support [c_{k−1}, c_{k+1}] whose value and first d derivatives at c_k
+    /// are `data[k]` (its Taylor polynomial: P = H⁻¹ data[k], see [`super::hermite`]),
+    /// its frame's origin the position `data[k][0]`.
+    ///
+    /// Since ℓ_k alone is active at c_k with B(0) = 0, B(1) = 1, the curve passes through
+    /// every position; its derivative of order j ≤ d at c_k is `data[k][j]` when the
+    /// B-function's derivatives of orders 1 … j vanish at 0 and 1 (every order for ERBS,
+    /// up to the smoothness for the polynomial B-functions). Errors name `hermite` (counts,
+    /// non-finite values) or `knots`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::basis::BFunction;
+    /// use splinekit::blend::{BlendKnots, BlendingSplineCurve};
+    /// use splinekit::curve::Curve;
+    /// let p = |x, y| Point::<2>::new(x, y);
+    /// // Positions, first and second derivatives at the knots 0, 1, 3.
+    /// let data = vec![
+    ///     vec![p(0.0, 0.0), p(1.0, 1.0), p(0.0, -1.0)],
+    ///     vec![p(1.0, 1.0), p(1.0, 0.0), p(0.0, 0.0)],
+    ///     vec![p(3.0, 0.0), p(1.0, -1.0), p(0.5, 0.0)],
+    /// ];
+    /// let knots = BlendKnots::new(vec![0.0, 1.0, 3.0], false).unwrap();
+    /// let c = BlendingSplineCurve::from_hermite(knots, data.clone(), BFunction::erbs_default()).unwrap();
+    /// for (k, &t) in [0.0, 1.0, 3.0].iter().enumerate() {
+    ///     for j in 0..3 {
+    ///         assert!((c.derivative(t, j) - data[k][j]).norm() < 1e-12);
+    ///     }
+    /// }
+    /// ```
+    pub fn from_hermite(knots: BlendKnots, data: Vec<Vec<Point<D>>>, bfunction: BFunction) -> Result<Self> {
+        let n = knots.count();
+        if data.len() != n {
+            return Err(Error::invalid(
+                "hermite",
+                format!(
+                    "expected {n} entries, one per local curve of the {} knots{}, got {}",
+                    knots.values().len(),
+                    if knots.is_closed() { " of a closed curve" } else { "" },
+                    data.len()
+                ),
+            ));
+        }
+        let order = data[0].len();
+        if !(2..=21).contains(&order) {
+            return Err(Error::invalid(
+                "hermite[0]",
+                format!("expected a position and 1 to 20 derivatives, got {order} values"),
+            ));
+        }
+        let mut locals = Vec::with_capacity(n);
+        for (k, values) in data.iter().enumerate() {
+            if values.len() != order {
+                return Err(Error::invalid(
+                    format!("hermite[{k}]"),
+                    format!(
+                        "expected {order} values (a position and {} derivatives) like hermite[0], got {}",
+                        order - 1,
+                        values.len()
+                    ),
+                ));
+            }
+            for (j, v) in values.iter().enumerate() {
+                if !v.iter().all(|x| x.is_finite()) {
+                    return Err(Error::invalid(format!("hermite[{k}][{j}]"), "must be finite"));
+                }
+            }
+            let support = knots.support(k);
+            let fitted = hermite_bezier(values, support, knots.centre(k)).map_err(|e| {
+                Error::invalid(
+                    format!("hermite[{k}]"),
+                    format!("no Bézier local of these data on the support [{}, {}] ({e})", support.start, support.end),
+                )
+            })?;
+            let curve = LocalCurve::bezier(fitted);
+            locals.push(Local { curve, origin: values[0], transform: Affine::identity() });
+        }
         Ok(BlendingSplineCurve { locals, knots, bfunction, source: None })
     }
 
@@ -411,6 +502,123 @@ impl<const D: usize> BlendingSplineCurve<D> {
         self.knots = knots;
         self.locals[k] = left;
         self.locals.insert(k + 1, copy);
+        Ok(())
+    }
+
+    /// Opens a closed spline or closes an open one, keeping every local piece it can
+    /// (GMlib's `toggleClose`); a spline already so is left as it is.
+    ///
+    /// - **Opening** (n locals on c₀ … c_n, c_n = c₀ + P): the same knot values as an open
+    ///   vector of n + 1 locals, local n a copy of local 0 moved one period on (ℓ_n(t) =
+    ///   ℓ₀(t − P), with local 0's frame). The curve does not change on its domain.
+    /// - **Closing** (n locals on c₀ … c_{n−1}): where the ends meet — value and first
+    ///   derivative at c₀ and c_{n−1} equal to 10⁻⁹ of their size, as for a spline of a
+    ///   closed model — local n − 1 is the same piece as local 0 one period on and is
+    ///   dropped: n − 1 locals on the same knots, period c_{n−1} − c₀, the curve unchanged
+    ///   up to that agreement. Otherwise every local is kept and one interval is added,
+    ///   c_n = 2c_{n−1} − c_{n−2} (the mirrored end spacing the last local's support
+    ///   already had): on it the curve bridges from local n − 1 to local 0 (at t − P), and
+    ///   is unchanged on [c₀, c_{n−1}]. The bridge reaches past a model's domain, so such a
+    ///   spline no longer counts as built from its model.
+    ///
+    /// Bézier locals whose support changes are re-expressed on the new one (the same
+    /// polynomials). An error naming `closed` when a closed spline would have fewer than
+    /// three locals.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use splinekit::blend::{BlendingCurveOptions, BlendingSplineCurve};
+    /// use splinekit::curve::Curve;
+    /// use splinekit::curve::model::Circle;
+    /// let circle = Arc::new(Circle::new(1.0).unwrap());
+    /// let mut c = BlendingSplineCurve::from_model(circle, 6, &BlendingCurveOptions::default()).unwrap();
+    /// let before = c.clone();
+    /// c.set_closed(false).unwrap();
+    /// assert_eq!((c.local_count(), c.is_closed()), (7, false));
+    /// assert!((c.point(6.0) - before.point(6.0)).norm() < 1e-12);
+    /// c.set_closed(true).unwrap(); // the ends meet: the copy goes again
+    /// assert_eq!((c.local_count(), c.is_closed()), (6, true));
+    /// assert!((c.point(6.0) - before.point(6.0)).norm() < 1e-12);
+    /// ```
+    pub fn set_closed(&mut self, closed: bool) -> Result<()> {
+        if closed == self.knots.is_closed() {
+            return Ok(());
+        }
+        let values = self.knots.values().to_vec();
+        let n = self.locals.len();
+        if !closed {
+            let period = self.knots.domain().length();
+            let knots = BlendKnots::new(values, false)?;
+            let first = &self.locals[0];
+            let curve = match &first.curve {
+                LocalCurve::Bezier { fitted, .. } => {
+                    let d = fitted.domain();
+                    LocalCurve::bezier(Reparametrized::new(
+                        fitted.curve().clone(),
+                        Interval::new(d.start + period, d.end + period),
+                    )?)
+                }
+                LocalCurve::General(c) => {
+                    let d = c.domain();
+                    let shifted = Interval::new(d.start + period, d.end + period);
+                    LocalCurve::General(Arc::new(Reparametrized::new(c.clone(), shifted)?))
+                }
+            };
+            let mut copy = Local { curve, origin: first.origin, transform: Affine::identity() };
+            copy.set_transform(first.transform);
+            self.locals.push(copy);
+            self.knots = knots;
+            // The copy of a sub-curve local is the model one period on, which is the model
+            // itself only where the model has that period.
+            if let Some(src) = &self.source
+                && src.kind == LocalKind::SubCurve
+                && !(src.model.is_closed() && (src.model.domain().length() - period).abs() <= 1e-12 * period)
+            {
+                self.source = None;
+            }
+        } else {
+            let meet = {
+                let (mut a, mut b) = ([Point::<D>::zeros(); 2], [Point::<D>::zeros(); 2]);
+                self.eval_side(values[0], Side::Right, &mut a);
+                self.eval_side(values[n - 1], Side::Left, &mut b);
+                (0..2).all(|j| (a[j] - b[j]).norm() <= 1e-9 * a[j].norm().max(b[j].norm()).max(1.0))
+            };
+            let count = if meet { n - 1 } else { n };
+            if count < 3 {
+                return Err(Error::invalid(
+                    "closed",
+                    format!("a closed blending spline needs at least 3 local curves, this one would have {count}"),
+                ));
+            }
+            let knots = if meet {
+                BlendKnots::new(values, true)?
+            } else {
+                let mut v = values;
+                v.push(2.0 * v[n - 1] - v[n - 2]);
+                BlendKnots::new(v, true)?
+            };
+            if meet {
+                self.locals.pop();
+            } else {
+                self.source = None;
+            }
+            self.knots = knots;
+        }
+        // Every Bézier local on its support in the new knots (most are where they were).
+        for k in 0..self.locals.len() {
+            let support = self.knots.support(k);
+            let local = &mut self.locals[k];
+            if let LocalCurve::Bezier { fitted, .. } = &local.curve
+                && fitted.domain() != support
+            {
+                let moved = super::hermite::rebased(fitted, support)?;
+                let transform = local.transform;
+                local.curve = LocalCurve::bezier(moved);
+                local.set_transform(transform);
+            }
+        }
         Ok(())
     }
 
@@ -601,6 +809,27 @@ fn local_from_model<const D: usize>(
             LocalCurve::bezier(hermite_bezier(&target, knots.support(k), c)?)
         }
     })
+}
+
+/// Knots at equal arc length along the model: the uniform knots' count and ends, the
+/// interior ones where the length from the start is k L/(number of intervals), inverted to
+/// 10⁻¹¹ L. An error naming `knot_spacing` where the model has no length (a point).
+fn arc_length_knots<const D: usize>(model: &dyn Curve<D>, uniform: &[f64]) -> Result<Vec<f64>> {
+    let intervals = uniform.len() - 1;
+    let rough = crate::ops::length::arc_length(model, model.domain(), 1e-6);
+    if !(rough > 0.0 && rough.is_finite()) {
+        return Err(Error::invalid(
+            "knot_spacing",
+            format!("arc-length knots need a model of finite, non-zero length, got {rough}"),
+        ));
+    }
+    let table = crate::query::ArcLengthTable::new(model, 1e-11 * rough)?;
+    let total = table.total();
+    let mut knots = uniform.to_vec();
+    for (k, knot) in knots.iter_mut().enumerate().take(intervals).skip(1) {
+        *knot = table.parameter_at(total * k as f64 / intervals as f64)?;
+    }
+    Ok(knots)
 }
 
 /// Knots at equal chord length along the model: the uniform knots' count and ends, the

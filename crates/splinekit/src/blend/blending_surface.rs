@@ -157,7 +157,8 @@ pub struct BlendingSplineSurface<const D: usize> {
     pub(super) knots_u: BlendKnots,
     pub(super) knots_v: BlendKnots,
     bfunction: BFunction,
-    pub(super) model: Arc<dyn Surface<D>>,
+    /// The model the patches were made from; `None` for Hermite data.
+    pub(super) model: Option<Arc<dyn Surface<D>>>,
     pub(super) kind: PatchKind,
 }
 
@@ -228,6 +229,85 @@ impl<const D: usize> BlendingSplineSurface<D> {
         Self::built(model, (knots_u, knots_v), options.local, options.bfunction.clone())
     }
 
+    /// The blending-spline surface of Hermite data (GMlib's `PERBSSurf(DMatrix<DMatrix<Vector>>,
+    /// u, v)`): `data[k·n_v + l]` holds the mixed partials ∂^{i+j}S/∂u^i∂v^j at the knot
+    /// pair (u_k, v_l), i ≤ d_u, j ≤ d_v, row-major (i first, (d_u + 1)(d_v + 1) points), with
+    /// `degrees` = (d_u, d_v), each 1 to 12. Patch (k, l) is the Bézier patch of those degrees
+    /// on its support whose partials at (u_k, v_l) are the data (C = H_u⁻¹ G H_v⁻ᵀ), its
+    /// frame's origin the position ∂^{0,0}. With ERBS the surface reproduces every datum at
+    /// every knot pair; with a polynomial B-function the partials up to its smoothness in
+    /// each direction. Errors name `hermite` (counts, non-finite values).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::Point;
+    /// use splinekit::basis::BFunction;
+    /// use splinekit::blend::{BlendKnots, BlendingSplineSurface};
+    /// use splinekit::surface::Surface;
+    /// // The saddle (u, v, uv) from its value, S_u, S_v, S_uv at the corners of [0, 1]².
+    /// let partials = |u: f64, v: f64| vec![
+    ///     Point::<3>::new(u, v, u * v), Point::<3>::new(0.0, 1.0, u),
+    ///     Point::<3>::new(1.0, 0.0, v), Point::<3>::new(0.0, 0.0, 1.0),
+    /// ];
+    /// let data = vec![partials(0.0, 0.0), partials(0.0, 1.0), partials(1.0, 0.0), partials(1.0, 1.0)];
+    /// let knots = (BlendKnots::new(vec![0.0, 1.0], false).unwrap(), BlendKnots::new(vec![0.0, 1.0], false).unwrap());
+    /// let s = BlendingSplineSurface::from_hermite(knots, data, (1, 1), BFunction::erbs_default()).unwrap();
+    /// assert!((s.point(0.3, 0.6) - Point::<3>::new(0.3, 0.6, 0.18)).norm() < 1e-14);
+    /// ```
+    pub fn from_hermite(
+        (knots_u, knots_v): (BlendKnots, BlendKnots),
+        data: Vec<Vec<Point<D>>>,
+        (du, dv): (usize, usize),
+        bfunction: BFunction,
+    ) -> Result<Self> {
+        let (nu, nv) = (knots_u.count(), knots_v.count());
+        if nu * nv > MAX_PATCHES {
+            return Err(Error::invalid("hermite", format!("at most 10⁶ patches, got {}", nu * nv)));
+        }
+        if !((1..=12).contains(&du) && (1..=12).contains(&dv)) {
+            return Err(Error::invalid(
+                "hermite",
+                format!("the orders of the partials must be between 1 and 12 in each direction, got [{du}, {dv}]"),
+            ));
+        }
+        if data.len() != nu * nv {
+            return Err(Error::invalid(
+                "hermite",
+                format!("expected {nu}×{nv} entries, one per knot pair, got {}", data.len()),
+            ));
+        }
+        let mut patches = Vec::with_capacity(nu * nv);
+        for (i, g) in data.iter().enumerate() {
+            let (k, l) = (i / nv, i % nv);
+            if g.len() != (du + 1) * (dv + 1) {
+                return Err(Error::invalid(
+                    format!("hermite[{k}][{l}]"),
+                    format!("expected {}×{} partials, got {}", du + 1, dv + 1, g.len()),
+                ));
+            }
+            if let Some(j) = g.iter().position(|p| !p.iter().all(|x| x.is_finite())) {
+                return Err(Error::invalid(
+                    format!("hermite[{k}][{l}][{}][{}]", j / (dv + 1), j % (dv + 1)),
+                    "must be finite",
+                ));
+            }
+            let (uc, vc) = (knots_u.centre(k), knots_v.centre(l));
+            let support = ParamRect::new(knots_u.support(k), knots_v.support(l));
+            let patch = hermite_patch(g, (du, dv), support, (uc, vc), "the data's").map_err(|e| {
+                Error::invalid(
+                    format!("hermite[{k}][{l}]"),
+                    format!(
+                        "no Bézier patch of these data on the support [{}, {}] × [{}, {}] ({e})",
+                        support.u.start, support.u.end, support.v.start, support.v.end
+                    ),
+                )
+            })?;
+            patches.push(LocalPatch { shape: PatchShape::Bezier(patch), origin: g[0], transform: Affine::identity() });
+        }
+        Ok(BlendingSplineSurface { patches, knots_u, knots_v, bfunction, model: None, kind: PatchKind::Bezier(du, dv) })
+    }
+
     fn built(
         model: Arc<dyn Surface<D>>,
         (knots_u, knots_v): (BlendKnots, BlendKnots),
@@ -249,19 +329,22 @@ impl<const D: usize> BlendingSplineSurface<D> {
                 patches.push(make_patch(&model, kind, &knots_u, &knots_v, k, l)?);
             }
         }
-        Ok(BlendingSplineSurface { patches, knots_u, knots_v, bfunction, model, kind })
+        Ok(BlendingSplineSurface { patches, knots_u, knots_v, bfunction, model: Some(model), kind })
     }
 
     /// The same surface rebuilt from its model with other counts or patch kind (frames
-    /// are reset).
+    /// are reset). An error for surfaces of Hermite data, which have no model.
     pub fn rebuilt(&self, counts: (usize, usize), kind: PatchKind) -> Result<Self> {
+        let model = self.model.clone().ok_or_else(|| {
+            Error::invalid("local_surfaces", "this blending-spline surface was built from Hermite data, not a model")
+        })?;
         let options = BlendingSurfaceOptions {
             local: kind,
             bfunction: self.bfunction.clone(),
             closed_u: Some(self.knots_u.is_closed()),
             closed_v: Some(self.knots_v.is_closed()),
         };
-        Self::from_model(self.model.clone(), counts, &options)
+        Self::from_model(model, counts, &options)
     }
     /// Replaces the B-function.
     pub fn set_bfunction(&mut self, bfunction: BFunction) {
@@ -515,11 +598,14 @@ impl<const D: usize> Surface<D> for BlendingSplineSurface<D> {
         // the same point (always but on seam intervals of a model closed by force), the
         // model is evaluated once and each frame applied, so nesting costs one evaluation
         // per level, not four.
-        let shared = matches!(self.kind, PatchKind::SubSurface)
-            && (su.second_shift == 0.0 || self.model.is_closed_u())
-            && (sv.second_shift == 0.0 || self.model.is_closed_v());
-        if shared {
-            self.model.eval_partials(su.t, sv.t, du, dv, &mut s[..w]);
+        let shared = match (&self.model, self.kind) {
+            (Some(model), PatchKind::SubSurface) => {
+                (su.second_shift == 0.0 || model.is_closed_u()) && (sv.second_shift == 0.0 || model.is_closed_v())
+            }
+            _ => false,
+        };
+        if let (true, Some(model)) = (shared, &self.model) {
+            model.eval_partials(su.t, sv.t, du, dv, &mut s[..w]);
             for c in 1..4 {
                 s.copy_within(0..w, c * w);
             }

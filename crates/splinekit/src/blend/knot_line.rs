@@ -1,4 +1,4 @@
-//! Inserting a knot line into a blending-spline surface: a new u-knot u* adds a row of
+//! Inserting or splitting a knot line of a blending-spline surface. Insertion: a new u-knot u* adds a row of
 //! local patches (k*, l), one per v-knot (a v-knot adds a column), keeping the surface as
 //! closely as one row of new patches allows.
 //!
@@ -68,16 +68,20 @@ impl<const D: usize> BlendingSplineSurface<D> {
         for l in 0..others {
             let (a, b) = if along_u { (k, l) } else { (l, k) };
             let (uc, vc) = (new_u.centre(a), new_v.centre(b));
-            let shape = match self.kind {
-                PatchKind::SubSurface => PatchShape::Shared(self.model.clone()),
-                PatchKind::Bezier(du, dv) => {
+            let (shape, own) = match (self.kind, &self.model) {
+                (PatchKind::SubSurface, Some(model)) => (PatchShape::Shared(model.clone()), model.point(uc, vc)),
+                // (A surface without a model has Bézier patches; bicubic for the type's sake.)
+                (kind, _) => {
+                    let (du, dv) = if let PatchKind::Bezier(du, dv) = kind { (du, dv) } else { (3, 3) };
                     let mut g = vec![Point::<D>::zeros(); (du + 1) * (dv + 1)];
                     self.eval_partials(uc, vc, du, dv, &mut g);
                     let support = crate::ParamRect::new(new_u.support(a), new_v.support(b));
-                    PatchShape::Bezier(hermite_patch(&g, (du, dv), support, (uc, vc), "the surface's")?)
+                    (PatchShape::Bezier(hermite_patch(&g, (du, dv), support, (uc, vc), "the surface's")?), g[0])
                 }
             };
-            let origin = self.model.point(uc, vc);
+            // The frame's centre: the model's point, as for every patch made from a model;
+            // without a model (Hermite data), the surface's own point there.
+            let origin = self.model.as_ref().map_or(own, |m| m.point(uc, vc));
             fresh.push(LocalPatch { shape, origin, transform: Affine::identity() });
         }
         // Patch (a, b) at a·n_v′ + b in the new grid.
@@ -102,6 +106,73 @@ impl<const D: usize> BlendingSplineSurface<D> {
             }
         }
         Ok(k)
+    }
+
+    /// Splits the knot line u = u_k ([`Direction::U`]; v = v_k for [`Direction::V`]) along
+    /// the other direction (GMlib's `splitKnotAlong`): the knot is doubled and the row of
+    /// patches (k, ·) (the column (·, k)) copied to k + 1, so the two rows can be edited
+    /// independently: the iso-curve u = u_k becomes a seam between two sheets, the left
+    /// limit made by row k and the right one by its copy. At each knot pair (u_k, v_l) only
+    /// patch (k, l) (or its copy) is active, so turning or scaling copies about their
+    /// origins keeps the sheets joined there (C⁰, with the tangent planes jumping: a
+    /// crease); between the knot pairs they part unless the copies stay alike. The surface
+    /// does not change: on [u_{k−1}, u_k) rows k − 1 and k are
+    /// blended as before, on [u_k, u_{k+2}) the copy and the old row k + 1, and the empty
+    /// interval between the copies is never used; Bézier copies are re-expressed on their
+    /// new supports ([`rebased_points`], the same polynomials), as the curve's
+    /// [`split_knot`](super::BlendingSplineCurve::split_knot) does. An error naming `k` for
+    /// an end knot of an open direction or a knot already double, and at 10⁶ patches.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use splinekit::blend::{BlendingSplineSurface, BlendingSurfaceOptions};
+    /// use splinekit::surface::{Direction, Surface};
+    /// use splinekit::surface::model::Torus;
+    /// let torus = Arc::new(Torus::new(3.0, 1.0).unwrap());
+    /// let mut s = BlendingSplineSurface::from_model(torus, (8, 6), &BlendingSurfaceOptions::default()).unwrap();
+    /// let before = s.clone();
+    /// s.split_knot_line(Direction::V, 2).unwrap();
+    /// assert_eq!(s.local_count(), (8, 7));
+    /// assert_eq!(s.knots().1.centre(2), s.knots().1.centre(3));
+    /// assert!((s.point(1.0, 2.5) - before.point(1.0, 2.5)).norm() < 1e-12);
+    /// assert!(s.split_knot_line(Direction::V, 2).unwrap_err().to_string().contains("already double"));
+    /// ```
+    pub fn split_knot_line(&mut self, direction: Direction, k: usize) -> Result<()> {
+        let along_u = direction == Direction::U;
+        let (nu, nv) = self.local_count();
+        let (rows, others) = if along_u { (nu, nv) } else { (nv, nu) };
+        if (rows + 1) * others > MAX_PATCHES {
+            return Err(Error::invalid("k", format!("at most 10⁶ patches, got {}", (rows + 1) * others)));
+        }
+        let mut knots = if along_u { self.knots_u.clone() } else { self.knots_v.clone() };
+        knots.split(k)?;
+        let old = std::mem::take(&mut self.patches);
+        let (nu2, nv2) = if along_u { (nu + 1, nv) } else { (nu, nv + 1) };
+        for a in 0..nu2 {
+            for b in 0..nv2 {
+                // Grid place (a, b) of the new grid takes old patch (a′, b′), row k twice.
+                let (a0, b0) = match along_u {
+                    true if a > k => (a - 1, b),
+                    false if b > k => (a, b - 1),
+                    _ => (a, b),
+                };
+                self.patches.push(old[a0 * nv + b0].clone());
+            }
+        }
+        if along_u {
+            self.knots_u = knots;
+        } else {
+            self.knots_v = knots;
+        }
+        for j in [k, k + 1] {
+            for l in 0..others {
+                let (a, b) = if along_u { (j, l) } else { (l, j) };
+                self.rebase_patch(a, b, along_u);
+            }
+        }
+        Ok(())
     }
 
     /// Re-expresses Bézier patch (a, b) on its support in the current knots along u

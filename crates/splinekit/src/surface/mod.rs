@@ -25,6 +25,7 @@ pub use crate::query::extent::SurfaceExtent;
 pub use crate::query::project_surface::SurfaceNearest;
 pub use bezier_surface::BezierSurface;
 pub use bspline_surface::BSplineSurface;
+pub use derived::QuadSubSurface;
 pub use iso_curve::{Direction, IsoCurve};
 pub use nurbs_surface::NurbsSurface;
 pub use placed::PlacedSurface;

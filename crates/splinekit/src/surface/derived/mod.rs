@@ -1,15 +1,17 @@
 //! Surfaces made from curves: revolution, ruled surfaces, extrusions, sweeps and Coons
-//! patches. Their partials of every order come from the curves' derivatives (curves used
+//! patches; and sub-surfaces over a quadrilateral of another surface's domain. Their partials of every order come from the curves' derivatives (curves used
 //! on [0, 1] are [`crate::curve::Reparametrized`] there).
 
 pub mod coons;
 pub mod extrusion;
+pub mod quad_sub_surface;
 pub mod revolved;
 pub mod ruled;
 pub mod sweep;
 
 pub use coons::{CoonsBlend, CoonsPatch};
 pub use extrusion::Extrusion;
+pub use quad_sub_surface::QuadSubSurface;
 pub use revolved::RevolvedSurface;
 pub use ruled::RuledSurface;
 pub use sweep::SweepSurface;
