@@ -11,6 +11,7 @@ pub mod part21;
 
 pub use error::{Result, StepError};
 pub mod approximate;
+pub mod assembly;
 pub mod documents;
 pub mod evaluate;
 pub mod export;
