@@ -20,5 +20,6 @@ pub mod import;
 pub mod kernel;
 pub mod pcurve;
 pub mod placement;
+pub mod styles;
 pub mod units;
 pub mod wrapping_loops;
