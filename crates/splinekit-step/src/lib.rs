@@ -20,6 +20,7 @@ pub mod import;
 pub mod kernel;
 pub mod pcurve;
 pub mod placement;
+pub mod structure;
 pub mod styles;
 pub mod units;
 pub mod wrapping_loops;
