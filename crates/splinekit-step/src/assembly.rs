@@ -1138,12 +1138,15 @@ fn build_axes(z: [f64; 3], reference: Option<[f64; 3]>) -> splinekit::Result<spl
 mod tests {
     use super::*;
 
-    fn file(data: &str) -> StepFile {
-        let text = format!(
+    fn file_text(data: &str) -> String {
+        format!(
             "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\nFILE_NAME('','',(''),(''),'','','');\n\
              FILE_SCHEMA(('AUTOMOTIVE_DESIGN'));\nENDSEC;\nDATA;\n{data}\nENDSEC;\nEND-ISO-10303-21;\n"
-        );
-        StepFile::from_bytes(text.into_bytes()).expect("a valid test file")
+        )
+    }
+
+    fn file(data: &str) -> StepFile {
+        StepFile::from_bytes(file_text(data).into_bytes()).expect("a valid test file")
     }
 
     fn close(a: [f64; 3], b: [f64; 3]) -> bool {
@@ -1267,6 +1270,33 @@ mod tests {
         let nan = ASSEMBLY.replace("#41=CARTESIAN_POINT('',(1.,0.,0.))", "#41=CARTESIAN_POINT('',(1.,0.,'x'))");
         let e = read_product_structure(&file(&nan)).unwrap_err();
         assert_eq!(e.location.entity, Some(41), "{e}");
+    }
+
+    #[test]
+    fn any_reference_pointed_anywhere_is_an_error_or_a_reading_never_a_panic() {
+        // Every reference of the test assembly replaced in turn by one to an entity of each
+        // kind: a unit, a context, a product, a placement, a point, a direction, a solid.
+        let refs: Vec<(usize, usize)> = ASSEMBLY
+            .match_indices('#')
+            .filter(|(k, _)| ASSEMBLY[..*k].ends_with([',', '(']))
+            .map(|(k, _)| (k, k + 1 + ASSEMBLY[k + 1..].find(|c: char| !c.is_ascii_digit()).unwrap_or(0)))
+            .collect();
+        assert!(refs.len() > 40, "{}", refs.len());
+        for (start, end) in refs {
+            for target in ["#1", "#5", "#10", "#12", "#17", "#28", "#31", "#41", "#42", "#33"] {
+                let text = format!("{}{target}{}", &ASSEMBLY[..start], &ASSEMBLY[end..]);
+                let data = file_text(&text);
+                // A reference cycle is refused when the file is opened.
+                let Ok(f) = StepFile::from_bytes(data.into_bytes()) else { continue };
+                let _ = read_product_structure(&f);
+                let _ = crate::styles::read_styles(&f);
+                let _ = crate::structure::structure_entities(&f);
+            }
+        }
+        // A non-finite number stops at the reader, before any structure is read.
+        let huge = ASSEMBLY.replace("#41=CARTESIAN_POINT('',(1.,0.,0.))", "#41=CARTESIAN_POINT('',(1.E400,0.,0.))");
+        let e = StepFile::from_bytes(file_text(&huge).into_bytes()).unwrap_err();
+        assert!(e.message.contains("out of range"), "{e}");
     }
 
     #[test]

@@ -623,6 +623,28 @@ mod tests {
     }
 
     #[test]
+    fn any_reference_pointed_anywhere_is_skipped_or_read_never_a_panic() {
+        let refs: Vec<(usize, usize)> = STYLED
+            .match_indices('#')
+            .filter(|(k, _)| STYLED[..*k].ends_with([',', '(']))
+            .map(|(k, _)| (k, k + 1 + STYLED[k + 1..].find(|c: char| !c.is_ascii_digit()).unwrap_or(0)))
+            .collect();
+        assert!(refs.len() > 20, "{}", refs.len());
+        for (start, end) in refs {
+            for target in ["#1", "#3", "#6", "#10", "#11", "#13", "#16", "#17", "#26", "#32", "#40"] {
+                let text = format!("{}{target}{}", &STYLED[..start], &STYLED[end..]);
+                let data = format!(
+                    "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\nFILE_NAME('','',(''),(''),'','','');\n\
+                     FILE_SCHEMA(('AUTOMOTIVE_DESIGN'));\nENDSEC;\nDATA;\n{text}\nENDSEC;\nEND-ISO-10303-21;\n"
+                );
+                let Ok(f) = StepFile::from_bytes(data.into_bytes()) else { continue };
+                let s = read_styles(&f);
+                assert!(s.colours.values().all(|c| c.to_array().iter().all(|x| (0.0..=1.0).contains(x))));
+            }
+        }
+    }
+
+    #[test]
     fn an_over_riding_style_wins_whatever_its_place() {
         // The override comes first in the file, the style it overrides later.
         let data = format!(
