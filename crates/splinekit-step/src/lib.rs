@@ -11,6 +11,7 @@ pub mod part21;
 
 pub use error::{Result, StepError};
 pub mod approximate;
+pub mod assembly;
 pub mod documents;
 pub mod evaluate;
 pub mod export;
@@ -19,5 +20,7 @@ pub mod import;
 pub mod kernel;
 pub mod pcurve;
 pub mod placement;
+pub mod structure;
+pub mod styles;
 pub mod units;
 pub mod wrapping_loops;
