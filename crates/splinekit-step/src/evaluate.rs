@@ -68,7 +68,7 @@ pub enum CurveEval {
         b: f64,
     },
     /// A B-spline or NURBS curve.
-    Spline(NurbsCurve<3>),
+    Spline(Box<NurbsCurve<3>>),
 }
 
 /// Up to three coordinates as a point (missing ones 0).
@@ -85,7 +85,7 @@ impl CurveEval {
             }
             Curve::Circle { axes, radius } => CurveEval::Conic { axes: *axes, a: *radius, b: *radius },
             Curve::Ellipse { axes, a, b } => CurveEval::Conic { axes: *axes, a: *a, b: *b },
-            Curve::Spline(s) => CurveEval::Spline(nurbs::<3>(s)?),
+            Curve::Spline(s) => CurveEval::Spline(Box::new(nurbs::<3>(s)?)),
             Curve::Trimmed { basis, .. } => CurveEval::new(basis)?,
         })
     }
@@ -269,7 +269,7 @@ impl SurfaceEval {
         let scale = w.norm().max(1.0);
         let angle = |x: f64, y: f64| {
             let t = y.atan2(x);
-            if t < 0.0 { (t + TAU).min(TAU.next_down()) } else { t }
+            if t < 0.0 { (t + TAU).min(TAU - TAU * f64::EPSILON) } else { t }
         };
         let around = (rho > 1e-13 * scale).then(|| angle(x, y));
         Some(match self.kind {
@@ -363,7 +363,7 @@ impl SurfaceEval {
             let r = q - o[0];
             let curvature = st.dot(&st) - stt.dot(&r);
             let denominator = if curvature > 0.0 { curvature } else { st.dot(&st) };
-            if !(denominator > 0.0) {
+            if denominator.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 break;
             }
             let next = range.clamp(x + st.dot(&r) / denominator);

@@ -157,7 +157,8 @@ fn straight(s: &SurfaceEval, c: &CurveEval, (t0, t1): (f64, f64), tolerance: f64
     let origin = uv[a] - slope * ts[a];
     for (&t, f) in ts.iter().zip(&uv) {
         let p = origin + slope * t;
-        if !(deviation(s, p, *f, &c.point(t)) <= tolerance) {
+        let d = deviation(s, p, *f, &c.point(t));
+        if d.is_nan() || d > tolerance {
             return Ok(None);
         }
     }
@@ -182,7 +183,7 @@ fn parameter_speed(s: &SurfaceEval, c: &CurveEval, t: f64, p: Point<2>) -> Optio
     let (su, sv) = (o[2], o[1]);
     let (a, b, e) = (su.dot(&su), su.dot(&sv), sv.dot(&sv));
     let det = a * e - b * b;
-    if !(det > 1e-24 * (a * e).max(f64::MIN_POSITIVE)) {
+    if det.is_nan() || det <= 1e-24 * (a * e).max(f64::MIN_POSITIVE) {
         return None;
     }
     let (gu, gv) = (su.dot(&d[1]), sv.dot(&d[1]));
@@ -266,7 +267,7 @@ fn fitted(s: &SurfaceEval, c: &CurveEval, (t0, t1): (f64, f64), tolerance: f64) 
                     worst = d;
                 }
             }
-            if !(worst <= tolerance) {
+            if worst.is_nan() || worst > tolerance {
                 split.push(k);
             }
         }
