@@ -133,7 +133,7 @@ def _html(objects: List[Any], width: int, height: int, force_three: bool = False
     spec = {"size": [width, height], "background": background, "duration": period}
     encoded = base64.b64encode(data).decode("ascii")
     bar = (
-        '<div class="splinekit-timebar" hidden style="display:flex;gap:8px;align-items:center;font:13px sans-serif">'
+        '<div class="splinekit-timebar" style="display:none;gap:8px;align-items:center;font:13px sans-serif">'
         '<button type="button" aria-label="play or pause">pause</button>'
         '<input type="range" min="0" value="0" style="flex:1"><output>0.00 s</output></div>'
     )

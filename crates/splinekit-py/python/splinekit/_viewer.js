@@ -229,7 +229,7 @@
 
         addTimeBar() {
             const bar = this.box.querySelector('.splinekit-timebar');
-            bar.hidden = false;
+            bar.style.display = 'flex';
             this.button = bar.querySelector('button');
             this.slider = bar.querySelector('input');
             this.clock = bar.querySelector('output');
