@@ -8,7 +8,8 @@
 # check (mypy.stubtest) and a quick pass of the benchmark. Then the sdist builds and
 # installs (a debug build in a fresh target folder: what is checked is that the sdist
 # holds everything a build needs), and the render test runs on a debug
-# build with the `render` feature (which reuses the workspace's debug build of wgpu).
+# build with the `render` feature (which reuses the workspace's debug build of wgpu), as
+# does the tour notebook (docs/tour.ipynb: executed, exported, opened in Chromium).
 # The error tests compare messages with the command-line binary given as $1 (default
 # target/debug/splinekit). Each part prints the seconds it took.
 set -euo pipefail
@@ -82,5 +83,8 @@ env PATH="$bare_path" "$fresh/bin/pip" install --quiet --disable-pip-version-che
 
 part "render test (debug build with the render feature)"
 VIRTUAL_ENV="$fresh" maturin develop --quiet --profile dev --features render -m crates/splinekit-py/Cargo.toml
-in_fresh python -m pytest -q tests -k render
+in_fresh python -m pytest -q tests -k "render or png or xdg"
+
+part "the tour notebook: executed (nbclient), exported (nbconvert), its views in headless Chromium (.ci/notebook.sh)"
+env PATH="$bare_path" bash .ci/notebook.sh "$fresh"
 part "done"

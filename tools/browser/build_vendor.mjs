@@ -1,5 +1,5 @@
 // Bundles the pinned three.js (package-lock.json) into the gallery's vendored viewer
-// library, crates/splinekit-cli/src/gallery/vendor/three-gltf-orbit.min.js, with three's
+// library, crates/splinekit-render/vendor/three-gltf-orbit.min.js, with three's
 // licence beside it. `node build_vendor.mjs --check` rebuilds in memory and fails when the
 // committed file differs: the vendored bytes are what the lock file gives.
 import { build } from 'esbuild';
@@ -8,7 +8,7 @@ import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const here = dirname(fileURLToPath(import.meta.url));
-const vendor = join(here, '../../crates/splinekit-cli/src/gallery/vendor');
+const vendor = join(here, '../../crates/splinekit-render/vendor');
 const bundlePath = join(vendor, 'three-gltf-orbit.min.js');
 const licencePath = join(vendor, 'three-LICENSE');
 const three = JSON.parse(readFileSync(join(here, 'node_modules/three/package.json'), 'utf8'));

@@ -3,7 +3,7 @@
 //! parser the command line uses.
 
 use pyo3::prelude::*;
-use pyo3::types::PyList;
+use pyo3::types::{PyDict, PyList};
 use serde_json::Value;
 use splinekit_scene::{SceneDocument, ShapeDocument};
 
@@ -22,8 +22,150 @@ pub struct PyScene {
     pub(crate) doc: SceneDocument,
 }
 
+/// A scene object's entry: a shape (its document), a dict of a shape and its style
+/// (`{"shape": …, "color": …}`), or a pair (shape, style dict).
+fn object_entry(item: &Bound<'_, PyAny>, k: usize) -> PyResult<Value> {
+    let name = format!("objects[{k}]");
+    if let Ok((shape, style)) = item.extract::<(Bound<'_, PyAny>, Bound<'_, PyDict>)>() {
+        let mut entry = to_value(&style, &name)?;
+        let shape = to_value(&shape, &format!("{name}.shape"))?;
+        match entry.as_object_mut() {
+            Some(m) => {
+                m.insert("shape".into(), shape);
+            }
+            None => return Err(value_error(format!("{name}: the style must be a dict"))),
+        }
+        return Ok(entry);
+    }
+    let value = to_value(item, &name)?;
+    if value.get("shape").is_some() { Ok(value) } else { Ok(serde_json::json!({ "shape": value })) }
+}
+
+impl PyScene {
+    /// The scene of a document value (checked by the parser the command line uses).
+    fn of_value(value: Value) -> PyResult<Self> {
+        let doc = SceneDocument::from_value(value.clone()).or_value_error()?;
+        Ok(PyScene { value, doc })
+    }
+}
+
 #[pymethods]
 impl PyScene {
+    /// A scene of ``objects`` — shapes, ``(shape, style)`` pairs or dicts ``{"shape": …,
+    /// "color": …}`` (style fields of docs/format.md, "Scenes": ``color``, ``line_width``,
+    /// ``wireframe``, ``control_net``, ``local_pieces``, ``color_map``, ``density``,
+    /// ``hidden``, ``color_cycle``, ``points``) — with the scene's ``camera``, ``lights``,
+    /// ``background``, ``size``, ``axes`` and ``animation`` clock when given.
+    #[new]
+    #[pyo3(signature = (objects = None, *, camera = None, lights = None, background = None, size = None, axes = None, animation = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        objects: Option<&Bound<'_, PyAny>>,
+        camera: Option<&Bound<'_, PyAny>>,
+        lights: Option<&Bound<'_, PyAny>>,
+        background: Option<&Bound<'_, PyAny>>,
+        size: Option<&Bound<'_, PyAny>>,
+        axes: Option<bool>,
+        animation: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let mut entries = Vec::new();
+        if let Some(objects) = objects {
+            for (k, item) in objects.try_iter()?.enumerate() {
+                entries.push(object_entry(&item?, k)?);
+            }
+        }
+        let mut m = serde_json::Map::new();
+        m.insert("type".into(), "scene".into());
+        m.insert("objects".into(), Value::Array(entries));
+        for (key, v) in [
+            ("camera", camera),
+            ("lights", lights),
+            ("background", background),
+            ("size", size),
+            ("animation", animation),
+        ] {
+            if let Some(v) = v {
+                m.insert(key.into(), to_value(v, key)?);
+            }
+        }
+        if let Some(a) = axes {
+            m.insert("axes".into(), a.into());
+        }
+        Self::of_value(Value::Object(m))
+    }
+
+    /// A new scene with ``shape`` added as its last object, styled by ``style``
+    /// (``color=(r, g, b)``, ``wireframe=True``, …; docs/format.md, "Scenes").
+    #[pyo3(signature = (shape, **style))]
+    fn add(&self, shape: &Bound<'_, PyAny>, style: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
+        let mut value = self.value.clone();
+        let objects = value["objects"].as_array().map_or(0, Vec::len);
+        let mut entry = match style {
+            Some(style) => to_value(style, &format!("objects[{objects}]"))?,
+            None => Value::Object(Default::default()),
+        };
+        entry["shape"] = to_value(shape, &format!("objects[{objects}].shape"))?;
+        match value.get_mut("objects").and_then(Value::as_array_mut) {
+            Some(list) => list.push(entry),
+            None => value["objects"] = Value::Array(vec![entry]),
+        }
+        Self::of_value(value)
+    }
+
+    /// A new scene with the scene fields given replaced (``camera``, ``lights``,
+    /// ``background``, ``size``, ``axes``, ``animation``; None removes a field).
+    #[pyo3(signature = (**fields))]
+    fn replace(&self, fields: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
+        let mut value = self.value.clone();
+        if let Some(fields) = fields {
+            for (k, v) in fields.iter() {
+                let key: String = k.extract()?;
+                if !["camera", "lights", "background", "size", "axes", "animation", "objects"].contains(&key.as_str()) {
+                    return Err(value_error(format!(
+                        "{key}: not a scene field (camera, lights, background, size, axes, animation, objects)"
+                    )));
+                }
+                let Some(m) = value.as_object_mut() else { break };
+                if v.is_none() {
+                    m.remove(&key);
+                } else if key == "objects" {
+                    let entries = v
+                        .try_iter()?
+                        .enumerate()
+                        .map(|(k, item)| object_entry(&item?, k))
+                        .collect::<PyResult<Vec<_>>>()?;
+                    m.insert(key, Value::Array(entries));
+                } else {
+                    m.insert(key.clone(), to_value(&v, &key)?);
+                }
+            }
+        }
+        Self::of_value(value)
+    }
+
+    /// The animation clock ``(duration, fps)`` in seconds and frames a second (the
+    /// scene's, else 1 s at 20 fps).
+    #[getter]
+    fn clock(&self) -> (f64, f64) {
+        let c = self.doc.clock();
+        (c.duration, c.fps)
+    }
+
+    /// The image size (width, height) in pixels that ``render`` uses by default.
+    #[getter]
+    fn size(&self) -> (u32, u32) {
+        (self.doc.size[0], self.doc.size[1])
+    }
+
+    /// Writes the scene: ``.json`` (the document), ``.gltf`` or ``.glb`` (every drawn
+    /// object as a node, an animation as morph targets: ``splinekit tessellate``).
+    fn save(slf: &Bound<'_, Self>, path: std::path::PathBuf) -> PyResult<()> {
+        crate::exchange::save_any(slf.as_any(), &path, None, None, None)
+    }
+
+    fn __len__(&self) -> usize {
+        self.doc.objects.len()
+    }
     /// The shapes of the scene's objects, in order.
     #[getter]
     fn objects<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {

@@ -81,6 +81,11 @@ fn to_value_at(ob: &Bound<'_, PyAny>, path: Path<'_>, depth: usize) -> PyResult<
     if let Ok(tuple) = ob.cast::<PyTuple>() {
         return sequence(tuple.iter(), tuple.len(), path, depth);
     }
+    // splinekit's objects (curves, surfaces, scenes, subdivision surfaces, B-functions)
+    // stand for their documents.
+    if ob.hasattr("to_dict")? && ob.getattr("__module__").is_ok_and(|m| m.to_string().starts_with("splinekit")) {
+        return to_value_at(&ob.call_method0("to_dict")?, path, depth + 1);
+    }
     if ob.hasattr("tolist")? {
         return to_value_at(&ob.call_method0("tolist")?, path, depth + 1);
     }

@@ -18,11 +18,11 @@ use crate::errors::{OrValueError, value_error};
 use crate::surface::PySurface;
 
 /// Most points of one polyline (as the command line).
-const MAX_CURVE_POINTS: usize = 1_000_000;
+pub(crate) const MAX_CURVE_POINTS: usize = 1_000_000;
 /// Most cells per direction of a regular surface mesh (as the command line).
-const MAX_DENSITY: usize = 2048;
+pub(crate) const MAX_DENSITY: usize = 2048;
 /// Most quad-tree leaves of an adaptive mesh.
-const MAX_ADAPTIVE_CELLS: usize = 1_000_000;
+pub(crate) const MAX_ADAPTIVE_CELLS: usize = 1_000_000;
 
 /// A triangle mesh: ``vertices`` (V, 3), ``faces`` (F, 3) int32 counter-clockwise around
 /// their normal, unit vertex ``normals`` (V, 3), surface parameters ``uv`` (V, 2) on
@@ -85,7 +85,7 @@ impl PyMesh {
 
 /// The polyline of a curve: `density` segments, or adaptive to `tolerance`, or adaptive
 /// to 1/1000 of the curve's size.
-struct CurvePoints(Option<usize>, Option<f64>);
+pub(crate) struct CurvePoints(pub Option<usize>, pub Option<f64>);
 
 impl DimensionVisitor<Curves> for CurvePoints {
     type Output = splinekit::Result<(Vec<f64>, usize)>;
@@ -106,7 +106,7 @@ impl DimensionVisitor<Curves> for CurvePoints {
 /// The triangle mesh of a surface: `density` cells per direction, or adaptive to the
 /// chord height `tolerance` with at most the given number of cells, or a regular 64 × 64
 /// grid.
-struct SurfaceTriangles(Option<usize>, Option<f64>, usize);
+pub(crate) struct SurfaceTriangles(pub Option<usize>, pub Option<f64>, pub usize);
 
 impl DimensionVisitor<Surfaces> for SurfaceTriangles {
     type Output = splinekit::Result<TriangleMesh>;

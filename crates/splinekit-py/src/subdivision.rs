@@ -187,6 +187,28 @@ impl PySubdivisionSurface {
         boundary_name(self.surface.cage().boundary)
     }
 
+    /// The ``subdivision_surface`` document of this cage (docs/format.md), which scenes,
+    /// ``splinekit.load`` and the command line read; sharpness 10 or more (infinitely
+    /// sharp) is written as 10.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let cage = self.surface.cage();
+        let vertices: Vec<[f64; 3]> = cage.vertices.iter().map(|p| [p.x, p.y, p.z]).collect();
+        let creases: Vec<serde_json::Value> = cage
+            .creases
+            .iter()
+            .map(|k| serde_json::json!({"edge": [k.a, k.b], "sharpness": k.sharpness.min(10.0)}))
+            .collect();
+        let doc = serde_json::json!({
+            "type": "subdivision_surface",
+            "vertices": vertices,
+            "faces": self.faces(),
+            "scheme": self.scheme(),
+            "creases": creases,
+            "boundary": self.boundary(),
+        });
+        crate::json_value::to_python(py, &doc)
+    }
+
     /// ``steps`` subdivision steps: a new ``SubdivisionSurface`` whose cage is the refined
     /// mesh (vertex i of this cage stays vertex i; semi-sharp creases decay by 1 a step);
     /// refused over the command line's budget (``SPLINEKIT_MAX_MEMORY``, ``SPLINEKIT_MAX_WORK``).

@@ -3,20 +3,16 @@
 //!
 //! A page opened from the file system (double-click on index.html) may not fetch or import
 //! local files in Chromium, so everything the page runs is a classic script beside it:
-//! three.js (the pinned bundle in `vendor/`, built from `tools/browser/` — see its README),
+//! three.js (the pinned bundle of `splinekit_render::web_viewer`, built from `tools/browser/` — see its README),
 //! `viewer.js`, and one `models/NAME.js` per figure carrying the glb in base64.
 
 use anyhow::Result;
 use serde_json::json;
 use splinekit_mesh::export::base64::base64;
 use splinekit_render::Camera;
+use splinekit_render::web_viewer::{THREE_BUNDLE, THREE_LICENSE};
 
 use super::Folder;
-
-/// three.js with GLTFLoader and OrbitControls, one classic script defining `SplinekitThree`.
-const THREE_BUNDLE: &str = include_str!("vendor/three-gltf-orbit.min.js");
-/// three.js's licence, shipped beside the bundle.
-const THREE_LICENSE: &str = include_str!("vendor/three-LICENSE");
 /// The viewer (readable, not minified).
 const VIEWER_JS: &str = include_str!("viewer.js");
 

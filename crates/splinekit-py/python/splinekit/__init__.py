@@ -4,7 +4,9 @@ Bézier, rational Bézier, B-spline, NURBS, Hermite and Catmull–Rom curves, B-
 NURBS and Bézier surfaces, Catmull–Clark, Loop and bilinear subdivision surfaces,
 least-squares fitting and interpolation, and every shape and
 scene document of the ``splinekit`` command line (docs/format.md), evaluated by the
-splinekit kernel (Rust). Arrays in, float64 C-contiguous arrays out; bad input raises
+splinekit kernel (Rust). Every command of the command line has its function here
+(intersections, sections, projections, offsets, arc length, STEP, scenes, rendering);
+shapes and scenes show themselves in notebooks. Arrays in, float64 C-contiguous arrays out; bad input raises
 ``ValueError`` with the command line's one-line message.
 """
 
@@ -50,15 +52,47 @@ from ._splinekit import (
     SubdivisionSurface,
     Surface,
     evaluate_many,
+    animate,
     fit,
     fit_many,
     interpolate,
     load,
     render,
+    subdivide,
 )
+from ._queries import (
+    blend,
+    blending_spline,
+    blending_spline_surface,
+    intersect,
+    offset,
+    project,
+    read_step,
+    save,
+    section,
+    write_step,
+)
+from ._display import View, set_display, show
+from ._plot import plot
 
 __all__ = [
     "BFunction",
+    "View",
+    "animate",
+    "blend",
+    "blending_spline",
+    "blending_spline_surface",
+    "intersect",
+    "offset",
+    "plot",
+    "project",
+    "read_step",
+    "save",
+    "section",
+    "set_display",
+    "show",
+    "subdivide",
+    "write_step",
     "BSpline",
     "BSplineSurface",
     "Bezier",

@@ -29,6 +29,11 @@ class BFunction:
         out = self._curve(t, nu)[..., 0]
         return float(out) if out.ndim == 0 else out
 
+    def to_dict(self):
+        """The B-function's document (``{"type": kind, **params}``), as the ``bfunction``
+        field of blending-spline documents takes it."""
+        return dict(self.document)
+
     def __repr__(self):
         return f"BFunction({self.document!r})"
 
