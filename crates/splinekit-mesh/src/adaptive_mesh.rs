@@ -53,6 +53,9 @@ pub fn adaptive_with_limit<const D: usize, S: Surface<D> + ?Sized>(
     if let Some(s) = surface.subdivision() {
         return Ok(crate::subdivision_mesh::within_tolerance(s, tolerance.chord_height, max_leaves)?.0);
     }
+    if let Some(b) = surface.brep() {
+        return crate::brep_mesh::brep_mesh(b, tolerance.chord_height);
+    }
     if tolerance.normal_angle.is_nan()
         || tolerance.normal_angle <= 0.0
         || tolerance.max_depth > 16

@@ -9,6 +9,7 @@
 
 pub mod adaptive_mesh;
 pub mod boundary_gluing;
+pub mod brep_mesh;
 pub mod doo_sabin_limit;
 pub mod export;
 pub mod limit_mesh;

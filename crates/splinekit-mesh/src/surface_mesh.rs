@@ -36,6 +36,9 @@ pub fn regular<const D: usize, S: Surface<D> + ?Sized>(
             format!("need 1 to {MAX_VERTICES} vertices with at least one cell each way, got {nu}×{nv} cells"),
         ));
     }
+    if let Some(b) = surface.brep() {
+        return crate::brep_mesh::brep_mesh(b, crate::brep_mesh::tolerance_for_density(b, nu.max(nv)));
+    }
     if let Some(loops) = surface.trim_loops() {
         return crate::trimmed_mesh::trimmed(surface, &loops, nu.max(nv), options);
     }
