@@ -469,3 +469,30 @@ pub fn brep_mesh(brep: &Brep, tolerance: f64) -> Result<TriangleMesh> {
     }
     Ok(mesh)
 }
+
+/// The edges of a mesh, welded by exact position, that are not used once each way by two
+/// triangles: 0 for a closed, consistently oriented 2-manifold (triangles that collapse
+/// when welded are left out).
+pub fn open_edges(mesh: &TriangleMesh) -> usize {
+    use std::collections::HashMap;
+    let mut ids: HashMap<[u64; 3], u32> = HashMap::new();
+    let welded: Vec<u32> = mesh
+        .positions
+        .iter()
+        .map(|p| {
+            let n = ids.len() as u32;
+            *ids.entry(p.map(f64::to_bits)).or_insert(n)
+        })
+        .collect();
+    let mut uses: HashMap<(u32, u32), usize> = HashMap::new();
+    for t in &mesh.triangles {
+        let [a, b, c] = t.map(|i| welded[i as usize]);
+        if a == b || b == c || a == c {
+            continue;
+        }
+        for e in [(a, b), (b, c), (c, a)] {
+            *uses.entry(e).or_default() += 1;
+        }
+    }
+    uses.iter().filter(|(e, n)| **n != 1 || uses.get(&(e.1, e.0)) != Some(&1)).count()
+}

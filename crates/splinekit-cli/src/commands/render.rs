@@ -5,10 +5,7 @@ use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use splinekit_render::{Camera, Image, Renderer, compose, write_gif};
-use splinekit_scene::SceneOrShape;
 use splinekit_scene::scenes::SceneDocument;
-
-use crate::input::read_text;
 
 #[derive(Args, Debug)]
 pub struct RenderArgs {
@@ -65,8 +62,7 @@ fn image_size(arg: Option<&str>, scene: &SceneDocument) -> Result<(u32, u32)> {
 }
 
 pub fn read_scene(path: &str) -> Result<SceneDocument> {
-    let text = read_text(path, "scene")?;
-    Ok(SceneOrShape::from_json_in(&text, &crate::input::document_folder(path))?.into_scene())
+    Ok(crate::input::read_document(path, "scene")?.into_scene())
 }
 
 /// Renders one frame of a scene (with `camera`, or the scene's own).

@@ -100,8 +100,7 @@ fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, ex
 
 pub fn run(args: &TessellateArgs) -> Result<()> {
     let ext = args.output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
-    let text = crate::input::read_text(&args.shape, "shape")?;
-    let mut doc = match SceneOrShape::from_json_in(&text, &crate::input::document_folder(&args.shape))? {
+    let mut doc = match crate::input::read_document(&args.shape, "shape")? {
         SceneOrShape::Scene(scene) => return write_scene(&scene, args, &ext),
         SceneOrShape::Shape(doc) => doc,
     };
