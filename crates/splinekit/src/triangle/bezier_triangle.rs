@@ -2,7 +2,7 @@
 //! dimension, B^n_ijk = n!/(i! j! k!) uⁱ vʲ wᵏ (Farin, *Curves and Surfaces for CAGD*,
 //! ch. 17; Lai & Schumaker, *Spline Functions on Triangulations*, ch. 2).
 //!
-//! Control points are stored in the order of [`net_index`](super::net_index): b_n00, then
+//! Control points are stored in the order of [`net_index`]: b_n00, then
 //! rows of falling i, each row by falling j.
 
 use crate::Point;
@@ -106,9 +106,9 @@ impl<const D: usize> BezierTriangle<D> {
         (i + j + k == self.degree()).then(|| &self.net.points()[net_index(j, k)])
     }
 
-    /// T(u, v, w) by de Casteljau's algorithm (b^r_I = u b^{r−1}_{I+e₁} + v b^{r−1}_{I+e₂}
-    /// + w b^{r−1}_{I+e₃}, r = 1 … n; Farin, eq. 17.6); (u, v, w) is clamped as
-    /// [`clamp_to_triangle`] says.
+    /// T(u, v, w) by de Casteljau's algorithm,
+    /// b^r_I = u b^{r−1}_{I+e₁} + v b^{r−1}_{I+e₂} + w b^{r−1}_{I+e₃} for r = 1 … n
+    /// (Farin, eq. 17.6); (u, v, w) is clamped as [`clamp_to_triangle`] says.
     pub fn point_de_casteljau(&self, u: f64, v: f64, w: f64) -> Point<D> {
         let (u, v) = clamp_to_triangle(u, v, w);
         self.net.de_casteljau(u, v, 1.0 - u - v)

@@ -38,14 +38,14 @@
 //! [`FundamentalForms`](crate::surface::FundamentalForms), so the two families agree
 //! wherever both apply.
 
-mod bezier_triangle;
-mod degenerate_patch;
-mod gerbs_triangle;
+pub mod bezier_triangle;
+pub mod degenerate_patch;
+pub mod gerbs_triangle;
 pub mod net;
-mod rational_bezier_triangle;
-mod sub_triangle;
-mod traits;
-mod triangular_bfunction;
+pub mod rational_bezier_triangle;
+pub mod sub_triangle;
+pub mod traits;
+pub mod triangular_bfunction;
 
 pub use bezier_triangle::BezierTriangle;
 pub use degenerate_patch::degenerate_patch_parameters;

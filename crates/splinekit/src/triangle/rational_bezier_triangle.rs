@@ -31,7 +31,7 @@ pub struct RationalBezierTriangle<const D: usize> {
 
 impl<const D: usize> RationalBezierTriangle<D> {
     /// A rational Bézier triangle from its control points (storage order of
-    /// [`net_index`](super::net_index)) and one weight > 0 per point.
+    /// [`net_index`]) and one weight > 0 per point.
     ///
     /// # Examples
     ///
@@ -120,7 +120,7 @@ impl<const D: usize> RationalBezierTriangle<D> {
     pub fn restrict(&self, a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Result<Self> {
         let corners = [barycentric_argument("a", a)?, barycentric_argument("b", b)?, barycentric_argument("c", c)?];
         let net = self.net.restricted(&corners);
-        if let Some((i, h)) = net.points().iter().enumerate().find(|(_, h)| !(h.weight > 0.0)) {
+        if let Some((i, h)) = net.points().iter().enumerate().find(|(_, h)| h.weight.is_nan() || h.weight <= 0.0) {
             return Err(Error::invalid(
                 "corners",
                 format!("the restricted triangle's weight {i} is {} (corners outside the triangle)", h.weight),

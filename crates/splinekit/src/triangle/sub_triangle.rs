@@ -40,7 +40,9 @@ impl<S> SubTriangle<S> {
     /// let sphere = Sphere::new(2.0).unwrap();
     /// let (a, b, c) = (Point::<2>::new(0.1, 0.2), Point::<2>::new(1.0, 0.3), Point::<2>::new(0.5, 1.0));
     /// let t = SubTriangle::new(sphere.clone(), [a, b, c]).unwrap();
-    /// let q = a * 0.2 + b * 0.3 + c * 0.5;
+    /// // T(u, v, w) = S(u a + v b + w c), the parameter computed as c + u (a − c) + v (b − c).
+    /// let q = t.surface_parameter(0.2, 0.3);
+    /// assert!((q - (a * 0.2 + b * 0.3 + c * 0.5)).norm() < 1e-15);
     /// assert_eq!(t.point(0.2, 0.3, 0.5), sphere.point(q.x, q.y));
     /// // The sphere's curvatures survive the reparametrisation: K = 1/4.
     /// assert!((t.curvatures(0.2, 0.3, 0.5).unwrap().gaussian - 0.25).abs() < 1e-12);
@@ -54,7 +56,7 @@ impl<S> SubTriangle<S> {
         let [a, b, c] = corners;
         let (e1, e2) = (a - c, b - c);
         let area = e1.x * e2.y - e1.y * e2.x;
-        if !(area.abs() > 1e-14 * e1.norm() * e2.norm()) {
+        if area.abs() <= 1e-14 * e1.norm() * e2.norm() || area.is_nan() {
             return Err(Error::invalid(
                 "corners",
                 format!("the three points are collinear (twice the signed area is {area}): {a:?}, {b:?}, {c:?}"),

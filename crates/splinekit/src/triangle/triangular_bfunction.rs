@@ -110,7 +110,7 @@ impl TriangularBFunction {
             }
             TriangularForm::Rational => {
                 let third = bfunction.value(1.0 / 3.0);
-                if !(third > 0.0) {
+                if third.is_nan() || third <= 0.0 {
                     return Err(Error::invalid(
                         "bfunction",
                         format!("B(1/3) = {third}: the rational triangular form would divide by zero at the centroid"),
