@@ -41,6 +41,7 @@ pub mod taylor;
 mod test_stream;
 pub mod tolerance;
 pub mod triangle;
+pub mod triangulation;
 
 pub use error::{Error, Result};
 pub use interval::{Interval, ParamRect};
