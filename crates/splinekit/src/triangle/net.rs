@@ -131,6 +131,17 @@ pub(crate) fn bernstein_sum<T: Coefficient>(net: &[T], m: usize, u: f64, v: f64,
     total
 }
 
+/// De Casteljau's algorithm for degree N (LEN = (N+1)(N+2)/2 points) on an array: every
+/// loop has a constant trip count, so the net stays in registers and the steps unroll.
+#[inline(always)]
+fn de_casteljau_fixed<T: Coefficient, const N: usize, const LEN: usize>(points: &[T], lam: [f64; 3]) -> T {
+    let mut b: [T; LEN] = std::array::from_fn(|i| points[i]);
+    for m in (1..=N).rev() {
+        step(&mut b, m, lam);
+    }
+    b[0]
+}
+
 /// A triangular net of degree n (see the module documentation).
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct TriangularNet<T> {
@@ -157,8 +168,25 @@ impl<T: Coefficient> TriangularNet<T> {
         self.points.iter().copied().collect()
     }
 
-    /// T(u, v, w) by de Casteljau's algorithm: n steps with argument (u, v, w).
+    /// T(u, v, w) by de Casteljau's algorithm: n steps with argument (u, v, w); degrees
+    /// 1 … 4 on a fixed-size array ([`de_casteljau_fixed`]), higher ones on a buffer
+    /// ([`Self::de_casteljau_generic`]).
+    #[inline]
     pub(crate) fn de_casteljau(&self, u: f64, v: f64, w: f64) -> T {
+        let lam = [u, v, w];
+        match self.degree {
+            0 => self.points[0],
+            1 => de_casteljau_fixed::<T, 1, 3>(&self.points, lam),
+            2 => de_casteljau_fixed::<T, 2, 6>(&self.points, lam),
+            3 => de_casteljau_fixed::<T, 3, 10>(&self.points, lam),
+            4 => de_casteljau_fixed::<T, 4, 15>(&self.points, lam),
+            _ => self.de_casteljau_generic(u, v, w),
+        }
+    }
+
+    /// De Casteljau's algorithm on a buffer, for every degree (the path the fixed-size one
+    /// is tested against).
+    pub(crate) fn de_casteljau_generic(&self, u: f64, v: f64, w: f64) -> T {
         let mut b = self.buffer();
         for m in (1..=self.degree).rev() {
             step(&mut b, m, [u, v, w]);
@@ -356,6 +384,30 @@ mod tests {
         }
         assert!(degree_of_len(7, "control_points").is_err());
         assert!(degree_of_len(0, "control_points").is_err());
+    }
+
+    #[test]
+    fn the_fixed_size_de_casteljau_is_the_generic_one() {
+        // Degrees 0 … 9: the unrolled sizes (1 … 4) and past them, bit for bit (the same
+        // steps in the same order), on points and on homogeneous coefficients.
+        let mut seed = 1u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        for n in 0..10 {
+            let pts: Vec<crate::Point<3>> =
+                (0..net_len(n)).map(|_| crate::Point::<3>::new(next(), next(), next())).collect();
+            let hom: Vec<crate::ops::homogeneous::Homogeneous<3>> =
+                pts.iter().map(|p| crate::ops::homogeneous::Homogeneous::lift(p, 1.5 + next())).collect();
+            let (a, b) = (TriangularNet::new(pts, "p").unwrap(), TriangularNet::new(hom, "p").unwrap());
+            for _ in 0..20 {
+                let (u, v) = (next() + 0.5, next() + 0.5);
+                let w = 1.0 - u - v;
+                assert_eq!(a.de_casteljau(u, v, w), a.de_casteljau_generic(u, v, w), "degree {n}");
+                assert_eq!(b.de_casteljau(u, v, w), b.de_casteljau_generic(u, v, w), "rational degree {n}");
+            }
+        }
     }
 
     #[test]
