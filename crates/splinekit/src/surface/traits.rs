@@ -172,6 +172,13 @@ pub trait Surface<const D: usize>: Send + Sync {
         None
     }
 
+    /// For triangles seen as a surface (an atlas of unit charts, one per triangle), the
+    /// atlas, which meshes are made of (each triangle on a barycentric lattice) rather than
+    /// of a parameter grid; `None` for other surfaces.
+    fn triangle_atlas(&self) -> Option<&crate::triangle::TriangleAtlas<D>> {
+        None
+    }
+
     /// A box that certainly holds the surface, where the kind has one for the asking: the
     /// box of the control net for B-spline, Bézier and NURBS surfaces (positive weights;
     /// convex hull property; not tight in general), the cage's box for subdivision limits.
@@ -303,6 +310,7 @@ crate::curve::traits::forward_through_pointers!(Surface {
     fn trim_contains(&self, u: f64, v: f64) -> Option<bool>;
     fn trim_loops(&self) -> Option<TrimLoops<'_>>;
     fn subdivision(&self) -> Option<&crate::subdivision::surface::SubdivisionSurface>;
+    fn triangle_atlas(&self) -> Option<&crate::triangle::TriangleAtlas<D>>;
     fn breakpoints_u(&self) -> Vec<f64>;
     fn breakpoints_v(&self) -> Vec<f64>;
     fn enclosing_box(&self) -> Option<crate::query::Aabb<D>>;
