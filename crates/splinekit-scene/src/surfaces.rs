@@ -15,6 +15,7 @@ mod models;
 mod nets;
 mod placed;
 mod subdivision;
+mod triangles;
 mod trimmed;
 
 use serde_json::Value;
@@ -29,6 +30,10 @@ pub use models::{
 pub use nets::{BSplineSurfaceDoc, BezierSurfaceDoc, NurbsSurfaceDoc};
 pub use placed::PlacedDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
+pub use triangles::{
+    BezierTriangleDoc, BlendingTriangulationDoc, GerbsTriangleDoc, InterpolantDoc, LocalPieces, MeshDoc, SubTriangleDoc,
+    TriangularFormDoc, TriangulationDoc, triangle_of,
+};
 pub use trimmed::TrimmedDoc;
 
 use crate::dimension::{AnyDimension, ShapeFamily};
@@ -102,6 +107,16 @@ macro_rules! surface_kinds {
                 BlendingSplineSurface(BlendingSplineSurfaceDoc) = "blending_spline_surface", python(base),
                 /// The limit surface of a subdivision cage.
                 SubdivisionSurface(SubdivisionSurfaceDoc) = "subdivision_surface", python(base),
+                /// Bézier triangle (rational with weights).
+                BezierTriangle(BezierTriangleDoc) = "bezier_triangle", python(base),
+                /// The triangle S(u a + v b + w c) of a surface.
+                SubTriangle(SubTriangleDoc) = "sub_triangle", python(base),
+                /// GERBS triangle: three framed local triangles blended by a triangular B-function.
+                GerbsTriangle(GerbsTriangleDoc) = "gerbs_triangle", python(base),
+                /// Height field over a constrained Delaunay triangulation.
+                Triangulation(TriangulationDoc) = "triangulation", python(base),
+                /// Blending surface over a triangulated surface, one local per vertex.
+                BlendingTriangulation(BlendingTriangulationDoc) = "blending_triangulation", python(base),
             }
         }
     };
@@ -221,4 +236,13 @@ pub enum SurfaceDecoration<'a> {
         /// The faces.
         faces: &'a [Vec<u32>],
     },
+    /// The triangular control net of a Bézier triangle, b_n00 first, then rows of falling i.
+    TriangularNet {
+        /// The points in storage order.
+        points: &'a [Vec<f64>],
+        /// The document field that holds them, for editors that move them.
+        field: &'static str,
+    },
+    /// The local pieces of a blending kind of the triangle family.
+    LocalPieces(&'a dyn LocalPieces),
 }

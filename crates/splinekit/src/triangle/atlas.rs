@@ -71,6 +71,7 @@ impl<const D: usize> std::fmt::Debug for AtlasTriangle<D> {
 pub struct TriangleAtlas<const D: usize> {
     charts: Vec<AtlasTriangle<D>>,
     corner_ids: Option<Vec<[u32; 3]>>,
+    bounds: Option<Aabb<D>>,
 }
 
 impl<const D: usize> TriangleAtlas<D> {
@@ -79,7 +80,7 @@ impl<const D: usize> TriangleAtlas<D> {
         if charts.is_empty() {
             return Err(Error::invalid("triangles", "an atlas needs at least one triangle"));
         }
-        Ok(TriangleAtlas { charts, corner_ids: None })
+        Ok(TriangleAtlas { charts, corner_ids: None, bounds: None })
     }
 
     /// The atlas of `charts` whose corners u, v, w are the vertices `corner_ids[c]` of a
@@ -100,7 +101,14 @@ impl<const D: usize> TriangleAtlas<D> {
 
     /// A single triangle's atlas.
     pub fn single(triangle: AtlasTriangle<D>) -> Self {
-        TriangleAtlas { charts: vec![triangle], corner_ids: None }
+        TriangleAtlas { charts: vec![triangle], corner_ids: None, bounds: None }
+    }
+
+    /// The atlas with a box known to hold every triangle (what
+    /// [`Surface::enclosing_box`] then gives).
+    pub fn with_enclosing_box(mut self, bounds: Aabb<D>) -> Self {
+        self.bounds = Some(bounds);
+        self
     }
 
     /// The charts' triangles.
@@ -173,9 +181,13 @@ impl<const D: usize> Surface<D> for TriangleAtlas<D> {
         self.charts[c].triangle().normal(a, b, w)
     }
 
-    /// The box of the control points where every chart is a Bézier triangle (convex hull
-    /// property; rational ones with positive weights), else `None`.
+    /// The box given to [`TriangleAtlas::with_enclosing_box`], else the box of the control
+    /// points where every chart is a Bézier triangle (convex hull property; rational ones
+    /// with positive weights), else `None`.
     fn enclosing_box(&self) -> Option<Aabb<D>> {
+        if let Some(b) = &self.bounds {
+            return Some(*b);
+        }
         let mut points: Vec<Point<D>> = Vec::new();
         for chart in &self.charts {
             match chart {

@@ -601,7 +601,24 @@ impl TriangulationBlend {
         let charts = (0..self.data.triangles.len())
             .map(|t| AtlasTriangle::Other(Arc::new(self.triangle(t)) as Arc<dyn Triangle<3>>))
             .collect();
-        TriangleAtlas::with_corner_ids(charts, self.data.triangles.clone()).expect("one corner triple per triangle")
+        TriangleAtlas::with_corner_ids(charts, self.data.triangles.clone())
+            .expect("one corner triple per triangle")
+            .with_enclosing_box(self.enclosing_box())
+    }
+
+    /// A box that holds the surface: that of every local's control net in its frame. On each
+    /// triangle S is a convex combination (β ≥ 0, Σ β = 1) of locals evaluated at |ζ| ≤ 1, in
+    /// the square [−1, 1]² their Bézier nets span, so within the hull of the framed nets.
+    pub fn enclosing_box(&self) -> crate::query::Aabb<3> {
+        let points: Vec<Point<3>> = self
+            .data
+            .locals
+            .iter()
+            .flat_map(|l| {
+                l.patch.control_points().iter().flatten().map(move |p| l.frame.apply_point_about(&l.origin, p))
+            })
+            .collect();
+        crate::query::Aabb::around(&points, 0.0)
     }
 }
 
