@@ -108,15 +108,15 @@ macro_rules! surface_kinds {
                 /// The limit surface of a subdivision cage.
                 SubdivisionSurface(SubdivisionSurfaceDoc) = "subdivision_surface", python(base),
                 /// Bézier triangle (rational with weights).
-                BezierTriangle(BezierTriangleDoc) = "bezier_triangle", python(base),
+                BezierTriangle(BezierTriangleDoc) = "bezier_triangle", python(fields "BezierTriangle"),
                 /// The triangle S(u a + v b + w c) of a surface.
-                SubTriangle(SubTriangleDoc) = "sub_triangle", python(base),
+                SubTriangle(SubTriangleDoc) = "sub_triangle", python(fields "SubTriangle"),
                 /// GERBS triangle: three framed local triangles blended by a triangular B-function.
-                GerbsTriangle(GerbsTriangleDoc) = "gerbs_triangle", python(base),
+                GerbsTriangle(GerbsTriangleDoc) = "gerbs_triangle", python(fields "GerbsTriangle"),
                 /// Height field over a constrained Delaunay triangulation.
-                Triangulation(TriangulationDoc) = "triangulation", python(base),
+                Triangulation(TriangulationDoc) = "triangulation", python(fields "Triangulation"),
                 /// Blending surface over a triangulated surface, one local per vertex.
-                BlendingTriangulation(BlendingTriangulationDoc) = "blending_triangulation", python(base),
+                BlendingTriangulation(BlendingTriangulationDoc) = "blending_triangulation", python(fields "BlendingTriangulation"),
             }
         }
     };
@@ -213,6 +213,11 @@ pub enum SurfaceForm<'a> {
     /// A blending-spline surface: a B-spline when its locals are Bézier patches and its
     /// B-function a polynomial, else approximated.
     BlendingSpline(&'a BlendingSplineSurfaceDoc),
+    /// Several triangles (an atlas of them, see
+    /// [`TriangleAtlas`](splinekit::triangle::TriangleAtlas)): exporters write one item
+    /// per triangle, a Bézier triangle exactly as its degenerate tensor patch, others within
+    /// a tolerance.
+    Triangles,
     /// No exact form: exporters approximate the surface within a tolerance.
     Approximate,
 }

@@ -24,6 +24,11 @@ __all__ = [
     "BezierSurface",
     "SubdivisionSurface",
     "DupinCyclide",
+    "BezierTriangle",
+    "SubTriangle",
+    "GerbsTriangle",
+    "Triangulation",
+    "BlendingTriangulation",
     "Scene",
     "FitReport",
     "Mesh",
@@ -201,6 +206,26 @@ _FIELDS_CLASSES: List[str]
 @final
 class DupinCyclide(Surface):
     def __new__(cls, **fields: Any) -> "DupinCyclide": ...
+
+@final
+class BezierTriangle(Surface):
+    def __new__(cls, **fields: Any) -> "BezierTriangle": ...
+
+@final
+class SubTriangle(Surface):
+    def __new__(cls, **fields: Any) -> "SubTriangle": ...
+
+@final
+class GerbsTriangle(Surface):
+    def __new__(cls, **fields: Any) -> "GerbsTriangle": ...
+
+@final
+class Triangulation(Surface):
+    def __new__(cls, **fields: Any) -> "Triangulation": ...
+
+@final
+class BlendingTriangulation(Surface):
+    def __new__(cls, **fields: Any) -> "BlendingTriangulation": ...
 
 @final
 class Mesh(_Pickled):

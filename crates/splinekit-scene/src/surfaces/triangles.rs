@@ -523,9 +523,22 @@ impl TriangulationDoc {
     }
 }
 
+/// A kind made of several triangles: no spline view, written triangle by triangle.
+macro_rules! triangles_kind_items {
+    () => {
+        fn spline(&self) -> Option<NetView<'_>> {
+            None
+        }
+        fn exact_form(&self) -> Result<SurfaceForm<'_>> {
+            Ok(SurfaceForm::Triangles)
+        }
+        const BLENDING_MODEL: bool = false;
+    };
+}
+
 impl DocumentKind for TriangulationDoc {
     type Family = Surfaces;
-    approximated_kind_items!(NetView, SurfaceForm);
+    triangles_kind_items!();
     fn dimension(&self) -> Result<usize> {
         self.sites()?;
         Ok(3)
@@ -706,7 +719,7 @@ impl BlendingTriangulationDoc {
 
 impl DocumentKind for BlendingTriangulationDoc {
     type Family = Surfaces;
-    approximated_kind_items!(NetView, SurfaceForm);
+    triangles_kind_items!();
     fn dimension(&self) -> Result<usize> {
         Ok(3)
     }

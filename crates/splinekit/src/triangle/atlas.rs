@@ -12,7 +12,9 @@
 //! rule through the bilinear map u = s − s t, v = s t, to every order (in jets: u − u₀ =
 //! (1 − t₀)σ − s₀τ − στ, v − v₀ = t₀σ + s₀τ + στ). The normal is the triangle's own
 //! (S_s × S_t = s T_u × T_v, so the orientation agrees), which stays defined at the
-//! collapsed corner.
+//! collapsed corner. Where a triangle has no partials (a blending triangulation's corner of
+//! valence ≠ 6), the chart takes those 10⁻⁹ of the way towards the triangle's centroid, so
+//! that tools which sample partials on the square (fitting, projection) get finite numbers.
 //!
 //! Meshers do not sample the square: [`Surface::triangle_atlas`] hands them the triangles,
 //! which they mesh on barycentric lattices (no slivers at the collapsed corner), and where
@@ -159,6 +161,16 @@ impl<const D: usize> Surface<D> for TriangleAtlas<D> {
         let w = n + 1;
         let mut partials: SmallVec<[Point<D>; 25]> = smallvec![Point::<D>::zeros(); w * w];
         tri.eval_partials(a, b, n, n, &mut partials);
+        if partials.iter().any(|p| !p.iter().all(|x| x.is_finite())) {
+            // A singular corner (a blending triangulation's vertex of valence ≠ 6, where the
+            // partials in (u, v) do not exist): those 10⁻⁹ towards the centroid, the point kept.
+            let value = partials[0];
+            let nudge = |x: f64| x + (1.0 / 3.0 - x) * 1e-9;
+            tri.eval_partials(nudge(a), nudge(b), n, n, &mut partials);
+            if value.iter().all(|x| x.is_finite()) {
+                partials[0] = value;
+            }
+        }
         // u = s − s t and v = s t about (s, t): the jets of the bilinear map.
         let mut x = Jet::affine(du, dv, a, 1.0 - t, -s);
         let mut y = Jet::affine(du, dv, b, t, s);
