@@ -9,8 +9,9 @@
 //! shared edge, so a C⁰ surface shades smoothly and a C¹ one exactly).
 //!
 //! Tolerance: the level is the smallest power of two at which, in every triangle, the
-//! midpoints of the sub-triangles' edges and their centroids lie within the chord height of
-//! the flat sub-triangles (the midpoints of the next level, measured).
+//! surface at the midpoints of the sub-triangles' edges and at their centroids lies within
+//! the chord height of the flat sub-triangles, measured along the surface's normal there
+//! (the whole distance where it has none).
 
 use std::collections::HashMap;
 
@@ -129,17 +130,27 @@ fn deviation<const D: usize>(atlas: &TriangleAtlas<D>, level: usize) -> f64 {
     for chart in atlas.charts() {
         let t = chart.triangle();
         let p = |a: f64, b: f64| -> Point<D> { t.point(a / n, b / n, 1.0 - (a + b) / n) };
+        // The distance along the surface's normal there (the chord height; a point of the
+        // surface that the lattice only places elsewhere along it is no error), or the whole
+        // distance where there is no normal.
+        let off = |a: f64, b: f64, flat: Point<D>| -> f64 {
+            let d = p(a, b) - flat;
+            match t.normal(a / n, b / n, 1.0 - (a + b) / n) {
+                Some(nrm) => d.dot(&nrm).abs(),
+                None => d.norm(),
+            }
+        };
         let mut check = |corners: [(f64, f64); 3]| {
             let q = corners.map(|(a, b)| p(a, b));
             for (x, y) in [(0, 1), (1, 2), (2, 0)] {
-                let m = p((corners[x].0 + corners[y].0) / 2.0, (corners[x].1 + corners[y].1) / 2.0);
-                worst = worst.max((m - (q[x] + q[y]) / 2.0).norm());
+                let (a, b) = ((corners[x].0 + corners[y].0) / 2.0, (corners[x].1 + corners[y].1) / 2.0);
+                worst = worst.max(off(a, b, (q[x] + q[y]) / 2.0));
             }
             let (ca, cb) = (
                 (corners[0].0 + corners[1].0 + corners[2].0) / 3.0,
                 (corners[0].1 + corners[1].1 + corners[2].1) / 3.0,
             );
-            worst = worst.max((p(ca, cb) - (q[0] + q[1] + q[2]) / 3.0).norm());
+            worst = worst.max(off(ca, cb, (q[0] + q[1] + q[2]) / 3.0));
         };
         for i in 0..level {
             for j in 0..level - i {
@@ -182,7 +193,24 @@ pub fn level_for<const D: usize>(atlas: &TriangleAtlas<D>, tolerance: f64, max_t
         if !d.is_finite() {
             return Err(Error::invalid("surface", "the surface is not finite where the mesh samples it"));
         }
-        level *= 2;
+        // The chord height falls as 1/n² on smooth triangles: jump to the power of two that
+        // decay predicts (at least the next), refusing at once what the budget cannot hold.
+        let predicted = level as f64 * (d / tolerance).sqrt();
+        if count * predicted * predicted > max_triangles.min(MAX_VERTICES) as f64 {
+            return Err(Error::invalid(
+                "tolerance",
+                format!(
+                    "{tolerance:?} needs about {:.1e} triangles ({} triangles cut about {predicted:.0} times per edge, from the chord height {d:.2e} at {level}), more than {max_triangles}",
+                    count * predicted * predicted,
+                    atlas.charts().len()
+                ),
+            ));
+        }
+        let mut next = level * 2;
+        while (next as f64) < predicted / 2.0 {
+            next *= 2;
+        }
+        level = next;
     }
 }
 

@@ -269,7 +269,12 @@ fn decorate(decoration: Decoration<'_>, style: &StyleDoc, out: &mut RenderScene)
                 for (k, (lines, origin)) in pieces.into_iter().enumerate() {
                     let color = local_color(k, n);
                     for line in lines {
-                        out.lines.push(LineItem { points: line.iter().map(|p| f32x3(*p)).collect(), closed: false, color, width: 1.0 });
+                        out.lines.push(LineItem {
+                            points: line.iter().map(|p| f32x3(*p)).collect(),
+                            closed: false,
+                            color,
+                            width: 1.0,
+                        });
                     }
                     out.points.push(PointItem { position: f32x3(origin), color, size: 6.0 });
                 }

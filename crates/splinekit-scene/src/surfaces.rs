@@ -31,8 +31,8 @@ pub use nets::{BSplineSurfaceDoc, BezierSurfaceDoc, NurbsSurfaceDoc};
 pub use placed::PlacedDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
 pub use triangles::{
-    BezierTriangleDoc, BlendingTriangulationDoc, GerbsTriangleDoc, InterpolantDoc, LocalPieces, MeshDoc, SubTriangleDoc,
-    TriangularFormDoc, TriangulationDoc, triangle_of,
+    BezierTriangleDoc, BlendingTriangulationDoc, GerbsTriangleDoc, InterpolantDoc, LocalPieces, MeshDoc,
+    SubTriangleDoc, TriangularFormDoc, TriangulationDoc, triangle_of,
 };
 pub use trimmed::TrimmedDoc;
 

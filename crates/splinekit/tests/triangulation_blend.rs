@@ -87,7 +87,10 @@ fn check_edges(b: &TriangulationBlend, value_tol: f64, first_tol: f64, second_to
             };
             e0 = e0.max((p[0] - q[0]).norm());
             e1 = e1.max((grad(du) - q[3]).norm()).max((grad(dv) - q[1]).norm());
-            e2 = e2.max((hess(du, du) - q[6]).norm()).max((hess(du, dv) - q[4]).norm()).max((hess(dv, dv) - q[2]).norm());
+            e2 = e2
+                .max((hess(du, du) - q[6]).norm())
+                .max((hess(du, dv) - q[4]).norm())
+                .max((hess(dv, dv) - q[2]).norm());
         }
     }
     assert!(e0 < value_tol, "values differ by {e0:e} across edges");
@@ -262,7 +265,8 @@ fn scattered_points_with_and_without_normals() {
     let mut pts = Vec::new();
     for i in 0..7 {
         for j in 0..7 {
-            let (x, y) = (i as f64 / 6.0 + 0.013 * ((i * 7 + j) % 5) as f64, j as f64 / 6.0 + 0.011 * ((i + 3 * j) % 4) as f64);
+            let (x, y) =
+                (i as f64 / 6.0 + 0.013 * ((i * 7 + j) % 5) as f64, j as f64 / 6.0 + 0.011 * ((i + 3 * j) % 4) as f64);
             pts.push(Point::<2>::new(x, y));
         }
     }
@@ -300,7 +304,9 @@ fn bad_meshes_are_refused_naming_the_field() {
     assert!(e.contains("triangles["), "{e}");
     let mut m = TriangulatedSurface::icosphere(1.0, 0).unwrap();
     m.triangles[0][1] = 99;
-    assert!(TriangulationBlend::new(&m, 2, BFunction::erbs_default()).unwrap_err().to_string().contains("triangles[0]"));
+    assert!(
+        TriangulationBlend::new(&m, 2, BFunction::erbs_default()).unwrap_err().to_string().contains("triangles[0]")
+    );
     let m = TriangulatedSurface::icosphere(1.0, 0).unwrap();
     assert!(TriangulationBlend::new(&m, 3, BFunction::erbs_default()).is_err());
 }

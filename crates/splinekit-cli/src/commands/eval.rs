@@ -304,8 +304,12 @@ fn prepare(doc: ShapeDocument, args: &EvalArgs, order: usize) -> Result<Answer> 
             request.check_budget(s.dimension()?, &cost)?;
             let surface = s.build()?;
             Ok(Box::new(move |out: &mut JsonOut| {
-                let request =
-                    super::eval_surface::EvalSurface { at: at.as_deref(), triangles: triangles.as_deref(), grid, order };
+                let request = super::eval_surface::EvalSurface {
+                    at: at.as_deref(),
+                    triangles: triangles.as_deref(),
+                    grid,
+                    order,
+                };
                 surface.visit(super::eval_surface::SurfaceOutput { request, out })
             }))
         }

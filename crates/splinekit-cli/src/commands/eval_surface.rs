@@ -136,9 +136,8 @@ impl EvalSurface<'_> {
                 bail!("--at: triangle {t} does not exist (there are {})", atlas.charts().len());
             };
             chart.triangle().eval_partials(u, v, k, k, &mut values[n * w..(n + 1) * w]);
-            let printed = (0..=k)
-                .flat_map(|i| (0..=k).map(move |j| (i, j)))
-                .filter(|&(i, j)| i + j >= 1 && i + j <= self.order);
+            let printed =
+                (0..=k).flat_map(|i| (0..=k).map(move |j| (i, j))).filter(|&(i, j)| i + j >= 1 && i + j <= self.order);
             if printed.into_iter().any(|(i, j)| !values[n * w + i * (k + 1) + j].iter().all(|x| x.is_finite())) {
                 bail!(
                     "--derivatives: triangle {t} has no partials in (u, v) at ({u}, {v}), a corner where its parametrisation is singular (a vertex of valence other than 6 of a blending triangulation); its point and normal are given without --derivatives"

@@ -71,7 +71,13 @@ pub struct BezierTriangleDoc {
 impl BezierTriangleDoc {
     fn check_degree(&self) -> Result<()> {
         if let Some(n) = self.degree {
-            let expected = if n <= splinekit::triangle::MAX_DEGREE { net_len(n) } else { 0 };
+            if n > splinekit::triangle::MAX_DEGREE {
+                return Err(DocumentError::new(
+                    "degree",
+                    format!("must be at most {}, got {n}", splinekit::triangle::MAX_DEGREE),
+                ));
+            }
+            let expected = net_len(n);
             if expected != self.control_points.len() {
                 return Err(DocumentError::new(
                     "control_points",
@@ -341,7 +347,9 @@ impl GerbsTriangleDoc {
                     format!("expected 3 local triangles (corners u, v, w) or a \"model\", got {n}"),
                 ));
             }
-            (Some(_), _) => return Err(DocumentError::new("locals", "give either \"locals\" or a \"model\", not both")),
+            (Some(_), _) => {
+                return Err(DocumentError::new("locals", "give either \"locals\" or a \"model\", not both"));
+            }
         };
         let origins: Vec<Point<D>> = (0..3).map(|i| g.origin(i).expect("three locals")).collect();
         pose_locals::<D>(
@@ -465,7 +473,10 @@ impl TriangulationDoc {
     fn sites(&self) -> Result<(Vec<Point<2>>, Vec<f64>)> {
         let d = dimension_of("points", &self.points)?;
         match (d, &self.heights) {
-            (3, None) => Ok((self.points.iter().map(|p| Point::<2>::new(p[0], p[1])).collect(), self.points.iter().map(|p| p[2]).collect())),
+            (3, None) => Ok((
+                self.points.iter().map(|p| Point::<2>::new(p[0], p[1])).collect(),
+                self.points.iter().map(|p| p[2]).collect(),
+            )),
             (2, Some(h)) => {
                 check_finite_list("heights", h)?;
                 if h.len() != self.points.len() {
@@ -476,9 +487,16 @@ impl TriangulationDoc {
                 }
                 Ok((to_points::<2>(&self.points), h.clone()))
             }
-            (3, Some(_)) => Err(DocumentError::new("heights", "3-D points carry their heights; give 2-D points with heights")),
-            (2, None) => Err(DocumentError::new("heights", "missing: 2-D points need one height each (or give 3-D points)")),
-            (d, _) => Err(DocumentError::new("points[0]", format!("expected (x, y, z) or (x, y) with heights, got {d} coordinates"))),
+            (3, Some(_)) => {
+                Err(DocumentError::new("heights", "3-D points carry their heights; give 2-D points with heights"))
+            }
+            (2, None) => {
+                Err(DocumentError::new("heights", "missing: 2-D points need one height each (or give 3-D points)"))
+            }
+            (d, _) => Err(DocumentError::new(
+                "points[0]",
+                format!("expected (x, y, z) or (x, y) with heights, got {d} coordinates"),
+            )),
         }
     }
 
@@ -487,7 +505,10 @@ impl TriangulationDoc {
         let (sites, _) = self.sites()?;
         let n = sites.len();
         if let Some((k, e)) = self.edges.iter().enumerate().find(|(_, e)| e[0] >= n || e[1] >= n) {
-            return Err(DocumentError::new(format!("edges[{k}]"), format!("point {} does not exist (there are {n})", e[0].max(e[1]))));
+            return Err(DocumentError::new(
+                format!("edges[{k}]"),
+                format!("point {} does not exist (there are {n})", e[0].max(e[1])),
+            ));
         }
         Ok(Delaunay::with_constraints(&sites, &self.edges)?)
     }
@@ -727,7 +748,12 @@ impl DocumentKind for BlendingTriangulationDoc {
     /// three locals, three B-functions and the jets of the chart maps.
     fn cost(&self) -> ShapeCost {
         let n = self.mesh.vertex_count();
-        ShapeCost::new("mesh", n * (LOCAL_PIECE + 200.0 * F64), n * 6.0 * 45.0 * 400.0, 3.0 * BFUNCTION_EVALUATION + 3000.0)
+        ShapeCost::new(
+            "mesh",
+            n * (LOCAL_PIECE + 200.0 * F64),
+            n * 6.0 * 45.0 * 400.0,
+            3.0 * BFUNCTION_EVALUATION + 3000.0,
+        )
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         let atlas: Box<dyn Surface<3>> = Box::new(self.blend()?.atlas());

@@ -302,15 +302,21 @@ pub fn export_triangles(doc: &SurfaceDocument, name: &str, relative_tolerance: f
             AtlasTriangle::Bezier(t) => {
                 let patch = t.to_tensor_patch();
                 let (p, q) = patch.degrees();
-                let net: Vec<Vec<Vec<f64>>> =
-                    patch.control_points().iter().map(|row| row.iter().map(|x| x.as_slice().to_vec()).collect()).collect();
+                let net: Vec<Vec<Vec<f64>>> = patch
+                    .control_points()
+                    .iter()
+                    .map(|row| row.iter().map(|x| x.as_slice().to_vec()).collect())
+                    .collect();
                 exact(spline_surface((p, q), &bezier_knots(p), &bezier_knots(q), &net, None, (false, false))?)
             }
             AtlasTriangle::Rational(t) => {
                 let patch = t.to_tensor_patch();
                 let (ku, kv) = patch.knots();
-                let net: Vec<Vec<Vec<f64>>> =
-                    patch.control_points().iter().map(|row| row.iter().map(|x| x.as_slice().to_vec()).collect()).collect();
+                let net: Vec<Vec<Vec<f64>>> = patch
+                    .control_points()
+                    .iter()
+                    .map(|row| row.iter().map(|x| x.as_slice().to_vec()).collect())
+                    .collect();
                 exact(spline_surface(patch.degrees(), ku, kv, &net, Some(patch.weights()), (false, false))?)
             }
             AtlasTriangle::Other(_) => {

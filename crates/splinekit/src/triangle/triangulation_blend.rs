@@ -229,6 +229,8 @@ struct BlendData {
     triangles: Vec<[u32; 3]>,
     /// Per triangle, per corner: the triangle's place k in that vertex's fan.
     fan: Vec<[u32; 3]>,
+    /// Per vertex: its triangles and its corner in each.
+    incident: Vec<Vec<(usize, usize)>>,
     /// Per vertex: α (6/n inside, 3/n on the boundary) and the valence n.
     alpha: Vec<f64>,
     valence: Vec<u32>,
@@ -409,10 +411,7 @@ impl TriangulationBlend {
             if k as usize != around.len() {
                 return Err(Error::invalid(
                     format!("vertices[{i}]"),
-                    format!(
-                        "its {} triangles do not make one fan (the surface is not a manifold there)",
-                        around.len()
-                    ),
+                    format!("its {} triangles do not make one fan (the surface is not a manifold there)", around.len()),
                 ));
             }
             valence[i] = k;
@@ -433,7 +432,10 @@ impl TriangulationBlend {
             for (i, s) in sum.iter().enumerate() {
                 let len = s.norm();
                 if !(len > 0.0 && len.is_finite()) {
-                    return Err(Error::invalid(format!("vertices[{i}]"), "its triangles have no area to take a normal from"));
+                    return Err(Error::invalid(
+                        format!("vertices[{i}]"),
+                        "its triangles have no area to take a normal from",
+                    ));
                 }
                 out.push(s / len);
             }
@@ -456,6 +458,7 @@ impl TriangulationBlend {
             positions,
             triangles: surface.triangles.clone(),
             fan,
+            incident,
             alpha,
             valence,
             boundary,
@@ -548,6 +551,7 @@ impl TriangulationBlend {
                 positions: d.positions.clone(),
                 triangles: d.triangles.clone(),
                 fan: d.fan.clone(),
+                incident: d.incident.clone(),
                 alpha: d.alpha.clone(),
                 valence: d.valence.clone(),
                 boundary: d.boundary.clone(),
@@ -634,11 +638,8 @@ impl BlendData {
         // r_i < ρ where local i's weight lives, at their chart points.
         let mut ring: Vec<(Point<2>, Point<3>)> = Vec::new();
         const LEVEL: usize = 8;
-        for (t, tri) in self.triangles.iter().enumerate() {
-            for m in 0..3 {
-                if tri[m] as usize != i {
-                    continue;
-                }
+        for &(t, m) in &self.incident[i] {
+            {
                 let reference = self.pn_triangle(t);
                 for a in 0..=LEVEL {
                     for bb in 0..=LEVEL - a {
@@ -652,7 +653,10 @@ impl BlendData {
                         lam[(m + 2) % 3] = lb;
                         let jets = lam.map(|x| Jet::constant(0, 0, x));
                         let z = self.chart_jet(t, m, &jets);
-                        ring.push((Point::<2>::new(z.re.value(), z.im.value()), reference.point(lam[0], lam[1], lam[2])));
+                        ring.push((
+                            Point::<2>::new(z.re.value(), z.im.value()),
+                            reference.point(lam[0], lam[1], lam[2]),
+                        ));
                     }
                 }
             }
@@ -797,8 +801,11 @@ impl BlendData {
     fn eval(&self, t: usize, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<3>]) {
         let cols = dv + 1;
         let size = (du + 1) * cols;
-        let lam =
-            [Jet::affine(du, dv, u, 1.0, 0.0), Jet::affine(du, dv, v, 0.0, 1.0), Jet::affine(du, dv, 1.0 - u - v, -1.0, -1.0)];
+        let lam = [
+            Jet::affine(du, dv, u, 1.0, 0.0),
+            Jet::affine(du, dv, v, 0.0, 1.0),
+            Jet::affine(du, dv, 1.0 - u - v, -1.0, -1.0),
+        ];
         let b = self.weight_jets(&lam);
         let sum = b.iter().flatten().fold(Jet::constant(du, dv, 0.0), |acc, j| acc.add(j));
         let inv = sum.recip();
