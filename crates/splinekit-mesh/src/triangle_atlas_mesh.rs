@@ -56,7 +56,7 @@ pub fn uniform<const D: usize>(atlas: &TriangleAtlas<D>, level: usize, options: 
         i * (2 * level + 3 - i) / 2 + j
     };
     for (c, chart) in charts.iter().enumerate() {
-        let tri = chart.triangle();
+        let tri = chart.as_ref();
         for i in 0..=n {
             for j in 0..=n - i {
                 let k = n - i - j;
@@ -128,7 +128,7 @@ fn deviation<const D: usize>(atlas: &TriangleAtlas<D>, level: usize) -> f64 {
     let n = level as f64;
     let mut worst = 0.0f64;
     for chart in atlas.charts() {
-        let t = chart.triangle();
+        let t = chart.as_ref();
         let p = |a: f64, b: f64| -> Point<D> { t.point(a / n, b / n, 1.0 - (a + b) / n) };
         // The distance along the surface's normal there (the chord height; a point of the
         // surface that the lattice only places elsewhere along it is no error), or the whole

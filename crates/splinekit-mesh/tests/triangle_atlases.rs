@@ -4,7 +4,9 @@
 use splinekit::Point;
 use splinekit::basis::BFunction;
 use splinekit::surface::Surface;
-use splinekit::triangle::{AtlasTriangle, BezierTriangle, Triangle, TriangulatedSurface, TriangulationBlend};
+use std::sync::Arc;
+
+use splinekit::triangle::{BezierTriangle, Triangle, TriangulatedSurface, TriangulationBlend};
 use splinekit_mesh::triangle_atlas_mesh::{level_for, uniform, within_tolerance};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, surface_mesh};
 
@@ -39,7 +41,7 @@ fn within_tolerance_at_unsampled_points_and_no_slivers() {
         Point::<3>::new(i as f64, j as f64, if i == 1 && j == 1 { 4.0 } else { 0.3 * k as f64 })
     })
     .unwrap();
-    let atlas = splinekit::triangle::TriangleAtlas::single(AtlasTriangle::Bezier(t.clone()));
+    let atlas = splinekit::triangle::TriangleAtlas::single(Arc::new(t.clone()));
     for tol in [1e-1, 1e-2, 1e-3] {
         let level = level_for(&atlas, tol, 10_000_000).unwrap();
         let mesh = within_tolerance(&atlas, tol, 10_000_000, MeshOptions { uv: true }).unwrap();

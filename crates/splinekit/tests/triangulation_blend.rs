@@ -9,7 +9,7 @@ use splinekit::basis::BFunction;
 use splinekit::frame::Affine;
 use splinekit::surface::Surface;
 use splinekit::triangle::{
-    AtlasTriangle, BezierTriangle, Triangle, TriangleAtlas, TriangulatedSurface, TriangulationBlend,
+    BezierTriangle, Triangle, TriangleAtlas, TriangulatedSurface, TriangulationBlend,
     degenerate_patch_parameters,
 };
 use splinekit::triangulation::{Delaunay, HeightInterpolant, height_pieces};
@@ -318,7 +318,7 @@ fn atlas_chart_is_the_degenerate_tensor_patch_with_its_partials() {
     })
     .unwrap();
     let patch = t.to_tensor_patch();
-    let atlas = TriangleAtlas::new(vec![AtlasTriangle::Bezier(t.clone()), AtlasTriangle::Bezier(t.clone())]).unwrap();
+    let atlas = TriangleAtlas::new(vec![std::sync::Arc::new(t.clone()), std::sync::Arc::new(t.clone())]).unwrap();
     for (s, q) in [(0.3, 0.8), (0.0, 0.4), (1.0, 0.5), (0.77, 0.1)] {
         let mut a = [Point::<3>::zeros(); 16];
         let mut p = [Point::<3>::zeros(); 16];

@@ -135,7 +135,7 @@ impl EvalSurface<'_> {
             let Some(chart) = atlas.charts().get(t) else {
                 bail!("--at: triangle {t} does not exist (there are {})", atlas.charts().len());
             };
-            chart.triangle().eval_partials(u, v, k, k, &mut values[n * w..(n + 1) * w]);
+            chart.eval_partials(u, v, k, k, &mut values[n * w..(n + 1) * w]);
             let printed =
                 (0..=k).flat_map(|i| (0..=k).map(move |j| (i, j))).filter(|&(i, j)| i + j >= 1 && i + j <= self.order);
             if printed.into_iter().any(|(i, j)| !values[n * w + i * (k + 1) + j].iter().all(|x| x.is_finite())) {
@@ -222,7 +222,7 @@ impl DimensionVisitor<Surfaces> for SurfaceOutput<'_> {
                 let normal = match (triangles, s.triangle_atlas()) {
                     (Some(t), Some(atlas)) => {
                         let (t, a, b) = t[n];
-                        atlas.charts()[t].triangle().normal(a, b, 1.0 - a - b)
+                        atlas.charts()[t].normal(a, b, 1.0 - a - b)
                     }
                     _ => normal_or_limit(s, u, v, &o[k + 1], &o[1]),
                 };

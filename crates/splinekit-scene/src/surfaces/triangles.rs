@@ -16,7 +16,7 @@ use splinekit::Point;
 use splinekit::frame::Affine;
 use splinekit::surface::Surface;
 use splinekit::triangle::{
-    AtlasTriangle, BezierTriangle, GerbsTriangle, RationalBezierTriangle, SubTriangle, Triangle, TriangleAtlas,
+    BezierTriangle, GerbsTriangle, RationalBezierTriangle, SubTriangle, Triangle, TriangleAtlas,
     TriangularBFunction, TriangularForm, TriangulatedSurface, TriangulationBlend, net_len,
 };
 use splinekit::triangulation::{Delaunay, HeightInterpolant, gradient_of_normal, height_pieces};
@@ -37,11 +37,7 @@ use crate::views::NetView;
 pub fn triangle_of<const D: usize>(doc: &SurfaceDocument, field: &str) -> Result<Arc<dyn Triangle<D>>> {
     let s = doc.build_in::<D>().map_err(|e| e.within(field))?;
     match s.triangle_atlas() {
-        Some(a) if a.charts().len() == 1 => Ok(match &a.charts()[0] {
-            AtlasTriangle::Bezier(t) => Arc::new(t.clone()),
-            AtlasTriangle::Rational(t) => Arc::new(t.clone()),
-            AtlasTriangle::Other(t) => t.clone(),
-        }),
+        Some(a) if a.charts().len() == 1 => Ok(a.charts()[0].clone()),
         _ => Err(DocumentError::new(
             field,
             format!(
@@ -93,15 +89,23 @@ impl BezierTriangleDoc {
         Ok(())
     }
 
-    /// The kernel triangle (polynomial or rational) in dimension D.
-    pub fn triangle<const D: usize>(&self) -> Result<AtlasTriangle<D>> {
+    /// The kernel triangle (polynomial, or rational with weights) in dimension D.
+    pub fn triangle<const D: usize>(&self) -> Result<Arc<dyn Triangle<D>>> {
+        Ok(match self.tensor::<D>()? {
+            Err(t) => Arc::new(t),
+            Ok(t) => Arc::new(t),
+        })
+    }
+
+    /// The polynomial (`Err`) or rational (`Ok`) kernel triangle.
+    fn tensor<const D: usize>(&self) -> Result<std::result::Result<RationalBezierTriangle<D>, BezierTriangle<D>>> {
         self.check_degree()?;
         let points = to_points::<D>(&self.control_points);
         Ok(match &self.weights {
-            None => AtlasTriangle::Bezier(BezierTriangle::new(points)?),
+            None => Err(BezierTriangle::new(points)?),
             Some(w) => {
                 check_finite_list("weights", w)?;
-                AtlasTriangle::Rational(RationalBezierTriangle::new(points, w.clone())?)
+                Ok(RationalBezierTriangle::new(points, w.clone())?)
             }
         })
     }
@@ -110,8 +114,8 @@ impl BezierTriangleDoc {
     pub fn tensor_net(&self) -> Result<NetView<'static>> {
         let dimension = self.dimension()?;
         crate::with_dimension!(dimension, "control_points", D => {
-            Ok(match self.triangle::<D>()? {
-                AtlasTriangle::Bezier(t) => {
+            Ok(match self.tensor::<D>()? {
+                Err(t) => {
                     let patch = t.to_tensor_patch();
                     let rows: Vec<Vec<Vec<f64>>> =
                         patch.control_points().iter().map(|row| crate::points::from_points(row)).collect();
@@ -124,8 +128,7 @@ impl BezierTriangleDoc {
                         periodic: (false, false),
                     }
                 }
-                AtlasTriangle::Rational(t) => NetView::of_nurbs(&t.to_tensor_patch()),
-                AtlasTriangle::Other(_) => unreachable!("a Bézier document"),
+                Ok(t) => NetView::of_nurbs(&t.to_tensor_patch()),
             })
         })
     }
@@ -211,7 +214,7 @@ impl DocumentKind for SubTriangleDoc {
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         let t: Arc<dyn Triangle<D>> = Arc::new(self.triangle::<D>()?);
-        Ok(Box::new(TriangleAtlas::single(AtlasTriangle::Other(t))))
+        Ok(Box::new(TriangleAtlas::single(t)))
     }
     /// A triangle on the unit sphere.
     fn example() -> Self {
@@ -407,7 +410,7 @@ impl DocumentKind for GerbsTriangleDoc {
     }
     fn build_in<const D: usize>(&self) -> Result<Box<dyn Surface<D>>> {
         let t: Arc<dyn Triangle<D>> = Arc::new(self.gerbs::<D>()?);
-        Ok(Box::new(TriangleAtlas::single(AtlasTriangle::Other(t))))
+        Ok(Box::new(TriangleAtlas::single(t)))
     }
     /// Cubic Hermite locals of a triangle on the unit sphere, blended by ERBS.
     fn example() -> Self {
@@ -539,7 +542,7 @@ impl TriangulationDoc {
             }
         };
         let pieces = height_pieces(&d, &heights, gradients.as_deref(), kind)?;
-        let charts = pieces.triangles.into_iter().map(AtlasTriangle::Bezier).collect();
+        let charts = pieces.triangles.into_iter().map(|t| Arc::new(t) as Arc<dyn Triangle<3>>).collect();
         Ok(TriangleAtlas::with_corner_ids(charts, pieces.corners)?)
     }
 }
@@ -783,8 +786,11 @@ impl DocumentKind for BlendingTriangulationDoc {
 /// moved origins for editors' handles.
 pub trait LocalPieces: std::fmt::Debug + Sync {
     /// Per local: its polylines (3-D points) and its moved origin.
-    fn local_pieces(&self) -> Result<Vec<(Vec<Vec<[f64; 3]>>, [f64; 3])>>;
+    fn local_pieces(&self) -> Result<Vec<LocalPiece>>;
 }
+
+/// One local piece as drawn: its polylines (3-D points) and its moved origin.
+pub type LocalPiece = (Vec<Vec<[f64; 3]>>, [f64; 3]);
 
 fn p3<const D: usize>(p: &Point<D>) -> [f64; 3] {
     std::array::from_fn(|k| if k < D { p[k] } else { 0.0 })
@@ -792,7 +798,7 @@ fn p3<const D: usize>(p: &Point<D>) -> [f64; 3] {
 
 impl LocalPieces for GerbsTriangleDoc {
     /// Each local triangle's three edges and its three medians (33 points each).
-    fn local_pieces(&self) -> Result<Vec<(Vec<Vec<[f64; 3]>>, [f64; 3])>> {
+    fn local_pieces(&self) -> Result<Vec<LocalPiece>> {
         let dimension = self.dimension()?;
         crate::with_dimension!(dimension, "locals", D => {
             let g = self.gerbs::<D>()?;
@@ -822,7 +828,7 @@ impl LocalPieces for GerbsTriangleDoc {
 
 impl LocalPieces for BlendingTriangulationDoc {
     /// Each local's circle |ζ| = ρ^α (the edge of its weight's support) and two diameters.
-    fn local_pieces(&self) -> Result<Vec<(Vec<Vec<[f64; 3]>>, [f64; 3])>> {
+    fn local_pieces(&self) -> Result<Vec<LocalPiece>> {
         let s = self.blend()?;
         let mut out = Vec::with_capacity(s.vertex_count());
         let mut v = [Point::<3>::zeros(); 1];

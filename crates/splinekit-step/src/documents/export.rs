@@ -17,7 +17,7 @@ use splinekit::curve::bezier::bezier_knots;
 use splinekit::curve::{Curve as KernelCurve, Interval};
 use splinekit::query::extent::sampled_surface_box;
 use splinekit::surface::Surface as KernelSurface;
-use splinekit::triangle::{AtlasTriangle, TriangleAtlas};
+use splinekit::triangle::{BezierTriangle, RationalBezierTriangle, TriangleAtlas};
 use splinekit_scene::blending::LocalPatchDoc;
 use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument, SurfaceForm};
 use std::f64::consts::{FRAC_PI_2, TAU};
@@ -298,28 +298,26 @@ pub fn export_triangles(doc: &SurfaceDocument, name: &str, relative_tolerance: f
         let domain = (Interval::new(c as f64, c as f64 + 1.0), unit);
         let map = ParamMap { u: (1.0, -(c as f64)), v: (1.0, 0.0) };
         let exact = |surface: SplineSurface| (surface, Form::Exact, 0.0);
-        let (surface, form, max_deviation) = match chart {
-            AtlasTriangle::Bezier(t) => {
-                let patch = t.to_tensor_patch();
+        let rows = |rows: &[Vec<Point<3>>]| -> Vec<Vec<Vec<f64>>> {
+            rows.iter().map(|row| row.iter().map(|x| x.as_slice().to_vec()).collect()).collect()
+        };
+        let invalid = |e: splinekit::Error| StepError::plain(format!("{name} triangle {c}: {e}"));
+        let (surface, form, max_deviation) = match chart.bezier_net() {
+            Some(net) if net.weights.is_none() => {
+                let patch = BezierTriangle::new(net.points.to_vec()).map_err(invalid)?.to_tensor_patch();
                 let (p, q) = patch.degrees();
-                let net: Vec<Vec<Vec<f64>>> = patch
-                    .control_points()
-                    .iter()
-                    .map(|row| row.iter().map(|x| x.as_slice().to_vec()).collect())
-                    .collect();
+                let net = rows(patch.control_points());
                 exact(spline_surface((p, q), &bezier_knots(p), &bezier_knots(q), &net, None, (false, false))?)
             }
-            AtlasTriangle::Rational(t) => {
-                let patch = t.to_tensor_patch();
+            Some(net) => {
+                let weights = net.weights.unwrap_or_default().to_vec();
+                let patch =
+                    RationalBezierTriangle::new(net.points.to_vec(), weights).map_err(invalid)?.to_tensor_patch();
                 let (ku, kv) = patch.knots();
-                let net: Vec<Vec<Vec<f64>>> = patch
-                    .control_points()
-                    .iter()
-                    .map(|row| row.iter().map(|x| x.as_slice().to_vec()).collect())
-                    .collect();
+                let net = rows(patch.control_points());
                 exact(spline_surface(patch.degrees(), ku, kv, &net, Some(patch.weights()), (false, false))?)
             }
-            AtlasTriangle::Other(_) => {
+            None => {
                 let single = TriangleAtlas::single(chart.clone());
                 let fitted = hermite_surface(&single, &uniform_breaks(unit, 4), &uniform_breaks(unit, 4), tolerance)?;
                 (fitted.spline, Form::Approximated, fitted.max_deviation)
@@ -364,7 +362,7 @@ fn surface_exports_exactly(doc: &SurfaceDocument) -> bool {
     match doc.exact_form() {
         Err(_) | Ok(SurfaceForm::Approximate) => false,
         Ok(SurfaceForm::Triangles) => kernel_surface(doc).is_ok_and(|k| {
-            k.triangle_atlas().is_some_and(|a| a.charts().iter().all(|c| !matches!(c, AtlasTriangle::Other(_))))
+            k.triangle_atlas().is_some_and(|a| a.charts().iter().all(|c| c.bezier_net().is_some()))
         }),
         Ok(SurfaceForm::Revolution(d)) => curve_exports_exactly(&d.curve),
         Ok(SurfaceForm::Extrusion(d)) => curve_exports_exactly(&d.curve),

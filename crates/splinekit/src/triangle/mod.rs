@@ -43,6 +43,7 @@
 //! wherever both apply.
 
 pub mod atlas;
+mod atlas_surface;
 pub mod bezier_triangle;
 pub mod degenerate_patch;
 pub mod gerbs_triangle;
@@ -54,13 +55,13 @@ pub mod traits;
 pub mod triangular_bfunction;
 pub mod triangulation_blend;
 
-pub use atlas::{AtlasTriangle, TriangleAtlas};
+pub use atlas::TriangleAtlas;
 pub use bezier_triangle::BezierTriangle;
 pub use degenerate_patch::degenerate_patch_parameters;
 pub use gerbs_triangle::{GerbsTriangle, hermite_local};
 pub use net::{MAX_DEGREE, multi_indices, net_index, net_len};
 pub use rational_bezier_triangle::RationalBezierTriangle;
 pub use sub_triangle::SubTriangle;
-pub use traits::{Triangle, clamp_to_triangle};
+pub use traits::{BezierNet, Triangle, clamp_to_triangle};
 pub use triangular_bfunction::{TriangularBFunction, TriangularForm};
 pub use triangulation_blend::{BlendTriangle, TriangulatedSurface, TriangulationBlend};

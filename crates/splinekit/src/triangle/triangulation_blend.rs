@@ -92,7 +92,7 @@ use crate::basis::{BFunction, binomial};
 use crate::error::{Error, Result};
 use crate::frame::Affine;
 use crate::surface::{BezierSurface, Surface, unit_normal};
-use crate::triangle::atlas::{AtlasTriangle, TriangleAtlas};
+use crate::triangle::atlas::TriangleAtlas;
 use crate::triangle::jet::{ComplexJet, Jet, compose_point};
 use crate::triangle::traits::{Triangle, clamp_to_triangle, clamp_uv};
 
@@ -603,7 +603,7 @@ impl TriangulationBlend {
     /// The surface as an atlas of its triangles (corners shared, so meshes weld).
     pub fn atlas(&self) -> TriangleAtlas<3> {
         let charts = (0..self.data.triangles.len())
-            .map(|t| AtlasTriangle::Other(Arc::new(self.triangle(t)) as Arc<dyn Triangle<3>>))
+            .map(|t| Arc::new(self.triangle(t)) as Arc<dyn Triangle<3>>)
             .collect();
         TriangleAtlas::with_corner_ids(charts, self.data.triangles.clone())
             .expect("one corner triple per triangle")

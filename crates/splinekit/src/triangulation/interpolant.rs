@@ -128,7 +128,7 @@ pub fn height_pieces(
 ) -> Result<HeightPieces> {
     let n = d.num_vertices();
     if heights.len() != n {
-        return Err(Error::count("heights", &format!("{n} values, one per point"), heights.len()));
+        return Err(Error::count("heights", format!("{n} values, one per point"), heights.len()));
     }
     if let Some((i, z)) = heights.iter().enumerate().find(|(_, z)| !z.is_finite()) {
         return Err(Error::invalid(format!("heights[{i}]"), format!("is not finite ({z})")));
@@ -152,7 +152,7 @@ pub fn height_pieces(
             let g = match gradients {
                 Some(g) => {
                     if g.len() != n {
-                        return Err(Error::count("normals", &format!("{n} vectors, one per point"), g.len()));
+                        return Err(Error::count("normals", format!("{n} vectors, one per point"), g.len()));
                     }
                     if let Some(i) = g.iter().position(|g| !(g[0].is_finite() && g[1].is_finite())) {
                         return Err(Error::invalid(format!("normals[{i}]"), "gives a gradient that is not finite"));
