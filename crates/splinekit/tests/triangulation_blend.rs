@@ -9,8 +9,7 @@ use splinekit::basis::BFunction;
 use splinekit::frame::Affine;
 use splinekit::surface::Surface;
 use splinekit::triangle::{
-    BezierTriangle, Triangle, TriangleAtlas, TriangulatedSurface, TriangulationBlend,
-    degenerate_patch_parameters,
+    BezierTriangle, Triangle, TriangleAtlas, TriangulatedSurface, TriangulationBlend, degenerate_patch_parameters,
 };
 use splinekit::triangulation::{Delaunay, HeightInterpolant, height_pieces};
 

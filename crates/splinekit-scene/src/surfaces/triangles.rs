@@ -16,8 +16,8 @@ use splinekit::Point;
 use splinekit::frame::Affine;
 use splinekit::surface::Surface;
 use splinekit::triangle::{
-    BezierTriangle, GerbsTriangle, RationalBezierTriangle, SubTriangle, Triangle, TriangleAtlas,
-    TriangularBFunction, TriangularForm, TriangulatedSurface, TriangulationBlend, net_len,
+    BezierTriangle, GerbsTriangle, RationalBezierTriangle, SubTriangle, Triangle, TriangleAtlas, TriangularBFunction,
+    TriangularForm, TriangulatedSurface, TriangulationBlend, net_len,
 };
 use splinekit::triangulation::{Delaunay, HeightInterpolant, gradient_of_normal, height_pieces};
 

@@ -361,9 +361,8 @@ pub fn exports_exactly(doc: &ShapeDocument) -> bool {
 fn surface_exports_exactly(doc: &SurfaceDocument) -> bool {
     match doc.exact_form() {
         Err(_) | Ok(SurfaceForm::Approximate) => false,
-        Ok(SurfaceForm::Triangles) => kernel_surface(doc).is_ok_and(|k| {
-            k.triangle_atlas().is_some_and(|a| a.charts().iter().all(|c| c.bezier_net().is_some()))
-        }),
+        Ok(SurfaceForm::Triangles) => kernel_surface(doc)
+            .is_ok_and(|k| k.triangle_atlas().is_some_and(|a| a.charts().iter().all(|c| c.bezier_net().is_some()))),
         Ok(SurfaceForm::Revolution(d)) => curve_exports_exactly(&d.curve),
         Ok(SurfaceForm::Extrusion(d)) => curve_exports_exactly(&d.curve),
         Ok(SurfaceForm::Trimmed(t)) => {

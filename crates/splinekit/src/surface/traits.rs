@@ -6,7 +6,6 @@ use crate::Point;
 use crate::curve::Interval;
 pub use crate::surface::differential::{Curvatures, FundamentalForms, unit_normal};
 
-
 /// Trimming loops in the parameter plane, as closed polygons (the last point joins the first).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TrimLoops<'a> {
@@ -165,7 +164,6 @@ pub trait Surface<const D: usize>: Send + Sync {
     }
 }
 
-
 /// The unit normal at (u, v) from the partials `su`, `sv` there, or where S_u × S_v
 /// vanishes (poles, apexes) its limit from just inside the domain: the normal at
 /// (u, v) moved by 10⁻⁷ of the domain along v, then u, then the diagonals; `None` if the
@@ -200,8 +198,6 @@ pub fn normal_or_limit<const D: usize, S: Surface<D> + ?Sized>(
     }
     None
 }
-
-
 
 // Every method, the provided ones too (a tensor-product grid path, a trimmed surface's
 // loops), behind `&S`, `Box<S>` and `Arc<S>`.

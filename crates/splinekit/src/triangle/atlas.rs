@@ -108,6 +108,9 @@ impl<const D: usize> TriangleAtlas<D> {
 
 impl<const D: usize> std::fmt::Debug for TriangleAtlas<D> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("TriangleAtlas").field("charts", &self.charts.len()).field("shared", &self.corner_ids.is_some()).finish()
+        f.debug_struct("TriangleAtlas")
+            .field("charts", &self.charts.len())
+            .field("shared", &self.corner_ids.is_some())
+            .finish()
     }
 }

@@ -602,9 +602,8 @@ impl TriangulationBlend {
 
     /// The surface as an atlas of its triangles (corners shared, so meshes weld).
     pub fn atlas(&self) -> TriangleAtlas<3> {
-        let charts = (0..self.data.triangles.len())
-            .map(|t| Arc::new(self.triangle(t)) as Arc<dyn Triangle<3>>)
-            .collect();
+        let charts =
+            (0..self.data.triangles.len()).map(|t| Arc::new(self.triangle(t)) as Arc<dyn Triangle<3>>).collect();
         TriangleAtlas::with_corner_ids(charts, self.data.triangles.clone())
             .expect("one corner triple per triangle")
             .with_enclosing_box(self.enclosing_box())
