@@ -20,6 +20,7 @@ pub mod subdivision_mesh;
 pub mod subdivision_surface;
 pub mod surface_mesh;
 pub mod svg;
+pub mod triangle_atlas_mesh;
 pub mod triangle_mesh;
 pub mod trimmed_mesh;
 

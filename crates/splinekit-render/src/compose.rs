@@ -257,8 +257,52 @@ fn decorate(decoration: Decoration<'_>, style: &StyleDoc, out: &mut RenderScene)
                 cage(vertices, faces, out);
             }
         }
+        Decoration::TriangularNet { points, .. } => {
+            if style.control_net {
+                triangular_net(points, out);
+            }
+        }
+        Decoration::LocalPieces(d) => {
+            if style.local_pieces {
+                let pieces = d.local_pieces()?;
+                let n = pieces.len();
+                for (k, (lines, origin)) in pieces.into_iter().enumerate() {
+                    let color = local_color(k, n);
+                    for line in lines {
+                        out.lines.push(LineItem {
+                            points: line.iter().map(|p| f32x3(*p)).collect(),
+                            closed: false,
+                            color,
+                            width: 1.0,
+                        });
+                    }
+                    out.points.push(PointItem { position: f32x3(origin), color, size: 6.0 });
+                }
+            }
+        }
     }
     Ok(())
+}
+
+/// A Bézier triangle's net (points b_ijk in storage order, row r = j + k holding r + 1
+/// points): the lines of constant i, of constant j and of constant k, with the points.
+fn triangular_net(points: &[Vec<f64>], out: &mut RenderScene) {
+    let at = |p: &Vec<f64>| [p[0] as f32, *p.get(1).unwrap_or(&0.0) as f32, *p.get(2).unwrap_or(&0.0) as f32];
+    let Ok(n) = splinekit::triangle::net::degree_of_len(points.len(), "control_points") else { return };
+    let index = |j: usize, k: usize| splinekit::triangle::net_index(j, k);
+    let mut push = |idx: Vec<usize>| {
+        if idx.len() > 1 {
+            let pts = idx.iter().map(|&i| at(&points[i])).collect();
+            out.lines.push(LineItem { points: pts, closed: false, color: NET, width: 1.5 });
+        }
+    };
+    for c in 0..n {
+        // i = c: j + k = n − c; j = c: i + k = n − c; k = c.
+        push((0..=n - c).map(|k| index(n - c - k, k)).collect());
+        push((0..=n - c).map(|k| index(c, k)).collect());
+        push((0..=n - c).map(|j| index(j, c)).collect());
+    }
+    out.points.extend(points.iter().map(|p| PointItem { position: at(p), color: [0.1, 0.1, 0.1, 1.0], size: 7.0 }));
 }
 
 /// The x (red), y (green) and z (blue) axes, 35 % of the scene's largest extent long.

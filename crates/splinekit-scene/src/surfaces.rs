@@ -17,6 +17,7 @@ mod nets;
 mod placed;
 mod sub_surface;
 mod subdivision;
+mod triangles;
 mod trimmed;
 
 use serde_json::Value;
@@ -32,6 +33,10 @@ pub use nets::{BSplineSurfaceDoc, BezierSurfaceDoc, NurbsSurfaceDoc};
 pub use placed::PlacedDoc;
 pub use sub_surface::SubSurfaceDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
+pub use triangles::{
+    BezierTriangleDoc, BlendingTriangulationDoc, GerbsTriangleDoc, InterpolantDoc, LocalPieces, MeshDoc,
+    SubTriangleDoc, TriangularFormDoc, TriangulationDoc, triangle_of,
+};
 pub use trimmed::TrimmedDoc;
 
 use crate::dimension::{AnyDimension, ShapeFamily};
@@ -139,6 +144,16 @@ macro_rules! surface_kinds {
                 SubdivisionSurface(SubdivisionSurfaceDoc) = "subdivision_surface", python(base),
                 /// Solids, shells and faces sharing their edges (a boundary representation).
                 Brep(BrepDoc) = "brep", python(base),
+                /// Bézier triangle (rational with weights).
+                BezierTriangle(BezierTriangleDoc) = "bezier_triangle", python(fields "BezierTriangle"),
+                /// The triangle S(u a + v b + w c) of a surface.
+                SubTriangle(SubTriangleDoc) = "sub_triangle", python(fields "SubTriangle"),
+                /// GERBS triangle: three framed local triangles blended by a triangular B-function.
+                GerbsTriangle(GerbsTriangleDoc) = "gerbs_triangle", python(fields "GerbsTriangle"),
+                /// Height field over a constrained Delaunay triangulation.
+                Triangulation(TriangulationDoc) = "triangulation", python(fields "Triangulation"),
+                /// Blending surface over a triangulated surface, one local per vertex.
+                BlendingTriangulation(BlendingTriangulationDoc) = "blending_triangulation", python(fields "BlendingTriangulation"),
             }
         }
     };
@@ -237,6 +252,11 @@ pub enum SurfaceForm<'a> {
     BlendingSpline(&'a BlendingSplineSurfaceDoc),
     /// A boundary representation: exporters write its faces with their shared edges.
     Brep(&'a BrepDoc),
+    /// Several triangles (an atlas of them, see
+    /// [`TriangleAtlas`](splinekit::triangle::TriangleAtlas)): exporters write one item
+    /// per triangle, a Bézier triangle exactly as its degenerate tensor patch, others within
+    /// a tolerance.
+    Triangles,
     /// No exact form: exporters approximate the surface within a tolerance.
     Approximate,
 }
@@ -260,4 +280,13 @@ pub enum SurfaceDecoration<'a> {
         /// The faces.
         faces: &'a [Vec<u32>],
     },
+    /// The triangular control net of a Bézier triangle, b_n00 first, then rows of falling i.
+    TriangularNet {
+        /// The points in storage order.
+        points: &'a [Vec<f64>],
+        /// The document field that holds them, for editors that move them.
+        field: &'static str,
+    },
+    /// The local pieces of a blending kind of the triangle family.
+    LocalPieces(&'a dyn LocalPieces),
 }

@@ -209,6 +209,10 @@ impl<const D: usize> BezierTriangle<D> {
 }
 
 impl<const D: usize> Triangle<D> for BezierTriangle<D> {
+    fn bezier_net(&self) -> Option<crate::triangle::traits::BezierNet<'_, D>> {
+        Some(crate::triangle::traits::BezierNet { points: self.net.points(), weights: None })
+    }
+
     /// De Casteljau with the λ-steps shared by every order (see the module documentation
     /// of [`super::net`]).
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {

@@ -10,7 +10,11 @@
 //! * [`SubTriangle`]: the triangle S(u a + v b + w c) of any [`Surface`](crate::surface::Surface);
 //! * [`TriangularBFunction`]: three blending weights made from a 1-D
 //!   [`BFunction`](crate::basis::BFunction), rational or not;
-//! * [`GerbsTriangle`]: three framed local triangles blended by them.
+//! * [`GerbsTriangle`]: three framed local triangles blended by them;
+//! * [`TriangulationBlend`]: a blending-spline surface over a whole triangulated surface,
+//!   one framed local per vertex, smooth across the edges;
+//! * [`TriangleAtlas`]: any of these seen as one [`Surface`](crate::surface::Surface) over
+//!   unit charts, for the tensor-product front ends.
 //!
 //! # Why a trait of its own, not `Surface<3>`
 //!
@@ -38,20 +42,26 @@
 //! [`FundamentalForms`](crate::surface::FundamentalForms), so the two families agree
 //! wherever both apply.
 
+pub mod atlas;
+mod atlas_surface;
 pub mod bezier_triangle;
 pub mod degenerate_patch;
 pub mod gerbs_triangle;
+pub mod jet;
 pub mod net;
 pub mod rational_bezier_triangle;
 pub mod sub_triangle;
 pub mod traits;
 pub mod triangular_bfunction;
+pub mod triangulation_blend;
 
+pub use atlas::TriangleAtlas;
 pub use bezier_triangle::BezierTriangle;
 pub use degenerate_patch::degenerate_patch_parameters;
 pub use gerbs_triangle::{GerbsTriangle, hermite_local};
 pub use net::{MAX_DEGREE, multi_indices, net_index, net_len};
 pub use rational_bezier_triangle::RationalBezierTriangle;
 pub use sub_triangle::SubTriangle;
-pub use traits::{Triangle, clamp_to_triangle};
+pub use traits::{BezierNet, Triangle, clamp_to_triangle};
 pub use triangular_bfunction::{TriangularBFunction, TriangularForm};
+pub use triangulation_blend::{BlendTriangle, TriangulatedSurface, TriangulationBlend};

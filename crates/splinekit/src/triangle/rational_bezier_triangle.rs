@@ -209,6 +209,10 @@ impl RationalBezierTriangle<3> {
 }
 
 impl<const D: usize> Triangle<D> for RationalBezierTriangle<D> {
+    fn bezier_net(&self) -> Option<crate::triangle::traits::BezierNet<'_, D>> {
+        Some(crate::triangle::traits::BezierNet { points: &self.points, weights: Some(&self.weights) })
+    }
+
     fn eval_partials(&self, u: f64, v: f64, du: usize, dv: usize, out: &mut [Point<D>]) {
         let (u, v) = clamp_uv(u, v);
         if du == 0 && dv == 0 {

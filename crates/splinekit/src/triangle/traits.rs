@@ -61,6 +61,16 @@ pub(crate) fn clamp_uv(u: f64, v: f64) -> (f64, f64) {
     if u >= 0.0 && v >= 0.0 && u + v <= 1.0 { (u, v) } else { clamp_to_triangle(u, v, 1.0 - u - v) }
 }
 
+/// The control net of a Bézier triangle, as [`Triangle::bezier_net`] gives it: the points
+/// in the storage order of [`net_index`](super::net_index), and the weights of a rational one.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BezierNet<'a, const D: usize> {
+    /// The (n+1)(n+2)/2 control points.
+    pub points: &'a [Point<D>],
+    /// One positive weight per point (rational triangles), or `None`.
+    pub weights: Option<&'a [f64]>,
+}
+
 /// A triangular parametric surface T(u, v, w), u + v + w = 1, u, v, w ≥ 0.
 ///
 /// Implementors provide [`Triangle::eval_partials`]; everything else is derived. Corner u
@@ -153,6 +163,12 @@ pub trait Triangle<const D: usize>: Send + Sync {
         FundamentalForms::from_partials(&o[3], &o[1], &o[6], &o[4], &o[2])
     }
 
+    /// The Bézier net where the triangle is a (rational) Bézier triangle, which exporters
+    /// write exactly; `None` (the default) for other kinds.
+    fn bezier_net(&self) -> Option<BezierNet<'_, D>> {
+        None
+    }
+
     /// Gaussian, mean and principal curvatures (ℝ³, regular points only); the mean
     /// curvature has the sign of [`Triangle::normal`]. Both are independent of the
     /// parametrisation, so they are those of the surface.
@@ -171,4 +187,5 @@ crate::curve::traits::forward_through_pointers!(Triangle {
     fn normal(&self, u: f64, v: f64, w: f64) -> Option<Point<D>>;
     fn fundamental_forms(&self, u: f64, v: f64, w: f64) -> Option<FundamentalForms>;
     fn curvatures(&self, u: f64, v: f64, w: f64) -> Option<Curvatures>;
+    fn bezier_net(&self) -> Option<BezierNet<'_, D>>;
 });
