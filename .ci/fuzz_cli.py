@@ -85,6 +85,9 @@ def curve(depth=0):
             n, order = random.choice([0, 2, 3, 4]), random.choice([1, 2, 3, 22])
             doc["knots"] = knots(n + random.choice([0, 0, 1]))
             doc["hermite"] = [pts(order + random.choice([0, 0, 0, 1]), d) for _ in range(n)]
+    if t == "curve_on_surface":
+        doc["curve"] = curve(2) if random.random() < 0.3 else {"type": "line", "from": pt(2), "to": pt(random.choice([2, 2, 3]))}
+        doc["surface"] = surface(1) if depth < 1 and random.random() < 0.3 else {"type": random.choice(["torus", "plane", "sphere", "dini_surface"])}
     if random.random() < 0.05: doc["bogus"] = 1
     return doc
 def surface(depth=0):

@@ -4,6 +4,7 @@
 pub(crate) mod axes;
 pub mod bezier_surface;
 pub mod bspline_surface;
+pub mod curve_on_surface;
 pub mod derived;
 pub mod iso_curve;
 pub mod loft;
@@ -25,6 +26,7 @@ pub use crate::query::extent::SurfaceExtent;
 pub use crate::query::project_surface::SurfaceNearest;
 pub use bezier_surface::BezierSurface;
 pub use bspline_surface::BSplineSurface;
+pub use curve_on_surface::CurveOnSurface;
 pub use derived::QuadSubSurface;
 pub use iso_curve::{Direction, IsoCurve};
 pub use nurbs_surface::NurbsSurface;
