@@ -3,6 +3,7 @@
 
 pub(crate) mod axes;
 pub mod bezier_surface;
+pub mod bicubic_hermite;
 pub mod bspline_surface;
 pub mod curve_on_surface;
 pub mod derived;
@@ -25,6 +26,7 @@ pub mod wrapped;
 pub use crate::query::extent::SurfaceExtent;
 pub use crate::query::project_surface::SurfaceNearest;
 pub use bezier_surface::BezierSurface;
+pub use bicubic_hermite::HermiteCorner;
 pub use bspline_surface::BSplineSurface;
 pub use curve_on_surface::CurveOnSurface;
 pub use derived::QuadSubSurface;
