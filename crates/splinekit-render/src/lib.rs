@@ -11,6 +11,7 @@
 pub mod backends;
 pub mod camera;
 pub mod compose;
+pub mod fields;
 pub mod geometry;
 pub mod gltf_export;
 pub mod image;
