@@ -336,6 +336,10 @@ pub struct SceneObject {
     pub style: StyleDoc,
     /// Extra points to mark (e.g. data points), drawn as discs in the object's colour.
     pub points: Vec<[f64; 3]>,
+    /// `"model_of": k`: a blending spline whose model is object k's shape, a live link
+    /// that [`SceneDocument::resolve_models`] follows (the shape's `model` is then a copy
+    /// of object k's shape, made again whenever the scene is read or edited).
+    pub model_of: Option<usize>,
 }
 
 impl SceneObject {
@@ -345,6 +349,28 @@ impl SceneObject {
             return Err(DocumentError::new("", format!("expected an object with a \"shape\", got {}", kind(&value))));
         };
         let shape = style.remove("shape").ok_or_else(|| DocumentError::new("", "missing field `shape`"))?;
+        let model_of = match style.remove("model_of") {
+            None | Some(Value::Null) => None,
+            Some(v) => Some(v.as_u64().and_then(|k| usize::try_from(k).ok()).ok_or_else(|| {
+                DocumentError::new("model_of", format!("expected the index of an object of the scene, got {v}"))
+            })?),
+        };
+        // A linked model is filled in by the scene (`SceneDocument::resolve_models`); until
+        // then a stand-in of the family keeps the shape readable.
+        let mut shape = shape;
+        if model_of.is_some()
+            && let Some(fields) = shape.as_object_mut()
+            && !fields.contains_key("model")
+        {
+            let stand_in = match fields.get("type").and_then(Value::as_str) {
+                Some("blending_spline") => Some(serde_json::json!({"type": "circle"})),
+                Some("blending_spline_surface") => Some(serde_json::json!({"type": "torus"})),
+                _ => None,
+            };
+            if let Some(m) = stand_in {
+                fields.insert("model".into(), m);
+            }
+        }
         let points: Vec<Vec<f64>> = match style.remove("points") {
             Some(p) => fields(p).map_err(|e| e.within("points"))?,
             None => Vec::new(),
@@ -362,7 +388,7 @@ impl SceneObject {
                 Ok([p[0], p[1], p.get(2).copied().unwrap_or(0.0)])
             })
             .collect::<Result<_>>()?;
-        Ok(SceneObject { shape, style, points })
+        Ok(SceneObject { shape, style, points, model_of })
     }
 }
 
@@ -380,6 +406,9 @@ impl SceneObject {
         doc.insert("shape".into(), shape);
         if !self.points.is_empty() {
             doc.insert("points".into(), serde_json::json!(self.points));
+        }
+        if let Some(k) = self.model_of {
+            doc.insert("model_of".into(), k.into());
         }
         Value::Object(doc)
     }
@@ -539,9 +568,93 @@ impl SceneDocument {
         if ty != "scene" {
             return Err(DocumentError::new("type", format!("expected \"scene\", got \"{ty}\"")));
         }
-        let scene: SceneDocument = fields(rest)?;
+        let mut scene: SceneDocument = fields(rest)?;
         scene.check()?;
+        scene.resolve_models()?;
         Ok(scene)
+    }
+
+    /// Follows the live links: every object with `model_of: k` gets object k's shape (as
+    /// it is now, itself resolved first) as its `model`. Object k must be another object of
+    /// the scene, of the family the blending spline blends (a curve for `blending_spline`,
+    /// a surface for `blending_spline_surface`), and the links must not run in a circle;
+    /// errors name `objects[i].model_of`. Reading a scene resolves it; the studio resolves
+    /// it again after every edit, so the blending spline follows its model's edits.
+    pub fn resolve_models(&mut self) -> Result<()> {
+        let n = self.objects.len();
+        // Depth-first from each linked object, models before the objects that take them.
+        let mut order = Vec::new();
+        let mut state = vec![0u8; n]; // 0 new, 1 on the path, 2 done
+        for start in 0..n {
+            let mut path = vec![start];
+            while let Some(&i) = path.last() {
+                if state[i] == 2 {
+                    path.pop();
+                    continue;
+                }
+                let field = format!("objects[{i}].model_of");
+                match self.objects[i].model_of {
+                    Some(k) if k >= n || k == i => {
+                        let why = if k == i {
+                            "an object cannot be its own model".to_string()
+                        } else {
+                            format!("the scene has {n} objects")
+                        };
+                        return Err(DocumentError::new(field, format!("{k}: {why}")));
+                    }
+                    Some(k) if state[k] == 1 => {
+                        return Err(DocumentError::new(
+                            field,
+                            format!("the models run in a circle through objects {i} and {k}"),
+                        ));
+                    }
+                    Some(k) if state[k] == 0 => {
+                        state[i] = 1;
+                        path.push(k);
+                    }
+                    _ => {
+                        state[i] = 2;
+                        order.push(i);
+                        path.pop();
+                    }
+                }
+            }
+        }
+        for i in order {
+            let Some(k) = self.objects[i].model_of else { continue };
+            let model = self.objects[k].shape.clone();
+            let field = || format!("objects[{i}].model_of");
+            match (&mut self.objects[i].shape, model) {
+                (ShapeDocument::Curve(crate::curves::CurveDocument::BlendingSpline(d)), ShapeDocument::Curve(c)) => {
+                    d.model = Some(Box::new(c));
+                }
+                (
+                    ShapeDocument::Surface(crate::surfaces::SurfaceDocument::BlendingSplineSurface(d)),
+                    ShapeDocument::Surface(m),
+                ) => {
+                    d.model = Some(Box::new(m));
+                }
+                (ShapeDocument::Curve(crate::curves::CurveDocument::BlendingSpline(_)), _) => {
+                    return Err(DocumentError::new(
+                        field(),
+                        format!("object {k} is a surface; a blending_spline takes a curve"),
+                    ));
+                }
+                (ShapeDocument::Surface(crate::surfaces::SurfaceDocument::BlendingSplineSurface(_)), _) => {
+                    return Err(DocumentError::new(
+                        field(),
+                        format!("object {k} is a curve; a blending_spline_surface takes a surface"),
+                    ));
+                }
+                _ => {
+                    return Err(DocumentError::new(
+                        field(),
+                        "only a blending_spline or blending_spline_surface takes its model from another object",
+                    ));
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Checks the ranges serde does not: at least one object, at most two lights, sizes,
@@ -603,7 +716,7 @@ impl SceneDocument {
     /// A scene of one shape with the default style.
     pub fn of_shape(shape: ShapeDocument) -> Self {
         SceneDocument {
-            objects: vec![SceneObject { shape, style: StyleDoc::default(), points: Vec::new() }],
+            objects: vec![SceneObject { shape, style: StyleDoc::default(), points: Vec::new(), model_of: None }],
             camera: None,
             lights: Vec::new(),
             background: white(),
@@ -616,7 +729,20 @@ impl SceneDocument {
     /// The scene as a JSON document that [`SceneDocument::from_value`] reads back to an
     /// equal scene: each object's shape under `shape`, its style fields and `points` beside it.
     pub fn to_value(&self) -> Value {
-        let objects: Vec<Value> = self.objects.iter().map(SceneObject::to_value).collect();
+        // A linked model is written as the link alone (`model_of`), not as its copy.
+        let objects: Vec<Value> = self
+            .objects
+            .iter()
+            .map(|o| {
+                let mut v = o.to_value();
+                if o.model_of.is_some()
+                    && let Some(shape) = v.get_mut("shape").and_then(Value::as_object_mut)
+                {
+                    shape.remove("model");
+                }
+                v
+            })
+            .collect();
         let mut doc = serde_json::Map::new();
         doc.insert("type".into(), "scene".into());
         doc.insert("objects".into(), objects.into());

@@ -14,7 +14,7 @@ use splinekit_scene::{Curves, Decoration, DimensionVisitor, ShapeDocument};
 use super::context::PanelContext;
 use super::fields::{count, error_label, number, read, toggle, write};
 use super::knots::{CURVE, NET_U, NET_V, knot_style};
-use super::plot::bfunction_plot;
+use super::plot::{bfunction_plot, blending_basis_plot};
 use crate::actions::{ACTIONS, Action};
 use crate::command::Command;
 use crate::knot_edit::KnotTool;
@@ -359,9 +359,24 @@ fn bfunction(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
         .and_then(|v| BFunctionDoc::from_value(v).ok())
         .and_then(|d| d.build().ok())
     {
-        ui.label("B (text colour) and B' (orange):");
+        ui.label("B (text colour), B' (orange) and B'' (blue):");
         bfunction_plot(ui, &b, egui::vec2(200.0, 90.0));
+        if let Some(knots) = curve_knots(cx, object) {
+            ui.label("the blending basis of the knots:");
+            blending_basis_plot(ui, &b, &knots, egui::vec2(200.0, 70.0));
+        }
     }
+}
+
+/// The knots of a blending curve: its `knots`, else 0, 1, …, n (n local curves, one knot
+/// more when closed) standing in for its even knots over the model's domain.
+fn curve_knots(cx: &PanelContext<'_>, object: usize) -> Option<Vec<f64>> {
+    if let Some(k) = read(cx, object, "/shape/knots").and_then(|v| serde_json::from_value::<Vec<f64>>(v).ok()) {
+        return Some(k);
+    }
+    let n = read(cx, object, "/shape/local_curves")?.as_u64()? as usize;
+    let closed = read(cx, object, "/shape/closed").and_then(|v| v.as_bool()).unwrap_or(false);
+    (2..=4096).contains(&n).then(|| (0..n + usize::from(closed)).map(|i| i as f64).collect())
 }
 
 /// The selected handle's value for exact entry (translation of a local piece, or the
