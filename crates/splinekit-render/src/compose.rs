@@ -378,7 +378,7 @@ impl DimensionVisitor<Curves> for CurveLine<'_> {
         };
         let mut lines = Vec::new();
         if let Some(a) = &self.obj.style.arrows {
-            let size = fields::box_diagonal(poly.points.iter().map(|p| to3(p)));
+            let size = fields::box_diagonal(poly.points.iter().map(to3));
             lines = fields::curve_arrows(c, a, size, arrow_color(self.color));
         }
         lines.insert(

@@ -212,7 +212,7 @@ fn arrows_of(samples: Vec<([f64; 3], [f64; 3], [f64; 3])>, unit: bool, length: f
     let mut out = Vec::new();
     for (foot, v, side) in samples {
         let n = norm(&v);
-        if !(n.is_finite() && n > 1e-12 * longest.max(1e-300)) || !foot.iter().all(|x| x.is_finite()) {
+        if !(n.is_finite() && n > 1e-12 * longest.max(1e-300) && foot.iter().all(|x| x.is_finite())) {
             continue;
         }
         let scale = if unit { length / n } else { length / longest };

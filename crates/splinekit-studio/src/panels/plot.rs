@@ -57,7 +57,7 @@ pub fn bfunction_plot(ui: &mut egui::Ui, b: &BFunction, size: egui::Vec2) {
 pub fn blending_basis_plot(ui: &mut egui::Ui, b: &BFunction, knots: &[f64], size: egui::Vec2) {
     let (painter, at) = frame(ui, size);
     let n = knots.len();
-    if n < 2 || !(knots[n - 1] > knots[0]) {
+    if n < 2 || knots.iter().any(|k| !k.is_finite()) || knots[n - 1] <= knots[0] {
         return;
     }
     let (a, span) = (knots[0], knots[n - 1] - knots[0]);
