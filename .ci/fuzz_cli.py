@@ -85,6 +85,9 @@ def curve(depth=0):
             n, order = random.choice([0, 2, 3, 4]), random.choice([1, 2, 3, 22])
             doc["knots"] = knots(n + random.choice([0, 0, 1]))
             doc["hermite"] = [pts(order + random.choice([0, 0, 0, 1]), d) for _ in range(n)]
+    if t == "curve_on_surface":
+        doc["curve"] = curve(2) if random.random() < 0.3 else {"type": "line", "from": pt(2), "to": pt(random.choice([2, 2, 3]))}
+        doc["surface"] = surface(1) if depth < 1 and random.random() < 0.3 else {"type": random.choice(["torus", "plane", "sphere", "dini_surface"])}
     if random.random() < 0.05: doc["bogus"] = 1
     return doc
 def surface(depth=0):
@@ -170,6 +173,18 @@ def surface(depth=0):
         if random.random() < 0.3: doc["degree"] = random.choice([1, 2, 0, 3])
         if random.random() < 0.3: doc["transforms"] = random.choice([{"1": {"scale": num()}}, {"500": {}}, [{"translate": pt(3)}]])
         if random.random() < 0.3: doc["animation"] = animation(random.choice([0, 3, 999]))
+    if t == "bicubic_hermite":
+        dim = random.choice([2, 3, 3])
+        corner = lambda: [[pt(dim), pt(dim)], [pt(dim), pt(dim if random.random() > 0.05 else dim + 1)]]
+        doc["hermite"] = random.choice([[[corner(), corner()], [corner(), corner()]], [[corner(), corner()]], [[corner()], [corner(), corner()]], [], 3])
+    if t == "hermite_curve_surface":
+        for f in ("bottom", "top", "bottom_derivative", "top_derivative"):
+            if random.random() < 0.9: doc[f] = curve(1) if random.random() < 0.5 else {"type": random.choice(["line", "circle"]), "from": pt(3), "to": pt(3)} if random.random() < 0.5 else {"type": "circle"}
+    if t == "loft":
+        doc["sections"] = random.choice([[curve(1) for _ in range(random.choice([0, 1, 2, 3, 5]))], [{"type": "circle", "radius": random.choice([1, 2, 0])} for _ in range(3)], 4])
+        if random.random() < 0.5: doc["cross"] = random.choice(["bezier", "bspline", "nurbs", 1])
+        if random.random() < 0.4: doc["degree_v"] = random.choice([0, 1, 2, 3, 9, -1, 1e9])
+        if random.random() < 0.4: doc["parameters"] = random.choice(["uniform", "chord_length", "centripetal", "arc", [0, 1], [0, 1, 2], [2, 1, 0], [0, 0, 0], [1e300, 1e301, 1e302], 5])
     if t == "trimmed": doc.update(surface={"type":"plane"} if random.random()<0.5 else surface(1) if depth < 1 else {"type":"sphere"}, outer=curve(1))
     return doc
 bad = 0

@@ -12,6 +12,7 @@
 mod blending;
 mod brep;
 mod from_curves;
+mod hermite;
 mod models;
 mod nets;
 mod placed;
@@ -25,7 +26,11 @@ use splinekit::surface::Surface;
 
 pub use blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 pub use brep::{BrepDoc, BrepEdgeDoc, BrepFaceDoc, BrepShellDoc, BrepSolidDoc, BrepUseDoc};
-pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, RuledDoc, SweepDoc};
+pub use from_curves::{
+    CoonsBlendDoc, CoonsDoc, ExtrusionDoc, HermiteCurveSurfaceDoc, LoftCrossDoc, LoftDoc, LoftParametersDoc,
+    RevolutionDoc, RuledDoc, SweepDoc,
+};
+pub use hermite::BicubicHermiteDoc;
 // Every document that `models.rs` declares, so that a model kind is its declaration and
 // its line in the list below.
 pub use models::*;
@@ -132,6 +137,12 @@ macro_rules! surface_kinds {
                 Coons(CoonsDoc) = "coons", python(base),
                 /// Sweep of a profile along a path.
                 Sweep(SweepDoc) = "sweep", python(base),
+                /// Bicubic patch of corner positions, partials and twists.
+                BicubicHermite(BicubicHermiteDoc) = "bicubic_hermite", python(base),
+                /// Hermite surface of two boundary and two cross-derivative curves.
+                HermiteCurveSurface(HermiteCurveSurfaceDoc) = "hermite_curve_surface", python(base),
+                /// Loft (skinning) through section curves.
+                Loft(LoftDoc) = "loft", python(base),
                 /// Trimmed surface.
                 Trimmed(TrimmedDoc) = "trimmed", python(base),
                 /// A surface moved rigidly into a frame.
