@@ -85,6 +85,9 @@ def curve(depth=0):
             n, order = random.choice([0, 2, 3, 4]), random.choice([1, 2, 3, 22])
             doc["knots"] = knots(n + random.choice([0, 0, 1]))
             doc["hermite"] = [pts(order + random.choice([0, 0, 0, 1]), d) for _ in range(n)]
+    if t == "curve_on_surface":
+        doc["curve"] = curve(2) if random.random() < 0.3 else {"type": "line", "from": pt(2), "to": pt(random.choice([2, 2, 3]))}
+        doc["surface"] = surface(1) if depth < 1 and random.random() < 0.3 else {"type": random.choice(["torus", "plane", "sphere", "dini_surface"])}
     if random.random() < 0.05: doc["bogus"] = 1
     return doc
 def surface(depth=0):
@@ -138,6 +141,50 @@ def surface(depth=0):
     if t == "sub_surface":
         doc["surface"] = surface(1) if depth < 1 and random.random() < 0.5 else {"type": random.choice(["torus", "plane", "sphere"])}
         doc["corners"] = random.choice([[pt(2) for _ in range(4)], [[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 0], [1, 1], [1, 0], [0, 1]], [pt(2)], 5])
+    if t == "bezier_triangle":
+        doc["control_points"] = pts(random.choice([0, 1, 2, 3, 6, 10, 15]), d)
+        if random.random() < 0.3: doc["weights"] = [random.choice([1, 0.5, 0, -1, 2]) for _ in range(random.choice([3, 6, 10]))]
+        if random.random() < 0.2: doc["degree"] = random.choice([0, 1, 2, 3, 31, 10**12])
+    if t == "sub_triangle":
+        doc.update(surface=surface(1) if depth < 1 and random.random() < 0.3 else {"type": random.choice(["sphere", "torus", "plane"])},
+                   corners=random.choice([[pt(2), pt(2), pt(2)], [[0, 0], [1, 0], [0, 1]], [[0, 0], [0, 0], [1, 1]], [pt(2)], 3]))
+    if t == "gerbs_triangle":
+        tri = {"type": "sub_triangle", "surface": {"type": "sphere"}, "corners": [[0.2, 0.1], [1, 0.2], [0.5, 0.9]]}
+        if random.random() < 0.5: doc.update(model=random.choice([tri, surface(1) if depth < 1 else tri]), degree=random.choice([1, 3, 0, 31]))
+        else: doc["locals"] = random.choice([[tri, tri, tri], [tri], [surface(1) if depth < 1 else tri] * 3])
+        if random.random() < 0.3: doc["form"] = random.choice(["rational", "non_rational", "x"])
+        if random.random() < 0.3: doc["bfunction"] = random.choice([{"type": "erbs"}, {"type": "beta", "a": 1, "b": 3}, {"type": "linear"}, {"type": "polynomial", "smoothness": 0}])
+        if random.random() < 0.3: doc["transforms"] = random.choice([{"1": {"scale": num()}}, [{}, {"translate": pt(3)}], {"7": {}}])
+        if random.random() < 0.3: doc["animation"] = animation(random.choice([0, 2, 9]))
+    if t == "triangulation":
+        n = random.choice([0, 2, 3, 5, 12])
+        doc["points"] = pts(n, random.choice([2, 3, 3]))
+        if random.random() < 0.4: doc["heights"] = [num() for _ in range(random.choice([n, n + 1]))]
+        if random.random() < 0.3: doc["edges"] = [[random.choice([0, 1, 4, 99]), random.choice([0, 2, 3])]]
+        if random.random() < 0.5: doc["interpolant"] = random.choice(["linear", "clough_tocher", "sibson"])
+        if random.random() < 0.3: doc["normals"] = pts(random.choice([n, 1]), 3)
+    if t == "blending_triangulation":
+        doc["mesh"] = random.choice([
+            {"type": "icosphere", "radius": num(), "subdivisions": random.choice([0, 1, 2, 40])},
+            {"type": "torus", "segments": random.choice([[6, 4], [2, 9], [10**6, 10**6]])},
+            {"type": "points", "vertices": pts(random.choice([0, 3, 6, 9]), 3)},
+            {"type": "points", "vertices": pts(4, 3), "triangles": [[0, 1, 2], [random.choice([0, 2, 9]), 1, 3]], "normals": pts(random.choice([4, 2]), 3)},
+            {"type": "cube"}])
+        if random.random() < 0.3: doc["degree"] = random.choice([1, 2, 0, 3])
+        if random.random() < 0.3: doc["transforms"] = random.choice([{"1": {"scale": num()}}, {"500": {}}, [{"translate": pt(3)}]])
+        if random.random() < 0.3: doc["animation"] = animation(random.choice([0, 3, 999]))
+    if t == "bicubic_hermite":
+        dim = random.choice([2, 3, 3])
+        corner = lambda: [[pt(dim), pt(dim)], [pt(dim), pt(dim if random.random() > 0.05 else dim + 1)]]
+        doc["hermite"] = random.choice([[[corner(), corner()], [corner(), corner()]], [[corner(), corner()]], [[corner()], [corner(), corner()]], [], 3])
+    if t == "hermite_curve_surface":
+        for f in ("bottom", "top", "bottom_derivative", "top_derivative"):
+            if random.random() < 0.9: doc[f] = curve(1) if random.random() < 0.5 else {"type": random.choice(["line", "circle"]), "from": pt(3), "to": pt(3)} if random.random() < 0.5 else {"type": "circle"}
+    if t == "loft":
+        doc["sections"] = random.choice([[curve(1) for _ in range(random.choice([0, 1, 2, 3, 5]))], [{"type": "circle", "radius": random.choice([1, 2, 0])} for _ in range(3)], 4])
+        if random.random() < 0.5: doc["cross"] = random.choice(["bezier", "bspline", "nurbs", 1])
+        if random.random() < 0.4: doc["degree_v"] = random.choice([0, 1, 2, 3, 9, -1, 1e9])
+        if random.random() < 0.4: doc["parameters"] = random.choice(["uniform", "chord_length", "centripetal", "arc", [0, 1], [0, 1, 2], [2, 1, 0], [0, 0, 0], [1e300, 1e301, 1e302], 5])
     if t == "trimmed": doc.update(surface={"type":"plane"} if random.random()<0.5 else surface(1) if depth < 1 else {"type":"sphere"}, outer=curve(1))
     return doc
 bad = 0
@@ -148,7 +195,7 @@ for i in range(int(sys.argv[3]) if len(sys.argv) > 3 else 400):
     if random.random() < 0.05: text = text[:random.randint(0, len(text))]
     k = str(random.choice([0,1,2,3,64,65]))
     args = random.choice([
-        ["eval", "-", "--at", random.choice(["0.5", "0:0.5", "0.1,0.9", "nan", "-1", "1e308", "0.5:1e-320"]), "--derivatives", k],
+        ["eval", "-", "--at", random.choice(["0.5", "0:0.5", "0.1,0.9", "nan", "-1", "1e308", "0.5:1e-320", "0:0.2:0.3", "1:1:0:0", "0:0.5:0.6", "2.5:0.1:0.1", "0:0.1:0.1,0.2:0.3"]), "--derivatives", k],
         ["eval", "-", "--samples", random.choice(["1","5","0","100"])],
         ["eval", "-", "--grid", "4,4", "--time", random.choice(["0.25", "-3", "nan", "x", "1e308"])],
         ["eval", "-", "--samples", "7", "--time", random.choice(["0.25", "1e300", "inf"])],

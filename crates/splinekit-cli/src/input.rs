@@ -46,10 +46,50 @@ pub fn document_folder(path: &str) -> std::path::PathBuf {
 }
 
 /// Reads and parses a shape or scene document (`what` names the input in errors), reading
-/// the cage files of subdivision surfaces relative to its folder.
+/// the cage files of subdivision surfaces relative to its folder; a STEP file (by its
+/// extension, `.step` or `.stp`) is read as the documents of its objects
+/// ([`read_step_document`]).
 pub fn read_document(path: &str, what: &str) -> Result<splinekit_scene::SceneOrShape> {
+    if is_step(path) {
+        return read_step_document(path, what);
+    }
     let text = read_text(path, what)?;
     Ok(splinekit_scene::SceneOrShape::from_json_in(&text, &document_folder(path))?)
+}
+
+/// Whether the path names a STEP file (`.step`, `.stp`, any case).
+pub fn is_step(path: &str) -> bool {
+    let lower = path.to_ascii_lowercase();
+    lower.ends_with(".step") || lower.ends_with(".stp")
+}
+
+/// A STEP file's objects as documents: its one object as a shape, several as a scene of
+/// them (solids and shells as `brep` documents; see `splinekit_step::documents`). What it
+/// does not convert is listed on standard error, one warning a kind, as `convert` does.
+pub fn read_step_document(path: &str, what: &str) -> Result<splinekit_scene::SceneOrShape> {
+    use splinekit_scene::{SceneDocument, SceneObject, SceneOrShape};
+    let file = if path == "-" {
+        splinekit_step::part21::StepFile::from_reader(std::io::stdin().lock())
+    } else {
+        splinekit_step::part21::StepFile::open(std::path::Path::new(path))
+    }
+    .map_err(|e| anyhow!("{what}: {e}"))?;
+    let imported = splinekit_step::documents::import_items(&file).map_err(|e| anyhow!("{what}: {e}"))?;
+    for (name, count) in &imported.not_understood {
+        eprintln!("warning: {count} × {name} not converted (no splinekit equivalent yet)");
+    }
+    let mut shapes = imported.items.into_iter().map(|i| i.document);
+    let Some(first) = shapes.next() else {
+        bail!("{what}: the file holds no curve or surface that splinekit reads");
+    };
+    let rest: Vec<ShapeDocument> = shapes.collect();
+    if rest.is_empty() {
+        return Ok(SceneOrShape::Shape(first));
+    }
+    let mut scene = SceneDocument::of_shape(first);
+    let template = scene.objects[0].clone();
+    scene.objects.extend(rest.into_iter().map(|shape| SceneObject { shape, ..template.clone() }));
+    Ok(SceneOrShape::Scene(scene))
 }
 
 /// Reads and parses a shape document; a scene is refused with its object count, for the

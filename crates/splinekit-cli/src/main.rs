@@ -52,6 +52,9 @@ enum Command {
     Offset(commands::offset::OffsetArgs),
     /// Nearest point of a curve or surface to given points, or every local minimum.
     Project(commands::project::ProjectArgs),
+    /// Topology, area and volume of a solid or surface (exact over its trimmed faces, and
+    /// from its watertight mesh, with the mesh's open edges).
+    Measure(commands::measure::MeasureArgs),
     /// Plane sections (contours) of a surface.
     Section(commands::section::SectionArgs),
     /// Knot insertion, degree elevation or knot removal; the curve stays the same.
@@ -127,6 +130,7 @@ fn main() {
         Command::Intersect(a) => commands::intersect::run(a),
         Command::Offset(a) => commands::offset::run(a),
         Command::Project(a) => commands::project::run(a),
+        Command::Measure(a) => commands::measure::run(a),
         Command::Refine(a) => commands::refine::run(a),
         Command::Section(a) => commands::section::run(a),
         Command::Subdivide(a) => commands::subdivide::run(a),

@@ -50,8 +50,15 @@ pub fn adaptive_with_limit<const D: usize, S: Surface<D> + ?Sized>(
             format!("must be positive and finite, got {}", tolerance.chord_height),
         ));
     }
+    if let Some(atlas) = surface.triangle_atlas() {
+        let most = max_leaves.saturating_mul(2);
+        return crate::triangle_atlas_mesh::within_tolerance(atlas, tolerance.chord_height, most, options);
+    }
     if let Some(s) = surface.subdivision() {
         return Ok(crate::subdivision_mesh::within_tolerance(s, tolerance.chord_height, max_leaves)?.0);
+    }
+    if let Some(b) = surface.brep() {
+        return crate::brep_mesh::brep_mesh(b, tolerance.chord_height);
     }
     if tolerance.normal_angle.is_nan()
         || tolerance.normal_angle <= 0.0

@@ -9,6 +9,7 @@
 
 pub mod adaptive_mesh;
 pub mod boundary_gluing;
+pub mod brep_mesh;
 pub mod doo_sabin_limit;
 pub mod export;
 pub mod limit_mesh;
@@ -19,6 +20,7 @@ pub mod subdivision_mesh;
 pub mod subdivision_surface;
 pub mod surface_mesh;
 pub mod svg;
+pub mod triangle_atlas_mesh;
 pub mod triangle_mesh;
 pub mod trimmed_mesh;
 

@@ -10,7 +10,8 @@
 //! outward). Trimmed surfaces are triangulated in the parameter plane with their trimming
 //! loops as constraints ([`crate::trimmed_mesh`]); adaptive meshes are in
 //! [`crate::adaptive_mesh`]; subdivision limits are meshed by subdividing their cage
-//! ([`crate::subdivision_mesh`]).
+//! ([`crate::subdivision_mesh`]); triangles on their own barycentric lattices
+//! ([`crate::triangle_atlas_mesh`]).
 
 use splinekit::surface::Surface;
 use splinekit::{Error, Point, Result};
@@ -36,8 +37,15 @@ pub fn regular<const D: usize, S: Surface<D> + ?Sized>(
             format!("need 1 to {MAX_VERTICES} vertices with at least one cell each way, got {nu}×{nv} cells"),
         ));
     }
+    if let Some(b) = surface.brep() {
+        return crate::brep_mesh::brep_mesh(b, crate::brep_mesh::tolerance_for_density(b, nu.max(nv)));
+    }
     if let Some(loops) = surface.trim_loops() {
         return crate::trimmed_mesh::trimmed(surface, &loops, nu.max(nv), options);
+    }
+    if let Some(atlas) = surface.triangle_atlas() {
+        let level = crate::triangle_atlas_mesh::level_for_density(nu, nv, atlas.charts().len());
+        return crate::triangle_atlas_mesh::uniform(atlas, level, options);
     }
     if let Some(s) = surface.subdivision() {
         let steps = crate::subdivision_mesh::steps_for_density(s, nu.max(nv));

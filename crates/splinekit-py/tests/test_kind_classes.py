@@ -43,3 +43,28 @@ def test_other_kinds_keep_their_classes():
     assert type(sk.load({"type": "bezier", "control_points": [[0, 0], [1, 1]]})) is sk.Bezier
     net = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]
     assert type(sk.load({"type": "bezier_surface", "control_points": net})) is sk.BezierSurface
+
+
+def test_triangle_kinds_are_classes_made_from_their_fields():
+    # A flat Bézier triangle: its atlas chart (s, t) is (u, v, w) = (s(1 − t), s t, 1 − s).
+    t = sk.BezierTriangle(control_points=[[1, 0, 0], [0, 1, 0], [0, 0, 0]])
+    assert type(t) is sk.BezierTriangle and t.kind == "bezier_triangle"
+    np.testing.assert_allclose(t(0.5, 0.25), [0.375, 0.125, 0.0], atol=1e-15)
+    back = pickle.loads(pickle.dumps(t))
+    assert type(back) is sk.BezierTriangle
+    with pytest.raises(ValueError, match="control_points"):
+        sk.BezierTriangle(control_points=[[0, 0, 0]] * 4)
+    # A triangle of the unit sphere stays on it.
+    s = sk.SubTriangle(surface={"type": "sphere"}, corners=[[0.3, 0.2], [1.4, 0.3], [0.8, 1.1]])
+    np.testing.assert_allclose(np.linalg.norm(s(0.4, 0.6)), 1.0, atol=1e-14)
+    g = sk.GerbsTriangle(model=s.to_dict(), degree=3)
+    assert type(g) is sk.GerbsTriangle
+    # At its corner w (s = 0) the GERBS triangle has the model's value.
+    np.testing.assert_allclose(g(0.0, 0.5), s(0.0, 0.5), atol=1e-14)
+    h = sk.Triangulation(points=[[0, 0, 1], [1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0]])
+    assert type(h) is sk.Triangulation
+    # The pyramid's first triangle at its corner w: a vertex with its height.
+    assert h(0.0, 0.0)[2] in (0.0, 1.0)
+    b = sk.BlendingTriangulation(mesh={"type": "icosphere", "subdivisions": 1})
+    assert type(b) is sk.BlendingTriangulation
+    assert b.tessellate(tolerance=1e-2).faces.shape[1] == 3

@@ -9,10 +9,11 @@ use splinekit::surface::Surface;
 use splinekit_mesh::surface_mesh::{regular, to3};
 use splinekit_mesh::{MeshOptions, Polyline};
 use splinekit_scene::blending::BlendingSplineSurfaceDoc;
-use splinekit_scene::scenes::{CameraDoc, ColorMapDoc, SceneDocument, SceneObject, StyleDoc};
+use splinekit_scene::scenes::{ArrowFieldDoc, CameraDoc, ColorMapDoc, SceneDocument, SceneObject, StyleDoc};
 use splinekit_scene::{Curves, Decoration, DimensionVisitor, DocumentError, DocumentKind, ShapeDocument, Surfaces};
 
 use crate::camera::Camera;
+use crate::fields;
 use crate::scene::{LineItem, MeshItem, ObjectItems, PointItem, RenderScene};
 
 /// Colours given to objects without one (sRGB).
@@ -182,6 +183,8 @@ fn object(
         shape.set_time(t);
     }
     let within = |e: DocumentError| e.within(field);
+    check_style(&obj.style, matches!(shape, ShapeDocument::Surface(_)))
+        .map_err(|e| e.within(field.strip_suffix(".shape").unwrap_or(field)))?;
     match &shape {
         ShapeDocument::Curve(c) => {
             if let Decoration::LocalCurves(d) = c.decoration() {
@@ -193,7 +196,7 @@ fn object(
                             local_curves(&curve, &obj.style, out);
                         }
                         if !obj.style.hidden {
-                            out.lines.push(CurveLine { obj, color }.visit::<$dim>(&curve)?);
+                            out.lines.extend(CurveLine { obj, color }.visit::<$dim>(&curve)?);
                         }
                         return Ok($dim <= 2);
                     }};
@@ -210,7 +213,7 @@ fn object(
             let curve = c.build().map_err(within)?;
             decorate(c.decoration(), &obj.style, out).map_err(within)?;
             if !obj.style.hidden {
-                out.lines.push(curve.visit(CurveLine { obj, color })?);
+                out.lines.extend(curve.visit(CurveLine { obj, color })?);
             }
             Ok(curve.dimension() <= 2)
         }
@@ -229,6 +232,39 @@ fn object(
             Ok(false)
         }
     }
+}
+
+/// Refuses a colour map or arrows the shape has not (a surface's curvatures on a curve, a
+/// curve's torsion on a surface), naming them and what the shape takes.
+fn check_style(style: &StyleDoc, surface: bool) -> Result<(), DocumentError> {
+    let what = if surface { "surfaces" } else { "curves" };
+    if let Some(m) = style.color_map
+        && !(if surface { m.for_surfaces() } else { m.for_curves() })
+    {
+        return Err(DocumentError::new(
+            "color_map",
+            format!("\"{}\" does not colour {what}, which take {}", m.name(), ColorMapDoc::names_for(surface)),
+        ));
+    }
+    if let Some(a) = &style.arrows
+        && !(if surface { a.field.for_surfaces() } else { a.field.for_curves() })
+    {
+        let names: Vec<&str> = ArrowFieldDoc::ALL
+            .iter()
+            .filter(|f| if surface { f.for_surfaces() } else { f.for_curves() })
+            .map(|f| f.name())
+            .collect();
+        return Err(DocumentError::new(
+            "arrows.field",
+            format!("{what} have no \"{}\" field; they take {}", a.field.name(), names.join(", ")),
+        ));
+    }
+    Ok(())
+}
+
+/// Arrows in a darker shade of the shape's colour.
+fn arrow_color(c: [f32; 4]) -> [f32; 4] {
+    [c[0] * 0.45, c[1] * 0.45, c[2] * 0.45, 1.0]
 }
 
 /// Draws what the style asks for of a shape's decoration.
@@ -257,8 +293,53 @@ fn decorate(decoration: Decoration<'_>, style: &StyleDoc, out: &mut RenderScene)
                 cage(vertices, faces, out);
             }
         }
+        Decoration::TriangularNet { points, .. } => {
+            if style.control_net {
+                triangular_net(points, out);
+            }
+        }
+        Decoration::LocalPieces(d) => {
+            if style.local_pieces {
+                let pieces = d.local_pieces()?;
+                let n = pieces.len();
+                for (k, (lines, origin)) in pieces.into_iter().enumerate() {
+                    let color = local_color(k, n);
+                    for line in lines {
+                        out.lines.push(LineItem {
+                            points: line.iter().map(|p| f32x3(*p)).collect(),
+                            closed: false,
+                            color,
+                            width: 1.0,
+                            colors: Vec::new(),
+                        });
+                    }
+                    out.points.push(PointItem { position: f32x3(origin), color, size: 6.0 });
+                }
+            }
+        }
     }
     Ok(())
+}
+
+/// A Bézier triangle's net (points b_ijk in storage order, row r = j + k holding r + 1
+/// points): the lines of constant i, of constant j and of constant k, with the points.
+fn triangular_net(points: &[Vec<f64>], out: &mut RenderScene) {
+    let at = |p: &Vec<f64>| [p[0] as f32, *p.get(1).unwrap_or(&0.0) as f32, *p.get(2).unwrap_or(&0.0) as f32];
+    let Ok(n) = splinekit::triangle::net::degree_of_len(points.len(), "control_points") else { return };
+    let index = |j: usize, k: usize| splinekit::triangle::net_index(j, k);
+    let mut push = |idx: Vec<usize>| {
+        if idx.len() > 1 {
+            let pts = idx.iter().map(|&i| at(&points[i])).collect();
+            out.lines.push(LineItem { points: pts, closed: false, color: NET, width: 1.5, colors: Vec::new() });
+        }
+    };
+    for c in 0..n {
+        // i = c: j + k = n − c; j = c: i + k = n − c; k = c.
+        push((0..=n - c).map(|k| index(n - c - k, k)).collect());
+        push((0..=n - c).map(|k| index(c, k)).collect());
+        push((0..=n - c).map(|j| index(j, c)).collect());
+    }
+    out.points.extend(points.iter().map(|p| PointItem { position: at(p), color: [0.1, 0.1, 0.1, 1.0], size: 7.0 }));
 }
 
 /// The x (red), y (green) and z (blue) axes, 35 % of the scene's largest extent long.
@@ -267,7 +348,13 @@ fn axes(bounds: ([f32; 3], [f32; 3]), out: &mut RenderScene) {
     for (k, c) in [[0.85, 0.1, 0.1, 1.0], [0.1, 0.65, 0.1, 1.0], [0.1, 0.2, 0.85, 1.0]].into_iter().enumerate() {
         let mut end = [0.0; 3];
         end[k] = size;
-        out.lines.push(LineItem { points: vec![[0.0; 3], end], closed: false, color: c, width: 2.0 });
+        out.lines.push(LineItem {
+            points: vec![[0.0; 3], end],
+            closed: false,
+            color: c,
+            width: 2.0,
+            colors: Vec::new(),
+        });
     }
 }
 
@@ -322,14 +409,34 @@ struct CurveLine<'a> {
 }
 
 impl DimensionVisitor<Curves> for CurveLine<'_> {
-    type Output = Result<LineItem, DocumentError>;
+    /// The curve's line, then its arrows.
+    type Output = Result<Vec<LineItem>, DocumentError>;
     fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Self::Output {
         let poly = match self.obj.style.density {
             Some(n) => Polyline::regular(c, n)?,
             None => Polyline::adaptive_with_limit(c, curve_tolerance(c)?, CURVE_POINTS)?,
         };
         let points = polyline_points(&poly.params, &poly.points);
-        Ok(LineItem { points, closed: poly.closed, color: self.color, width: self.obj.style.line_width as f32 })
+        let colors = match self.obj.style.color_map {
+            Some(map) => fields::curve_colors(c, map, &poly.params),
+            None => Vec::new(),
+        };
+        let mut lines = Vec::new();
+        if let Some(a) = &self.obj.style.arrows {
+            let size = fields::box_diagonal(poly.points.iter().map(to3));
+            lines = fields::curve_arrows(c, a, size, arrow_color(self.color));
+        }
+        lines.insert(
+            0,
+            LineItem {
+                points,
+                closed: poly.closed,
+                color: self.color,
+                width: self.obj.style.line_width as f32,
+                colors,
+            },
+        );
+        Ok(lines)
     }
 }
 
@@ -338,7 +445,7 @@ fn polygon(points: &[Vec<f64>], closed: bool, out: &mut RenderScene) {
         .iter()
         .map(|p| [p[0] as f32, *p.get(1).unwrap_or(&0.0) as f32, *p.get(2).unwrap_or(&0.0) as f32])
         .collect();
-    out.lines.push(LineItem { points: pts.clone(), closed, color: NET, width: 1.5 });
+    out.lines.push(LineItem { points: pts.clone(), closed, color: NET, width: 1.5, colors: Vec::new() });
     out.points.extend(pts.iter().map(|&p| PointItem { position: p, color: [0.1, 0.1, 0.1, 1.0], size: 7.0 }));
 }
 
@@ -347,7 +454,7 @@ fn cage(vertices: &[Vec<f64>], faces: &[Vec<u32>], out: &mut RenderScene) {
     let at = |p: &Vec<f64>| [p[0] as f32, *p.get(1).unwrap_or(&0.0) as f32, *p.get(2).unwrap_or(&0.0) as f32];
     for face in faces {
         let points: Vec<[f32; 3]> = face.iter().filter_map(|&i| vertices.get(i as usize)).map(at).collect();
-        out.lines.push(LineItem { points, closed: true, color: NET, width: 1.5 });
+        out.lines.push(LineItem { points, closed: true, color: NET, width: 1.5, colors: Vec::new() });
     }
     out.points.extend(vertices.iter().map(|p| PointItem { position: at(p), color: [0.1, 0.1, 0.1, 1.0], size: 7.0 }));
 }
@@ -364,7 +471,7 @@ fn control_net(net: &[Vec<Vec<f64>>], out: &mut RenderScene) {
             .iter()
             .map(|p| [p[0] as f32, *p.get(1).unwrap_or(&0.0) as f32, *p.get(2).unwrap_or(&0.0) as f32])
             .collect();
-        out.lines.push(LineItem { points: pts, closed: false, color: NET, width: 1.5 });
+        out.lines.push(LineItem { points: pts, closed: false, color: NET, width: 1.5, colors: Vec::new() });
     }
 }
 
@@ -396,7 +503,13 @@ pub fn local_curve_items<const D: usize>(
             f32x3(to3(&v[0]))
         })
         .collect();
-    let line = LineItem { points: pts, closed: false, color: local_color(k, n), width: style.line_width as f32 * 0.6 };
+    let line = LineItem {
+        points: pts,
+        closed: false,
+        color: local_color(k, n),
+        width: style.line_width as f32 * 0.6,
+        colors: Vec::new(),
+    };
     let origin = c.transform(k).apply_point_about(&c.origin(k), &c.origin(k));
     (line, PointItem { position: f32x3(to3(&origin)), color: local_color(k, n), size: 7.0 })
 }
@@ -439,7 +552,7 @@ pub fn local_patch_lines(s: &BlendingSplineSurface<3>, (k, l): (usize, usize)) -
                 f32x3(to3(&v[0]))
             })
             .collect();
-        LineItem { points: pts, closed: false, color, width: 1.0 }
+        LineItem { points: pts, closed: false, color, width: 1.0, colors: Vec::new() }
     })
 }
 
@@ -457,41 +570,12 @@ impl DimensionVisitor<Surfaces> for SurfaceMesh<'_> {
         let (du, dv) = (s.domain_u(), s.domain_v());
         let colors = match self.obj.style.color_map {
             None => Vec::new(),
-            Some(map) => {
-                let values: Vec<f64> = mesh
-                    .uvs
-                    .iter()
-                    .zip(&mesh.normals)
-                    .map(|(t, n)| {
-                        let (u, v) = (du.lerp(t[0]), dv.lerp(t[1]));
-                        let n = *n;
-                        match map {
-                            ColorMapDoc::U => t[0],
-                            ColorMapDoc::V => t[1],
-                            ColorMapDoc::Gaussian => s.curvatures(u, v).map_or(0.0, |c| c.gaussian),
-                            ColorMapDoc::Mean => s.curvatures(u, v).map_or(0.0, |c| c.mean),
-                            ColorMapDoc::Zebra => n[0].clamp(-1.0, 1.0).asin(),
-                            ColorMapDoc::Isophotes => {
-                                let l = [1.0, 1.0, 2.0].map(|x: f64| x / 6f64.sqrt());
-                                n[0] * l[0] + n[1] * l[1] + n[2] * l[2]
-                            }
-                        }
-                    })
-                    .collect();
-                match map {
-                    ColorMapDoc::U | ColorMapDoc::V => values.iter().map(|&x| sequential(x as f32)).collect(),
-                    ColorMapDoc::Zebra => values.iter().map(|&a| zebra(a)).collect(),
-                    ColorMapDoc::Isophotes => values.iter().map(|&x| isophote(x, self.color)).collect(),
-                    _ => {
-                        // Symmetric range at the 95th percentile of |value|: blue < 0 < red.
-                        let mut mags: Vec<f64> = values.iter().map(|x| x.abs()).filter(|x| x.is_finite()).collect();
-                        mags.sort_by(f64::total_cmp);
-                        let scale = mags.get(mags.len() * 95 / 100).copied().unwrap_or(1.0).max(1e-12);
-                        values.iter().map(|&x| diverging((x / scale) as f32)).collect()
-                    }
-                }
-            }
+            Some(map) => fields::surface_colors(s, map, &mesh.uvs, &mesh.positions, &mesh.normals, self.color),
         };
+        if let Some(a) = &self.obj.style.arrows {
+            let size = fields::box_diagonal(mesh.positions.iter().copied());
+            self.out.lines.extend(fields::surface_arrows(s, a, size, arrow_color(self.color)));
+        }
         self.out.meshes.push(MeshItem {
             positions: mesh.positions.iter().map(|p| f32x3(*p)).collect(),
             normals: mesh.normals.iter().map(|p| f32x3(*p)).collect(),
@@ -518,6 +602,7 @@ impl DimensionVisitor<Surfaces> for SurfaceMesh<'_> {
                         closed: false,
                         color: [0.12, 0.12, 0.15, 1.0],
                         width: 1.0,
+                        colors: Vec::new(),
                     });
                 }
             }
@@ -554,47 +639,10 @@ fn hue_turned(c: [f32; 4], turns: f32) -> [f32; 4] {
     [r + min, g + min, b + min, c[3]]
 }
 
-/// Blue (−1) – white (0) – red (+1).
-/// Zebra stripes of the normal's angle `a` (radians) from the yz-plane: white and black,
-/// 15° each (white from 0° to 15°), a clipped sine so that colours interpolated between
-/// vertices keep the stripes' edges smooth.
-fn zebra(a: f64) -> [f32; 4] {
-    let s = (std::f64::consts::PI * a / 15f64.to_radians()).sin();
-    let g = (0.5 + 0.5 * (2.5 * s).clamp(-1.0, 1.0)) as f32;
-    let g = 0.05 + 0.9 * g;
-    [g, g, g, 1.0]
-}
-
-/// The shape's colour with a dark line where N·L (`x`) is within 0.012 of a multiple of 0.1.
-fn isophote(x: f64, color: [f32; 4]) -> [f32; 4] {
-    let step = 0.1;
-    let off = (x / step - (x / step).round()).abs() * step;
-    if off < 0.012 { [0.05, 0.05, 0.05, 1.0] } else { color }
-}
-
-fn diverging(x: f32) -> [f32; 4] {
-    let x = x.clamp(-1.0, 1.0);
-    if x < 0.0 {
-        [1.0 + 0.8 * x, 1.0 + 0.55 * x, 1.0 + 0.1 * x, 1.0]
-    } else {
-        [1.0 - 0.1 * x, 1.0 - 0.75 * x, 1.0 - 0.8 * x, 1.0]
-    }
-}
-
-/// Dark blue (0) – teal – yellow (1), roughly viridis.
-fn sequential(x: f32) -> [f32; 4] {
-    let x = x.clamp(0.0, 1.0);
-    let stops = [[0.27, 0.0, 0.33], [0.23, 0.32, 0.55], [0.13, 0.57, 0.55], [0.37, 0.79, 0.38], [0.99, 0.91, 0.14]];
-    let f = x * 4.0;
-    let i = (f as usize).min(3);
-    let t = f - i as f32;
-    let (a, b) = (stops[i], stops[i + 1]);
-    [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t, 1.0]
-}
-
 #[cfg(test)]
 mod tests {
-    use super::{hue_turned, isophote, zebra};
+    use super::hue_turned;
+    use crate::fields::{isophote, zebra};
 
     #[test]
     fn zebra_stripes_and_isophotes_follow_the_normal() {

@@ -53,10 +53,16 @@ pub fn pack_line(l: &LineItem, out: &mut Vec<f32>) {
 pub fn pack_line_segments(l: &LineItem, range: Range<usize>, out: &mut Vec<f32>) {
     let c = srgba_to_linear(l.color);
     let n = l.points.len();
+    let per_vertex = l.colors.len() == n;
     for i in range {
         out.extend_from_slice(&l.points[i]);
         out.extend_from_slice(&l.points[(i + 1) % n]);
-        out.extend_from_slice(&c);
+        if per_vertex {
+            let (a, b) = (l.colors[i], l.colors[(i + 1) % n]);
+            out.extend_from_slice(&srgba_to_linear([0, 1, 2, 3].map(|k| 0.5 * (a[k] + b[k]))));
+        } else {
+            out.extend_from_slice(&c);
+        }
         out.extend_from_slice(&[l.width, 0.0]);
     }
 }

@@ -68,12 +68,17 @@ pub fn scene_to_gltf(scene: &SceneDocument, frames: usize, fps: f64) -> Result<G
                 frames_out.push((((k + 1) as f64 / fps) as f32, strip(&s.lines[i]), Vec::new()));
             }
         }
-        out.objects.push(GltfObject {
-            name: format!("line {i}"),
-            geometry: GltfGeometry::LineStrip(pts),
-            color: srgba_to_linear(l.color),
-            frames: frames_out,
-        });
+        // A colour-mapped curve: its colours per point (COLOR_0) on a white base colour.
+        let (geometry, color) = if l.colors.len() == l.points.len() && !l.colors.is_empty() {
+            let mut colors: Vec<[f32; 4]> = l.colors.iter().copied().map(srgba_to_linear).collect();
+            if l.closed {
+                colors.push(colors[0]);
+            }
+            (GltfGeometry::ColoredLineStrip(pts, colors), [1.0; 4])
+        } else {
+            (GltfGeometry::LineStrip(pts), srgba_to_linear(l.color))
+        };
+        out.objects.push(GltfObject { name: format!("line {i}"), geometry, color, frames: frames_out });
     }
     Ok(out)
 }
@@ -106,5 +111,24 @@ mod tests {
         let GltfGeometry::Mesh(mesh) = &plain.objects[0].geometry else { panic!("a torus is a mesh") };
         assert!(mesh.colors.is_empty());
         assert_eq!(plain.objects[0].color, srgba_to_linear([0.5, 0.25, 1.0, 1.0]));
+    }
+
+    #[test]
+    fn a_colour_mapped_curve_is_a_strip_with_a_colour_per_point() {
+        let mapped = scene_to_gltf(
+            &scene(r#"{"type":"scene","objects":[{"shape":{"type":"helix"},"color_map":"z","density":40}]}"#),
+            1,
+            1.0,
+        )
+        .unwrap();
+        let GltfGeometry::ColoredLineStrip(points, colors) = &mapped.objects[0].geometry else {
+            panic!("a colour-mapped curve carries its colours")
+        };
+        assert_eq!(points.len(), 41);
+        assert_eq!(colors.len(), 41);
+        assert_ne!(colors[0], colors[40], "z rises along the helix");
+        assert_eq!(mapped.objects[0].color, [1.0; 4]);
+        let bytes = mapped.to_format_bytes(splinekit_mesh::export::Format::Gltf).unwrap();
+        assert!(String::from_utf8(bytes).unwrap().contains("COLOR_0"));
     }
 }

@@ -14,6 +14,7 @@
 pub mod backends;
 pub mod camera;
 pub mod compose;
+pub mod fields;
 #[cfg(feature = "gpu")]
 pub mod geometry;
 pub mod gltf_export;

@@ -29,6 +29,9 @@ pub struct LineItem {
     pub color: [f32; 4],
     /// Width in pixels.
     pub width: f32,
+    /// sRGB colours per vertex (a colour map), or empty for `color` throughout; each
+    /// segment is drawn in the mean of its ends' colours.
+    pub colors: Vec<[f32; 4]>,
 }
 
 /// A point drawn as a disc `size` pixels across.

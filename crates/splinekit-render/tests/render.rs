@@ -23,7 +23,13 @@ fn torus_scene() -> RenderScene {
             triangles: m.triangles.clone(),
             ..Default::default()
         }],
-        lines: vec![LineItem { points: circle.clone(), closed: true, color: [0.85, 0.2, 0.1, 1.0], width: 3.0 }],
+        lines: vec![LineItem {
+            points: circle.clone(),
+            closed: true,
+            color: [0.85, 0.2, 0.1, 1.0],
+            width: 3.0,
+            colors: Vec::new(),
+        }],
         points: circle
             .iter()
             .step_by(8)
@@ -92,6 +98,7 @@ fn lines_have_their_width_and_a_top_camera_frames_a_plane_figure() {
             closed: false,
             color: [0.0, 0.0, 0.0, 1.0],
             width: 6.0,
+            colors: Vec::new(),
         }],
         camera: Some(Camera::top(([0.0, -1.0, 0.0], [10.0, 1.0, 0.0]), 2.0)),
         ..Default::default()

@@ -11,6 +11,7 @@
 mod blending;
 mod composite;
 mod models;
+mod on_surface;
 mod splines;
 
 use serde_json::Value;
@@ -21,6 +22,7 @@ pub use composite::{BFunctionShapeDoc, BlendDoc};
 // Every document that `models.rs` declares, so that a model kind is its declaration and
 // its line in the list below.
 pub use models::*;
+pub use on_surface::CurveOnSurfaceDoc;
 pub use splines::{BSplineDoc, BezierDoc, CatmullRomDoc, HermiteDoc, LineDoc, NurbsDoc, RationalBezierDoc};
 
 use crate::dimension::{AnyDimension, ShapeFamily};
@@ -84,6 +86,8 @@ macro_rules! curve_kinds {
                 Bfunction(BFunctionShapeDoc) = "bfunction", python(base),
                 /// Blend of two curves.
                 Blend(BlendDoc) = "blend", python(base),
+                /// A 2-D curve in a surface's (u, v) domain, on the surface.
+                CurveOnSurface(CurveOnSurfaceDoc) = "curve_on_surface", python(base),
                 /// Blending-spline curve.
                 BlendingSpline(BlendingSplineDoc) = "blending_spline", python(base),
             }

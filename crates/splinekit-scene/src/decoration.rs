@@ -4,7 +4,7 @@
 //! scene, the renderer and editors handle curves and surfaces alike.
 
 use crate::curves::{BlendingSplineDoc, CurveDecoration, CurveDocument};
-use crate::surfaces::{BlendingSplineSurfaceDoc, SurfaceDecoration, SurfaceDocument};
+use crate::surfaces::{BlendingSplineSurfaceDoc, LocalPieces, SurfaceDecoration, SurfaceDocument};
 
 /// What a scene draws besides a shape (see the [module](self)).
 #[derive(Debug, Clone, Copy)]
@@ -34,6 +34,16 @@ pub enum Decoration<'a> {
         /// The faces.
         faces: &'a [Vec<u32>],
     },
+    /// The triangular control net of a Bézier triangle (b_n00 first, then rows of falling i,
+    /// each by falling j: row r holds r + 1 points).
+    TriangularNet {
+        /// The points in storage order.
+        points: &'a [Vec<f64>],
+        /// The document field that holds them, for editors that move them.
+        field: &'static str,
+    },
+    /// The local pieces of a GERBS triangle or a blending triangulation.
+    LocalPieces(&'a dyn LocalPieces),
 }
 
 impl<'a> From<CurveDecoration<'a>> for Decoration<'a> {
@@ -55,6 +65,8 @@ impl<'a> From<SurfaceDecoration<'a>> for Decoration<'a> {
             SurfaceDecoration::ControlNet(net) => Decoration::ControlNet(net),
             SurfaceDecoration::LocalPatches(doc) => Decoration::LocalPatches(doc),
             SurfaceDecoration::Cage { vertices, faces } => Decoration::Cage { vertices, faces },
+            SurfaceDecoration::TriangularNet { points, field } => Decoration::TriangularNet { points, field },
+            SurfaceDecoration::LocalPieces(d) => Decoration::LocalPieces(d),
         }
     }
 }

@@ -38,10 +38,16 @@ pub struct StyleDoc {
     /// Blending splines: draw the local curves or patches in their own colours.
     #[serde(default)]
     pub local_pieces: bool,
-    /// Surfaces: colour by `gaussian` or `mean` curvature, by the `u` or `v` parameter,
-    /// or show `zebra` stripes or `isophotes` (reflection lines to read continuity from).
+    /// Colour by a quantity ([`ColorMapDoc`]): surfaces by a curvature, a coordinate, a
+    /// parameter or a speed, or `zebra` stripes or `isophotes` (reflection lines to read
+    /// continuity from); curves by a coordinate, their parameter, speed, curvature or
+    /// torsion.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub color_map: Option<ColorMapDoc>,
+    /// Short arrows of a vector field of the shape (normals, partials, derivatives), at
+    /// regular parameters over all of it or only on its boundary.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub arrows: Option<ArrowsDoc>,
     /// Grid cells per direction for surfaces, segments for curves (default: adaptive
     /// curves, 64 surface cells).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -74,6 +80,9 @@ impl StyleDoc {
         {
             return Err(DocumentError::new("density", format!("must be between 1 and 2048, got {d}")));
         }
+        if let Some(a) = &self.arrows {
+            a.check().map_err(|e| e.within("arrows"))?;
+        }
         Ok(())
     }
 }
@@ -87,6 +96,7 @@ impl Default for StyleDoc {
             control_net: false,
             local_pieces: false,
             color_map: None,
+            arrows: None,
             density: None,
             hidden: false,
             color_cycle: false,
@@ -94,34 +104,61 @@ impl Default for StyleDoc {
     }
 }
 
-/// Colour maps for surfaces.
+/// Colour maps of curves and surfaces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ColorMapDoc {
-    /// Gaussian curvature (blue negative, white zero, red positive).
+    /// Gaussian curvature (blue negative, white zero, red positive; surfaces).
     Gaussian,
-    /// Mean curvature.
+    /// Mean curvature (surfaces).
     Mean,
-    /// The u parameter.
+    /// The larger principal curvature κ₁ (surfaces).
+    PrincipalMax,
+    /// The smaller principal curvature κ₂ (surfaces).
+    PrincipalMin,
+    /// The curvature κ of a curve.
+    Curvature,
+    /// The torsion τ of a 3-D curve (blue negative, white zero, red positive).
+    Torsion,
+    /// The x coordinate (dark blue at its least, yellow at its most over the shape).
+    X,
+    /// The y coordinate.
+    Y,
+    /// The z coordinate.
+    Z,
+    /// The u parameter (a curve's parameter t), over its domain.
     U,
-    /// The v parameter.
+    /// The v parameter (surfaces).
     V,
+    /// The speed in u, |S_u| (a curve's |c′|), from 0 to its most over the shape.
+    SpeedU,
+    /// The speed in v, |S_v| (surfaces).
+    SpeedV,
     /// Black and white stripes of the angle of the normal from the yz-plane, 15° each: the
     /// reflection of parallel light bars; kinks in the stripes show tangent (G1) breaks,
-    /// sudden turns curvature (G2) breaks.
+    /// sudden turns curvature (G2) breaks (surfaces).
     Zebra,
     /// Thin dark lines where N·L is a multiple of 0.1 for a fixed light L ∝ (1, 1, 2), on the
-    /// shape's colour.
+    /// shape's colour (surfaces).
     Isophotes,
 }
 
 impl ColorMapDoc {
     /// Every colour map, in the order the studio offers them.
-    pub const ALL: [ColorMapDoc; 6] = [
+    pub const ALL: [ColorMapDoc; 15] = [
         ColorMapDoc::Gaussian,
         ColorMapDoc::Mean,
+        ColorMapDoc::PrincipalMax,
+        ColorMapDoc::PrincipalMin,
+        ColorMapDoc::Curvature,
+        ColorMapDoc::Torsion,
+        ColorMapDoc::X,
+        ColorMapDoc::Y,
+        ColorMapDoc::Z,
         ColorMapDoc::U,
         ColorMapDoc::V,
+        ColorMapDoc::SpeedU,
+        ColorMapDoc::SpeedV,
         ColorMapDoc::Zebra,
         ColorMapDoc::Isophotes,
     ];
@@ -131,12 +168,163 @@ impl ColorMapDoc {
         match self {
             ColorMapDoc::Gaussian => "gaussian",
             ColorMapDoc::Mean => "mean",
+            ColorMapDoc::PrincipalMax => "principal_max",
+            ColorMapDoc::PrincipalMin => "principal_min",
+            ColorMapDoc::Curvature => "curvature",
+            ColorMapDoc::Torsion => "torsion",
+            ColorMapDoc::X => "x",
+            ColorMapDoc::Y => "y",
+            ColorMapDoc::Z => "z",
             ColorMapDoc::U => "u",
             ColorMapDoc::V => "v",
+            ColorMapDoc::SpeedU => "speed_u",
+            ColorMapDoc::SpeedV => "speed_v",
             ColorMapDoc::Zebra => "zebra",
             ColorMapDoc::Isophotes => "isophotes",
         }
     }
+
+    /// Whether the map colours curves: x, y, z, u, speed_u, curvature, torsion.
+    pub fn for_curves(self) -> bool {
+        matches!(
+            self,
+            ColorMapDoc::X
+                | ColorMapDoc::Y
+                | ColorMapDoc::Z
+                | ColorMapDoc::U
+                | ColorMapDoc::SpeedU
+                | ColorMapDoc::Curvature
+                | ColorMapDoc::Torsion
+        )
+    }
+
+    /// Whether the map colours surfaces: every map but curvature and torsion.
+    pub fn for_surfaces(self) -> bool {
+        !matches!(self, ColorMapDoc::Curvature | ColorMapDoc::Torsion)
+    }
+
+    /// The maps a curve (`surface` false) or a surface takes, for messages.
+    pub fn names_for(surface: bool) -> String {
+        let names: Vec<&str> = Self::ALL
+            .iter()
+            .filter(|m| if surface { m.for_surfaces() } else { m.for_curves() })
+            .map(|m| m.name())
+            .collect();
+        names.join(", ")
+    }
+}
+
+/// `"arrows": {"field": "normal", "on": "all", "count": 12, "length": 0.08}`: short arrows
+/// of a vector field at regular parameters.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ArrowsDoc {
+    /// The field drawn.
+    pub field: ArrowFieldDoc,
+    /// Where: over the whole shape (default) or only on its boundary.
+    #[serde(default)]
+    pub on: ArrowPlacementDoc,
+    /// Arrows per direction: along a curve, along each side of a surface (default 32 for
+    /// curves, 12 for surfaces; 1 … 256).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub count: Option<usize>,
+    /// The longest arrow's length as a fraction of the shape's size (its box's diagonal;
+    /// default 0.08, at most 1).
+    #[serde(default = "default_arrow_length")]
+    pub length: f64,
+}
+
+fn default_arrow_length() -> f64 {
+    0.08
+}
+
+impl ArrowsDoc {
+    fn check(&self) -> Result<()> {
+        if let Some(n) = self.count
+            && !(1..=256).contains(&n)
+        {
+            return Err(DocumentError::new("count", format!("must be between 1 and 256, got {n}")));
+        }
+        if !(self.length > 0.0 && self.length <= 1.0) {
+            return Err(DocumentError::new("length", format!("must be in (0, 1], got {}", self.length)));
+        }
+        Ok(())
+    }
+}
+
+/// Which vector field arrows show.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ArrowFieldDoc {
+    /// Surfaces: the unit normal S_u × S_v/|…|; curves: the unit principal normal.
+    Normal,
+    /// Curves: the unit tangent c′/|c′|.
+    Tangent,
+    /// Curves: the first derivative c′, to scale.
+    Derivative,
+    /// Curves: the second derivative c″, to scale.
+    Second,
+    /// Surfaces: S_u, to scale.
+    Du,
+    /// Surfaces: S_v, to scale.
+    Dv,
+    /// Surfaces: the twist S_uv, to scale.
+    Duv,
+}
+
+impl ArrowFieldDoc {
+    /// Every field, in the order the studio offers them.
+    pub const ALL: [ArrowFieldDoc; 7] = [
+        ArrowFieldDoc::Normal,
+        ArrowFieldDoc::Tangent,
+        ArrowFieldDoc::Derivative,
+        ArrowFieldDoc::Second,
+        ArrowFieldDoc::Du,
+        ArrowFieldDoc::Dv,
+        ArrowFieldDoc::Duv,
+    ];
+
+    /// The name in documents.
+    pub fn name(self) -> &'static str {
+        match self {
+            ArrowFieldDoc::Normal => "normal",
+            ArrowFieldDoc::Tangent => "tangent",
+            ArrowFieldDoc::Derivative => "derivative",
+            ArrowFieldDoc::Second => "second",
+            ArrowFieldDoc::Du => "du",
+            ArrowFieldDoc::Dv => "dv",
+            ArrowFieldDoc::Duv => "duv",
+        }
+    }
+
+    /// Whether curves have the field (normal, tangent, derivative, second).
+    pub fn for_curves(self) -> bool {
+        matches!(
+            self,
+            ArrowFieldDoc::Normal | ArrowFieldDoc::Tangent | ArrowFieldDoc::Derivative | ArrowFieldDoc::Second
+        )
+    }
+
+    /// Whether surfaces have the field (normal, du, dv, duv).
+    pub fn for_surfaces(self) -> bool {
+        matches!(self, ArrowFieldDoc::Normal | ArrowFieldDoc::Du | ArrowFieldDoc::Dv | ArrowFieldDoc::Duv)
+    }
+
+    /// Whether arrows show the direction only (unit length), not the magnitude.
+    pub fn is_unit(self) -> bool {
+        matches!(self, ArrowFieldDoc::Normal | ArrowFieldDoc::Tangent)
+    }
+}
+
+/// Where arrows are drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ArrowPlacementDoc {
+    /// At regular parameters over the whole domain.
+    #[default]
+    All,
+    /// Only on the boundary: a surface's four sides, a curve's two ends.
+    Boundary,
 }
 
 /// One object of a scene: `{"shape": {…}, "points": [[x, y, z], …], …style…}`.
@@ -148,6 +336,10 @@ pub struct SceneObject {
     pub style: StyleDoc,
     /// Extra points to mark (e.g. data points), drawn as discs in the object's colour.
     pub points: Vec<[f64; 3]>,
+    /// `"model_of": k`: a blending spline whose model is object k's shape, a live link
+    /// that [`SceneDocument::resolve_models`] follows (the shape's `model` is then a copy
+    /// of object k's shape, made again whenever the scene is read or edited).
+    pub model_of: Option<usize>,
 }
 
 impl SceneObject {
@@ -157,6 +349,28 @@ impl SceneObject {
             return Err(DocumentError::new("", format!("expected an object with a \"shape\", got {}", kind(&value))));
         };
         let shape = style.remove("shape").ok_or_else(|| DocumentError::new("", "missing field `shape`"))?;
+        let model_of = match style.remove("model_of") {
+            None | Some(Value::Null) => None,
+            Some(v) => Some(v.as_u64().and_then(|k| usize::try_from(k).ok()).ok_or_else(|| {
+                DocumentError::new("model_of", format!("expected the index of an object of the scene, got {v}"))
+            })?),
+        };
+        // A linked model is filled in by the scene (`SceneDocument::resolve_models`); until
+        // then a stand-in of the family keeps the shape readable.
+        let mut shape = shape;
+        if model_of.is_some()
+            && let Some(fields) = shape.as_object_mut()
+            && !fields.contains_key("model")
+        {
+            let stand_in = match fields.get("type").and_then(Value::as_str) {
+                Some("blending_spline") => Some(serde_json::json!({"type": "circle"})),
+                Some("blending_spline_surface") => Some(serde_json::json!({"type": "torus"})),
+                _ => None,
+            };
+            if let Some(m) = stand_in {
+                fields.insert("model".into(), m);
+            }
+        }
         let points: Vec<Vec<f64>> = match style.remove("points") {
             Some(p) => fields(p).map_err(|e| e.within("points"))?,
             None => Vec::new(),
@@ -174,7 +388,7 @@ impl SceneObject {
                 Ok([p[0], p[1], p.get(2).copied().unwrap_or(0.0)])
             })
             .collect::<Result<_>>()?;
-        Ok(SceneObject { shape, style, points })
+        Ok(SceneObject { shape, style, points, model_of })
     }
 }
 
@@ -192,6 +406,9 @@ impl SceneObject {
         doc.insert("shape".into(), shape);
         if !self.points.is_empty() {
             doc.insert("points".into(), serde_json::json!(self.points));
+        }
+        if let Some(k) = self.model_of {
+            doc.insert("model_of".into(), k.into());
         }
         Value::Object(doc)
     }
@@ -351,9 +568,93 @@ impl SceneDocument {
         if ty != "scene" {
             return Err(DocumentError::new("type", format!("expected \"scene\", got \"{ty}\"")));
         }
-        let scene: SceneDocument = fields(rest)?;
+        let mut scene: SceneDocument = fields(rest)?;
         scene.check()?;
+        scene.resolve_models()?;
         Ok(scene)
+    }
+
+    /// Follows the live links: every object with `model_of: k` gets object k's shape (as
+    /// it is now, itself resolved first) as its `model`. Object k must be another object of
+    /// the scene, of the family the blending spline blends (a curve for `blending_spline`,
+    /// a surface for `blending_spline_surface`), and the links must not run in a circle;
+    /// errors name `objects[i].model_of`. Reading a scene resolves it; the studio resolves
+    /// it again after every edit, so the blending spline follows its model's edits.
+    pub fn resolve_models(&mut self) -> Result<()> {
+        let n = self.objects.len();
+        // Depth-first from each linked object, models before the objects that take them.
+        let mut order = Vec::new();
+        let mut state = vec![0u8; n]; // 0 new, 1 on the path, 2 done
+        for start in 0..n {
+            let mut path = vec![start];
+            while let Some(&i) = path.last() {
+                if state[i] == 2 {
+                    path.pop();
+                    continue;
+                }
+                let field = format!("objects[{i}].model_of");
+                match self.objects[i].model_of {
+                    Some(k) if k >= n || k == i => {
+                        let why = if k == i {
+                            "an object cannot be its own model".to_string()
+                        } else {
+                            format!("the scene has {n} objects")
+                        };
+                        return Err(DocumentError::new(field, format!("{k}: {why}")));
+                    }
+                    Some(k) if state[k] == 1 => {
+                        return Err(DocumentError::new(
+                            field,
+                            format!("the models run in a circle through objects {i} and {k}"),
+                        ));
+                    }
+                    Some(k) if state[k] == 0 => {
+                        state[i] = 1;
+                        path.push(k);
+                    }
+                    _ => {
+                        state[i] = 2;
+                        order.push(i);
+                        path.pop();
+                    }
+                }
+            }
+        }
+        for i in order {
+            let Some(k) = self.objects[i].model_of else { continue };
+            let model = self.objects[k].shape.clone();
+            let field = || format!("objects[{i}].model_of");
+            match (&mut self.objects[i].shape, model) {
+                (ShapeDocument::Curve(crate::curves::CurveDocument::BlendingSpline(d)), ShapeDocument::Curve(c)) => {
+                    d.model = Some(Box::new(c));
+                }
+                (
+                    ShapeDocument::Surface(crate::surfaces::SurfaceDocument::BlendingSplineSurface(d)),
+                    ShapeDocument::Surface(m),
+                ) => {
+                    d.model = Some(Box::new(m));
+                }
+                (ShapeDocument::Curve(crate::curves::CurveDocument::BlendingSpline(_)), _) => {
+                    return Err(DocumentError::new(
+                        field(),
+                        format!("object {k} is a surface; a blending_spline takes a curve"),
+                    ));
+                }
+                (ShapeDocument::Surface(crate::surfaces::SurfaceDocument::BlendingSplineSurface(_)), _) => {
+                    return Err(DocumentError::new(
+                        field(),
+                        format!("object {k} is a curve; a blending_spline_surface takes a surface"),
+                    ));
+                }
+                _ => {
+                    return Err(DocumentError::new(
+                        field(),
+                        "only a blending_spline or blending_spline_surface takes its model from another object",
+                    ));
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Checks the ranges serde does not: at least one object, at most two lights, sizes,
@@ -415,7 +716,7 @@ impl SceneDocument {
     /// A scene of one shape with the default style.
     pub fn of_shape(shape: ShapeDocument) -> Self {
         SceneDocument {
-            objects: vec![SceneObject { shape, style: StyleDoc::default(), points: Vec::new() }],
+            objects: vec![SceneObject { shape, style: StyleDoc::default(), points: Vec::new(), model_of: None }],
             camera: None,
             lights: Vec::new(),
             background: white(),
@@ -428,7 +729,20 @@ impl SceneDocument {
     /// The scene as a JSON document that [`SceneDocument::from_value`] reads back to an
     /// equal scene: each object's shape under `shape`, its style fields and `points` beside it.
     pub fn to_value(&self) -> Value {
-        let objects: Vec<Value> = self.objects.iter().map(SceneObject::to_value).collect();
+        // A linked model is written as the link alone (`model_of`), not as its copy.
+        let objects: Vec<Value> = self
+            .objects
+            .iter()
+            .map(|o| {
+                let mut v = o.to_value();
+                if o.model_of.is_some()
+                    && let Some(shape) = v.get_mut("shape").and_then(Value::as_object_mut)
+                {
+                    shape.remove("model");
+                }
+                v
+            })
+            .collect();
         let mut doc = serde_json::Map::new();
         doc.insert("type".into(), "scene".into());
         doc.insert("objects".into(), objects.into());

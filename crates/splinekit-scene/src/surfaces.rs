@@ -12,11 +12,13 @@
 mod blending;
 mod brep;
 mod from_curves;
+mod hermite;
 mod models;
 mod nets;
 mod placed;
 mod sub_surface;
 mod subdivision;
+mod triangles;
 mod trimmed;
 
 use serde_json::Value;
@@ -24,7 +26,11 @@ use splinekit::surface::Surface;
 
 pub use blending::{BlendingSplineSurfaceDoc, LocalPatchDoc};
 pub use brep::{BrepDoc, BrepEdgeDoc, BrepFaceDoc, BrepShellDoc, BrepSolidDoc, BrepUseDoc};
-pub use from_curves::{CoonsBlendDoc, CoonsDoc, ExtrusionDoc, RevolutionDoc, RuledDoc, SweepDoc};
+pub use from_curves::{
+    CoonsBlendDoc, CoonsDoc, ExtrusionDoc, HermiteCurveSurfaceDoc, LoftCrossDoc, LoftDoc, LoftParametersDoc,
+    RevolutionDoc, RuledDoc, SweepDoc,
+};
+pub use hermite::BicubicHermiteDoc;
 // Every document that `models.rs` declares, so that a model kind is its declaration and
 // its line in the list below.
 pub use models::*;
@@ -32,6 +38,10 @@ pub use nets::{BSplineSurfaceDoc, BezierSurfaceDoc, NurbsSurfaceDoc};
 pub use placed::PlacedDoc;
 pub use sub_surface::SubSurfaceDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
+pub use triangles::{
+    BezierTriangleDoc, BlendingTriangulationDoc, GerbsTriangleDoc, InterpolantDoc, LocalPieces, MeshDoc,
+    SubTriangleDoc, TriangularFormDoc, TriangulationDoc, triangle_of,
+};
 pub use trimmed::TrimmedDoc;
 
 use crate::dimension::{AnyDimension, ShapeFamily};
@@ -127,6 +137,12 @@ macro_rules! surface_kinds {
                 Coons(CoonsDoc) = "coons", python(base),
                 /// Sweep of a profile along a path.
                 Sweep(SweepDoc) = "sweep", python(base),
+                /// Bicubic patch of corner positions, partials and twists.
+                BicubicHermite(BicubicHermiteDoc) = "bicubic_hermite", python(base),
+                /// Hermite surface of two boundary and two cross-derivative curves.
+                HermiteCurveSurface(HermiteCurveSurfaceDoc) = "hermite_curve_surface", python(base),
+                /// Loft (skinning) through section curves.
+                Loft(LoftDoc) = "loft", python(base),
                 /// Trimmed surface.
                 Trimmed(TrimmedDoc) = "trimmed", python(base),
                 /// A surface moved rigidly into a frame.
@@ -139,6 +155,16 @@ macro_rules! surface_kinds {
                 SubdivisionSurface(SubdivisionSurfaceDoc) = "subdivision_surface", python(base),
                 /// Solids, shells and faces sharing their edges (a boundary representation).
                 Brep(BrepDoc) = "brep", python(base),
+                /// Bézier triangle (rational with weights).
+                BezierTriangle(BezierTriangleDoc) = "bezier_triangle", python(fields "BezierTriangle"),
+                /// The triangle S(u a + v b + w c) of a surface.
+                SubTriangle(SubTriangleDoc) = "sub_triangle", python(fields "SubTriangle"),
+                /// GERBS triangle: three framed local triangles blended by a triangular B-function.
+                GerbsTriangle(GerbsTriangleDoc) = "gerbs_triangle", python(fields "GerbsTriangle"),
+                /// Height field over a constrained Delaunay triangulation.
+                Triangulation(TriangulationDoc) = "triangulation", python(fields "Triangulation"),
+                /// Blending surface over a triangulated surface, one local per vertex.
+                BlendingTriangulation(BlendingTriangulationDoc) = "blending_triangulation", python(fields "BlendingTriangulation"),
             }
         }
     };
@@ -237,6 +263,11 @@ pub enum SurfaceForm<'a> {
     BlendingSpline(&'a BlendingSplineSurfaceDoc),
     /// A boundary representation: exporters write its faces with their shared edges.
     Brep(&'a BrepDoc),
+    /// Several triangles (an atlas of them, see
+    /// [`TriangleAtlas`](splinekit::triangle::TriangleAtlas)): exporters write one item
+    /// per triangle, a Bézier triangle exactly as its degenerate tensor patch, others within
+    /// a tolerance.
+    Triangles,
     /// No exact form: exporters approximate the surface within a tolerance.
     Approximate,
 }
@@ -260,4 +291,13 @@ pub enum SurfaceDecoration<'a> {
         /// The faces.
         faces: &'a [Vec<u32>],
     },
+    /// The triangular control net of a Bézier triangle, b_n00 first, then rows of falling i.
+    TriangularNet {
+        /// The points in storage order.
+        points: &'a [Vec<f64>],
+        /// The document field that holds them, for editors that move them.
+        field: &'static str,
+    },
+    /// The local pieces of a blending kind of the triangle family.
+    LocalPieces(&'a dyn LocalPieces),
 }

@@ -247,11 +247,17 @@ impl Analysis {
             let (teeth, js) = analyse(&doc, comb);
             let color = [0.55, 0.2, 0.75, 1.0];
             for (foot, tip) in &teeth {
-                lines.push(LineItem { points: vec![f32x3(*foot), f32x3(*tip)], closed: false, color, width: 1.0 });
+                lines.push(LineItem {
+                    points: vec![f32x3(*foot), f32x3(*tip)],
+                    closed: false,
+                    color,
+                    width: 1.0,
+                    colors: Vec::new(),
+                });
             }
             if !teeth.is_empty() {
                 let tips = teeth.iter().map(|(_, tip)| f32x3(*tip)).collect();
-                lines.push(LineItem { points: tips, closed: false, color, width: 1.5 });
+                lines.push(LineItem { points: tips, closed: false, color, width: 1.5, colors: Vec::new() });
             }
             if self.continuity {
                 points.extend(js.iter().map(|j| PointItem { position: f32x3(j.point), color: j.color(), size: 10.0 }));

@@ -40,8 +40,20 @@ impl Document {
 
     /// Applies `edit` through the history (with `merge`, joining the last step during a
     /// drag, [`History::apply`]), the edited shape built by `check`.
+    ///
+    /// Live links are followed afterwards ([`SceneDocument::resolve_models`]): a blending
+    /// spline whose `model_of` is the edited object takes its new shape as its model (and
+    /// the view re-fits it, as it re-fits any changed object). An edit after which a link
+    /// cannot be followed (the model turned from a curve into a surface) is undone and
+    /// refused.
     pub fn edit(&mut self, edit: Edit, merge: bool, check: &mut BuildCheck<'_>) -> Result<(), EditError> {
-        self.history.apply_with(&mut self.scene, edit, merge, check)
+        self.history.apply_with(&mut self.scene, edit, merge, check)?;
+        if let Err(e) = self.scene.resolve_models() {
+            self.history.undo(&mut self.scene)?;
+            self.scene.resolve_models().map_err(EditError::Invalid)?;
+            return Err(EditError::Invalid(e));
+        }
+        Ok(())
     }
 
     /// Ends a run of merged edits (the drag ended): the next edit is a new step.
@@ -51,12 +63,16 @@ impl Document {
 
     /// Undoes the last step; `false` when there is none.
     pub fn undo(&mut self) -> Result<bool, EditError> {
-        self.history.undo(&mut self.scene)
+        let done = self.history.undo(&mut self.scene)?;
+        self.scene.resolve_models().map_err(EditError::Invalid)?;
+        Ok(done)
     }
 
     /// Redoes the last undone step; `false` when there is none.
     pub fn redo(&mut self) -> Result<bool, EditError> {
-        self.history.redo(&mut self.scene)
+        let done = self.history.redo(&mut self.scene)?;
+        self.scene.resolve_models().map_err(EditError::Invalid)?;
+        Ok(done)
     }
 
     /// Saves to the file opened (or `studio.json`, [`save_path`]) with `camera` as the
@@ -146,5 +162,36 @@ mod tests {
         let saved: Value = serde_json::from_str(&std::fs::read_to_string(&first).expect("read")).expect("JSON");
         assert_eq!(saved["animation"], json!({"duration": 2.5, "fps": 24.0}));
         std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// A blending spline of object 0 follows object 0's edits, their undo and redo; an
+    /// edit that breaks the link is refused and leaves the scene as it was.
+    #[test]
+    fn a_linked_blending_spline_follows_its_models_edits() {
+        use splinekit_scene::ShapeDocument;
+        use splinekit_scene::curves::CurveDocument;
+        let text = r#"{"type": "scene", "objects": [{"shape": {"type": "heart", "scale": 1}},
+            {"shape": {"type": "blending_spline", "local_curves": 8}, "model_of": 0}]}"#;
+        let mut doc = Document::new(parse(text).expect("valid"), None);
+        let model_scale = |doc: &Document| match &doc.scene().objects[1].shape {
+            ShapeDocument::Curve(CurveDocument::BlendingSpline(d)) => {
+                d.model.as_ref().map(|m| m.to_value()["scale"].clone())
+            }
+            _ => None,
+        };
+        assert_eq!(model_scale(&doc), Some(json!(1.0)));
+        let mut check = |_: usize, shape: &ShapeDocument| crate::edit::check_builds(shape);
+        let scale = Edit::Set { object: 0, pointer: "/shape/scale".into(), value: Some(json!(2.5)) };
+        doc.edit(scale, false, &mut check).expect("edited");
+        assert_eq!(model_scale(&doc), Some(json!(2.5)), "the spline follows its model");
+        doc.undo().expect("undone");
+        assert_eq!(model_scale(&doc), Some(json!(1.0)));
+        doc.redo().expect("redone");
+        assert_eq!(model_scale(&doc), Some(json!(2.5)));
+        let before = doc.scene().clone();
+        let to_surface = Edit::Set { object: 0, pointer: "/shape".into(), value: Some(json!({"type": "torus"})) };
+        let e = doc.edit(to_surface, false, &mut check).expect_err("a blending_spline takes a curve");
+        assert!(e.to_string().contains("objects[1].model_of: object 0 is a surface"), "{e}");
+        assert_eq!(doc.scene(), &before);
     }
 }

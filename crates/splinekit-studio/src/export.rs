@@ -16,12 +16,14 @@ use splinekit_mesh::{MeshOptions, Polyline, TriangleMesh};
 use splinekit_scene::scenes::SceneObject;
 use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument, Surfaces};
 
+use crate::error::StudioError;
+
 struct CurvePoints(usize);
 
 impl DimensionVisitor<Curves> for CurvePoints {
-    type Output = Result<(Vec<[f64; 3]>, bool, usize), String>;
+    type Output = Result<(Vec<[f64; 3]>, bool, usize), StudioError>;
     fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Self::Output {
-        let poly = Polyline::regular(c, self.0).map_err(|e| e.to_string())?;
+        let poly = Polyline::regular(c, self.0).map_err(|e| StudioError::Export(e.to_string()))?;
         Ok((poly.points.iter().map(to3).collect(), poly.closed, D))
     }
 }
@@ -29,25 +31,25 @@ impl DimensionVisitor<Curves> for CurvePoints {
 struct SurfaceMesh(usize);
 
 impl DimensionVisitor<Surfaces> for SurfaceMesh {
-    type Output = Result<TriangleMesh, String>;
+    type Output = Result<TriangleMesh, StudioError>;
     fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Self::Output {
-        regular(s, self.0, self.0, MeshOptions { uv: true }).map_err(|e| e.to_string())
+        regular(s, self.0, self.0, MeshOptions { uv: true }).map_err(|e| StudioError::Export(e.to_string()))
     }
 }
 
 /// The bytes of `object` (posed at `time`) in the format of `path`'s extension.
-pub fn export(object: &SceneObject, time: Option<f64>, path: &Path) -> Result<Vec<u8>, String> {
+pub fn export(object: &SceneObject, time: Option<f64>, path: &Path) -> Result<Vec<u8>, StudioError> {
     let (format, name) = (Format::of_path(path), object_name(path));
     let shown = path.display().to_string();
-    let refused = |e: String| format!("export: {e}");
-    let exported = |e: splinekit_mesh::export::ExportError| e.to_string();
+    let refused = |e: String| StudioError::refused(e).of_action("export");
+    let exported = |e: splinekit_mesh::export::ExportError| StudioError::Export(e.to_string());
     let mut shape = object.shape.clone();
     if let Some(t) = time {
         shape.set_time(t);
     }
     match &shape {
         ShapeDocument::Curve(c) => {
-            let (points, closed, dim) = c.build().map_err(|e| e.to_string())?.visit(CurvePoints(object.style.density.unwrap_or(1000)))?;
+            let (points, closed, dim) = c.build()?.visit(CurvePoints(object.style.density.unwrap_or(1000)))?;
             let format = Subject::Curve.check(format, &shown).map_err(refused)?;
             match format {
                 Format::Svg => polyline_svg(&points, closed, dim).map(String::into_bytes),
@@ -56,7 +58,7 @@ pub fn export(object: &SceneObject, time: Option<f64>, path: &Path) -> Result<Ve
             .map_err(exported)
         }
         ShapeDocument::Surface(s) => {
-            let mesh = s.build().map_err(|e| e.to_string())?.visit(SurfaceMesh(object.style.density.unwrap_or(64)))?;
+            let mesh = s.build()?.visit(SurfaceMesh(object.style.density.unwrap_or(64)))?;
             let format = Subject::Surface.check(format, &shown).map_err(refused)?;
             mesh_bytes(std::borrow::Cow::Owned(mesh), &name, format).map_err(exported)
         }
@@ -77,7 +79,7 @@ mod tests {
         assert!(export(&plane, None, Path::new("p.glb")).expect("glb").starts_with(b"glTF"));
         let heart = SceneObject::from_value(serde_json::json!({"shape": {"type": "heart"}})).expect("valid");
         assert!(export(&heart, None, Path::new("h.obj")).is_ok());
-        let e = export(&heart, None, Path::new("h.stl")).expect_err("a curve has no triangles");
+        let e = export(&heart, None, Path::new("h.stl")).expect_err("a curve has no triangles").to_string();
         assert_eq!(e, "export: curves are written as .svg, .obj, .gltf or .glb, not 'h.stl'");
         assert!(export(&heart, None, Path::new("h.svg")).expect("svg").starts_with(b"<svg"));
     }

@@ -164,6 +164,13 @@ pub fn handles_with<'a>(
                     }
                 }
             }
+            Decoration::TriangularNet { points, field } => {
+                for (i, p) in points.iter().enumerate() {
+                    push(HandleKind::ControlPoint(i, field), p, p, p.len().min(3), None);
+                }
+            }
+            // The frames of triangle-family locals are edited through `transforms`.
+            Decoration::LocalPieces(_) => {}
             Decoration::Cage { vertices, .. } => {
                 for (i, p) in vertices.iter().enumerate() {
                     push(HandleKind::ControlPoint(i, "vertices"), p, p, 3, None);

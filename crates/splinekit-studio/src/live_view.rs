@@ -326,7 +326,8 @@ impl Splice<'_> {
         };
         let changed: Vec<usize> = (0..n).filter(|&k| entry(self.before, k) != entry(doc, k)).collect();
         let locals = if style.local_pieces { n } else { 0 };
-        if items.lines.len() != locals + 1 || items.points.len() < locals {
+        // A colour-mapped line is coloured from the whole curve: composed again whole.
+        if style.color_map.is_some() || items.lines.len() != locals + 1 || items.points.len() < locals {
             return None;
         }
         let line = items.lines.end - 1;

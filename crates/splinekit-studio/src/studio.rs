@@ -89,7 +89,13 @@ fn overlay_handles(
         }
     }
     for points in rows.into_iter().chain(columns).filter(|l| l.len() > 1) {
-        rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
+        rs.lines.push(LineItem {
+            points,
+            closed: false,
+            color: [0.35, 0.35, 0.35, 1.0],
+            width: 1.0,
+            colors: Vec::new(),
+        });
     }
     // The renderer marks local curves' origins; a copy of a split knot has its handle off
     // the origin (the joint), drawn here with a line to the joint it turns about.
@@ -97,7 +103,13 @@ fn overlay_handles(
     for h in handles.iter().filter(|h| drawn(h) && h.shown_with(selected)) {
         if let Some(pivot) = h.pivot {
             let points = [pivot, h.position].map(|p| p.map(|x| x as f32)).to_vec();
-            rs.lines.push(LineItem { points, closed: false, color: [0.35, 0.35, 0.35, 1.0], width: 1.0 });
+            rs.lines.push(LineItem {
+                points,
+                closed: false,
+                color: [0.35, 0.35, 0.35, 1.0],
+                width: 1.0,
+                colors: Vec::new(),
+            });
         }
         let position = h.position.map(|x| x as f32);
         rs.points.push(PointItem { position, color: [0.15, 0.15, 0.15, 1.0], size: 7.0 });

@@ -5,7 +5,8 @@
 //! curves and surfaces, surfaces made from curves (revolution, ruled, extrusion, sweep,
 //! Coons, loft, trimmed), blending splines (GERBS/ERBS curves and surfaces with affine
 //! frames and animation), least-squares fitting and interpolation, knot insertion and
-//! removal, degree elevation, splitting and subdivision.
+//! removal, degree elevation, splitting and subdivision, and triangles (Bézier triangles,
+//! sub-triangles, triangular B-functions and GERBS triangles).
 //!
 //! Points are `nalgebra` vectors [`Point<D>`] with a compile-time dimension. Every
 //! constructor validates its input and returns [`Result`]; nothing here prints, reads
@@ -40,6 +41,8 @@ pub mod taylor;
 #[cfg(test)]
 mod test_stream;
 pub mod tolerance;
+pub mod triangle;
+pub mod triangulation;
 
 pub use error::{Error, Result};
 pub use interval::{Interval, ParamRect};

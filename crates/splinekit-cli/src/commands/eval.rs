@@ -24,7 +24,8 @@ pub struct EvalArgs {
     pub shape: String,
     /// Parameters to evaluate at, comma-separated: T,T,... for curves (e.g. 0,0.25,0.5),
     /// U:V,U:V,... for surfaces. Open directions refuse parameters outside the domain;
-    /// closed ones wrap them around.
+    /// closed ones wrap them around. Triangle documents also take T:U:V (triangle T at the
+    /// barycentric point (u, v, 1 − u − v)) or T:U:V:W, with partials in (u, v).
     #[arg(long, allow_hyphen_values = true)]
     pub at: Option<String>,
     /// Curves: number of parameters spread evenly over the whole domain, ends included.
@@ -290,15 +291,25 @@ fn prepare(doc: ShapeDocument, args: &EvalArgs, order: usize) -> Result<Answer> 
             if order > MAX_SURFACE_DERIVATIVES {
                 bail!("--derivatives: {order} is more than the limit of {MAX_SURFACE_DERIVATIVES} for surfaces");
             }
-            let at = args.at.as_deref().map(parse_surface_params).transpose()?;
+            let (at, triangles) = match args.at.as_deref().map(parse_surface_params).transpose()? {
+                None => (None, None),
+                Some(SurfaceAt::Pairs(p)) => (Some(p), None),
+                Some(SurfaceAt::Triangles(t)) => (None, Some(t)),
+            };
             let grid = args.grid.as_deref().map(parse_grid).transpose()?;
             let cost = s.cost();
             crate::budget::check_shape(&cost)?;
-            let request = super::eval_surface::EvalSurface { at: at.as_deref(), grid, order };
+            let request =
+                super::eval_surface::EvalSurface { at: at.as_deref(), triangles: triangles.as_deref(), grid, order };
             request.check_budget(s.dimension()?, &cost)?;
             let surface = s.build()?;
             Ok(Box::new(move |out: &mut JsonOut| {
-                let request = super::eval_surface::EvalSurface { at: at.as_deref(), grid, order };
+                let request = super::eval_surface::EvalSurface {
+                    at: at.as_deref(),
+                    triangles: triangles.as_deref(),
+                    grid,
+                    order,
+                };
                 surface.visit(super::eval_surface::SurfaceOutput { request, out })
             }))
         }
@@ -315,23 +326,58 @@ fn parse_curve_params(text: &str) -> Result<Vec<f64>> {
     parse_numbers("--at", text)
 }
 
-fn parse_surface_params(text: &str) -> Result<Vec<(f64, f64)>> {
-    let pairs: Result<Vec<(f64, f64)>> = text
-        .split(',')
-        .map(|pair| {
-            let Some((u, v)) = pair.split_once(':') else {
-                bail!("--at: surfaces take U:V pairs, got '{}'", pair.trim());
-            };
-            let u = parse_numbers("--at", u)?;
-            let v = parse_numbers("--at", v)?;
-            Ok((u[0], v[0]))
-        })
-        .collect();
-    let pairs = pairs?;
-    if pairs.len() > MAX_SAMPLES {
-        bail!("--at: more than {MAX_SAMPLES} parameters");
+/// The `--at` points of a surface: (u, v) pairs, or points (triangle, u, v) of triangles.
+enum SurfaceAt {
+    Pairs(Vec<(f64, f64)>),
+    Triangles(Vec<(usize, f64, f64)>),
+}
+
+/// How far a barycentric coordinate may stray below 0 (or their sum from 1) by rounding.
+const BARYCENTRIC_SLACK: f64 = 1e-12;
+
+fn parse_surface_params(text: &str) -> Result<SurfaceAt> {
+    let mut pairs = Vec::new();
+    let mut triangles = Vec::new();
+    for item in text.split(',') {
+        let parts: Vec<&str> = item.split(':').collect();
+        let number = |s: &str| -> Result<f64> { Ok(parse_numbers("--at", s)?[0]) };
+        match parts.as_slice() {
+            [u, v] => pairs.push((number(u)?, number(v)?)),
+            [t, u, v, rest @ ..] if rest.len() <= 1 => {
+                let t = number(t)?;
+                if !(t >= 0.0 && t.fract() == 0.0 && t < 1e15) {
+                    bail!("--at: the triangle T of T:U:V must be a whole number ≥ 0, got '{}'", item.trim());
+                }
+                let (u, v) = (number(u)?, number(v)?);
+                let w = match rest.first() {
+                    Some(w) => {
+                        let w = number(w)?;
+                        if (u + v + w - 1.0).abs() > BARYCENTRIC_SLACK {
+                            bail!("--at: u + v + w must be 1, got {u} + {v} + {w} in '{}'", item.trim());
+                        }
+                        w
+                    }
+                    None => 1.0 - u - v,
+                };
+                if u < -BARYCENTRIC_SLACK || v < -BARYCENTRIC_SLACK || w < -BARYCENTRIC_SLACK {
+                    bail!(
+                        "--at: ({u}, {v}, {w}) is outside the triangle (every barycentric coordinate must be ≥ 0) in '{}'",
+                        item.trim()
+                    );
+                }
+                triangles.push((t as usize, u, v));
+            }
+            _ => bail!("--at: surfaces take U:V pairs (triangle documents also T:U:V), got '{}'", item.trim()),
+        }
+        if pairs.len() + triangles.len() > MAX_SAMPLES {
+            bail!("--at: more than {MAX_SAMPLES} parameters");
+        }
     }
-    Ok(pairs)
+    match (pairs.is_empty(), triangles.is_empty()) {
+        (_, true) => Ok(SurfaceAt::Pairs(pairs)),
+        (true, false) => Ok(SurfaceAt::Triangles(triangles)),
+        (false, false) => bail!("--at: give either U:V pairs or T:U:V triangle points, not both"),
+    }
 }
 
 fn parse_grid(text: &str) -> Result<(usize, usize)> {

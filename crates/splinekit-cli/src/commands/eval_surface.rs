@@ -13,6 +13,8 @@ use crate::output::JsonOut;
 /// total order `order`.
 pub struct EvalSurface<'a> {
     pub at: Option<&'a [(f64, f64)]>,
+    /// Points (triangle, u, v) of a triangle document.
+    pub triangles: Option<&'a [(usize, f64, f64)]>,
     pub grid: Option<(usize, usize)>,
     pub order: usize,
 }
@@ -26,6 +28,9 @@ type Samples<const D: usize> = (Vec<(f64, f64)>, Vec<Point<D>>);
 
 impl EvalSurface<'_> {
     fn count(&self) -> usize {
+        if let Some(t) = self.triangles {
+            return t.len();
+        }
         match (self.at, self.grid) {
             (Some(list), _) => list.len(),
             (None, Some((nu, nv))) => nu * nv,
@@ -64,6 +69,9 @@ impl EvalSurface<'_> {
                 "--derivatives: the limit of a subdivision surface has partials up to order 2 here, got {}",
                 self.order
             );
+        }
+        if let Some(points) = self.triangles {
+            return self.sample_triangles(s, points, k);
         }
         let samples = match (self.at, self.grid) {
             (Some(list), _) => {
@@ -109,6 +117,37 @@ impl EvalSurface<'_> {
     }
 }
 
+impl EvalSurface<'_> {
+    /// The partials in (u, v) of triangle t at each (t, u, v) of a triangle document; the
+    /// parameters are returned as (t + u, v) only to name them in messages.
+    fn sample_triangles<const D: usize>(
+        &self,
+        s: &dyn Surface<D>,
+        points: &[(usize, f64, f64)],
+        k: usize,
+    ) -> Result<Samples<D>> {
+        let Some(atlas) = s.triangle_atlas() else {
+            bail!("--at: T:U:V points are for triangle documents; this surface takes U:V pairs");
+        };
+        let w = (k + 1) * (k + 1);
+        let mut values = vec![Point::<D>::zeros(); points.len() * w];
+        for (n, &(t, u, v)) in points.iter().enumerate() {
+            let Some(chart) = atlas.charts().get(t) else {
+                bail!("--at: triangle {t} does not exist (there are {})", atlas.charts().len());
+            };
+            chart.eval_partials(u, v, k, k, &mut values[n * w..(n + 1) * w]);
+            let printed =
+                (0..=k).flat_map(|i| (0..=k).map(move |j| (i, j))).filter(|&(i, j)| i + j >= 1 && i + j <= self.order);
+            if printed.into_iter().any(|(i, j)| !values[n * w + i * (k + 1) + j].iter().all(|x| x.is_finite())) {
+                bail!(
+                    "--derivatives: triangle {t} has no partials in (u, v) at ({u}, {v}), a corner where its parametrisation is singular (a vertex of valence other than 6 of a blending triangulation); its point and normal are given without --derivatives"
+                );
+            }
+        }
+        Ok((points.iter().map(|&(t, u, v)| (t as f64 + u, v)).collect(), values))
+    }
+}
+
 /// Streams a surface evaluation as `{"params", "points", "partials", "inside", "normals"}`.
 pub struct SurfaceOutput<'a> {
     pub request: EvalSurface<'a>,
@@ -136,7 +175,14 @@ impl DimensionVisitor<Surfaces> for SurfaceOutput<'_> {
                 out.raw(b"]")
             };
         out.raw(b"{")?;
-        list(out, "params", &mut |out, n| out.point(&[params[n].0, params[n].1], || format!("params[{n}]")))?;
+        let triangles = self.request.triangles;
+        list(out, "params", &mut |out, n| match triangles {
+            Some(t) => {
+                let (t, u, v) = t[n];
+                out.point(&[t as f64, u, v, 1.0 - u - v], || format!("params[{n}]"))
+            }
+            None => out.point(&[params[n].0, params[n].1], || format!("params[{n}]")),
+        })?;
         out.raw(b",")?;
         list(out, "points", &mut |out, n| {
             let (u, v) = params[n];
@@ -173,7 +219,14 @@ impl DimensionVisitor<Surfaces> for SurfaceOutput<'_> {
             list(out, "normals", &mut |out, n| {
                 let (u, v) = params[n];
                 let o = &values[n * w..(n + 1) * w];
-                match normal_or_limit(s, u, v, &o[k + 1], &o[1]) {
+                let normal = match (triangles, s.triangle_atlas()) {
+                    (Some(t), Some(atlas)) => {
+                        let (t, a, b) = t[n];
+                        atlas.charts()[t].normal(a, b, 1.0 - a - b)
+                    }
+                    _ => normal_or_limit(s, u, v, &o[k + 1], &o[1]),
+                };
+                match normal {
                     Some(nrm) => out.point(nrm.as_slice(), || format!("normals[{n}] (at ({u}, {v}))")),
                     None => {
                         out.abandon();

@@ -6,6 +6,7 @@ pub mod eval;
 pub mod eval_surface;
 pub mod fit;
 pub mod intersect;
+pub mod measure;
 pub mod offset;
 pub mod project;
 pub mod refine;

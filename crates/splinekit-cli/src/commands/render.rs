@@ -6,10 +6,7 @@ use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use splinekit_mesh::export::Format;
 use splinekit_render::{Camera, Image, Renderer, compose, write_gif};
-use splinekit_scene::SceneOrShape;
 use splinekit_scene::scenes::SceneDocument;
-
-use crate::input::read_text;
 
 #[derive(Args, Debug)]
 pub struct RenderArgs {
@@ -66,8 +63,7 @@ fn image_size(arg: Option<&str>, scene: &SceneDocument) -> Result<(u32, u32)> {
 }
 
 pub fn read_scene(path: &str) -> Result<SceneDocument> {
-    let text = read_text(path, "scene")?;
-    Ok(SceneOrShape::from_json_in(&text, &crate::input::document_folder(path))?.into_scene())
+    Ok(crate::input::read_document(path, "scene")?.into_scene())
 }
 
 /// Renders one frame of a scene (with `camera`, or the scene's own).

@@ -107,8 +107,7 @@ fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, fo
 
 pub fn run(args: &TessellateArgs) -> Result<()> {
     let format = Format::of_name(&args.output);
-    let text = crate::input::read_text(&args.shape, "shape")?;
-    let mut doc = match SceneOrShape::from_json_in(&text, &crate::input::document_folder(&args.shape))? {
+    let mut doc = match crate::input::read_document(&args.shape, "shape")? {
         SceneOrShape::Scene(scene) => return write_scene(&scene, args, format),
         SceneOrShape::Shape(doc) => doc,
     };

@@ -50,7 +50,13 @@ pub fn run(args: &ViewArgs) -> Result<()> {
         .map(|s| super::render::parse_size(s).map_err(|e| anyhow!(e.to_string().replace("--size", "--window-size"))))
         .transpose()?;
     let from_stdin = args.scene.as_deref() == Some("-");
-    let text = from_stdin.then(|| crate::input::read_text("-", "scene")).transpose()?;
+    // A STEP file opens as the scene of its objects (saved with Ctrl+S under a new name).
+    let step = args.scene.as_deref().filter(|p| crate::input::is_step(p));
+    let text = match step {
+        Some(path) => Some(crate::input::read_step_document(path, "scene")?.into_scene().to_value().to_string()),
+        None => from_stdin.then(|| crate::input::read_text("-", "scene")).transpose()?,
+    };
+    let from_stdin = from_stdin || step.is_some();
     if let Some(t) = &text {
         // Checked here so that a bad document fails like every command, before a window.
         splinekit_scene::SceneOrShape::from_json_in(t, std::path::Path::new("."))?;

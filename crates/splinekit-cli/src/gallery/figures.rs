@@ -181,6 +181,67 @@ pub fn bspline_basis() -> Result<Figure> {
     })
 }
 
+/// The ERBS B-function with its first three derivatives, each scaled to at most 1 (its
+/// scale in the legend): B rises from 0 to 1 with every derivative 0 at both ends.
+pub fn bfunction_derivatives() -> Result<Figure> {
+    let b = splinekit::basis::BFunction::erbs_default();
+    let mut fig =
+        SvgFigure::new(W, H, Projection::TOP).title("ERBS B-function and its derivatives B′, B″, B‴ (scaled)");
+    let at = |t: f64, k: usize| {
+        let mut out = [0.0; 4];
+        b.eval(t, &mut out);
+        out[k]
+    };
+    let mut legend = Vec::new();
+    for k in 0..4 {
+        let peak = (0..=400).map(|i| at(i as f64 / 400.0, k).abs()).fold(0.0, f64::max).max(1e-300);
+        let scale = if k == 0 { 1.0 } else { 1.0 / peak };
+        plot(&mut fig, |t| at(t, k) * scale, 0.0, 1.0, PALETTE[k]);
+        let name = ["B", "B′", "B″", "B‴"][k];
+        fig.label(&p2(1.04, 0.9 - 0.14 * k as f64), &format!("{name} ×{scale:.3}"), PALETTE[k]);
+        legend.push(format!("{name} ×{scale:.3}"));
+    }
+    fig.path(&[p2(0.0, 0.0), p2(1.0, 0.0)], false, "#000", 1.0);
+    Ok(Figure {
+        file: "bfunction_derivatives.svg",
+        caption: format!(
+            "The ERBS B-function (α = β = γ = 1, λ = ½) and its derivatives, each scaled to a peak of 1 ({}): every derivative vanishes at 0 and 1, so blending splines reproduce their locals' derivatives at the knots.",
+            legend.join(", ")
+        ),
+        svg: fig.render()?,
+    })
+}
+
+/// The blending basis of a knot vector: on [t_{k−1}, t_{k+1}] the weight of local k,
+/// B((t − t_{k−1})/(t_k − t_{k−1})) rising, then 1 − B((t − t_k)/(t_{k+1} − t_k)) falling
+/// (ERBS): each non-zero on two spans, summing to 1, flat at every knot.
+pub fn blending_basis() -> Result<Figure> {
+    let knots = [0.0, 1.0, 1.5, 3.0, 4.0];
+    let b = splinekit::basis::BFunction::erbs_default();
+    let mut fig = SvgFigure::new(W, H, Projection::TOP).title("ERBS blending basis on the knots 0, 1, 1.5, 3, 4");
+    let n = knots.len();
+    for k in 0..n {
+        let weight = |t: f64| {
+            if k > 0 && t >= knots[k - 1] && t <= knots[k] {
+                b.value((t - knots[k - 1]) / (knots[k] - knots[k - 1]))
+            } else if k + 1 < n && t >= knots[k] && t <= knots[k + 1] {
+                1.0 - b.value((t - knots[k]) / (knots[k + 1] - knots[k]))
+            } else {
+                0.0
+            }
+        };
+        plot(&mut fig, weight, knots[0], knots[n - 1], PALETTE[k % PALETTE.len()]);
+    }
+    fig.path(&[p2(knots[0], 0.0), p2(knots[n - 1], 0.0)], false, "#000", 1.0);
+    let ticks: Vec<Point<2>> = knots.iter().map(|&t| p2(t, 0.0)).collect();
+    fig.dots(&ticks, 4.0, "#000");
+    Ok(Figure {
+        file: "blending_basis.svg",
+        caption: "The blending basis of a knot vector: local k weighs B∘w on its two spans (ERBS), so the weights sum to 1 and each is flat at every knot.".into(),
+        svg: fig.render()?,
+    })
+}
+
 /// The exact NURBS circle.
 pub fn nurbs_circle() -> Result<Figure> {
     let c = NurbsCurve::circle(&CircleFrame {

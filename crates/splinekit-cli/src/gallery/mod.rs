@@ -90,6 +90,8 @@ fn plots(folder: &Folder) -> Result<Vec<Entry>> {
         figures::de_casteljau()?,
         figures::bernstein_basis()?,
         figures::bspline_basis()?,
+        figures::bfunction_derivatives()?,
+        figures::blending_basis()?,
         figures::nurbs_circle()?,
         figures::hermite_and_catmull_rom()?,
         figures::subdivision_schemes()?,

@@ -174,7 +174,7 @@ pub fn torus_cylinder(renderer: &Renderer) -> Result<Rendered> {
     for b in &branches {
         let pts = b.points.iter().map(|p| [p.x as f32, p.y as f32, p.z as f32]).collect();
         let red = [0.8, 0.05, 0.05, 1.0];
-        scene.lines.push(LineItem { points: pts, closed: b.closed, color: red, width: 5.0 });
+        scene.lines.push(LineItem { points: pts, closed: b.closed, color: red, width: 5.0, colors: Vec::new() });
         let strip = b.points.iter().map(|p| [p.x, p.y, p.z]).collect();
         gltf.objects.push(GltfObject {
             name: "loop".to_string(),

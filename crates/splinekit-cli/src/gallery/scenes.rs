@@ -112,6 +112,26 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         include_str!("../../../../examples/scenes/torus_gaussian_curvature.json"),
         "The torus coloured by Gaussian curvature (red positive, blue negative).",
     ),
+    (
+        "bezier_triangle_net",
+        include_str!("../../../../examples/scenes/bezier_triangle_net.json"),
+        "A cubic Bézier triangle with its triangular control net (lines of constant i, j and k); STEP writes it exactly as its degenerate bicubic patch.",
+    ),
+    (
+        "gerbs_triangle_locals",
+        include_str!("../../../../examples/scenes/gerbs_triangle_locals.json"),
+        "A GERBS triangle: three quadratic Hermite locals of a triangle on a sphere (outlines, each in its colour with its corner), blended by rational ERBS weights; local v is moved up.",
+    ),
+    (
+        "blending_sphere_moved",
+        include_str!("../../../../examples/scenes/blending_sphere_moved.json"),
+        "A blending surface over the icosphere (42 vertex locals in conformal charts, radial ERBS weights, smooth across every edge); one local moved out and scaled changes only its star.",
+    ),
+    (
+        "blending_sphere_animated",
+        include_str!("../../../../examples/scenes/blending_sphere_animated.json"),
+        "The blending surface over the icosphere with three locals animated (oscillate, pulse).",
+    ),
     ("klein_bottle", include_str!("../../../../examples/scenes/klein_bottle.json"), "The Klein bottle model surface."),
     ("seashell", include_str!("../../../../examples/scenes/seashell.json"), "The seashell model surface."),
     ("apple", include_str!("../../../../examples/scenes/apple.json"), "The apple model surface."),

@@ -79,7 +79,13 @@ pub fn figures(renderer: &Renderer) -> Result<Vec<Figure>> {
         };
         for face in &cage.faces {
             let pts = face.iter().map(|&i| cage.vertices[i as usize].map(|x| x as f32)).collect();
-            scene.lines.push(LineItem { points: pts, closed: true, color: [0.3, 0.3, 0.3, 1.0], width: 1.5 });
+            scene.lines.push(LineItem {
+                points: pts,
+                closed: true,
+                color: [0.3, 0.3, 0.3, 1.0],
+                width: 1.5,
+                colors: Vec::new(),
+            });
         }
         for v in &cage.vertices {
             scene.points.push(PointItem { position: v.map(|x| x as f32), color: [0.1, 0.1, 0.1, 1.0], size: 8.0 });

@@ -36,6 +36,9 @@ pub enum GltfGeometry {
     Mesh(TriangleMesh),
     /// A polyline (closed ones repeat their first point at the end).
     LineStrip(Vec<[f64; 3]>),
+    /// A polyline with a linear RGBA colour per point (`COLOR_0`, a colour map), one per
+    /// point of the strip.
+    ColoredLineStrip(Vec<[f64; 3]>, Vec<[f32; 4]>),
 }
 
 /// A glTF scene of several objects.
@@ -181,6 +184,15 @@ impl GltfScene {
             GltfGeometry::LineStrip(points) => {
                 let position = b.floats(points, "VEC3", true, Some(34962), named("POSITION"))?;
                 json!({"attributes": {"POSITION": position}, "mode": 3, "material": k})
+            }
+            GltfGeometry::ColoredLineStrip(points, colors) => {
+                let position = b.floats(points, "VEC3", true, Some(34962), named("POSITION"))?;
+                let mut attrs = json!({"POSITION": position});
+                if colors.len() == points.len() {
+                    let c: Vec<[f64; 4]> = colors.iter().map(|c| c.map(f64::from)).collect();
+                    attrs["COLOR_0"] = json!(b.floats(&c, "VEC4", false, Some(34962), named("COLOR_0"))?);
+                }
+                json!({"attributes": attrs, "mode": 3, "material": k})
             }
         })
     }

@@ -41,6 +41,11 @@ __all__ = [
     "BohemianDome",
     "BentHorns",
     "AsteroidalSphere",
+    "BezierTriangle",
+    "SubTriangle",
+    "GerbsTriangle",
+    "Triangulation",
+    "BlendingTriangulation",
     "Scene",
     "FitReport",
     "Mesh",
@@ -318,6 +323,24 @@ class BentHorns(Surface):
 @final
 class AsteroidalSphere(Surface):
     def __new__(cls, **fields: Any) -> "AsteroidalSphere": ...
+class BezierTriangle(Surface):
+    def __new__(cls, **fields: Any) -> "BezierTriangle": ...
+
+@final
+class SubTriangle(Surface):
+    def __new__(cls, **fields: Any) -> "SubTriangle": ...
+
+@final
+class GerbsTriangle(Surface):
+    def __new__(cls, **fields: Any) -> "GerbsTriangle": ...
+
+@final
+class Triangulation(Surface):
+    def __new__(cls, **fields: Any) -> "Triangulation": ...
+
+@final
+class BlendingTriangulation(Surface):
+    def __new__(cls, **fields: Any) -> "BlendingTriangulation": ...
 
 @final
 class Mesh(_Pickled):

@@ -17,6 +17,7 @@ use splinekit::curve::bezier::bezier_knots;
 use splinekit::curve::{Curve as KernelCurve, Interval};
 use splinekit::query::extent::sampled_surface_box;
 use splinekit::surface::Surface as KernelSurface;
+use splinekit::triangle::{BezierTriangle, RationalBezierTriangle, TriangleAtlas};
 use splinekit_scene::blending::LocalPatchDoc;
 use splinekit_scene::{CurveDocument, ShapeDocument, SurfaceDocument, SurfaceForm};
 use std::f64::consts::{FRAC_PI_2, TAU};
@@ -125,6 +126,7 @@ fn elementary_surface(doc: &SurfaceDocument) -> Result<Option<(Surface, ParamMap
         | SurfaceForm::Placed(_)
         | SurfaceForm::BlendingSpline(_)
         | SurfaceForm::Brep(_)
+        | SurfaceForm::Triangles
         | SurfaceForm::Approximate => return Ok(None),
     }))
 }
@@ -242,6 +244,17 @@ pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64
     if let SurfaceForm::Brep(_) = form {
         return Err(StepError::plain("brep: a B-rep is exported face by face, one item each (export_document)"));
     }
+    if let SurfaceForm::Triangles = form {
+        let mut items = export_triangles(doc, name, relative_tolerance)?;
+        if items.len() != 1 {
+            return Err(StepError::plain(format!(
+                "{}: {} triangles are exported one item each (export_document)",
+                doc.type_name(),
+                items.len()
+            )));
+        }
+        return Ok(items.remove(0));
+    }
     if let SurfaceForm::Trimmed(t) = form {
         let within = |e: StepError| StepError::plain(format!("surface: {}", e.message));
         let base = export_surface(&t.surface, name, relative_tolerance).map_err(within)?;
@@ -272,6 +285,60 @@ pub fn export_surface(doc: &SurfaceDocument, name: &str, relative_tolerance: f64
     Ok(make(Surface::Spline(fitted.spline), form, fitted.max_deviation, ParamMap::IDENTITY))
 }
 
+/// A document of several triangles ([`SurfaceForm::Triangles`]) as one item per triangle,
+/// named `name` and the triangle's number: chart c (u ∈ [c, c + 1], v ∈ [0, 1] of the
+/// document, u' = u − c in STEP) is a Bézier triangle's exact degenerate tensor patch of
+/// degree (n, n) (a rational one's NURBS patch), or for other triangles a biquintic Hermite
+/// B-spline within the tolerance, relative to the whole surface's size.
+pub fn export_triangles(doc: &SurfaceDocument, name: &str, relative_tolerance: f64) -> Result<Vec<Exported>> {
+    let kernel = kernel_surface(doc)?;
+    let Some(atlas) = kernel.triangle_atlas() else {
+        return Err(StepError::plain(format!("{}: the surface is not made of triangles", doc.type_name())));
+    };
+    let tolerance = relative_tolerance * surface_size(kernel.as_ref());
+    let unit = Interval::new(0.0, 1.0);
+    let mut out = Vec::with_capacity(atlas.charts().len());
+    for (c, chart) in atlas.charts().iter().enumerate() {
+        let domain = (Interval::new(c as f64, c as f64 + 1.0), unit);
+        let map = ParamMap { u: (1.0, -(c as f64)), v: (1.0, 0.0) };
+        let exact = |surface: SplineSurface| (surface, Form::Exact, 0.0);
+        let rows = |rows: &[Vec<Point<3>>]| -> Vec<Vec<Vec<f64>>> {
+            rows.iter().map(|row| row.iter().map(|x| x.as_slice().to_vec()).collect()).collect()
+        };
+        let invalid = |e: splinekit::Error| StepError::plain(format!("{name} triangle {c}: {e}"));
+        let (surface, form, max_deviation) = match chart.bezier_net() {
+            Some(net) if net.weights.is_none() => {
+                let patch = BezierTriangle::new(net.points.to_vec()).map_err(invalid)?.to_tensor_patch();
+                let (p, q) = patch.degrees();
+                let net = rows(patch.control_points());
+                exact(spline_surface((p, q), &bezier_knots(p), &bezier_knots(q), &net, None, (false, false))?)
+            }
+            Some(net) => {
+                let weights = net.weights.unwrap_or_default().to_vec();
+                let patch =
+                    RationalBezierTriangle::new(net.points.to_vec(), weights).map_err(invalid)?.to_tensor_patch();
+                let (ku, kv) = patch.knots();
+                let net = rows(patch.control_points());
+                exact(spline_surface(patch.degrees(), ku, kv, &net, Some(patch.weights()), (false, false))?)
+            }
+            None => {
+                let single = TriangleAtlas::single(chart.clone());
+                let fitted = hermite_surface(&single, &uniform_breaks(unit, 4), &uniform_breaks(unit, 4), tolerance)?;
+                (fitted.spline, Form::Approximated, fitted.max_deviation)
+            }
+        };
+        out.push(Exported {
+            item: Item { name: format!("{name} triangle {c}"), geometry: Geometry::Surface(Surface::Spline(surface)) },
+            form,
+            max_deviation,
+            tolerance,
+            map,
+            domain,
+        });
+    }
+    Ok(out)
+}
+
 /// A `placed` document: its surface's export carried rigidly into the placement (same
 /// form, deviation and parameter map; the document has been built, so its frame is valid).
 fn placed_surface(doc: &PlacedDoc, name: &str, relative_tolerance: f64) -> Result<Exported> {
@@ -299,6 +366,8 @@ fn surface_exports_exactly(doc: &SurfaceDocument) -> bool {
     match doc.exact_form() {
         Err(_) | Ok(SurfaceForm::Approximate) => false,
         Ok(SurfaceForm::Brep(b)) => super::solid::brep_faces(b).is_ok_and(|faces| faces.iter().all(exports_exactly)),
+        Ok(SurfaceForm::Triangles) => kernel_surface(doc)
+            .is_ok_and(|k| k.triangle_atlas().is_some_and(|a| a.charts().iter().all(|c| c.bezier_net().is_some()))),
         Ok(SurfaceForm::Revolution(d)) => curve_exports_exactly(&d.curve),
         Ok(SurfaceForm::Extrusion(d)) => curve_exports_exactly(&d.curve),
         Ok(SurfaceForm::Trimmed(t)) => {

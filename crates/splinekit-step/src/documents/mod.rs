@@ -8,10 +8,10 @@ pub mod faces;
 pub mod subdivision;
 
 pub use curve_export::export_curve;
-pub use export::{Sample, export_shape, export_surface, exports_exactly, samples};
+pub use export::{Sample, export_shape, export_surface, export_triangles, exports_exactly, samples};
 pub use exported::{Exported, Form, ParamMap};
 
-use splinekit_scene::{SceneOrShape, ShapeDocument};
+use splinekit_scene::{SceneOrShape, ShapeDocument, SurfaceForm};
 
 use crate::error::{Result, StepError};
 use crate::export::write_step;
@@ -37,18 +37,27 @@ pub fn export_document(
     header: &HeaderInfo,
 ) -> Result<(String, Vec<Exported>)> {
     let expanded = solid::expand_breps(&subdivision::expand_subdivision_surfaces(doc, relative_tolerance)?)?;
+    // Documents of several triangles give one item per triangle.
+    let items_of = |shape: &ShapeDocument, name: &str| -> Result<Vec<Exported>> {
+        match shape {
+            ShapeDocument::Surface(s) if matches!(s.exact_form(), Ok(SurfaceForm::Triangles)) => {
+                export_triangles(s, name, relative_tolerance)
+            }
+            _ => Ok(vec![export_shape(shape, name, relative_tolerance)?]),
+        }
+    };
     let exported: Vec<Exported> = match &expanded {
-        SceneOrShape::Shape(shape) => vec![export_shape(shape, name, relative_tolerance)?],
-        SceneOrShape::Scene(scene) => scene
-            .objects
-            .iter()
-            .enumerate()
-            .map(|(i, o)| {
+        SceneOrShape::Shape(shape) => items_of(shape, name)?,
+        SceneOrShape::Scene(scene) => {
+            let mut all = Vec::new();
+            for (i, o) in scene.objects.iter().enumerate() {
                 let n = object_name(i, &o.shape);
-                export_shape(&o.shape, &n, relative_tolerance)
-                    .map_err(|e| StepError::plain(format!("objects[{i}]: {}", e.message)))
-            })
-            .collect::<Result<_>>()?,
+                all.extend(
+                    items_of(&o.shape, &n).map_err(|e| StepError::plain(format!("objects[{i}]: {}", e.message)))?,
+                );
+            }
+            all
+        }
     };
     let items: Vec<_> = exported.iter().map(|e| e.item.clone()).collect();
     Ok((write_step(&items, name, header), exported))

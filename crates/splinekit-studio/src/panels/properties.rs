@@ -8,13 +8,13 @@
 use serde_json::{Value, json};
 use splinekit::curve::Curve;
 use splinekit_scene::bfunctions::{BFunctionDoc, ErbsDoc};
-use splinekit_scene::scenes::ColorMapDoc;
+use splinekit_scene::scenes::{ArrowFieldDoc, ArrowPlacementDoc, ColorMapDoc};
 use splinekit_scene::{Curves, Decoration, DimensionVisitor, ShapeDocument};
 
 use super::context::PanelContext;
 use super::fields::{count, error_label, number, read, toggle, write};
 use super::knots::{CURVE, NET_U, NET_V, knot_style};
-use super::plot::bfunction_plot;
+use super::plot::{bfunction_plot, blending_basis_plot};
 use crate::actions::{ACTIONS, Action};
 use crate::command::Command;
 use crate::knot_edit::KnotTool;
@@ -72,9 +72,9 @@ fn properties(ui: &mut egui::Ui, cx: &mut PanelContext<'_>) {
     ui.label(format!("objects[{object}]: {ty}"));
     ui.separator();
     style(ui, cx, object);
-    if matches!(cx.scene.objects[object].shape, ShapeDocument::Surface(_)) {
-        color_map(ui, cx, object);
-    }
+    let surface = matches!(cx.scene.objects[object].shape, ShapeDocument::Surface(_));
+    color_map(ui, cx, object, surface);
+    arrows(ui, cx, object, surface);
     ui.separator();
     match Editors::of(&cx.scene.objects[object].shape) {
         Editors::SplineCurve => {
@@ -136,15 +136,17 @@ fn knot_edits(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, surface: bool) {
     });
 }
 
-/// The colour map of a surface: none, curvature, parameter, zebra stripes or isophotes.
-fn color_map(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
+/// The colour map: none, or one of those the shape takes (a surface's curvatures,
+/// coordinates, parameters, speeds, zebra stripes or isophotes; a curve's coordinates,
+/// parameter, speed, curvature or torsion).
+fn color_map(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, surface: bool) {
     let current = cx.scene.objects[object].style.color_map;
     let mut chosen = current;
     let combo = egui::ComboBox::from_label("colour map")
         .selected_text(current.map_or("none", ColorMapDoc::name))
         .show_ui(ui, |ui| {
             ui.selectable_value(&mut chosen, None, "none");
-            for m in ColorMapDoc::ALL {
+            for m in ColorMapDoc::ALL.into_iter().filter(|m| if surface { m.for_surfaces() } else { m.for_curves() }) {
                 ui.selectable_value(&mut chosen, Some(m), m.name());
             }
         });
@@ -153,6 +155,35 @@ fn color_map(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
         write(cx, object, "/color_map", chosen.map(|m| m.name().into()));
     }
     error_label(ui, cx, "/color_map");
+}
+
+/// Arrows of a vector field: none, or a field the shape has, over all of it or on its
+/// boundary only.
+fn arrows(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize, surface: bool) {
+    let current = cx.scene.objects[object].style.arrows.clone();
+    let field = current.as_ref().map(|a| a.field);
+    let mut chosen = field;
+    let combo = egui::ComboBox::from_label("arrows").selected_text(field.map_or("none", ArrowFieldDoc::name)).show_ui(
+        ui,
+        |ui| {
+            ui.selectable_value(&mut chosen, None, "none");
+            for f in ArrowFieldDoc::ALL.into_iter().filter(|f| if surface { f.for_surfaces() } else { f.for_curves() })
+            {
+                ui.selectable_value(&mut chosen, Some(f), f.name());
+            }
+        },
+    );
+    cx.widgets.push(("arrows".into(), super::rect(&combo.response)));
+    if chosen != field {
+        write(cx, object, "/arrows", chosen.map(|f| serde_json::json!({"field": f.name()})));
+    }
+    if let Some(a) = current {
+        let mut boundary = a.on == ArrowPlacementDoc::Boundary;
+        if ui.checkbox(&mut boundary, "arrows on the boundary only").changed() {
+            write(cx, object, "/arrows/on", Some(if boundary { "boundary" } else { "all" }.into()));
+        }
+    }
+    error_label(ui, cx, "/arrows");
 }
 
 fn style(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
@@ -328,9 +359,24 @@ fn bfunction(ui: &mut egui::Ui, cx: &mut PanelContext<'_>, object: usize) {
         .and_then(|v| BFunctionDoc::from_value(v).ok())
         .and_then(|d| d.build().ok())
     {
-        ui.label("B (text colour) and B' (orange):");
+        ui.label("B (text colour), B' (orange) and B'' (blue):");
         bfunction_plot(ui, &b, egui::vec2(200.0, 90.0));
+        if let Some(knots) = curve_knots(cx, object) {
+            ui.label("the blending basis of the knots:");
+            blending_basis_plot(ui, &b, &knots, egui::vec2(200.0, 70.0));
+        }
     }
+}
+
+/// The knots of a blending curve: its `knots`, else 0, 1, …, n (n local curves, one knot
+/// more when closed) standing in for its even knots over the model's domain.
+fn curve_knots(cx: &PanelContext<'_>, object: usize) -> Option<Vec<f64>> {
+    if let Some(k) = read(cx, object, "/shape/knots").and_then(|v| serde_json::from_value::<Vec<f64>>(v).ok()) {
+        return Some(k);
+    }
+    let n = read(cx, object, "/shape/local_curves")?.as_u64()? as usize;
+    let closed = read(cx, object, "/shape/closed").and_then(|v| v.as_bool()).unwrap_or(false);
+    (2..=4096).contains(&n).then(|| (0..n + usize::from(closed)).map(|i| i as f64).collect())
 }
 
 /// The selected handle's value for exact entry (translation of a local piece, or the

@@ -178,6 +178,36 @@ impl BFunction {
         }
     }
 
+    /// The order k of flatness at both ends: the largest k with
+    /// B^{(j)}(0) = B^{(j)}(1) = 0 for 1 ≤ j ≤ k, so that B − B(0) and B − B(1) vanish to
+    /// order k + 1 there and blends are C^k. `None` for ERBS, flat to every order.
+    ///
+    /// | kind | k |
+    /// | --- | --- |
+    /// | linear | 0 |
+    /// | polynomial of smoothness k, beta (a, b) | k, min(a, b) |
+    /// | trigonometric | 2 |
+    /// | half-cosine, rational | 1 |
+    /// | ERBS | every order (`None`) |
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use splinekit::basis::BFunction;
+    /// assert_eq!(BFunction::polynomial(2).unwrap().flatness(), Some(2));
+    /// assert_eq!(BFunction::beta(3, 1).unwrap().flatness(), Some(1));
+    /// assert_eq!(BFunction::erbs_default().flatness(), None);
+    /// ```
+    pub fn flatness(&self) -> Option<usize> {
+        match self {
+            BFunction::Linear => Some(0),
+            BFunction::Bernstein { a, degree } => Some((*a).min(degree - a - 1)),
+            BFunction::Trigonometric => Some(2),
+            BFunction::HalfCosine | BFunction::Rational => Some(1),
+            BFunction::Erbs(_) => None,
+        }
+    }
+
     /// B(t).
     pub fn value(&self, t: f64) -> f64 {
         let mut o = [0.0];

@@ -25,6 +25,8 @@
 //! u ∈ [k, k + 1], v ∈ [0, 1], mapped affinely onto the box of the face's loops in its own
 //! (u, v). Points of a chart outside the face's loops are its untrimmed surface.
 
+pub mod integrals;
+
 use crate::curve::{Curve, Interval};
 use crate::surface::Surface;
 use crate::{Error, Point, Result};

@@ -75,7 +75,7 @@ impl<const D: usize> NurbsSurface<D> {
 }
 
 /// Turns homogeneous partials h[i·(dv+1)+j] into the rational surface's partials.
-fn rational_partials<const D: usize>(h: &[Homogeneous<D>], du: usize, dv: usize, out: &mut [Point<D>]) {
+pub(crate) fn rational_partials<const D: usize>(h: &[Homogeneous<D>], du: usize, dv: usize, out: &mut [Point<D>]) {
     let w = dv + 1;
     let w0 = h[0].weight;
     for k in 0..=du {
