@@ -119,7 +119,7 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         (None, false) => String::new(),
         (None, true) => bail!("-o: an output file is needed (or --at FACE,U,V to evaluate)"),
     };
-    let format = Format::of_name(&output);
+    let format = Format::of_output(&output);
     if at.is_empty() && !format.is_some_and(|f| Subject::SubdivisionCage.formats().contains(&f)) {
         bail!("-o: writes {}, not '{output}'", phrase(Subject::SubdivisionCage.formats()));
     }

@@ -106,7 +106,7 @@ fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, fo
 }
 
 pub fn run(args: &TessellateArgs) -> Result<()> {
-    let format = Format::of_name(&args.output);
+    let format = Format::of_output(&args.output);
     let mut doc = match crate::input::read_document(&args.shape, "shape")? {
         SceneOrShape::Scene(scene) => return write_scene(&scene, args, format),
         SceneOrShape::Shape(doc) => doc,

@@ -94,6 +94,13 @@ impl Format {
         name.rsplit_once('.').and_then(|(_, ext)| Format::from_extension(ext))
     }
 
+    /// The format of a mesh output named on the command line (`tessellate -o`,
+    /// `subdivide-surface -o`): what follows its last dot, or the whole name where it has
+    /// none (a file named `obj` is an OBJ file), as those commands have always read it.
+    pub fn of_output(name: &str) -> Option<Format> {
+        name.rsplit('.').next().and_then(Format::from_extension)
+    }
+
     /// Whether the format holds triangle meshes.
     pub fn holds_triangles(self) -> bool {
         Format::MESHES.contains(&self)
@@ -198,6 +205,9 @@ mod tests {
         assert_eq!(Format::of_name(".obj"), Some(Format::Obj));
         assert_eq!(Format::of_name("obj"), None);
         assert_eq!(Format::of_name("a.b/c.STP"), Some(Format::Step));
+        assert_eq!(Format::of_output("obj"), Some(Format::Obj));
+        assert_eq!(Format::of_output("a/b.ply"), Some(Format::Ply));
+        assert_eq!(Format::of_output("a.b/obj"), None);
         assert_eq!(phrase(&[Format::Obj]), ".obj");
         assert_eq!(phrase(&[Format::Obj, Format::Ply]), ".obj or .ply");
         assert_eq!(
