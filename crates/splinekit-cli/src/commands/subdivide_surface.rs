@@ -69,7 +69,7 @@ pub struct SubdivideSurfaceArgs {
     /// diagonal) of the exact limit, instead of --steps levels.
     #[arg(long)]
     pub tolerance: Option<f64>,
-    /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals),
+    /// Output: .obj (polygons), .stl, .stla, .ply, .gltf or .glb (triangulated, with normals),
     /// .step (Catmull–Clark or Loop limit surface: exact bicubic, or (4, 4) with one edge
     /// collapsed, patches on regular faces, faces at extraordinary vertices (and creases,
     /// Loop boundaries) refined locally --steps times (up to 30) or to --tolerance, the
