@@ -489,9 +489,12 @@ fn scene_shape(scene: &str) -> Option<Shape> {
             open(1, true)
         }
         "trimmed_surface" => open(2, true),
+        "bezier_triangle_net" | "gerbs_triangle_locals" => open(1, true),
         "mobius" => open(1, false),
         "klein_bottle" => Shape::ClosedNonOrientable,
-        "blending_torus_local_patches"
+        "blending_sphere_animated"
+        | "blending_sphere_moved"
+        | "blending_torus_local_patches"
         | "nurbs_torus"
         | "sweep_trefoil"
         | "torus_after"

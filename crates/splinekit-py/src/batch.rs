@@ -28,10 +28,11 @@ fn on_pool<T: Send>(threads: Option<usize>, work: impl FnOnce() -> T + Send) -> 
     }
 }
 
-/// A message of item `i` of a batch argument, naming it (`point_sets[3]: …`).
+/// A message of item `i` of a batch argument, naming it (`point_sets[3]: …`): the same
+/// exception class, the message prefixed.
 fn item_error(field: &str, i: usize, e: PyErr, py: Python<'_>) -> PyErr {
     if e.is_instance_of::<pyo3::exceptions::PyValueError>(py) {
-        value_error(format!("{field}[{i}]: {}", e.value(py)))
+        PyErr::from_type(e.get_type(py), format!("{field}[{i}]: {}", e.value(py)))
     } else {
         e
     }
@@ -66,7 +67,7 @@ fn fit_sets<'py>(
     })?;
     let curves = PyList::empty(py);
     for (i, r) in results.into_iter().enumerate() {
-        let (doc, report) = r.map_err(|e| value_error(format!("point_sets[{i}]: {e}")))?;
+        let (doc, report) = r.map_err(|e| e.about(&format!("point_sets[{i}]")).into_py())?;
         curves.append(wrap(py, PyCurve::new(doc)?, Some(Py::new(py, report)?))?)?;
     }
     Ok(curves)

@@ -220,7 +220,7 @@ pub fn any_document(ob: &Bound<'_, PyAny>) -> PyResult<Value> {
 fn document_value(doc: &Bound<'_, PyAny>) -> PyResult<Value> {
     let read = |path: &std::path::Path| {
         std::fs::read_to_string(path)
-            .map_err(|e| value_error(format!("document: cannot read '{}': {e}", path.display())))
+            .map_err(|e| crate::errors::file_error(format!("document: cannot read '{}': {e}", path.display())))
     };
     let (text, path): (Option<String>, Option<std::path::PathBuf>) = if let Ok(s) = doc.extract::<String>() {
         if s.trim_start().starts_with('{') {

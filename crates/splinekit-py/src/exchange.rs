@@ -10,9 +10,8 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 use serde_json::Value;
 use splinekit::subdivision::{ChaikinOptions, FourPointOptions, chaikin, four_point, lane_riesenfeld};
-use splinekit_mesh::export::by_extension::{MESH_FORMATS, formats_phrase, mesh_bytes, polyline_bytes};
-use splinekit_mesh::export::{GltfGeometry, GltfObject, GltfScene};
-use splinekit_mesh::{Projection, SvgFigure};
+use splinekit_mesh::export::by_extension::{mesh_bytes, polyline_bytes, polyline_svg};
+use splinekit_mesh::export::{Format, GltfGeometry, GltfObject, GltfScene, Subject};
 use splinekit_scene::budget::Cost;
 use splinekit_scene::points::{from_points, to_points};
 use splinekit_scene::scenes::SceneDocument;
@@ -24,7 +23,7 @@ use splinekit_step::part21::writer::HeaderInfo;
 use crate::arrays::Numbers;
 use crate::budget;
 use crate::documents::any_document;
-use crate::errors::{OrValueError, value_error};
+use crate::errors::{Failure, OrValueError, file_error, value_error};
 use crate::json_value::to_python;
 use crate::mesh::{CurvePoints, MAX_ADAPTIVE_CELLS, MAX_CURVE_POINTS, MAX_DENSITY, PyMesh, SurfaceTriangles};
 
@@ -51,7 +50,7 @@ fn stem(path: &Path) -> String {
 
 fn write(path: &Path, bytes: &[u8]) -> PyResult<()> {
     splinekit_scene::write_file(path, bytes)
-        .map_err(|e| value_error(format!("path: cannot write '{}': {e}", path.display())))
+        .map_err(|e| file_error(format!("path: cannot write '{}': {e}", path.display())))
 }
 
 /// What `_read_step` returns: the items as (name, document) and the entity types not
@@ -64,11 +63,19 @@ type ReadStep<'py> = (Vec<(String, Bound<'py, PyAny>)>, Vec<(String, usize)>);
 #[pyfunction]
 pub fn _read_step(py: Python<'_>, path: PathBuf) -> PyResult<ReadStep<'_>> {
     let imported = py
-        .detach(|| -> Result<_, String> {
-            let file = StepFile::open(&path).map_err(|e| format!("path: {e}"))?;
-            import_items(&file).map_err(|e| format!("path: {e}"))
+        .detach(|| -> Result<_, Failure> {
+            // A file that cannot be opened is a file error, one that cannot be read as STEP
+            // a document error (the same message either way: `StepFile::open`'s).
+            let file = StepFile::open(&path).map_err(|e| {
+                let failure = Failure::from(e).about("path");
+                match std::fs::File::open(&path) {
+                    Err(_) => Failure { kind: splinekit_scene::ErrorKind::File, ..failure },
+                    Ok(_) => failure,
+                }
+            })?;
+            import_items(&file).map_err(|e| Failure::from(e).about("path"))
         })
-        .map_err(value_error)?;
+        .map_err(Failure::into_py)?;
     if imported.items.is_empty() {
         return Err(value_error("path: the file holds no curve or surface that splinekit reads"));
     }
@@ -96,15 +103,13 @@ pub fn _write_step<'py>(doc: &Bound<'py, PyAny>, path: PathBuf, tolerance: f64) 
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(value_error(format!("tolerance: must be a positive number, got {tolerance}")));
     }
-    let lower = path.to_string_lossy().to_ascii_lowercase();
-    if !(lower.ends_with(".step") || lower.ends_with(".stp")) {
+    if Format::of_path(&path) != Some(Format::Step) {
         return Err(value_error(format!("path: STEP files end in .step or .stp, not '{}'", path.display())));
     }
     let doc = SceneOrShape::from_value(any_document(doc)?).or_value_error()?;
     let name = stem(&path);
     let header = HeaderInfo { name: name.clone(), time_stamp: now_iso8601(), ..HeaderInfo::default() };
-    let (step, exported) =
-        py.detach(|| export_document(&doc, &name, tolerance, &header)).map_err(|e| value_error(e.to_string()))?;
+    let (step, exported) = py.detach(|| export_document(&doc, &name, tolerance, &header)).or_value_error()?;
     write(&path, step.as_bytes())?;
     let list = PyList::empty(py);
     for e in &exported {
@@ -164,12 +169,12 @@ pub fn _gltf<'py>(
             frames: Vec::new(),
         });
     }
-    let bytes = out.to_file_bytes(if binary { "glb" } else { "gltf" }).or_value_error()?;
+    let bytes = out.to_format_bytes(if binary { Format::Glb } else { Format::Gltf }).or_value_error()?;
     Ok((PyBytes::new(py, &bytes), period))
 }
 
 /// `splinekit tessellate SHAPE -o FILE [--density N | --tolerance E] [--time T]`: the
-/// shape's polyline or mesh, or a scene's glTF, written by extension.
+/// shape's polyline or mesh, or a scene in any mesh format, written by extension.
 #[pyfunction]
 #[pyo3(signature = (doc, path, density = None, tolerance = None, time = None))]
 pub fn _save(
@@ -182,7 +187,9 @@ pub fn _save(
     save_any(doc, &path, density, tolerance, time)
 }
 
-/// [`_save`]'s work, for `Scene.save` too; `.json` writes the document itself.
+/// [`_save`]'s work, for `Scene.save` and the shapes' `save` too, by the path's
+/// [`Format`]: `.json` writes the document itself, `.step`/`.stp` its exact geometry
+/// ([`_write_step`]), the others its tessellation.
 pub fn save_any(
     doc: &Bound<'_, PyAny>,
     path: &Path,
@@ -191,12 +198,17 @@ pub fn save_any(
     time: Option<f64>,
 ) -> PyResult<()> {
     let py = doc.py();
-    if path.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("json")) {
-        let text = serde_json::to_string(&any_document(doc)?).map_err(value_error)?;
-        return write(path, text.as_bytes());
+    let format = Format::of_path(path);
+    match format {
+        Some(Format::Json) => {
+            let text = serde_json::to_string(&any_document(doc)?).map_err(value_error)?;
+            return write(path, text.as_bytes());
+        }
+        Some(Format::Step) => return _write_step(doc, path.to_path_buf(), 1e-6).map(drop),
+        _ => {}
     }
-    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
     let shown = path.display().to_string();
+    let format_for = |subject: Subject| subject.check(format, &shown).map_err(|e| value_error(format!("path: {e}")));
     if density.is_some() && tolerance.is_some() {
         return Err(value_error("density: give density or tolerance, not both"));
     }
@@ -205,12 +217,11 @@ pub fn save_any(
     }
     let mut doc = match SceneOrShape::from_value(any_document(doc)?).or_value_error()? {
         SceneOrShape::Scene(scene) => {
-            if !matches!(ext.as_str(), "gltf" | "glb") {
-                return Err(value_error(format!("path: scenes are written as .gltf or .glb, not '{shown}'")));
-            }
-            let (scene, frames, fps) = scene_of(scene.to_value())?;
-            let gltf = py.detach(|| splinekit_render::scene_to_gltf(&scene, frames, fps)).or_value_error()?;
-            return write(path, &gltf.to_file_bytes(&ext).or_value_error()?);
+            let format = format_for(Subject::Scene)?;
+            let (scene, _, _) = scene_of(scene.to_value())?;
+            let bytes =
+                py.detach(|| splinekit_render::scene_file(&scene, format, &stem(path), time)).or_value_error()?;
+            return write(path, &bytes);
         }
         SceneOrShape::Shape(doc) => doc,
     };
@@ -222,11 +233,7 @@ pub fn save_any(
     let name = stem(path);
     let bytes = match &doc {
         ShapeDocument::Curve(c) => {
-            if !matches!(ext.as_str(), "svg" | "obj" | "gltf" | "glb") {
-                return Err(value_error(format!(
-                    "path: curves are written as .svg, .obj, .gltf or .glb, not '{shown}'"
-                )));
-            }
+            let format = format_for(Subject::Curve)?;
             let points = density.map_or(MAX_CURVE_POINTS, |n| n.min(MAX_CURVE_POINTS)) as f64 + 1.0;
             let field = if density.is_some() { "density" } else { "tolerance" };
             let what = format!("a polyline of up to {points} points");
@@ -236,19 +243,14 @@ pub fn save_any(
             let (flat, d) = py.detach(|| curve.visit(CurvePoints(density, tolerance))).or_value_error()?;
             let points: Vec<[f64; 3]> =
                 flat.chunks_exact(d).map(|p| std::array::from_fn(|k| p.get(k).copied().unwrap_or(0.0))).collect();
-            if ext == "svg" {
-                svg_of(&points, closed, d)?.into_bytes()
+            if format == Format::Svg {
+                polyline_svg(&points, closed, d).or_value_error()?.into_bytes()
             } else {
-                polyline_bytes(&points, closed, &name, &ext).or_value_error()?
+                polyline_bytes(&points, closed, &name, format).or_value_error()?
             }
         }
         ShapeDocument::Surface(s) => {
-            if !MESH_FORMATS.contains(&ext.as_str()) {
-                return Err(value_error(format!(
-                    "path: surfaces are written as {}, not '{shown}'",
-                    formats_phrase(MESH_FORMATS)
-                )));
-            }
+            let format = format_for(Subject::Surface)?;
             let mut cells = MAX_ADAPTIVE_CELLS;
             if tolerance.is_none() {
                 let n = density.unwrap_or(64).min(MAX_DENSITY);
@@ -260,7 +262,7 @@ pub fn save_any(
             }
             let surface = s.build().or_value_error()?;
             let mesh = py.detach(|| surface.visit(SurfaceTriangles(density, tolerance, cells))).or_value_error()?;
-            mesh_bytes(std::borrow::Cow::Owned(mesh), &name, &ext).or_value_error()?
+            mesh_bytes(std::borrow::Cow::Owned(mesh), &name, format).or_value_error()?
         }
     };
     write(path, &bytes)
@@ -276,16 +278,6 @@ impl DimensionVisitor<Curves> for Closed {
     }
 }
 
-/// The SVG drawing `splinekit tessellate CURVE -o FILE.svg` makes of a polyline of a
-/// `dim`-D curve (from the top for 1-D and 2-D curves, in a view for 3-D ones).
-fn svg_of(points: &[[f64; 3]], closed: bool, dim: usize) -> PyResult<String> {
-    let proj = if dim >= 3 { Projection::view(0.6, 0.45) } else { Projection::TOP };
-    let mut fig = SvgFigure::new(800.0, 600.0, proj);
-    let pts: Vec<splinekit::Point<3>> = points.iter().map(|p| splinekit::Point::<3>::from(*p)).collect();
-    fig.path(&pts, closed, "#1f5fbf", 2.0);
-    fig.render().or_value_error()
-}
-
 /// The SVG drawing of a curve (as `splinekit tessellate CURVE -o FILE.svg`).
 #[pyfunction]
 pub fn _svg(doc: &Bound<'_, PyAny>) -> PyResult<String> {
@@ -298,7 +290,7 @@ pub fn _svg(doc: &Bound<'_, PyAny>) -> PyResult<String> {
     let (flat, d) = py.detach(|| curve.visit(CurvePoints(None, None))).or_value_error()?;
     let points: Vec<[f64; 3]> =
         flat.chunks_exact(d).map(|p| std::array::from_fn(|k| p.get(k).copied().unwrap_or(0.0))).collect();
-    svg_of(&points, closed, d)
+    polyline_svg(&points, closed, d).or_value_error()
 }
 
 /// `splinekit subdivide POINTS --scheme S [--degree D] --steps M [--closed] [--keep-ends]

@@ -12,7 +12,7 @@ use splinekit_scene::{CurveDocument, with_dimension};
 use crate::arrays::{Numbers, as_points, check_finite};
 use crate::curve::PyCurve;
 use crate::curve_kinds::wrap;
-use crate::errors::{OrValueError, value_error};
+use crate::errors::{Failure, OrValueError, value_error};
 use crate::fit_report::FitReport;
 
 /// Largest degree accepted for fitting and interpolation (as the command line).
@@ -76,11 +76,11 @@ pub fn check_degree(p: usize) -> PyResult<()> {
 /// A fit's error, its field named as the Python argument: the kernel's `control_points`
 /// is `n_control_points` here (as the command line names it `--control-points`), the
 /// rest of the line unchanged.
-fn fit_error(e: splinekit::Error) -> String {
-    let message = e.to_string();
-    match message.strip_prefix("control_points:") {
-        Some(rest) => format!("n_control_points:{rest}"),
-        None => message,
+fn fit_error(e: splinekit::Error) -> Failure {
+    let failure = Failure::from(e);
+    match failure.message.strip_prefix("control_points:") {
+        Some(rest) => Failure { message: format!("n_control_points:{rest}"), ..failure },
+        None => failure,
     }
 }
 
@@ -164,8 +164,8 @@ impl FitRequest {
 }
 
 /// The fit of the C-ordered coordinates `values` of points of dimension `d` (any thread,
-/// no GIL): the B-spline's document and the report, or the error's message.
-pub fn fitted(request: FitRequest, values: &[f64], d: usize) -> Result<(CurveDocument, FitReport), String> {
+/// no GIL): the B-spline's document and the report, or the error.
+pub fn fitted(request: FitRequest, values: &[f64], d: usize) -> Result<(CurveDocument, FitReport), Failure> {
     with_dimension!(d, "points", D => {
         let f = request.run(as_points::<D>(values)).map_err(fit_error)?;
         let report = FitReport { rms_error: f.rms_error, max_error: f.max_error, condition_estimate: f.condition_estimate, params: f.params };
@@ -173,8 +173,8 @@ pub fn fitted(request: FitRequest, values: &[f64], d: usize) -> Result<(CurveDoc
     }, or dimension_error)
 }
 
-fn dimension_error(e: splinekit_scene::DocumentError) -> String {
-    e.to_string()
+fn dimension_error(e: splinekit_scene::DocumentError) -> Failure {
+    Failure::from(e)
 }
 
 /// Owned numbers of a 1-D argument, checked finite.
@@ -274,7 +274,7 @@ fit_function! {
 fn fit_points<'py>(py: Python<'py>, points: &Bound<'py, PyAny>, request: FitRequest) -> PyResult<Bound<'py, PyAny>> {
     let (data, d) = request.points(points)?;
     let values = data.values();
-    let (doc, report) = py.detach(|| fitted(request, values, d)).map_err(value_error)?;
+    let (doc, report) = py.detach(|| fitted(request, values, d)).map_err(Failure::into_py)?;
     wrap(py, PyCurve::new(doc)?, Some(Py::new(py, report)?))
 }
 

@@ -6,7 +6,8 @@ use numpy::{PyArray1, PyArray2, PyArrayDyn, PyArrayMethods};
 use pyo3::prelude::*;
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
-use splinekit_mesh::export::by_extension::{MESH_FORMATS, extension, formats_phrase, mesh_bytes, object_name};
+use splinekit_mesh::export::by_extension::{mesh_bytes, object_name};
+use splinekit_mesh::export::{Format, Subject};
 use splinekit_mesh::surface_mesh::{adaptive_with_limit, regular};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, TriangleMesh};
 use splinekit_scene::budget::{polyline, regular_mesh};
@@ -66,17 +67,12 @@ impl PyMesh {
     /// Writes the mesh; the extension picks the format: .obj (normals and uv), .stl
     /// (binary), .stla (ASCII STL), .ply (ASCII), .gltf or .glb.
     fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
-        let ext = extension(&path);
-        if !MESH_FORMATS.contains(&ext.as_str()) {
-            return Err(value_error(format!(
-                "path: meshes are written as {}, not '{}'",
-                formats_phrase(MESH_FORMATS),
-                path.display()
-            )));
-        }
-        let bytes = mesh_bytes(std::borrow::Cow::Borrowed(&self.mesh), &object_name(&path), &ext).or_value_error()?;
+        let format = Subject::Mesh
+            .check(Format::of_path(&path), &path.display().to_string())
+            .map_err(|e| value_error(format!("path: {e}")))?;
+        let bytes = mesh_bytes(std::borrow::Cow::Borrowed(&self.mesh), &object_name(&path), format).or_value_error()?;
         splinekit_scene::write_file(&path, &bytes)
-            .map_err(|e| value_error(format!("path: cannot write '{}': {e}", path.display())))
+            .map_err(|e| crate::errors::file_error(format!("path: cannot write '{}': {e}", path.display())))
     }
     fn __repr__(&self) -> String {
         format!("<splinekit Mesh of {} vertices, {} triangles>", self.mesh.positions.len(), self.mesh.triangles.len())

@@ -11,35 +11,25 @@ use pyo3::prelude::*;
 use serde_json::{Value, json};
 use splinekit::Point;
 use splinekit::curve::{Curve, CurveArcLength};
-use splinekit::query::offset::hermite_fit::MAX_TOTAL_PIECES;
-use splinekit::query::offset::surface_offset::MAX_GRID_POINTS;
-use splinekit::query::{
-    ArcLengthTable, CurveIntersections, CurveProjector, CurveSurfaceIntersection, EarlyStop, IntersectionBranch,
-    IntersectionKind, Nearest, NearestOnSurface, SurfaceProjector, intersect_curve_surface, intersect_curves,
-    intersect_surfaces, offset_curve, offset_surface, self_intersections,
-};
+use splinekit::query::{ArcLengthTable, CurveProjector, Nearest, NearestOnSurface, SurfaceProjector};
 use splinekit::surface::Surface;
-use splinekit::surface::model::Plane;
-use splinekit_scene::budget::Cost;
-use splinekit_scene::points::from_points;
-use splinekit_scene::refine::bspline_doc;
-use splinekit_scene::surfaces::BSplineSurfaceDoc;
-use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, ShapeDocument, SurfaceDocument, Surfaces};
+use splinekit_scene::answers::{
+    MAX_SECTION_LEVELS, OffsetCurve, intersect, offset_argument, offset_surface_document, sections,
+};
+use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, DocumentError, ShapeDocument, Surfaces};
 
 use crate::arrays::Numbers;
 use crate::budget;
 use crate::curve::PyCurve;
 use crate::documents::any_document;
-use crate::errors::{OrValueError, value_error};
+use crate::errors::{Failure, OrValueError, document_error, value_error};
 use crate::json_value::to_python;
-
-type Answer = Result<Value, String>;
 
 /// The shape document of a Python argument (a curve, a surface, or what `load` takes);
 /// errors name the argument.
 fn shape_document(ob: &Bound<'_, PyAny>, name: &str) -> PyResult<ShapeDocument> {
     let value = any_document(ob)?;
-    ShapeDocument::from_value(value).map_err(|e| value_error(format!("{name}: {e}")))
+    ShapeDocument::from_value(value).map_err(|e| document_error(e.about(name)))
 }
 
 /// A number > 0 (`splinekit intersect`'s `positive`), named as the argument.
@@ -49,106 +39,6 @@ fn positive(name: &str, x: f64) -> PyResult<f64> {
     } else {
         Err(value_error(format!("{name}: expected one number > 0, got '{x}'")))
     }
-}
-
-fn kind_name(kind: IntersectionKind) -> &'static str {
-    match kind {
-        IntersectionKind::Crossing => "crossing",
-        IntersectionKind::Tangent => "tangent",
-    }
-}
-
-fn curve_surface_json(r: &[CurveSurfaceIntersection]) -> Value {
-    let points: Vec<Value> = r
-        .iter()
-        .map(|p| json!({"params": [p.t, p.u, p.v], "point": [p.point.x, p.point.y, p.point.z], "kind": kind_name(p.kind)}))
-        .collect();
-    json!({"points": points, "overlaps": [], "curves": []})
-}
-
-/// Intersection branches as `splinekit intersect` writes them, each with its fitted
-/// B-spline.
-fn branches_json(branches: &[IntersectionBranch], fit: f64) -> Result<Vec<Value>, String> {
-    branches
-        .iter()
-        .map(|b| {
-            let stop = b.early_stop.map(|s| match s {
-                EarlyStop::Tangential => "tangential",
-                EarlyStop::StepLimit => "step_limit",
-                EarlyStop::PointLimit => "point_limit",
-            });
-            let points: Vec<[f64; 3]> = b.points.iter().map(|p| [p.x, p.y, p.z]).collect();
-            let (bspline, error) = match b.points.len() {
-                0 | 1 => (Value::Null, Value::Null),
-                _ => {
-                    let f = b.fit_bspline(fit).map_err(|e| e.to_string())?;
-                    (bspline_doc(&f.curve).to_value(), json!(f.max_error))
-                }
-            };
-            Ok(json!({"points": points, "params_a": b.params_a, "params_b": b.params_b, "closed": b.closed,
-                "tangent": b.tangent, "early_stop": stop, "bspline": bspline, "fit_error": error}))
-        })
-        .collect()
-}
-
-fn curves_json<const D: usize>(r: &CurveIntersections<D>) -> Value {
-    let points: Vec<Value> = r
-        .points
-        .iter()
-        .map(|p| {
-            json!({"params": [p.t_a, p.t_b], "point": p.point.iter().collect::<Vec<_>>(), "kind": kind_name(p.kind)})
-        })
-        .collect();
-    let overlaps: Vec<Value> =
-        r.overlaps.iter().map(|o| json!({"params_a": [o.a.start, o.a.end], "params_b": [o.b.0, o.b.1]})).collect();
-    json!({"points": points, "overlaps": overlaps, "curves": []})
-}
-
-struct IntersectCurves<'a> {
-    b: Option<&'a CurveDocument>,
-    tolerance: f64,
-}
-
-impl DimensionVisitor<Curves> for IntersectCurves<'_> {
-    type Output = Answer;
-    fn visit<const D: usize>(self, a: &dyn Curve<D>) -> Answer {
-        let Some(doc) = self.b else {
-            return Ok(curves_json(&self_intersections(a, self.tolerance).map_err(|e| e.to_string())?));
-        };
-        let dim = doc.dimension().map_err(|e| format!("b: {e}"))?;
-        if dim != D {
-            return Err(format!("b: the curves must have the same dimension, a is {D}-D and b is {dim}-D"));
-        }
-        let b = doc.build_in::<D>().map_err(|e| format!("b: {e}"))?;
-        Ok(curves_json(&intersect_curves(a, b.as_ref(), self.tolerance).map_err(|e| e.to_string())?))
-    }
-}
-
-fn curve_and_surface(c: &CurveDocument, s: &SurfaceDocument, (name_c, name_s): (&str, &str), tolerance: f64) -> Answer {
-    for (name, dim) in [(name_c, c.dimension()), (name_s, s.dimension())] {
-        let dim = dim.map_err(|e| format!("{name}: {e}"))?;
-        if dim != 3 {
-            return Err(format!("{name}: a curve and a surface intersect in 3-D only, this shape is {dim}-D"));
-        }
-    }
-    let curve = c.build_in::<3>().map_err(|e| format!("{name_c}: {e}"))?;
-    let surface = s.build_in::<3>().map_err(|e| format!("{name_s}: {e}"))?;
-    Ok(curve_surface_json(
-        &intersect_curve_surface(curve.as_ref(), surface.as_ref(), tolerance).map_err(|e| e.to_string())?,
-    ))
-}
-
-fn two_surfaces(a: &SurfaceDocument, b: &SurfaceDocument, tolerance: f64, chord: f64) -> Answer {
-    for (name, dim) in [("a", a.dimension()), ("b", b.dimension())] {
-        let dim = dim.map_err(|e| format!("{name}: {e}"))?;
-        if dim != 3 {
-            return Err(format!("{name}: surfaces intersect in 3-D only, this surface is {dim}-D"));
-        }
-    }
-    let sa = a.build_in::<3>().map_err(|e| format!("a: {e}"))?;
-    let sb = b.build_in::<3>().map_err(|e| format!("b: {e}"))?;
-    let branches = intersect_surfaces(sa.as_ref(), sb.as_ref(), tolerance, chord).map_err(|e| e.to_string())?;
-    Ok(json!({"points": [], "overlaps": [], "curves": branches_json(&branches, chord)?}))
 }
 
 /// `splinekit intersect A [B]` as a dict of the command's JSON (the arguments `a`, `b`
@@ -165,27 +55,7 @@ pub fn _intersect<'py>(
     let (tolerance, chord) = (positive("tolerance", tolerance)?, positive("chord", chord)?);
     let a = shape_document(a, "a")?;
     let b = b.map(|b| shape_document(b, "b")).transpose()?;
-    let value = py
-        .detach(|| -> Answer {
-            match (&a, &b) {
-                (ShapeDocument::Curve(a), b) => {
-                    let b = match b {
-                        None => None,
-                        Some(ShapeDocument::Curve(b)) => Some(b),
-                        Some(ShapeDocument::Surface(s)) => return curve_and_surface(a, s, ("a", "b"), tolerance),
-                    };
-                    a.build().map_err(|e| format!("a: {e}"))?.visit(IntersectCurves { b, tolerance })
-                }
-                (ShapeDocument::Surface(s), Some(ShapeDocument::Curve(c))) => {
-                    curve_and_surface(c, s, ("b", "a"), tolerance)
-                }
-                (ShapeDocument::Surface(_), None) => {
-                    Err("b: a surface needs a second shape (self-intersections of surfaces are not computed)".into())
-                }
-                (ShapeDocument::Surface(a), Some(ShapeDocument::Surface(b))) => two_surfaces(a, b, tolerance, chord),
-            }
-        })
-        .map_err(value_error)?;
+    let value = py.detach(|| intersect(&a, b.as_ref(), ("a", "b"), tolerance, chord)).map_err(document_error)?;
     to_python(py, &value)
 }
 
@@ -197,36 +67,6 @@ fn vector3(name: &str, ob: &Bound<'_, PyAny>) -> PyResult<Point<3>> {
         [_, _, _] => Err(value_error(format!("{name}: coordinates must be finite, got {:?}", numbers.values()))),
         v => Err(value_error(format!("{name}: expected 3 coordinates, got {}", v.len()))),
     }
-}
-
-/// Most planes one call may cut with (as `splinekit section --levels`).
-const MAX_LEVELS: usize = 100;
-
-/// Heights (along n, from o) of the cuts, and the surface's centre and size (as
-/// `splinekit section`).
-fn levels(s: &dyn Surface<3>, o: &Point<3>, n: &Point<3>, count: usize) -> (Vec<f64>, Point<3>, f64) {
-    let (du, dv) = (s.domain_u(), s.domain_v());
-    let pts: Vec<Point<3>> =
-        (0..33 * 33).map(|k| s.point(du.lerp((k / 33) as f64 / 32.0), dv.lerp((k % 33) as f64 / 32.0))).collect();
-    let heights: Vec<f64> = pts.iter().map(|p| (p - o).dot(n)).collect();
-    let (lo, hi) = heights.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| (a.min(h), b.max(h)));
-    let centre = pts.iter().fold(Point::<3>::zeros(), |c, p| c + p) / pts.len() as f64;
-    let size = splinekit::query::Aabb::around(&pts, 0.0).diagonal().max(1.0);
-    let cuts = if count == 1 {
-        vec![0.0]
-    } else {
-        (0..count).map(|k| lo + (hi - lo) * (k as f64 + 0.5) / count as f64).collect()
-    };
-    (cuts, centre, size)
-}
-
-/// A square plane at height h, centred on the surface and far larger than it.
-fn big_plane(o: &Point<3>, n: &Point<3>, h: f64, centre: &Point<3>, size: f64) -> splinekit::Result<Plane> {
-    let helper = if n.x.abs() < 0.9 { Point::<3>::x() } else { Point::<3>::y() };
-    let (a, b) = (n.cross(&helper).normalize(), n.cross(&helper).normalize().cross(n));
-    let foot = centre - n * ((centre - o).dot(n) - h);
-    let (a, b) = (a * (4.0 * size), b * (4.0 * size));
-    Plane::new(foot - (a + b) * 0.5, a, b)
 }
 
 /// `splinekit section SURFACE --plane O/N --levels L` as a dict `{"sections": […]}`.
@@ -248,44 +88,11 @@ pub fn _section<'py>(
     }
     let n = n.normalize();
     let (tolerance, chord) = (positive("tolerance", tolerance)?, positive("chord", chord)?);
-    if levels == 0 || levels > MAX_LEVELS {
-        return Err(value_error(format!("levels: expected 1 … {MAX_LEVELS}, got {levels}")));
+    if levels == 0 || levels > MAX_SECTION_LEVELS {
+        return Err(value_error(format!("levels: expected 1 … {MAX_SECTION_LEVELS}, got {levels}")));
     }
-    let ShapeDocument::Surface(doc) = shape_document(surface, "surface")? else {
-        return Err(value_error("surface: section cuts surfaces, this document is a curve"));
-    };
-    let dim = doc.dimension().or_value_error()?;
-    if dim != 3 {
-        return Err(value_error(format!("surface: sections are of 3-D surfaces, this one is {dim}-D")));
-    }
-    let value = py
-        .detach(|| -> Answer {
-            let s = doc.build_in::<3>().map_err(|e| format!("surface: {e}"))?;
-            let (cuts, centre, size) = self::levels(s.as_ref(), &o, &n, levels);
-            let mut sections = Vec::with_capacity(cuts.len());
-            for h in cuts {
-                let plane = big_plane(&o, &n, h, &centre, size).map_err(|e| e.to_string())?;
-                let branches = intersect_surfaces(s.as_ref(), &plane, tolerance, chord).map_err(|e| e.to_string())?;
-                let curves: Vec<Value> = branches_json(&branches, chord)?
-                    .into_iter()
-                    .map(|mut c| {
-                        if let Some(m) = c.as_object_mut() {
-                            m.remove("params_b");
-                            if let Some(p) = m.remove("params_a") {
-                                m.insert("params".into(), p);
-                            }
-                        }
-                        c
-                    })
-                    .collect();
-                let origin = o + n * h;
-                sections.push(
-                    json!({"origin": [origin.x, origin.y, origin.z], "normal": [n.x, n.y, n.z], "curves": curves}),
-                );
-            }
-            Ok(json!({ "sections": sections }))
-        })
-        .map_err(value_error)?;
+    let doc = shape_document(surface, "surface")?;
+    let value = py.detach(|| sections(doc, "surface", (&o, &n), levels, tolerance, chord)).map_err(document_error)?;
     to_python(py, &value)
 }
 
@@ -317,20 +124,18 @@ impl Project<'_> {
         minima: impl Fn(&Point<D>, f64) -> splinekit::Result<Vec<N>>,
         flat: impl Fn(&N, &mut Flat),
         entry: impl Fn(&N) -> Value,
-    ) -> Result<Projected, String> {
+    ) -> Result<Projected, Failure> {
         let queries = self.points.chunks_exact(self.dim).map(Point::<D>::from_column_slice);
         if self.all {
             let mut out = Vec::new();
             for q in queries {
-                out.push(Value::Array(
-                    minima(&q, self.accuracy).map_err(|e| e.to_string())?.iter().map(&entry).collect(),
-                ));
+                out.push(Value::Array(minima(&q, self.accuracy)?.iter().map(&entry).collect()));
             }
             return Ok(Projected::Minima(Value::Array(out)));
         }
         let mut out: Flat = Default::default();
         for q in queries {
-            flat(&nearest(&q, self.accuracy).map_err(|e| e.to_string())?, &mut out);
+            flat(&nearest(&q, self.accuracy)?, &mut out);
         }
         Ok(Projected::Nearest(out))
     }
@@ -341,7 +146,7 @@ fn coords<const D: usize>(p: &Point<D>) -> Vec<f64> {
 }
 
 impl DimensionVisitor<Curves> for Project<'_> {
-    type Output = Result<Projected, String>;
+    type Output = Result<Projected, Failure>;
     fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Self::Output {
         let projector = CurveProjector::new(curve);
         self.run::<D, Nearest<D>>(
@@ -358,7 +163,7 @@ impl DimensionVisitor<Curves> for Project<'_> {
 }
 
 impl DimensionVisitor<Surfaces> for Project<'_> {
-    type Output = Result<Projected, String>;
+    type Output = Result<Projected, Failure>;
     fn visit<const D: usize>(self, surface: &dyn Surface<D>) -> Self::Output {
         let projector = SurfaceProjector::new(surface);
         self.run::<D, NearestOnSurface<D>>(
@@ -407,13 +212,13 @@ pub fn _project<'py>(
     let values = numbers.values();
     let query = Project { points: values, dim, all, accuracy };
     let result = py
-        .detach(|| -> Result<Projected, String> {
+        .detach(|| -> Result<Projected, Failure> {
             match &doc {
-                ShapeDocument::Curve(c) => c.build().map_err(|e| e.to_string())?.visit(query),
-                ShapeDocument::Surface(s) => s.build().map_err(|e| e.to_string())?.visit(query),
+                ShapeDocument::Curve(c) => c.build()?.visit(query),
+                ShapeDocument::Surface(s) => s.build()?.visit(query),
             }
         })
-        .map_err(value_error)?;
+        .map_err(Failure::into_py)?;
     match result {
         Projected::Minima(v) => to_python(py, &v),
         Projected::Nearest((params, pts, dist)) => {
@@ -426,39 +231,14 @@ pub fn _project<'py>(
     }
 }
 
-/// The argument a kernel error of an offset is about.
-fn offset_error(e: splinekit::Error) -> String {
-    let message = e.to_string();
-    for field in ["distance", "tolerance", "normal"] {
-        if message.strip_prefix(field).is_some_and(|r| r.starts_with(':')) {
-            return message;
-        }
-    }
-    format!("shape: {message}")
-}
-
-struct OffsetCurve {
-    distance: f64,
-    tolerance: f64,
-    normal: Option<Point<3>>,
-}
-
-impl DimensionVisitor<Curves> for OffsetCurve {
-    type Output = Result<(Vec<Value>, String), String>;
-    fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Self::Output {
-        let normal = if D == 3 { self.normal.or(Some(Point::<3>::z())) } else { self.normal };
-        let off = offset_curve(curve, self.distance, normal, self.tolerance).map_err(offset_error)?;
-        let report = format!(
-            "offset: {} piece{}, max error {:.3e} (tolerance {:e}), {} cusps and {} self-intersections of the raw offset trimmed",
-            off.pieces.len(),
-            if off.pieces.len() == 1 { "" } else { "s" },
-            off.max_error,
-            self.tolerance,
-            off.cusps.len(),
-            off.crossings.len()
-        );
-        Ok((off.pieces.iter().map(|p| bspline_doc(&p.curve).to_value()).collect(), report))
-    }
+/// The error of an offset, named as the argument it is about (`tolerance: …`) or else as
+/// about the shape (`shape: …`).
+fn offset_error(e: splinekit::Error) -> PyErr {
+    let named = match offset_argument(&e) {
+        Some(_) => DocumentError::from(e),
+        None => DocumentError::from(e).about("shape"),
+    };
+    document_error(named)
 }
 
 /// `splinekit offset SHAPE --distance D [--tolerance E] [--normal N]`: the documents of the
@@ -491,12 +271,12 @@ pub fn _offset<'py>(
     budget::current()?.check_shape(&cost).or_value_error()?;
     let (value, report) = match doc {
         ShapeDocument::Curve(c) => {
-            let work = MAX_TOTAL_PIECES as f64 * 8.0 * 3.0 * cost.eval;
-            let request = Cost::new(MAX_TOTAL_PIECES as f64 * 200.0, work);
+            let request = splinekit_scene::budget::offset_curve(cost.eval);
             budget::check_request("tolerance", "the offset's refinement", &cost, request)?;
             let curve = c.build().or_value_error()?;
             let (pieces, report) =
-                py.detach(|| curve.visit(OffsetCurve { distance, tolerance, normal })).map_err(value_error)?;
+                py.detach(|| curve.visit(OffsetCurve { distance, tolerance, normal })).map_err(offset_error)?;
+            let pieces = pieces.iter().map(CurveDocument::to_value).collect();
             (Value::Array(pieces), report)
         }
         ShapeDocument::Surface(s) => {
@@ -509,28 +289,11 @@ pub fn _offset<'py>(
             if dim != 3 {
                 return Err(value_error(format!("shape: surface offsets are of 3-D surfaces, this one is {dim}-D")));
             }
-            let samples = 4.0 * 1.34 * MAX_GRID_POINTS as f64;
-            let request = Cost::new(samples * 200.0, samples * 12.0 * cost.eval);
+            let request = splinekit_scene::budget::offset_surface(cost.eval);
             budget::check_request("tolerance", "the offset's refinement", &cost, request)?;
-            let surface = s.build_in::<3>().map_err(|e| value_error(format!("shape: {e}")))?;
-            let off = py
-                .detach(|| offset_surface(surface.as_ref(), distance, tolerance))
-                .map_err(|e| value_error(offset_error(e)))?;
-            let report = format!(
-                "offset: max error {:.3e} (tolerance {:e}), {} × {} grid",
-                off.max_error, tolerance, off.grid.0, off.grid.1
-            );
-            let b = &off.surface;
-            let (ku, kv) = b.knots();
-            let doc = SurfaceDocument::BsplineSurface(BSplineSurfaceDoc {
-                degree_u: b.degrees().0,
-                degree_v: b.degrees().1,
-                knots_u: ku.to_vec(),
-                knots_v: kv.to_vec(),
-                control_points: b.control_points().iter().map(|row| from_points(row)).collect(),
-                periodic_u: false,
-                periodic_v: false,
-            });
+            let surface = s.build_in::<3>().map_err(|e| document_error(e.about("shape")))?;
+            let (doc, report) =
+                py.detach(|| offset_surface_document(surface.as_ref(), distance, tolerance)).map_err(offset_error)?;
             (doc.to_value(), report)
         }
     };

@@ -75,13 +75,12 @@ mod gpu {
     use std::path::Path;
 
     use numpy::{PyArray1, PyArrayMethods};
-    use pyo3::exceptions::PyRuntimeError;
     use pyo3::prelude::*;
     use splinekit_render::{Image, Renderer, compose, renderer::MAX_SIDE, write_gif};
     use splinekit_scene::SceneOrShape;
     use splinekit_scene::scenes::SceneDocument;
 
-    use crate::errors::{OrValueError, value_error};
+    use crate::errors::{OrValueError, file_error, render_error, value_error};
 
     fn scene_and_size(value: serde_json::Value, size: Option<(u32, u32)>) -> PyResult<(SceneDocument, (u32, u32))> {
         let scene = SceneOrShape::from_value(value).or_value_error()?.into_scene();
@@ -96,7 +95,7 @@ mod gpu {
     }
 
     fn renderer() -> PyResult<Renderer> {
-        Renderer::new().map_err(|e| PyRuntimeError::new_err(format!("render: {e}")))
+        Renderer::new().map_err(|e| render_error(format!("render: {e}")))
     }
 
     fn frame(
@@ -110,7 +109,7 @@ mod gpu {
         if camera.is_some() {
             rs.camera = camera;
         }
-        renderer.render(&rs, size.0, size.1).map_err(|e| PyRuntimeError::new_err(format!("render: {e}")))
+        renderer.render(&rs, size.0, size.1).map_err(|e| render_error(format!("render: {e}")))
     }
 
     /// Images as an array (count, height, width, 4), or without the first axis for one.
@@ -123,7 +122,7 @@ mod gpu {
 
     fn write(path: &Path, bytes: &[u8]) -> PyResult<()> {
         splinekit_scene::write_file(path, bytes)
-            .map_err(|e| value_error(format!("path: cannot write '{}': {e}", path.display())))
+            .map_err(|e| file_error(format!("path: cannot write '{}': {e}", path.display())))
     }
 
     pub fn draw<'py>(
@@ -187,11 +186,10 @@ mod gpu {
 /// Without the `render` feature: the error that says how to get it.
 #[cfg(not(feature = "render"))]
 mod gpu {
-    use pyo3::exceptions::PyRuntimeError;
     use pyo3::prelude::*;
 
     pub(super) fn missing<T>() -> PyResult<T> {
-        Err(PyRuntimeError::new_err(
+        Err(crate::errors::render_error(
             "render: this build of splinekit has no renderer; reinstall with MATURIN_PEP517_ARGS=\"--features render\" \
              pip install ./crates/splinekit-py, or write obj.to_json() to a file and run `splinekit render FILE -o out.png`",
         ))

@@ -1,4 +1,6 @@
-"""Every error path raises ValueError with the command line's one-line message."""
+"""Every error path raises a ``splinekit.SplinekitError`` with the command line's one-line
+message, of the class of its kind, each still the built-in class raised before (a
+``ValueError``, ``OSError`` or ``RuntimeError``)."""
 
 import json
 import os
@@ -202,3 +204,69 @@ def test_fit_errors_are_the_cli_lines_with_the_argument_named(degree, n, closed,
     field, rest = str(e.value).split(": ", 1)
     assert "\n" not in str(e.value)
     assert FIT_FLAGS[field] == flag and rest == cli_rest
+
+
+def test_the_exception_classes_form_one_hierarchy():
+    for cls in (sk.DocumentError, sk.NumericalError, sk.BudgetError, sk.FileError, sk.RenderError):
+        assert issubclass(cls, sk.SplinekitError) and cls.__module__ == "splinekit"
+    for cls in (sk.DocumentError, sk.NumericalError, sk.BudgetError, sk.FileError):
+        assert issubclass(cls, ValueError), cls
+    assert issubclass(sk.FileError, OSError) and issubclass(sk.RenderError, RuntimeError)
+    assert not issubclass(sk.DocumentError, sk.NumericalError) and not issubclass(sk.BudgetError, sk.DocumentError)
+    import pickle
+
+    e = pickle.loads(pickle.dumps(sk.FileError("path: cannot write 'x'")))
+    assert type(e) is sk.FileError and str(e) == "path: cannot write 'x'"
+
+
+def raised(f):
+    with pytest.raises(sk.SplinekitError) as e:
+        f()
+    return e.value
+
+
+def test_bad_documents_and_arguments_are_document_errors(tmp_path):
+    for doc in BAD_DOCUMENTS:
+        e = raised(lambda: sk.load(doc))
+        assert type(e) is sk.DocumentError and isinstance(e, ValueError), doc
+    assert type(raised(lambda: sk.BSpline(**{**QUAD, "degree": 0}))) is sk.DocumentError
+    circle = sk.load({"type": "circle"})
+    assert type(raised(lambda: circle.tessellate(density=0))) is sk.DocumentError
+    assert type(raised(lambda: sk.intersect(circle, circle, tolerance=0))) is sk.DocumentError
+    assert type(raised(lambda: sk.save(circle, tmp_path / "c.stl"))) is sk.DocumentError
+    assert type(raised(lambda: sk.fit_many([[[0, 0], [1, 1]]], 3, 8))) is sk.DocumentError
+    assert type(raised(lambda: sk.set_display(embed_three="never"))) is sk.DocumentError
+    (tmp_path / "bad.step").write_text("ISO-10303-21;\nnot step at all\n")
+    assert type(raised(lambda: sk.read_step(tmp_path / "bad.step"))) is sk.DocumentError
+
+
+def test_numerical_failures_are_numerical_errors():
+    points = [[0, 0], [1, 1], [2, 0], [3, 3]]
+    e = raised(lambda: sk.fit(points, 3, 4, params=[0, 0, 0, 0], knots="uniform"))
+    assert type(e) is sk.NumericalError and isinstance(e, ValueError)
+    assert str(e).startswith("fit: control point 1 of 4 is not determined by the data")
+    # In a batch the class stays, the message gets the index.
+    e = raised(lambda: sk.fit_many([points, points], 3, 4, params=[0, 0, 0, 0], knots="uniform"))
+    assert type(e) is sk.NumericalError and str(e).startswith("point_sets[0]: fit: control point 1")
+
+
+def test_requests_over_the_budget_are_budget_errors(monkeypatch):
+    monkeypatch.setenv("SPLINEKIT_MAX_MEMORY", "10M")
+    torus = sk.load({"type": "torus"})
+    e = raised(lambda: torus.tessellate(density=2048))
+    assert type(e) is sk.BudgetError and isinstance(e, ValueError)
+    assert str(e).startswith("density: a mesh of 2048×2048 cells would need about 1.2 GB of memory")
+    assert type(raised(lambda: sk.load({"type": "sphere"}).offset(0.3))) is sk.BudgetError
+
+
+def test_files_that_cannot_be_read_or_written_are_file_errors(tmp_path):
+    missing = tmp_path / "missing" / "x"
+    for f in (
+        lambda: sk.load(tmp_path / "missing.json"),
+        lambda: sk.load({"type": "torus"}).save(f"{missing}.stl"),
+        lambda: sk.save(sk.Scene([sk.load({"type": "torus"})]), f"{missing}.obj"),
+        lambda: sk.read_step(tmp_path / "missing.step"),
+    ):
+        e = raised(f)
+        assert type(e) is sk.FileError and isinstance(e, OSError) and isinstance(e, ValueError), e
+    assert str(raised(lambda: sk.load(tmp_path / "missing.json"))).startswith("document: cannot read '")

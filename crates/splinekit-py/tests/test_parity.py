@@ -44,6 +44,9 @@ CLI_ONLY = {
     "interactive view (_repr_mimebundle_, splinekit.show)",
     "gallery": "writes the project's showcase website, a fixed set of figures, not an operation on the user's shapes",
     "help": "clap's help",
+    # Not yet: `measure` (a STEP solid's topology, exact area and volume, its watertight
+    # mesh's open edges) came from main after this walk; its Python function is still to do.
+    "measure": "not yet in Python (came with the brep solids); to do",
 }
 
 
@@ -351,14 +354,27 @@ def test_save_writes_what_tessellate_writes(doc, ext, tmp_path):
 
 
 @needs_cli
-def test_scene_save_gltf_is_what_tessellate_writes(tmp_path):
+@pytest.mark.parametrize("ext", ["glb", "gltf", "obj", "stl", "stla", "ply"])
+def test_scene_save_is_what_tessellate_writes(ext, tmp_path):
     path = ROOT / "examples" / "scenes" / "torus_animated.json"
-    cli("tessellate", path, "-o", tmp_path / "cli.glb")
-    sk.load(path).save(tmp_path / "py.glb")
-    assert (tmp_path / "py.glb").read_bytes() == (tmp_path / "cli.glb").read_bytes()
-    with pytest.raises(ValueError) as e:
-        sk.load(path).save(tmp_path / "scene.stl")
-    assert str(e.value) == "path: " + cli_error("tessellate", path, "-o", tmp_path / "scene.stl").split(": ", 1)[1]
+    cli("tessellate", path, "-o", tmp_path / f"cli.{ext}")
+    (tmp_path / "py").mkdir()
+    sk.load(path).save(tmp_path / "py" / f"cli.{ext}")
+    assert (tmp_path / "py" / f"cli.{ext}").read_bytes() == (tmp_path / f"cli.{ext}").read_bytes()
+
+
+@needs_cli
+def test_scene_save_refuses_what_tessellate_refuses(tmp_path):
+    path = ROOT / "examples" / "scenes" / "torus_animated.json"
+    with pytest.raises(sk.DocumentError) as e:
+        sk.load(path).save(tmp_path / "scene.svg")
+    assert str(e.value) == "path: " + cli_error("tessellate", path, "-o", tmp_path / "scene.svg").split(": ", 1)[1]
+    # STL has no curves: the error names the object.
+    hearts = ROOT / "examples" / "scenes" / "heart_transformed.json"
+    with pytest.raises(sk.DocumentError) as e:
+        sk.save(sk.load(hearts), tmp_path / "hearts.stl")
+    assert str(e.value) == cli_error("tessellate", hearts, "-o", tmp_path / "hearts.stl")
+    assert str(e.value).startswith("objects[0]: a curve (heart)")
 
 
 @needs_cli

@@ -128,7 +128,7 @@ mod tests {
         assert_eq!(colors.len(), 41);
         assert_ne!(colors[0], colors[40], "z rises along the helix");
         assert_eq!(mapped.objects[0].color, [1.0; 4]);
-        let bytes = mapped.to_file_bytes("gltf").unwrap();
+        let bytes = mapped.to_format_bytes(splinekit_mesh::export::Format::Gltf).unwrap();
         assert!(String::from_utf8(bytes).unwrap().contains("COLOR_0"));
     }
 }

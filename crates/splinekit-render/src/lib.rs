@@ -22,6 +22,7 @@ pub mod image;
 #[cfg(feature = "gpu")]
 pub mod renderer;
 pub mod scene;
+pub mod scene_file;
 pub mod web_viewer;
 
 #[cfg(feature = "gpu")]
@@ -35,3 +36,4 @@ pub use image::{Image, write_gif};
 #[cfg(feature = "gpu")]
 pub use renderer::{RenderError, RenderTarget, Renderer};
 pub use scene::{LineItem, MeshItem, ObjectItems, PointItem, RenderScene};
+pub use scene_file::scene_file;

@@ -182,6 +182,24 @@ pub fn polyline(points: f64, eval: f64) -> Cost {
     Cost::new(points * 160.0, points * (4.0 * eval + 300.0))
 }
 
+/// The most an offset of a curve may ask for: at most
+/// [`MAX_TOTAL_PIECES`](splinekit::query::offset::hermite_fit::MAX_TOTAL_PIECES) pieces of
+/// 8 samples (each a point and two derivatives) over all the approximations of the offset,
+/// all of them held at the most; `eval` is one evaluation of the curve.
+pub fn offset_curve(eval: f64) -> Cost {
+    let pieces = splinekit::query::offset::hermite_fit::MAX_TOTAL_PIECES as f64;
+    Cost::new(pieces * 200.0, pieces * 8.0 * 3.0 * eval)
+}
+
+/// The most an offset of a surface may ask for: the last grid of
+/// [`MAX_GRID_POINTS`](splinekit::query::offset::surface_offset::MAX_GRID_POINTS) and those
+/// before it (a third more), at its nodes and midpoints, each a point and a normal (up to
+/// nine evaluations at a singular point); `eval` is one evaluation of the surface.
+pub fn offset_surface(eval: f64) -> Cost {
+    let samples = 4.0 * 1.34 * splinekit::query::offset::surface_offset::MAX_GRID_POINTS as f64;
+    Cost::new(samples * 200.0, samples * 12.0 * eval)
+}
+
 /// A least-squares fit of `points` data points of `dimension` coordinates by a B-spline of
 /// `degree` p with `control_points` n (the kernel's banded QR, `splinekit::fit`): the
 /// data, its parameters, sort order and fitted values held (≈ 2D + 3 numbers a point)
@@ -245,7 +263,7 @@ impl Budget {
     /// what the cost is `for` (e.g. "10⁹ samples").
     pub fn check(&self, field: &str, what: &str, cost: Cost) -> Result<()> {
         if cost.bytes.is_nan() || cost.bytes > self.max_bytes {
-            return Err(DocumentError::new(
+            return Err(DocumentError::budget(
                 field,
                 format!(
                     "{what} would need about {} of memory, more than the limit of {} (raise it with --max-memory or {MEMORY_VARIABLE})",
@@ -255,7 +273,7 @@ impl Budget {
             ));
         }
         if cost.work.is_nan() || cost.work > self.max_work {
-            return Err(DocumentError::new(
+            return Err(DocumentError::budget(
                 field,
                 format!(
                     "{what} would need about {:.1e} operations, more than the limit of {:.1e} (raise it with --max-work or {WORK_VARIABLE})",
@@ -278,7 +296,7 @@ impl Budget {
     /// budget or nests deeper than [`MAX_NESTING`], naming the field that drives the cost.
     pub fn check_shape(&self, cost: &ShapeCost) -> Result<()> {
         if cost.depth > MAX_NESTING {
-            return Err(DocumentError::new(
+            return Err(DocumentError::budget(
                 cost.field.as_str(),
                 format!("documents nested {} deep, more than the limit of {MAX_NESTING}", cost.depth),
             ));

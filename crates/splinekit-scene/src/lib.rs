@@ -6,6 +6,7 @@
 
 #![warn(missing_docs)]
 
+pub mod answers;
 pub mod bfunctions;
 pub mod blending;
 pub mod budget;
@@ -30,7 +31,7 @@ pub mod views;
 pub use curves::{AnyCurve, CurveDecoration, CurveDocument, CurveForm, Curves};
 pub use decoration::Decoration;
 pub use dimension::{AnyDimension, DimensionVisitor};
-pub use error::{DocumentError, Result};
+pub use error::{DocumentError, ErrorKind, Result};
 pub use output_file::{OutputFile, write_file};
 pub use registry::DocumentKind;
 pub use scenes::{SceneDocument, SceneObject, SceneOrShape, StyleDoc};

@@ -3,10 +3,12 @@
 
 use splinekit::curve::bezier::bezier_knots;
 use splinekit::curve::{BSplineCurve, BezierCurve, NurbsCurve, RationalBezierCurve};
+use splinekit::surface::BSplineSurface;
 
 use crate::curves::{BSplineDoc, BezierDoc, CurveDocument, NurbsDoc, RationalBezierDoc};
 use crate::error::{DocumentError, Result};
 use crate::points::{from_points, to_points};
+use crate::surfaces::{BSplineSurfaceDoc, SurfaceDocument};
 use crate::with_dimension;
 
 /// What to do to the curve.
@@ -41,6 +43,20 @@ pub fn bspline_doc<const D: usize>(c: &BSplineCurve<D>) -> CurveDocument {
         knots: c.knots().to_vec(),
         control_points: from_points(c.control_points()),
         periodic: c.is_periodic(),
+    })
+}
+
+/// The document of a B-spline surface.
+pub fn bspline_surface_doc(s: &BSplineSurface<3>) -> SurfaceDocument {
+    let ((degree_u, degree_v), (ku, kv), (periodic_u, periodic_v)) = (s.degrees(), s.knots(), s.periodic());
+    SurfaceDocument::BsplineSurface(BSplineSurfaceDoc {
+        degree_u,
+        degree_v,
+        knots_u: ku.to_vec(),
+        knots_v: kv.to_vec(),
+        control_points: s.control_points().iter().map(|row| from_points(row)).collect(),
+        periodic_u,
+        periodic_v,
     })
 }
 

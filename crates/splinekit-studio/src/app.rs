@@ -15,6 +15,7 @@ use winit::window::{Window, WindowId};
 use crate::actions::{Action, pressed};
 use crate::analysis::analysis_panel;
 use crate::command::Command;
+use crate::error::StudioError;
 use crate::gpu::Gpu;
 use crate::options::Options;
 use crate::panels::{FileFields, SIDE_WIDTH, animation_panel, help_overlay, menu_bar, objects_panel, properties_panel};
@@ -51,7 +52,7 @@ pub struct App {
     /// The whole window as last painted (with `--window-screenshot`).
     window_image: Option<splinekit_render::Image>,
     /// The first error that ended the event loop.
-    pub error: Option<String>,
+    pub error: Option<StudioError>,
 }
 
 /// The panels' background (egui's dark panel fill): the colour the window is cleared to.
@@ -116,7 +117,7 @@ impl App {
     }
 
     fn fail(&mut self, event_loop: &ActiveEventLoop, e: impl ToString) {
-        self.error.get_or_insert(e.to_string());
+        self.error.get_or_insert(StudioError::Graphics(e.to_string()));
         event_loop.exit();
     }
 
@@ -153,7 +154,7 @@ impl App {
         }
         let scene_start = Instant::now();
         if let Err(e) = self.draw_view() {
-            self.studio.status.message = Some(e);
+            self.studio.status.say(&e);
         }
         let scene_ms = scene_start.elapsed().as_secs_f64() * 1e3;
         let ppp = self.egui.pixels_per_point();
@@ -240,14 +241,14 @@ impl App {
     }
 
     /// Composes and draws the scene into the view at the view's size.
-    fn draw_view(&mut self) -> Result<(), String> {
+    fn draw_view(&mut self) -> Result<(), StudioError> {
         let Some(gpu) = self.gpu.as_mut() else { return Ok(()) };
         let size = (self.view.rect_px[2].max(1), self.view.rect_px[3].max(1));
         // On a software adapter a drag is drawn single-sampled, its last frame multisampled.
         let multisampled = !(gpu.software && self.studio.gesture.is_some());
         let scene = self.studio.view_scene(size, true)?;
         self.projector = Some(Projector::with_bounds(&scene.overlay, scene.bounds, size));
-        gpu.draw_view(&scene, size, multisampled).map_err(|e| e.to_string())?;
+        gpu.draw_view(&scene, size, multisampled).map_err(|e| StudioError::Graphics(e.to_string()))?;
         Ok(())
     }
 
@@ -272,25 +273,34 @@ impl App {
     }
 
     /// Saves the 3-D view (drawn without the hover and selection highlights) as PNG.
-    fn screenshot(&mut self) -> Result<PathBuf, String> {
+    fn screenshot(&mut self) -> Result<PathBuf, StudioError> {
         let path = self.options.screenshot.clone().unwrap_or_else(|| PathBuf::from("studio-screenshot.png"));
-        let Some(gpu) = self.gpu.as_mut() else { return Err("no window".into()) };
+        let graphics = |e: &dyn std::fmt::Display| StudioError::Graphics(e.to_string());
+        let Some(gpu) = self.gpu.as_mut() else { return Err(graphics(&"no window")) };
         let size = (self.view.rect_px[2].max(1), self.view.rect_px[3].max(1));
         let scene = self.studio.view_scene(size, false)?;
-        gpu.draw_view(&scene, size, true).map_err(|e| e.to_string())?;
-        let image = gpu.read_view().map_err(|e| e.to_string())?.ok_or("nothing drawn yet")?;
-        image.save_png(&path).map_err(|e| format!("--screenshot: cannot write {}: {e}", path.display()))?;
+        gpu.draw_view(&scene, size, true).map_err(|e| graphics(&e))?;
+        let image = gpu.read_view().map_err(|e| graphics(&e))?.ok_or_else(|| graphics(&"nothing drawn yet"))?;
+        image.save_png(&path).map_err(|e| StudioError::Output {
+            option: "--screenshot",
+            path: path.clone(),
+            message: e.to_string(),
+        })?;
         Ok(path)
     }
 
     /// On closing: `--screenshot` (the 3-D view), `--window-screenshot` (the window) and
     /// `--report-frame-times`.
-    fn final_screenshots(&mut self) -> Result<(), String> {
+    fn final_screenshots(&mut self) -> Result<(), StudioError> {
         if self.options.screenshot.is_some() {
             self.screenshot()?;
         }
         if let (Some(path), Some(image)) = (&self.options.window_screenshot, &self.window_image) {
-            image.save_png(path).map_err(|e| format!("--window-screenshot: cannot write {}: {e}", path.display()))?;
+            image.save_png(path).map_err(|e| StudioError::Output {
+                option: "--window-screenshot",
+                path: path.clone(),
+                message: e.to_string(),
+            })?;
         }
         if let Some(path) = &self.options.report_frame_times {
             let log = &self.frame_log;
@@ -306,8 +316,11 @@ impl App {
                 "dragging": dragging,
             })
             .to_string();
-            splinekit_scene::write_file(path, text.as_bytes())
-                .map_err(|e| format!("--report-frame-times: cannot write {}: {e}", path.display()))?;
+            splinekit_scene::write_file(path, text.as_bytes()).map_err(|e| StudioError::Output {
+                option: "--report-frame-times",
+                path: path.clone(),
+                message: e.to_string(),
+            })?;
         }
         Ok(())
     }
@@ -317,7 +330,8 @@ impl App {
         match action {
             Action::Screenshot => {
                 let done = self.screenshot();
-                self.studio.status.message = Some(done.map_or_else(|e| e, |p| format!("screenshot {}", p.display())));
+                let message = done.map_or_else(|e| e.to_string(), |p| format!("screenshot {}", p.display()));
+                self.studio.status.message = Some(message);
             }
             // Closed after this frame is painted, so that its screenshots show it.
             Action::Quit => self.quitting = true,

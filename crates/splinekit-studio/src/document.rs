@@ -5,10 +5,11 @@
 
 use std::path::{Path, PathBuf};
 
-use splinekit_scene::SceneOrShape;
 use splinekit_scene::scenes::{CameraDoc, SceneDocument};
+use splinekit_scene::{DocumentError, SceneOrShape};
 
 use crate::edit::{BuildCheck, Edit, EditError};
+use crate::error::StudioError;
 use crate::history::History;
 
 /// The scene being edited, the file it came from, and undo and redo. The scene is read
@@ -85,7 +86,7 @@ impl Document {
         }
         let message = match write(&scene, &path) {
             Ok(()) => format!("saved {}", path.display()),
-            Err(e) => e,
+            Err(e) => e.to_string(),
         };
         self.path = Some(path);
         message
@@ -100,25 +101,25 @@ pub const STARTER: &str = r#"{"type": "scene", "objects": [{"shape": {"type": "b
 
 /// Reads a scene or shape document (cage files of subdivision surfaces relative to its
 /// folder); the message names the file and the field.
-pub fn read(path: &Path) -> Result<SceneDocument, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+pub fn read(path: &Path) -> Result<SceneDocument, StudioError> {
+    let text = std::fs::read_to_string(path).map_err(|e| StudioError::file(path, format!("cannot read: {e}")))?;
     let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    SceneOrShape::from_json_in(&text, folder)
+    Ok(SceneOrShape::from_json_in(&text, folder)
         .map(SceneOrShape::into_scene)
-        .map_err(|e| format!("{}: {e}", path.display()))
+        .map_err(|e| e.about(&path.display().to_string()))?)
 }
 
 /// Parses a scene or shape document from JSON text (cage files relative to the current
 /// folder).
-pub fn parse(text: &str) -> Result<SceneDocument, String> {
-    SceneOrShape::from_json_in(text, Path::new(".")).map(SceneOrShape::into_scene).map_err(|e| e.to_string())
+pub fn parse(text: &str) -> Result<SceneDocument, StudioError> {
+    Ok(SceneOrShape::from_json_in(text, Path::new(".")).map(SceneOrShape::into_scene)?)
 }
 
 /// Writes the scene as pretty JSON.
-pub fn write(scene: &SceneDocument, path: &Path) -> Result<(), String> {
-    let text = serde_json::to_string_pretty(&scene.to_value()).map_err(|e| e.to_string())?;
+pub fn write(scene: &SceneDocument, path: &Path) -> Result<(), StudioError> {
+    let text = serde_json::to_string_pretty(&scene.to_value()).map_err(|e| DocumentError::new("", e.to_string()))?;
     splinekit_scene::write_file(path, (text + "\n").as_bytes())
-        .map_err(|e| format!("{}: cannot write: {e}", path.display()))
+        .map_err(|e| StudioError::file(path, format!("cannot write: {e}")))
 }
 
 /// Where Ctrl+S writes: the file opened, or `studio.json` for the starter scene.

@@ -1,6 +1,7 @@
 //! Export of one object to a mesh file, in the formats `splinekit tessellate` writes,
-//! chosen by the extension: surfaces as .obj, .stl (binary), .stla (ASCII STL), .ply,
-//! .gltf, .glb; curves as .obj polylines, .gltf/.glb line strips. Sampled regularly at
+//! chosen by the extension ([`Subject::formats`]): surfaces as .obj, .stl (binary), .stla
+//! (ASCII STL), .ply, .gltf, .glb; curves as .svg drawings, .obj polylines, .gltf/.glb line
+//! strips. Sampled regularly at
 //! the object's `density` (default: 64 cells per direction, 1000 curve segments), posed at
 //! `time`.
 
@@ -8,57 +9,58 @@ use std::path::Path;
 
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
-use splinekit_mesh::export::by_extension::{
-    MESH_FORMATS, POLYLINE_FORMATS, extension, formats_phrase, mesh_bytes, object_name, polyline_bytes,
-};
+use splinekit_mesh::export::by_extension::{mesh_bytes, object_name, polyline_bytes, polyline_svg};
+use splinekit_mesh::export::{Format, Subject};
 use splinekit_mesh::surface_mesh::{regular, to3};
 use splinekit_mesh::{MeshOptions, Polyline, TriangleMesh};
 use splinekit_scene::scenes::SceneObject;
 use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument, Surfaces};
 
+use crate::error::StudioError;
+
 struct CurvePoints(usize);
 
 impl DimensionVisitor<Curves> for CurvePoints {
-    type Output = Result<(Vec<[f64; 3]>, bool), String>;
+    type Output = Result<(Vec<[f64; 3]>, bool, usize), StudioError>;
     fn visit<const D: usize>(self, c: &dyn Curve<D>) -> Self::Output {
-        let poly = Polyline::regular(c, self.0).map_err(|e| e.to_string())?;
-        Ok((poly.points.iter().map(to3).collect(), poly.closed))
+        let poly = Polyline::regular(c, self.0).map_err(|e| StudioError::Export(e.to_string()))?;
+        Ok((poly.points.iter().map(to3).collect(), poly.closed, D))
     }
 }
 
 struct SurfaceMesh(usize);
 
 impl DimensionVisitor<Surfaces> for SurfaceMesh {
-    type Output = Result<TriangleMesh, String>;
+    type Output = Result<TriangleMesh, StudioError>;
     fn visit<const D: usize>(self, s: &dyn Surface<D>) -> Self::Output {
-        regular(s, self.0, self.0, MeshOptions { uv: true }).map_err(|e| e.to_string())
+        regular(s, self.0, self.0, MeshOptions { uv: true }).map_err(|e| StudioError::Export(e.to_string()))
     }
 }
 
 /// The bytes of `object` (posed at `time`) in the format of `path`'s extension.
-pub fn export(object: &SceneObject, time: Option<f64>, path: &Path) -> Result<Vec<u8>, String> {
-    let (ext, name) = (extension(path), object_name(path));
+pub fn export(object: &SceneObject, time: Option<f64>, path: &Path) -> Result<Vec<u8>, StudioError> {
+    let (format, name) = (Format::of_path(path), object_name(path));
+    let shown = path.display().to_string();
+    let refused = |e: String| StudioError::refused(e).of_action("export");
+    let exported = |e: splinekit_mesh::export::ExportError| StudioError::Export(e.to_string());
     let mut shape = object.shape.clone();
     if let Some(t) = time {
         shape.set_time(t);
     }
     match &shape {
         ShapeDocument::Curve(c) => {
-            let (points, closed) =
-                c.build().map_err(|e| e.to_string())?.visit(CurvePoints(object.style.density.unwrap_or(1000)))?;
-            if !POLYLINE_FORMATS.contains(&ext.as_str()) {
-                let formats = formats_phrase(POLYLINE_FORMATS);
-                return Err(format!("export: curves are written as {formats}, not '{}'", path.display()));
+            let (points, closed, dim) = c.build()?.visit(CurvePoints(object.style.density.unwrap_or(1000)))?;
+            let format = Subject::Curve.check(format, &shown).map_err(refused)?;
+            match format {
+                Format::Svg => polyline_svg(&points, closed, dim).map(String::into_bytes),
+                _ => polyline_bytes(&points, closed, &name, format),
             }
-            polyline_bytes(&points, closed, &name, &ext).map_err(|e| e.to_string())
+            .map_err(exported)
         }
         ShapeDocument::Surface(s) => {
-            let mesh = s.build().map_err(|e| e.to_string())?.visit(SurfaceMesh(object.style.density.unwrap_or(64)))?;
-            if !MESH_FORMATS.contains(&ext.as_str()) {
-                let formats = formats_phrase(MESH_FORMATS);
-                return Err(format!("export: surfaces are written as {formats}, not '{}'", path.display()));
-            }
-            mesh_bytes(std::borrow::Cow::Owned(mesh), &name, &ext).map_err(|e| e.to_string())
+            let mesh = s.build()?.visit(SurfaceMesh(object.style.density.unwrap_or(64)))?;
+            let format = Subject::Surface.check(format, &shown).map_err(refused)?;
+            mesh_bytes(std::borrow::Cow::Owned(mesh), &name, format).map_err(exported)
         }
     }
 }
@@ -77,7 +79,8 @@ mod tests {
         assert!(export(&plane, None, Path::new("p.glb")).expect("glb").starts_with(b"glTF"));
         let heart = SceneObject::from_value(serde_json::json!({"shape": {"type": "heart"}})).expect("valid");
         assert!(export(&heart, None, Path::new("h.obj")).is_ok());
-        let e = export(&heart, None, Path::new("h.stl")).expect_err("a curve has no triangles");
-        assert!(e.contains(".obj, .gltf or .glb"), "{e}");
+        let e = export(&heart, None, Path::new("h.stl")).expect_err("a curve has no triangles").to_string();
+        assert_eq!(e, "export: curves are written as .svg, .obj, .gltf or .glb, not 'h.stl'");
+        assert!(export(&heart, None, Path::new("h.svg")).expect("svg").starts_with(b"<svg"));
     }
 }

@@ -12,6 +12,7 @@ use splinekit_scene::refine::{Refinement, refine};
 use splinekit_scene::{CurveDocument, Curves, DimensionVisitor, ShapeDocument};
 
 use crate::edit::Edit;
+use crate::error::StudioError;
 use crate::view_caches::PICK_RADIUS;
 use crate::view_camera::Projector;
 
@@ -35,7 +36,7 @@ pub enum KnotTool {
 
 /// The curve document of object `object`'s shape, when it is one `refine` works on: one
 /// whose kind declares a spline view.
-fn refinable(shape: &ShapeDocument) -> Result<&CurveDocument, String> {
+fn refinable(shape: &ShapeDocument) -> Result<&CurveDocument, StudioError> {
     match shape {
         ShapeDocument::Curve(c) if c.spline().is_some() => Ok(c),
         ShapeDocument::Curve(c) => {
@@ -44,17 +45,17 @@ fn refinable(shape: &ShapeDocument) -> Result<&CurveDocument, String> {
             } else {
                 ""
             };
-            Err(format!(
+            Err(StudioError::refused(format!(
                 "knot edits work on bezier, rational_bezier, bspline and nurbs curves, not {}{hint}",
                 c.type_name()
-            ))
+            )))
         }
         ShapeDocument::Surface(_) => Err("knot edits from the window work on curves".into()),
     }
 }
 
 /// `n` + 1 samples (t, world point; z = 0 for plane curves) spread over the curve's domain.
-pub fn curve_samples(shape: &ShapeDocument, n: usize) -> Result<Vec<(f64, [f64; 3])>, String> {
+pub fn curve_samples(shape: &ShapeDocument, n: usize) -> Result<Vec<(f64, [f64; 3])>, StudioError> {
     struct Samples(usize);
     impl DimensionVisitor<Curves> for Samples {
         type Output = Vec<(f64, [f64; 3])>;
@@ -70,7 +71,7 @@ pub fn curve_samples(shape: &ShapeDocument, n: usize) -> Result<Vec<(f64, [f64; 
         }
     }
     match shape {
-        ShapeDocument::Curve(c) => Ok(c.build().map_err(|e| e.to_string())?.visit(Samples(n))),
+        ShapeDocument::Curve(c) => Ok(c.build()?.visit(Samples(n))),
         ShapeDocument::Surface(_) => Err("not a curve".into()),
     }
 }
@@ -93,16 +94,16 @@ fn whole_shape(object: usize, doc: &CurveDocument) -> Edit {
 }
 
 /// The edit inserting knot `u` into object `object`'s curve.
-pub fn insert(shape: &ShapeDocument, object: usize, u: f64) -> Result<Edit, String> {
+pub fn insert(shape: &ShapeDocument, object: usize, u: f64) -> Result<Edit, StudioError> {
     let doc = refinable(shape)?;
-    let out = refine(doc, &Refinement::Insert(vec![u])).map_err(|e| e.to_string())?;
+    let out = refine(doc, &Refinement::Insert(vec![u]))?;
     Ok(whole_shape(object, &out.document))
 }
 
 /// The edit raising the degree of object `object`'s curve by one.
-pub fn elevate(shape: &ShapeDocument, object: usize) -> Result<Edit, String> {
+pub fn elevate(shape: &ShapeDocument, object: usize) -> Result<Edit, StudioError> {
     let doc = refinable(shape)?;
-    let out = refine(doc, &Refinement::Elevate(1)).map_err(|e| e.to_string())?;
+    let out = refine(doc, &Refinement::Elevate(1))?;
     Ok(whole_shape(object, &out.document))
 }
 
@@ -122,15 +123,17 @@ fn interior_knots(doc: &CurveDocument) -> Vec<f64> {
 
 /// The edit removing the interior knot nearest `u` from object `object`'s curve, where
 /// the curve moves by at most `tolerance`; an error says when there is none or it cannot go.
-pub fn remove(shape: &ShapeDocument, object: usize, u: f64, tolerance: f64) -> Result<Edit, String> {
+pub fn remove(shape: &ShapeDocument, object: usize, u: f64, tolerance: f64) -> Result<Edit, StudioError> {
     let doc = refinable(shape)?;
     let knot = interior_knots(doc)
         .into_iter()
         .min_by(|a, b| (a - u).abs().total_cmp(&(b - u).abs()))
-        .ok_or_else(|| "remove knot: the curve has no interior knot".to_string())?;
-    let out = refine(doc, &Refinement::Remove { knots: vec![knot], tolerance }).map_err(|e| e.to_string())?;
+        .ok_or(StudioError::refused("remove knot: the curve has no interior knot"))?;
+    let out = refine(doc, &Refinement::Remove { knots: vec![knot], tolerance })?;
     if out.removed == 0 {
-        return Err(format!("remove knot: knot {knot} cannot go without moving the curve by more than {tolerance}"));
+        return Err(StudioError::refused(format!(
+            "remove knot: knot {knot} cannot go without moving the curve by more than {tolerance}"
+        )));
     }
     Ok(whole_shape(object, &out.document))
 }
@@ -173,7 +176,7 @@ mod tests {
         assert_eq!(knots(&removed), Some(7));
         same_curve(&before, &removed, 1e-9);
         // Knot 1 of the original cannot go within 10⁻⁹: refused with the reason.
-        let e = remove(&before, 0, 1.0, 1e-9).expect_err("not removable");
+        let e = remove(&before, 0, 1.0, 1e-9).expect_err("not removable").to_string();
         assert!(e.contains("cannot go"), "{e}");
         let elevated = shape_of(&elevate(&before, 0).expect("elevates"));
         assert_eq!(value(&elevated)["degree"], serde_json::json!(3));

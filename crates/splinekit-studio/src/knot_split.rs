@@ -18,12 +18,13 @@ use splinekit_scene::blending::{BlendingSplineDoc, knot_to_split, split_local_cu
 use splinekit_scene::{CurveDocument, ShapeDocument};
 
 use crate::edit::Edit;
+use crate::error::StudioError;
 
 /// What Split knot says when the selection is not a blending-spline curve.
 pub const SELECT_A_BLENDING_CURVE: &str = "split knot: select a blending-spline curve first";
 
 /// The blending-spline curve document of `shape`, or the message saying what to select.
-fn blending_curve(shape: &ShapeDocument) -> Result<&BlendingSplineDoc, String> {
+fn blending_curve(shape: &ShapeDocument) -> Result<&BlendingSplineDoc, StudioError> {
     match shape {
         ShapeDocument::Curve(CurveDocument::BlendingSpline(doc)) => Ok(doc),
         _ => Err(SELECT_A_BLENDING_CURVE.into()),
@@ -37,15 +38,15 @@ pub fn splits(shape: &ShapeDocument) -> bool {
 
 /// The edit splitting knot `k` of object `object`'s blending-spline curve (local k is
 /// copied to k + 1).
-pub fn split_local(shape: &ShapeDocument, object: usize, k: usize) -> Result<Edit, String> {
-    let out = split_local_curve(blending_curve(shape)?, k).map_err(|e| format!("split knot: {e}"))?;
+pub fn split_local(shape: &ShapeDocument, object: usize, k: usize) -> Result<Edit, StudioError> {
+    let out = split_local_curve(blending_curve(shape)?, k).map_err(|e| StudioError::from(e).of_action("split knot"))?;
     Ok(Edit::Set { object, pointer: "/shape".into(), value: Some(CurveDocument::BlendingSpline(out).to_value()) })
 }
 
 /// The edit splitting the interior knot nearest the parameter `t` (not already double) of
 /// object `object`'s blending-spline curve, and that knot's index.
-pub fn split_near(shape: &ShapeDocument, object: usize, t: f64) -> Result<(Edit, usize), String> {
-    let k = knot_to_split(blending_curve(shape)?, t).map_err(|e| format!("split knot: {e}"))?;
+pub fn split_near(shape: &ShapeDocument, object: usize, t: f64) -> Result<(Edit, usize), StudioError> {
+    let k = knot_to_split(blending_curve(shape)?, t).map_err(|e| StudioError::from(e).of_action("split knot"))?;
     Ok((split_local(shape, object, k)?, k))
 }
 
@@ -66,7 +67,7 @@ mod tests {
         };
         assert_eq!((pointer.as_str(), k, &v["local_curves"]), ("/shape", 3, &serde_json::json!(9)));
         assert_eq!(v["knots"][3], v["knots"][4]);
-        let e = split_local(&heart, 2, 0).expect_err("knot 0 is an end");
+        let e = split_local(&heart, 2, 0).expect_err("knot 0 is an end").to_string();
         assert!(e.starts_with("split knot: k:") && e.contains("got 0"), "{e}");
         let line = ShapeDocument::from_value(serde_json::json!({"type": "line", "from": [0, 0], "to": [1, 0]}))
             .expect("valid");

@@ -42,6 +42,7 @@ pub mod clock;
 pub mod command;
 pub mod document;
 pub mod edit;
+pub mod error;
 pub mod export;
 pub mod gesture;
 pub mod gpu;
@@ -67,23 +68,26 @@ pub mod view_caches;
 pub mod view_camera;
 pub mod viewport;
 
+pub use error::StudioError;
 pub use options::Options;
 
 use winit::event_loop::{ControlFlow, EventLoop};
 
 /// Opens the studio window on the options' document and runs until it closes. Errors:
 /// the document does not parse (its field named), there is no display, or no adapter.
-pub fn run(options: Options) -> Result<(), String> {
+pub fn run(options: Options) -> Result<(), StudioError> {
     let scene = match (&options.path, &options.text) {
         (Some(p), _) => document::read(p)?,
         (None, Some(text)) => document::parse(text)?,
         (None, None) => document::parse(document::STARTER)?,
     };
     let event_loop = EventLoop::new().map_err(|e| {
-        format!("view: cannot open a window ({e}); it needs a display (X11: set DISPLAY, or run under xvfb-run)")
+        StudioError::Graphics(format!(
+            "view: cannot open a window ({e}); it needs a display (X11: set DISPLAY, or run under xvfb-run)"
+        ))
     })?;
     event_loop.set_control_flow(ControlFlow::Wait);
     let mut app = app::App::new(studio::Studio::new(scene, options.path.clone()), options);
-    event_loop.run_app(&mut app).map_err(|e| format!("view: {e}"))?;
+    event_loop.run_app(&mut app).map_err(|e| StudioError::Graphics(format!("view: {e}")))?;
     app.error.map_or(Ok(()), Err)
 }

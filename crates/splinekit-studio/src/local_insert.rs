@@ -14,6 +14,7 @@ use splinekit_scene::blending::{insert_knot_line, insert_local_curve};
 use splinekit_scene::{CurveDocument, Decoration, ShapeDocument, SurfaceDocument};
 
 use crate::edit::Edit;
+use crate::error::StudioError;
 
 /// Whether `shape` takes local insertions: a blending-spline curve or surface.
 pub fn takes_locals(shape: &ShapeDocument) -> bool {
@@ -28,21 +29,22 @@ fn whole_shape(object: usize, value: serde_json::Value) -> Edit {
 }
 
 /// The edit inserting a local curve at `t` into object `object`'s blending spline.
-pub fn insert_curve(shape: &ShapeDocument, object: usize, t: f64) -> Result<Edit, String> {
+pub fn insert_curve(shape: &ShapeDocument, object: usize, t: f64) -> Result<Edit, StudioError> {
     let ShapeDocument::Curve(CurveDocument::BlendingSpline(doc)) = shape else {
         return Err("insert local piece: select a blending spline (curve or surface)".into());
     };
-    let (out, _) = insert_local_curve(doc, t).map_err(|e| format!("insert local piece: {e}"))?;
+    let (out, _) = insert_local_curve(doc, t).map_err(|e| StudioError::from(e).of_action("insert local piece"))?;
     Ok(whole_shape(object, CurveDocument::BlendingSpline(out).to_value()))
 }
 
 /// The edit inserting the knot line `direction` = `t` (a row of patches along the
 /// u-isocurve for [`Direction::U`]) into object `object`'s blending surface.
-pub fn insert_line(shape: &ShapeDocument, object: usize, direction: Direction, t: f64) -> Result<Edit, String> {
+pub fn insert_line(shape: &ShapeDocument, object: usize, direction: Direction, t: f64) -> Result<Edit, StudioError> {
     let ShapeDocument::Surface(SurfaceDocument::BlendingSplineSurface(doc)) = shape else {
         return Err("insert local piece: select a blending spline (curve or surface)".into());
     };
-    let (out, _) = insert_knot_line(doc, direction, t).map_err(|e| format!("insert local piece: {e}"))?;
+    let (out, _) =
+        insert_knot_line(doc, direction, t).map_err(|e| StudioError::from(e).of_action("insert local piece"))?;
     Ok(whole_shape(object, SurfaceDocument::BlendingSplineSurface(out).to_value()))
 }
 
@@ -63,7 +65,7 @@ mod tests {
             panic!("a set")
         };
         assert_eq!((pointer.as_str(), &v["local_curves"]), ("/shape", &serde_json::json!(9)));
-        let e = insert_curve(&heart, 2, 0.0).expect_err("on a knot");
+        let e = insert_curve(&heart, 2, 0.0).expect_err("on a knot").to_string();
         assert!(e.contains("insert local piece") && e.contains("got 0"), "{e}");
         let line = shape(serde_json::json!({"type": "line", "from": [0, 0], "to": [1, 0]}));
         assert!(!takes_locals(&line));

@@ -16,6 +16,7 @@ use splinekit_scene::refine_net::insert_net_knots;
 use splinekit_scene::{DimensionVisitor, ShapeDocument, Surfaces};
 
 use crate::edit::Edit;
+use crate::error::StudioError;
 use crate::view_camera::Projector;
 
 /// Samples per direction of the grid searched for the clicked parameters (cells: one less).
@@ -28,7 +29,7 @@ type Sample = ((f64, f64), [f64; 3]);
 type OnScreen = Option<([f64; 2], f64)>;
 
 /// `n` + 1 × `n` + 1 samples over the surface's domain, `grid[i][j]` at the i-th u and j-th v.
-pub fn surface_samples(shape: &ShapeDocument, n: usize) -> Result<Vec<Vec<Sample>>, String> {
+pub fn surface_samples(shape: &ShapeDocument, n: usize) -> Result<Vec<Vec<Sample>>, StudioError> {
     struct Grid(usize);
     impl DimensionVisitor<Surfaces> for Grid {
         type Output = Vec<Vec<Sample>>;
@@ -49,7 +50,7 @@ pub fn surface_samples(shape: &ShapeDocument, n: usize) -> Result<Vec<Vec<Sample
         }
     }
     match shape {
-        ShapeDocument::Surface(s) => Ok(s.build().map_err(|e| e.to_string())?.visit(Grid(n))),
+        ShapeDocument::Surface(s) => Ok(s.build()?.visit(Grid(n))),
         ShapeDocument::Curve(_) => Err("not a surface".into()),
     }
 }
@@ -102,11 +103,11 @@ pub fn parameters_at(grid: &[Vec<Sample>], projector: &Projector, mouse: [f64; 2
 
 /// The edit inserting knot `t` in `direction` (u-knot for [`Direction::U`]) into object
 /// `object`'s spline net.
-pub fn insert(shape: &ShapeDocument, object: usize, direction: Direction, t: f64) -> Result<Edit, String> {
+pub fn insert(shape: &ShapeDocument, object: usize, direction: Direction, t: f64) -> Result<Edit, StudioError> {
     let ShapeDocument::Surface(doc) = shape else {
         return Err("knot insertion on a surface: the object is a curve".into());
     };
-    let out = insert_net_knots(doc, direction, &[t]).map_err(|e| e.to_string())?;
+    let out = insert_net_knots(doc, direction, &[t])?;
     Ok(Edit::Set { object, pointer: "/shape".into(), value: Some(out.to_value()) })
 }
 

@@ -18,6 +18,7 @@ use crate::clock::Clock;
 use crate::command::{Command, FieldEdit};
 use crate::document::{self, Document};
 use crate::edit::{Edit, EditError};
+use crate::error::StudioError;
 use crate::gesture::{Gesture, GestureKind};
 use crate::group_move::{GroupMove, GroupStart};
 use crate::handles::{Handle, HandleKind};
@@ -127,8 +128,8 @@ fn overlay_handles(
 
 /// The parameter a knot tool's click hits: `at` is what the shape's samples say (`None`: the
 /// click missed the shape, here named `what`); the error is the status line's message.
-fn clicked<T>(at: Result<Option<T>, String>, what: &str) -> Result<T, String> {
-    at?.ok_or_else(|| format!("click on the {what} itself (Escape: cancel)"))
+fn clicked<T>(at: Result<Option<T>, StudioError>, what: &str) -> Result<T, StudioError> {
+    at?.ok_or_else(|| StudioError::refused(format!("click on the {what} itself (Escape: cancel)")))
 }
 
 /// The studio's state: the document (with its history), what is selected, what the view
@@ -225,7 +226,7 @@ impl Studio {
     }
 
     /// The selected object when it is a curve the knot edits work on (else a message).
-    fn curve_object(&self) -> Result<usize, String> {
+    fn curve_object(&self) -> Result<usize, StudioError> {
         let object = self.selection.object.ok_or("select a B-spline, NURBS or Bézier curve first")?;
         match &self.document.scene().objects[object].shape {
             ShapeDocument::Curve(_) => Ok(object),
@@ -236,14 +237,14 @@ impl Studio {
     }
 
     /// Applies an edit made elsewhere (one undo step), or shows why there is none.
-    fn apply_or_say(&mut self, edit: Result<Edit, String>) {
+    fn apply_or_say(&mut self, edit: Result<Edit, StudioError>) {
         match edit {
             Ok(edit) => {
                 if self.edit(edit, false) {
                     self.refresh_selection();
                 }
             }
-            Err(e) => self.status.message = Some(e),
+            Err(e) => self.status.say(&e),
         }
     }
 
@@ -268,7 +269,7 @@ impl Studio {
     /// surface; inserting a local, blending spline) uses it, as the message says.
     fn arm(&mut self, tool: KnotTool) {
         let shape = self.selection.object.map(|o| &self.document.scene().objects[o].shape);
-        let armed: Result<String, String> = match tool {
+        let armed: Result<String, StudioError> = match tool {
             KnotTool::InsertLocal => match (shape, self.blending_object()) {
                 (Some(ShapeDocument::Curve(_)), Some(_)) => {
                     Ok("click on the blending spline where the local curve goes (Escape: cancel)".into())
@@ -300,7 +301,7 @@ impl Studio {
                 self.knot_tool = Some(tool);
                 self.status.message = Some(m);
             }
-            Err(e) => self.status.message = Some(e),
+            Err(e) => self.status.say(&e),
         }
     }
 
@@ -351,7 +352,7 @@ impl Studio {
             Ok(o) => o,
             Err(e) => {
                 self.knot_tool = None;
-                self.status.message = Some(e);
+                self.status.say(&e);
                 return;
             }
         };
@@ -368,7 +369,7 @@ impl Studio {
                 self.knot_tool = None;
                 match split {
                     Ok((edit, k)) => self.split_done(edit, k),
-                    Err(e) => self.status.message = Some(e),
+                    Err(e) => self.status.say(&e),
                 }
                 return;
             }
@@ -392,7 +393,7 @@ impl Studio {
                 let edit = knot_split::split_local(shape, object, k);
                 match edit {
                     Ok(edit) => self.split_done(edit, k),
-                    Err(e) => self.status.message = Some(e),
+                    Err(e) => self.status.say(&e),
                 }
             }
             _ => self.arm(KnotTool::SplitKnot),
@@ -453,8 +454,8 @@ impl Studio {
         let mut d = [0.0; 3];
         d[axis] = self.snapping.step * f64::from(steps);
         let edit = GroupStart::read(self.document.scene(), self.time(), &handles)
-            .ok_or_else(|| "nudge: the selection's values cannot be read".to_string())
-            .and_then(|g| g.edit(&GroupMove::Translate(d)).map_err(|e| e.to_string()));
+            .ok_or(StudioError::refused("nudge: the selection's values cannot be read"))
+            .and_then(|g| Ok(g.edit(&GroupMove::Translate(d))?));
         self.apply_or_say(edit);
     }
 
@@ -516,7 +517,7 @@ impl Studio {
             Ok(scene) => {
                 *self = Studio::new(scene, Some(path));
             }
-            Err(e) => self.status.load_error = Some(e),
+            Err(e) => self.status.load_error = Some(e.to_string()),
         }
     }
 
@@ -617,13 +618,13 @@ impl Studio {
             return;
         };
         let written = crate::export::export(object, self.time(), path).and_then(|bytes| {
-            splinekit_scene::write_file(path, &bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
+            splinekit_scene::write_file(path, &bytes).map_err(|e| StudioError::file(path, format!("cannot write: {e}")))
         });
-        self.status.message = Some(written.map_or_else(|e| e, |()| format!("exported {}", path.display())));
+        self.status.message = Some(written.map_or_else(|e| e.to_string(), |()| format!("exported {}", path.display())));
     }
 
     /// The scene as the 3-D view draws it at `size` pixels, as one scene ([`ViewScene::merged`]).
-    pub fn render_scene(&mut self, size: (u32, u32), overlays: bool) -> Result<RenderScene, String> {
+    pub fn render_scene(&mut self, size: (u32, u32), overlays: bool) -> Result<RenderScene, StudioError> {
         Ok(self.view_scene(size, overlays)?.merged())
     }
 
@@ -633,12 +634,14 @@ impl Studio {
     /// continuity, [`Analysis`]); with `overlays`, the handles and the
     /// selected local Bézier's net, the hovered and selected handles drawn larger. The
     /// changes since the last call come with it.
-    pub fn view_scene(&mut self, size: (u32, u32), overlays: bool) -> Result<ViewScene<'_>, String> {
+    pub fn view_scene(&mut self, size: (u32, u32), overlays: bool) -> Result<ViewScene<'_>, StudioError> {
         let aspect = size.0.max(1) as f32 / size.1.max(1) as f32;
         let time = self.time();
         self.view.compose(self.document.scene(), time, aspect, self.gesture.is_some())?;
         self.follow_handles();
-        let Some((rs, composed_bounds)) = self.view.composed() else { return Err("nothing composed".into()) };
+        let Some((rs, composed_bounds)) = self.view.composed() else {
+            return Err(StudioError::Graphics("nothing composed".into()));
+        };
         let camera = self.camera.get_or_insert_with(|| {
             ViewCamera::new(rs.camera.unwrap_or_else(|| {
                 splinekit_render::Camera::fit(composed_bounds.unwrap_or(([-1.0; 3], [1.0; 3])), 0.9, 0.5, aspect)

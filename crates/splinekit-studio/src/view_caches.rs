@@ -7,6 +7,7 @@
 use splinekit_render::{RenderScene, compose_with};
 use splinekit_scene::scenes::SceneDocument;
 
+use crate::error::StudioError;
 use crate::handles::{Handle, handles_with};
 use crate::live_surfaces::LiveSurfaces;
 use crate::live_view::{self, Changes, KeptPolyline, Lattice};
@@ -90,7 +91,7 @@ impl ViewCaches {
         time: Option<f64>,
         aspect: f32,
         dragging: bool,
-    ) -> Result<(), String> {
+    ) -> Result<(), StudioError> {
         if let Some(c) = &self.composed
             && c.scene == *scene
             && c.time == time
@@ -121,7 +122,7 @@ impl ViewCaches {
             return Ok(());
         }
         let live = &self.live;
-        let composed = compose_with(scene, time, aspect, &|i| live.surface(i)).map_err(|e| e.to_string())?;
+        let composed = compose_with(scene, time, aspect, &|i| live.surface(i))?;
         let lattices = live_view::lattices(scene, &composed, live);
         self.handles = self.visible_handles(scene, time)?;
         let bounds = composed.bounds();
@@ -156,9 +157,9 @@ impl ViewCaches {
     /// The handles the view may show and pick in `scene` at `time`: local pieces (origins
     /// and Bézier control points) of objects drawn with `local_pieces`, control points of
     /// objects drawn with `control_net`.
-    pub fn visible_handles(&self, scene: &SceneDocument, time: Option<f64>) -> Result<Vec<Handle>, String> {
+    pub fn visible_handles(&self, scene: &SceneDocument, time: Option<f64>) -> Result<Vec<Handle>, StudioError> {
         let live = &self.live;
-        let all = handles_with(scene, time, &|i, d| live.built_from(i, d)).map_err(|e| e.to_string())?;
+        let all = handles_with(scene, time, &|i, d| live.built_from(i, d))?;
         let shown = |h: &Handle| {
             let style = &scene.objects[h.object].style;
             if h.kind.piece().is_some() { style.local_pieces } else { style.control_net }

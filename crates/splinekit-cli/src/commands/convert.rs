@@ -5,6 +5,7 @@
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use serde_json::{Value, json};
+use splinekit_mesh::export::Format;
 use splinekit_scene::{SceneOrShape, ShapeDocument, SurfaceDocument};
 use splinekit_step::documents::faces::loop_samples;
 use splinekit_step::documents::{Exported, Form, export_document, import_items, samples};
@@ -32,20 +33,13 @@ pub struct ConvertArgs {
     pub report: Option<String>,
 }
 
-#[derive(PartialEq)]
-enum Format {
-    Json,
-    Step,
-}
-
+/// The format of a file named `path` (`-`: JSON on standard input or output): a document
+/// or STEP, else the error of `flag`.
 fn format_of(path: &str, flag: &str) -> Result<Format> {
-    let lower = path.to_ascii_lowercase();
-    if path == "-" || lower.ends_with(".json") {
-        Ok(Format::Json)
-    } else if lower.ends_with(".step") || lower.ends_with(".stp") {
-        Ok(Format::Step)
-    } else {
-        bail!("{flag}: unknown format of '{path}' (expected .json, .step or .stp)")
+    match Format::of_name(path) {
+        _ if path == "-" => Ok(Format::Json),
+        Some(f @ (Format::Json | Format::Step)) => Ok(f),
+        _ => bail!("{flag}: unknown format of '{path}' (expected .json, .step or .stp)"),
     }
 }
 
@@ -182,7 +176,8 @@ fn step_to_any(args: &ConvertArgs, output: Format) -> Result<()> {
             splinekit_scene::write_file(&args.output, write_step(&items, &name, &header(&name)).as_bytes())
                 .map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
         }
-        Format::Json => {
+        // JSON (`format_of` gives only JSON or STEP).
+        _ => {
             let value: Value = if let [item] = imported.items.as_slice() {
                 shape_value(&item.document)
             } else {

@@ -5,15 +5,8 @@ use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use serde_json::{Value, json};
 use splinekit::Point;
-use splinekit::curve::Curve;
-use splinekit::query::offset::hermite_fit::MAX_TOTAL_PIECES;
-use splinekit::query::offset::surface_offset::MAX_GRID_POINTS;
-use splinekit::query::{offset_curve, offset_surface};
-use splinekit_scene::budget::Cost;
-use splinekit_scene::points::from_points;
-use splinekit_scene::refine::bspline_doc;
-use splinekit_scene::surfaces::BSplineSurfaceDoc;
-use splinekit_scene::{Curves, DimensionVisitor, ShapeDocument, SurfaceDocument};
+use splinekit_scene::ShapeDocument;
+use splinekit_scene::answers::{OffsetCurve, offset_argument, offset_surface_document};
 
 use crate::budget;
 use crate::commands::intersect::positive;
@@ -44,40 +37,9 @@ pub struct OffsetArgs {
 /// The flag a kernel error is about, on the command line.
 fn flagged(e: splinekit::Error) -> anyhow::Error {
     let message = e.to_string();
-    for (field, flag) in [("distance", "--distance"), ("tolerance", "--tolerance"), ("normal", "--normal")] {
-        if let Some(rest) = message.strip_prefix(field).and_then(|r| r.strip_prefix(':')) {
-            return anyhow!("{flag}:{rest}");
-        }
-    }
-    anyhow!("SHAPE: {message}")
-}
-
-struct OffsetCurve {
-    distance: f64,
-    tolerance: f64,
-    normal: Option<Point<3>>,
-}
-
-impl DimensionVisitor<Curves> for OffsetCurve {
-    type Output = Result<Value>;
-    fn visit<const D: usize>(self, curve: &dyn Curve<D>) -> Result<Value> {
-        let normal = if D == 3 { self.normal.or(Some(Point::<3>::z())) } else { self.normal };
-        let off = offset_curve(curve, self.distance, normal, self.tolerance).map_err(flagged)?;
-        eprintln!(
-            "offset: {} piece{}, max error {:.3e} (tolerance {:e}), {} cusps and {} self-intersections of the raw offset trimmed",
-            off.pieces.len(),
-            if off.pieces.len() == 1 { "" } else { "s" },
-            off.max_error,
-            self.tolerance,
-            off.cusps.len(),
-            off.crossings.len()
-        );
-        if let [piece] = &off.pieces[..] {
-            return Ok(bspline_doc(&piece.curve).to_value());
-        }
-        let objects: Vec<Value> =
-            off.pieces.iter().map(|p| json!({ "shape": bspline_doc(&p.curve).to_value() })).collect();
-        Ok(json!({ "type": "scene", "objects": objects }))
+    match offset_argument(&e) {
+        Some(field) => anyhow!("--{field}{}", &message[field.len()..]),
+        None => anyhow!("SHAPE: {message}"),
     }
 }
 
@@ -99,12 +61,17 @@ pub fn run(args: &OffsetArgs) -> Result<()> {
         budget::check_shape(&cost)?;
         Ok(match doc {
             ShapeDocument::Curve(c) => {
-                // At most MAX_TOTAL_PIECES pieces of 8 samples (each a point and two derivatives)
-                // over all the approximations of the offset, all of them held at the most.
-                let work = MAX_TOTAL_PIECES as f64 * 8.0 * 3.0 * cost.eval;
-                let request = Cost::new(MAX_TOTAL_PIECES as f64 * 200.0, work);
+                let request = splinekit_scene::budget::offset_curve(cost.eval);
                 budget::check_request("--tolerance", "the offset's refinement", &cost, request)?;
-                c.build()?.visit(OffsetCurve { distance, tolerance, normal })?
+                let (pieces, report) =
+                    c.build()?.visit(OffsetCurve { distance, tolerance, normal }).map_err(flagged)?;
+                eprintln!("{report}");
+                if let [piece] = &pieces[..] {
+                    piece.to_value()
+                } else {
+                    let objects: Vec<Value> = pieces.iter().map(|p| json!({ "shape": p.to_value() })).collect();
+                    json!({ "type": "scene", "objects": objects })
+                }
             }
             ShapeDocument::Surface(s) => {
                 if normal.is_some() {
@@ -114,28 +81,11 @@ pub fn run(args: &OffsetArgs) -> Result<()> {
                 if dim != 3 {
                     bail!("SHAPE: surface offsets are of 3-D surfaces, this one is {dim}-D");
                 }
-                // The last grid and those before it (a third more), at its nodes and midpoints,
-                // each a point and a normal (up to nine evaluations at a singular point).
-                let samples = 4.0 * 1.34 * MAX_GRID_POINTS as f64;
-                let request = Cost::new(samples * 200.0, samples * 12.0 * cost.eval);
+                let request = splinekit_scene::budget::offset_surface(cost.eval);
                 budget::check_request("--tolerance", "the offset's refinement", &cost, request)?;
                 let surface = s.build_in::<3>().map_err(|e| anyhow!("SHAPE: {e}"))?;
-                let off = offset_surface(surface.as_ref(), distance, tolerance).map_err(flagged)?;
-                eprintln!(
-                    "offset: max error {:.3e} (tolerance {:e}), {} × {} grid",
-                    off.max_error, tolerance, off.grid.0, off.grid.1
-                );
-                let b = &off.surface;
-                let (ku, kv) = b.knots();
-                let doc = SurfaceDocument::BsplineSurface(BSplineSurfaceDoc {
-                    degree_u: b.degrees().0,
-                    degree_v: b.degrees().1,
-                    knots_u: ku.to_vec(),
-                    knots_v: kv.to_vec(),
-                    control_points: b.control_points().iter().map(|row| from_points(row)).collect(),
-                    periodic_u: false,
-                    periodic_v: false,
-                });
+                let (doc, report) = offset_surface_document(surface.as_ref(), distance, tolerance).map_err(flagged)?;
+                eprintln!("{report}");
                 doc.to_value()
             }
         })

@@ -4,6 +4,7 @@
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
+use splinekit_mesh::export::Format;
 use splinekit_render::{Camera, Image, Renderer, compose, write_gif};
 use splinekit_scene::scenes::SceneDocument;
 
@@ -117,7 +118,7 @@ pub fn animation_camera(scene: &SceneDocument, size: (u32, u32)) -> Result<Optio
 }
 
 pub fn run_render(args: &RenderArgs) -> Result<()> {
-    if !args.output.to_ascii_lowercase().ends_with(".png") {
+    if Format::of_name(&args.output) != Some(Format::Png) {
         bail!("-o: render writes .png files, not '{}'", args.output);
     }
     let scene = read_scene(&args.scene)?;
@@ -130,7 +131,7 @@ pub fn run_render(args: &RenderArgs) -> Result<()> {
 }
 
 pub fn run_animate(args: &AnimateArgs) -> Result<()> {
-    if !args.output.to_ascii_lowercase().ends_with(".gif") {
+    if Format::of_name(&args.output) != Some(Format::Gif) {
         bail!("-o: animate writes .gif files, not '{}'", args.output);
     }
     let scene = read_scene(&args.scene)?;

@@ -14,7 +14,8 @@ use splinekit::subdivision::surface::bezier_patches::MAX_DEPTH;
 use splinekit::subdivision::surface::{BoundaryRule, Cage, Crease, Scheme as KernelScheme, SubdivisionSurface};
 use splinekit_mesh::doo_sabin_limit::doo_sabin_limit_mesh;
 
-use splinekit_mesh::export::{ExportError, mesh_bytes};
+use splinekit_mesh::export::format::phrase;
+use splinekit_mesh::export::{ExportError, Format, Subject, mesh_bytes};
 use splinekit_mesh::limit_mesh::{LimitMesh, limit_mesh};
 use splinekit_mesh::subdivision_surface::{PolygonMesh, SurfaceScheme, read_obj_polygons, write_obj_polygons};
 
@@ -68,7 +69,7 @@ pub struct SubdivideSurfaceArgs {
     /// diagonal) of the exact limit, instead of --steps levels.
     #[arg(long)]
     pub tolerance: Option<f64>,
-    /// Output: .obj (polygons), .stl, .ply, .gltf or .glb (triangulated, with normals),
+    /// Output: .obj (polygons), .stl, .stla, .ply, .gltf or .glb (triangulated, with normals),
     /// .step (Catmull–Clark or Loop limit surface: exact bicubic, or (4, 4) with one edge
     /// collapsed, patches on regular faces, faces at extraordinary vertices (and creases,
     /// Loop boundaries) refined locally --steps times (up to 30) or to --tolerance, the
@@ -118,15 +119,16 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         (None, false) => String::new(),
         (None, true) => bail!("-o: an output file is needed (or --at FACE,U,V to evaluate)"),
     };
-    let ext = output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
-    if at.is_empty() && !matches!(ext.as_str(), "obj" | "stl" | "ply" | "gltf" | "glb" | "step") {
-        bail!("-o: writes .obj, .stl, .ply, .gltf, .glb or .step, not '{output}'");
+    let format = Format::of_output(&output);
+    if at.is_empty() && !format.is_some_and(|f| Subject::SubdivisionCage.formats().contains(&f)) {
+        bail!("-o: writes {}, not '{output}'", phrase(Subject::SubdivisionCage.formats()));
     }
-    if args.tolerance.is_some() && ext != "step" {
+    let step = format == Some(Format::Step);
+    if args.tolerance.is_some() && !step {
         bail!("--tolerance: is for .step output (the depth of the patches at extraordinary vertices), use --steps");
     }
     // STEP refines only the faces at extraordinary vertices (linear in the depth).
-    let max_steps = if ext == "step" { MAX_DEPTH } else { 10 };
+    let max_steps = if step { MAX_DEPTH } else { 10 };
     let steps = super::eval::parse_count("--steps", &args.steps, max_steps)?;
     let text = read_text(&args.mesh, "mesh")?;
     let mesh = read_obj_polygons(&text).map_err(|e| anyhow!("mesh: {e}"))?;
@@ -136,8 +138,7 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
     // Each step makes about four corners of every corner (an n-gon becomes n quads); a
     // corner holds its point, its place in a face and its adjacency entries.
     let corners: f64 = mesh.faces.iter().map(|f| f.len() as f64).sum();
-    let out_corners =
-        if ext == "step" { corners * 4.0 * 12.0 * steps as f64 } else { corners * 4f64.powi(steps as i32) };
+    let out_corners = if step { corners * 4.0 * 12.0 * steps as f64 } else { corners * 4f64.powi(steps as i32) };
     crate::budget::current().check(
         "--steps",
         &format!("{steps} steps on {} faces", mesh.faces.len()),
@@ -149,15 +150,15 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
             if !at.is_empty() {
                 bail!("--at: Doo–Sabin has no exact evaluation here; use catmull-clark, loop or bilinear");
             }
-            if ext == "step" {
+            if step {
                 bail!("-o: STEP export is for catmull-clark, loop and bilinear, not doo-sabin");
             }
             let out = mesh.subdivide(SurfaceScheme::DooSabin, steps).map_err(|e| anyhow!("mesh: {e}"))?;
             if args.limit {
                 let m = doo_sabin_limit_mesh(&out).map_err(|e| anyhow!("mesh: {e}"))?;
-                return write(Written::Limit(&m), &name, &ext, &output);
+                return write(Written::Limit(&m), &name, format, &output);
             }
-            return write(Written::Polygons(&out), &name, &ext, &output);
+            return write(Written::Polygons(&out), &name, format, &output);
         }
         Scheme::CatmullClark => KernelScheme::CatmullClark,
         Scheme::Loop => KernelScheme::Loop,
@@ -179,18 +180,18 @@ pub fn run(args: &SubdivideSurfaceArgs) -> Result<()> {
         }
         return crate::output::write_json(&serde_json::Value::Array(samples), args.output.as_deref());
     }
-    if ext == "step" {
+    if step {
         return write_step(&surface, steps, args.tolerance, &name, &output);
     }
     let result = surface.subdivide(steps).map_err(|e| anyhow!("mesh: {e}"))?;
     if args.limit {
         let m = limit_mesh(&result).map_err(|e| anyhow!("mesh: {e}"))?;
-        return write(Written::Limit(&m), &name, &ext, &output);
+        return write(Written::Limit(&m), &name, format, &output);
     }
     let c = result.cage();
     let faces: Vec<Vec<u32>> = (0..c.face_count()).map(|f| c.face(f).to_vec()).collect();
     let out = PolygonMesh { vertices: c.vertices.iter().map(|p| [p.x, p.y, p.z]).collect(), faces };
-    write(Written::Polygons(&out), &name, &ext, &output)
+    write(Written::Polygons(&out), &name, format, &output)
 }
 
 /// What is written: the subdivided polygons, or (`--limit`) the limit mesh, its vertices
@@ -202,8 +203,9 @@ enum Written<'a> {
 
 /// Writes `mesh` to `path`: for `.obj` as it is (the polygons, or the limit mesh with its
 /// normals, `vn`), the other formats triangulated.
-fn write(mesh: Written<'_>, name: &str, ext: &str, path: &str) -> Result<()> {
-    let bytes = if ext == "obj" {
+fn write(mesh: Written<'_>, name: &str, format: Option<Format>, path: &str) -> Result<()> {
+    let format = format.ok_or_else(|| anyhow!("-o: no format in '{path}'"))?;
+    let bytes = if format == Format::Obj {
         let mut bytes = Vec::new();
         match mesh {
             Written::Polygons(m) => write_obj_polygons(m, name, &mut bytes),
@@ -215,7 +217,7 @@ fn write(mesh: Written<'_>, name: &str, ext: &str, path: &str) -> Result<()> {
             Written::Polygons(m) => m.triangulate(),
             Written::Limit(m) => m.triangles(),
         };
-        mesh_bytes(Cow::Owned(triangles), name, ext)
+        mesh_bytes(Cow::Owned(triangles), name, format)
     }
     .map_err(|e| anyhow!("{e}"))?;
     crate::output::write_bytes(&bytes, Some(path))

@@ -1,24 +1,31 @@
-//! `splinekit tessellate`: curves as polylines (.svg, .obj, .gltf, .glb) and surfaces as
-//! triangle meshes (.obj, .stl, .ply, .gltf, .glb), regular (`--density`) or adaptive
-//! (`--tolerance`).
+//! `splinekit tessellate`: curves as polylines (.svg, .obj, .gltf, .glb), surfaces as
+//! triangle meshes (.obj, .stl, .stla, .ply, .gltf, .glb), regular (`--density`) or
+//! adaptive (`--tolerance`), and scenes in every mesh format (each object at its own
+//! `density`, as the renderer draws it).
 
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use splinekit::curve::Curve;
 use splinekit::surface::Surface;
-use splinekit_mesh::export::by_extension::{MESH_FORMATS, formats_phrase, mesh_bytes, polyline_bytes};
+use std::path::Path;
+
+use splinekit_mesh::export::by_extension::{mesh_bytes, object_name, polyline_bytes, polyline_svg};
+use splinekit_mesh::export::{Format, Subject};
 use splinekit_mesh::surface_mesh::{adaptive_with_limit, regular, to3};
-use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, Projection, SvgFigure, TriangleMesh};
+use splinekit_mesh::{AdaptiveTolerance, MeshOptions, Polyline, TriangleMesh};
 use splinekit_scene::budget::ShapeCost;
 use splinekit_scene::{Curves, DimensionVisitor, SceneOrShape, ShapeDocument, Surfaces};
 
 #[derive(Args, Debug)]
 pub struct TessellateArgs {
-    /// Shape document, or a scene document for .gltf/.glb (JSON file, or - for standard input).
+    /// Shape or scene document (JSON file, or - for standard input).
     pub shape: String,
     /// Output file; the extension picks the format. Curves: .svg (drawing), .obj (`l`
     /// polyline), .gltf/.glb (line strip). Surfaces: .obj (with normals and uv), .stl
-    /// (binary; .stla for ASCII), .ply (ASCII, normals and uv), .gltf/.glb.
+    /// (binary; .stla for ASCII), .ply (ASCII, normals and uv), .gltf/.glb. Scenes: .obj (a
+    /// group per object, curves as `l` lines), .stl/.stla (every surface in one mesh; a
+    /// curve is refused), .ply (one mesh, curves as edges), .gltf/.glb (animated as morph
+    /// targets).
     #[arg(short, long)]
     pub output: String,
     /// Regular sampling: segments for curves, cells per direction for surfaces.
@@ -28,7 +35,8 @@ pub struct TessellateArgs {
     /// curves 1/1000 of their size; surfaces a regular 64×64 grid).
     #[arg(long, allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
-    /// Pose the document's animation at this time (seconds).
+    /// Pose the document's animation at this time (seconds); a scene written as .gltf/.glb
+    /// carries its whole animation instead.
     #[arg(long, allow_hyphen_values = true)]
     pub time: Option<String>,
 }
@@ -80,28 +88,27 @@ impl DimensionVisitor<Surfaces> for SurfaceTriangles<'_> {
     }
 }
 
-/// A scene as glTF: one node per drawn mesh or line; an animated scene's frames (its
-/// clock's duration × fps) as morph targets with a weights animation.
-fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, ext: &str) -> Result<()> {
-    if !matches!(ext, "gltf" | "glb") {
-        bail!("-o: scenes are written as .gltf or .glb, not '{}'", args.output);
-    }
-    let (frames, fps) = if scene.is_animated() { (scene.clock().frames(), scene.clock().fps) } else { (1, 1.0) };
+/// A scene in any mesh format ([`splinekit_render::scene_file`]): glTF with one node per
+/// drawn mesh or line and an animated scene's frames (its clock's duration × fps) as morph
+/// targets; OBJ a group per object; STL and PLY one mesh (PLY with the lines as edges).
+fn write_scene(scene: &splinekit_scene::SceneDocument, args: &TessellateArgs, format: Option<Format>) -> Result<()> {
+    let format = Subject::Scene.check(format, &args.output).map_err(|e| anyhow!("-o: {e}"))?;
+    let time = args.time.as_deref().map(super::eval::parse_time).transpose()?;
+    let frames = if format.is_gltf() && scene.is_animated() { scene.clock().frames() } else { 1 };
     let frame = crate::budget::scene_frame(scene)?;
     crate::budget::current().check(
         if frames > 1 { "animation" } else { "objects" },
         &format!("{} objects over {frames} frames", scene.objects.len()),
         frame.times(frames as f64),
     )?;
-    let gltf = splinekit_render::scene_to_gltf(scene, frames, fps)?;
-    let bytes = gltf.to_file_bytes(ext).map_err(|e| anyhow!("{e}"))?;
+    let bytes = splinekit_render::scene_file(scene, format, &object_name(Path::new(&args.output)), time)?;
     crate::output::write_bytes(&bytes, Some(&args.output))
 }
 
 pub fn run(args: &TessellateArgs) -> Result<()> {
-    let ext = args.output.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
+    let format = Format::of_output(&args.output);
     let mut doc = match crate::input::read_document(&args.shape, "shape")? {
-        SceneOrShape::Scene(scene) => return write_scene(&scene, args, &ext),
+        SceneOrShape::Scene(scene) => return write_scene(&scene, args, format),
         SceneOrShape::Shape(doc) => doc,
     };
     if let Some(t) = &args.time {
@@ -110,34 +117,23 @@ pub fn run(args: &TessellateArgs) -> Result<()> {
     let cost = doc.cost();
     crate::budget::check_shape(&cost)?;
     check_request(&doc, args, &cost)?;
-    let name = std::path::Path::new(&args.output).file_stem().and_then(|s| s.to_str()).unwrap_or("shape").to_string();
+    let name = object_name(Path::new(&args.output));
     let bytes: Vec<u8> = match &doc {
         ShapeDocument::Curve(c) => {
-            if !matches!(ext.as_str(), "svg" | "obj" | "gltf" | "glb") {
-                bail!("-o: curves are written as .svg, .obj, .gltf or .glb, not '{}'", args.output);
-            }
+            let format = Subject::Curve.check(format, &args.output).map_err(|e| anyhow!("-o: {e}"))?;
             let curve = c.build()?;
             let (points, closed, dim) = curve.visit(CurvePoly(args))?;
-            match ext.as_str() {
-                "svg" => {
-                    let proj = if dim >= 3 { Projection::view(0.6, 0.45) } else { Projection::TOP };
-                    let mut fig = SvgFigure::new(800.0, 600.0, proj);
-                    let pts: Vec<splinekit::Point<3>> =
-                        points.iter().map(|p| splinekit::Point::<3>::from(*p)).collect();
-                    fig.path(&pts, closed, "#1f5fbf", 2.0);
-                    fig.render().map_err(|e| anyhow!("{e}"))?.into_bytes()
-                }
-                _ => polyline_bytes(&points, closed, &name, &ext).map_err(|e| anyhow!("{e}"))?,
+            match format {
+                Format::Svg => polyline_svg(&points, closed, dim).map_err(|e| anyhow!("{e}"))?.into_bytes(),
+                _ => polyline_bytes(&points, closed, &name, format).map_err(|e| anyhow!("{e}"))?,
             }
         }
         ShapeDocument::Surface(s) => {
-            if !MESH_FORMATS.contains(&ext.as_str()) {
-                bail!("-o: surfaces are written as {}, not '{}'", formats_phrase(MESH_FORMATS), args.output);
-            }
+            let format = Subject::Surface.check(format, &args.output).map_err(|e| anyhow!("-o: {e}"))?;
             let surface = s.build()?;
-            let uv = matches!(ext.as_str(), "obj" | "ply" | "gltf" | "glb");
+            let uv = matches!(format, Format::Obj | Format::Ply | Format::Gltf | Format::Glb);
             let mesh = surface.visit(SurfaceTriangles(args, uv, crate::budget::adaptive_cells(&cost)))?;
-            mesh_bytes(std::borrow::Cow::Owned(mesh), &name, &ext).map_err(|e| anyhow!("{e}"))?
+            mesh_bytes(std::borrow::Cow::Owned(mesh), &name, format).map_err(|e| anyhow!("{e}"))?
         }
     };
     crate::output::write_bytes(&bytes, Some(&args.output))

@@ -8,6 +8,7 @@
 use serde_json::{Value, json};
 
 use super::base64::base64;
+use super::format::Format;
 use super::representable::{ExportError, Precision, check_mesh, check_value, single_precision_triangles};
 use crate::triangle_mesh::TriangleMesh;
 
@@ -145,9 +146,9 @@ impl GltfScene {
         GltfScene { objects: vec![GltfObject { name: name.to_string(), geometry, color, frames: vec![] }] }
     }
 
-    /// `.glb` bytes for `ext` = "glb", else `.gltf` text bytes.
-    pub fn to_file_bytes(&self, ext: &str) -> Result<Vec<u8>, ExportError> {
-        if ext.eq_ignore_ascii_case("glb") { self.to_glb() } else { Ok(self.to_gltf()?.into_bytes()) }
+    /// `.glb` bytes for [`Format::Glb`], else `.gltf` text bytes.
+    pub fn to_format_bytes(&self, format: Format) -> Result<Vec<u8>, ExportError> {
+        if format == Format::Glb { self.to_glb() } else { Ok(self.to_gltf()?.into_bytes()) }
     }
 
     /// The primitive of one object's geometry.

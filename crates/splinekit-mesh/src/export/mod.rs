@@ -7,12 +7,14 @@
 
 pub mod base64;
 pub mod by_extension;
+pub mod format;
 pub mod gltf;
 pub mod obj;
 pub mod ply;
 pub mod representable;
 pub mod stl;
 
-pub use by_extension::{EXPORT_COLOR, mesh_bytes, polyline_bytes};
+pub use by_extension::{EXPORT_COLOR, mesh_bytes, polyline_bytes, polyline_svg};
+pub use format::{Format, Subject};
 pub use gltf::{GltfGeometry, GltfObject, GltfScene};
 pub use representable::ExportError;

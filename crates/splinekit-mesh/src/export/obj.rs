@@ -62,6 +62,71 @@ pub fn write_obj_polyline(
     Ok(())
 }
 
+/// One object of an OBJ file of several: its triangles (with their normals where the mesh
+/// has them) and its polylines, each a list of points and whether it closes.
+#[derive(Debug, Clone, Copy)]
+pub struct ObjObject<'a> {
+    /// The object's name (`o` and `g`); whitespace and control characters become `_`.
+    pub name: &'a str,
+    /// Its triangles.
+    pub mesh: &'a TriangleMesh,
+    /// Its polylines (`l`).
+    pub lines: &'a [(Vec<[f64; 3]>, bool)],
+}
+
+/// Writes several objects as one OBJ text: for each an `o` and a `g` line with its name,
+/// its vertices and normals, its triangles (`f v//vn`, or `f v` without normals) and its
+/// polylines (`l`, a closed one repeating its first vertex). Indices count over the whole
+/// file. Refuses non-finite numbers before writing anything.
+pub fn write_obj_objects(objects: &[ObjObject<'_>], mut out: impl Write) -> Result<(), ExportError> {
+    for o in objects {
+        check_mesh(o.mesh, Precision::Double, "OBJ")?;
+        for (points, _) in o.lines {
+            check_vectors(points, Precision::Double, "OBJ", "points")?;
+        }
+    }
+    out.write_all(b"# splinekit\n")?;
+    let (mut vertices, mut normals) = (0usize, 0usize);
+    for o in objects {
+        let name = one_line(o.name).replace(char::is_whitespace, "_");
+        writeln!(out, "o {name}\ng {name}")?;
+        for p in o.mesh.positions.iter().chain(o.lines.iter().flat_map(|(points, _)| points)) {
+            writeln!(out, "v {} {} {}", p[0], p[1], p[2])?;
+        }
+        for n in &o.mesh.normals {
+            writeln!(out, "vn {} {} {}", n[0], n[1], n[2])?;
+        }
+        let has_n = !o.mesh.normals.is_empty();
+        for t in &o.mesh.triangles {
+            out.write_all(b"f")?;
+            for &i in t {
+                let (v, n) = (vertices + i as usize + 1, normals + i as usize + 1);
+                if has_n { write!(out, " {v}//{n}") } else { write!(out, " {v}") }?;
+            }
+            out.write_all(b"\n")?;
+        }
+        let mut first = vertices + o.mesh.positions.len() + 1;
+        for (points, closed) in o.lines {
+            if points.is_empty() {
+                continue;
+            }
+            out.write_all(b"l")?;
+            for i in first..first + points.len() {
+                write!(out, " {i}")?;
+            }
+            if *closed {
+                write!(out, " {first}")?;
+            }
+            out.write_all(b"\n")?;
+            first += points.len();
+        }
+        vertices = first - 1;
+        normals += o.mesh.normals.len();
+    }
+    out.flush()?;
+    Ok(())
+}
+
 /// Reads the vertices, normals, texture coordinates and triangles of an OBJ file written by
 /// [`write_obj`] (faces with one index triple per corner, positions and attributes sharing
 /// indices). Errors name the line.

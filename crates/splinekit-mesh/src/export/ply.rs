@@ -8,8 +8,21 @@ use crate::triangle_mesh::TriangleMesh;
 
 /// Writes the mesh as ASCII PLY to `out` (give it a buffered writer); refuses non-finite
 /// numbers before writing anything.
-pub fn write_ply(mesh: &TriangleMesh, mut out: impl Write) -> Result<(), ExportError> {
+pub fn write_ply(mesh: &TriangleMesh, out: impl Write) -> Result<(), ExportError> {
+    write_ply_with_edges(mesh, &[], out)
+}
+
+/// [`write_ply`] with `edges` (pairs of vertex indices: the segments of polylines) as an
+/// `edge` element (`vertex1 vertex2`) after the faces, when there are any.
+pub fn write_ply_with_edges(mesh: &TriangleMesh, edges: &[[u32; 2]], mut out: impl Write) -> Result<(), ExportError> {
     check_mesh(mesh, Precision::Double, "PLY")?;
+    let n = mesh.positions.len();
+    if let Some((k, e)) = edges.iter().enumerate().find(|(_, e)| e.iter().any(|&i| i as usize >= n)) {
+        return Err(ExportError::Unrepresentable {
+            field: format!("edges[{k}]"),
+            message: format!("{e:?} refers past the {n} vertices"),
+        });
+    }
     let (has_n, has_uv, has_c) = (!mesh.normals.is_empty(), !mesh.uvs.is_empty(), !mesh.colors.is_empty());
     out.write_all(b"ply\nformat ascii 1.0\ncomment splinekit\n")?;
     writeln!(out, "element vertex {}", mesh.positions.len())?;
@@ -24,7 +37,12 @@ pub fn write_ply(mesh: &TriangleMesh, mut out: impl Write) -> Result<(), ExportE
         out.write_all(b"property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n")?;
     }
     writeln!(out, "element face {}", mesh.triangles.len())?;
-    out.write_all(b"property list uchar uint vertex_indices\nend_header\n")?;
+    out.write_all(b"property list uchar uint vertex_indices\n")?;
+    if !edges.is_empty() {
+        writeln!(out, "element edge {}", edges.len())?;
+        out.write_all(b"property uint vertex1\nproperty uint vertex2\n")?;
+    }
+    out.write_all(b"end_header\n")?;
     for i in 0..mesh.positions.len() {
         let p = mesh.positions[i];
         write!(out, "{} {} {}", p[0], p[1], p[2])?;
@@ -43,6 +61,9 @@ pub fn write_ply(mesh: &TriangleMesh, mut out: impl Write) -> Result<(), ExportE
     }
     for t in &mesh.triangles {
         writeln!(out, "3 {} {} {}", t[0], t[1], t[2])?;
+    }
+    for e in edges {
+        writeln!(out, "{} {}", e[0], e[1])?;
     }
     out.flush()?;
     Ok(())

@@ -6,8 +6,10 @@ least-squares fitting and interpolation, and every shape and
 scene document of the ``splinekit`` command line (docs/format.md), evaluated by the
 splinekit kernel (Rust). Every command of the command line has its function here
 (intersections, sections, projections, offsets, arc length, STEP, scenes, rendering);
-shapes and scenes show themselves in notebooks. Arrays in, float64 C-contiguous arrays out; bad input raises
-``ValueError`` with the command line's one-line message.
+shapes and scenes show themselves in notebooks. Arrays in, float64 C-contiguous arrays out; errors are
+``SplinekitError``s with the command line's one-line message: ``DocumentError`` (bad input),
+``NumericalError``, ``BudgetError`` (each also a ``ValueError``), ``FileError`` (also an
+``OSError``) and ``RenderError`` (also a ``RuntimeError``).
 """
 
 import os as _os
@@ -34,6 +36,7 @@ def _quiet_headless_vulkan() -> None:
 
 _quiet_headless_vulkan()
 
+from ._errors import BudgetError, DocumentError, FileError, NumericalError, RenderError, SplinekitError
 from ._bfunction import BFunction, bfunction
 from ._splinekit import (
     BSpline,
@@ -76,6 +79,12 @@ from ._display import View, set_display, show
 from ._plot import plot
 
 __all__ = [
+    "SplinekitError",
+    "DocumentError",
+    "NumericalError",
+    "BudgetError",
+    "FileError",
+    "RenderError",
     "BFunction",
     "View",
     "animate",

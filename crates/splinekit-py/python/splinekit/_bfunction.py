@@ -18,7 +18,7 @@ class BFunction:
     * ``"trigonometric"``: t − sin(2πt)/(2π); ``"linear"``: t; and the other kinds of
       docs/format.md.
 
-    Bad parameters raise ``ValueError`` with the command line's message.
+    Bad parameters raise ``DocumentError`` (a ``ValueError``) with the command line's message.
     """
 
     def __init__(self, kind="erbs", **params):

@@ -29,6 +29,7 @@ from importlib import resources
 from typing import Any, Dict, List, Optional
 
 from . import _splinekit as _native
+from ._errors import DocumentError
 
 _options: Dict[str, Any] = {"width": 640, "height": 420, "embed_three": "once", "png": True, "html": True}
 _three_sent = False
@@ -52,11 +53,11 @@ def set_display(
             _options[key] = value
     if embed_three is not None:
         if embed_three not in ("once", "always"):
-            raise ValueError(f"embed_three: expected \"once\" or \"always\", got {embed_three!r}")
+            raise DocumentError(f"embed_three: expected \"once\" or \"always\", got {embed_three!r}")
         _options["embed_three"] = embed_three
     for key in ("width", "height"):
         if not (isinstance(_options[key], int) and 16 <= _options[key] <= 8192):
-            raise ValueError(f"{key}: expected a whole number of pixels in 16 … 8192, got {_options[key]!r}")
+            raise DocumentError(f"{key}: expected a whole number of pixels in 16 … 8192, got {_options[key]!r}")
     return dict(_options)
 
 
@@ -233,5 +234,5 @@ def show(*objects: Any, width: Optional[int] = None, height: Optional[int] = Non
     Returned for the notebook to display (the last expression of a cell, or
     ``IPython.display.display(show(…))``)."""
     if not objects:
-        raise ValueError("objects: show needs at least one object")
+        raise DocumentError("objects: show needs at least one object")
     return View(list(objects), width, height)

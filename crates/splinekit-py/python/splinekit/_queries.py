@@ -5,7 +5,7 @@ module) and turns the command's JSON answer into numpy arrays and splinekit obje
 ``intersect`` (``splinekit intersect``), ``section`` (``section``), ``project``
 (``project``), ``offset`` (``offset``), ``read_step``/``write_step`` (``convert``),
 ``save`` (``tessellate``), ``subdivide`` (``subdivide``) and the documents of blending
-splines and blends. Errors are ``ValueError`` with the command's message, its flags named
+splines and blends. Errors are ``SplinekitError``s (``DocumentError`` for bad arguments, a ``ValueError``) with the command's message, its flags named
 as the arguments here (``tolerance: expected one number > 0, got '0.0'``).
 """
 
@@ -18,6 +18,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union, cast
 import numpy as np
 
 from . import _splinekit as _native
+from ._errors import DocumentError
 from ._splinekit import Curve, Scene, Surface, load
 
 Shape = Union[Curve, Surface]
@@ -164,16 +165,15 @@ def save(
 ) -> None:
     """Writes a shape or scene to a file, the extension picking the format, as ``splinekit
     tessellate SHAPE -o FILE`` (and ``.json``: the document). Curves: .svg, .obj, .gltf,
-    .glb; surfaces: .obj, .stl, .stla, .ply, .gltf, .glb; scenes: .gltf, .glb (an
-    animation as morph targets); .step and .stp go to ``write_step``. ``density`` segments
-    or cells per direction, or adaptive to ``tolerance``; ``time`` poses an animation."""
-    p = os.fspath(path)
-    if p.lower().endswith((".step", ".stp")):
-        write_step(obj, p)
-        return
+    .glb; surfaces: .obj, .stl, .stla, .ply, .gltf, .glb; scenes: .obj (a group per
+    object), .stl, .stla (every surface in one mesh; curves are refused), .ply (one mesh,
+    curves as edges), .gltf, .glb (an animation as morph targets); .step and .stp as
+    ``write_step``. ``density`` segments or cells per direction, or adaptive to
+    ``tolerance`` (shapes; a scene's objects keep their own ``density``); ``time`` poses an
+    animation (a scene's glTF carries the whole animation)."""
     if isinstance(obj, (list, tuple)):
         obj = Scene(obj)
-    _native._save(obj, p, density, tolerance, time)
+    _native._save(obj, os.fspath(path), density, tolerance, time)
 
 
 def _bfunction_doc(bfunction: Any) -> Any:
@@ -216,7 +216,7 @@ def blending_spline(
         doc["local"] = {"type": local, "degree": degree} if local == "bezier" else {"type": local}
     else:
         if local_curves is None or isinstance(local_curves, int):
-            raise ValueError("local_curves: without a model, give the local curves themselves (a list) and their knots")
+            raise DocumentError("local_curves: without a model, give the local curves themselves (a list) and their knots")
         doc["local_curves"] = list(local_curves)
     doc.update(
         _drop_none(

@@ -323,6 +323,8 @@ class BentHorns(Surface):
 @final
 class AsteroidalSphere(Surface):
     def __new__(cls, **fields: Any) -> "AsteroidalSphere": ...
+
+@final
 class BezierTriangle(Surface):
     def __new__(cls, **fields: Any) -> "BezierTriangle": ...
 

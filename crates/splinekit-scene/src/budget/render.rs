@@ -72,7 +72,7 @@ impl Budget {
         let pixels = size.0 as f64 * size.1 as f64;
         let row = (size.0 as f64 * 4.0 / 256.0).ceil() * 256.0;
         if row * size.1 as f64 > MAX_RENDER_BUFFER {
-            return Err(DocumentError::new(
+            return Err(DocumentError::budget(
                 fields.size,
                 format!(
                     "a {}x{} image needs a read-back buffer of {}, more than the renderer's limit of {} (at most {MAX_IMAGE_SIDE}x{MAX_IMAGE_SIDE} pixels)",
