@@ -39,7 +39,7 @@ pub use placed::PlacedDoc;
 pub use sub_surface::SubSurfaceDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
 pub use triangles::{
-    BezierTriangleDoc, BlendingTriangulationDoc, GerbsTriangleDoc, InterpolantDoc, LocalPieces, MeshDoc,
+    BezierTriangleDoc, BlendingTriangulationDoc, GerbsTriangleDoc, InterpolantDoc, LocalOrigin, LocalPieces, MeshDoc,
     SubTriangleDoc, TriangularFormDoc, TriangulationDoc, triangle_of,
 };
 pub use trimmed::TrimmedDoc;

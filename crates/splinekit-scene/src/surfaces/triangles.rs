@@ -787,6 +787,20 @@ impl DocumentKind for BlendingTriangulationDoc {
 pub trait LocalPieces: std::fmt::Debug + Sync {
     /// Per local: its polylines (3-D points) and its moved origin.
     fn local_pieces(&self) -> Result<Vec<LocalPiece>>;
+    /// The dimension of the points (2 or 3) and, per local, its frame's origin o (where
+    /// its `transforms` entry acts) and the moved origin F(o), without drawing the pieces:
+    /// what an editor's handle of the local's frame needs.
+    fn local_origins(&self) -> Result<(usize, Vec<LocalOrigin>)>;
+}
+
+/// A local's frame as an editor grabs it: the origin o its transform acts about and the
+/// moved origin F(o) (3-D; z = 0 for plane shapes).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LocalOrigin {
+    /// o, before the local's transform.
+    pub origin: [f64; 3],
+    /// F(o), where the local's frame puts it.
+    pub moved: [f64; 3],
 }
 
 /// One local piece as drawn: its polylines (3-D points) and its moved origin.
@@ -824,6 +838,21 @@ impl LocalPieces for GerbsTriangleDoc {
             Ok(out)
         })
     }
+
+    fn local_origins(&self) -> Result<(usize, Vec<LocalOrigin>)> {
+        let dimension = self.dimension()?;
+        crate::with_dimension!(dimension, "locals", D => {
+            let g = self.gerbs::<D>()?;
+            let origins = (0..3)
+                .map(|i| {
+                    let o = g.origin(i).expect("local 0..3");
+                    let moved = g.frame(i).expect("local 0..3").apply_point_about(&o, &o);
+                    LocalOrigin { origin: p3(&o), moved: p3(&moved) }
+                })
+                .collect();
+            Ok((dimension, origins))
+        })
+    }
 }
 
 impl LocalPieces for BlendingTriangulationDoc {
@@ -855,5 +884,17 @@ impl LocalPieces for BlendingTriangulationDoc {
             out.push((vec![circle, d1, d2], p3(&moved)));
         }
         Ok(out)
+    }
+
+    fn local_origins(&self) -> Result<(usize, Vec<LocalOrigin>)> {
+        let s = self.blend()?;
+        let origins = (0..s.vertex_count())
+            .map(|i| {
+                let o = s.origin(i).expect("a vertex");
+                let moved = s.frame(i).expect("a vertex").apply_point_about(&o, &o);
+                LocalOrigin { origin: p3(&o), moved: p3(&moved) }
+            })
+            .collect();
+        Ok((3, origins))
     }
 }
