@@ -86,9 +86,8 @@ fn a_bezier_triangle_control_point_follows_the_mouse_and_moves_the_surface_by_it
     assert_eq!(points.len(), 10, "a cubic's (3+1)(3+2)/2 points are handles");
     // b_111 sits at (j+k)(j+k+1)/2 + k = 4 in storage order.
     let before = bezier_triangle(&original);
-    let (from, to) = drag(&mut studio, &projector, HandleKind::ControlPoint(4, "control_points"), [30.0, -20.0], {
-        GestureKind::Move(None)
-    });
+    let b111 = HandleKind::ControlPoint(4, "control_points");
+    let (from, to) = drag(&mut studio, &projector, b111, [30.0, -20.0], GestureKind::Move(None));
     assert!((to[0] - from[0] - 30.0).abs() < 1e-6 && (to[1] - from[1] + 20.0).abs() < 1e-6, "{to:?} from {from:?}");
     let SurfaceDocument::BezierTriangle(old) = surface(&original) else { panic!() };
     let SurfaceDocument::BezierTriangle(new) = surface(studio.document.scene()) else { panic!() };
