@@ -298,6 +298,7 @@ pub enum SurfaceDecoration<'a> {
         /// The document field that holds them, for editors that move them.
         field: &'static str,
     },
-    /// The local pieces of a blending kind of the triangle family.
+    /// The local pieces of a blending kind of the triangle family (a `triangulation`'s
+    /// Voronoi cells).
     LocalPieces(&'a dyn LocalPieces),
 }

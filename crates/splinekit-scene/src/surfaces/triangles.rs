@@ -593,8 +593,9 @@ impl DocumentKind for TriangulationDoc {
             normals: None,
         }
     }
+    /// The Voronoi diagram of the sites (see [`LocalPieces`] for `TriangulationDoc`).
     fn decoration(&self) -> SurfaceDecoration<'_> {
-        SurfaceDecoration::None
+        SurfaceDecoration::LocalPieces(self)
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -783,7 +784,8 @@ impl DocumentKind for BlendingTriangulationDoc {
 
 /// The local pieces of a blending kind of the triangle family, as lines for scenes to draw
 /// (each local's outline over the part of its chart it is used on, in its frame) and the
-/// moved origins for editors' handles.
+/// moved origins for editors' handles; for a `triangulation`, the Voronoi cells of its
+/// points (no handles).
 pub trait LocalPieces: std::fmt::Debug + Sync {
     /// Per local: its polylines (3-D points) and its moved origin.
     fn local_pieces(&self) -> Result<Vec<LocalPiece>>;
@@ -896,5 +898,33 @@ impl LocalPieces for BlendingTriangulationDoc {
             })
             .collect();
         Ok((3, origins))
+    }
+}
+
+impl LocalPieces for TriangulationDoc {
+    /// The Voronoi diagram of the sites in the plane z = the lowest height (below the
+    /// surface): per point, its cell (closed where bounded; for a site on the convex hull
+    /// the finite chain between its two rays) and the point itself (x, y, z).
+    fn local_pieces(&self) -> Result<Vec<LocalPiece>> {
+        let (_, heights) = self.sites()?;
+        let floor = heights.iter().copied().fold(f64::INFINITY, f64::min);
+        let d = self.delaunay()?;
+        Ok(d.voronoi_cells()
+            .into_iter()
+            .zip(&heights)
+            .map(|(cell, &z)| {
+                let mut line: Vec<[f64; 3]> = cell.vertices.iter().map(|v| [v.x, v.y, floor]).collect();
+                if cell.bounded && !line.is_empty() {
+                    line.push(line[0]);
+                }
+                let lines = if line.len() > 1 { vec![line] } else { Vec::new() };
+                (lines, [cell.site.x, cell.site.y, z])
+            })
+            .collect())
+    }
+
+    /// No handles: a triangulation's points are its data, not frames.
+    fn local_origins(&self) -> Result<(usize, Vec<LocalOrigin>)> {
+        Ok((3, Vec::new()))
     }
 }
