@@ -38,29 +38,52 @@ fn the_local_pieces_of_a_triangulation_are_its_voronoi_cells() {
     assert!(pieces.local_origins().unwrap().1.is_empty(), "no handles");
     let floor = points.iter().map(|p| p[2]).fold(f64::INFINITY, f64::min);
     let dist = |v: &[f64; 3], p: &[f64; 3]| (v[0] - p[0]).hypot(v[1] - p[1]);
-    let mut bounded = 0;
+    // The clipping box: the points' box grown by a tenth of its larger side each way.
+    let (lo, hi) = (0..2).fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(mut lo, mut hi), a| {
+        points.iter().for_each(|p| (lo[a], hi[a]) = (lo[a].min(p[a]), hi[a].max(p[a])));
+        (lo, hi)
+    });
+    let margin = 0.1 * (hi[0] - lo[0]).max(hi[1] - lo[1]);
+    let on_box = |v: &[f64; 3]| {
+        (0..2).any(|a| (v[a] - (lo[a] - margin)).abs() < 1e-12 || (v[a] - (hi[a] + margin)).abs() < 1e-12)
+    };
+    let mut closed = 0;
+    let mut clipped = 0;
     for (i, (lines, site)) in cells.iter().enumerate() {
         assert_eq!(*site, points[i], "the cell's point is point {i}");
-        let Some(line) = lines.first() else { continue };
-        for v in line {
-            assert_eq!(v[2], floor, "cells lie at the lowest height");
-            let own = dist(v, &points[i]);
-            let tol = 1e-9 * (1.0 + own);
-            assert!(points.iter().all(|p| dist(v, p) >= own - tol), "cell {i}: a site nearer than its own at {v:?}");
-            let equidistant = points.iter().filter(|p| (dist(v, p) - own).abs() <= tol).count();
-            assert!(equidistant >= 3, "cell {i}: {v:?} is equidistant from {equidistant} sites");
-        }
-        if line.len() > 3 && line.first() == line.last() {
-            bounded += 1;
-            // Counter-clockwise and convex around the site: every edge has the site on its left.
-            for w in line.windows(2) {
-                let (a, b) = (w[0], w[1]);
-                let cross = (b[0] - a[0]) * (site[1] - a[1]) - (b[1] - a[1]) * (site[0] - a[0]);
-                assert!(cross > 0.0, "cell {i}: the site is not inside");
+        for line in lines {
+            assert!(line.len() >= 2, "cell {i}: a line of {} points", line.len());
+            for v in line {
+                assert_eq!(v[2], floor, "cells lie at the lowest height");
+                assert!(
+                    (0..2).all(|a| v[a] >= lo[a] - margin - 1e-12 && v[a] <= hi[a] + margin + 1e-12),
+                    "inside the box"
+                );
+                let own = dist(v, &points[i]);
+                let tol = 1e-9 * (1.0 + own);
+                assert!(
+                    points.iter().all(|p| dist(v, p) >= own - tol),
+                    "cell {i}: a site nearer than its own at {v:?}"
+                );
+                // A circumcentre is equidistant from three sites; where a cell's edge was cut
+                // by the box, the cut point is on the bisector of two.
+                let equidistant = points.iter().filter(|p| (dist(v, p) - own).abs() <= tol).count();
+                let need = if on_box(v) { 2 } else { 3 };
+                clipped += usize::from(on_box(v));
+                assert!(equidistant >= need, "cell {i}: {v:?} is equidistant from {equidistant} sites");
+            }
+            if line.len() > 3 && line.first() == line.last() {
+                closed += 1;
+                // Counter-clockwise and convex around the site: the site left of every edge.
+                for w in line.windows(2) {
+                    let (a, b) = (w[0], w[1]);
+                    let cross = (b[0] - a[0]) * (site[1] - a[1]) - (b[1] - a[1]) * (site[0] - a[0]);
+                    assert!(cross > 0.0, "cell {i}: the site is not inside");
+                }
             }
         }
     }
-    // Unbounded cells belong to the hull's points: a point is on the hull exactly when a
+    // Closed cells belong to points inside the hull: a point is on the hull exactly when a
     // line through it has every other point on one side; count them directly.
     let on_hull = (0..points.len())
         .filter(|&i| {
@@ -72,5 +95,7 @@ fn the_local_pieces_of_a_triangulation_are_its_voronoi_cells() {
             })
         })
         .count();
-    assert_eq!(bounded, points.len() - on_hull, "{bounded} bounded cells, {on_hull} points on the hull");
+    assert!(on_hull >= 3 && closed <= points.len() - on_hull, "{closed} closed cells, {on_hull} points on the hull");
+    assert!(closed > points.len() / 2, "most cells are whole inside the box: {closed}");
+    assert!(clipped > 0, "some far circumcentres were cut off");
 }
