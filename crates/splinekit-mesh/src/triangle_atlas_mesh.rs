@@ -8,6 +8,9 @@
 //! for the whole atlas). Normals are each triangle's own (the mean of both sides on a
 //! shared edge, so a C⁰ surface shades smoothly and a C¹ one exactly).
 //!
+//! The front ends (`tessellate`, `render`, glTF, the studio, Python) mesh on every core
+//! ([`uniform_threads`]); the mesh is the one-thread mesh bit for bit.
+//!
 //! Tolerance: the level is the smallest power of two at which, in every triangle, the
 //! surface at the midpoints of the sub-triangles' edges and at their centroids lies within
 //! the chord height of the flat sub-triangles, measured along the surface's normal there
@@ -293,7 +296,7 @@ pub fn within_tolerance<const D: usize>(
     options: MeshOptions,
 ) -> Result<TriangleMesh> {
     let level = level_for(atlas, tolerance, max_triangles)?;
-    uniform(atlas, level, options)
+    uniform_threads(atlas, level, options, 0)
 }
 
 /// The level that a regular `nu` × `nv` grid's density asks for of an atlas of `charts`
