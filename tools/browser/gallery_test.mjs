@@ -323,6 +323,7 @@ try {
     const all = await open({ reducedMotion: 'reduce' });
     const names = await all.evaluate(() => window.splinekitGallery.views.map((v) => v.name));
     check(JSON.stringify([...names].sort()) === JSON.stringify(glbs), `a viewer for every glb (viewers: ${names.length}, glb files: ${glbs.length})`);
+    const viewStates = {};
     const everyStarted = Date.now();
     for (const name of names) {
         const viewStarted = Date.now();
@@ -334,6 +335,7 @@ try {
             await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
             return { state: v.state, error: v.error, playing: v.playing, animated: !!v.mixer };
         }, name);
+        viewStates[name] = state;
         if (!check(state.state === 'ready', `${name}: the viewer loaded its model (${state.state}${state.error ? `: ${state.error}` : ''})`)) continue;
         check(!(state.animated && state.playing), `${name}: stays paused when the reader prefers reduced motion`);
         const shot = decodePng(await all.locator(`${view(name)} canvas`).screenshot({ path: join(out, 'views', `${name}.png`) }));
@@ -343,6 +345,19 @@ try {
         check(ink > 0.002 * shot.width * shot.height, `${name}: the view draws the model (${ink} of ${shot.width}×${shot.height} pixels off the background)`);
     }
     measured.everyMs = Date.now() - everyStarted;
+
+    // The triangle family (issue 36) in the page: a Bézier triangle with its net, a GERBS
+    // triangle with its three locals (their edges as line strips), the blending surface over
+    // a triangulated sphere with one local moved, and one animated (the viewer plays it).
+    const lineStrips = (stem) =>
+        (readGlb(join(gallery, `${stem}.glb`)).json.meshes ?? []).flatMap((m) => m.primitives).filter((p) => p.mode === 3).length;
+    for (const [name, strips] of [['bezier_triangle_net', 9], ['gerbs_triangle_locals', 9], ['blending_sphere_moved', 0], ['blending_sphere_animated', 0]]) {
+        if (!check(glbs.includes(name), `the gallery shows ${name}`)) continue;
+        check(viewStates[name]?.state === 'ready', `${name}: drawn in the browser`);
+        check(lineStrips(name) >= strips, `${name}: at least ${strips} line strips (${lineStrips(name)})`);
+    }
+    const animatedSphere = readGlb(join(gallery, 'blending_sphere_animated.glb'));
+    check((animatedSphere.json.animations ?? []).length > 0 && viewStates.blending_sphere_animated?.animated, 'blending_sphere_animated carries an animation the viewer plays');
     measured.everyBytes = bytesOf(await filesRead(all));
 
     // Orbit and zoom on a surface.

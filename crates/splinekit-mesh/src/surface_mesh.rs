@@ -45,7 +45,7 @@ pub fn regular<const D: usize, S: Surface<D> + ?Sized>(
     }
     if let Some(atlas) = surface.triangle_atlas() {
         let level = crate::triangle_atlas_mesh::level_for_density(nu, nv, atlas.charts().len());
-        return crate::triangle_atlas_mesh::uniform(atlas, level, options);
+        return crate::triangle_atlas_mesh::uniform_threads(atlas, level, options, 0);
     }
     if let Some(s) = surface.subdivision() {
         let steps = crate::subdivision_mesh::steps_for_density(s, nu.max(nv));

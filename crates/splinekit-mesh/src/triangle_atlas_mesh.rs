@@ -8,6 +8,9 @@
 //! for the whole atlas). Normals are each triangle's own (the mean of both sides on a
 //! shared edge, so a C⁰ surface shades smoothly and a C¹ one exactly).
 //!
+//! The front ends (`tessellate`, `render`, glTF, the studio, Python) mesh on every core
+//! ([`uniform_threads`]); the mesh is the one-thread mesh bit for bit.
+//!
 //! Tolerance: the level is the smallest power of two at which, in every triangle, the
 //! surface at the midpoints of the sub-triangles' edges and at their centroids lies within
 //! the chord height of the flat sub-triangles, measured along the surface's normal there
@@ -30,8 +33,23 @@ enum Key {
     Inner(u32, u32, u32),
 }
 
-/// The mesh of every triangle of `atlas` at `level` (n ≥ 1 sub-divisions per edge).
+/// The mesh of every triangle of `atlas` at `level` (n ≥ 1 sub-divisions per edge), on
+/// the calling thread.
 pub fn uniform<const D: usize>(atlas: &TriangleAtlas<D>, level: usize, options: MeshOptions) -> Result<TriangleMesh> {
+    uniform_threads(atlas, level, options, 1)
+}
+
+/// [`uniform`] with the surface evaluated on `threads` threads (0: as many as the machine
+/// has cores), each taking a run of consecutive triangles. The mesh is the same bit for bit
+/// whatever the count: which lattice point becomes which vertex is decided first, on one
+/// thread, every point and normal is evaluated once, and the normals of shared points are
+/// summed afterwards in triangle order.
+pub fn uniform_threads<const D: usize>(
+    atlas: &TriangleAtlas<D>,
+    level: usize,
+    options: MeshOptions,
+    threads: usize,
+) -> Result<TriangleMesh> {
     let charts = atlas.charts();
     let per = (level + 1) * (level + 2) / 2;
     if level == 0 || charts.len().saturating_mul(per) > MAX_VERTICES {
@@ -47,16 +65,20 @@ pub fn uniform<const D: usize>(atlas: &TriangleAtlas<D>, level: usize, options: 
     let ids = atlas.corner_ids();
     let mut mesh = TriangleMesh::default();
     let mut shared: HashMap<Key, u32> = HashMap::new();
-    let mut normal_sums: Vec<[f64; 3]> = Vec::new();
-    let mut local = vec![0u32; per];
+    // The vertex of each chart's lattice point (chart c's at c·per + index(i, j)), and the
+    // first vertex each chart adds: chart c evaluates the points of vertices
+    // first[c] .. first[c + 1], which it meets first.
+    let mut lattice = vec![0u32; charts.len() * per];
+    let mut first = Vec::with_capacity(charts.len() + 1);
+    let mut count = 0u32;
     let index = |i: u32, j: u32| -> usize {
         // Row by i (the power of u), j within it.
         let i = i as usize;
         let j = j as usize;
         i * (2 * level + 3 - i) / 2 + j
     };
-    for (c, chart) in charts.iter().enumerate() {
-        let tri = chart.as_ref();
+    for (c, local) in lattice.chunks_mut(per).enumerate() {
+        first.push(count);
         for i in 0..=n {
             for j in 0..=n - i {
                 let k = n - i - j;
@@ -77,18 +99,14 @@ pub fn uniform<const D: usize>(atlas: &TriangleAtlas<D>, level: usize, options: 
                         _ => Key::Inner(c as u32, i, j),
                     }
                 });
-                let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
-                let w = k as f64 / n as f64;
-                let nrm = tri.normal(u, v, w).map(|x| to3(&x)).unwrap_or([0.0; 3]);
                 let existing = key.and_then(|k| shared.get(&k).copied());
                 let id = match existing {
                     Some(id) => id,
                     None => {
-                        let id = mesh.positions.len() as u32;
-                        mesh.positions.push(to3(&tri.point(u, v, w)));
-                        normal_sums.push([0.0; 3]);
+                        let id = count;
+                        count += 1;
                         if options.uv {
-                            mesh.uvs.push([u, v]);
+                            mesh.uvs.push([i as f64 / n as f64, j as f64 / n as f64]);
                         }
                         if let Some(key) = key {
                             shared.insert(key, id);
@@ -96,8 +114,6 @@ pub fn uniform<const D: usize>(atlas: &TriangleAtlas<D>, level: usize, options: 
                         id
                     }
                 };
-                let s = &mut normal_sums[id as usize];
-                (0..3).for_each(|a| s[a] += nrm[a]);
                 local[index(i, j)] = id;
             }
         }
@@ -110,6 +126,64 @@ pub fn uniform<const D: usize>(atlas: &TriangleAtlas<D>, level: usize, options: 
                 }
             }
         }
+    }
+    first.push(count);
+    // Each chart's normals at its lattice points, and the points of the vertices it adds.
+    let mut normals = vec![[0.0f64; 3]; charts.len() * per];
+    mesh.positions = vec![[0.0f64; 3]; count as usize];
+    let evaluate = |c: usize, normals: &mut [[f64; 3]], positions: &mut [[f64; 3]]| {
+        let tri = charts[c].as_ref();
+        let local = &lattice[c * per..(c + 1) * per];
+        for i in 0..=n {
+            for j in 0..=n - i {
+                let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
+                let w = (n - i - j) as f64 / n as f64;
+                let at = index(i, j);
+                normals[at] = tri.normal(u, v, w).map(|x| to3(&x)).unwrap_or([0.0; 3]);
+                let id = local[at];
+                if id >= first[c] {
+                    positions[(id - first[c]) as usize] = to3(&tri.point(u, v, w));
+                }
+            }
+        }
+    };
+    let threads = match threads {
+        0 => std::thread::available_parallelism().map_or(1, |t| t.get()),
+        t => t,
+    }
+    .clamp(1, charts.len().max(1));
+    if threads == 1 {
+        for c in 0..charts.len() {
+            let (a, b) = (first[c] as usize, first[c + 1] as usize);
+            evaluate(c, &mut normals[c * per..(c + 1) * per], &mut mesh.positions[a..b]);
+        }
+    } else {
+        std::thread::scope(|scope| {
+            let (mut normals, mut positions) = (&mut normals[..], &mut mesh.positions[..]);
+            let mut start = 0;
+            for t in 0..threads {
+                let end = charts.len() * (t + 1) / threads;
+                let (nh, nt) = std::mem::take(&mut normals).split_at_mut((end - start) * per);
+                let (ph, pt) = std::mem::take(&mut positions).split_at_mut((first[end] - first[start]) as usize);
+                (normals, positions) = (nt, pt);
+                let (evaluate, first) = (&evaluate, &first);
+                scope.spawn(move || {
+                    let (mut nh, mut ph) = (nh, ph);
+                    for c in start..end {
+                        let (nc, nr) = std::mem::take(&mut nh).split_at_mut(per);
+                        let (pc, pr) = std::mem::take(&mut ph).split_at_mut((first[c + 1] - first[c]) as usize);
+                        (nh, ph) = (nr, pr);
+                        evaluate(c, nc, pc);
+                    }
+                });
+                start = end;
+            }
+        });
+    }
+    let mut normal_sums = vec![[0.0f64; 3]; count as usize];
+    for (id, nrm) in lattice.iter().zip(&normals) {
+        let s = &mut normal_sums[*id as usize];
+        (0..3).for_each(|a| s[a] += nrm[a]);
     }
     mesh.normals = normal_sums
         .iter()
@@ -222,7 +296,7 @@ pub fn within_tolerance<const D: usize>(
     options: MeshOptions,
 ) -> Result<TriangleMesh> {
     let level = level_for(atlas, tolerance, max_triangles)?;
-    uniform(atlas, level, options)
+    uniform_threads(atlas, level, options, 0)
 }
 
 /// The level that a regular `nu` × `nv` grid's density asks for of an atlas of `charts`

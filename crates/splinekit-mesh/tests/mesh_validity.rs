@@ -489,6 +489,7 @@ fn scene_shape(scene: &str) -> Option<Shape> {
             open(1, true)
         }
         "trimmed_surface" => open(2, true),
+        // One triangle: one boundary loop of three edges.
         "bezier_triangle_net" | "gerbs_triangle_locals" => open(1, true),
         "mobius" => open(1, false),
         "klein_bottle" => Shape::ClosedNonOrientable,
@@ -501,7 +502,9 @@ fn scene_shape(scene: &str) -> Option<Shape> {
         | "torus_animated"
         | "torus_before"
         | "torus_gaussian_curvature"
-        | "subdivision_surfaces" => Shape::Closed(None),
+        | "subdivision_surfaces"
+        | "blending_sphere_moved"
+        | "blending_sphere_animated" => Shape::Closed(None),
         "beating_heart" | "bspline_polygon" | "heart_local_curves" | "heart_transformed" | "rose_and_blending_copy" => {
             return None;
         }

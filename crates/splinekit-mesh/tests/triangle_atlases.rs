@@ -7,7 +7,7 @@ use splinekit::surface::Surface;
 use std::sync::Arc;
 
 use splinekit::triangle::{BezierTriangle, Triangle, TriangulatedSurface, TriangulationBlend};
-use splinekit_mesh::triangle_atlas_mesh::{level_for, uniform, within_tolerance};
+use splinekit_mesh::triangle_atlas_mesh::{level_for, uniform, uniform_threads, within_tolerance};
 use splinekit_mesh::{AdaptiveTolerance, MeshOptions, surface_mesh};
 
 fn edge_uses(mesh: &splinekit_mesh::TriangleMesh) -> std::collections::HashMap<(u32, u32), usize> {
@@ -87,4 +87,28 @@ fn the_surface_meshers_take_the_atlas() {
     // Vertices lie on the surface: the first triangle's corner is its vertex.
     let p = b.triangle(0).point(1.0, 0.0, 0.0);
     assert!(mesh.positions.iter().any(|q| (Point::<3>::new(q[0], q[1], q[2]) - p).norm() == 0.0));
+}
+
+/// Shared lattice points are decided on one thread and every point is evaluated once, so
+/// the mesh made on several threads is the one-thread mesh bit for bit (positions, normals
+/// summed over shared points, uvs and triangles), also when the threads outnumber the
+/// triangles; and it is the blend itself at its lattice points.
+#[test]
+fn threads_make_the_same_mesh_bit_for_bit() {
+    let m = TriangulatedSurface::icosphere(1.0, 1).unwrap();
+    let b = TriangulationBlend::new(&m, 2, BFunction::erbs_default()).unwrap();
+    let atlas = b.atlas();
+    let one = uniform(&atlas, 5, MeshOptions { uv: true }).unwrap();
+    for threads in [0, 2, 3, 7, 200] {
+        let many = uniform_threads(&atlas, 5, MeshOptions { uv: true }, threads).unwrap();
+        assert!(many == one, "{threads} threads");
+    }
+    // Vertex 0 is corner u of triangle 0, at the lattice's first point (i = n, j = 0).
+    let t0 = &atlas.charts()[0];
+    let p = t0.point(1.0, 0.0, 0.0);
+    assert!(one.positions.iter().any(|q| (Point::<3>::new(q[0], q[1], q[2]) - p).norm() == 0.0));
+    let tri = BezierTriangle::from_fn(2, |(i, j, _)| Point::<3>::new(i as f64, j as f64, (i * j) as f64)).unwrap();
+    let single = splinekit::triangle::TriangleAtlas::single(Arc::new(tri) as Arc<dyn Triangle<3>>);
+    let one = uniform(&single, 6, MeshOptions { uv: false }).unwrap();
+    assert!(uniform_threads(&single, 6, MeshOptions { uv: false }, 4).unwrap() == one, "one triangle, four threads");
 }

@@ -39,7 +39,7 @@ pub use placed::PlacedDoc;
 pub use sub_surface::SubSurfaceDoc;
 pub use subdivision::{BoundaryDoc, CreaseDoc, SchemeDoc, SubdivisionSurfaceDoc};
 pub use triangles::{
-    BezierTriangleDoc, BlendingTriangulationDoc, GerbsTriangleDoc, InterpolantDoc, LocalPieces, MeshDoc,
+    BezierTriangleDoc, BlendingTriangulationDoc, GerbsTriangleDoc, InterpolantDoc, LocalOrigin, LocalPieces, MeshDoc,
     SubTriangleDoc, TriangularFormDoc, TriangulationDoc, triangle_of,
 };
 pub use trimmed::TrimmedDoc;
@@ -298,6 +298,7 @@ pub enum SurfaceDecoration<'a> {
         /// The document field that holds them, for editors that move them.
         field: &'static str,
     },
-    /// The local pieces of a blending kind of the triangle family.
+    /// The local pieces of a blending kind of the triangle family (a `triangulation`'s
+    /// Voronoi cells).
     LocalPieces(&'a dyn LocalPieces),
 }

@@ -3,8 +3,9 @@
 //! o + t), one at each control point of a Bézier local curve or patch of a blending spline
 //! (in the world: its frame applied, o + T(P − o); the view shows those of the selected
 //! local piece only, [`Handle::shown_with`]), one at each control point of a Bézier,
-//! B-spline or NURBS curve or net, and one at each cage vertex of a subdivision surface
-//! (`vertices[i]`).
+//! B-spline or NURBS curve or net or of a Bézier triangle, one at each cage vertex of a
+//! subdivision surface (`vertices[i]`), and one at each local's moved origin of a GERBS
+//! triangle or a blending triangulation (its `transforms[k]`).
 
 use serde_json::Value;
 use splinekit::blend::BlendingSplineSurface;
@@ -29,6 +30,10 @@ pub enum HandleKind {
     LocalCurvePoint(usize, usize),
     /// Control point (a, b) of the Bézier patch (k, l) of a blending-spline surface.
     LocalPatchPoint(usize, usize, usize, usize),
+    /// Local k of the triangle family's blending kinds: corner k's local triangle of a
+    /// `gerbs_triangle` (0, 1, 2: corners u, v, w), vertex k's local of a
+    /// `blending_triangulation`; its frame is `transforms[k]`.
+    LocalTriangle(usize),
 }
 
 /// One grabbable point.
@@ -71,7 +76,9 @@ impl HandleKind {
     /// whole point list) and in [`Self::field`] (down to the point itself).
     fn place(&self) -> (&'static str, String, String) {
         match *self {
-            HandleKind::LocalCurve(k) => ("transforms", format!("/{k}"), format!("[{k}]")),
+            HandleKind::LocalCurve(k) | HandleKind::LocalTriangle(k) => {
+                ("transforms", format!("/{k}"), format!("[{k}]"))
+            }
             HandleKind::LocalPatch(k, l) => ("transforms", format!("/{k},{l}"), format!("[{k},{l}]")),
             HandleKind::ControlPoint(i, field) => (field, format!("/{i}"), format!("[{i}]")),
             HandleKind::NetPoint(i, j) => ("control_points", format!("/{i}/{j}"), format!("[{i}][{j}]")),
@@ -96,7 +103,9 @@ impl HandleKind {
     /// `(k, None)` for local curve k, `(k, Some(l))` for patch (k, l).
     pub fn piece(&self) -> Option<(usize, Option<usize>)> {
         match *self {
-            HandleKind::LocalCurve(k) | HandleKind::LocalCurvePoint(k, _) => Some((k, None)),
+            HandleKind::LocalCurve(k) | HandleKind::LocalCurvePoint(k, _) | HandleKind::LocalTriangle(k) => {
+                Some((k, None))
+            }
             HandleKind::LocalPatch(k, l) | HandleKind::LocalPatchPoint(k, l, _, _) => Some((k, Some(l))),
             _ => None,
         }
@@ -104,7 +113,7 @@ impl HandleKind {
 
     /// Whether the handle moves a local piece's frame (rather than a control point).
     pub fn is_local(&self) -> bool {
-        matches!(self, HandleKind::LocalCurve(_) | HandleKind::LocalPatch(..))
+        matches!(self, HandleKind::LocalCurve(_) | HandleKind::LocalPatch(..) | HandleKind::LocalTriangle(_))
     }
 }
 
@@ -169,8 +178,14 @@ pub fn handles_with<'a>(
                     push(HandleKind::ControlPoint(i, field), p, p, p.len().min(3), None);
                 }
             }
-            // The frames of triangle-family locals are edited through `transforms`.
-            Decoration::LocalPieces(_) => {}
+            // A handle at each local's moved origin, editing its `transforms` entry as
+            // those of blending-spline curves do.
+            Decoration::LocalPieces(d) => {
+                let (dimension, origins) = d.local_origins().map_err(within)?;
+                for (k, o) in origins.iter().enumerate() {
+                    push(HandleKind::LocalTriangle(k), &o.moved, &o.origin, dimension.min(3), None);
+                }
+            }
             Decoration::Cage { vertices, .. } => {
                 for (i, p) in vertices.iter().enumerate() {
                     push(HandleKind::ControlPoint(i, "vertices"), p, p, 3, None);

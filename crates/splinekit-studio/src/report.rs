@@ -22,6 +22,7 @@ pub fn handle_report(handles: &[Handle], projector: &Projector, origin: [u32; 2]
                 HandleKind::NetPoint(i, j) => ("net_point", json!([i, j])),
                 HandleKind::LocalCurvePoint(k, i) => ("local_curve_point", json!([k, i])),
                 HandleKind::LocalPatchPoint(k, l, a, b) => ("local_patch_point", json!([k, l, a, b])),
+                HandleKind::LocalTriangle(k) => ("local_triangle", json!(k)),
             };
             Some(json!({
                 "object": h.object, "kind": kind, "index": index, "world": h.position,

@@ -593,8 +593,9 @@ impl DocumentKind for TriangulationDoc {
             normals: None,
         }
     }
+    /// The Voronoi diagram of the sites (see [`LocalPieces`] for `TriangulationDoc`).
     fn decoration(&self) -> SurfaceDecoration<'_> {
-        SurfaceDecoration::None
+        SurfaceDecoration::LocalPieces(self)
     }
     fn set_time(&mut self, _time: f64) {}
 }
@@ -783,10 +784,25 @@ impl DocumentKind for BlendingTriangulationDoc {
 
 /// The local pieces of a blending kind of the triangle family, as lines for scenes to draw
 /// (each local's outline over the part of its chart it is used on, in its frame) and the
-/// moved origins for editors' handles.
+/// moved origins for editors' handles; for a `triangulation`, the Voronoi cells of its
+/// points (no handles).
 pub trait LocalPieces: std::fmt::Debug + Sync {
     /// Per local: its polylines (3-D points) and its moved origin.
     fn local_pieces(&self) -> Result<Vec<LocalPiece>>;
+    /// The dimension of the points (2 or 3) and, per local, its frame's origin o (where
+    /// its `transforms` entry acts) and the moved origin F(o), without drawing the pieces:
+    /// what an editor's handle of the local's frame needs.
+    fn local_origins(&self) -> Result<(usize, Vec<LocalOrigin>)>;
+}
+
+/// A local's frame as an editor grabs it: the origin o its transform acts about and the
+/// moved origin F(o) (3-D; z = 0 for plane shapes).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LocalOrigin {
+    /// o, before the local's transform.
+    pub origin: [f64; 3],
+    /// F(o), where the local's frame puts it.
+    pub moved: [f64; 3],
 }
 
 /// One local piece as drawn: its polylines (3-D points) and its moved origin.
@@ -824,6 +840,21 @@ impl LocalPieces for GerbsTriangleDoc {
             Ok(out)
         })
     }
+
+    fn local_origins(&self) -> Result<(usize, Vec<LocalOrigin>)> {
+        let dimension = self.dimension()?;
+        crate::with_dimension!(dimension, "locals", D => {
+            let g = self.gerbs::<D>()?;
+            let origins = (0..3)
+                .map(|i| {
+                    let o = g.origin(i).expect("local 0..3");
+                    let moved = g.frame(i).expect("local 0..3").apply_point_about(&o, &o);
+                    LocalOrigin { origin: p3(&o), moved: p3(&moved) }
+                })
+                .collect();
+            Ok((dimension, origins))
+        })
+    }
 }
 
 impl LocalPieces for BlendingTriangulationDoc {
@@ -856,4 +887,112 @@ impl LocalPieces for BlendingTriangulationDoc {
         }
         Ok(out)
     }
+
+    fn local_origins(&self) -> Result<(usize, Vec<LocalOrigin>)> {
+        let s = self.blend()?;
+        let origins = (0..s.vertex_count())
+            .map(|i| {
+                let o = s.origin(i).expect("a vertex");
+                let moved = s.frame(i).expect("a vertex").apply_point_about(&o, &o);
+                LocalOrigin { origin: p3(&o), moved: p3(&moved) }
+            })
+            .collect();
+        Ok((3, origins))
+    }
+}
+
+impl LocalPieces for TriangulationDoc {
+    /// The Voronoi diagram of the sites in the plane z = the lowest height (below the
+    /// surface): per point, its cell (closed where bounded; for a site on the convex hull
+    /// the finite chain between its two rays) and the point itself (x, y, z). Cells are
+    /// clipped to the points' bounding box grown by a tenth of its size each way (the
+    /// circumcentres of thin triangles at the hull lie far out).
+    fn local_pieces(&self) -> Result<Vec<LocalPiece>> {
+        let (sites, heights) = self.sites()?;
+        let floor = heights.iter().copied().fold(f64::INFINITY, f64::min);
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in &sites {
+            for a in 0..2 {
+                lo[a] = lo[a].min(p[a]);
+                hi[a] = hi[a].max(p[a]);
+            }
+        }
+        let margin = 0.1 * (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        let (lo, hi) = (lo.map(|x| x - margin), hi.map(|x| x + margin));
+        let d = self.delaunay()?;
+        Ok(d.voronoi_cells()
+            .into_iter()
+            .zip(&heights)
+            .map(|(cell, &z)| {
+                let mut chain: Vec<[f64; 2]> = cell.vertices.iter().map(|v| [v.x, v.y]).collect();
+                if cell.bounded && !chain.is_empty() {
+                    chain.push(chain[0]);
+                }
+                let lines = clip_polyline(&chain, lo, hi)
+                    .into_iter()
+                    .map(|l| l.into_iter().map(|p| [p[0], p[1], floor]).collect())
+                    .collect();
+                (lines, [cell.site.x, cell.site.y, z])
+            })
+            .collect())
+    }
+
+    /// No handles: a triangulation's points are its data, not frames.
+    fn local_origins(&self) -> Result<(usize, Vec<LocalOrigin>)> {
+        Ok((3, Vec::new()))
+    }
+}
+
+/// The parts of the polyline `chain` inside the box [lo, hi] (each segment clipped by
+/// Liang and Barsky's method), as polylines of at least two points; a chain wholly inside
+/// comes back as it is.
+fn clip_polyline(chain: &[[f64; 2]], lo: [f64; 2], hi: [f64; 2]) -> Vec<Vec<[f64; 2]>> {
+    let mut out: Vec<Vec<[f64; 2]>> = Vec::new();
+    let mut current: Vec<[f64; 2]> = Vec::new();
+    for w in chain.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let d = [b[0] - a[0], b[1] - a[1]];
+        let (mut t0, mut t1) = (0.0f64, 1.0f64);
+        let mut inside = true;
+        for (p, q) in [(-d[0], a[0] - lo[0]), (d[0], hi[0] - a[0]), (-d[1], a[1] - lo[1]), (d[1], hi[1] - a[1])] {
+            if p == 0.0 {
+                inside &= q >= 0.0;
+            } else if p < 0.0 {
+                t0 = t0.max(q / p);
+            } else {
+                t1 = t1.min(q / p);
+            }
+        }
+        if !inside || t0 > t1 {
+            if current.len() > 1 {
+                out.push(std::mem::take(&mut current));
+            }
+            current.clear();
+            continue;
+        }
+        let at = |t: f64| {
+            if t == 0.0 {
+                a
+            } else if t == 1.0 {
+                b
+            } else {
+                [a[0] + t * d[0], a[1] + t * d[1]]
+            }
+        };
+        let (p0, p1) = (at(t0), at(t1));
+        if current.last() != Some(&p0) {
+            if current.len() > 1 {
+                out.push(std::mem::take(&mut current));
+            }
+            current = vec![p0];
+        }
+        current.push(p1);
+        if t1 < 1.0 {
+            out.push(std::mem::take(&mut current));
+        }
+    }
+    if current.len() > 1 {
+        out.push(current);
+    }
+    out
 }
