@@ -502,9 +502,7 @@ fn scene_shape(scene: &str) -> Option<Shape> {
         | "torus_animated"
         | "torus_before"
         | "torus_gaussian_curvature"
-        | "subdivision_surfaces"
-        | "blending_sphere_moved"
-        | "blending_sphere_animated" => Shape::Closed(None),
+        | "subdivision_surfaces" => Shape::Closed(None),
         "beating_heart" | "bspline_polygon" | "heart_local_curves" | "heart_transformed" | "rose_and_blending_copy" => {
             return None;
         }
