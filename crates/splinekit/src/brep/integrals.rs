@@ -134,7 +134,7 @@ fn boundary_integral(face: &BrepFace, h: &dyn Fn(&Point<3>, &Point<3>) -> f64) -
 /// where the direction is closed, in increasing order.
 fn lines_within(breaks: &[f64], domain: Interval, closed: bool, lo: f64, hi: f64) -> Vec<f64> {
     let period = domain.length();
-    if !closed || !(period > 0.0) || !lo.is_finite() || !hi.is_finite() {
+    if !closed || period.is_nan() || period <= 0.0 || !lo.is_finite() || !hi.is_finite() {
         return breaks.iter().copied().filter(|&t| t > lo && t < hi).collect();
     }
     let first = ((lo - domain.end) / period).floor() as i64;
