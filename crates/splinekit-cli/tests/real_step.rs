@@ -40,10 +40,11 @@ fn check(file: &str, expect: Expect) {
     let occ = reference(file);
     let faces: u64 = parts.iter().map(|p| p["faces"].as_u64().unwrap()).sum();
     assert_eq!(faces, occ["counts"]["faces"].as_u64().unwrap(), "{file}: faces");
-    let volumes: Vec<f64> =
-        parts.iter().flat_map(|p| p["solids"].as_array().unwrap().iter().map(|s| s["volume"].as_f64().unwrap())).collect();
-    let occ_volumes: Vec<f64> =
-        occ["volume_solids"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+    let volumes: Vec<f64> = parts
+        .iter()
+        .flat_map(|p| p["solids"].as_array().unwrap().iter().map(|s| s["volume"].as_f64().unwrap()))
+        .collect();
+    let occ_volumes: Vec<f64> = occ["volume_solids"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
     assert_eq!(volumes.len(), occ_volumes.len(), "{file}: solids");
     for (k, (v, w)) in volumes.iter().zip(&occ_volumes).enumerate() {
         assert!((v - w).abs() <= expect.volume * w.abs(), "{file}: solid {k}'s volume {v} against OpenCASCADE's {w}");
