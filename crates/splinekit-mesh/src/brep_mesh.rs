@@ -335,6 +335,7 @@ fn mesh_face(face: &BrepFace, f: usize, edges: &Edges, tolerance: f64, mesh: &mu
         let _ = cdt;
     };
     let field = format!("faces[{f}]");
+    let mut every_side_constrained = true;
     for ring in &rings {
         let mut handles = Vec::with_capacity(ring.len());
         for b in ring {
@@ -346,8 +347,12 @@ fn mesh_face(face: &BrepFace, f: usize, edges: &Edges, tolerance: f64, mesh: &mu
         }
         for k in 0..handles.len() {
             let (a, b) = (handles[k], handles[(k + 1) % handles.len()]);
-            if a != b && cdt.can_add_constraint(a, b) {
-                cdt.add_constraint(a, b);
+            if a != b {
+                if cdt.can_add_constraint(a, b) {
+                    cdt.add_constraint(a, b);
+                } else {
+                    every_side_constrained = false;
+                }
             }
         }
     }
@@ -380,13 +385,20 @@ fn mesh_face(face: &BrepFace, f: usize, edges: &Edges, tolerance: f64, mesh: &mu
     }
     let first = mesh.positions.len();
     let mut ids = vec![u32::MAX; vertex_of.len()];
+    let enclosed = every_side_constrained.then(|| faces_within_constraints(&cdt));
     for t in cdt.inner_faces() {
         let vs = t.vertices();
-        let centre = vs.iter().fold(Point::<2>::zeros(), |acc, v| {
-            let (uv, _) = vertex_of[v.fix().index()].expect("every vertex was noted");
-            acc + uv / 3.0
-        });
-        if !inside(&rings, centre) {
+        let within = match &enclosed {
+            Some(within) => within[t.fix().index()],
+            None => {
+                let centre = vs.iter().fold(Point::<2>::zeros(), |acc, v| {
+                    let (uv, _) = vertex_of[v.fix().index()].expect("every vertex was noted");
+                    acc + uv / 3.0
+                });
+                inside(&rings, centre)
+            }
+        };
+        if !within {
             continue;
         }
         let corners = vs.map(|v| v.fix().index());
@@ -423,6 +435,40 @@ fn mesh_face(face: &BrepFace, f: usize, edges: &Edges, tolerance: f64, mesh: &mu
         return Err(Error::invalid(field, "the face's loops enclose no triangle"));
     }
     Ok(())
+}
+
+/// Which faces of the triangulation lie inside the loops, by the parity of the constraint
+/// edges crossed on the way in from the convex hull (a walk over neighbouring triangles).
+/// Unlike a test of each triangle's centre against the loops, this cannot mistake a sliver
+/// along a loop (three consecutive boundary points where the loop bends outwards by a
+/// rounding error) for an inside triangle, which left the shared edge used three times.
+fn faces_within_constraints(cdt: &Cdt) -> Vec<bool> {
+    let mut crossings: Vec<Option<u32>> = vec![None; cdt.num_all_faces()];
+    let mut queue = std::collections::VecDeque::new();
+    for hull_edge in cdt.convex_hull() {
+        for side in [hull_edge, hull_edge.rev()] {
+            if let Some(inner) = side.face().as_inner() {
+                let k = inner.fix().index();
+                if crossings[k].is_none() {
+                    crossings[k] = Some(u32::from(side.is_constraint_edge()));
+                    queue.push_back(inner.fix());
+                }
+            }
+        }
+    }
+    while let Some(face) = queue.pop_front() {
+        let here = crossings[face.index()].expect("queued faces are numbered");
+        for edge in cdt.face(face).adjacent_edges() {
+            if let Some(next) = edge.rev().face().as_inner() {
+                let k = next.fix().index();
+                if crossings[k].is_none() {
+                    crossings[k] = Some(here + u32::from(edge.is_constraint_edge()));
+                    queue.push_back(next.fix());
+                }
+            }
+        }
+    }
+    crossings.iter().map(|c| c.is_some_and(|c| c % 2 == 1)).collect()
 }
 
 /// Whether `uv` lies within `clearance` (in the triangulation's plane) of a boundary
