@@ -1,8 +1,8 @@
 //! The product structure and colours of real CAD files, against OpenCASCADE and against
 //! the files' own text.
 //!
-//! The STEP files are read from the folder in `SPLINEKIT_REAL_STEP` (default
-//! `/work/realstep`); without it the tests say so and pass. OpenCASCADE's numbers are in
+//! The STEP files are the repository's `tests/step/real/` (SOURCES.md says where each
+//! came from), or the folder in `SPLINEKIT_REAL_STEP`; a file missing from it fails. OpenCASCADE's numbers are in
 //! `tests/data/real/occ_assembly.json`, made by `tools/occ_assembly_reference.py`
 //! (XCAF: each leaf occurrence's path, part, solids, location and placed vertex box, each
 //! part's colour).
@@ -29,14 +29,10 @@ use splinekit_step::structure::structure_entities;
 use splinekit_step::styles::{Rgba, StyledKind, read_styles};
 use splinekit_step::units::context_units;
 
-fn folder() -> Option<PathBuf> {
-    let dir = PathBuf::from(std::env::var("SPLINEKIT_REAL_STEP").unwrap_or_else(|_| "/work/realstep".into()));
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("note: {} is not a folder (set SPLINEKIT_REAL_STEP): real-file tests skipped", dir.display());
-        None
-    }
+fn folder() -> PathBuf {
+    std::env::var("SPLINEKIT_REAL_STEP")
+        .map(PathBuf::from)
+        .unwrap_or_else(|_| PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/step/real")))
 }
 
 fn occ() -> serde_json::Map<String, Value> {
@@ -49,18 +45,15 @@ fn occ() -> serde_json::Map<String, Value> {
 }
 
 fn files() -> Vec<(String, PathBuf, Value)> {
-    let Some(dir) = folder() else { return Vec::new() };
+    let dir = folder();
     let mut out = Vec::new();
     for (name, reference) in occ() {
         if name.starts_with('_') {
             continue;
         }
         let path = dir.join(&name);
-        if path.is_file() {
-            out.push((name, path, reference));
-        } else {
-            eprintln!("note: {} missing: skipped", path.display());
-        }
+        assert!(path.is_file(), "{} missing", path.display());
+        out.push((name, path, reference));
     }
     out
 }
@@ -272,11 +265,7 @@ fn instances_parts_and_placements_match_opencascade() {
         }
         // The solids' vertex box against OCC's optimal box of the shape (which reaches past
         // the vertices where a curved face bulges).
-        let optimal = std::env::var("SPLINEKIT_REAL_STEP")
-            .ok()
-            .map(PathBuf::from)
-            .unwrap_or_else(|| PathBuf::from("/work/realstep"))
-            .join("occ_reference.json");
+        let optimal = folder().join("occ_reference.json");
         let optimal_box = std::fs::read_to_string(&optimal)
             .ok()
             .and_then(|t| serde_json::from_str::<Value>(&t).ok())
@@ -479,6 +468,37 @@ fn structure_entities_cover_the_product_and_style_structure() {
             for id in file.ids_of_type(t) {
                 assert!(read.contains(&id), "{name}: #{id} {t} is not marked read");
             }
+        }
+    }
+}
+
+/// The brep documents carry the colours: SolidWorks 2018's plate is styled once, on its
+/// solid (`COLOUR_RGB #77` and its copy #534), and every face shows it; written as f32.
+#[test]
+fn brep_faces_and_solids_take_their_colours() {
+    use splinekit_scene::{ShapeDocument, SurfaceDocument};
+    let path = folder().join("sw2018_base_interface_ap214_inch.stp");
+    let file = StepFile::open(&path).expect("the file reads");
+    let items = splinekit_step::documents::import_items(&file).expect("it converts");
+    let expected = [0.792_156_862_745_098_f64, 0.819_607_843_137_254_9, 0.933_333_333_333_333_3, 1.0].map(|x| x as f32);
+    let breps: Vec<_> = items
+        .items
+        .iter()
+        .filter_map(|i| match &i.document {
+            ShapeDocument::Surface(SurfaceDocument::Brep(b)) => Some(b),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(breps.len(), 1);
+    assert_eq!(breps[0].faces.len(), 30);
+    assert!(breps[0].faces.iter().all(|f| f.color == Some(expected)), "{:?}", breps[0].faces[0].color);
+    assert_eq!(breps[0].solids[0].color, Some(expected));
+    // Pro/ENGINEER's axle has no styles: no colours.
+    let file = StepFile::open(&folder().join("proe2000_lego_gear_shaft_m.stp")).expect("the file reads");
+    let items = splinekit_step::documents::import_items(&file).expect("it converts");
+    for i in &items.items {
+        if let ShapeDocument::Surface(SurfaceDocument::Brep(b)) = &i.document {
+            assert!(b.faces.iter().all(|f| f.color.is_none()));
         }
     }
 }

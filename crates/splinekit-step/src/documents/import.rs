@@ -41,7 +41,7 @@ pub struct ImportedDocuments {
 pub fn import_items(file: &StepFile) -> Result<ImportedDocuments> {
     let mut found = import(file)?;
     let mut out = ImportedDocuments::default();
-    let breps = super::solid::brep_documents(&found)?;
+    let breps = super::solid::brep_documents(&found, &crate::styles::read_styles(file))?;
     let mut skipped = std::mem::take(&mut found.not_understood);
     for (reason, count) in breps.left_out {
         *skipped.entry(reason).or_default() += count;

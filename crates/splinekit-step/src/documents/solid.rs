@@ -28,6 +28,7 @@ use super::import::{
 use crate::error::{Result, StepError};
 use crate::geometry::Curve;
 use crate::import::{EdgeRead, Face, GeometryOrFace, Imported, Role};
+use crate::styles::{Rgba, Styles};
 
 /// An edge's curve from its start vertex to its end as a 3-D document: a line, or an exact
 /// NURBS arc or spline piece.
@@ -109,7 +110,12 @@ fn pcurve_doc(c: &NurbsCurve<2>) -> CurveDocument {
 
 /// A face with its loops piece by piece (see the module); `None` where its surface or a
 /// loop has no document form.
-fn brep_face(f: &Face, numbering: &mut Numbering, found: &Imported) -> Result<Option<BrepFaceDoc>> {
+fn brep_face(
+    f: &Face,
+    numbering: &mut Numbering,
+    found: &Imported,
+    color: Option<[f32; 4]>,
+) -> Result<Option<BrepFaceDoc>> {
     let Some((surface, map)) = face_surface(f)? else { return Ok(None) };
     let only_seams = f.loops.len() == 1 && f.seam_twins[0].iter().all(Option::is_some);
     let map = into_domain(f, map)?;
@@ -133,7 +139,7 @@ fn brep_face(f: &Face, numbering: &mut Numbering, found: &Imported) -> Result<Op
         }
         loops.push(uses);
     }
-    Ok(Some(BrepFaceDoc { name: f.name.clone(), surface, reversed: !f.same_sense, loops, color: None }))
+    Ok(Some(BrepFaceDoc { name: f.name.clone(), surface, reversed: !f.same_sense, loops, color }))
 }
 
 /// What [`brep_documents`] made: the documents, and the faces that stayed out (their
@@ -149,20 +155,23 @@ pub struct BrepDocuments {
 
 /// The `brep` documents of the solids and shells read (see the module): one per solid,
 /// and one per shell that no solid holds and that has more than one face or is closed.
-pub fn brep_documents(found: &Imported) -> Result<BrepDocuments> {
-    let mut groups: Vec<(String, Vec<usize>)> = Vec::new();
+/// Faces and solids take the colours `styles` give them (a face its own, else its shell's,
+/// else its solid's; COLOUR_RGB components as written, which CAD systems mean as sRGB).
+pub fn brep_documents(found: &Imported, styles: &Styles) -> Result<BrepDocuments> {
+    let mut groups: Vec<(String, Vec<usize>, Option<u64>)> = Vec::new();
     let mut in_solid = vec![false; found.shells.len()];
     for s in &found.solids {
         s.shells.iter().for_each(|&k| in_solid[k] = true);
-        groups.push((s.name.clone(), s.shells.clone()));
+        groups.push((s.name.clone(), s.shells.clone(), Some(s.id)));
     }
     for (k, shell) in found.shells.iter().enumerate() {
         if !in_solid[k] && (shell.closed || shell.faces.len() + shell.missing > 1) {
-            groups.push((String::new(), vec![k]));
+            groups.push((String::new(), vec![k], None));
         }
     }
+    let srgb = |c: Rgba| c.to_array().map(|x| x as f32);
     let mut out = BrepDocuments { documents: Vec::new(), faces_used: Vec::new(), left_out: BTreeMap::new() };
-    for (name, shells) in groups {
+    for (name, shells, solid_id) in groups {
         let mut numbering = Numbering::default();
         let mut faces = Vec::new();
         let mut shell_docs = Vec::new();
@@ -171,7 +180,8 @@ pub fn brep_documents(found: &Imported) -> Result<BrepDocuments> {
             let mut members = Vec::new();
             for &g in &shell.faces {
                 let GeometryOrFace::Face(f) = &found.geometry[g].1 else { continue };
-                match brep_face(f, &mut numbering, found)? {
+                let color = styles.effective(&[f.id, shell.id, solid_id.unwrap_or(u64::MAX)]).map(srgb);
+                match brep_face(f, &mut numbering, found, color)? {
                     Some(face) => {
                         members.push(faces.len());
                         faces.push(face);
@@ -188,7 +198,8 @@ pub fn brep_documents(found: &Imported) -> Result<BrepDocuments> {
         let solids = if name.is_empty() && shells.len() == 1 && !found.shells[shells[0]].closed {
             Vec::new()
         } else {
-            vec![BrepSolidDoc { name: name.clone(), shells: (0..shells.len()).collect(), color: None }]
+            let color = solid_id.and_then(|id| styles.colour(id)).map(srgb);
+            vec![BrepSolidDoc { name: name.clone(), shells: (0..shells.len()).collect(), color }]
         };
         let doc = BrepDoc {
             source_unit: found.source_unit.clone(),
