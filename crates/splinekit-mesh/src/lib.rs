@@ -13,6 +13,7 @@ pub mod brep_mesh;
 pub mod doo_sabin_limit;
 pub mod export;
 pub mod limit_mesh;
+pub mod measure;
 mod mesh_cleanup;
 pub mod mesh_options;
 pub mod polyline;

@@ -65,6 +65,7 @@ fn _splinekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(render::animate, m)?)?;
     m.add_function(wrap_pyfunction!(queries::_intersect, m)?)?;
     m.add_function(wrap_pyfunction!(queries::_section, m)?)?;
+    m.add_function(wrap_pyfunction!(queries::_measure, m)?)?;
     m.add_function(wrap_pyfunction!(queries::_project, m)?)?;
     m.add_function(wrap_pyfunction!(queries::_offset, m)?)?;
     m.add_function(wrap_pyfunction!(exchange::_read_step, m)?)?;

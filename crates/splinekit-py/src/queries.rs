@@ -96,6 +96,42 @@ pub fn _section<'py>(
     to_python(py, &value)
 }
 
+/// `splinekit measure SHAPE [--tolerance T]` as a dict: a solid's (`brep`'s) topology,
+/// exact area and volume and its watertight mesh's measures; another surface's adaptive
+/// mesh measures; a scene's objects as `{"objects": […]}`.
+#[pyfunction]
+#[pyo3(signature = (shape, tolerance = None))]
+pub fn _measure<'py>(shape: &Bound<'py, PyAny>, tolerance: Option<f64>) -> PyResult<Bound<'py, PyAny>> {
+    let py = shape.py();
+    let one = |doc: ShapeDocument| -> PyResult<Value> {
+        match doc {
+            ShapeDocument::Surface(s) => {
+                if let splinekit_scene::SurfaceDocument::Brep(d) = &s {
+                    let brep = d.build().map_err(document_error)?;
+                    return py.detach(|| splinekit_mesh::measure::measure_brep(&brep, tolerance)).or_value_error();
+                }
+                budget::current()?.check_shape(&s.cost()).or_value_error()?;
+                let surface = s.build_in::<3>().map_err(document_error)?;
+                py.detach(|| splinekit_mesh::measure::measure_surface(surface.as_ref(), tolerance)).or_value_error()
+            }
+            ShapeDocument::Curve(c) => {
+                Err(value_error(format!("shape: a {} is a curve; measure takes surfaces and solids", c.type_name())))
+            }
+        }
+    };
+    let value = match splinekit_scene::SceneOrShape::from_value(any_document(shape)?).map_err(document_error)? {
+        splinekit_scene::SceneOrShape::Shape(doc) => one(doc)?,
+        splinekit_scene::SceneOrShape::Scene(scene) => {
+            let mut objects = Vec::with_capacity(scene.objects.len());
+            for (i, o) in scene.objects.into_iter().enumerate() {
+                objects.push(one(o.shape).map_err(|e| value_error(format!("objects[{i}].shape: {e}")))?);
+            }
+            json!({ "objects": objects })
+        }
+    };
+    to_python(py, &value)
+}
+
 /// Most points one call may project (as `splinekit project --points`).
 const MAX_POINTS: usize = 1_000_000;
 

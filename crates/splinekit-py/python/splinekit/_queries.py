@@ -134,15 +134,35 @@ def offset(shape: Any, distance: float, tolerance: float = 1e-6, normal: Any = N
 def read_step(path: PathLike, names: bool = False) -> list:
     """The curves, surfaces and faces of a STEP file (any CAD system's AP203/AP214/AP242
     geometry, in millimetres and radians), as ``splinekit convert FILE.step -o OUT.json``
-    reads them: a list of curves and surfaces (faces are ``trimmed`` surfaces). With
-    ``names=True`` a list of ``(name, shape)`` pairs, the names of the file. Entities
-    splinekit does not read are reported by a ``UserWarning`` (as the command's
+    reads them: a list of curves and surfaces (solids are ``brep`` surfaces, loose faces
+    ``trimmed`` ones). With ``names=True`` a list of ``(name, shape)`` pairs, the names of
+    the file. Entities splinekit does not read are reported by a ``UserWarning`` (as the command's
     ``warning:`` lines)."""
     items, skipped = _native._read_step(os.fspath(path))
     for entity, count in skipped:
         warnings.warn(f"{count} × {entity} not converted (no splinekit equivalent yet)", stacklevel=2)
     shapes = [(name, load(doc)) for name, doc in items]
     return shapes if names else [s for _, s in shapes]
+
+
+def measure(shape: Any, tolerance: Optional[float] = None) -> Dict[str, Any]:
+    """What a solid or surface measures: ``splinekit measure SHAPE [--tolerance T]``.
+
+    ``shape`` is a surface, a ``brep`` solid (as ``read_step`` returns the solids of a
+    CAD file), a ``Scene``, or the path of a STEP file (read as ``read_step`` reads it: one
+    object, or a scene of them). A solid gives its ``faces``, ``edges``, ``vertices``,
+    ``shells``, ``closed_shells``, ``solids`` (each with its ``volume``), the ``area`` and
+    ``volume`` integrated over the exact trimmed faces, and ``mesh``: its watertight mesh's
+    ``tolerance`` (default 10⁻³ of the box diagonal), ``triangles``, ``area``, ``volume``,
+    ``open_edges`` and ``box``. Another surface gives only ``mesh``; a scene
+    ``{"objects": […]}``."""
+    if isinstance(shape, (str, os.PathLike)):
+        path = os.fspath(shape)
+        if not path.lower().endswith((".step", ".stp")):
+            raise DocumentError(f"shape: measure reads STEP files (.step, .stp) by path, not '{path}'; load() a document")
+        shapes = read_step(path)
+        shape = shapes[0] if len(shapes) == 1 else Scene(shapes)
+    return cast(Dict[str, Any], _native._measure(shape, tolerance))
 
 
 def write_step(objects: Any, path: PathLike, tolerance: float = 1e-6) -> List[Dict[str, Any]]:
