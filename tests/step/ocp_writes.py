@@ -120,11 +120,45 @@ def run(binary, args, stdin=None):
     return r
 
 
+# Samples of each pcurve piece where a brep face's loops become a trimmed face's polygons.
+LOOP_SAMPLES = 400
+
+
+def loop_polygon(binary, loop):
+    """A brep face's loop (pcurve pieces in order) as one closed degree-1 B-spline through
+    LOOP_SAMPLES points of each piece, within (size/LOOP_SAMPLES)² of the pcurves."""
+    points = []
+    for use in loop:
+        r = run(binary, ["eval", "-", "--samples", str(LOOP_SAMPLES + 1)], json.dumps(use["pcurve"]))
+        points.extend(json.loads(r.stdout)["points"][:-1])
+    points.append(points[0])
+    n = len(points)
+    knots = [0.0] + [float(k) for k in range(n)] + [float(n - 1)]
+    return {"type": "bspline", "degree": 1, "knots": knots, "control_points": points}
+
+
+def brep_faces(binary, brep):
+    """A brep document's faces as trimmed documents, one per face (OpenCASCADE's explorer
+    lists faces, splinekit reads a shell of them as one brep)."""
+    faces = []
+    for face in brep["faces"]:
+        doc = {"type": "trimmed", "surface": face["surface"]}
+        if face["loops"]:
+            doc["outer"] = loop_polygon(binary, face["loops"][0])
+            if len(face["loops"]) > 1:
+                doc["holes"] = [loop_polygon(binary, lp) for lp in face["loops"][1:]]
+        faces.append(doc)
+    return faces
+
+
 def imported_objects(binary, step, out):
     r = run(binary, ["convert", step, "-o", out])
     doc = json.load(open(out))
     shapes = [o["shape"] for o in doc["objects"]] if doc.get("type") == "scene" else [doc]
-    return shapes, r.stderr
+    expanded = []
+    for s in shapes:
+        expanded.extend(brep_faces(binary, s) if s.get("type") == "brep" else [s])
+    return expanded, r.stderr
 
 
 def occ_edges(shape):
