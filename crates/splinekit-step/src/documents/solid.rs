@@ -121,7 +121,12 @@ fn brep_face(
     let map = into_domain(f, map)?;
     let mut loops = Vec::with_capacity(f.loops.len());
     let outer = f.outer.unwrap_or(0);
-    let order: Vec<usize> = std::iter::once(outer).chain((0..f.loops.len()).filter(|&i| i != outer)).collect();
+    // A face bounded only by a vertex loop (a whole sphere) has no loop: its whole surface.
+    let order: Vec<usize> = if f.loops.is_empty() {
+        Vec::new()
+    } else {
+        std::iter::once(outer).chain((0..f.loops.len()).filter(|&i| i != outer)).collect()
+    };
     for &i in order.iter().filter(|_| !only_seams) {
         let Some(parts) =
             loop_parts(&f.loops[i], &f.seam_twins[i], &f.roles[i], map.as_ref(), seam_crossings(&f.surface))?
