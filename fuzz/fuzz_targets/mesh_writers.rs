@@ -4,7 +4,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use splinekit::Point;
-use splinekit_mesh::export::{GltfGeometry, GltfScene, obj, ply, stl};
+use splinekit_mesh::export::{Format, GltfGeometry, GltfScene, obj, ply, stl};
 use splinekit_mesh::subdivision_surface::read_obj_polygons;
 use splinekit_mesh::{Projection, SvgFigure};
 
@@ -20,8 +20,9 @@ fuzz_target!(|data: &[u8]| {
     let _ = stl::write_stl_ascii(&mesh, "fuzz", Vec::new());
     let _ = ply::write_ply(&mesh, Vec::new());
     let color = [0.5, 0.5, 0.5, 1.0];
-    let _ = GltfScene::single("fuzz", GltfGeometry::Mesh(mesh.clone()), color).to_file_bytes("glb");
-    let _ = GltfScene::single("fuzz", GltfGeometry::LineStrip(mesh.positions.clone()), color).to_file_bytes("gltf");
+    let _ = GltfScene::single("fuzz", GltfGeometry::Mesh(mesh.clone()), color).to_format_bytes(Format::Glb);
+    let _ =
+        GltfScene::single("fuzz", GltfGeometry::LineStrip(mesh.positions.clone()), color).to_format_bytes(Format::Gltf);
     let _ = obj::write_obj_polyline(&mesh.positions, true, "fuzz", Vec::new());
     let points: Vec<Point<3>> = mesh.positions.iter().map(|p| Point::<3>::from(*p)).collect();
     let mut figure = SvgFigure::new(200.0, 100.0, Projection::view(0.6, 0.45));
