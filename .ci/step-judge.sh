@@ -18,6 +18,11 @@ for f in tests/step/shapes/{exact_forms,trimmed_faces,natural_bounds,seam_faces}
     "$bin" convert "$f" -o "$out/$n.step" --report "$out/$n.report.json" 2>"$out/$n.log"
     args+=("$out/$n.step" "$out/$n.report.json")
 done
+# A blending surface over a triangulation leaves one item per triangle, each paired in the
+# report with samples of its own triangle (at 1e-4: the debug build's jets are slow).
+"$bin" convert tests/step/shapes/blending_octahedron.json -o "$out/blending_octahedron.step" --tolerance 1e-4 \
+    --report "$out/blending_octahedron.report.json" 2>"$out/blending_octahedron.log"
+args+=("$out/blending_octahedron.step" "$out/blending_octahedron.report.json")
 "$py" tests/step/ocp_judge.py "${args[@]}" 2>/dev/null | grep -E '^(ok|FAIL|[0-9]+ passed)'
 
 # The other way: STEP files that OpenCASCADE writes (splines, rational ones, a revolution,

@@ -27,23 +27,6 @@ use crate::errors::{Failure, OrValueError, file_error, value_error};
 use crate::json_value::to_python;
 use crate::mesh::{CurvePoints, MAX_ADAPTIVE_CELLS, MAX_CURVE_POINTS, MAX_DENSITY, PyMesh, SurfaceTriangles};
 
-/// The current UTC time as ISO 8601 (the STEP header's time stamp, as `convert` writes it).
-fn now_iso8601() -> String {
-    let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs()) as i64;
-    let (days, rem) = (secs.div_euclid(86_400), secs.rem_euclid(86_400));
-    // Civil date from days since 1970-01-01 (Howard Hinnant's algorithm).
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    format!("{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}", rem / 3600, rem % 3600 / 60, rem % 60)
-}
-
 fn stem(path: &Path) -> String {
     path.file_stem().and_then(|s| s.to_str()).unwrap_or("splinekit").to_string()
 }
@@ -108,7 +91,7 @@ pub fn _write_step<'py>(doc: &Bound<'py, PyAny>, path: PathBuf, tolerance: f64) 
     }
     let doc = SceneOrShape::from_value(any_document(doc)?).or_value_error()?;
     let name = stem(&path);
-    let header = HeaderInfo { name: name.clone(), time_stamp: now_iso8601(), ..HeaderInfo::default() };
+    let header = HeaderInfo::now(&name);
     let (step, exported) = py.detach(|| export_document(&doc, &name, tolerance, &header)).or_value_error()?;
     write(&path, step.as_bytes())?;
     let list = PyList::empty(py);

@@ -8,7 +8,7 @@ use serde_json::{Value, json};
 use splinekit_mesh::export::Format;
 use splinekit_scene::{SceneOrShape, ShapeDocument, SurfaceDocument};
 use splinekit_step::documents::faces::loop_samples;
-use splinekit_step::documents::{Exported, Form, export_document, import_items, samples};
+use splinekit_step::documents::{Exported, Form, export_pieces, import_items, samples};
 use splinekit_step::export::write_step;
 use splinekit_step::part21::StepFile;
 use splinekit_step::part21::writer::HeaderInfo;
@@ -41,27 +41,6 @@ fn format_of(path: &str, flag: &str) -> Result<Format> {
         Some(f @ (Format::Json | Format::Step)) => Ok(f),
         _ => bail!("{flag}: unknown format of '{path}' (expected .json, .step or .stp)"),
     }
-}
-
-/// The current UTC time as ISO 8601 (for the STEP header).
-fn now_iso8601() -> String {
-    let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs()) as i64;
-    let (days, rem) = (secs.div_euclid(86_400), secs.rem_euclid(86_400));
-    // Civil date from days since 1970-01-01 (Howard Hinnant's algorithm).
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    format!("{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}", rem / 3600, rem % 3600 / 60, rem % 60)
-}
-
-fn header(name: &str) -> HeaderInfo {
-    HeaderInfo { name: name.to_string(), time_stamp: now_iso8601(), ..HeaderInfo::default() }
 }
 
 fn stem(path: &str) -> String {
@@ -97,23 +76,19 @@ fn json_to_step(args: &ConvertArgs) -> Result<()> {
     let text = crate::input::read_text(&args.input, "IN")?;
     let doc =
         SceneOrShape::from_json_in(&text, &crate::input::document_folder(&args.input)).map_err(|e| anyhow!("{e}"))?;
-    // Subdivision surfaces as their patches, so that each item has its shape for the report.
-    let doc = splinekit_step::documents::subdivision::expand_subdivision_surfaces(&doc, args.tolerance)
-        .map_err(|e| anyhow!("{e}"))?;
     let name = stem(&args.input);
-    let (step, exported) = export_document(&doc, &name, args.tolerance, &header(&name)).map_err(|e| anyhow!("{e}"))?;
-    splinekit_scene::write_file(&args.output, step.as_bytes())
+    let pieces = export_pieces(&doc, &name, args.tolerance).map_err(|e| anyhow!("{e}"))?;
+    let items: Vec<_> = pieces.iter().flat_map(|p| p.items.iter().map(|e| e.item.clone())).collect();
+    splinekit_scene::write_file(&args.output, write_step(&items, &name, &HeaderInfo::now(&name)).as_bytes())
         .map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
-    for e in &exported {
+    for e in pieces.iter().flat_map(|p| &p.items) {
         eprintln!("{}: {}", e.item.name, describe(e));
     }
     if let Some(path) = &args.report {
-        let shapes: Vec<&ShapeDocument> = match &doc {
-            SceneOrShape::Shape(s) => vec![s],
-            SceneOrShape::Scene(s) => s.objects.iter().map(|o| &o.shape).collect(),
-        };
+        // Each STEP item beside the expanded shape it came from (a brep's faces, a
+        // subdivision surface's patches, a triangle surface's triangles: several items).
         let mut items = Vec::new();
-        for (shape, e) in shapes.iter().zip(&exported) {
+        for (shape, e) in pieces.iter().flat_map(|p| p.items.iter().map(move |e| (&p.shape, e))) {
             let count = if matches!(shape, ShapeDocument::Curve(_)) { 128 } else { 12 };
             let s = samples(shape, e, count).map_err(|e| anyhow!("{e}"))?;
             let kind = match shape {
@@ -173,7 +148,7 @@ fn step_to_any(args: &ConvertArgs, output: Format) -> Result<()> {
         Format::Step => {
             let items = imported.step_items().map_err(|e| anyhow!("IN: {e}"))?;
             let name = stem(&args.input);
-            splinekit_scene::write_file(&args.output, write_step(&items, &name, &header(&name)).as_bytes())
+            splinekit_scene::write_file(&args.output, write_step(&items, &name, &HeaderInfo::now(&name)).as_bytes())
                 .map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
         }
         // JSON (`format_of` gives only JSON or STEP).

@@ -426,6 +426,21 @@ pub fn samples(doc: &ShapeDocument, exported: &Exported, count: usize) -> Result
         }
         ShapeDocument::Surface(s) => {
             let k = kernel_surface(s)?;
+            // An item of one triangle (`export_triangles`: u ∈ [c, c + 1]) is sampled on
+            // that triangle alone: the atlas gives u = c + 1 to triangle c + 1.
+            if let Some(atlas) = k.triangle_atlas().filter(|a| a.charts().len() > 1) {
+                let c = exported.domain.0.start.floor().max(0.0) as usize;
+                let chart = atlas.charts()[c.min(atlas.charts().len() - 1)].clone();
+                let shift = c as f64;
+                let single = TriangleAtlas::single(chart);
+                return Ok((0..count)
+                    .flat_map(|i| (0..count).map(move |j| (i, j)))
+                    .map(|(i, j)| {
+                        let (u, v) = (at(exported.domain.0, i), at(exported.domain.1, j));
+                        Sample { param: (u, v), step_param: step((u, v)), point: single.point(u - shift, v) }
+                    })
+                    .collect());
+            }
             Ok((0..count)
                 .flat_map(|i| (0..count).map(move |j| (i, j)))
                 .map(|(i, j)| {

@@ -26,39 +26,57 @@ pub fn object_name(index: usize, shape: &ShapeDocument) -> String {
     format!("object {} ({ty})", index + 1)
 }
 
-/// Exports a scene (one item per object, named after it) or a single shape (named
-/// `name`) as one STEP file; returns the text and what was measured per item. Subdivision
-/// surfaces are first replaced by their patches ([`subdivision::expand_subdivision_surfaces`]),
-/// one item each.
+/// One piece of an exported document: the shape whose parameters the items' `domain` and
+/// `map` refer to (after subdivision surfaces and breps are expanded), and the STEP items it
+/// left — one for most shapes, one per triangle for surfaces made of triangles.
+#[derive(Debug, Clone)]
+pub struct ExportedPiece {
+    /// The expanded shape document the items were written from.
+    pub shape: ShapeDocument,
+    /// What was written for it, in file order.
+    pub items: Vec<Exported>,
+}
+
+/// Exports a scene (one piece per object, named after it) or a single shape (named
+/// `name`) piece by piece: subdivision surfaces are first replaced by their patches
+/// ([`subdivision::expand_subdivision_surfaces`]) and breps by their faces
+/// ([`solid::expand_breps`]), one piece each; a surface made of triangles leaves one item
+/// per triangle. A report or a judge pairs each item with `piece.shape`.
+pub fn export_pieces(doc: &SceneOrShape, name: &str, relative_tolerance: f64) -> Result<Vec<ExportedPiece>> {
+    let expanded = solid::expand_breps(&subdivision::expand_subdivision_surfaces(doc, relative_tolerance)?)?;
+    let piece = |shape: &ShapeDocument, name: &str| -> Result<ExportedPiece> {
+        let items = match shape {
+            ShapeDocument::Surface(s) if matches!(s.exact_form(), Ok(SurfaceForm::Triangles)) => {
+                export_triangles(s, name, relative_tolerance)?
+            }
+            _ => vec![export_shape(shape, name, relative_tolerance)?],
+        };
+        Ok(ExportedPiece { shape: shape.clone(), items })
+    };
+    match &expanded {
+        SceneOrShape::Shape(shape) => Ok(vec![piece(shape, name)?]),
+        SceneOrShape::Scene(scene) => scene
+            .objects
+            .iter()
+            .enumerate()
+            .map(|(i, o)| {
+                piece(&o.shape, &object_name(i, &o.shape))
+                    .map_err(|e| StepError::plain(format!("objects[{i}]: {}", e.message)))
+            })
+            .collect(),
+    }
+}
+
+/// Exports a document as one STEP file ([`export_pieces`], flattened): returns the text
+/// and what was measured per item.
 pub fn export_document(
     doc: &SceneOrShape,
     name: &str,
     relative_tolerance: f64,
     header: &HeaderInfo,
 ) -> Result<(String, Vec<Exported>)> {
-    let expanded = solid::expand_breps(&subdivision::expand_subdivision_surfaces(doc, relative_tolerance)?)?;
-    // Documents of several triangles give one item per triangle.
-    let items_of = |shape: &ShapeDocument, name: &str| -> Result<Vec<Exported>> {
-        match shape {
-            ShapeDocument::Surface(s) if matches!(s.exact_form(), Ok(SurfaceForm::Triangles)) => {
-                export_triangles(s, name, relative_tolerance)
-            }
-            _ => Ok(vec![export_shape(shape, name, relative_tolerance)?]),
-        }
-    };
-    let exported: Vec<Exported> = match &expanded {
-        SceneOrShape::Shape(shape) => items_of(shape, name)?,
-        SceneOrShape::Scene(scene) => {
-            let mut all = Vec::new();
-            for (i, o) in scene.objects.iter().enumerate() {
-                let n = object_name(i, &o.shape);
-                all.extend(
-                    items_of(&o.shape, &n).map_err(|e| StepError::plain(format!("objects[{i}]: {}", e.message)))?,
-                );
-            }
-            all
-        }
-    };
+    let exported: Vec<Exported> =
+        export_pieces(doc, name, relative_tolerance)?.into_iter().flat_map(|piece| piece.items).collect();
     let items: Vec<_> = exported.iter().map(|e| e.item.clone()).collect();
     Ok((write_step(&items, name, header), exported))
 }

@@ -35,6 +35,30 @@ impl Default for HeaderInfo {
     }
 }
 
+impl HeaderInfo {
+    /// The default header named `name`, stamped with the current UTC time.
+    pub fn now(name: &str) -> HeaderInfo {
+        let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs()) as i64;
+        HeaderInfo { name: name.to_string(), time_stamp: iso8601_utc(secs), ..HeaderInfo::default() }
+    }
+}
+
+/// Seconds since 1970-01-01T00:00:00 UTC as ISO 8601 (`YYYY-MM-DDThh:mm:ss`), the civil
+/// date by Howard Hinnant's `civil_from_days` (exact over the proleptic Gregorian calendar).
+pub fn iso8601_utc(secs: i64) -> String {
+    let (days, rem) = (secs.div_euclid(86_400), secs.rem_euclid(86_400));
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!("{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}", rem / 3600, rem % 3600 / 60, rem % 60)
+}
+
 /// Writes instances `#1, #2, …` in the order they are added.
 #[derive(Debug, Clone)]
 pub struct Part21Writer {
@@ -193,6 +217,15 @@ impl Part21Writer {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn iso8601_dates_match_known_calendar_days() {
+        assert_eq!(super::iso8601_utc(0), "1970-01-01T00:00:00");
+        // 2000-02-29 12:34:56 (a leap day of a century divisible by 400): `date -u -d ... +%s`.
+        assert_eq!(super::iso8601_utc(951_827_696), "2000-02-29T12:34:56");
+        assert_eq!(super::iso8601_utc(1_796_601_600), "2026-12-07T00:00:00");
+        assert_eq!(super::iso8601_utc(-1), "1969-12-31T23:59:59");
+    }
     use super::*;
     use crate::part21::file::StepFile;
 
