@@ -67,7 +67,6 @@ pub fn is_step(path: &str) -> bool {
 /// them (solids and shells as `brep` documents; see `splinekit_step::documents`). What it
 /// does not convert is listed on standard error, one warning a kind, as `convert` does.
 pub fn read_step_document(path: &str, what: &str) -> Result<splinekit_scene::SceneOrShape> {
-    use splinekit_scene::{SceneDocument, SceneObject, SceneOrShape};
     let file = if path == "-" {
         splinekit_step::part21::StepFile::from_reader(std::io::stdin().lock())
     } else {
@@ -78,18 +77,11 @@ pub fn read_step_document(path: &str, what: &str) -> Result<splinekit_scene::Sce
     for (name, count) in &imported.not_understood {
         eprintln!("warning: {count} × {name} not converted (no splinekit equivalent yet)");
     }
-    let mut shapes = imported.items.into_iter().map(|i| i.document);
-    let Some(first) = shapes.next() else {
+    if imported.items.is_empty() {
         bail!("{what}: the file holds no curve or surface that splinekit reads");
-    };
-    let rest: Vec<ShapeDocument> = shapes.collect();
-    if rest.is_empty() {
-        return Ok(SceneOrShape::Shape(first));
     }
-    let mut scene = SceneDocument::of_shape(first);
-    let template = scene.objects[0].clone();
-    scene.objects.extend(rest.into_iter().map(|shape| SceneObject { shape, ..template.clone() }));
-    Ok(SceneOrShape::Scene(scene))
+    // The same document `convert` writes: parts placed by the product structure.
+    splinekit_scene::SceneOrShape::from_value(imported.to_value()).map_err(|e| anyhow!("{what}: {e}"))
 }
 
 /// Reads and parses a shape document; a scene is refused with its object count, for the

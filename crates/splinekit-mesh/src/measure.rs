@@ -16,10 +16,15 @@ use crate::{AdaptiveTolerance, MeshOptions, TriangleMesh};
 /// vertices, of another surface's extent).
 pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-3;
 
-/// The box of a mesh's positions: [min, max].
-fn mesh_box(m: &TriangleMesh) -> Value {
+/// Where a measured shape stands: a rigid motion of its points (a scene object's
+/// placement), which moves the box and leaves lengths, areas and volumes as they are.
+pub type Motion<'a> = Option<&'a (dyn Fn([f64; 3]) -> [f64; 3] + Sync)>;
+
+/// The box of a mesh's positions, moved by `motion`: [min, max].
+fn mesh_box(m: &TriangleMesh, motion: Motion<'_>) -> Value {
     let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     for p in &m.positions {
+        let p = motion.map_or(*p, |f| f(*p));
         for k in 0..3 {
             lo[k] = lo[k].min(p[k]);
             hi[k] = hi[k].max(p[k]);
@@ -29,14 +34,14 @@ fn mesh_box(m: &TriangleMesh) -> Value {
 }
 
 /// The mesh's own measures: tolerance, triangles, area, signed volume, open edges, box.
-fn mesh_measures(mesh: &TriangleMesh, tolerance: f64) -> Value {
+fn mesh_measures(mesh: &TriangleMesh, tolerance: f64, motion: Motion<'_>) -> Value {
     json!({
         "tolerance": tolerance,
         "triangles": mesh.triangles.len(),
         "area": mesh.area(),
         "volume": mesh.signed_volume(),
         "open_edges": open_edges(mesh),
-        "box": mesh_box(mesh),
+        "box": mesh_box(mesh, motion),
     })
 }
 
@@ -54,8 +59,9 @@ fn vertex_diagonal(b: &Brep) -> f64 {
 }
 
 /// What one B-rep measures (see the module); `tolerance` defaults to
-/// [`DEFAULT_RELATIVE_TOLERANCE`] of its vertices' box diagonal.
-pub fn measure_brep(b: &Brep, tolerance: Option<f64>) -> Result<Value> {
+/// [`DEFAULT_RELATIVE_TOLERANCE`] of its vertices' box diagonal; the box where `motion`
+/// takes it.
+pub fn measure_brep(b: &Brep, tolerance: Option<f64>, motion: Motion<'_>) -> Result<Value> {
     check_tolerance(tolerance)?;
     let tolerance = tolerance.unwrap_or(DEFAULT_RELATIVE_TOLERANCE * vertex_diagonal(b));
     let mesh = brep_mesh(b, tolerance)?;
@@ -82,7 +88,7 @@ pub fn measure_brep(b: &Brep, tolerance: Option<f64>) -> Result<Value> {
         "solids": solids,
         "area": integrals::area(b),
         "volume": volume,
-        "mesh": mesh_measures(&mesh, tolerance),
+        "mesh": mesh_measures(&mesh, tolerance, motion),
     }))
 }
 
@@ -99,15 +105,15 @@ fn check_tolerance(tolerance: Option<f64>) -> Result<()> {
 /// What a surface other than a B-rep measures: its adaptive mesh's measures (`tolerance`
 /// defaulting to [`DEFAULT_RELATIVE_TOLERANCE`] of its extent's diagonal). A surface whose
 /// [`Surface::brep`] is a B-rep is measured as [`measure_brep`].
-pub fn measure_surface(surface: &dyn Surface<3>, tolerance: Option<f64>) -> Result<Value> {
+pub fn measure_surface(surface: &dyn Surface<3>, tolerance: Option<f64>, motion: Motion<'_>) -> Result<Value> {
     check_tolerance(tolerance)?;
     if let Some(b) = surface.brep() {
-        return measure_brep(b, tolerance);
+        return measure_brep(b, tolerance, motion);
     }
     let size = splinekit::query::SurfaceExtent::extent(surface).diagonal();
     let size = if size > 0.0 && size.is_finite() { size } else { 1.0 };
     let tolerance = tolerance.unwrap_or(DEFAULT_RELATIVE_TOLERANCE * size);
     let t = AdaptiveTolerance { chord_height: tolerance, normal_angle: 0.5, max_depth: 10 };
     let mesh = crate::adaptive_mesh::adaptive(surface, (8, 8), t, MeshOptions::default())?;
-    Ok(json!({ "mesh": mesh_measures(&mesh, tolerance) }))
+    Ok(json!({ "mesh": mesh_measures(&mesh, tolerance, motion) }))
 }

@@ -38,7 +38,7 @@ fn write(path: &Path, bytes: &[u8]) -> PyResult<()> {
 
 /// What `_read_step` returns: the items as (name, document) and the entity types not
 /// converted with their counts.
-type ReadStep<'py> = (Vec<(String, Bound<'py, PyAny>)>, Vec<(String, usize)>);
+type ReadStep<'py> = (Vec<(String, Bound<'py, PyAny>)>, Vec<(String, usize)>, Bound<'py, PyAny>);
 
 /// `splinekit convert FILE.step -o OUT.json`: the documents of the file's curves, surfaces
 /// and faces, as (name, document) pairs, and the entity types not converted with their
@@ -73,7 +73,10 @@ pub fn _read_step(py: Python<'_>, path: PathBuf) -> PyResult<ReadStep<'_>> {
             Ok((i.name.clone(), to_python(py, &value)?))
         })
         .collect::<PyResult<_>>()?;
-    Ok((items, imported.not_understood.clone()))
+    // The whole file as one document: parts placed by the product structure, repeats as
+    // instances (what `convert` writes).
+    let document = to_python(py, &imported.to_value())?;
+    Ok((items, imported.not_understood.clone(), document))
 }
 
 /// `splinekit convert IN.json -o OUT.step`: writes the document (a shape or a scene) as

@@ -103,16 +103,23 @@ pub fn _section<'py>(
 #[pyo3(signature = (shape, tolerance = None))]
 pub fn _measure<'py>(shape: &Bound<'py, PyAny>, tolerance: Option<f64>) -> PyResult<Bound<'py, PyAny>> {
     let py = shape.py();
-    let one = |doc: ShapeDocument| -> PyResult<Value> {
+    // Each shape's box where its placement puts it (as `splinekit measure`).
+    let one = |doc: ShapeDocument, placement: Option<&splinekit_scene::placement::PlacementDoc>| -> PyResult<Value> {
+        let placement = placement.map(|p| p.transform()).transpose().map_err(document_error)?;
+        let motion = placement.as_ref().map(|t| move |p: [f64; 3]| t.apply(p));
+        let motion = motion.as_ref().map(|f| f as &(dyn Fn([f64; 3]) -> [f64; 3] + Sync));
         match doc {
             ShapeDocument::Surface(s) => {
                 if let splinekit_scene::SurfaceDocument::Brep(d) = &s {
                     let brep = d.build().map_err(document_error)?;
-                    return py.detach(|| splinekit_mesh::measure::measure_brep(&brep, tolerance)).or_value_error();
+                    return py
+                        .detach(|| splinekit_mesh::measure::measure_brep(&brep, tolerance, motion))
+                        .or_value_error();
                 }
                 budget::current()?.check_shape(&s.cost()).or_value_error()?;
                 let surface = s.build_in::<3>().map_err(document_error)?;
-                py.detach(|| splinekit_mesh::measure::measure_surface(surface.as_ref(), tolerance)).or_value_error()
+                py.detach(|| splinekit_mesh::measure::measure_surface(surface.as_ref(), tolerance, motion))
+                    .or_value_error()
             }
             ShapeDocument::Curve(c) => {
                 Err(value_error(format!("shape: a {} is a curve; measure takes surfaces and solids", c.type_name())))
@@ -120,11 +127,14 @@ pub fn _measure<'py>(shape: &Bound<'py, PyAny>, tolerance: Option<f64>) -> PyRes
         }
     };
     let value = match splinekit_scene::SceneOrShape::from_value(any_document(shape)?).map_err(document_error)? {
-        splinekit_scene::SceneOrShape::Shape(doc) => one(doc)?,
+        splinekit_scene::SceneOrShape::Shape(doc) => one(doc, None)?,
         splinekit_scene::SceneOrShape::Scene(scene) => {
             let mut objects = Vec::with_capacity(scene.objects.len());
             for (i, o) in scene.objects.into_iter().enumerate() {
-                objects.push(one(o.shape).map_err(|e| value_error(format!("objects[{i}].shape: {e}")))?);
+                let placement = o.placement.clone();
+                objects.push(
+                    one(o.shape, placement.as_ref()).map_err(|e| value_error(format!("objects[{i}].shape: {e}")))?,
+                );
             }
             json!({ "objects": objects })
         }

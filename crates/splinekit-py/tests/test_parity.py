@@ -342,6 +342,19 @@ def test_read_step_returns_the_objects_convert_reads(tmp_path):
 
 
 @needs_cli
+def test_read_step_scene_places_an_assemblys_parts_as_convert_does():
+    # SolidWorks 2015's box: ten uses of six parts, each placed; the repeats are instances.
+    part = ROOT / "tests" / "step" / "real" / "sw2015_box_sides_assembly_inch.stp"
+    expected = cli_json("convert", part, "-o", "-")
+    scene = sk.read_step(part, scene=True)
+    assert isinstance(scene, sk.Scene)
+    assert scene.to_dict() == expected
+    objects = expected["objects"]
+    assert len(objects) == 10 and sum("instance_of" in o for o in objects) == 4
+    assert all("placement" in o and o["name"] for o in objects)
+
+
+@needs_cli
 @pytest.mark.parametrize("doc, ext", [({"type": "heart"}, "svg"), ({"type": "heart"}, "obj"), ({"type": "torus"}, "stl"), ({"type": "torus"}, "ply")])
 def test_save_writes_what_tessellate_writes(doc, ext, tmp_path):
     cli("tessellate", write(tmp_path, "s.json", doc), "-o", tmp_path / f"cli.{ext}", "--density", "24")

@@ -9,6 +9,7 @@ use splinekit::surface::Surface;
 use splinekit_mesh::surface_mesh::{regular, to3};
 use splinekit_mesh::{MeshOptions, Polyline};
 use splinekit_scene::blending::BlendingSplineSurfaceDoc;
+use splinekit_scene::placement::RigidTransform;
 use splinekit_scene::scenes::{ArrowFieldDoc, CameraDoc, ColorMapDoc, SceneDocument, SceneObject, StyleDoc};
 use splinekit_scene::{Curves, Decoration, DimensionVisitor, DocumentError, DocumentKind, ShapeDocument, Surfaces};
 
@@ -60,11 +61,50 @@ pub fn compose_with<'a>(
         ..Default::default()
     };
     for i in 0..scene.objects.len() {
-        let items = compose_object(scene, i, time, surfaces(i), &mut out)?;
+        let items = match instance_source(scene, i) {
+            Some(k) if surfaces(i).is_none() && surfaces(k).is_none() => copy_instance(scene, k, i, &mut out)?,
+            _ => compose_object(scene, i, time, surfaces(i), &mut out)?,
+        };
         out.objects.push(items);
     }
     finish(scene, aspect, &mut out);
     Ok(out)
+}
+
+/// The earlier object whose items object `i` can reuse: the one it is an instance of,
+/// drawn in the same style and without points of its own (an assembly's repeated part is
+/// meshed once).
+fn instance_source(scene: &SceneDocument, i: usize) -> Option<usize> {
+    let (obj, k) = (&scene.objects[i], scene.objects[i].instance_of?);
+    let first = scene.objects.get(k).filter(|_| k < i)?;
+    (first.style == obj.style && obj.points.is_empty() && first.points.is_empty()).then_some(k)
+}
+
+/// Object `i`'s items as copies of object `k`'s, moved from k's placement to i's.
+fn copy_instance(
+    scene: &SceneDocument,
+    k: usize,
+    i: usize,
+    out: &mut RenderScene,
+) -> Result<ObjectItems, DocumentError> {
+    let transform = |o: usize| -> Result<RigidTransform, DocumentError> {
+        scene.objects[o].placement.as_ref().map_or(Ok(RigidTransform::IDENTITY), |p| {
+            p.transform().map_err(|e| e.within(&format!("objects[{o}].placement")))
+        })
+    };
+    let motion = transform(i)?.compose(&transform(k)?.inverse());
+    let from = out.objects[k].clone();
+    let start = (out.meshes.len(), out.lines.len(), out.points.len());
+    out.meshes.extend_from_within(from.meshes.clone());
+    out.lines.extend_from_within(from.lines.clone());
+    out.points.extend_from_within(from.points.clone());
+    place(&motion, start, out);
+    Ok(ObjectItems {
+        meshes: start.0..out.meshes.len(),
+        lines: start.1..out.lines.len(),
+        points: start.2..out.points.len(),
+        flat: from.flat && motion == RigidTransform::IDENTITY,
+    })
 }
 
 /// Composes object `index` of the scene again (with `given` standing in for its surface as
@@ -132,9 +172,14 @@ fn compose_object(
         _ => color,
     };
     let start = (out.meshes.len(), out.lines.len(), out.points.len());
-    let flat = object(obj, &format!("objects[{index}].shape"), time, color, given, out)?;
+    let mut flat = object(obj, &format!("objects[{index}].shape"), time, color, given, out)?;
     for p in &obj.points {
         out.points.push(PointItem { position: f32x3(*p), color, size: 8.0 });
+    }
+    if let Some(placement) = &obj.placement {
+        let t = placement.transform().map_err(|e| e.within(&format!("objects[{index}].placement")))?;
+        place(&t, start, out);
+        flat = false;
     }
     Ok(ObjectItems {
         meshes: start.0..out.meshes.len(),
@@ -142,6 +187,23 @@ fn compose_object(
         points: start.2..out.points.len(),
         flat,
     })
+}
+
+/// Moves the items from `start` (meshes, lines, points) by the rigid motion `t`: points
+/// and normals in f64, back to f32.
+fn place(t: &RigidTransform, start: (usize, usize, usize), out: &mut RenderScene) {
+    let point = |p: &mut [f32; 3]| *p = t.apply(p.map(f64::from)).map(|x| x as f32);
+    let vector = |v: &mut [f32; 3]| *v = t.apply_vector(v.map(f64::from)).map(|x| x as f32);
+    for m in &mut out.meshes[start.0..] {
+        m.positions.iter_mut().for_each(point);
+        m.normals.iter_mut().for_each(vector);
+    }
+    for l in &mut out.lines[start.1..] {
+        l.points.iter_mut().for_each(point);
+    }
+    for p in &mut out.points[start.2..] {
+        point(&mut p.position);
+    }
 }
 
 /// The scene-wide parts of a composition, from its objects' items: axes, painter's order,
@@ -569,6 +631,9 @@ impl DimensionVisitor<Surfaces> for SurfaceMesh<'_> {
         let mesh = regular(s, n, n, MeshOptions { uv: true })?;
         let (du, dv) = (s.domain_u(), s.domain_v());
         let colors = match self.obj.style.color_map {
+            // A solid whose every face has its colour from the CAD file (sRGB, as the
+            // file's styles give them), unless the scene colours the object itself.
+            None if self.obj.style.color.is_none() && mesh.colors.len() == mesh.positions.len() => mesh.colors.clone(),
             None => Vec::new(),
             Some(map) => fields::surface_colors(s, map, &mesh.uvs, &mesh.positions, &mesh.normals, self.color),
         };
@@ -641,7 +706,7 @@ fn hue_turned(c: [f32; 4], turns: f32) -> [f32; 4] {
 
 #[cfg(test)]
 mod tests {
-    use super::hue_turned;
+    use super::{MeshItem, compose, hue_turned};
     use crate::fields::{isophote, zebra};
 
     #[test]
@@ -659,6 +724,71 @@ mod tests {
         let colors = &rs.meshes[0].colors;
         assert_eq!(colors.len(), rs.meshes[0].positions.len());
         assert!(colors.iter().any(|c| c[0] > 0.9) && colors.iter().any(|c| c[0] < 0.1), "both stripes");
+    }
+
+    /// A solid from a CAD file is drawn in its faces' colours (every face coloured), and
+    /// in the scene's colour where the object has one.
+    #[test]
+    fn a_solid_is_drawn_in_its_faces_colours() {
+        use splinekit_scene::scenes::SceneDocument;
+        use splinekit_scene::surfaces::{BrepDoc, SurfaceDocument};
+        let mut cube = BrepDoc::cube();
+        let colours: Vec<[f32; 4]> = (0..6).map(|k| [k as f32 / 6.0, 0.5, 0.25, 1.0]).collect();
+        for (face, c) in cube.faces.iter_mut().zip(&colours) {
+            face.color = Some(*c);
+        }
+        let mut scene = SceneDocument::of_shape(splinekit_scene::ShapeDocument::Surface(SurfaceDocument::Brep(cube)));
+        let drawn = compose(&scene, None, 1.0).unwrap();
+        let m = &drawn.meshes[0];
+        assert_eq!(m.colors.len(), m.positions.len());
+        assert!(m.colors.iter().all(|c| colours.contains(c)));
+        assert!(colours.iter().all(|c| m.colors.contains(c)), "every face's colour is drawn");
+        scene.objects[0].style.color = Some(vec![1.0, 0.0, 0.0]);
+        assert!(compose(&scene, None, 1.0).unwrap().meshes[0].colors.is_empty());
+    }
+
+    /// A placed object is drawn moved; an instance is its part's mesh moved to its own
+    /// placement, the same (to f32 rounding) as meshing the part there anew.
+    #[test]
+    fn placements_move_objects_and_instances_reuse_their_parts_mesh() {
+        let doc = |second: &str| {
+            let text = format!(
+                r#"{{"type": "scene", "objects": [
+                    {{"shape": {{"type": "torus"}}, "placement": {{"origin": [5, 0, 0]}}}},
+                    {{{second}, "placement": {{"origin": [0, 3, 0], "axis": [1, 0, 0], "ref_direction": [0, 1, 0]}}}}]}}"#
+            );
+            splinekit_scene::SceneOrShape::from_json(&text).unwrap().into_scene()
+        };
+        let instanced = compose(&doc(r#""instance_of": 0"#), None, 1.0).unwrap();
+        let meshed = compose(&doc(r#""shape": {"type": "torus"}"#), None, 1.0).unwrap();
+        let (a, b) =
+            (&instanced.meshes[instanced.objects[1].meshes.start], &meshed.meshes[meshed.objects[1].meshes.start]);
+        assert_eq!(a.positions.len(), b.positions.len());
+        let worst = a
+            .positions
+            .iter()
+            .zip(&b.positions)
+            .flat_map(|(p, q)| (0..3).map(move |k| (p[k] - q[k]).abs()))
+            .fold(0.0f32, f32::max);
+        assert!(worst < 1e-5, "{worst}");
+        // The torus (radius 3 about z, tube 1) about (5, 0, 0); the second turned to lie
+        // about x through (0, 3, 0): x within ±1, y within 3 ± 4.
+        let bounds = |m: &MeshItem| {
+            m.positions.iter().fold(([f32::MAX; 3], [f32::MIN; 3]), |(lo, hi), p| {
+                (std::array::from_fn(|k| lo[k].min(p[k])), std::array::from_fn(|k| hi[k].max(p[k])))
+            })
+        };
+        let (lo, hi) = bounds(&instanced.meshes[0]);
+        assert!(
+            (lo[0] - 1.0).abs() < 1e-3 && (hi[0] - 9.0).abs() < 1e-3 && (hi[2] - 1.0).abs() < 1e-3,
+            "{lo:?} {hi:?}"
+        );
+        let (lo, hi) = bounds(a);
+        assert!(
+            (lo[0] + 1.0).abs() < 1e-3 && (hi[0] - 1.0).abs() < 1e-3 && (lo[1] + 1.0).abs() < 1e-3,
+            "{lo:?} {hi:?}"
+        );
+        assert!((hi[1] - 7.0).abs() < 1e-3, "{lo:?} {hi:?}");
     }
 
     #[test]

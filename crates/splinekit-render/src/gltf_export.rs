@@ -46,7 +46,7 @@ pub fn scene_to_gltf(scene: &SceneDocument, frames: usize, fps: f64) -> Result<G
         // (a colour map) alone, so the base colour is then white.
         let color = if m.colors.is_empty() { srgba_to_linear(m.color) } else { [1.0; 4] };
         out.objects.push(GltfObject {
-            name: format!("surface {i}"),
+            name: object_name(scene, &first, i, |o| &o.meshes).unwrap_or_else(|| format!("surface {i}")),
             geometry: GltfGeometry::Mesh(mesh),
             color,
             frames: frames_out,
@@ -78,9 +78,22 @@ pub fn scene_to_gltf(scene: &SceneDocument, frames: usize, fps: f64) -> Result<G
         } else {
             (GltfGeometry::LineStrip(pts), srgba_to_linear(l.color))
         };
-        out.objects.push(GltfObject { name: format!("line {i}"), geometry, color, frames: frames_out });
+        let name = object_name(scene, &first, i, |o| &o.lines).unwrap_or_else(|| format!("line {i}"));
+        out.objects.push(GltfObject { name, geometry, color, frames: frames_out });
     }
     Ok(out)
+}
+
+/// The `name` of the scene object whose items (`range` of them) hold item `i`, if it has
+/// one: a part's occurrence in an assembly names its node.
+fn object_name(
+    scene: &SceneDocument,
+    composed: &crate::scene::RenderScene,
+    i: usize,
+    range: impl Fn(&crate::scene::ObjectItems) -> &std::ops::Range<usize>,
+) -> Option<String> {
+    let k = composed.objects.iter().position(|o| range(o).contains(&i))?;
+    scene.objects.get(k)?.name.clone()
 }
 
 #[cfg(test)]

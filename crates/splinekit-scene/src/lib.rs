@@ -19,6 +19,7 @@ pub mod error;
 pub mod json;
 mod keyed;
 pub mod output_file;
+pub mod placement;
 pub mod points;
 pub mod refine;
 pub mod refine_net;

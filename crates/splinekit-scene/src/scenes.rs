@@ -14,6 +14,7 @@ use serde_json::Value;
 use crate::ShapeDocument;
 use crate::error::{DocumentError, Result};
 use crate::json::{fields, kind, nested, split_type};
+use crate::placement::PlacementDoc;
 
 fn default_line_width() -> f64 {
     2.5
@@ -340,6 +341,15 @@ pub struct SceneObject {
     /// that [`SceneDocument::resolve_models`] follows (the shape's `model` is then a copy
     /// of object k's shape, made again whenever the scene is read or edited).
     pub model_of: Option<usize>,
+    /// `"placement": {…}`: the shape drawn moved rigidly (see [`crate::placement`]).
+    pub placement: Option<PlacementDoc>,
+    /// `"instance_of": k`: the object is another use of object k's shape (a part used
+    /// several times in an assembly), written without a `shape` of its own;
+    /// [`SceneDocument::resolve_instances`] fills `shape` in.
+    pub instance_of: Option<usize>,
+    /// `"name"`: what the object is called (a part's occurrence in an assembly), carried
+    /// into glTF nodes and STEP items.
+    pub name: Option<String>,
 }
 
 impl SceneObject {
@@ -348,13 +358,41 @@ impl SceneObject {
         let Value::Object(mut style) = value else {
             return Err(DocumentError::new("", format!("expected an object with a \"shape\", got {}", kind(&value))));
         };
-        let shape = style.remove("shape").ok_or_else(|| DocumentError::new("", "missing field `shape`"))?;
-        let model_of = match style.remove("model_of") {
-            None | Some(Value::Null) => None,
-            Some(v) => Some(v.as_u64().and_then(|k| usize::try_from(k).ok()).ok_or_else(|| {
-                DocumentError::new("model_of", format!("expected the index of an object of the scene, got {v}"))
-            })?),
+        let index = |field: &str, v: Option<Value>| -> Result<Option<usize>> {
+            match v {
+                None | Some(Value::Null) => Ok(None),
+                Some(v) => Ok(Some(v.as_u64().and_then(|k| usize::try_from(k).ok()).ok_or_else(|| {
+                    DocumentError::new(field, format!("expected the index of an object of the scene, got {v}"))
+                })?)),
+            }
         };
+        let instance_of = index("instance_of", style.remove("instance_of"))?;
+        let name = match style.remove("name") {
+            None | Some(Value::Null) => None,
+            Some(Value::String(n)) => Some(n),
+            Some(v) => return Err(DocumentError::new("name", format!("expected a string, got {}", kind(&v)))),
+        };
+        let placement: Option<PlacementDoc> = match style.remove("placement") {
+            None | Some(Value::Null) => None,
+            Some(p) => {
+                let p: PlacementDoc = fields(p).map_err(|e| e.within("placement"))?;
+                p.transform().map_err(|e| e.within("placement"))?;
+                Some(p)
+            }
+        };
+        let shape = match (style.remove("shape"), instance_of) {
+            (Some(_), Some(k)) => {
+                return Err(DocumentError::new(
+                    "instance_of",
+                    format!("an instance of object {k} takes its shape; give `shape` or `instance_of`, not both"),
+                ));
+            }
+            (Some(shape), None) => shape,
+            // A stand-in until the scene gives the instance object k's shape.
+            (None, Some(_)) => serde_json::json!({"type": "line", "from": [0, 0, 0], "to": [1, 0, 0]}),
+            (None, None) => return Err(DocumentError::new("", "missing field `shape`")),
+        };
+        let model_of = index("model_of", style.remove("model_of"))?;
         // A linked model is filled in by the scene (`SceneDocument::resolve_models`); until
         // then a stand-in of the family keeps the shape readable.
         let mut shape = shape;
@@ -388,7 +426,7 @@ impl SceneObject {
                 Ok([p[0], p[1], p.get(2).copied().unwrap_or(0.0)])
             })
             .collect::<Result<_>>()?;
-        Ok(SceneObject { shape, style, points, model_of })
+        Ok(SceneObject { shape, style, points, model_of, placement, instance_of, name })
     }
 }
 
@@ -403,7 +441,16 @@ impl SceneObject {
             ShapeDocument::Curve(c) => c.to_value(),
             ShapeDocument::Surface(s) => s.to_value(),
         };
-        doc.insert("shape".into(), shape);
+        match self.instance_of {
+            Some(k) => doc.insert("instance_of".into(), k.into()),
+            None => doc.insert("shape".into(), shape),
+        };
+        if let Some(p) = &self.placement {
+            doc.insert("placement".into(), serde_json::to_value(p).unwrap_or_default());
+        }
+        if let Some(n) = &self.name {
+            doc.insert("name".into(), n.clone().into());
+        }
         if !self.points.is_empty() {
             doc.insert("points".into(), serde_json::json!(self.points));
         }
@@ -574,13 +621,42 @@ impl SceneDocument {
         Ok(scene)
     }
 
+    /// Gives every object with `instance_of: k` object k's shape. Object k must be another
+    /// object of the scene with a shape of its own (instances are of parts, not of other
+    /// instances); errors name `objects[i].instance_of`.
+    pub fn resolve_instances(&mut self) -> Result<()> {
+        let n = self.objects.len();
+        for i in 0..n {
+            let Some(k) = self.objects[i].instance_of else { continue };
+            let field = || format!("objects[{i}].instance_of");
+            if k >= n || k == i {
+                let why = if k == i {
+                    "an object cannot be an instance of itself".to_string()
+                } else {
+                    format!("the scene has {n} objects")
+                };
+                return Err(DocumentError::new(field(), format!("{k}: {why}")));
+            }
+            if let Some(j) = self.objects[k].instance_of {
+                return Err(DocumentError::new(
+                    field(),
+                    format!("{k}: object {k} is itself an instance (of object {j}); name the object with the shape"),
+                ));
+            }
+            self.objects[i].shape = self.objects[k].shape.clone();
+        }
+        Ok(())
+    }
+
     /// Follows the live links: every object with `model_of: k` gets object k's shape (as
     /// it is now, itself resolved first) as its `model`. Object k must be another object of
     /// the scene, of the family the blending spline blends (a curve for `blending_spline`,
     /// a surface for `blending_spline_surface`), and the links must not run in a circle;
-    /// errors name `objects[i].model_of`. Reading a scene resolves it; the studio resolves
+    /// errors name `objects[i].model_of`. Instances are resolved first
+    /// ([`Self::resolve_instances`]). Reading a scene resolves it; the studio resolves
     /// it again after every edit, so the blending spline follows its model's edits.
     pub fn resolve_models(&mut self) -> Result<()> {
+        self.resolve_instances()?;
         let n = self.objects.len();
         // Depth-first from each linked object, models before the objects that take them.
         let mut order = Vec::new();
@@ -716,7 +792,15 @@ impl SceneDocument {
     /// A scene of one shape with the default style.
     pub fn of_shape(shape: ShapeDocument) -> Self {
         SceneDocument {
-            objects: vec![SceneObject { shape, style: StyleDoc::default(), points: Vec::new(), model_of: None }],
+            objects: vec![SceneObject {
+                shape,
+                style: StyleDoc::default(),
+                points: Vec::new(),
+                model_of: None,
+                placement: None,
+                instance_of: None,
+                name: None,
+            }],
             camera: None,
             lights: Vec::new(),
             background: white(),

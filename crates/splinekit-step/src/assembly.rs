@@ -67,52 +67,7 @@ use crate::error::{Result, StepError};
 use crate::part21::{Instance, Param, Record, StepFile};
 use crate::units::context_units;
 
-/// A rigid motion p ↦ R p + t of 3-D space, in millimetres.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RigidTransform {
-    /// The rotation R, row by row (`rotation[i][j]` = Rᵢⱼ; its columns are the images of
-    /// the x, y and z axes).
-    pub rotation: [[f64; 3]; 3],
-    /// The translation t, in millimetres.
-    pub translation: [f64; 3],
-}
-
-impl RigidTransform {
-    /// The identity.
-    pub const IDENTITY: RigidTransform =
-        RigidTransform { rotation: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], translation: [0.0; 3] };
-
-    /// The frame with origin `o` and unit axes `x`, `y`, `z` as a map from frame
-    /// coordinates: p ↦ o + p₁x + p₂y + p₃z.
-    pub fn frame(o: [f64; 3], x: [f64; 3], y: [f64; 3], z: [f64; 3]) -> RigidTransform {
-        RigidTransform { rotation: std::array::from_fn(|i| [x[i], y[i], z[i]]), translation: o }
-    }
-
-    /// R p + t.
-    pub fn apply(&self, p: [f64; 3]) -> [f64; 3] {
-        std::array::from_fn(|i| self.rotation[i].iter().zip(p).map(|(r, c)| r * c).sum::<f64>() + self.translation[i])
-    }
-
-    /// R v (a direction).
-    pub fn apply_vector(&self, v: [f64; 3]) -> [f64; 3] {
-        std::array::from_fn(|i| self.rotation[i].iter().zip(v).map(|(r, c)| r * c).sum())
-    }
-
-    /// self ∘ inner: first `inner`, then `self` (p ↦ R(R′p + t′) + t).
-    pub fn compose(&self, inner: &RigidTransform) -> RigidTransform {
-        let rotation = std::array::from_fn(|i| {
-            std::array::from_fn(|j| (0..3).map(|k| self.rotation[i][k] * inner.rotation[k][j]).sum())
-        });
-        RigidTransform { rotation, translation: self.apply(inner.translation) }
-    }
-
-    /// The inverse p ↦ Rᵀ(p − t) (R is orthonormal).
-    pub fn inverse(&self) -> RigidTransform {
-        let rotation: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| self.rotation[j][i]));
-        let t = RigidTransform { rotation, translation: [0.0; 3] }.apply(self.translation);
-        RigidTransform { rotation, translation: t.map(|c| -c) }
-    }
-}
+pub use splinekit_scene::placement::RigidTransform;
 
 /// What kind of geometry a [`ShapeItem`] is (ISO 10303-42 geometric and topological
 /// representation items).

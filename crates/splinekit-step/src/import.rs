@@ -95,6 +95,9 @@ pub struct SolidRead {
     pub name: String,
     /// Its shells' indices in [`Imported::shells`], the outer one first.
     pub shells: Vec<usize>,
+    /// Per shell, whether the solid uses it reversed (an `ORIENTED_CLOSED_SHELL` with
+    /// orientation `.F.`, as voids are written): its faces turn the other way.
+    pub reversed: Vec<bool>,
 }
 
 /// What an import found.
@@ -238,9 +241,26 @@ pub fn import(file: &StepFile) -> Result<Imported> {
             if voids {
                 shells.extend(refs(param(&inst, 2)?).map_err(|e| e.within(inst.line, id))?);
             }
-            let shells: Vec<usize> = shells.iter().filter_map(|s| shell_index.get(s).copied()).collect();
-            if !shells.is_empty() {
-                out.solids.push(SolidRead { id, name: inst_name(&inst), shells });
+            // A void is usually an ORIENTED_CLOSED_SHELL(name, *, shell, orientation): the
+            // shell used reversed (.F.), its faces' normals into the void.
+            let mut read = Vec::with_capacity(shells.len());
+            for s in shells {
+                let (s, reversed) = match file.type_of(s) {
+                    Some("ORIENTED_CLOSED_SHELL") => {
+                        r.visited.insert(s);
+                        let oriented = file.get(s)?;
+                        let element = reference(param(&oriented, 2)?).map_err(|e| e.within(oriented.line, s))?;
+                        (element, matches!(param(&oriented, 3)?, Param::Enumeration(e) if e == "F"))
+                    }
+                    _ => (s, false),
+                };
+                if let Some(&k) = shell_index.get(&s) {
+                    read.push((k, reversed));
+                }
+            }
+            if !read.is_empty() {
+                let (shells, reversed) = read.into_iter().unzip();
+                out.solids.push(SolidRead { id, name: inst_name(&inst), shells, reversed });
             }
         }
     }

@@ -7,7 +7,9 @@ use splinekit::Point;
 use splinekit::axes::OrthonormalAxes;
 
 use crate::error::{Result, StepError};
-use crate::geometry::{Axes, Curve, SplineCurve, SplineSurface, Surface};
+use crate::geometry::{
+    Axes, Curve, FaceEdge, FaceGeometry, FaceLoop, Geometry, LoopEdge, SplineCurve, SplineSurface, Surface,
+};
 
 /// The frame as a map of points and directions.
 #[derive(Debug, Clone, Copy)]
@@ -100,6 +102,52 @@ impl Placement {
                 Surface::Extrusion { profile: self.curve(profile), direction: self.direction(*direction) }
             }
             Surface::Trimmed { basis, u, v } => Surface::Trimmed { basis: Box::new(self.surface(basis)), u: *u, v: *v },
+        }
+    }
+}
+
+impl Placement {
+    /// The frame of a rigid motion (a scene object's placement, an assembly instance's):
+    /// its translation and the images of x and z.
+    pub fn of_transform(t: &splinekit_scene::placement::RigidTransform) -> Placement {
+        let column = |j: usize| Point::<3>::new(t.rotation[0][j], t.rotation[1][j], t.rotation[2][j]);
+        let [ox, oy, oz] = t.translation;
+        Placement(Axes { origin: Point::<3>::new(ox, oy, oz), z: column(2), x: column(0) })
+    }
+
+    /// The face moved into the placement: its surface, vertices and 3-D edge curves (the
+    /// pcurves, in the surface's own parameters, stay as they are).
+    pub fn face(&self, f: &FaceGeometry) -> FaceGeometry {
+        let loops = f
+            .loops
+            .iter()
+            .map(|l| FaceLoop {
+                edges: l
+                    .edges
+                    .iter()
+                    .map(|e| match e {
+                        LoopEdge::Edge(edge) => {
+                            LoopEdge::Edge(Box::new(FaceEdge { curve: self.curve(&edge.curve), ..(**edge).clone() }))
+                        }
+                        LoopEdge::Again(k) => LoopEdge::Again(*k),
+                    })
+                    .collect(),
+                ..l.clone()
+            })
+            .collect();
+        FaceGeometry {
+            surface: self.surface(&f.surface),
+            vertices: f.vertices.iter().map(|p| self.point(*p)).collect(),
+            loops,
+        }
+    }
+
+    /// Any item's geometry moved into the placement.
+    pub fn geometry(&self, g: &Geometry) -> Geometry {
+        match g {
+            Geometry::Curve(c) => Geometry::Curve(self.curve(c)),
+            Geometry::Surface(s) => Geometry::Surface(self.surface(s)),
+            Geometry::Face(f) => Geometry::Face(self.face(f)),
         }
     }
 }

@@ -502,3 +502,55 @@ fn brep_faces_and_solids_take_their_colours() {
         }
     }
 }
+
+/// The documents a file is read as stand where OpenCASCADE places its parts: each solid's
+/// `brep` vertices, moved by the item's placement, lie inside the box of OpenCASCADE's
+/// placed vertices, and (where OpenCASCADE's healing made no extra vertices) span it; as
+/// many solids as OpenCASCADE's instances hold. A part used again is an instance of its
+/// first use, with the same document. The assemblies (importing every file's faces takes
+/// minutes in a debug build; the parts of one product stand at the identity).
+#[test]
+fn imported_parts_stand_where_opencascade_places_them() {
+    use splinekit_scene::{ShapeDocument, SurfaceDocument};
+    let assemblies = [
+        "freecad_flange_screw_aligner_asm.stp",
+        "fusion360_sensor_assembly_voids.stp",
+        "inventor2011_din933_m4x8_crlf.stp",
+        "sw2015_box_sides_assembly_inch.stp",
+    ];
+    for (name, path, reference) in files().into_iter().filter(|(n, _, _)| assemblies.contains(&n.as_str())) {
+        let file = StepFile::open(&path).expect("the file reads");
+        let imported = splinekit_step::documents::import_items(&file).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let occ_box = box_of(&reference["vertex_box"]);
+        let diag = diagonal(&occ_box);
+        let mut ours = empty_box();
+        let mut solids = 0;
+        for (k, item) in imported.items.iter().enumerate() {
+            let ShapeDocument::Surface(SurfaceDocument::Brep(b)) = &item.document else { continue };
+            solids += b.solids.len();
+            if let Some(first) = item.instance_of {
+                assert!(first < k && imported.items[first].instance_of.is_none(), "{name}: item {k} of {first}");
+                assert_eq!(imported.items[first].document, item.document, "{name}: item {k}");
+            }
+            for v in &b.vertices {
+                let p = [v[0], v[1], v[2]];
+                grow(&mut ours, item.placement.map_or(p, |t| t.apply(p)));
+            }
+        }
+        assert_eq!(solids, reference["solids"].as_u64().expect("solids") as usize, "{name}: solids");
+        assert!(inside(&ours, &occ_box, 1e-6 * diag), "{name}: {ours:?} outside OCC's {occ_box:?}");
+        let occ_vertices: u64 =
+            reference["instances"].as_array().expect("instances").iter().filter_map(|i| i["vertices"].as_u64()).sum();
+        eprintln!(
+            "{name}: placed box {:.1e} of the diagonal from OCC's ({occ_vertices} OCC vertices)",
+            box_gap(&ours, &occ_box) / diag
+        );
+    }
+    // SolidWorks 2015's box: ten uses of six parts, the four repeats instances.
+    let file = StepFile::open(&folder().join("sw2015_box_sides_assembly_inch.stp")).expect("the file reads");
+    let imported = splinekit_step::documents::import_items(&file).expect("it converts");
+    assert_eq!(imported.items.len(), 10);
+    assert_eq!(imported.items.iter().filter(|i| i.instance_of.is_some()).count(), 4);
+    assert!(imported.items.iter().all(|i| i.placement.is_some()));
+    assert!(imported.items[0].name.starts_with("box_base ("), "{}", imported.items[0].name);
+}

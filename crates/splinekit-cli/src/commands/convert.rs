@@ -4,7 +4,7 @@
 
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
-use serde_json::{Value, json};
+use serde_json::json;
 use splinekit_mesh::export::Format;
 use splinekit_scene::{SceneOrShape, ShapeDocument, SurfaceDocument};
 use splinekit_step::documents::faces::loop_samples;
@@ -88,9 +88,13 @@ fn json_to_step(args: &ConvertArgs) -> Result<()> {
         // Each STEP item beside the expanded shape it came from (a brep's faces, a
         // subdivision surface's patches, a triangle surface's triangles: several items).
         let mut items = Vec::new();
-        for (shape, e) in pieces.iter().flat_map(|p| p.items.iter().map(move |e| (&p.shape, e))) {
+        for (piece, e) in pieces.iter().flat_map(|p| p.items.iter().map(move |e| (p, e))) {
+            let shape = &piece.shape;
             let count = if matches!(shape, ShapeDocument::Curve(_)) { 128 } else { 12 };
-            let s = samples(shape, e, count).map_err(|e| anyhow!("{e}"))?;
+            let mut s = samples(shape, e, count).map_err(|e| anyhow!("{e}"))?;
+            if let Some(p) = &piece.placement {
+                s.iter_mut().for_each(|s| s.point = p.point(s.point));
+            }
             let kind = match shape {
                 ShapeDocument::Curve(_) => "curve",
                 ShapeDocument::Surface(SurfaceDocument::Trimmed(_)) => "face",
@@ -152,24 +156,7 @@ fn step_to_any(args: &ConvertArgs, output: Format) -> Result<()> {
                 .map_err(|e| anyhow!("--output: cannot write '{}': {e}", args.output))?;
         }
         // JSON (`format_of` gives only JSON or STEP).
-        _ => {
-            let value: Value = if let [item] = imported.items.as_slice() {
-                shape_value(&item.document)
-            } else {
-                json!({
-                    "type": "scene",
-                    "objects": imported.items.iter().map(|i| json!({"shape": shape_value(&i.document)})).collect::<Vec<_>>(),
-                })
-            };
-            crate::output::write_json(&value, (args.output != "-").then_some(args.output.as_str()))?;
-        }
+        _ => crate::output::write_json(&imported.to_value(), (args.output != "-").then_some(args.output.as_str()))?,
     }
     Ok(())
-}
-
-fn shape_value(doc: &ShapeDocument) -> Value {
-    match doc {
-        ShapeDocument::Curve(c) => c.to_value(),
-        ShapeDocument::Surface(s) => s.to_value(),
-    }
 }

@@ -131,16 +131,22 @@ def offset(shape: Any, distance: float, tolerance: float = 1e-6, normal: Any = N
     return (result, line) if report else result
 
 
-def read_step(path: PathLike, names: bool = False) -> list:
+def read_step(path: PathLike, names: bool = False, scene: bool = False) -> Any:
     """The curves, surfaces and faces of a STEP file (any CAD system's AP203/AP214/AP242
     geometry, in millimetres and radians), as ``splinekit convert FILE.step -o OUT.json``
     reads them: a list of curves and surfaces (solids are ``brep`` surfaces, loose faces
-    ``trimmed`` ones). With ``names=True`` a list of ``(name, shape)`` pairs, the names of
-    the file. Entities splinekit does not read are reported by a ``UserWarning`` (as the command's
+    ``trimmed`` ones), each in its part's own coordinates. With ``names=True`` a list of
+    ``(name, shape)`` pairs, the names of the file. With ``scene=True`` the file as one
+    document, exactly as ``convert`` writes it: an assembly's parts as a ``Scene`` whose
+    objects carry their ``name``, their ``placement`` and, for a part used again,
+    ``instance_of`` its first use (a file of one object at its place: that shape).
+    Entities splinekit does not read are reported by a ``UserWarning`` (as the command's
     ``warning:`` lines)."""
-    items, skipped = _native._read_step(os.fspath(path))
+    items, skipped, document = _native._read_step(os.fspath(path))
     for entity, count in skipped:
         warnings.warn(f"{count} × {entity} not converted (no splinekit equivalent yet)", stacklevel=2)
+    if scene:
+        return load(document)
     shapes = [(name, load(doc)) for name, doc in items]
     return shapes if names else [s for _, s in shapes]
 
@@ -160,8 +166,7 @@ def measure(shape: Any, tolerance: Optional[float] = None) -> Dict[str, Any]:
         path = os.fspath(shape)
         if not path.lower().endswith((".step", ".stp")):
             raise DocumentError(f"shape: measure reads STEP files (.step, .stp) by path, not '{path}'; load() a document")
-        shapes = read_step(path)
-        shape = shapes[0] if len(shapes) == 1 else Scene(shapes)
+        shape = read_step(path, scene=True)
     return cast(Dict[str, Any], _native._measure(shape, tolerance))
 
 

@@ -13,6 +13,7 @@ use splinekit::Point;
 use splinekit::curve::{CircleFrame, Curve as KernelCurve, NurbsCurve};
 use splinekit::query::Aabb;
 use splinekit_scene::curves::{BSplineDoc, CircleDoc, EllipseDoc, LineDoc, NurbsDoc};
+use splinekit_scene::placement::{PlacementDoc, RigidTransform};
 use splinekit_scene::surfaces::{
     BSplineSurfaceDoc, CylinderDoc, ExtrusionDoc, NurbsSurfaceDoc, PlacedDoc, PlaneDoc, RevolutionDoc, SphereDoc,
     TorusDoc, TrimmedDoc,
@@ -47,10 +48,7 @@ pub fn import_items(file: &StepFile) -> Result<ImportedDocuments> {
         *skipped.entry(reason).or_default() += count;
     }
     let in_brep: std::collections::HashSet<usize> = breps.faces_used.into_iter().collect();
-    for (name, doc) in breps.documents {
-        let document = ShapeDocument::Surface(SurfaceDocument::Brep(doc));
-        out.items.push(ImportedItem { name, geometry: None, document });
-    }
+    out.items = super::instances::place_breps(file, breps.documents, &mut skipped);
     for (name, g) in found.geometry.into_iter().enumerate().filter(|(k, _)| !in_brep.contains(k)).map(|(_, g)| g) {
         let label = if name.is_empty() { what(&g) } else { format!("'{name}' ({})", what(&g)) };
         let converted = match &g {
@@ -65,7 +63,7 @@ pub fn import_items(file: &StepFile) -> Result<ImportedDocuments> {
         };
         match (converted, geometry) {
             // Faces travel as their `trimmed` documents, and STEP → STEP writes those.
-            (Some(document), geometry) => out.items.push(ImportedItem { name, geometry, document }),
+            (Some(document), geometry) => out.items.push(ImportedItem::new(name, geometry, document)),
             (None, _) => *skipped.entry(format!("{label} (no document form)")).or_default() += 1,
         }
     }
@@ -81,27 +79,80 @@ pub struct ImportedItem {
     /// Its STEP geometry, for STEP → STEP; `None` for a face, which travels as its
     /// `trimmed` document, exported by [`ImportedDocuments::step_items`] when asked.
     pub geometry: Option<Geometry>,
-    /// Its document.
+    /// Its document (an instance's too: the shape of the object it is an instance of).
     pub document: ShapeDocument,
+    /// Where the product structure places it (part coordinates → the root's), unless that
+    /// is the identity.
+    pub placement: Option<RigidTransform>,
+    /// The earlier item it is another use of (the same part, placed again).
+    pub instance_of: Option<usize>,
+}
+
+impl ImportedItem {
+    /// An item where the file put it, not an instance.
+    pub fn new(name: String, geometry: Option<Geometry>, document: ShapeDocument) -> Self {
+        ImportedItem { name, geometry, document, placement: None, instance_of: None }
+    }
 }
 
 impl ImportedDocuments {
     /// The STEP items of every object (for STEP → STEP): the geometry read, and for a face
-    /// the export of its `trimmed` document (named as the face).
+    /// the export of its `trimmed` document (named as the face), each moved by its
+    /// placement.
     pub fn step_items(&self) -> Result<Vec<Item>> {
         self.items
             .iter()
             .map(|i| -> Result<Vec<Item>> {
-                match (&i.geometry, &i.document) {
-                    (Some(geometry), _) => Ok(vec![Item { name: i.name.clone(), geometry: geometry.clone() }]),
+                let mut items = match (&i.geometry, &i.document) {
+                    (Some(geometry), _) => vec![Item { name: i.name.clone(), geometry: geometry.clone() }],
                     (None, ShapeDocument::Surface(SurfaceDocument::Brep(b))) => {
-                        super::solid::brep_faces(b)?.iter().map(|f| face_item(&i.name, f)).collect()
+                        super::solid::brep_faces(b)?.iter().map(|f| face_item(&i.name, f)).collect::<Result<_>>()?
                     }
-                    (None, doc) => Ok(vec![face_item(&i.name, doc)?]),
+                    (None, doc) => vec![face_item(&i.name, doc)?],
+                };
+                if let Some(t) = &i.placement {
+                    let p = crate::placement::Placement::of_transform(t);
+                    items.iter_mut().for_each(|item| item.geometry = p.geometry(&item.geometry));
                 }
+                Ok(items)
             })
             .collect::<Result<Vec<_>>>()
             .map(|v| v.into_iter().flatten().collect())
+    }
+
+    /// The file as one document: its one object where that stands where the file put it,
+    /// else a scene of them, each with its `name`, its `placement` where the product
+    /// structure moves it, and a part's later uses as `instance_of` its first (the JSON
+    /// `convert` writes and every command that takes a STEP file reads).
+    pub fn to_value(&self) -> serde_json::Value {
+        let shape_value = |doc: &ShapeDocument| match doc {
+            ShapeDocument::Curve(c) => c.to_value(),
+            ShapeDocument::Surface(s) => s.to_value(),
+        };
+        if let [item] = self.items.as_slice()
+            && item.placement.is_none()
+        {
+            return shape_value(&item.document);
+        }
+        let objects: Vec<serde_json::Value> = self
+            .items
+            .iter()
+            .map(|i| {
+                let mut o = serde_json::Map::new();
+                match i.instance_of {
+                    Some(k) => o.insert("instance_of".into(), k.into()),
+                    None => o.insert("shape".into(), shape_value(&i.document)),
+                };
+                if !i.name.is_empty() {
+                    o.insert("name".into(), i.name.clone().into());
+                }
+                if let Some(t) = &i.placement {
+                    o.insert("placement".into(), serde_json::to_value(PlacementDoc::of(t)).unwrap_or_default());
+                }
+                serde_json::Value::Object(o)
+            })
+            .collect();
+        serde_json::json!({"type": "scene", "objects": objects})
     }
 }
 

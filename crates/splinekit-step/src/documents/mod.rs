@@ -11,7 +11,10 @@ pub use curve_export::export_curve;
 pub use export::{Sample, export_shape, export_surface, export_triangles, exports_exactly, samples};
 pub use exported::{Exported, Form, ParamMap};
 
+use splinekit_scene::placement::PlacementDoc;
 use splinekit_scene::{SceneOrShape, ShapeDocument, SurfaceForm};
+
+use crate::placement::Placement;
 
 use crate::error::{Result, StepError};
 use crate::export::write_step;
@@ -33,8 +36,11 @@ pub fn object_name(index: usize, shape: &ShapeDocument) -> String {
 pub struct ExportedPiece {
     /// The expanded shape document the items were written from.
     pub shape: ShapeDocument,
-    /// What was written for it, in file order.
+    /// What was written for it, in file order (moved by `placement`).
     pub items: Vec<Exported>,
+    /// The scene object's placement, which moved the items: `shape`'s points are where
+    /// the placement takes them.
+    pub placement: Option<Placement>,
 }
 
 /// Exports a scene (one piece per object, named after it) or a single shape (named
@@ -44,23 +50,32 @@ pub struct ExportedPiece {
 /// per triangle. A report or a judge pairs each item with `piece.shape`.
 pub fn export_pieces(doc: &SceneOrShape, name: &str, relative_tolerance: f64) -> Result<Vec<ExportedPiece>> {
     let expanded = solid::expand_breps(&subdivision::expand_subdivision_surfaces(doc, relative_tolerance)?)?;
-    let piece = |shape: &ShapeDocument, name: &str| -> Result<ExportedPiece> {
-        let items = match shape {
+    let piece = |shape: &ShapeDocument, name: &str, placement: Option<&PlacementDoc>| -> Result<ExportedPiece> {
+        let mut items = match shape {
             ShapeDocument::Surface(s) if matches!(s.exact_form(), Ok(SurfaceForm::Triangles)) => {
                 export_triangles(s, name, relative_tolerance)?
             }
             _ => vec![export_shape(shape, name, relative_tolerance)?],
         };
-        Ok(ExportedPiece { shape: shape.clone(), items })
+        let placement = placement
+            .map(|p| p.transform().map(|t| Placement::of_transform(&t)))
+            .transpose()
+            .map_err(|e| StepError::plain(format!("placement: {e}")))?;
+        if let Some(p) = &placement {
+            for e in &mut items {
+                e.item.geometry = p.geometry(&e.item.geometry);
+            }
+        }
+        Ok(ExportedPiece { shape: shape.clone(), items, placement })
     };
     match &expanded {
-        SceneOrShape::Shape(shape) => Ok(vec![piece(shape, name)?]),
+        SceneOrShape::Shape(shape) => Ok(vec![piece(shape, name, None)?]),
         SceneOrShape::Scene(scene) => scene
             .objects
             .iter()
             .enumerate()
             .map(|(i, o)| {
-                piece(&o.shape, &object_name(i, &o.shape))
+                piece(&o.shape, &object_name(i, &o.shape), o.placement.as_ref())
                     .map_err(|e| StepError::plain(format!("objects[{i}]: {}", e.message)))
             })
             .collect(),
@@ -82,5 +97,6 @@ pub fn export_document(
 }
 
 pub mod import;
+pub mod instances;
 pub mod solid;
 pub use import::{ImportedDocuments, ImportedItem, import_items};

@@ -147,11 +147,22 @@ fn brep_face(
     Ok(Some(BrepFaceDoc { name: f.name.clone(), surface, reversed: !f.same_sense, loops, color }))
 }
 
+/// One solid or loose shell read as a `brep` document.
+pub struct BrepRead {
+    /// The solid's name in the file.
+    pub name: String,
+    /// The document.
+    pub document: BrepDoc,
+    /// The `#id` of the solid (`MANIFOLD_SOLID_BREP`, `BREP_WITH_VOIDS`, …) or of the
+    /// shell, by which the product structure places it.
+    pub source: u64,
+}
+
 /// What [`brep_documents`] made: the documents, and the faces that stayed out (their
 /// `#id`s are in the import's list of what was not converted).
 pub struct BrepDocuments {
-    /// Each solid's or loose shell's document, named.
-    pub documents: Vec<(String, BrepDoc)>,
+    /// Each solid's or loose shell's document.
+    pub documents: Vec<BrepRead>,
     /// The indices in the import's geometry of the faces they hold.
     pub faces_used: Vec<usize>,
     /// Faces without a document form, by reason.
@@ -163,31 +174,35 @@ pub struct BrepDocuments {
 /// Faces and solids take the colours `styles` give them (a face its own, else its shell's,
 /// else its solid's; COLOUR_RGB components as written, which CAD systems mean as sRGB).
 pub fn brep_documents(found: &Imported, styles: &Styles) -> Result<BrepDocuments> {
-    let mut groups: Vec<(String, Vec<usize>, Option<u64>)> = Vec::new();
+    // (name, shells and whether each is used reversed, the solid's #id, the source #id)
+    type Group = (String, Vec<(usize, bool)>, Option<u64>, u64);
+    let mut groups: Vec<Group> = Vec::new();
     let mut in_solid = vec![false; found.shells.len()];
     for s in &found.solids {
         s.shells.iter().for_each(|&k| in_solid[k] = true);
-        groups.push((s.name.clone(), s.shells.clone(), Some(s.id)));
+        let shells = s.shells.iter().zip(&s.reversed).map(|(&k, &r)| (k, r)).collect();
+        groups.push((s.name.clone(), shells, Some(s.id), s.id));
     }
     for (k, shell) in found.shells.iter().enumerate() {
         if !in_solid[k] && (shell.closed || shell.faces.len() + shell.missing > 1) {
-            groups.push((String::new(), vec![k], None));
+            groups.push((String::new(), vec![(k, false)], None, shell.id));
         }
     }
     let srgb = |c: Rgba| c.to_array().map(|x| x as f32);
     let mut out = BrepDocuments { documents: Vec::new(), faces_used: Vec::new(), left_out: BTreeMap::new() };
-    for (name, shells, solid_id) in groups {
+    for (name, shells, solid_id, source) in groups {
         let mut numbering = Numbering::default();
         let mut faces = Vec::new();
         let mut shell_docs = Vec::new();
-        for &k in &shells {
+        for &(k, shell_reversed) in &shells {
             let shell = &found.shells[k];
             let mut members = Vec::new();
             for &g in &shell.faces {
                 let GeometryOrFace::Face(f) = &found.geometry[g].1 else { continue };
                 let color = styles.effective(&[f.id, shell.id, solid_id.unwrap_or(u64::MAX)]).map(srgb);
                 match brep_face(f, &mut numbering, found, color)? {
-                    Some(face) => {
+                    Some(mut face) => {
+                        face.reversed ^= shell_reversed;
                         members.push(faces.len());
                         faces.push(face);
                         out.faces_used.push(g);
@@ -200,7 +215,7 @@ pub fn brep_documents(found: &Imported, styles: &Styles) -> Result<BrepDocuments
         if faces.is_empty() {
             continue;
         }
-        let solids = if name.is_empty() && shells.len() == 1 && !found.shells[shells[0]].closed {
+        let solids = if name.is_empty() && shells.len() == 1 && !found.shells[shells[0].0].closed {
             Vec::new()
         } else {
             let color = solid_id.and_then(|id| styles.colour(id)).map(srgb);
@@ -214,7 +229,7 @@ pub fn brep_documents(found: &Imported, styles: &Styles) -> Result<BrepDocuments
             shells: shell_docs,
             solids,
         };
-        out.documents.push((name, doc));
+        out.documents.push(BrepRead { name, document: doc, source });
     }
     Ok(out)
 }
@@ -268,8 +283,10 @@ pub fn expand_breps(doc: &SceneOrShape) -> Result<SceneOrShape> {
     Ok(match doc {
         SceneOrShape::Shape(ShapeDocument::Surface(SurfaceDocument::Brep(b))) => {
             let mut scene = SceneDocument::of_shape(ShapeDocument::Surface(SurfaceDocument::Brep(b.clone())));
-            scene.objects =
-                brep_faces(b)?.into_iter().map(|shape| SceneObject { shape, ..scene.objects[0].clone() }).collect();
+            scene.objects = brep_faces(b)?
+                .into_iter()
+                .map(|shape| SceneObject { shape, instance_of: None, ..scene.objects[0].clone() })
+                .collect();
             SceneOrShape::Scene(scene)
         }
         SceneOrShape::Scene(scene) => {
@@ -280,7 +297,11 @@ pub fn expand_breps(doc: &SceneOrShape) -> Result<SceneOrShape> {
                     ShapeDocument::Surface(SurfaceDocument::Brep(b)) => {
                         let faces =
                             brep_faces(b).map_err(|e| StepError::plain(format!("objects[{i}]: {}", e.message)))?;
-                        out.objects.extend(faces.into_iter().map(|shape| SceneObject { shape, ..o.clone() }));
+                        out.objects.extend(faces.into_iter().map(|shape| SceneObject {
+                            shape,
+                            instance_of: None,
+                            ..o.clone()
+                        }));
                     }
                     _ => out.objects.push(o.clone()),
                 }

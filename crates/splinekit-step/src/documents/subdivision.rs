@@ -46,7 +46,7 @@ pub fn patches_scene(p: &LimitPatches) -> Option<SceneDocument> {
     let shapes = patch_shapes(p);
     let mut scene = SceneDocument::of_shape(shapes.first()?.clone());
     let style = scene.objects[0].clone();
-    scene.objects = shapes.into_iter().map(|shape| SceneObject { shape, ..style.clone() }).collect();
+    scene.objects = shapes.into_iter().map(|shape| SceneObject { shape, instance_of: None, ..style.clone() }).collect();
     Some(scene)
 }
 
@@ -94,8 +94,10 @@ pub fn expand_subdivision_surfaces(doc: &SceneOrShape, relative_tolerance: f64) 
         SceneOrShape::Shape(ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(d))) => {
             let mut scene =
                 SceneDocument::of_shape(ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(d.clone())));
-            scene.objects =
-                patches(d)?.into_iter().map(|shape| SceneObject { shape, ..scene.objects[0].clone() }).collect();
+            scene.objects = patches(d)?
+                .into_iter()
+                .map(|shape| SceneObject { shape, instance_of: None, ..scene.objects[0].clone() })
+                .collect();
             SceneOrShape::Scene(scene)
         }
         SceneOrShape::Scene(scene) => {
@@ -106,7 +108,11 @@ pub fn expand_subdivision_surfaces(doc: &SceneOrShape, relative_tolerance: f64) 
                     ShapeDocument::Surface(SurfaceDocument::SubdivisionSurface(d)) => {
                         let pieces =
                             patches(d).map_err(|e| StepError::plain(format!("objects[{i}]: {}", e.message)))?;
-                        out.objects.extend(pieces.into_iter().map(|shape| SceneObject { shape, ..o.clone() }));
+                        out.objects.extend(pieces.into_iter().map(|shape| SceneObject {
+                            shape,
+                            instance_of: None,
+                            ..o.clone()
+                        }));
                     }
                     _ => out.objects.push(o.clone()),
                 }
