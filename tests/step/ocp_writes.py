@@ -124,13 +124,24 @@ def run(binary, args, stdin=None):
 LOOP_SAMPLES = 400
 
 
-def loop_polygon(binary, loop):
-    """A brep face's loop (pcurve pieces in order) as one closed degree-1 B-spline through
-    LOOP_SAMPLES points of each piece, within (size/LOOP_SAMPLES)² of the pcurves."""
+def sampled_pcurves(binary, brep):
+    """LOOP_SAMPLES + 1 points of every pcurve of the brep, by one `eval` of a scene of
+    them all (one call per pcurve took minutes on a box in a debug build)."""
+    pcurves = [use["pcurve"] for face in brep["faces"] for lp in face["loops"] for use in lp]
+    if not pcurves:
+        return []
+    scene = {"type": "scene", "objects": [{"shape": c} for c in pcurves]}
+    r = run(binary, ["eval", "-", "--samples", str(LOOP_SAMPLES + 1)], json.dumps(scene))
+    return [o["points"] for o in json.loads(r.stdout)["objects"]]
+
+
+def loop_polygon(sampled):
+    """A brep face's loop (its pcurve pieces' samples, in order) as one closed degree-1
+    B-spline through LOOP_SAMPLES points of each piece, within (size/LOOP_SAMPLES)² of the
+    pcurves."""
     points = []
-    for use in loop:
-        r = run(binary, ["eval", "-", "--samples", str(LOOP_SAMPLES + 1)], json.dumps(use["pcurve"]))
-        points.extend(json.loads(r.stdout)["points"][:-1])
+    for piece in sampled:
+        points.extend(piece[:-1])
     points.append(points[0])
     n = len(points)
     knots = [0.0] + [float(k) for k in range(n)] + [float(n - 1)]
@@ -140,13 +151,15 @@ def loop_polygon(binary, loop):
 def brep_faces(binary, brep):
     """A brep document's faces as trimmed documents, one per face (OpenCASCADE's explorer
     lists faces, splinekit reads a shell of them as one brep)."""
+    sampled = iter(sampled_pcurves(binary, brep))
     faces = []
     for face in brep["faces"]:
         doc = {"type": "trimmed", "surface": face["surface"]}
-        if face["loops"]:
-            doc["outer"] = loop_polygon(binary, face["loops"][0])
-            if len(face["loops"]) > 1:
-                doc["holes"] = [loop_polygon(binary, lp) for lp in face["loops"][1:]]
+        loops = [loop_polygon([next(sampled) for _ in lp]) for lp in face["loops"]]
+        if loops:
+            doc["outer"] = loops[0]
+            if len(loops) > 1:
+                doc["holes"] = loops[1:]
         faces.append(doc)
     return faces
 
@@ -154,7 +167,9 @@ def brep_faces(binary, brep):
 def imported_objects(binary, step, out):
     r = run(binary, ["convert", step, "-o", out])
     doc = json.load(open(out))
-    shapes = [o["shape"] for o in doc["objects"]] if doc.get("type") == "scene" else [doc]
+    objects = doc["objects"] if doc.get("type") == "scene" else [{"shape": doc}]
+    # A part used again (`instance_of`) is its first use's shape.
+    shapes = [o["shape"] if "shape" in o else objects[o["instance_of"]]["shape"] for o in objects]
     expanded = []
     for s in shapes:
         expanded.extend(brep_faces(binary, s) if s.get("type") == "brep" else [s])
@@ -244,7 +259,12 @@ def match_face(binary, workdir, docs, used, points, inside):
     outside its trim."""
     best = (math.inf, math.inf, None)
     limit = 1e-9 * size_of(points)
-    for i, doc in enumerate(docs):
+    # Both readers list a file's faces in much the same order: the documents are tried
+    # from the one after the last matched, and the first that matches within the limit
+    # with no disagreement is taken (each try is two debug-build CLI calls).
+    start = max(used, default=-1) + 1
+    for i in [(start + k) % len(docs) for k in range(len(docs))]:
+        doc = docs[i]
         if i in used or doc["type"] in CURVE_TYPES:
             continue
         found = project(binary, workdir, doc, points)
@@ -254,6 +274,8 @@ def match_face(binary, workdir, docs, used, points, inside):
         wrong = sum(1 for (_, d), occ, ours in zip(found, inside, flags)
                     if occ is not None and (occ or d <= limit) and occ != ours)
         best = min(best, (worst, wrong, i))
+        if worst <= limit and wrong == 0:
+            break
     return best
 
 
